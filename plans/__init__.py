@@ -1,0 +1,1 @@
+"""plans: velocity and acceleration plans of planar linkages."""

@@ -1,0 +1,178 @@
+"""What a graphical construction produces, as data: plans, their vectors and steps.
+
+Plan coordinates are millimetres on paper, with the pole at 0 and the
+plan's x axis along the frame's x axis (counter-clockwise positive).  A
+physical vector is ``k × (tip − tail)``, with k = k_v [(m/s)/mm] on the
+velocity plan and k_a [(m/s²)/mm] on the acceleration plan.
+
+Drawings read these objects and never compute kinematics; the construction
+(:mod:`plans.graphical`) builds them and never draws.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+__all__ = ["KINDS", "PlanVector", "ConstructionLine", "Step", "Plan", "GraphicalSolution"]
+
+#: The kinds of vector a plan can hold, as drawings distinguish them.
+#: ``absolute`` runs from the pole to an image (a velocity or acceleration of a
+#: point); ``relative`` is v_CB or a sliding velocity / relative acceleration
+#: aʳ; ``normal``, ``tangential`` and ``coriolis`` are acceleration components.
+KINDS = ("absolute", "relative", "normal", "tangential", "coriolis")
+
+
+@dataclass(frozen=True)
+class PlanVector:
+    """A vector drawn on a plan.
+
+    Attributes
+    ----------
+    tail, tip : complex
+        Ends on the plan [mm].
+    kind : str
+        One of :data:`KINDS`.
+    label : str
+        The quantity's name as the textbook writes it: ``"v_CB"``, ``"a^n_CB"``,
+        ``"a^t_CB"``, ``"a^k_E5E6"``, ``"a^r_E5E6"``, ``"v_C"``.
+    value : float
+        Its physical magnitude, |tip − tail| × k [m/s or m/s²], as measured
+        (after drafting precision, if any).
+    """
+
+    tail: complex
+    tip: complex
+    kind: str
+    label: str
+    value: float
+
+    @property
+    def length(self) -> float:
+        """Drawn length [mm]."""
+        return abs(self.tip - self.tail)
+
+
+@dataclass(frozen=True)
+class ConstructionLine:
+    """A line of known direction drawn through a known point of the plan [mm].
+
+    ``direction`` is a unit complex number; ``label`` says why it has that
+    direction (``"⊥ BC"``, ``"∥ rod"``).
+    """
+
+    through: complex
+    direction: complex
+    label: str
+
+
+@dataclass(frozen=True)
+class Step:
+    """One construction: two vector equations solved for one unknown image.
+
+    Attributes
+    ----------
+    group : str
+        The structural group (``"RRR(3,4)"``) or ``"driver"``.
+    equations : tuple[str, ...]
+        The vector equations, as text (``"v_C = v_B + v_CB"``).
+    known : tuple[PlanVector, ...]
+        Components known in full, drawn before the intersection.
+    lines : tuple[ConstructionLine, ...]
+        The construction lines whose intersection is the image (empty for the
+        driver's step).
+    found : tuple[PlanVector, ...]
+        The components read off after the intersection (tangential, relative).
+    image : str
+        Label of the image the step places (``"c"``, ``"c′"``).
+    sine : float
+        |sin| of the angle between the two construction lines: 1 is a sharp
+        intersection, 0 a dead centre.  1.0 for the driver's step.
+    """
+
+    group: str
+    equations: tuple[str, ...]
+    known: tuple[PlanVector, ...]
+    lines: tuple[ConstructionLine, ...]
+    found: tuple[PlanVector, ...]
+    image: str
+    sine: float = 1.0
+
+
+@dataclass(frozen=True)
+class Plan:
+    """A velocity or an acceleration plan.
+
+    Attributes
+    ----------
+    kind : str
+        ``"velocity"`` or ``"acceleration"``.
+    scale : float
+        k_v [(m/s)/mm] or k_a [(m/s²)/mm].
+    pole : str
+        ``"p"`` or ``"π"``.
+    images : dict[str, complex]
+        Image label -> position on the plan [mm].  Images of mechanism points
+        are their names in lower case (``"a"``), primed on the acceleration
+        plan (``"a′"``); the image of the point of link k that coincides with
+        a slider's pin E is ``"e5"`` (``"e5′"``).  Points at rest sit at 0.
+    steps : tuple[Step, ...]
+        In construction order.
+    vectors : tuple[PlanVector, ...]
+        Everything to draw: absolute vectors from the pole and all components,
+        zero-length ones left out.
+    """
+
+    kind: str
+    scale: float
+    pole: str
+    images: dict[str, complex]
+    steps: tuple[Step, ...]
+    vectors: tuple[PlanVector, ...]
+
+
+@dataclass(frozen=True)
+class GraphicalSolution:
+    """The graphical method's answer at one driver position.
+
+    Positions come from the compass construction of the mechanism at k_l;
+    velocities and accelerations are *read from the plans*: measured length in
+    mm (rounded to the drafting precision, if one is set) times the scale
+    factor, divided by a link length where needed.
+
+    Attributes
+    ----------
+    scene : plans.scene.Scene
+    scales : dict[str, float]
+        ``{"k_l": m/mm, "k_v": (m/s)/mm, "k_a": (m/s²)/mm}`` (k_a absent when
+        only velocities are asked for).
+    precision : float or None
+        Drafting precision [mm] applied to every measured length.
+    poses : dict[str, tuple[float, complex]]
+        Body name -> (angle φ [rad], global position of its own origin [m]).
+        A body point ``z`` (own coordinates) is at ``origin + exp(iφ)·z``.
+    positions : dict[str, complex]
+        Every named point [m].
+    velocity_plan : Plan
+    acceleration_plan : Plan or None
+    points : dict[str, dict[str, complex]]
+        Point name -> ``{"v": ..., "a": ...}`` read from the plans [SI].
+    links : dict[str, dict[str, float]]
+        Link name -> ``{"omega": rad/s, "epsilon": rad/s²}`` read from the plans.
+    sliders : dict[str, dict[str, float | complex]]
+        Prismatic joint name -> ``{"v_rel", "a_rel", "coriolis"}``; signs as
+        in :class:`plans.scene.Prismatic`; coriolis is a vector (complex).
+    sines : dict[str, float]
+        Group name -> smallest |sin| between its construction lines.
+    """
+
+    scene: object
+    scales: dict[str, float]
+    precision: float | None
+    poses: dict[str, tuple[float, complex]]
+    positions: dict[str, complex]
+    velocity_plan: Plan
+    acceleration_plan: Plan | None
+    points: dict[str, dict[str, complex]]
+    links: dict[str, dict[str, float]]
+    sliders: dict[str, dict[str, float | complex]]
+    sines: dict[str, float] = field(default_factory=dict)

@@ -1,0 +1,685 @@
+"""The scene: a planar linkage as its kinematic scheme shows it.
+
+Loading a scene only parses and validates; units are converted once, here, and
+everything inside plans is SI (m, rad, s).  Angles are measured from the +x
+axis, counter-clockwise positive.
+
+Model
+-----
+* A :class:`Body` is the frame or a moving link.  It lists its points in its
+  own coordinates (for the frame, those are the global coordinates) and may
+  carry guide :class:`Line` s.  The pose of a moving body is its angle φ (the
+  angle its own x axis makes with the frame's x axis) and the global position
+  of its own origin.
+* A revolute joint is a point name shared by two bodies.  A name shared by
+  k bodies is k − 1 revolute joints (a multiple joint).
+* A :class:`Prismatic` joint makes a line of one body (the *slider*) slide on a
+  line of another (the *guide*).  The two lines coincide and point the same
+  way, so both bodies turn together.  The short form ``[[slider]]`` makes a
+  slider block: an implicit body pinned at a point and sliding on a line.
+* The driver is a :class:`Crank` (turning about a frame point) or a
+  :class:`LinearDriver` (translating along a frame line).
+"""
+
+from __future__ import annotations
+
+import cmath
+import difflib
+import math
+import re
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+
+from .errors import SceneError
+from .units import UnitError, parse_quantity
+
+__all__ = [
+    "FRAME",
+    "Line",
+    "Body",
+    "Prismatic",
+    "Crank",
+    "LinearDriver",
+    "Scales",
+    "Scene",
+    "load",
+    "loads",
+    "example_names",
+    "example_path",
+]
+
+#: The name of the fixed body.  Structural formulas print it as 0.
+FRAME = "frame"
+
+
+@dataclass(frozen=True)
+class Line:
+    """A straight guide line carried by a body, in that body's own coordinates.
+
+    Attributes
+    ----------
+    body : str
+        Name of the body that carries the line.
+    name : str
+        Name of the line within the body (``"rod"``, ``"slot"``).
+    origin : complex
+        A point of the line, body coordinates [m] (its ``through`` point).
+    angle : float
+        Direction of the line in the body's frame [rad], counter-clockwise.
+    through : str or None
+        The named point the line passes through, if it was given by name.
+    """
+
+    body: str
+    name: str
+    origin: complex
+    angle: float
+    through: str | None = None
+
+    @property
+    def key(self) -> str:
+        """``"BODY.LINE"``, the way a scene file refers to the line."""
+        return f"{self.body}.{self.name}"
+
+    @property
+    def direction(self) -> complex:
+        """Unit vector of the line in body coordinates."""
+        return cmath.exp(1j * self.angle)
+
+
+@dataclass(frozen=True)
+class Body:
+    """The frame or one moving link.
+
+    Attributes
+    ----------
+    name : str
+        ``"frame"``, or the link's name (``"3"``, ``"coupler"``).
+    points : dict[str, complex]
+        Named points in the body's own coordinates [m].
+    lines : dict[str, Line]
+        Guide lines carried by the body.
+    block : bool
+        True for a slider block made by a ``[[slider]]`` entry.
+    """
+
+    name: str
+    points: dict[str, complex]
+    lines: dict[str, Line] = field(default_factory=dict)
+    block: bool = False
+
+    @property
+    def is_frame(self) -> bool:
+        return self.name == FRAME
+
+
+@dataclass(frozen=True)
+class Prismatic:
+    """Line ``slider_line`` of body ``slider`` slides on line ``guide_line`` of body ``guide``.
+
+    The relative travel is ``s = (Q_s − Q_g) · u_g``, where Q_s and Q_g are the
+    origins (through points) of the two lines and u_g the guide's unit
+    direction; ``v_rel = ds/dt`` and ``a_rel = d²s/dt²`` are the motion of the
+    slider relative to the guide, and the Coriolis acceleration of the slider's
+    point relative to the guide is ``2 ω_g × v_rel``.
+    """
+
+    name: str
+    slider: str
+    slider_line: str
+    guide: str
+    guide_line: str
+
+
+@dataclass(frozen=True)
+class Crank:
+    """A link turning about a frame point: angle φ [rad], ω [rad/s], ε [rad/s²].
+
+    φ is the angle of the crank's own x axis (so with ``O = [0, 0]`` and
+    ``A = [r, 0]``, it is the direction of OA).
+    """
+
+    link: str
+    pivot: str
+    phi: float
+    omega: float
+    epsilon: float = 0.0
+
+
+@dataclass(frozen=True)
+class LinearDriver:
+    """A link translating along a frame line: position s [m], velocity [m/s], acceleration [m/s²].
+
+    The link's own x axis lies along the guide, and its point ``point`` sits
+    at ``origin + s · u`` of the guide.  ``stroke`` is the interval a sweep
+    covers [m].
+    """
+
+    link: str
+    point: str
+    guide: str  # line name on the frame
+    s: float
+    velocity: float
+    acceleration: float = 0.0
+    stroke: tuple[float, float] | None = None
+
+
+@dataclass(frozen=True)
+class Scales:
+    """Drawing scale factors (physical = k × drawn length in mm); None means automatic."""
+
+    k_l: float | None = None  # m/mm
+    k_v: float | None = None  # (m/s)/mm
+    k_a: float | None = None  # (m/s²)/mm
+    precision: float | None = None  # drafting precision of a measured length, mm
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A validated linkage, all in SI units.
+
+    Attributes
+    ----------
+    title : str
+    bodies : dict[str, Body]
+        The frame first, then the links in file order, then slider blocks.
+    prismatics : tuple[Prismatic, ...]
+        All prismatic joints (slider blocks included; not the linear driver's).
+    driver : Crank or LinearDriver
+    assembly : dict[str, complex | int]
+        Branch of each group: a point name mapped to where it lies near
+        (complex, m), or to a branch sign (+1 or −1).
+    accelerations : bool
+        False when only velocities are asked for.
+    report : tuple[str, ...]
+        The points to report and draw, in order.
+    scales : Scales
+    source : str
+        The file the scene came from (for messages).
+    """
+
+    title: str
+    bodies: dict[str, Body]
+    prismatics: tuple[Prismatic, ...]
+    driver: Crank | LinearDriver
+    assembly: dict[str, complex | int]
+    accelerations: bool
+    report: tuple[str, ...]
+    scales: Scales
+    source: str = "<scene>"
+
+    # --- derived views, for solvers and drawings -----------------------------
+
+    @property
+    def frame(self) -> Body:
+        return self.bodies[FRAME]
+
+    @property
+    def links(self) -> list[str]:
+        """Names of the moving bodies (driver, links, blocks), in scene order."""
+        return [name for name in self.bodies if name != FRAME]
+
+    def line(self, key: str) -> Line:
+        """The line ``"BODY.LINE"``."""
+        body, _, name = key.rpartition(".")
+        return self.bodies[body].lines[name]
+
+    def bodies_with(self, point: str) -> list[str]:
+        """Names of the bodies that carry the point (frame first if it does)."""
+        return [name for name, body in self.bodies.items() if point in body.points]
+
+    @property
+    def point_names(self) -> list[str]:
+        """Every named point once, in scene order."""
+        seen: dict[str, None] = {}
+        for body in self.bodies.values():
+            for name in body.points:
+                seen.setdefault(name, None)
+        return list(seen)
+
+    def home_of(self, point: str) -> str:
+        """The body whose motion defines the point: a moving body if any carries it, else the frame."""
+        names = self.bodies_with(point)
+        moving = [n for n in names if n != FRAME]
+        return moving[0] if moving else names[0]
+
+
+# ---------------------------------------------------------------------------
+# loading
+
+_EXAMPLES = "plans.examples"
+
+
+def example_names() -> list[str]:
+    """Names of the bundled example scenes (``plans examples``)."""
+    return sorted(
+        p.name[: -len(".toml")]
+        for p in resources.files(_EXAMPLES).iterdir()
+        if p.name.endswith(".toml")
+    )
+
+
+def example_path(name: str) -> Path:
+    """Path of a bundled example scene by name (``"six-bar"``)."""
+    names = example_names()
+    if name not in names:
+        close = difflib.get_close_matches(name, names, n=1)
+        hint = f"; did you mean {close[0]!r}?" if close else ""
+        raise SceneError(f"no bundled example {name!r}{hint} (plans examples lists them)")
+    return Path(str(resources.files(_EXAMPLES) / f"{name}.toml"))
+
+
+def load(path: str | Path) -> Scene:
+    """Read and validate a scene file (TOML).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+
+    Returns
+    -------
+    Scene
+
+    Raises
+    ------
+    SceneError
+        Naming the file, the key and what is wrong.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SceneError(f"cannot read the scene file: {exc.strerror or exc}", str(path)) from None
+    except UnicodeDecodeError:
+        raise SceneError("the scene file is not UTF-8 text", str(path)) from None
+    return loads(text, source=str(path))
+
+
+def loads(text: str, source: str = "<scene>") -> Scene:
+    """Validate a scene given as TOML text; see :func:`load`."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"not valid TOML: {exc}", source) from None
+    return _SceneReader(data, source, text).scene()
+
+
+_TOP_KEYS = ("title", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales")
+_BODY_KEYS = ("points", "lines")
+_LINE_KEYS = ("through", "angle")
+_SLIDER_KEYS = ("pin", "on", "name")
+_PRISMATIC_KEYS = ("line", "on", "name")
+_CRANK_KEYS = ("crank", "pivot", "angle", "omega", "epsilon")
+_LINEAR_KEYS = ("slider", "on", "point", "position", "velocity", "acceleration", "stroke")
+_COMPUTE_KEYS = ("accelerations", "points")
+_SCALE_KEYS = ("k_l", "k_v", "k_a", "precision")
+_NAME = re.compile(r"^[A-Za-z0-9_]+$")
+
+
+class _SceneReader:
+    """Turns parsed TOML into a :class:`Scene`, naming the key path in every error."""
+
+    def __init__(self, data: dict, source: str, text: str):
+        self.data = data
+        self.source = source
+        self.text = text
+
+    # -- helpers ---------------------------------------------------------------
+
+    def fail(self, field: str, message: str) -> SceneError:
+        line = self._line_of(field)
+        where = f"{field} (line {line})" if line else field
+        return SceneError(message, self.source, where)
+
+    def _line_of(self, field: str) -> int | None:
+        """Best-effort line number of a key path in the TOML text."""
+        parts = field.split(".")
+        lines = self.text.splitlines()
+        for depth in range(len(parts), 0, -1):
+            key = parts[depth - 1]
+            if key.isdigit() and depth >= 2 and parts[depth - 2] in ("slider", "prismatic"):
+                continue
+            pattern = re.compile(rf'(^|[\s{{,.\[])"?{re.escape(key)}"?\s*(=|\]|\.)')
+            header = ".".join(parts[: depth - 1])
+            start = 0
+            if header:
+                for i, text in enumerate(lines):
+                    if text.strip().strip("[]").strip() == header:
+                        start = i
+                        break
+            for i in range(start, len(lines)):
+                if pattern.search(lines[i].split("#", 1)[0]):
+                    return i + 1
+        return None
+
+    def check_keys(self, table: dict, allowed: tuple[str, ...], field: str) -> None:
+        for key in table:
+            if key not in allowed:
+                close = difflib.get_close_matches(key, allowed, n=1)
+                hint = f"did you mean {close[0]!r}?" if close else f"allowed keys: {', '.join(allowed)}"
+                path = f"{field}.{key}" if field else key
+                raise self.fail(path, f"unknown key {key!r}; {hint}")
+
+    def table(self, value: object, field: str) -> dict:
+        if not isinstance(value, dict):
+            raise self.fail(field, f"expected a table, got {_describe(value)}")
+        return value
+
+    def quantity(self, value: object, kind: str, field: str) -> float:
+        try:
+            return parse_quantity(value, kind)
+        except UnitError as exc:
+            raise self.fail(field, str(exc)) from None
+
+    def point(self, value: object, field: str) -> complex:
+        if not (isinstance(value, list) and len(value) == 2):
+            raise self.fail(field, f"expected coordinates [x, y] in m (or [\"300 mm\", 0]), got {_describe(value)}")
+        x = self.quantity(value[0], "length", f"{field}[0]")
+        y = self.quantity(value[1], "length", f"{field}[1]")
+        return complex(x, y)
+
+    def name(self, value: object, field: str, what: str) -> str:
+        if isinstance(value, int) and not isinstance(value, bool):
+            value = str(value)
+        if not isinstance(value, str) or not _NAME.match(value):
+            raise self.fail(field, f"expected the name of a {what} (letters, digits, _), got {_describe(value)}")
+        return value
+
+    # -- sections --------------------------------------------------------------
+
+    def scene(self) -> Scene:
+        data = self.data
+        self.check_keys(data, _TOP_KEYS, "")
+        title = data.get("title", Path(self.source).stem)
+        if not isinstance(title, str):
+            raise self.fail("title", f"expected text, got {_describe(title)}")
+
+        bodies: dict[str, Body] = {}
+        frame = self.table(data.get("frame", {}), "frame")
+        bodies[FRAME] = self.body(FRAME, frame, "frame")
+        links = self.table(data.get("link", {}), "link")
+        if not links:
+            raise self.fail("link", "a scene needs at least one moving link: add [link.2] with its points")
+        for raw_name, table in links.items():
+            name = self.name(raw_name, f"link.{raw_name}", "link")
+            if name == FRAME or name == "0":
+                raise self.fail(f"link.{raw_name}", "the frame is described under [frame], not as a link")
+            bodies[name] = self.body(name, self.table(table, f"link.{name}"), f"link.{name}")
+
+        prismatics = []
+        sliders = data.get("slider", [])
+        if not isinstance(sliders, list):
+            raise self.fail("slider", "write slider blocks as [[slider]] tables")
+        for k, table in enumerate(sliders):
+            prismatics.append(self.slider(k, self.table(table, f"slider.{k}"), bodies))
+        extra = data.get("prismatic", [])
+        if not isinstance(extra, list):
+            raise self.fail("prismatic", "write prismatic joints as [[prismatic]] tables")
+        for k, table in enumerate(extra):
+            prismatics.append(self.prismatic(k, self.table(table, f"prismatic.{k}"), bodies))
+        names = [p.name for p in prismatics]
+        for name in names:
+            if names.count(name) > 1:
+                raise self.fail("slider", f"two prismatic joints are both named {name!r}; give one a name = \"...\"")
+
+        self.resolve_lines(bodies)
+        if "driver" not in data:
+            raise self.fail("driver", "missing [driver]: say which link is driven (crank = \"2\" or slider = \"2\")")
+        driver = self.driver(self.table(data["driver"], "driver"), bodies)
+        assembly = self.assembly(self.table(data.get("assembly", {}), "assembly"), bodies)
+        accelerations, report = self.compute(self.table(data.get("compute", {}), "compute"), bodies)
+        scales = self.scales(self.table(data.get("scales", {}), "scales"))
+        return Scene(
+            title=title,
+            bodies=bodies,
+            prismatics=tuple(prismatics),
+            driver=driver,
+            assembly=assembly,
+            accelerations=accelerations,
+            report=report,
+            scales=scales,
+            source=self.source,
+        )
+
+    def body(self, name: str, table: dict, field: str) -> Body:
+        self.check_keys(table, _BODY_KEYS, field)
+        raw_points = self.table(table.get("points", {}), f"{field}.points")
+        points: dict[str, complex] = {}
+        for pname, value in raw_points.items():
+            pname = self.name(pname, f"{field}.points", "point")
+            points[pname] = self.point(value, f"{field}.points.{pname}")
+        if name != FRAME and not points:
+            raise self.fail(f"{field}.points", "a link needs its points, such as points = { A = [0, 0], B = [0.3, 0] }")
+        seen: dict[complex, str] = {}
+        for pname, z in points.items():
+            if z in seen:
+                raise self.fail(
+                    f"{field}.points.{pname}",
+                    f"points {seen[z]} and {pname} of {_body_words(name)} coincide at ({z.real:g}, {z.imag:g}) m; "
+                    "one point name per location",
+                )
+            seen[z] = pname
+        raw_lines = self.table(table.get("lines", {}), f"{field}.lines")
+        lines = {}
+        for lname, spec in raw_lines.items():
+            lname = self.name(lname, f"{field}.lines", "line")
+            spec = self.table(spec, f"{field}.lines.{lname}")
+            self.check_keys(spec, _LINE_KEYS, f"{field}.lines.{lname}")
+            if "through" not in spec:
+                raise self.fail(f"{field}.lines.{lname}", "a line needs through = \"POINT\" (or [x, y]) and angle")
+            through = spec["through"]
+            angle = self.quantity(spec.get("angle", 0.0), "angle", f"{field}.lines.{lname}.angle")
+            if isinstance(through, str):
+                pname = self.name(through, f"{field}.lines.{lname}.through", "point")
+                if pname not in points:
+                    raise self.fail(
+                        f"{field}.lines.{lname}.through",
+                        f"{_body_words(name)} has no point {pname!r}{_suggest(pname, points)}",
+                    )
+                lines[lname] = Line(name, lname, points[pname], angle, pname)
+            else:
+                lines[lname] = Line(name, lname, self.point(through, f"{field}.lines.{lname}.through"), angle)
+        return Body(name, points, lines)
+
+    def line_ref(self, value: object, field: str, bodies: dict[str, Body]) -> tuple[str, str]:
+        if not isinstance(value, str) or "." not in value:
+            raise self.fail(field, f"expected a line as \"LINK.LINE\" (or \"frame.LINE\"), got {_describe(value)}")
+        body, _, line = value.rpartition(".")
+        if body == "0":
+            body = FRAME
+        if body not in bodies:
+            raise self.fail(field, f"there is no link {body!r}{_suggest(body, bodies)}")
+        if line not in bodies[body].lines:
+            lines = bodies[body].lines
+            known = f"; its lines are: {', '.join(lines)}" if lines else f"; {_body_words(body)} has no lines (add lines = {{ {line} = {{ through = \"P\", angle = 0 }} }})"
+            raise self.fail(field, f"{_body_words(body)} has no line {line!r}{_suggest(line, lines) or known}")
+        return body, line
+
+    def slider(self, k: int, table: dict, bodies: dict[str, Body]) -> Prismatic:
+        field = f"slider.{k}"
+        self.check_keys(table, _SLIDER_KEYS, field)
+        for key in ("pin", "on"):
+            if key not in table:
+                raise self.fail(field, f"a slider block needs pin = \"POINT\" and on = \"LINK.LINE\" (missing {key})")
+        pin = self.name(table["pin"], f"{field}.pin", "point")
+        if not any(pin in b.points for b in bodies.values()):
+            raise self.fail(f"{field}.pin", f"no link or frame has a point {pin!r}{_suggest(pin, _all_points(bodies))}")
+        guide, guide_line = self.line_ref(table["on"], f"{field}.on", bodies)
+        if pin in bodies[guide].points:
+            raise self.fail(f"{field}.pin", f"the block is pinned at {pin}, which is a point of its own guide's {_body_words(guide)}: it could not slide")
+        name = self.name(table.get("name", self.next_link_name(bodies)), f"{field}.name", "link")
+        if name in bodies:
+            raise self.fail(f"{field}.name", f"there is already a link named {name!r}")
+        bodies[name] = Body(name, {pin: 0j}, {"guide": Line(name, "guide", 0j, 0.0, pin)}, block=True)
+        return Prismatic(pin, name, "guide", guide, guide_line)
+
+    def prismatic(self, k: int, table: dict, bodies: dict[str, Body]) -> Prismatic:
+        field = f"prismatic.{k}"
+        self.check_keys(table, _PRISMATIC_KEYS, field)
+        for key in ("line", "on"):
+            if key not in table:
+                raise self.fail(field, f"a prismatic joint needs line = \"LINK.LINE\" and on = \"LINK.LINE\" (missing {key})")
+        slider, slider_line = self.line_ref(table["line"], f"{field}.line", bodies)
+        guide, guide_line = self.line_ref(table["on"], f"{field}.on", bodies)
+        if slider == guide:
+            raise self.fail(field, f"line and guide are both on {_body_words(slider)}")
+        if slider == FRAME:
+            raise self.fail(f"{field}.line", "the frame cannot be the sliding part; swap line and on")
+        name = table.get("name", f"{slider}.{slider_line}:{guide}.{guide_line}")
+        if not isinstance(name, str):
+            raise self.fail(f"{field}.name", f"expected text, got {_describe(name)}")
+        return Prismatic(name, slider, slider_line, guide, guide_line)
+
+    @staticmethod
+    def next_link_name(bodies: dict[str, Body]) -> str:
+        numbers = [int(n) for n in bodies if n.isdigit()]
+        return str(max(numbers, default=1) + 1)
+
+    def resolve_lines(self, bodies: dict[str, Body]) -> None:
+        # a [[slider]] block's line: nothing to resolve; kept for symmetry of checks
+        for body in bodies.values():
+            for line in body.lines.values():
+                if not math.isfinite(line.angle):
+                    raise self.fail(f"link.{body.name}.lines.{line.name}.angle", "angle is not finite")
+
+    def driver(self, table: dict, bodies: dict[str, Body]) -> Crank | LinearDriver:
+        if "crank" in table and "slider" in table:
+            raise self.fail("driver", "a driver is either crank = \"LINK\" or slider = \"LINK\", not both")
+        if "crank" in table:
+            self.check_keys(table, _CRANK_KEYS, "driver")
+            link = self.name(table["crank"], "driver.crank", "link")
+            if link not in bodies or link == FRAME:
+                raise self.fail("driver.crank", f"there is no link {link!r}{_suggest(link, bodies)}")
+            shared = [p for p in bodies[link].points if p in bodies[FRAME].points]
+            if "pivot" in table:
+                pivot = self.name(table["pivot"], "driver.pivot", "point")
+                if pivot not in shared:
+                    raise self.fail("driver.pivot", f"the crank turns about a frame point of link {link}; {pivot!r} is not one (candidates: {', '.join(shared) or 'none'})")
+            elif len(shared) == 1:
+                pivot = shared[0]
+            elif not shared:
+                raise self.fail("driver.crank", f"crank {link} shares no point with the frame: give the frame its pivot point (for example O = [0, 0]) and name it on link {link} too")
+            else:
+                raise self.fail("driver.pivot", f"crank {link} shares several points with the frame ({', '.join(shared)}); say which is the pivot = \"...\"")
+            for key in ("angle", "omega"):
+                if key not in table:
+                    raise self.fail("driver", f"a crank needs angle and omega (missing {key}), such as angle = \"55 deg\", omega = \"10 rad/s\"")
+            return Crank(
+                link=link,
+                pivot=pivot,
+                phi=self.quantity(table["angle"], "angle", "driver.angle"),
+                omega=self.quantity(table["omega"], "angular velocity", "driver.omega"),
+                epsilon=self.quantity(table.get("epsilon", 0.0), "angular acceleration", "driver.epsilon"),
+            )
+        if "slider" in table:
+            self.check_keys(table, _LINEAR_KEYS, "driver")
+            link = self.name(table["slider"], "driver.slider", "link")
+            if link not in bodies or link == FRAME:
+                raise self.fail("driver.slider", f"there is no link {link!r}{_suggest(link, bodies)}")
+            for key in ("on", "point", "position", "velocity"):
+                if key not in table:
+                    raise self.fail("driver", f"a linear driver needs on = \"frame.LINE\", point, position and velocity (missing {key})")
+            guide_body, guide = self.line_ref(table["on"], "driver.on", bodies)
+            if guide_body != FRAME:
+                raise self.fail("driver.on", "a linear driver slides on a line of the frame")
+            point = self.name(table["point"], "driver.point", "point")
+            if point not in bodies[link].points:
+                raise self.fail("driver.point", f"link {link} has no point {point!r}{_suggest(point, bodies[link].points)}")
+            stroke = None
+            if "stroke" in table:
+                raw = table["stroke"]
+                if not (isinstance(raw, list) and len(raw) == 2):
+                    raise self.fail("driver.stroke", "expected [start, end], such as [\"0 mm\", \"200 mm\"]")
+                stroke = (self.quantity(raw[0], "length", "driver.stroke[0]"), self.quantity(raw[1], "length", "driver.stroke[1]"))
+                if stroke[0] == stroke[1]:
+                    raise self.fail("driver.stroke", "the stroke has zero length")
+            return LinearDriver(
+                link=link,
+                point=point,
+                guide=guide,
+                s=self.quantity(table["position"], "length", "driver.position"),
+                velocity=self.quantity(table["velocity"], "velocity", "driver.velocity"),
+                acceleration=self.quantity(table.get("acceleration", 0.0), "acceleration", "driver.acceleration"),
+                stroke=stroke,
+            )
+        raise self.fail("driver", "say which link is driven: crank = \"2\" (turning) or slider = \"2\" (translating)")
+
+    def assembly(self, table: dict, bodies: dict[str, Body]) -> dict[str, complex | int]:
+        points = _all_points(bodies)
+        out: dict[str, complex | int] = {}
+        for name, value in table.items():
+            if name not in points:
+                raise self.fail(f"assembly.{name}", f"no link has a point {name!r}{_suggest(name, points)}")
+            if isinstance(value, int) and not isinstance(value, bool) and value in (1, -1):
+                out[name] = int(value)
+            else:
+                if not isinstance(value, list):
+                    raise self.fail(f"assembly.{name}", f"expected where {name} lies near, [x, y] in m, or a branch sign +1 / -1; got {_describe(value)}")
+                out[name] = self.point(value, f"assembly.{name}")
+        return out
+
+    def compute(self, table: dict, bodies: dict[str, Body]) -> tuple[bool, tuple[str, ...]]:
+        self.check_keys(table, _COMPUTE_KEYS, "compute")
+        accelerations = table.get("accelerations", True)
+        if not isinstance(accelerations, bool):
+            raise self.fail("compute.accelerations", f"expected true or false, got {_describe(accelerations)}")
+        points = _all_points(bodies)
+        if "points" in table:
+            raw = table["points"]
+            if not isinstance(raw, list) or not raw:
+                raise self.fail("compute.points", "expected a list of point names, such as [\"A\", \"B\", \"M\"]")
+            report = []
+            for k, name in enumerate(raw):
+                name = self.name(name, f"compute.points[{k}]", "point")
+                if name not in points:
+                    raise self.fail(f"compute.points[{k}]", f"no link has a point {name!r}{_suggest(name, points)}")
+                report.append(name)
+        else:
+            report = [p for p in points if any(p in b.points for n, b in bodies.items() if n != FRAME)]
+        return accelerations, tuple(report)
+
+    def scales(self, table: dict) -> Scales:
+        self.check_keys(table, _SCALE_KEYS, "scales")
+        values = {}
+        for key in _SCALE_KEYS:
+            if key in table:
+                value = table[key]
+                if key == "precision":
+                    number = self.quantity(value, "length", "scales.precision") * 1e3  # m -> mm
+                    if isinstance(value, (int, float)):
+                        number = float(value)  # a bare number is already in mm
+                elif isinstance(value, (int, float)) and not isinstance(value, bool):
+                    number = float(value)
+                else:
+                    raise self.fail(f"scales.{key}", f"expected a number (per mm of drawing), got {_describe(value)}")
+                if not math.isfinite(number) or number <= 0:
+                    raise self.fail(f"scales.{key}", f"must be a positive number, got {value!r}")
+                values[key] = number
+        return Scales(**values)
+
+
+def _all_points(bodies: dict[str, Body]) -> dict[str, None]:
+    out: dict[str, None] = {}
+    for body in bodies.values():
+        for name in body.points:
+            out.setdefault(name, None)
+    return out
+
+
+def _suggest(name: str, options) -> str:
+    close = difflib.get_close_matches(str(name), [str(o) for o in options], n=1)
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+def _body_words(name: str) -> str:
+    return "the frame" if name == FRAME else f"link {name}"
+
+
+def _describe(value: object) -> str:
+    if isinstance(value, dict):
+        return "a table"
+    if isinstance(value, list):
+        return f"a list of {len(value)}"
+    return repr(value)
