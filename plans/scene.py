@@ -28,7 +28,7 @@ import difflib
 import math
 import re
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import astuple, dataclass, field
 from importlib import resources
 from pathlib import Path
 
@@ -419,6 +419,18 @@ class _SceneReader:
             raise self.fail("prismatic", "write prismatic joints as [[prismatic]] tables")
         for k, table in enumerate(extra):
             prismatics.append(self.prismatic(k, self.table(table, f"prismatic.{k}"), bodies))
+        for k, prismatic in enumerate(prismatics[: len(sliders)]):
+            (pin,) = bodies[prismatic.slider].points
+            if sum(pin in body.points for body in bodies.values()) < 2:
+                raise self.fail(
+                    f"slider.{k}.pin",
+                    f"no link or frame has a point {pin!r} for block {prismatic.slider} to be pinned to"
+                    f"{_suggest(pin, _all_points(bodies))}",
+                )
+        pins = [p.name for p in prismatics[: len(sliders)]]
+        for k, prismatic in enumerate(prismatics[: len(sliders)]):
+            if pins.count(prismatic.name) > 1:  # two blocks on one pin: name them C3, C4
+                prismatics[k] = Prismatic(f"{prismatic.name}{prismatic.slider}", *astuple(prismatic)[1:])
         names = [p.name for p in prismatics]
         for name in names:
             if names.count(name) > 1:
@@ -504,8 +516,6 @@ class _SceneReader:
             if key not in table:
                 raise self.fail(field, f"a slider block needs pin = \"POINT\" and on = \"LINK.LINE\" (missing {key})")
         pin = self.name(table["pin"], f"{field}.pin", "point")
-        if not any(pin in b.points for b in bodies.values()):
-            raise self.fail(f"{field}.pin", f"no link or frame has a point {pin!r}{_suggest(pin, _all_points(bodies))}")
         guide, guide_line = self.line_ref(table["on"], f"{field}.on", bodies)
         if pin in bodies[guide].points:
             raise self.fail(f"{field}.pin", f"the block is pinned at {pin}, which is a point of its own guide's {_body_words(guide)}: it could not slide")
@@ -637,7 +647,8 @@ class _SceneReader:
                     raise self.fail(f"compute.points[{k}]", f"no link has a point {name!r}{_suggest(name, points)}")
                 report.append(name)
         else:
-            report = [p for p in points if any(p in b.points for n, b in bodies.items() if n != FRAME)]
+            # every point of a moving link, in the order the links name them
+            report = list(_all_points({n: b for n, b in bodies.items() if n != FRAME}))
         return accelerations, tuple(report)
 
     def scales(self, table: dict) -> Scales:

@@ -1,0 +1,203 @@
+"""The ``plans`` command: parse arguments, call the library, write files.
+
+Every deliberate error is a :class:`plans.errors.PlansError`; it is printed as
+one line on stderr and the exit status is 2.  Nothing is written unless the
+whole job succeeded (files go through a temporary file and a rename).
+Drawing modules (matplotlib) are imported by ``plans draw`` only, so
+``plans solve`` starts fast.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from dataclasses import replace
+from pathlib import Path
+
+from .errors import PlansError, SceneError
+from .scene import Crank, Scene, example_names, example_path, load
+from .units import UnitError, parse_quantity
+
+__all__ = ["main"]
+
+EXIT_ERROR = 2
+
+
+def _scene_argument(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("scene", nargs="?", help="scene file (TOML)")
+    parser.add_argument("--example", metavar="NAME", help="use a bundled example scene instead of a file (see: plans examples)")
+
+
+def _position_argument(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--at",
+        metavar="POSITION",
+        help="driver position instead of the scene's: a crank angle (\"30 deg\", bare numbers are degrees) "
+        "or a linear driver's position (\"50 mm\", bare numbers are m)",
+    )
+
+
+def _scale_arguments(parser: argparse.ArgumentParser) -> None:
+    group = parser.add_argument_group("plan scales (default: the scene's [scales], else automatic round values)")
+    group.add_argument("--k-l", type=float, metavar="K", help="mechanism scale, m per mm of drawing")
+    group.add_argument("--k-v", type=float, metavar="K", help="velocity plan scale, (m/s) per mm")
+    group.add_argument("--k-a", type=float, metavar="K", help="acceleration plan scale, (m/s²) per mm")
+    group.add_argument("--precision", type=float, metavar="MM", help="drafting precision: round every measured length to this many mm")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="plans",
+        description="Velocity and acceleration plans of planar linkages: analytic (complex numbers) and graphical.",
+    )
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    solve = commands.add_parser("solve", help="solve one position: analytic and graphical values with their differences")
+    _scene_argument(solve)
+    _position_argument(solve)
+    solve.add_argument("--json", action="store_true", help="print the documented JSON schema instead of a table")
+    solve.add_argument("--analytic-only", action="store_true", help="skip the graphical construction")
+    _scale_arguments(solve)
+
+    sweep = commands.add_parser("sweep", help="analytic solution over a whole driver cycle, as CSV")
+    _scene_argument(sweep)
+    sweep.add_argument("--steps", type=int, default=360, metavar="N", help="number of driver positions (default 360)")
+    sweep.add_argument("-o", "--output", metavar="FILE", help="CSV file to write (default: standard output)")
+
+    draw = commands.add_parser("draw", help="draw mechanism.svg, velocity.svg, acceleration.svg and sheet.svg")
+    _scene_argument(draw)
+    _position_argument(draw)
+    draw.add_argument("-o", "--output", metavar="DIR", required=True, help="directory for the SVG files")
+    _scale_arguments(draw)
+
+    commands.add_parser("examples", help="list the bundled example scenes")
+    return parser
+
+
+def _load(args) -> Scene:
+    if args.example and args.scene:
+        raise SceneError("give either a scene file or --example NAME, not both")
+    if args.example:
+        scene = load(example_path(args.example))
+    elif args.scene:
+        scene = load(args.scene)
+    else:
+        raise SceneError("no scene: give a scene file or --example NAME (plans examples lists them)")
+    if getattr(args, "at", None) is not None:
+        scene = _at(scene, args.at)
+    return scene
+
+
+def _at(scene: Scene, text: str) -> Scene:
+    driver = scene.driver
+    try:
+        if isinstance(driver, Crank):
+            return replace(scene, driver=replace(driver, phi=parse_quantity(_number(text), "angle")))
+        return replace(scene, driver=replace(driver, s=parse_quantity(_number(text), "length")))
+    except UnitError as exc:
+        raise SceneError(str(exc), scene.source, "--at") from None
+
+
+def _number(text: str) -> float | str:
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def _construct(scene: Scene, args):
+    from .graphical import construct
+
+    return construct(scene, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
+
+
+def _solve(args) -> int:
+    from .analytic import solve
+    from .report import format_json, solution_json, solution_table
+
+    scene = _load(args)
+    analytic = solve(scene)
+    graphical = comparisons = None
+    if not args.analytic_only:
+        from .compare import compare
+
+        graphical = _construct(scene, args)
+        comparisons = compare(analytic, graphical)
+    if args.json:
+        sys.stdout.write(format_json(solution_json(analytic, graphical, comparisons)))
+    else:
+        sys.stdout.write(solution_table(analytic, graphical, comparisons))
+    return 0
+
+
+def _sweep(args) -> int:
+    import numpy as np
+
+    from .analytic import solve
+    from ._files import write_atomic
+    from .report import sweep_csv
+
+    scene = _load(args)
+    if args.steps < 2:
+        raise SceneError("--steps must be at least 2")
+    driver = scene.driver
+    if isinstance(driver, Crank):
+        positions = driver.phi + 2 * math.pi * np.arange(args.steps) / args.steps
+    else:
+        if driver.stroke is None:
+            raise SceneError("a sweep of a linear driver needs its stroke: add stroke = [start, end] to [driver]", scene.source, "driver.stroke")
+        positions = np.linspace(driver.stroke[0], driver.stroke[1], args.steps)
+    analytic = solve(scene, positions, allow_partial=True)
+    text = sweep_csv(analytic)
+    lost = int(np.count_nonzero(~np.asarray(analytic.valid)))
+    if lost:
+        print(f"plans: warning: the mechanism cannot assemble at {lost} of {args.steps} positions; their cells are empty", file=sys.stderr)
+    if args.output:
+        write_atomic(args.output, text)
+    else:
+        sys.stdout.write(text)
+    return 0
+
+
+def _draw(args) -> int:
+    from .analytic import solve
+    from .compare import compare
+    from .drawing import write_drawings
+    from .report import sheet_table
+
+    scene = _load(args)
+    graphical = _construct(scene, args)
+    analytic = solve(scene)
+    comparisons = compare(analytic, graphical)
+    paths = write_drawings(
+        graphical,
+        Path(args.output),
+        formula=analytic.structure.formula,
+        table=sheet_table(comparisons),
+    )
+    for path in paths:
+        print(path)
+    return 0
+
+
+def _examples(args) -> int:
+    for name in example_names():
+        scene = load(example_path(name))
+        print(f"{name:14} {scene.title}")
+    return 0
+
+
+_COMMANDS = {"solve": _solve, "sweep": _sweep, "draw": _draw, "examples": _examples}
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the command line; returns the exit status (0, or 2 on an error)."""
+    args = build_parser().parse_args(argv)
+    try:
+        return _COMMANDS[args.command](args)
+    except PlansError as exc:
+        print(f"plans: error: {exc}", file=sys.stderr)
+        return EXIT_ERROR
+    except BrokenPipeError:  # plans solve ... | head
+        return 0

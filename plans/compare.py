@@ -1,0 +1,106 @@
+"""Graphical against analytic: the same quantities from two independent methods.
+
+This module only reads the two solutions; it computes no kinematics.  Vectors
+are compared as vectors: the absolute error of v is |v_graphical − v_analytic|
+[m/s], and the relative error divides it by |v_analytic|.  Where the analytic
+value is (nearly) zero, below 1e-9 of the largest value of its kind in the
+scene, the relative error is taken against that largest value instead, so a
+point at rest does not give 0/0.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["Comparison", "compare", "ZERO_FRACTION"]
+
+#: below this fraction of the largest value of its kind, a value counts as zero
+ZERO_FRACTION = 1e-9
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """One quantity from both methods.
+
+    Attributes
+    ----------
+    section : str
+        ``"points"``, ``"links"`` or ``"sliders"``.
+    name : str
+        Point, link or prismatic joint name.
+    quantity : str
+        ``"v"``, ``"a"``, ``"omega"``, ``"epsilon"``, ``"v_rel"``, ``"a_rel"``, ``"coriolis"``.
+    analytic, graphical : complex or float
+        The two values, SI.
+    abs_error : float
+        |graphical − analytic|, SI.
+    rel_error : float
+        abs_error over |analytic| (or over the largest value of the kind, see
+        the module docstring).
+    """
+
+    section: str
+    name: str
+    quantity: str
+    analytic: complex | float
+    graphical: complex | float
+    abs_error: float
+    rel_error: float
+
+
+#: quantities measured against one another when a value is near zero
+_KIND = {"v": "v", "v_rel": "v", "a": "a", "a_rel": "a", "coriolis": "a", "omega": "omega", "epsilon": "epsilon"}
+
+#: what is compared, per section: (quantity, needs accelerations)
+QUANTITIES = {
+    "points": (("v", False), ("a", True)),
+    "links": (("omega", False), ("epsilon", True)),
+    "sliders": (("v_rel", False), ("a_rel", True), ("coriolis", True)),
+}
+
+
+def _analytic_value(analytic, section: str, name: str, quantity: str, k: int):
+    record = getattr(analytic, section)[name]
+    value = getattr(record, quantity)[k]
+    return complex(value) if quantity in ("v", "a", "coriolis") else float(value)
+
+
+def compare(analytic, graphical, position: int = 0) -> list[Comparison]:
+    """Compare every quantity the graphical solution read off its plans.
+
+    Parameters
+    ----------
+    analytic : plans.analytic.AnalyticSolution
+    graphical : plans.graphical.plan.GraphicalSolution
+    position : int
+        Which of the analytic solution's driver positions the graphical one
+        was constructed at.
+
+    Returns
+    -------
+    list[Comparison]
+        Points (in the scene's report order), links, then sliders.
+    """
+    accelerations = graphical.acceleration_plan is not None
+    pairs: list[tuple[str, str, str, object, object]] = []
+    for section, quantities in QUANTITIES.items():
+        readings = getattr(graphical, section)
+        names = [p for p in graphical.scene.report if p in readings] if section == "points" else list(readings)
+        for name in names:
+            for quantity, needs_a in quantities:
+                if needs_a and not accelerations:
+                    continue
+                if quantity not in readings[name]:
+                    continue
+                a = _analytic_value(analytic, section, name, quantity, position)
+                pairs.append((section, name, quantity, a, readings[name][quantity]))
+    largest: dict[str, float] = {}
+    for _, _, quantity, a, _ in pairs:
+        largest[_KIND[quantity]] = max(largest.get(_KIND[quantity], 0.0), abs(a))
+    rows = []
+    for section, name, quantity, a, g in pairs:
+        error = abs(g - a)
+        reference = max(abs(a), ZERO_FRACTION * largest[_KIND[quantity]])
+        rel = error / reference if reference > 0 else 0.0
+        rows.append(Comparison(section, name, quantity, a, g, error, rel))
+    return rows

@@ -1,0 +1,352 @@
+"""Text tables, JSON and CSV of solved mechanisms.
+
+Formatting only: every number here was computed by the analytic solver or read
+off the graphical plans before it arrives.  The JSON schema is documented in
+the README ("JSON schema") and kept stable: keys are only ever added.
+"""
+
+from __future__ import annotations
+
+import cmath
+import io
+import json
+import math
+
+from .compare import Comparison
+from .scene import Crank, LinearDriver, Scene
+
+__all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table"]
+
+SCHEMA_VERSION = 1
+
+
+def _clean(x: float) -> float:
+    """Floats for output: -0.0 becomes 0.0."""
+    x = float(x)
+    return 0.0 if x == 0 else x
+
+
+def _vec(z: complex) -> list[float]:
+    return [_clean(z.real), _clean(z.imag)]
+
+
+def _deg(phi: float) -> float:
+    """An angle in degrees in (−180, 180]."""
+    d = math.degrees(math.remainder(phi, 2 * math.pi))
+    return 180.0 if d == -180.0 else _clean(d)
+
+
+def driver_summary(scene: Scene) -> dict:
+    """The driver as JSON-ready data, SI units (angles in degrees)."""
+    d = scene.driver
+    if isinstance(d, Crank):
+        return {
+            "type": "crank",
+            "link": d.link,
+            "pivot": d.pivot,
+            "phi_deg": _deg(d.phi),
+            "omega": _clean(d.omega),
+            "epsilon": _clean(d.epsilon),
+        }
+    return {
+        "type": "linear",
+        "link": d.link,
+        "point": d.point,
+        "guide": f"frame.{d.guide}",
+        "s": _clean(d.s),
+        "velocity": _clean(d.velocity),
+        "acceleration": _clean(d.acceleration),
+    }
+
+
+def _driver_words(scene: Scene) -> str:
+    d = scene.driver
+    if isinstance(d, Crank):
+        return (
+            f"crank {d.link} about {d.pivot}: φ = {math.degrees(d.phi):.3f}°, "
+            f"ω = {d.omega:.6g} rad/s, ε = {d.epsilon:.6g} rad/s²"
+        )
+    return (
+        f"slide {d.link} along frame.{d.guide}, point {d.point}: s = {d.s:.6g} m, "
+        f"v = {d.velocity:.6g} m/s, a = {d.acceleration:.6g} m/s²"
+    )
+
+
+def _graphical_lookup(comparisons: list[Comparison] | None):
+    table: dict[tuple[str, str, str], Comparison] = {}
+    for row in comparisons or ():
+        table[(row.section, row.name, row.quantity)] = row
+    return table
+
+
+def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None = None, position: int = 0) -> dict:
+    """The documented JSON document of one position.
+
+    Parameters
+    ----------
+    analytic : plans.analytic.AnalyticSolution
+    graphical : plans.graphical.plan.GraphicalSolution, optional
+        When given, each quantity gets a ``"graphical"`` entry beside its
+        ``"analytic"`` one, with ``"abs_error"`` and ``"rel_error"``.
+    comparisons : list[Comparison], optional
+        From :func:`plans.compare.compare`.
+    position : int
+        Index into the analytic solution's driver positions.
+    """
+    scene = analytic.scene
+    k = position
+    acc = scene.accelerations
+    rows = _graphical_lookup(comparisons)
+    doc: dict = {
+        "schema": SCHEMA_VERSION,
+        "title": scene.title,
+        "driver": driver_summary(scene),
+        "structure": analytic.structure.formula,
+        "units": {"length": "m", "angle": "deg", "velocity": "m/s", "acceleration": "m/s^2",
+                  "omega": "rad/s", "epsilon": "rad/s^2"},
+        "points": {},
+        "links": {},
+        "sliders": {},
+        "groups": {},
+    }
+    for name in scene.report:
+        motion = analytic.points[name]
+        entry = {"analytic": {"r": _vec(motion.r[k]), "v": _vec(motion.v[k])}}
+        if acc:
+            entry["analytic"]["a"] = _vec(motion.a[k])
+        if graphical is not None:
+            g = {"r": _vec(graphical.positions[name])}
+            for q in ("v", "a") if acc else ("v",):
+                if (row := rows.get(("points", name, q))) is not None:
+                    g[q] = _vec(row.graphical)
+                    g[f"{q}_abs_error"] = _clean(row.abs_error)
+                    g[f"{q}_rel_error"] = _clean(row.rel_error)
+            entry["graphical"] = g
+        doc["points"][name] = entry
+    for name in scene.links:
+        motion = analytic.links[name]
+        entry = {"analytic": {"phi_deg": _deg(motion.phi[k]), "omega": _clean(motion.omega[k])}}
+        if acc:
+            entry["analytic"]["epsilon"] = _clean(motion.epsilon[k])
+        if graphical is not None and name in graphical.links:
+            g = {}
+            for q in ("omega", "epsilon") if acc else ("omega",):
+                if (row := rows.get(("links", name, q))) is not None:
+                    g[q] = _clean(row.graphical)
+                    g[f"{q}_abs_error"] = _clean(row.abs_error)
+                    g[f"{q}_rel_error"] = _clean(row.rel_error)
+            entry["graphical"] = g
+        doc["links"][name] = entry
+    for prismatic in scene.prismatics:
+        name = prismatic.name
+        motion = analytic.sliders[name]
+        entry = {"analytic": {"s": _clean(motion.s[k]), "v_rel": _clean(motion.v_rel[k])}}
+        if acc:
+            entry["analytic"]["a_rel"] = _clean(motion.a_rel[k])
+            entry["analytic"]["coriolis"] = _vec(motion.coriolis[k])
+        if graphical is not None and name in graphical.sliders:
+            g = {}
+            for q in ("v_rel", "a_rel", "coriolis") if acc else ("v_rel",):
+                if (row := rows.get(("sliders", name, q))) is not None:
+                    g[q] = _vec(row.graphical) if q == "coriolis" else _clean(row.graphical)
+                    g[f"{q}_abs_error"] = _clean(row.abs_error)
+                    g[f"{q}_rel_error"] = _clean(row.rel_error)
+            entry["graphical"] = g
+        doc["sliders"][name] = entry
+    for group in analytic.structure.groups:
+        entry = {"kind": group.kind, "links": list(group.links),
+                 "condition": _clean(analytic.conditions[group.name][k])}
+        if graphical is not None and group.name in graphical.sines:
+            entry["sine"] = _clean(graphical.sines[group.name])
+        doc["groups"][group.name] = entry
+    if graphical is not None:
+        doc["scales"] = {key: _clean(value) for key, value in graphical.scales.items()}
+        if graphical.precision is not None:
+            doc["scales"]["precision_mm"] = _clean(graphical.precision)
+    return doc
+
+
+def format_json(doc: dict) -> str:
+    """Deterministic JSON text (insertion order, full float precision)."""
+    return json.dumps(doc, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+# --- text table --------------------------------------------------------------
+
+
+def _vector_cells(z: complex) -> list[str]:
+    magnitude = abs(z)
+    direction = f"{math.degrees(cmath.phase(z)):9.3f}" if magnitude > 0 else "        —"
+    return [f"{z.real:13.6g}", f"{z.imag:13.6g}", f"{magnitude:13.6g}", direction]
+
+
+def _error_cells(row: Comparison | None) -> list[str]:
+    if row is None:
+        return []
+    return [f"{row.abs_error:10.2e}", f"{row.rel_error:10.2e}"]
+
+
+def solution_table(analytic, graphical=None, comparisons: list[Comparison] | None = None, position: int = 0) -> str:
+    """A readable table of one position; graphical values and errors when given."""
+    scene = analytic.scene
+    k = position
+    acc = scene.accelerations
+    rows = _graphical_lookup(comparisons)
+    out = io.StringIO()
+    w = out.write
+    w(f"{scene.title}\n")
+    w(f"structure: {analytic.structure.formula}   (mobility W = {analytic.structure.mobility})\n")
+    w(f"driver: {_driver_words(scene)}\n")
+    if graphical is not None:
+        scales = ", ".join(f"{key} = {value:g}" for key, value in graphical.scales.items())
+        precision = f", drafting precision {graphical.precision:g} mm" if graphical.precision else ""
+        w(f"plan scales: {scales}   (m/mm, (m/s)/mm, (m/s²)/mm){precision}\n")
+    w("\nPoints   r [m], v [m/s], a [m/s²]; direction in degrees from +x, counter-clockwise\n")
+    header = f"{'point':6} {'':3} {'method':9} {'x':>13} {'y':>13} {'magnitude':>13} {'dir [°]':>9}"
+    if graphical is not None:
+        header += f" {'abs err':>10} {'rel err':>10}"
+    w(header + "\n")
+    for name in scene.report:
+        motion = analytic.points[name]
+        quantities = [("r", motion.r[k]), ("v", motion.v[k])] + ([("a", motion.a[k])] if acc else [])
+        for index, (q, value) in enumerate(quantities):
+            label = name if index == 0 else ""
+            w(f"{label:6} {q:3} {'analytic':9} " + " ".join(_vector_cells(complex(value))) + "\n")
+            row = rows.get(("points", name, q))
+            if row is not None:
+                w(f"{'':6} {'':3} {'graphical':9} " + " ".join(_vector_cells(complex(row.graphical)))
+                  + " " + " ".join(_error_cells(row)) + "\n")
+    w("\nLinks   φ [°], ω [rad/s], ε [rad/s²]; counter-clockwise positive\n")
+    w(f"{'link':6} {'method':9} {'φ [°]':>11} {'ω':>13} " + (f"{'ε':>13}" if acc else "") + "\n")
+    for name in scene.links:
+        motion = analytic.links[name]
+        line = f"{name:6} {'analytic':9} {_deg(motion.phi[k]):11.4f} {motion.omega[k]:13.6g} "
+        if acc:
+            line += f"{motion.epsilon[k]:13.6g}"
+        w(line.rstrip() + "\n")
+        om, ep = rows.get(("links", name, "omega")), rows.get(("links", name, "epsilon"))
+        if om is not None:
+            line = f"{'':6} {'graphical':9} {'':11} {om.graphical:13.6g} "
+            if ep is not None:
+                line += f"{ep.graphical:13.6g}"
+            w(line.rstrip() + "\n")
+            errors = [f"ω {om.abs_error:.2e} ({om.rel_error:.1e} rel)"]
+            if ep is not None:
+                errors.append(f"ε {ep.abs_error:.2e} ({ep.rel_error:.1e} rel)")
+            w(f"{'':6} {'error':9} " + ", ".join(errors) + "\n")
+    if scene.prismatics:
+        w("\nSliders   s [m], v_rel [m/s], a_rel [m/s²] along the guide; Coriolis vector [m/s²]\n")
+        for prismatic in scene.prismatics:
+            name = prismatic.name
+            motion = analytic.sliders[name]
+            what = f"{prismatic.slider}.{prismatic.slider_line} on {prismatic.guide}.{prismatic.guide_line}"
+            w(f"{name} ({what})\n")
+            w(f"  analytic   s = {motion.s[k]:.6g}, v_rel = {motion.v_rel[k]:.6g}")
+            if acc:
+                c = complex(motion.coriolis[k])
+                w(f", a_rel = {motion.a_rel[k]:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|")
+            w("\n")
+            vr = rows.get(("sliders", name, "v_rel"))
+            if vr is not None:
+                w(f"  graphical  v_rel = {vr.graphical:.6g}")
+                ar, co = rows.get(("sliders", name, "a_rel")), rows.get(("sliders", name, "coriolis"))
+                if ar is not None:
+                    c = complex(co.graphical)
+                    w(f", a_rel = {ar.graphical:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|")
+                worst = max((r for r in (vr, ar, co) if r is not None), key=lambda r: r.rel_error)
+                w(f"   (largest rel err {worst.rel_error:.1e})\n")
+    w("\nGroups   condition number of the analytic 2×2 system; |sin| between the plan's construction lines\n")
+    for group in analytic.structure.groups:
+        line = f"{group.name:12} condition {analytic.conditions[group.name][k]:10.4g}"
+        if graphical is not None and group.name in graphical.sines:
+            line += f"   sine {graphical.sines[group.name]:.4f}"
+        w(line + "\n")
+    if comparisons:
+        worst = max(comparisons, key=lambda r: r.rel_error)
+        w(f"\nlargest relative difference graphical vs analytic: {worst.rel_error:.2e} "
+          f"({worst.section[:-1]} {worst.name}, {worst.quantity})\n")
+    return out.getvalue()
+
+
+# --- sweep CSV -----------------------------------------------------------------
+
+
+def sweep_csv(analytic) -> str:
+    """Every quantity over the solved driver positions, one row per position.
+
+    Columns: the driver position (``phi_deg`` for a crank, ``s`` [m] for a
+    linear driver), then per link ``phi_deg``, ``omega``, ``epsilon``; per
+    reported point ``x, y, vx, vy, ax, ay``; per slider ``s, v_rel, a_rel,
+    coriolis_x, coriolis_y``; per group its condition number.  Acceleration
+    columns are left out when the scene asks for velocities only.  Positions
+    where the mechanism cannot assemble have empty cells and ``assembled = 0``.
+    """
+    scene = analytic.scene
+    acc = scene.accelerations
+    columns: list[tuple[str, object]] = []
+    if isinstance(scene.driver, Crank):
+        columns.append(("driver_phi_deg", [math.degrees(x) for x in analytic.driver]))
+    else:
+        columns.append(("driver_s", list(analytic.driver)))
+    valid = list(getattr(analytic, "valid", [True] * len(analytic.driver)))
+    columns.append(("assembled", [1 if v else 0 for v in valid]))
+    for name in scene.links:
+        m = analytic.links[name]
+        columns.append((f"{name}.phi_deg", [math.degrees(x) for x in m.phi]))
+        columns.append((f"{name}.omega", m.omega))
+        if acc:
+            columns.append((f"{name}.epsilon", m.epsilon))
+    for name in scene.report:
+        m = analytic.points[name]
+        columns += [(f"{name}.x", m.r.real), (f"{name}.y", m.r.imag), (f"{name}.vx", m.v.real), (f"{name}.vy", m.v.imag)]
+        if acc:
+            columns += [(f"{name}.ax", m.a.real), (f"{name}.ay", m.a.imag)]
+    for prismatic in scene.prismatics:
+        m = analytic.sliders[prismatic.name]
+        columns += [(f"{prismatic.name}.s", m.s), (f"{prismatic.name}.v_rel", m.v_rel)]
+        if acc:
+            columns += [(f"{prismatic.name}.a_rel", m.a_rel), (f"{prismatic.name}.coriolis_x", m.coriolis.real),
+                        (f"{prismatic.name}.coriolis_y", m.coriolis.imag)]
+    for group in analytic.structure.groups:
+        columns.append((f"{group.name}.condition", analytic.conditions[group.name]))
+    out = io.StringIO()
+    out.write(",".join(name for name, _ in columns) + "\n")
+    values = [list(v) for _, v in columns]
+    for k in range(len(analytic.driver)):
+        cells = []
+        for index, column in enumerate(values):
+            x = float(column[k])
+            if index > 1 and (not valid[k] or not math.isfinite(x)):
+                cells.append("")
+            elif index == 1:
+                cells.append(str(int(x)))
+            else:
+                cells.append(repr(_clean(x)))
+        out.write(",".join(cells) + "\n")
+    return out.getvalue()
+
+
+# --- the sheet's results table -------------------------------------------------
+
+_UNITS = {"v": "m/s", "a": "m/s²", "omega": "rad/s", "epsilon": "rad/s²", "v_rel": "m/s", "a_rel": "m/s²", "coriolis": "m/s²"}
+_SYMBOL = {"v": "v", "a": "a", "omega": "ω", "epsilon": "ε", "v_rel": "v_rel", "a_rel": "a_rel", "coriolis": "a_cor"}
+
+
+def _magnitude(value) -> str:
+    if isinstance(value, complex):
+        return f"{abs(value):.4g} ∠ {math.degrees(cmath.phase(value)):.1f}°" if value != 0 else "0"
+    return f"{value:.4g}"
+
+
+def sheet_table(comparisons: list[Comparison]) -> list[list[str]]:
+    """Rows of preformatted text for a sheet: header, then one row per quantity.
+
+    Vectors are written as magnitude ∠ direction; signed scalars keep their
+    sign (counter-clockwise positive for ω, ε; along the guide for v_rel, a_rel).
+    """
+    rows = [["quantity", "graphical", "analytic", "rel. error"]]
+    for row in comparisons:
+        where = {"points": "", "links": "link ", "sliders": "slider "}[row.section]
+        label = f"{_SYMBOL[row.quantity]} {where}{row.name} [{_UNITS[row.quantity]}]"
+        rows.append([label, _magnitude(row.graphical), _magnitude(row.analytic), f"{row.rel_error:.1e}"])
+    return rows
