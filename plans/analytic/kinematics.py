@@ -1,0 +1,243 @@
+"""Kinematic states over N driver positions, and the theorems that relate them.
+
+Everything here is a complex-number statement of plane kinematics, vectorised
+over an array of N driver positions.  A point is ``r = x + iy`` [m], its
+velocity ``v`` [m/s] and acceleration ``a`` [m/s²] likewise complex.  Angles
+are measured from the +x axis, counter-clockwise positive; ω [rad/s] and
+ε [rad/s²] are positive counter-clockwise, so the vector product ω × r is the
+complex product ``1j * omega * r``.
+
+The theorems, as the code computes them:
+
+* two points A, B of one body (:func:`rigid_velocity`,
+  :func:`rigid_acceleration`)::
+
+      v_B = v_A + iω (r_B − r_A)
+      a_B = a_A + iε (r_B − r_A) − ω² (r_B − r_A)
+
+* a point C₃ of a body sliding with velocity v_rel along a guide carried by
+  body g, C_g the point of g under C₃ (:func:`sliding_velocity`,
+  :func:`sliding_acceleration`, :func:`coriolis_acceleration`)::
+
+      v_C3 = v_Cg + v_rel
+      a_C3 = a_Cg + 2iω_g v_rel + a_rel
+"""
+
+from __future__ import annotations
+
+import cmath
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..scene import Line
+
+__all__ = [
+    "PointState",
+    "BodyState",
+    "rigid_velocity",
+    "rigid_acceleration",
+    "coriolis_acceleration",
+    "sliding_velocity",
+    "sliding_acceleration",
+    "cross",
+    "dot",
+    "solve_real_2x2",
+    "construction_sine",
+    "condition_number",
+    "track_in_guide",
+]
+
+
+# --- the theorems ------------------------------------------------------------
+
+
+def rigid_velocity(v_A, omega, r_AB):
+    """Velocity of B on the body of A: ``v_B = v_A + iω r_AB``.
+
+    Parameters
+    ----------
+    v_A : complex array [m/s]
+    omega : float array [rad/s]
+        Angular velocity of the body, counter-clockwise positive.
+    r_AB : complex array [m]
+        ``r_B − r_A``.
+    """
+    return v_A + 1j * omega * r_AB
+
+
+def rigid_acceleration(a_A, omega, epsilon, r_AB):
+    """Acceleration of B on the body of A: ``a_B = a_A + iε r_AB − ω² r_AB``.
+
+    The term ``iε r_AB`` is the tangential acceleration aᵗ_BA (⊥ AB), the term
+    ``−ω² r_AB`` the normal acceleration aⁿ_BA (from B towards A, ω²·AB).
+    """
+    return a_A + 1j * epsilon * r_AB - omega**2 * r_AB
+
+
+def coriolis_acceleration(omega_g, v_rel):
+    """Coriolis acceleration ``aᵏ = 2 ω_g × v_rel = 2iω_g v_rel``.
+
+    Parameters
+    ----------
+    omega_g : float array [rad/s]
+        Angular velocity of the guide.
+    v_rel : complex array [m/s]
+        Velocity of the slider relative to the guide (a vector along the guide).
+    """
+    return 2j * omega_g * v_rel
+
+
+def sliding_velocity(v_Cg, v_rel):
+    """Velocity of a sliding point: ``v_C3 = v_Cg + v_rel``."""
+    return v_Cg + v_rel
+
+
+def sliding_acceleration(a_Cg, omega_g, v_rel, a_rel):
+    """Acceleration of a sliding point: ``a_C3 = a_Cg + 2iω_g v_rel + a_rel``."""
+    return a_Cg + coriolis_acceleration(omega_g, v_rel) + a_rel
+
+
+# --- plane geometry in complex numbers ----------------------------------------
+
+
+def cross(a, b):
+    """z component of the vector product a × b: ``Im(conj(a)·b)``."""
+    return a.real * b.imag - a.imag * b.real
+
+
+def dot(a, b):
+    """Scalar product a · b: ``Re(conj(a)·b)``."""
+    return a.real * b.real + a.imag * b.imag
+
+
+def solve_real_2x2(c1, c2, rhs):
+    """Real x1, x2 with ``c1·x1 + c2·x2 = rhs`` (Cramer's rule).
+
+    Each complex column is a vector of known direction; this is the 2×2 real
+    system ``[[Re c1, Re c2], [Im c1, Im c2]] · [x1, x2] = [Re rhs, Im rhs]``
+    that every velocity and acceleration step of a dyad reduces to.
+    """
+    det = cross(c1, c2)
+    return cross(rhs, c2) / det, cross(c1, rhs) / det
+
+
+def construction_sine(c1, c2):
+    """|sin| of the angle between the two columns (the plan's construction lines).
+
+    1 when they are perpendicular, 0 at a dead centre (NaN if a column is zero).
+    """
+    return np.abs(cross(c1, c2)) / (np.abs(c1) * np.abs(c2))
+
+
+def condition_number(c1, c2):
+    """2-norm condition number of the 2×2 matrix with the columns scaled to unit length.
+
+    Scaling the columns makes the number independent of the unit system
+    (a column of a slider travel is dimensionless, one of a rotation is a
+    length): with γ the angle between the construction lines it is
+    ``sqrt((1 + |cos γ|) / (1 − |cos γ|))``: 1 for perpendicular lines,
+    ∞ at a dead centre.
+    """
+    cos = np.abs(dot(c1, c2)) / (np.abs(c1) * np.abs(c2))
+    sin = np.abs(cross(c1, c2)) / (np.abs(c1) * np.abs(c2))
+    # (1 + |cos|)/|sin| == sqrt((1 + |cos|)/(1 − |cos|)) without cancellation near 1
+    return (1.0 + cos) / sin
+
+
+def track_in_guide(guide_line: Line, own_line: Line, z: complex) -> tuple[complex, float, float]:
+    """The line that point z of a sliding body traces on its guide's body.
+
+    A body x whose line ``own_line`` slides on ``guide_line`` of body g (same
+    direction, so φ_x = φ_g + δ with δ = α_g − α_x) carries its point z
+    (x's own coordinates) along a line fixed in g::
+
+        z_global = Q_g + t·u_g + e^{iφ_x} (z − q_x)        (q_x: own_line's origin)
+                 = g's point  q_g + e^{iδ}(z − q_x)  moved by  t·u_g
+
+    Returns
+    -------
+    p0 : complex
+        A point of the track, in g's own coordinates [m].
+    angle : float
+        The track's direction in g's coordinates [rad] (that of ``guide_line``).
+    delta : float
+        φ_x − φ_g [rad].
+    """
+    delta = guide_line.angle - own_line.angle
+    p0 = guide_line.origin + cmath.exp(1j * delta) * (z - own_line.origin)
+    return p0, guide_line.angle, delta
+
+
+# --- states -------------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False)
+class PointState:
+    """Position r [m], velocity v [m/s], acceleration a [m/s²] of a point: complex arrays (N,)."""
+
+    r: np.ndarray
+    v: np.ndarray
+    a: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class BodyState:
+    """Pose and motion of a body over N positions.
+
+    Attributes
+    ----------
+    phi, omega, epsilon : float arrays (N,)
+        Angle of the body's own x axis [rad], ω [rad/s], ε [rad/s²].
+    origin : PointState
+        The body's own point (0, 0): global position, velocity, acceleration.
+    """
+
+    phi: np.ndarray
+    omega: np.ndarray
+    epsilon: np.ndarray
+    origin: PointState
+
+    @classmethod
+    def resting(cls, n: int) -> "BodyState":
+        """The frame: φ = 0, origin at 0, nothing moves."""
+        zero = np.zeros(n)
+        zero_c = np.zeros(n, dtype=complex)
+        return cls(zero, zero, zero, PointState(zero_c, zero_c, zero_c))
+
+    @classmethod
+    def from_point(cls, phi, omega, epsilon, point: PointState, z: complex) -> "BodyState":
+        """The body whose own point z is at ``point``, turned by φ, with ω and ε.
+
+        The origin follows by the rigid-body theorems from the point:
+        ``r_O = r_P − e^{iφ} z``, ``v_O = v_P + iω (r_O − r_P)``,
+        ``a_O = a_P + (iε − ω²)(r_O − r_P)``.
+        """
+        r_PO = -np.exp(1j * phi) * z
+        origin = PointState(
+            point.r + r_PO,
+            rigid_velocity(point.v, omega, r_PO),
+            rigid_acceleration(point.a, omega, epsilon, r_PO),
+        )
+        return cls(phi, omega, epsilon, origin)
+
+    def position(self, z) -> np.ndarray:
+        """Global position of the body's own point z [m]: ``r_O + e^{iφ} z``."""
+        return self.origin.r + np.exp(1j * self.phi) * z
+
+    def direction(self, angle: float) -> np.ndarray:
+        """Global unit vector of a direction at ``angle`` in the body's own frame."""
+        return np.exp(1j * (self.phi + angle))
+
+    def point_at(self, r) -> PointState:
+        """State of the body's point that is at global r at this instant (rigid-body theorems)."""
+        r_Or = r - self.origin.r
+        return PointState(
+            r,
+            rigid_velocity(self.origin.v, self.omega, r_Or),
+            rigid_acceleration(self.origin.a, self.omega, self.epsilon, r_Or),
+        )
+
+    def point(self, z) -> PointState:
+        """State of the body's own point z."""
+        return self.point_at(self.position(z))

@@ -1,0 +1,111 @@
+"""Deterministic SVG at a physical size, written atomically.
+
+* :func:`new_figure` makes a matplotlib ``Figure`` (no pyplot, no global
+  state) with an SVG canvas, sized in millimetres.
+* :func:`render_svg` renders it under :data:`plans.drawing.style.RC` (fixed
+  hash salt, no date, fonts as text) and rewrites the root ``width`` and
+  ``height`` in millimetres, so a viewer or printer at 100 % reproduces the
+  scale factors.  The same figure always gives the same bytes.
+* :func:`write_atomic` writes several files so that either all of them are
+  replaced or none is: each goes to a temporary file in the target directory
+  first, and only when all are written are they renamed into place.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+import re
+import tempfile
+from contextlib import contextmanager
+from pathlib import Path
+
+import matplotlib
+from matplotlib.backends.backend_svg import FigureCanvasSVG
+from matplotlib.figure import Figure
+
+from .style import RC
+
+__all__ = ["new_figure", "render_svg", "write_atomic", "drawing_rc", "svg_size_mm"]
+
+_ROOT_SIZE = re.compile(rb'(<svg\b[^>]*?)\swidth="([0-9.eE+-]+)pt"\s+height="([0-9.eE+-]+)pt"')
+_MM_SIZE = re.compile(r'<svg\b[^>]*?\swidth="([0-9.]+)mm"\s+height="([0-9.]+)mm"')
+
+
+@contextmanager
+def drawing_rc():
+    """The rcParams every drawing is made and rendered under."""
+    with matplotlib.rc_context(RC):
+        yield
+
+
+def new_figure(width_mm: float = 100.0, height_mm: float = 100.0) -> Figure:
+    """A Figure with an SVG canvas, *width_mm* × *height_mm*."""
+    fig = Figure(figsize=(width_mm / 25.4, height_mm / 25.4), dpi=72)
+    FigureCanvasSVG(fig)
+    fig.patch.set_visible(False)
+    return fig
+
+
+def _mm(value: float) -> str:
+    return f"{value:.4f}".rstrip("0").rstrip(".")
+
+
+def render_svg(fig: Figure) -> bytes:
+    """The figure as SVG bytes, sized in mm; deterministic for the same figure."""
+    buffer = io.BytesIO()
+    with drawing_rc():
+        FigureCanvasSVG(fig).print_svg(buffer, metadata={"Date": None})
+    data = buffer.getvalue()
+    width_in, height_in = fig.get_size_inches()
+    replacement = rb'\1 width="%smm" height="%smm"' % (
+        _mm(width_in * 25.4).encode(), _mm(height_in * 25.4).encode()
+    )
+    data, count = _ROOT_SIZE.subn(replacement, data, count=1)
+    if count != 1:
+        raise RuntimeError("matplotlib wrote an SVG root without width/height in pt")
+    return data
+
+
+def svg_size_mm(data: bytes | str) -> tuple[float, float]:
+    """The (width, height) [mm] an SVG written by :func:`render_svg` declares."""
+    text = data.decode("utf-8") if isinstance(data, bytes) else data
+    match = _MM_SIZE.search(text)
+    if not match:
+        raise ValueError("no width/height in mm on the SVG root")
+    return float(match.group(1)), float(match.group(2))
+
+
+def write_atomic(contents: dict[Path, bytes]) -> list[Path]:
+    """Write every file or none.
+
+    Each file goes to a temporary file beside its target; once all are
+    written and flushed, they are renamed into place with :func:`os.replace`.
+    If anything fails before the renames, the temporary files are removed and
+    the targets are untouched.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The targets, in the order given.
+    """
+    temps: list[tuple[str, Path]] = []
+    try:
+        for target, data in contents.items():
+            target = Path(target)
+            fd, temp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
+            temps.append((temp, target))
+            with os.fdopen(fd, "wb") as handle:
+                handle.write(data)
+                handle.flush()
+                os.fsync(handle.fileno())
+        for temp, target in temps:
+            os.replace(temp, target)
+    except BaseException:
+        for temp, _ in temps:
+            try:
+                os.unlink(temp)
+            except FileNotFoundError:
+                pass
+        raise
+    return [Path(t) for t in contents]
