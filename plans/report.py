@@ -8,6 +8,7 @@ the README ("JSON schema") and kept stable: keys are only ever added.
 from __future__ import annotations
 
 import cmath
+import csv
 import io
 import json
 import math
@@ -310,7 +311,8 @@ def sweep_csv(analytic) -> str:
     for group in analytic.structure.groups:
         columns.append((f"{group.name}.condition", analytic.conditions[group.name]))
     out = io.StringIO()
-    out.write(",".join(name for name, _ in columns) + "\n")
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(name for name, _ in columns)
     values = [list(v) for _, v in columns]
     for k in range(len(analytic.driver)):
         cells = []
@@ -322,7 +324,7 @@ def sweep_csv(analytic) -> str:
                 cells.append(str(int(x)))
             else:
                 cells.append(repr(_clean(x)))
-        out.write(",".join(cells) + "\n")
+        writer.writerow(cells)
     return out.getvalue()
 
 

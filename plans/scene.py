@@ -46,6 +46,7 @@ __all__ = [
     "Scene",
     "load",
     "loads",
+    "from_mapping",
     "example_names",
     "example_path",
 ]
@@ -306,6 +307,13 @@ def loads(text: str, source: str = "<scene>") -> Scene:
     return _SceneReader(data, source, text).scene()
 
 
+def from_mapping(data: dict, source: str = "<scene>") -> Scene:
+    """Validate a scene given as the mapping TOML would parse to (for programs that build scenes)."""
+    if not isinstance(data, dict):
+        raise SceneError(f"a scene is a table of sections, got {_describe(data)}", source)
+    return _SceneReader(data, source, "").scene()
+
+
 _TOP_KEYS = ("title", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales")
 _BODY_KEYS = ("points", "lines")
 _LINE_KEYS = ("through", "angle")
@@ -425,7 +433,7 @@ class _SceneReader:
                 raise self.fail(
                     f"slider.{k}.pin",
                     f"no link or frame has a point {pin!r} for block {prismatic.slider} to be pinned to"
-                    f"{_suggest(pin, _all_points(bodies))}",
+                    f"{_suggest(pin, _all_points({n: b for n, b in bodies.items() if n != prismatic.slider}))}",
                 )
         pins = [p.name for p in prismatics[: len(sliders)]]
         for k, prismatic in enumerate(prismatics[: len(sliders)]):

@@ -26,6 +26,7 @@ The theorems, as the code computes them:
 from __future__ import annotations
 
 import cmath
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -72,7 +73,7 @@ def rigid_acceleration(a_A, omega, epsilon, r_AB):
     The term ``iε r_AB`` is the tangential acceleration aᵗ_BA (⊥ AB), the term
     ``−ω² r_AB`` the normal acceleration aⁿ_BA (from B towards A, ω²·AB).
     """
-    return a_A + 1j * epsilon * r_AB - omega**2 * r_AB
+    return a_A + (1j * epsilon - omega * omega) * r_AB
 
 
 def coriolis_acceleration(omega_g, v_rel):
@@ -180,6 +181,10 @@ class PointState:
     v: np.ndarray
     a: np.ndarray
 
+    def take(self, index) -> "PointState":
+        """The states at the given positions (an index array or slice)."""
+        return PointState(self.r[index], self.v[index], self.a[index])
+
 
 @dataclass(frozen=True, eq=False)
 class BodyState:
@@ -198,6 +203,13 @@ class BodyState:
     epsilon: np.ndarray
     origin: PointState
 
+    def take(self, index) -> "BodyState":
+        """The states at the given positions (an index array or slice)."""
+        state = BodyState(self.phi[index], self.omega[index], self.epsilon[index], self.origin.take(index))
+        if "turn" in self.__dict__:
+            state.__dict__["turn"] = self.turn[index]
+        return state
+
     @classmethod
     def resting(cls, n: int) -> "BodyState":
         """The frame: φ = 0, origin at 0, nothing moves."""
@@ -213,17 +225,25 @@ class BodyState:
         ``r_O = r_P − e^{iφ} z``, ``v_O = v_P + iω (r_O − r_P)``,
         ``a_O = a_P + (iε − ω²)(r_O − r_P)``.
         """
-        r_PO = -np.exp(1j * phi) * z
+        turn = np.exp(1j * phi)
+        r_PO = -turn * z
         origin = PointState(
             point.r + r_PO,
             rigid_velocity(point.v, omega, r_PO),
             rigid_acceleration(point.a, omega, epsilon, r_PO),
         )
-        return cls(phi, omega, epsilon, origin)
+        state = cls(phi, omega, epsilon, origin)
+        state.__dict__["turn"] = turn  # the cached e^{iφ}
+        return state
+
+    @functools.cached_property
+    def turn(self) -> np.ndarray:
+        """``e^{iφ}``, the body's rotation as a unit complex number."""
+        return np.exp(1j * self.phi)
 
     def position(self, z) -> np.ndarray:
         """Global position of the body's own point z [m]: ``r_O + e^{iφ} z``."""
-        return self.origin.r + np.exp(1j * self.phi) * z
+        return self.origin.r + self.turn * z
 
     def direction(self, angle: float) -> np.ndarray:
         """Global unit vector of a direction at ``angle`` in the body's own frame."""

@@ -1,0 +1,168 @@
+"""What the analytic solver returns: motions over N driver positions, as frozen data.
+
+All arrays have shape (N,), one entry per driver position, in SI units
+(m, rad, s); angles counter-clockwise from +x, ω and ε counter-clockwise
+positive.  Points and vectors are complex numbers ``x + iy``.  The arrays are
+read-only.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..scene import Scene
+from ..structure import Structure
+
+__all__ = ["LinkMotion", "PointMotion", "SliderMotion", "AnalyticSolution"]
+
+
+@dataclass(frozen=True, eq=False)
+class LinkMotion:
+    """Angle and angular motion of a body.
+
+    Attributes
+    ----------
+    phi : float array (N,)
+        Angle of the body's own x axis [rad].  The crank's is the driver
+        position as given; every other body's is wrapped to (−π, π].
+    omega : float array (N,)
+        Angular velocity [rad/s].
+    epsilon : float array (N,)
+        Angular acceleration [rad/s²].
+    """
+
+    phi: np.ndarray
+    omega: np.ndarray
+    epsilon: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class PointMotion:
+    """Position r [m], velocity v [m/s] and acceleration a [m/s²] of a point, complex arrays (N,)."""
+
+    r: np.ndarray
+    v: np.ndarray
+    a: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class SliderMotion:
+    """Motion in a prismatic pair, relative to its guide.
+
+    Attributes
+    ----------
+    s : float array (N,)
+        Travel ``(Q_s − Q_g)·u_g`` [m]: Q_s, Q_g the origins (through points)
+        of the slider's and the guide's lines, u_g the guide's unit direction.
+    v_rel : float array (N,)
+        ds/dt [m/s]; the relative velocity vector is ``v_rel·u_g``.
+    a_rel : float array (N,)
+        d²s/dt² [m/s²]; the relative acceleration aʳ is ``a_rel·u_g``.
+    coriolis : complex array (N,)
+        Coriolis acceleration ``aᵏ = 2iω_g·v_rel·u_g`` [m/s²] (zero on a guide
+        that does not turn).
+    """
+
+    s: np.ndarray
+    v_rel: np.ndarray
+    a_rel: np.ndarray
+    coriolis: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class AnalyticSolution:
+    """Kinematics of a linkage at N driver positions, by the complex-number method.
+
+    Attributes
+    ----------
+    scene : Scene
+    structure : Structure
+    driver : float array (N,)
+        The driver positions: crank angle φ [rad] or linear-driver position s [m].
+    links : dict[str, LinkMotion]
+        Every moving body (driver, links, slider blocks), by name.
+    points : dict[str, PointMotion]
+        Every named point, frame points included (fixed r, zero v and a).
+    sliders : dict[str, SliderMotion]
+        Every prismatic pair of ``scene.prismatics``, by its name.
+    poses : dict[str, tuple[numpy.ndarray, numpy.ndarray]]
+        Every body (frame included) as ``(phi, origin)``: its angle [rad] and
+        the global position of its own point (0, 0) [m].
+    origins : dict[str, PointMotion]
+        Motion of every body's own origin; with ``links`` it gives the
+        motion of any point of the body (:meth:`motion_of`).
+    conditions : dict[str, numpy.ndarray]
+        Per group (``group.name``), the 2-norm condition number of its 2×2
+        velocity matrix with unit columns (1 for perpendicular construction
+        lines, growing without bound towards a dead centre; NaN where the
+        group is not assembled).
+    sines : dict[str, numpy.ndarray]
+        Per group, |sin| of the angle between the two construction lines.
+    valid : bool array (N,)
+        False where some group cannot be assembled or sits at a dead centre
+        (only with ``allow_partial=True``; the unknown values are NaN there).
+    """
+
+    scene: Scene
+    structure: Structure
+    driver: np.ndarray
+    links: dict[str, LinkMotion]
+    points: dict[str, PointMotion]
+    sliders: dict[str, SliderMotion]
+    poses: dict[str, tuple[np.ndarray, np.ndarray]]
+    origins: dict[str, PointMotion]
+    conditions: dict[str, np.ndarray]
+    sines: dict[str, np.ndarray]
+    valid: np.ndarray
+
+    def __len__(self) -> int:
+        return len(self.driver)
+
+    def motion_of(self, body: str, z: complex) -> PointMotion:
+        """Motion of the point with own coordinates z [m] of a body.
+
+        ``r = r_O + e^{iφ} z``, ``v = v_O + iω (r − r_O)``,
+        ``a = a_O + (iε − ω²)(r − r_O)``.
+        """
+        phi, _ = self.poses[body]
+        origin = self.origins[body]
+        if body in self.links:
+            omega, epsilon = self.links[body].omega, self.links[body].epsilon
+        else:
+            omega = epsilon = np.zeros_like(phi)
+        r_Or = np.exp(1j * phi) * z
+        return PointMotion(
+            origin.r + r_Or,
+            origin.v + 1j * omega * r_Or,
+            origin.a + (1j * epsilon - omega**2) * r_Or,
+        )
+
+    def at(self, k) -> "AnalyticSolution":
+        """The solution at position(s) k (an index, slice or index array), as a new solution."""
+        index = np.atleast_1d(np.arange(len(self))[k])
+
+        def cut(x):
+            return _frozen(np.asarray(x)[index])  # fancy indexing copies
+
+        return AnalyticSolution(
+            scene=self.scene,
+            structure=self.structure,
+            driver=cut(self.driver),
+            links={n: LinkMotion(cut(m.phi), cut(m.omega), cut(m.epsilon)) for n, m in self.links.items()},
+            points={n: PointMotion(cut(m.r), cut(m.v), cut(m.a)) for n, m in self.points.items()},
+            sliders={n: SliderMotion(cut(m.s), cut(m.v_rel), cut(m.a_rel), cut(m.coriolis)) for n, m in self.sliders.items()},
+            poses={n: (cut(phi), cut(origin)) for n, (phi, origin) in self.poses.items()},
+            origins={n: PointMotion(cut(m.r), cut(m.v), cut(m.a)) for n, m in self.origins.items()},
+            conditions={n: cut(c) for n, c in self.conditions.items()},
+            sines={n: cut(c) for n, c in self.sines.items()},
+            valid=cut(self.valid),
+        )
+
+
+def _frozen(array: np.ndarray) -> np.ndarray:
+    """A read-only view of an array the solver owns."""
+    view = np.asarray(array).view()
+    view.setflags(write=False)
+    return view
