@@ -1,0 +1,276 @@
+"""The graphical method, orchestrated: mechanism drawing, velocity plan, acceleration plan.
+
+The order is the textbook's: the driver first, then each Assur group in
+structural order — first all positions (compass construction), then the
+velocity plan group by group, then the acceleration plan group by group —
+and finally the readings, measured off the finished plans.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+
+from ..scene import Crank, Scene
+from ..structure import Group, Structure, find_structure
+from . import prp, rpp, rpr, rrp, rrr
+from .driver import driver_acceleration, driver_velocity, place_driver
+from .plan import GraphicalSolution
+from .scales import measure, round_scale
+from .state import Construction, Sketch
+
+__all__ = ["construct"]
+
+_KINDS = {
+    "RRR": (rrr.position_rrr, rrr.velocity_rrr, rrr.acceleration_rrr),
+    "RRP": (rrp.position_rrp, rrp.velocity_rrp, rrp.acceleration_rrp),
+    "RPR": (rpr.position_rpr, rpr.velocity_rpr, rpr.acceleration_rpr),
+    "PRP": (prp.position_prp, prp.velocity_prp, prp.acceleration_prp),
+    "RPP": (rpp.position_rpp, rpp.velocity_rpp, rpp.acceleration_rpp),
+}
+
+
+def construct(
+    scene: Scene,
+    structure: Structure | None = None,
+    *,
+    k_l: float | None = None,
+    k_v: float | None = None,
+    k_a: float | None = None,
+    precision: float | None = None,
+    arc_segments: int | None = None,
+) -> GraphicalSolution:
+    """Solve the mechanism graphically at the scene's driver position.
+
+    The mechanism is constructed with compass and ruler, then the velocity
+    plan and (unless ``scene.accelerations`` is False) the acceleration plan,
+    group by group, and every result is read off the plans: a measured
+    length [mm] times the scale factor (and divided by a link length for ω
+    and ε), its direction or sense taken from the plan.
+
+    Parameters
+    ----------
+    scene : plans.scene.Scene
+    structure : plans.structure.Structure, optional
+        The result of :func:`plans.structure.find_structure`, if at hand.
+    k_l, k_v, k_a : float, optional
+        Scale factors [m/mm, (m/s)/mm, (m/s²)/mm].  Each overrides the
+        scene's ``[scales]``, which overrides the automatic choice: the round
+        value (1, 2, 2.5 or 5 × 10ⁿ) that draws the larger side of the
+        mechanism's bounding box, or the plan's largest vector, 60–120 mm long.
+    precision : float, optional
+        Drafting precision [mm], overriding the scene's: every measured length
+        is rounded to a multiple of it before it is multiplied by the scale
+        factor, so a reading differs from the exact one by at most
+        precision/2 × k (divided by the link length for ω, ε).  The
+        construction itself stays exact.  None: no rounding, and the readings
+        equal the analytic solution to round-off.
+    arc_segments : int, optional
+        None: compass arcs are intersected exactly.  An integer: each arc is a
+        shapely polygon with that many segments per quarter circle (faster to
+        be wrong: the positions are only as good as the polygon).
+
+    Returns
+    -------
+    GraphicalSolution
+
+    Raises
+    ------
+    plans.errors.AssemblyError
+        A group cannot be assembled (names the group, the lengths and the gap).
+    plans.errors.SingularPositionError
+        Two construction lines are parallel: a dead-centre position.
+
+    Examples
+    --------
+    >>> from plans.scene import load, example_path
+    >>> solution = construct(load(example_path("slider-crank")), k_v=0.25)
+    >>> round(solution.points["A"]["v"].imag, 4)
+    14.8096
+    >>> round(solution.velocity_plan.images["a"].imag, 2)   # mm on the plan
+    59.24
+    """
+    if structure is None:
+        structure = find_structure(scene)
+    k_l = k_l if k_l is not None else scene.scales.k_l
+    k_v = k_v if k_v is not None else scene.scales.k_v
+    k_a = k_a if k_a is not None else scene.scales.k_a
+    precision = precision if precision is not None else scene.scales.precision
+    if arc_segments is not None and int(arc_segments) < 1:
+        raise ValueError(f"arc_segments must be a positive number of segments per quarter circle, got {arc_segments!r}")
+    for key, value in (("k_l", k_l), ("k_v", k_v), ("k_a", k_a), ("precision", precision)):
+        if value is not None and not (math.isfinite(value) and value > 0):
+            raise ValueError(f"{key} must be a positive number, got {value!r}")
+
+    size = _extent(scene)
+    ctx = Construction(scene, arc_segments, k_l if k_l is not None else round_scale(size))
+    ctx.size = size
+
+    # --- the mechanism, drawn at k_l (or, when k_l is automatic, at a provisional
+    # round k_l from the bodies' sizes: the construction is a similarity, so the
+    # figure is the same; the final k_l is chosen from its bounding box) ---------
+    place_driver(ctx)
+    for group in structure.groups:
+        candidates = _KINDS[group.kind][0](ctx, group)
+        ctx.poses.update(_branch(scene, structure, group, candidates, ctx))
+    positions = {name: ctx.point(scene.home_of(name), name) for name in scene.point_names}
+    if k_l is None:
+        xs = [z.real for z in positions.values()]
+        ys = [z.imag for z in positions.values()]
+        k_l = round_scale(max(max(xs) - min(xs), max(ys) - min(ys)), fallback=ctx.k_l0)
+
+    # --- velocity plan -------------------------------------------------------------
+    ctx.velocity = Sketch("velocity", k_v if k_v is not None else _provisional_v(ctx))
+    _rest(ctx, ctx.velocity)
+    driver_velocity(ctx)
+    _images(ctx, ctx.velocity, ctx.v_motion, [scene.driver.link])
+    for group in structure.groups:
+        _KINDS[group.kind][1](ctx, group)
+        _images(ctx, ctx.velocity, ctx.v_motion, group.links)
+    if k_v is None:
+        k_v = round_scale(ctx.velocity.largest(), fallback=ctx.velocity.k0)
+
+    # --- acceleration plan -----------------------------------------------------------
+    if scene.accelerations:
+        ctx.acceleration = Sketch("acceleration", k_a if k_a is not None else _provisional_a(ctx))
+        _rest(ctx, ctx.acceleration)
+        driver_acceleration(ctx)
+        _images(ctx, ctx.acceleration, ctx.a_motion, [scene.driver.link])
+        for group in structure.groups:
+            _KINDS[group.kind][2](ctx, group)
+            _images(ctx, ctx.acceleration, ctx.a_motion, group.links)
+        if k_a is None:
+            k_a = round_scale(ctx.acceleration.largest(), fallback=ctx.acceleration.k0)
+    else:
+        k_a = None
+
+    # --- the finished plans and what is read off them ---------------------------------
+    velocity_plan = ctx.velocity.finish(k_v, precision)
+    acceleration_plan = ctx.acceleration.finish(k_a, precision) if k_a is not None else None
+    v_label = {point: label for label, point in ctx.velocity.named.items()}
+    a_label = {point: label for label, point in ctx.acceleration.named.items()} if acceleration_plan else {}
+    points = {}
+    for name in scene.point_names:
+        entry = {"v": _read(velocity_plan.images.get(v_label.get(name), 0j), k_v, precision)}
+        if acceleration_plan is not None:
+            entry["a"] = _read(acceleration_plan.images.get(a_label.get(name), 0j), k_a, precision)
+        points[name] = entry
+    links, sliders = ctx.readings(k_l, k_v, k_a, precision)
+    scales = {"k_l": k_l, "k_v": k_v}
+    if k_a is not None:
+        scales["k_a"] = k_a
+    return GraphicalSolution(
+        scene=scene,
+        scales=scales,
+        precision=precision,
+        poses={body: ctx.poses[body] for body in scene.bodies},
+        positions=positions,
+        velocity_plan=velocity_plan,
+        acceleration_plan=acceleration_plan,
+        points=points,
+        links=links,
+        sliders=sliders,
+        sines=dict(ctx.sines),
+    )
+
+
+def _read(image: complex, k: float, precision: float | None) -> complex:
+    """The vector from the pole to *image* [mm], measured and scaled [SI]."""
+    length = abs(image)
+    if length == 0.0:
+        return 0j
+    return measure(length, precision) * k * (image / length)
+
+
+def _extent(scene: Scene) -> float:
+    """A size of the mechanism [m] before it is drawn: the largest extent of a body's points and lines."""
+    size = 0.0
+    for body in scene.bodies.values():
+        zs = list(body.points.values()) + [line.origin for line in body.lines.values()]
+        if body.is_frame:
+            zs = zs + [0j]
+        for a in zs:
+            for b in zs:
+                size = max(size, abs(a - b))
+    driver = scene.driver
+    if not isinstance(driver, Crank):
+        size = max(size, abs(driver.s))
+    return size if size > 0 and math.isfinite(size) else 1.0
+
+
+def _provisional_v(ctx: Construction) -> float:
+    """A provisional k_v from the driver's data (the plan is redrawn at the final k_v)."""
+    driver = ctx.scene.driver
+    if isinstance(driver, Crank):
+        body = ctx.scene.bodies[driver.link]
+        pivot = body.points[driver.pivot]
+        reach = max((abs(z - pivot) for z in body.points.values()), default=0.0)
+        return round_scale(abs(driver.omega) * reach)
+    return round_scale(abs(driver.velocity))
+
+
+def _provisional_a(ctx: Construction) -> float:
+    """A provisional k_a from the driver's data and the velocity plan."""
+    driver = ctx.scene.driver
+    v = ctx.velocity.largest()
+    estimate = v * v / ctx.size
+    if isinstance(driver, Crank):
+        body = ctx.scene.bodies[driver.link]
+        pivot = body.points[driver.pivot]
+        reach = max((abs(z - pivot) for z in body.points.values()), default=0.0)
+        estimate = max(estimate, math.hypot(driver.omega**2, driver.epsilon) * reach)
+    else:
+        estimate = max(estimate, abs(driver.acceleration))
+    return round_scale(estimate)
+
+
+def _rest(ctx: Construction, plan: Sketch) -> None:
+    """Frame points where moving links are pinned: their images are at the pole."""
+    for name in ctx.scene.frame.points:
+        if len(ctx.scene.bodies_with(name)) > 1:
+            plan.place(plan.label(name), 0j, name)
+
+
+def _images(ctx: Construction, plan: Sketch, motions, bodies) -> None:
+    """Images of the bodies' other named points, by the similarity theorem."""
+    for body in bodies:
+        motion = motions[body]
+        for name in ctx.scene.bodies[body].points:
+            label = plan.label(name)
+            if label not in plan.images:
+                plan.place(label, motion.image_of(ctx.point(body, name)), name)
+
+
+def _branch(scene: Scene, structure: Structure, group: Group, candidates, ctx: Construction):
+    """The assembly the scene asks for: a sign ±1 or the candidate putting a point nearer a location."""
+    if len(candidates) == 1:
+        return candidates[0]
+    hint = _hint(scene, structure, group)
+    if hint is None:
+        return candidates[0]
+    name, value = hint
+    if isinstance(value, int):
+        return candidates[0] if value > 0 else candidates[1]
+    body = next(b for b in scene.bodies_with(name) if b in group.links)
+    local = scene.bodies[body].points[name]
+
+    def distance(candidate):
+        phi, origin = candidate[body]
+        return abs(origin + cmath.exp(1j * phi) * local - value)
+
+    return min(candidates, key=distance)
+
+
+def _hint(scene: Scene, structure: Structure, group: Group):
+    """The assembly entry that applies to *group*: the first that names a point of its links.
+
+    The group's outer joints are excepted: a point the group's links share
+    with a known body does not choose the group's branch.
+    """
+    outer = {joint.point for joint in (group.outer_i, group.outer_j) if joint.kind == "R"}
+    for name, value in scene.assembly.items():
+        if name in outer:
+            continue
+        if any(name in scene.bodies[link].points for link in group.links):
+            return name, value
+    return None

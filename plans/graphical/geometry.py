@@ -1,0 +1,189 @@
+"""Ruler-and-compass primitives: the intersections a draftsman makes.
+
+Everything here works on points of one drawing given as complex numbers
+(x + iy, in whatever unit the drawing uses: mm on a plan, mm on the
+mechanism drawing).  The functions know nothing about mechanisms; they only
+intersect circles (compass arcs) and straight lines (ruler lines).
+
+* Two straight lines are always intersected by shapely: each is drawn as a
+  segment long enough to reach the other (its half-length starts from the
+  drawing's size and is extended tenfold while they miss, as a draftsman
+  extends a line), and the segments are intersected.
+* A compass arc is either exact (``arc_segments=None``: the closed-form
+  intersection of the circle) or a shapely polygon with ``arc_segments``
+  segments per quarter circle, which trades accuracy for speed.
+
+Misses are reported with :class:`Miss` (carrying the gap by which the
+figures fail to meet) and parallel lines with :class:`Parallel`; the callers
+turn them into :class:`plans.errors.AssemblyError` or
+:class:`plans.errors.SingularPositionError` with the mechanism's names.
+"""
+
+from __future__ import annotations
+
+import math
+
+import shapely
+
+__all__ = [
+    "Miss",
+    "Parallel",
+    "MAX_EXTENSION",
+    "offset",
+    "circle_circle",
+    "circle_line",
+    "line_line",
+    "perpendicular",
+]
+
+#: Two lines whose intersection lies further than this many times the
+#: drawing's size from their construction points are treated as parallel.
+MAX_EXTENSION = 1e9
+
+#: Lines whose |sin| of the angle between them is below this are parallel.
+PARALLEL_SINE = 1e-13
+
+
+class Miss(Exception):
+    """Two figures do not meet; ``gap`` is by how much (drawing units)."""
+
+    def __init__(self, gap: float, what: str):
+        self.gap = gap
+        self.what = what
+        super().__init__(f"{what} miss by {gap:g}")
+
+
+class Parallel(Exception):
+    """Two lines are parallel, or meet further than :data:`MAX_EXTENSION` sizes away."""
+
+    def __init__(self, sine: float):
+        self.sine = sine
+        super().__init__(f"lines are parallel (|sin| = {sine:.3g})")
+
+
+def offset(point: complex, origin: complex, direction: complex) -> float:
+    """Signed distance of *point* from the line (origin, unit direction), left positive."""
+    return ((point - origin) * direction.conjugate()).imag
+
+
+def perpendicular(direction: complex) -> complex:
+    """*direction* turned by +90° (counter-clockwise)."""
+    return 1j * direction
+
+
+def _points(geometry) -> list[complex]:
+    coords = shapely.get_coordinates(geometry)
+    return [complex(x, y) for x, y in coords]
+
+
+def _ring(center: complex, radius: float, arc_segments: int):
+    return shapely.get_exterior_ring(
+        shapely.buffer(shapely.points(center.real, center.imag), radius, quad_segs=int(arc_segments))
+    )
+
+
+def _segment(through: complex, direction: complex, half: float):
+    a = through - half * direction
+    b = through + half * direction
+    return shapely.linestrings([[a.real, a.imag], [b.real, b.imag]])
+
+
+def circle_circle(
+    c1: complex, r1: float, c2: complex, r2: float, arc_segments: int | None = None
+) -> tuple[complex, complex]:
+    """Intersect the compass arcs (c1, r1) and (c2, r2).
+
+    Returns
+    -------
+    (left, right) : tuple[complex, complex]
+        The intersection to the left of the directed line c1 → c2, then the
+        one to its right (equal when the circles touch).
+
+    Raises
+    ------
+    Miss
+        The circles do not meet; ``gap`` = d − (r1 + r2) when they are apart,
+        |r1 − r2| − d when one lies inside the other.
+    """
+    chord = c2 - c1
+    d = abs(chord)
+    if d > r1 + r2:
+        raise Miss(d - (r1 + r2), "arcs")
+    if d < abs(r1 - r2) or d == 0.0:
+        raise Miss(abs(r1 - r2) - d, "arcs")
+    e = chord / d
+    if arc_segments is None:
+        a = (d * d + r1 * r1 - r2 * r2) / (2.0 * d)
+        h = math.sqrt(max(r1 * r1 - a * a, 0.0))
+        base = c1 + a * e
+        return base + 1j * h * e, base - 1j * h * e
+    found = _points(shapely.intersection(_ring(c1, r1, arc_segments), _ring(c2, r2, arc_segments)))
+    if not found:
+        raise Miss(0.0, "arcs (as polygons)")
+    sides = [offset(z, c1, e) for z in found]
+    return found[sides.index(max(sides))], found[sides.index(min(sides))]
+
+
+def circle_line(
+    center: complex, radius: float, through: complex, direction: complex, arc_segments: int | None = None
+) -> tuple[complex, complex]:
+    """Intersect the compass arc (center, radius) with the line (through, unit direction).
+
+    Returns
+    -------
+    (further, nearer) : tuple[complex, complex]
+        The intersection further along *direction*, then the other one.
+
+    Raises
+    ------
+    Miss
+        The line passes the circle by ``gap`` = distance − radius.
+    """
+    distance = offset(center, through, direction)
+    along = ((center - through) * direction.conjugate()).real
+    foot = through + along * direction
+    if abs(distance) > radius:
+        raise Miss(abs(distance) - radius, "arc and line")
+    if arc_segments is None:
+        h = math.sqrt(max(radius * radius - distance * distance, 0.0))
+        return foot + h * direction, foot - h * direction
+    found = _points(
+        shapely.intersection(_ring(center, radius, arc_segments), _segment(foot, direction, 2.0 * radius))
+    )
+    if not found:
+        raise Miss(0.0, "arc (as polygon) and line")
+    ts = [((z - foot) * direction.conjugate()).real for z in found]
+    return found[ts.index(max(ts))], found[ts.index(min(ts))]
+
+
+def line_line(p1: complex, d1: complex, p2: complex, d2: complex, size: float) -> tuple[complex, float]:
+    """Intersect two ruler lines (point, unit direction) with shapely.
+
+    Each line is drawn as a segment of half-length 2·size about its point
+    (``size``: the drawing's extent so far), extended tenfold while the two
+    segments miss each other.
+
+    Returns
+    -------
+    (point, sine) : tuple[complex, float]
+        The intersection and |sin| of the angle between the lines.
+
+    Raises
+    ------
+    Parallel
+        |sin| below 1e-13, or no intersection within
+        :data:`MAX_EXTENSION` × size.
+    """
+    sine = abs((d1 * d2.conjugate()).imag)
+    if not sine >= PARALLEL_SINE:
+        raise Parallel(sine)
+    size = max(size, abs(p1 - p2))
+    if not size > 0.0:  # an empty drawing (everything at rest): any reach will do
+        size = 1.0
+    half = 2.0 * size
+    while half <= MAX_EXTENSION * size:
+        found = _points(shapely.intersection(_segment(p1, d1, half), _segment(p2, d2, half)))
+        if found:
+            return found[0], sine
+        half *= 10.0
+    raise Parallel(sine)
