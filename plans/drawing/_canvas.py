@@ -136,10 +136,10 @@ class Sketch:
 
     # -- primitives ----------------------------------------------------------
 
-    def line(self, points, *, color=INK, lw=1.0, dashes=None, gid=None, zorder=2.0, obstacle=True, bound=True):
+    def line(self, points, *, color=INK, lw=1.0, dashes=None, gid=None, zorder=2.0, obstacle=True, bound=True, capstyle="butt"):
         xs = [p.real for p in points]
         ys = [p.imag for p in points]
-        artist = Line2D(xs, ys, color=color, linewidth=lw, zorder=zorder, solid_capstyle="butt")
+        artist = Line2D(xs, ys, color=color, linewidth=lw, zorder=zorder, solid_capstyle=capstyle, solid_joinstyle="round")
         if dashes:
             artist.set_dashes(dashes)
         if bound:
@@ -234,3 +234,28 @@ class Sketch:
             artist.set_gid(self.gid(gid))
         self.artists.append(artist)
         return artist
+
+
+def fit_axes(ax, bounds: Bounds, margin: float, rect_mm: tuple[float, float] | None = None, page_mm: tuple[float, float] | None = None) -> tuple[float, float]:
+    """Make one data unit one millimetre: limits = bounds ± margin, axes box of the same size.
+
+    With *rect_mm* (lower-left corner on a page of *page_mm*), the axes is put
+    there; otherwise the figure is resized to the drawing.  Returns the
+    drawing's size [mm].
+    """
+    if bounds.empty:
+        bounds.add(0.0, 0.0)
+    width = bounds.width + 2 * margin
+    height = bounds.height + 2 * margin
+    fig = ax.figure
+    if rect_mm is None:
+        fig.set_size_inches(width / 25.4, height / 25.4)
+        ax.set_position([0.0, 0.0, 1.0, 1.0])
+    else:
+        pw, ph = page_mm
+        ax.set_position([rect_mm[0] / pw, rect_mm[1] / ph, width / pw, height / ph])
+    ax.set_xlim(bounds.xmin - margin, bounds.xmax + margin)
+    ax.set_ylim(bounds.ymin - margin, bounds.ymax + margin)
+    ax.set_aspect("auto")
+    ax.set_axis_off()
+    return width, height

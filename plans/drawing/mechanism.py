@@ -1,0 +1,457 @@
+"""The kinematic scheme of the mechanism at the length scale k_l.
+
+One millimetre of drawing is k_l metres: a length L [m] is drawn L / k_l mm
+long.  Symbols (pins, blocks, ground hatching, arrows) have drawing-office
+sizes on paper whatever the scale, shrunk to no less than 70 % when the
+links are drawn short, so that a block does not swallow a link.
+
+What is drawn: links as bars between their extreme points, a link with three
+or more points not on one line as a light plate; pins (points shared by two
+bodies) as circles and other reported points as dots; frame pivots with the
+ground symbol; frame guides that something slides on as hatched lines, on
+the side away from the links; lines carried by moving links (slot, rod);
+slider blocks and sleeves as rectangles along their lines; the driver's ω
+(and ε when not zero) as curved arrows, or a linear driver's v (and a) as
+straight ones; labels of the reported points and the frame pivots; link
+numbers.  Gids: ``mech-link-3``, ``mech-block-4``, ``mech-pin-A``,
+``mech-ground-O``, ``mech-guide-cylinder``, ``mech-line-4-slot``,
+``mech-omega``, ``mech-point-A``, ``mech-number-3``, ``mech-scale``.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+
+import numpy as np
+import shapely
+from shapely.geometry import LineString, MultiPoint, Point
+from shapely.geometry import Polygon as ShapelyPolygon
+
+from ._canvas import Sketch, fit_axes, fmt_number, unit
+from .labels import place_label
+from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, MARGIN_MM, PLATE_FILL, SMALL_PT
+from .svg import drawing_rc, new_figure
+
+__all__ = ["draw_mechanism", "mechanism_labels"]
+
+FRAME = "frame"  # plans.scene.FRAME, repeated so drawing needs nothing but the solution
+
+PIN_R = 1.25  # mm
+DOT_R = 0.65  # mm, a point that is not a joint
+BAR_PT = 2.2
+PLATE_EDGE_PT = 1.4
+BLOCK = (9.0, 5.4)  # mm, length along the guide × height
+GROUND = 5.0  # mm, height of the ground triangle
+HATCH_STEP = 2.2  # mm
+HATCH_LEN = 2.4  # mm
+OMEGA_R = 8.0  # mm
+EPSILON_R = 12.5  # mm
+SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def _sub(symbol: str, name: str) -> tuple[str, bool]:
+    """``ω₂`` for link 2; mathtext for other names."""
+    if name.isdigit():
+        return symbol + name.translate(SUBSCRIPT), False
+    return rf"${symbol}_{{\mathrm{{{name}}}}}$", True
+
+
+def mechanism_labels(solution) -> list[str]:
+    """The point names the mechanism drawing labels: the reported points and the frame pivots."""
+    scene = solution.scene
+    names = list(scene.report)
+    for name in _frame_pivots(scene):
+        if name not in names:
+            names.append(name)
+    return [n for n in names if n in solution.positions]
+
+
+def _frame_pivots(scene) -> list[str]:
+    frame = scene.bodies[FRAME]
+    return [p for p in frame.points if any(p in b.points for n, b in scene.bodies.items() if n != FRAME)]
+
+
+def draw_mechanism(solution, ax=None) -> list:
+    """Draw the kinematic scheme of *solution* (a GraphicalSolution) at k_l.
+
+    Parameters
+    ----------
+    solution : plans.graphical.GraphicalSolution
+    ax : matplotlib.axes.Axes, optional
+        Drawn into, with one data unit taken as one millimetre of paper.  When
+        omitted, a new figure sized to the drawing (true to scale) is made;
+        reach it as ``artists[0].figure``.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
+    """
+    with drawing_rc():
+        own = ax is None
+        if own:
+            ax = new_figure().add_axes([0, 0, 1, 1])
+        sketch = Sketch(ax, "mech")
+        _Mechanism(sketch, solution).draw()
+        if own:
+            fit_axes(ax, sketch.bounds, MARGIN_MM)
+        else:
+            _fit_user_axes(ax, sketch)
+    return sketch.artists
+
+
+def _fit_user_axes(ax, sketch) -> None:
+    b = sketch.bounds
+    ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
+    ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+
+
+class _Mechanism:
+    def __init__(self, sketch: Sketch, solution):
+        self.s = sketch
+        self.sol = solution
+        self.scene = solution.scene
+        self.k_l = float(solution.scales["k_l"])
+        if not (self.k_l > 0 and math.isfinite(self.k_l)):
+            raise ValueError(f"k_l must be a positive number, got {self.k_l!r}")
+        self.moving = [n for n in self.scene.bodies if n != FRAME]
+        allpts = [self.p(n) for n in solution.positions]
+        self.centroid = sum(allpts) / len(allpts) if allpts else 0j
+        # symbols keep their drawing-office size, but shrink (to 70 % at most)
+        # on a mechanism drawn small, so that blocks do not swallow short links
+        lengths = sorted(
+            max(abs(q - r) for q in pts for r in pts)
+            for pts in (self.body_points(b) for b in self.moving)
+            if len(pts) >= 2
+        )
+        typical = lengths[len(lengths) // 2] if lengths else 30.0
+        k = min(1.0, max(0.7, typical / 30.0))
+        self.symbol_scale = k
+        self.block = (BLOCK[0] * k, BLOCK[1] * k)
+        self.pin_r = PIN_R * max(k, 0.85)
+        self.ground = GROUND * k
+        self.omega_r = OMEGA_R * k
+        self.epsilon_r = EPSILON_R * k
+
+    # -- coordinates [mm on paper] -----------------------------------------
+
+    def p(self, name: str) -> complex:
+        return complex(self.sol.positions[name]) / self.k_l
+
+    def g(self, body: str, z: complex) -> complex:
+        if body == FRAME:
+            return complex(z) / self.k_l
+        phi, origin = self.sol.poses[body]
+        return (complex(origin) + cmath.exp(1j * phi) * complex(z)) / self.k_l
+
+    def angle(self, body: str) -> float:
+        return 0.0 if body == FRAME else float(self.sol.poses[body][0])
+
+    def body_points(self, body: str) -> list[complex]:
+        pts = []
+        for name, z in self.scene.bodies[body].points.items():
+            pts.append(self.p(name) if name in self.sol.positions else self.g(body, z))
+        return pts
+
+    # -- what sits where ---------------------------------------------------
+
+    def is_block(self, body: str) -> bool:
+        b = self.scene.bodies[body]
+        return b.block or len(b.points) == 1
+
+    def block_angle(self, body: str) -> float:
+        b = self.scene.bodies[body]
+        driver = self.scene.driver
+        if getattr(driver, "link", None) == body and hasattr(driver, "guide"):
+            return self.scene.bodies[FRAME].lines[driver.guide].angle
+        for pr in self.scene.prismatics:
+            if pr.slider == body:
+                return self.angle(body) + b.lines[pr.slider_line].angle
+            if pr.guide == body:
+                return self.angle(body) + b.lines[pr.guide_line].angle
+        return self.angle(body)
+
+    def riders(self, body: str, line: str) -> list[complex]:
+        """Points [mm] of whatever slides on line *line* of *body*."""
+        out = []
+        for pr in self.scene.prismatics:
+            if pr.guide == body and pr.guide_line == line:
+                out.extend(self.body_points(pr.slider))
+            if pr.slider == body and pr.slider_line == line:
+                out.extend(self.body_points(pr.guide) if pr.guide != FRAME else [])
+        driver = self.scene.driver
+        if body == FRAME and getattr(driver, "guide", None) == line:
+            out.extend(self.body_points(driver.link))
+        return out
+
+    # -- drawing -----------------------------------------------------------
+
+    def draw(self) -> None:
+        self.frame_guides()
+        self.moving_lines()
+        self.links()
+        self.ground_pivots()
+        self.blocks()
+        self.pins()
+        self.driver_arrows()
+        self.point_labels()
+        self.link_labels()
+        self.caption()
+
+    def frame_guides(self) -> None:
+        frame = self.scene.bodies[FRAME]
+        for name, line in frame.lines.items():
+            riders = self.riders(FRAME, name)
+            if not riders:
+                continue
+            origin = self.g(FRAME, line.origin)
+            u = cmath.exp(1j * line.angle)
+            ts = [((r - origin) * u.conjugate()).real for r in riders]
+            driver = self.scene.driver
+            if getattr(driver, "guide", None) == name and getattr(driver, "stroke", None):
+                base = ((self.p(driver.point) - origin) * u.conjugate()).real - driver.s / self.k_l
+                ts += [base + driver.stroke[0] / self.k_l, base + driver.stroke[1] / self.k_l]
+            reach = self.block[0] + 8.0
+            a = origin + u * (min(ts) - reach)
+            b = origin + u * (max(ts) + reach)
+            n = u * 1j
+            side = -1.0 if self._mechanism_side(FRAME, name, origin, n) > 0 else 1.0
+            self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=1.2)
+            self._hatch(a, b, n * side)
+
+    def _mechanism_side(self, body: str, line: str, origin: complex, n: complex) -> float:
+        """Which side of a frame line the links attached to its sliders lie on (+ along *n*)."""
+        riders = [pr.slider for pr in self.scene.prismatics if pr.guide == body and pr.guide_line == line]
+        driver = self.scene.driver
+        if getattr(driver, "guide", None) == line:
+            riders.append(driver.link)
+        total = 0.0
+        for rider in riders:
+            for point in self.scene.bodies[rider].points:
+                for other in self.scene.bodies_with(point):
+                    if other in (rider, FRAME):
+                        continue
+                    for q in self.body_points(other):
+                        total += ((q - origin) * n.conjugate()).real
+        if abs(total) < 1e-9:
+            total = ((self.centroid - origin) * n.conjugate()).real
+        return total
+
+    def _hatch(self, a: complex, b: complex, outward: complex) -> None:
+        u = unit(b - a)
+        length = abs(b - a)
+        count = max(2, int(length / HATCH_STEP))
+        step = length / count
+        pairs = []
+        for k in range(count + 1):
+            q = a + u * (k * step)
+            pairs.append((q, q + outward * HATCH_LEN - u * HATCH_LEN * 0.8))
+        self.s.segments(pairs, lw=0.5, gid="hatch", zorder=1.1)
+
+    def moving_lines(self) -> None:
+        for body in self.moving:
+            b = self.scene.bodies[body]
+            if b.block:
+                continue
+            for name, line in b.lines.items():
+                origin = self.g(body, line.origin)
+                u = cmath.exp(1j * (self.angle(body) + line.angle))
+                own = [((q - origin) * u.conjugate()).real for q in self.body_points(body)]
+                reach = self.block[0] / 2 + 3.0
+                rides = [((q - origin) * u.conjugate()).real for q in self.riders(body, name)]
+                ts = own + [t - reach for t in rides] + [t + reach for t in rides] + [0.0]
+                a = origin + u * min(ts)
+                c = origin + u * max(ts)
+                self.s.line([a, c], lw=0.8, gid=f"line-{body}-{name}", zorder=1.6)
+
+    def links(self) -> None:
+        self.plates: dict[str, complex] = {}
+        self.bars: dict[str, tuple[complex, complex]] = {}
+        for body in self.moving:
+            if self.is_block(body):
+                continue
+            pts = self.body_points(body)
+            hull = MultiPoint([(q.real, q.imag) for q in pts]).convex_hull
+            span = max(abs(q - r) for q in pts for r in pts)
+            if len(pts) >= 3 and hull.geom_type == "Polygon" and hull.area > 0.02 * span * span:
+                ring = [complex(x, y) for x, y in list(hull.exterior.coords)[:-1]]
+                self.s.polygon(ring, fc=PLATE_FILL, lw=PLATE_EDGE_PT, gid=f"link-{body}", zorder=1.8, obstacle=False, joinstyle="round")
+                self.s.obstacles.append(hull.exterior.buffer(PLATE_EDGE_PT * 0.2))
+                c = hull.centroid
+                self.plates[body] = complex(c.x, c.y)
+            else:
+                a, c = max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1]))
+                self.s.line([a, c], lw=BAR_PT, gid=f"link-{body}", zorder=2.0, capstyle="round")
+                self.bars[body] = (a, c)
+
+    def ground_pivots(self) -> None:
+        for name in _frame_pivots(self.scene):
+            q = self.p(name)
+            half = 3.2 * self.symbol_scale
+            left, right = q + complex(-half, -self.ground), q + complex(half, -self.ground)
+            self.s.polygon([q, left, right], fc="white", lw=0.8, gid=f"ground-{name}", zorder=2.5)
+            a, b = q + complex(-half - 2.0, -self.ground), q + complex(half + 2.0, -self.ground)
+            self.s.line([a, b], lw=1.0, gid="ground-base", zorder=2.5)
+            self._hatch(a, b, -1j)
+
+    def _guide_of(self, body: str) -> str | None:
+        for pr in self.scene.prismatics:
+            if pr.slider == body:
+                return pr.guide
+        return None
+
+    def blocks(self) -> None:
+        """Slider blocks and sleeves, rotated with their lines.
+
+        Two blocks on one pin (a follower block on a frame guide pinned to a
+        block on a moving incline) would hide each other: the one on the
+        moving line is centred on the pin, the other is drawn beside it along
+        its own guide, its end on the pin.
+        """
+        self.block_centres: dict[str, complex] = {}
+        L = self.block[0] / 2
+        order = sorted(
+            (b for b in self.moving if self.is_block(b)),
+            key=lambda b: self._guide_of(b) == FRAME,
+        )
+        placed: list = []
+        for body in order:
+            pin = self.body_points(body)[0]
+            u = cmath.exp(1j * self.block_angle(body))
+            centre = pin
+            if any(abs(c - pin) < 1e-9 for c in self.block_centres.values()):
+                options = [pin + u * L, pin - u * L]
+                centre = min(options, key=lambda c: sum(self._rect(c, u).intersection(q).area for q in placed))
+            rect = self._rect(centre, u)
+            corners = [complex(x, y) for x, y in list(rect.exterior.coords)[:-1]]
+            self.s.polygon(corners, fc="white", lw=1.1, gid=f"block-{body}", zorder=3.0)
+            placed.append(rect)
+            self.block_centres[body] = centre
+        # a linear driver that carries an arm still slides on its guide in a block
+        driver = self.scene.driver
+        if hasattr(driver, "guide") and not self.is_block(driver.link):
+            u = cmath.exp(1j * self.scene.bodies[FRAME].lines[driver.guide].angle)
+            rect = self._rect(self.p(driver.point), u)
+            corners = [complex(x, y) for x, y in list(rect.exterior.coords)[:-1]]
+            self.s.polygon(corners, fc="white", lw=1.1, gid=f"block-{driver.link}", zorder=3.0)
+        # a sleeve of a moving link that a rod (not a block) slides through
+        for pr in self.scene.prismatics:
+            if pr.guide == FRAME or self.is_block(pr.guide) or self.is_block(pr.slider):
+                continue
+            line = self.scene.bodies[pr.guide].lines[pr.guide_line]
+            centre = self.g(pr.guide, line.origin)
+            u = cmath.exp(1j * (self.angle(pr.guide) + line.angle))
+            rect = self._rect(centre, u, 0.8)
+            corners = [complex(x, y) for x, y in list(rect.exterior.coords)[:-1]]
+            self.s.polygon(corners, fc="white", lw=1.1, gid=f"sleeve-{pr.guide}", zorder=3.0)
+
+    def _rect(self, centre: complex, u: complex, scale: float = 1.0):
+        L, H = self.block[0] / 2 * scale, self.block[1] / 2 * scale
+        n = u * 1j
+        pts = [centre + u * L + n * H, centre - u * L + n * H, centre - u * L - n * H, centre + u * L - n * H]
+        return ShapelyPolygon([(p.real, p.imag) for p in pts])
+
+    def pins(self) -> None:
+        for name in self.sol.positions:
+            bodies = self.scene.bodies_with(name)
+            if not bodies:
+                continue
+            q = self.p(name)
+            if len(bodies) >= 2:
+                self.s.circle(q, self.pin_r, fc="white", lw=0.9, gid=f"pin-{name}", zorder=4.0)
+            elif name in self.scene.report:
+                self.s.circle(q, DOT_R, fc=INK, lw=0.0, gid=f"dot-{name}", zorder=4.0)
+
+    def driver_arrows(self) -> None:
+        driver = self.scene.driver
+        if hasattr(driver, "omega"):
+            self._crank_arrows(driver)
+        else:
+            self._linear_arrows(driver)
+
+    def _free_arc_start(self, centre: complex, radius: float, sweep: float) -> float:
+        # what passes through the pivot (its pin, the crank, the ground symbol) counts only away from it
+        hole = Point(centre.real, centre.imag).buffer(radius * 0.6)
+        obstacles = [o.difference(hole) for o in self.s.obstacles]
+        arr = np.array([o for o in obstacles if not o.is_empty], dtype=object)
+        best = None
+        for k in range(36):
+            start = 2 * math.pi * k / 36
+            pts = [centre + radius * cmath.exp(1j * (start + sweep * j / 12)) for j in range(13)]
+            arc = LineString([(q.real, q.imag) for q in pts])
+            d = float(shapely.distance(arc, arr).min()) if len(arr) else math.inf
+            score = min(d, 3.0)
+            if best is None or score > best[0] + 1e-9:
+                best = (score, start)
+        return best[1]
+
+    def _crank_arrows(self, driver) -> None:
+        centre = self.p(driver.pivot)
+        for symbol, value, radius, dashes, gid in (
+            ("ω", driver.omega, self.omega_r, None, "omega"),
+            ("ε", driver.epsilon, self.epsilon_r, (3.0, 1.5), "epsilon"),
+        ):
+            if not value:
+                continue
+            sweep = math.radians(120) * (1 if value > 0 else -1)
+            start = self._free_arc_start(centre, radius, sweep)
+            self.s.arc_arrow(centre, radius, start, sweep, lw=0.9, dashes=dashes, gid=gid)
+            text, math_ = _sub(symbol, driver.link)
+            mid = centre + radius * cmath.exp(1j * (start + sweep / 2))
+            self._label(mid, text, gid=f"{gid}-label", size=LABEL_PT, prefer=mid - centre, math_=math_)
+
+    def _linear_arrows(self, driver) -> None:
+        q = self.p(driver.point)
+        u = cmath.exp(1j * self.scene.bodies[FRAME].lines[driver.guide].angle)
+        arr = np.array(self.s.obstacles, dtype=object)
+        offset = self.block[1] / 2 + 4.5
+        best = None
+        for side in (1j, -1j):
+            seg = LineString([((q + u * side * offset + u * t).real, (q + u * side * offset + u * t).imag) for t in (-8, 8)])
+            d = float(shapely.distance(seg, arr).min()) if len(arr) else math.inf
+            if best is None or d > best[0] + 1e-9:
+                best = (d, side)
+        side = best[1]
+        for k, (symbol, value, dashes, gid) in enumerate(
+            (("v", driver.velocity, None, "velocity"), ("a", driver.acceleration, (3.0, 1.5), "acceleration"))
+        ):
+            if not value:
+                continue
+            sense = u if value > 0 else -u
+            base = q + u * side * (offset + 4.5 * k)
+            tail, tip = base - sense * 7.0, base + sense * 7.0
+            self.s.arrow(tail, tip, lw=0.9, dashes=dashes, head=2.6, gid=gid)
+            self._label(tip, rf"${symbol}_{{{driver.point}}}$", gid=f"{gid}-label", size=LABEL_PT, prefer=u * side, math_=True)
+
+    def _label(self, anchor, text, *, gid, size, prefer=None, math_=False, first=(), gaps=(0.6, 1.4, 2.4, 3.6, 5.5, 8.0)):
+        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_)
+
+    def point_labels(self) -> None:
+        for name in mechanism_labels(self.sol):
+            q = self.p(name)
+            away = q - self.centroid
+            r = self.pin_r + 0.5
+            self._label(q, name, gid=f"point-{name}", size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=(r, r + 0.8, r + 1.8, r + 3.0, r + 5.0))
+
+    def link_labels(self) -> None:
+        for body in self.moving:
+            if body in self.plates:
+                self._label(self.plates[body], body, gid=f"number-{body}", size=SMALL_PT + 1, first=(self.plates[body],))
+            elif body in self.bars:
+                a, c = self.bars[body]
+                mid = (a + c) / 2
+                n = unit(c - a) * 1j
+                self._label(mid, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=n, gaps=(1.2, 2.5, 4.0, 7.0))
+            elif body in self.block_centres:
+                centre = self.block_centres[body]
+                r = math.hypot(*self.block) / 2
+                self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
+
+    def caption(self) -> None:
+        b = self.s.bounds
+        x, y = b.xmin, b.ymin - 2.5
+        self.s.text(complex(x, y), "Mechanism", size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+        y -= 5.0
+        self.s.text(complex(x, y), f"k_l = {fmt_number(self.k_l)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)

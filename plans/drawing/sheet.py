@@ -1,0 +1,319 @@
+"""The one-page sheet and :func:`write_drawings`.
+
+The sheet puts the title, the structural formula, the mechanism and both
+plans (each at its own scale, 1:1 on the page, so the stated scale factors
+hold on the printed sheet too), the vector equations each group solved and
+the results table on one ISO page: the smallest of A4 … A0 (landscape or
+portrait) that holds them, or a larger custom page when even A0 does not.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from matplotlib.mathtext import MathTextParser
+
+from ._canvas import Sketch, fit_axes, text_size
+from .mechanism import _Mechanism
+from .plan_drawing import _draw as _draw_plan_into
+from .style import HEADING_PT, MARGIN_MM, SMALL_PT, TITLE_PT
+from .svg import drawing_rc, new_figure, render_svg, write_atomic
+
+__all__ = ["draw_sheet", "write_drawings", "sheet_equations", "PAGES"]
+
+#: ISO 216 pages [mm], landscape; portrait is tried as well.
+PAGES = {"A4": (297.0, 210.0), "A3": (420.0, 297.0), "A2": (594.0, 420.0), "A1": (841.0, 594.0), "A0": (1189.0, 841.0)}
+PAGE_MARGIN = 12.0  # mm
+GAP = 8.0  # mm between blocks
+EQ_PT = 8.5
+TABLE_PT = SMALL_PT + 0.5
+
+
+def sheet_equations(solution) -> list[str]:
+    """One line per construction step: ``"RRP(3,4):  v_B = v_A + v_BA;  v_B = …"``, velocity plan first."""
+    lines = []
+    for plan in (solution.velocity_plan, solution.acceleration_plan):
+        if plan is None:
+            continue
+        for step in plan.steps:
+            if step.equations:
+                lines.append(f"{step.group}:  " + ";   ".join(step.equations))
+    return lines
+
+
+_TOKEN = re.compile(r"(?<![A-Za-z0-9.])([A-Za-zα-ωΑ-Ω])(?:\^([A-Za-z]+))?(?:_([A-Za-z0-9′]+))?(?![A-Za-z0-9])")
+_GREEK_INDEX = re.compile(r"^[α-ω]\d+$")
+_PARSER = MathTextParser("path")
+
+
+def _pretty(line: str) -> tuple[str, bool]:
+    """``v_BA``, ``a^n_CB``, ``ω2`` → mathtext with real sub- and superscripts.
+
+    Returns the plain line when there is nothing to set or mathtext cannot
+    take it.
+    """
+    if "$" in line:
+        return line, False
+
+    def repl(m: re.Match) -> str:
+        base, sup, sub = m.group(1), m.group(2), m.group(3)
+        if not sup and not sub:
+            return m.group(0)
+        sup_part = f"^{{{sup}}}" if sup else ""
+        sub_part = f"_{{{sub}}}" if sub else ""
+        return f"${base}{sup_part}{sub_part}$"
+
+    text = _TOKEN.sub(repl, line)
+    text = re.sub(r"(?<![A-Za-z0-9$])([α-ω])(\d+)(?![A-Za-z0-9])", r"$\1_{\2}$", text)
+    if text == line:
+        return line, False
+    try:
+        _PARSER.parse(text, dpi=72)
+    except Exception:  # mathtext refuses some characters; the plain text is still right
+        return line, False
+    return text, True
+
+
+class _Block:
+    """A rectangle of the sheet [mm] with a function that draws it at a lower-left corner."""
+
+    def __init__(self, width: float, height: float, place):
+        self.width = width
+        self.height = height
+        self.place = place
+
+
+def _drawing_block(fig, kind: str, obj) -> _Block:
+    ax = fig.add_axes([0, 0, 0.01, 0.01])
+    prefix = {"mechanism": "mech", "velocity": "vel", "acceleration": "acc"}[kind]
+    sketch = Sketch(ax, prefix)
+    if kind == "mechanism":
+        _Mechanism(sketch, obj).draw()
+    else:
+        _draw_plan_into(sketch, obj)
+    bounds = sketch.bounds
+    width, height = bounds.width + 2 * MARGIN_MM, bounds.height + 2 * MARGIN_MM
+
+    def place(x: float, y: float, page: tuple[float, float]) -> None:
+        fit_axes(ax, bounds, MARGIN_MM, rect_mm=(x, y), page_mm=page)
+
+    return _Block(width, height, place)
+
+
+def _text_rows(rows: list[tuple[str, float, str, bool]], line_gap: float = 1.5):
+    """Size of a stack of text lines (text, size, weight, mathtext)."""
+    width = max((text_size(t, s, w, m)[0] for t, s, w, m in rows), default=0.0)
+    heights = [text_size("lp", s)[1] + line_gap for _, s, _, _ in rows]
+    return width, sum(heights), heights
+
+
+def _stack_block(rows: list[tuple[str, float, str, bool]], gid: str) -> _Block:
+    width, height, heights = _text_rows(rows)
+
+    def place_into(sketch: Sketch, x: float, y: float) -> None:
+        top = y + height
+        for (text, size, weight, _), h in zip(rows, heights):
+            sketch.text(complex(x, top - h / 2), text, size=size, ha="left", va="center", weight=weight, gid=gid, obstacle=False)
+            top -= h
+
+    return _Block(width, height, place_into)
+
+
+def _numeric(cell: str) -> bool:
+    return bool(re.match(r"^\s*[+\-−]?[0-9.]", cell))
+
+
+def _table_block(table: list[list[str]]) -> _Block:
+    columns = max(len(r) for r in table)
+    rows = [list(r) + [""] * (columns - len(r)) for r in table]
+    pad = 2.0
+    widths = [max(text_size(r[c], TABLE_PT, "bold" if i == 0 else "normal")[0] for i, r in enumerate(rows)) + 2 * pad for c in range(columns)]
+    row_h = text_size("lp", TABLE_PT)[1] + 1.6
+    heading_h = text_size("lp", HEADING_PT)[1] + 2.0
+    width = sum(widths)
+    height = heading_h + row_h * len(rows) + 1.0
+
+    # a column of numbers is right-aligned, its header too
+    right_columns = {
+        c
+        for c in range(1, columns)
+        if (cells := [r[c] for r in rows[1:] if r[c].strip()]) and sum(map(_numeric, cells)) * 2 >= len(cells)
+    }
+
+    def place_into(sketch: Sketch, x: float, y: float) -> None:
+        top = y + height
+        sketch.text(complex(x, top - heading_h / 2), "Results", size=HEADING_PT, ha="left", va="center", weight="bold", gid="table-heading", obstacle=False)
+        top -= heading_h
+        sketch.line([complex(x, top), complex(x + width, top)], lw=0.9, gid="table-rule", obstacle=False)
+        for i, row in enumerate(rows):
+            cx = x
+            yc = top - row_h * (i + 0.5)
+            for c, cell in enumerate(row):
+                right = c in right_columns
+                at = complex(cx + widths[c] - pad, yc) if right else complex(cx + pad, yc)
+                sketch.text(at, cell, size=TABLE_PT, ha="right" if right else "left", va="center", weight="bold" if i == 0 else "normal", gid="table-cell", obstacle=False)
+                cx += widths[c]
+            if i == 0:
+                sketch.line([complex(x, top - row_h), complex(x + width, top - row_h)], lw=0.5, gid="table-rule", obstacle=False)
+        bottom = top - row_h * len(rows)
+        sketch.line([complex(x, bottom), complex(x + width, bottom)], lw=0.9, gid="table-rule", obstacle=False)
+
+    return _Block(width, height, place_into)
+
+
+def _choose_page(width: float, height: float) -> tuple[str, tuple[float, float]]:
+    need_w, need_h = width + 2 * PAGE_MARGIN, height + 2 * PAGE_MARGIN
+    for name, (w, h) in PAGES.items():
+        for size in ((w, h), (h, w)):
+            if need_w <= size[0] + 1e-9 and need_h <= size[1] + 1e-9:
+                return name, size
+    return "custom", (need_w, need_h)
+
+
+def draw_sheet(solution, *, formula: str = "", table: list[list[str]] | None = None, equations: list[str] | None = None):
+    """The one-page sheet as a matplotlib Figure (SVG canvas), sized in mm to an ISO page.
+
+    Parameters
+    ----------
+    solution : plans.graphical.GraphicalSolution
+    formula : str
+        The structural formula, printed under the title.
+    table : list of list of str, optional
+        Results, first row the header.
+    equations : list of str, optional
+        Lines of vector equations; by default those of the plans' steps.
+    """
+    with drawing_rc():
+        fig = new_figure()
+        drawings = [_drawing_block(fig, "mechanism", solution), _drawing_block(fig, "velocity", solution.velocity_plan)]
+        if solution.acceleration_plan is not None:
+            drawings.append(_drawing_block(fig, "acceleration", solution.acceleration_plan))
+
+        title = str(getattr(solution.scene, "title", "") or "")
+        head_rows = [(title, TITLE_PT, "bold", False)] if title else []
+        if formula:
+            head_rows.append((f"Structural formula:  {formula}", HEADING_PT, "normal", False))
+        head = _stack_block(head_rows, "title") if head_rows else None
+
+        eq_lines = sheet_equations(solution) if equations is None else list(equations)
+        eq_block = None
+        if eq_lines:
+            rows = [("Vector equations", HEADING_PT, "bold", False)]
+            for line in eq_lines:
+                text, is_math = _pretty(line)
+                rows.append((text, EQ_PT, "normal", is_math))
+            eq_block = _stack_block(rows, "equation")
+        table_block = _table_block(table) if table else None
+
+        # arrangements of the drawings: one row, or the mechanism above the plans
+        arrangements = [[drawings]]
+        if len(drawings) > 1:
+            arrangements.append([[drawings[0]], drawings[1:]])
+        texts = [b for b in (eq_block, table_block) if b is not None]
+        best = None
+        for rows in arrangements:
+            row_w = max(sum(b.width for b in row) + GAP * (len(row) - 1) for row in rows)
+            row_h = sum(max(b.height for b in row) for row in rows) + GAP * (len(rows) - 1)
+            for side_by_side in (True, False) if len(texts) > 1 else (True,):
+                if not texts:
+                    bottom_w = bottom_h = 0.0
+                elif side_by_side:
+                    bottom_w = sum(b.width for b in texts) + GAP * (len(texts) - 1)
+                    bottom_h = max(b.height for b in texts)
+                else:
+                    bottom_w = max(b.width for b in texts)
+                    bottom_h = sum(b.height for b in texts) + GAP * (len(texts) - 1)
+                width = max(row_w, bottom_w, head.width if head else 0.0)
+                height = (head.height + GAP if head else 0.0) + row_h + (GAP + bottom_h if texts else 0.0)
+                _, page = _choose_page(width, height)
+                area = page[0] * page[1]
+                if best is None or area < best[0] - 1e-6:
+                    best = (area, rows, page, side_by_side, width, height)
+        _, rows, page, side_by_side, content_w, content_h = best
+
+        pw, ph = page
+        fig.set_size_inches(pw / 25.4, ph / 25.4)
+        paper = fig.add_axes([0, 0, 1, 1], zorder=-1)
+        paper.set_xlim(0, pw)
+        paper.set_ylim(0, ph)
+        paper.set_axis_off()
+        sheet = Sketch(paper, "sheet")
+
+        # the content block centred on the page
+        x0 = max(PAGE_MARGIN, (pw - content_w) / 2)
+        y = ph - max(PAGE_MARGIN, (ph - content_h) / 2)
+        if head:
+            y -= head.height
+            head.place(sheet, x0, y)
+            y -= GAP
+        for row in rows:
+            h = max(b.height for b in row)
+            x = x0
+            for b in row:
+                b.place(x, y - b.height, page)  # tops aligned
+                x += b.width + GAP
+            y -= h + GAP
+        if texts:
+            if side_by_side:
+                x = x0
+                for b in texts:
+                    b.place(sheet, x, y - b.height)
+                    x += b.width + GAP
+            else:
+                for b in texts:
+                    b.place(sheet, x0, y - b.height)
+                    y -= b.height + GAP
+    return fig
+
+
+def write_drawings(
+    solution,
+    directory,
+    *,
+    formula: str = "",
+    table: list[list[str]] | None = None,
+    equations: list[str] | None = None,
+) -> list[Path]:
+    """Write ``mechanism.svg``, ``velocity.svg``, ``acceleration.svg`` and ``sheet.svg``.
+
+    All four are rendered in memory first and then written atomically together
+    (see :func:`plans.drawing.svg.write_atomic`): a failure leaves every
+    existing file as it was and no temporary file behind.  ``acceleration.svg``
+    is written only when the solution has an acceleration plan; an old one in
+    *directory* is then removed, so the directory never mixes two runs.
+
+    Parameters
+    ----------
+    solution : plans.graphical.GraphicalSolution
+    directory : str or pathlib.Path
+        Created if missing.
+    formula : str
+        The structural formula for the sheet.
+    table : list of list of str, optional
+        The results table for the sheet, first row the header.
+    equations : list of str, optional
+        Vector equations for the sheet; by default from the plans' steps.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written, in the order above.
+    """
+    from .mechanism import draw_mechanism
+    from .plan_drawing import draw_plan
+
+    directory = Path(directory)
+    contents: dict[Path, bytes] = {}
+    contents[directory / "mechanism.svg"] = render_svg(draw_mechanism(solution)[0].figure)
+    contents[directory / "velocity.svg"] = render_svg(draw_plan(solution.velocity_plan)[0].figure)
+    if solution.acceleration_plan is not None:
+        contents[directory / "acceleration.svg"] = render_svg(draw_plan(solution.acceleration_plan)[0].figure)
+    contents[directory / "sheet.svg"] = render_svg(draw_sheet(solution, formula=formula, table=table, equations=equations))
+    directory.mkdir(parents=True, exist_ok=True)
+    paths = write_atomic(contents)
+    if solution.acceleration_plan is None:
+        stale = directory / "acceleration.svg"
+        if stale.exists():
+            stale.unlink()
+    return paths
