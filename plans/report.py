@@ -176,6 +176,7 @@ def format_json(doc: dict) -> str:
 
 
 def _vector_cells(z: complex) -> list[str]:
+    z = complex(_clean(z.real), _clean(z.imag))
     magnitude = abs(z)
     direction = f"{math.degrees(cmath.phase(z)):9.3f}" if magnitude > 0 else "        —"
     return [f"{z.real:13.6g}", f"{z.imag:13.6g}", f"{magnitude:13.6g}", direction]
@@ -244,7 +245,7 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
             w(f"{name} ({what})\n")
             w(f"  analytic   s = {motion.s[k]:.6g}, v_rel = {motion.v_rel[k]:.6g}")
             if acc:
-                c = complex(motion.coriolis[k])
+                c = complex(*_vec(complex(motion.coriolis[k])))
                 w(f", a_rel = {motion.a_rel[k]:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|")
             w("\n")
             vr = rows.get(("sliders", name, "v_rel"))
@@ -252,7 +253,7 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
                 w(f"  graphical  v_rel = {vr.graphical:.6g}")
                 ar, co = rows.get(("sliders", name, "a_rel")), rows.get(("sliders", name, "coriolis"))
                 if ar is not None:
-                    c = complex(co.graphical)
+                    c = complex(*_vec(complex(co.graphical)))
                     w(f", a_rel = {ar.graphical:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|")
                 worst = max((r for r in (vr, ar, co) if r is not None), key=lambda r: r.rel_error)
                 w(f"   (largest rel err {worst.rel_error:.1e})\n")

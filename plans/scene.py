@@ -655,8 +655,9 @@ class _SceneReader:
                     raise self.fail(f"compute.points[{k}]", f"no link has a point {name!r}{_suggest(name, points)}")
                 report.append(name)
         else:
-            # every point of a moving link, in the order the links name them
-            report = list(_all_points({n: b for n, b in bodies.items() if n != FRAME}))
+            # every point that moves, in the order the links name them
+            moving = _all_points({n: b for n, b in bodies.items() if n != FRAME})
+            report = [p for p in moving if p not in bodies[FRAME].points]
         return accelerations, tuple(report)
 
     def scales(self, table: dict) -> Scales:

@@ -8,10 +8,11 @@ runs ``plans draw --example NAME -o figures/NAME`` for each bundled scene.
 import sys
 from pathlib import Path
 
-from plans.cli import main
-from plans.scene import example_names
-
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))  # draw with this checkout's code
+
+from plans.cli import main  # noqa: E402
+from plans.scene import example_names  # noqa: E402
 
 
 def make_figures() -> int:
