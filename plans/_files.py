@@ -22,8 +22,16 @@ def write_atomic(path: str | Path, data: str | bytes) -> Path:
 def replace_all(contents: dict[Path, str | bytes]) -> list[Path]:
     """Write several files so that either all are replaced or none is.
 
-    Every file is first written in full to a temporary file in its own
-    directory; only when all are written are they renamed into place.
+    Every file is first written in full (and flushed to disk) to a temporary
+    file in its own directory, with the mode of the file it replaces (0644
+    for a new one); only when all are written are they renamed into place.
+    If anything fails before the renames, the temporary files are removed and
+    the targets are untouched.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The targets, in the order given.
     """
     temps: list[tuple[str, Path]] = []
     try:
@@ -32,8 +40,15 @@ def replace_all(contents: dict[Path, str | bytes]) -> list[Path]:
             path.parent.mkdir(parents=True, exist_ok=True)
             fd, temp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
             temps.append((temp, path))
+            try:
+                mode = path.stat().st_mode & 0o777
+            except FileNotFoundError:
+                mode = 0o644
+            os.chmod(temp, mode)
             with os.fdopen(fd, "wb") as handle:
                 handle.write(data.encode("utf-8") if isinstance(data, str) else data)
+                handle.flush()
+                os.fsync(handle.fileno())
         for temp, path in temps:
             os.replace(temp, path)
         return [path for _, path in temps]
