@@ -16,6 +16,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from .errors import PlansError, SceneError
+from .limits import WARN_CONDITION
 from .scene import Crank, Scene, example_names, example_path, load
 from .units import UnitError, parse_quantity
 
@@ -38,12 +39,43 @@ def _position_argument(parser: argparse.ArgumentParser) -> None:
     )
 
 
+def _positive(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}") from None
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}")
+    return value
+
+
+def _condition(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a condition number of at least 1 (or inf), got {text!r}") from None
+    if not value >= 1:
+        raise argparse.ArgumentTypeError(f"expected a condition number of at least 1 (or inf), got {text!r}")
+    return value
+
+
+def _warn_argument(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--warn-condition",
+        type=_condition,
+        default=WARN_CONDITION,
+        metavar="C",
+        help=f"warn when a group's condition number exceeds C, i.e. near a dead centre (default {WARN_CONDITION:g}; "
+        "the expected relative error there is about 9e-16 × C²; inf: never)",
+    )
+
+
 def _scale_arguments(parser: argparse.ArgumentParser) -> None:
     group = parser.add_argument_group("plan scales (default: the scene's [scales], else automatic round values)")
-    group.add_argument("--k-l", type=float, metavar="K", help="mechanism scale, m per mm of drawing")
-    group.add_argument("--k-v", type=float, metavar="K", help="velocity plan scale, (m/s) per mm")
-    group.add_argument("--k-a", type=float, metavar="K", help="acceleration plan scale, (m/s²) per mm")
-    group.add_argument("--precision", type=float, metavar="MM", help="drafting precision: round every measured length to this many mm")
+    group.add_argument("--k-l", type=_positive, metavar="K", help="mechanism scale, m per mm of drawing")
+    group.add_argument("--k-v", type=_positive, metavar="K", help="velocity plan scale, (m/s) per mm")
+    group.add_argument("--k-a", type=_positive, metavar="K", help="acceleration plan scale, (m/s²) per mm")
+    group.add_argument("--precision", type=_positive, metavar="MM", help="drafting precision: round every measured length to this many mm")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -58,17 +90,20 @@ def build_parser() -> argparse.ArgumentParser:
     _position_argument(solve)
     solve.add_argument("--json", action="store_true", help="print the documented JSON schema instead of a table")
     solve.add_argument("--analytic-only", action="store_true", help="skip the graphical construction")
+    _warn_argument(solve)
     _scale_arguments(solve)
 
     sweep = commands.add_parser("sweep", help="analytic solution over a whole driver cycle, as CSV")
     _scene_argument(sweep)
     sweep.add_argument("--steps", type=int, default=360, metavar="N", help="number of driver positions (default 360)")
     sweep.add_argument("-o", "--output", metavar="FILE", help="CSV file to write (default: standard output)")
+    _warn_argument(sweep)
 
     draw = commands.add_parser("draw", help="draw mechanism.svg, velocity.svg, acceleration.svg and sheet.svg")
     _scene_argument(draw)
     _position_argument(draw)
     draw.add_argument("-o", "--output", metavar="DIR", required=True, help="directory for the SVG files")
+    _warn_argument(draw)
     _scale_arguments(draw)
 
     commands.add_parser("examples", help="list the bundled example scenes")
@@ -109,7 +144,25 @@ def _number(text: str) -> float | str:
 def _construct(scene: Scene, args):
     from .graphical import construct
 
-    return construct(scene, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
+    return construct(
+        scene, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision, warn_condition=args.warn_condition
+    )
+
+
+def _warn(message: str) -> None:
+    print(f"plans: warning: {message}", file=sys.stderr)
+
+
+def _warn_solution(analytic, graphical=None) -> None:
+    """Near-dead-centre warnings on stderr: the analytic ones, then graphical ones for other groups."""
+    warned = set()
+    for warning in analytic.warnings:
+        _warn(str(warning))
+        warned.add(warning.group)
+    if graphical is not None:
+        for warning in graphical.warnings:
+            if warning.group not in warned:
+                _warn(f"{warning} (on the graphical plan)")
 
 
 def _solve(args) -> int:
@@ -117,7 +170,7 @@ def _solve(args) -> int:
     from .report import format_json, solution_json, solution_table
 
     scene = _load(args)
-    analytic = solve(scene)
+    analytic = solve(scene, warn_condition=args.warn_condition)
     graphical = comparisons = None
     if not args.analytic_only:
         from .compare import compare
@@ -125,9 +178,11 @@ def _solve(args) -> int:
         graphical = _construct(scene, args)
         comparisons = compare(analytic, graphical)
     if args.json:
-        sys.stdout.write(format_json(solution_json(analytic, graphical, comparisons)))
+        text = format_json(solution_json(analytic, graphical, comparisons))
     else:
-        sys.stdout.write(solution_table(analytic, graphical, comparisons))
+        text = solution_table(analytic, graphical, comparisons)
+    _warn_solution(analytic, graphical)
+    sys.stdout.write(text)
     return 0
 
 
@@ -137,6 +192,7 @@ def _sweep(args) -> int:
     from .analytic import solve
     from ._files import write_atomic
     from .report import sweep_csv
+    from .sweep import analyse_sweep
 
     scene = _load(args)
     if args.steps < 2:
@@ -148,16 +204,31 @@ def _sweep(args) -> int:
         if driver.stroke is None:
             raise SceneError("a sweep of a linear driver needs its stroke: add stroke = [start, end] to [driver]", scene.source, "driver.stroke")
         positions = np.linspace(driver.stroke[0], driver.stroke[1], args.steps)
-    analytic = solve(scene, positions, allow_partial=True)
+    analytic = solve(scene, positions, allow_partial=True, warn_condition=math.inf)
     text = sweep_csv(analytic)
     lost = int(np.count_nonzero(~np.asarray(analytic.valid)))
+    if lost == len(positions):
+        raise _nowhere(scene, positions)
     if lost:
-        print(f"plans: warning: the mechanism cannot assemble at {lost} of {args.steps} positions; their cells are empty", file=sys.stderr)
+        _warn(f"the mechanism is not solved at {lost} of {args.steps} positions; their rows have assembled = 0 and empty cells")
+    for message in analyse_sweep(analytic, args.warn_condition).messages():
+        _warn(message)
     if args.output:
         write_atomic(args.output, text)
     else:
         sys.stdout.write(text)
     return 0
+
+
+def _nowhere(scene: Scene, positions) -> PlansError:
+    """The error for a sweep that solves no position at all: the first position's own error."""
+    from .analytic import solve
+
+    try:
+        solve(scene, positions[:1])
+    except PlansError as exc:
+        return type(exc)(f"{exc}; the mechanism is not solved at any of the {len(positions)} positions of the sweep")
+    return PlansError(f"{scene.source}: the mechanism is not solved at any of the {len(positions)} positions of the sweep")
 
 
 def _draw(args) -> int:
@@ -167,14 +238,16 @@ def _draw(args) -> int:
     from .report import sheet_table
 
     scene = _load(args)
+    analytic = solve(scene, warn_condition=args.warn_condition)
     graphical = _construct(scene, args)
-    analytic = solve(scene)
     comparisons = compare(analytic, graphical)
+    sheet_table_rows = sheet_table(comparisons)
+    _warn_solution(analytic, graphical)
     paths = write_drawings(
         graphical,
         Path(args.output),
         formula=analytic.structure.formula,
-        table=sheet_table(comparisons),
+        table=sheet_table_rows,
     )
     for path in paths:
         print(path)
@@ -201,3 +274,8 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_ERROR
     except BrokenPipeError:  # plans solve ... | head
         return 0
+    except OSError as exc:  # an output file or directory that cannot be written
+        target = getattr(exc, "filename2", None) or exc.filename  # a rename names the temporary file first
+        where = f" {target}" if target else ""
+        print(f"plans: error: cannot write{where}: {exc.strerror or exc}", file=sys.stderr)
+        return EXIT_ERROR

@@ -14,6 +14,8 @@ import json
 import math
 
 from .compare import Comparison
+from .errors import PlansError
+from .limits import expected_rel_error
 from .scene import Crank, LinearDriver, Scene
 
 __all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table"]
@@ -27,6 +29,16 @@ def _clean(x: float) -> float:
     return 0.0 if x == 0 else x
 
 
+def _sine(x: float) -> float:
+    """|sin| for output: at most 1 (round-off can give 1 + 2e-16)."""
+    return min(_clean(x), 1.0)
+
+
+def _condition(x: float) -> float:
+    """A condition number for output: at least 1."""
+    return max(_clean(x), 1.0)
+
+
 def _vec(z: complex) -> list[float]:
     return [_clean(z.real), _clean(z.imag)]
 
@@ -35,6 +47,45 @@ def _deg(phi: float) -> float:
     """An angle in degrees in (−180, 180]."""
     d = math.degrees(math.remainder(phi, 2 * math.pi))
     return 180.0 if d == -180.0 else _clean(d)
+
+
+def check_finite(analytic, graphical=None, comparisons: list[Comparison] | None = None, position: int = 0) -> None:
+    """Refuse to report a position with a value that is not a finite number.
+
+    The solvers refuse dead centres and failed assemblies themselves; what is
+    left is overflow (numbers beyond ~1e308).  Raises :class:`PlansError`
+    naming the first such quantity, so inf or NaN never reaches a table or a
+    JSON document.
+    """
+    k = position
+    checks: list[tuple[str, object]] = []
+    for name, m in analytic.points.items():
+        checks += [(f"point {name}: r", m.r[k]), (f"point {name}: v", m.v[k])]
+        if analytic.scene.accelerations:
+            checks.append((f"point {name}: a", m.a[k]))
+    for name, m in analytic.links.items():
+        checks += [(f"link {name}: φ", m.phi[k]), (f"link {name}: ω", m.omega[k])]
+        if analytic.scene.accelerations:
+            checks.append((f"link {name}: ε", m.epsilon[k]))
+    for name, m in analytic.sliders.items():
+        checks += [(f"slider {name}: s", m.s[k]), (f"slider {name}: v_rel", m.v_rel[k])]
+        if analytic.scene.accelerations:
+            checks += [(f"slider {name}: a_rel", m.a_rel[k]), (f"slider {name}: Coriolis", m.coriolis[k])]
+    for name, c in analytic.conditions.items():
+        checks.append((f"group {name}: condition", c[k]))
+    for row in comparisons or ():
+        checks.append((f"graphical {row.section[:-1]} {row.name}: {row.quantity}", row.graphical))
+        checks.append((f"graphical {row.section[:-1]} {row.name}: {row.quantity} error", row.rel_error))
+    if graphical is not None:
+        for key, value in graphical.scales.items():
+            checks.append((f"scale {key}", value))
+    for what, value in checks:
+        z = complex(value)
+        if not (math.isfinite(z.real) and math.isfinite(z.imag)):
+            raise PlansError(
+                f"{analytic.scene.source}: {what} is not a finite number at this position ({value}): the scene's "
+                "numbers overflow double precision; rescale lengths or rates towards 1 (SI)"
+            )
 
 
 def driver_summary(scene: Scene) -> dict:
@@ -94,6 +145,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
     position : int
         Index into the analytic solution's driver positions.
     """
+    check_finite(analytic, graphical, comparisons, position)
     scene = analytic.scene
     k = position
     acc = scene.accelerations
@@ -155,11 +207,23 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
             entry["graphical"] = g
         doc["sliders"][name] = entry
     for group in analytic.structure.groups:
-        entry = {"kind": group.kind, "links": list(group.links),
-                 "condition": _clean(analytic.conditions[group.name][k])}
+        condition = _condition(analytic.conditions[group.name][k])
+        entry = {"kind": group.kind, "links": list(group.links), "joint": group.joint,
+                 "condition": condition,
+                 "expected_rel_error": _clean(expected_rel_error(condition)),
+                 "analytic_sine": _sine(analytic.sines[group.name][k])}
         if graphical is not None and group.name in graphical.sines:
-            entry["sine"] = _clean(graphical.sines[group.name])
+            entry["sine"] = _sine(graphical.sines[group.name])
+            if group.name in graphical.conditions:
+                entry["graphical_condition"] = _condition(graphical.conditions[group.name])
+        else:
+            entry["sine"] = entry["analytic_sine"]
         doc["groups"][group.name] = entry
+    position_value = float(analytic.driver[k])
+    warnings = [w for w in analytic.warnings if w.position == position_value]
+    if graphical is not None:
+        warnings += list(graphical.warnings)
+    doc["warnings"] = [w.as_dict() for w in warnings]
     if graphical is not None:
         doc["scales"] = {key: _clean(value) for key, value in graphical.scales.items()}
         if graphical.precision is not None:
@@ -190,6 +254,7 @@ def _error_cells(row: Comparison | None) -> list[str]:
 
 def solution_table(analytic, graphical=None, comparisons: list[Comparison] | None = None, position: int = 0) -> str:
     """A readable table of one position; graphical values and errors when given."""
+    check_finite(analytic, graphical, comparisons, position)
     scene = analytic.scene
     k = position
     acc = scene.accelerations
@@ -257,11 +322,14 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
                     w(f", a_rel = {ar.graphical:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|")
                 worst = max((r for r in (vr, ar, co) if r is not None), key=lambda r: r.rel_error)
                 w(f"   (largest rel err {worst.rel_error:.1e})\n")
-    w("\nGroups   condition number of the analytic 2×2 system; |sin| between the plan's construction lines\n")
+    w("\nGroups   condition number of the analytic 2×2 system; |sin| between the construction lines; "
+      "expected relative error of v, a (4·ε_mach·condition²)\n")
     for group in analytic.structure.groups:
-        line = f"{group.name:12} condition {analytic.conditions[group.name][k]:10.4g}"
-        if graphical is not None and group.name in graphical.sines:
-            line += f"   sine {graphical.sines[group.name]:.4f}"
+        condition = _condition(analytic.conditions[group.name][k])
+        sine = _sine(graphical.sines[group.name] if graphical is not None and group.name in graphical.sines else analytic.sines[group.name][k])
+        sine_text = f"{sine:.4f}" if sine >= 1e-3 else f"{sine:.3e}"
+        line = (f"{group.name:12} joint {group.joint:4} condition {condition:10.4g}   sine {sine_text}"
+                f"   expected rel. error {expected_rel_error(condition):.1e}")
         w(line + "\n")
     if comparisons:
         worst = max(comparisons, key=lambda r: r.rel_error)
@@ -279,9 +347,13 @@ def sweep_csv(analytic) -> str:
     Columns: the driver position (``phi_deg`` for a crank, ``s`` [m] for a
     linear driver), then per link ``phi_deg``, ``omega``, ``epsilon``; per
     reported point ``x, y, vx, vy, ax, ay``; per slider ``s, v_rel, a_rel,
-    coriolis_x, coriolis_y``; per group its condition number.  Acceleration
+    coriolis_x, coriolis_y``; per group its condition number, the |sin| of
+    the angle between its construction lines and the expected relative error
+    of its velocities and accelerations (4·ε_mach·condition², :mod:`plans.limits`).  Acceleration
     columns are left out when the scene asks for velocities only.  Positions
-    where the mechanism cannot assemble have empty cells and ``assembled = 0``.
+    where the mechanism cannot assemble or sits at a dead centre have empty
+    cells and ``assembled = 0``; a cell is never NaN or infinite (such a
+    value is left empty).
     """
     scene = analytic.scene
     acc = scene.accelerations
@@ -311,6 +383,8 @@ def sweep_csv(analytic) -> str:
                         (f"{prismatic.name}.coriolis_y", m.coriolis.imag)]
     for group in analytic.structure.groups:
         columns.append((f"{group.name}.condition", analytic.conditions[group.name]))
+        columns.append((f"{group.name}.sine", analytic.sines[group.name]))
+        columns.append((f"{group.name}.expected_rel_error", expected_rel_error(analytic.conditions[group.name])))
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(name for name, _ in columns)

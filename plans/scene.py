@@ -33,6 +33,7 @@ from importlib import resources
 from pathlib import Path
 
 from .errors import SceneError
+from .limits import COINCIDENT, MAX_MAGNITUDE, MIN_SCALE
 from .units import UnitError, parse_quantity
 
 __all__ = [
@@ -316,7 +317,7 @@ def from_mapping(data: dict, source: str = "<scene>") -> Scene:
 
 _TOP_KEYS = ("title", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales")
 _BODY_KEYS = ("points", "lines")
-_LINE_KEYS = ("through", "angle")
+_LINE_KEYS = ("through", "angle", "direction")
 _SLIDER_KEYS = ("pin", "on", "name")
 _PRISMATIC_KEYS = ("line", "on", "name")
 _CRANK_KEYS = ("crank", "pivot", "angle", "omega", "epsilon")
@@ -324,6 +325,14 @@ _LINEAR_KEYS = ("slider", "on", "point", "position", "velocity", "acceleration",
 _COMPUTE_KEYS = ("accelerations", "points")
 _SCALE_KEYS = ("k_l", "k_v", "k_a", "precision")
 _NAME = re.compile(r"^[A-Za-z0-9_]+$")
+_SI_UNITS = {
+    "length": "m",
+    "angle": "rad",
+    "angular velocity": "rad/s",
+    "angular acceleration": "rad/s^2",
+    "velocity": "m/s",
+    "acceleration": "m/s^2",
+}
 
 
 class _SceneReader:
@@ -377,9 +386,17 @@ class _SceneReader:
 
     def quantity(self, value: object, kind: str, field: str) -> float:
         try:
-            return parse_quantity(value, kind)
+            number = parse_quantity(value, kind)
         except UnitError as exc:
             raise self.fail(field, str(exc)) from None
+        if abs(number) > MAX_MAGNITUDE:
+            unit = _SI_UNITS[kind]
+            raise self.fail(
+                field,
+                f"{value!r} is {number:.3g} {unit}, beyond the range plans computes in: a {kind} must be at most "
+                f"{MAX_MAGNITUDE:g} {unit} in size, so that its squares and products stay finite",
+            )
+        return number
 
     def point(self, value: object, field: str) -> complex:
         if not (isinstance(value, list) and len(value) == 2):
@@ -387,6 +404,19 @@ class _SceneReader:
         x = self.quantity(value[0], "length", f"{field}[0]")
         y = self.quantity(value[1], "length", f"{field}[1]")
         return complex(x, y)
+
+    def direction(self, value: object, field: str) -> float:
+        """The angle [rad] of a direction vector [dx, dy] (bare numbers or lengths, only the ratio counts)."""
+        if not (isinstance(value, list) and len(value) == 2):
+            raise self.fail(field, f"expected a direction [dx, dy], such as [1, 0] or [0.6, 0.8], got {_describe(value)}")
+        z = complex(self.quantity(value[0], "length", f"{field}[0]"), self.quantity(value[1], "length", f"{field}[1]"))
+        if abs(z) == 0 or not math.isfinite(abs(z)):
+            raise self.fail(
+                field,
+                f"the direction [{z.real:g}, {z.imag:g}] has zero length and points nowhere; give a non-zero [dx, dy] "
+                "(such as [1, 0] along x) or an angle",
+            )
+        return cmath.phase(z)
 
     def name(self, value: object, field: str, what: str) -> str:
         if isinstance(value, int) and not isinstance(value, bool):
@@ -445,6 +475,7 @@ class _SceneReader:
                 raise self.fail("slider", f"two prismatic joints are both named {name!r}; give one a name = \"...\"")
 
         self.resolve_lines(bodies)
+        self.check_coincident(bodies)
         if "driver" not in data:
             raise self.fail("driver", "missing [driver]: say which link is driven (crank = \"2\" or slider = \"2\")")
         driver = self.driver(self.table(data["driver"], "driver"), bodies)
@@ -488,9 +519,14 @@ class _SceneReader:
             spec = self.table(spec, f"{field}.lines.{lname}")
             self.check_keys(spec, _LINE_KEYS, f"{field}.lines.{lname}")
             if "through" not in spec:
-                raise self.fail(f"{field}.lines.{lname}", "a line needs through = \"POINT\" (or [x, y]) and angle")
+                raise self.fail(f"{field}.lines.{lname}", "a line needs through = \"POINT\" (or [x, y]) and angle (or direction = [dx, dy])")
             through = spec["through"]
-            angle = self.quantity(spec.get("angle", 0.0), "angle", f"{field}.lines.{lname}.angle")
+            if "direction" in spec:
+                if "angle" in spec:
+                    raise self.fail(f"{field}.lines.{lname}", "give the line's angle or its direction = [dx, dy], not both")
+                angle = self.direction(spec["direction"], f"{field}.lines.{lname}.direction")
+            else:
+                angle = self.quantity(spec.get("angle", 0.0), "angle", f"{field}.lines.{lname}.angle")
             if isinstance(through, str):
                 pname = self.name(through, f"{field}.lines.{lname}.through", "point")
                 if pname not in points:
@@ -555,12 +591,32 @@ class _SceneReader:
         numbers = [int(n) for n in bodies if n.isdigit()]
         return str(max(numbers, default=1) + 1)
 
+    def check_coincident(self, bodies: dict[str, Body]) -> None:
+        """Points of one body closer than COINCIDENT × the scene's size are one point to double precision."""
+        zs = [z for body in bodies.values() for z in body.points.values()]
+        size = max((abs(a - b) for a in zs for b in zs), default=0.0)
+        if size == 0.0:
+            return
+        for body in bodies.values():
+            items = list(body.points.items())
+            for k, (a_name, a) in enumerate(items):
+                for b_name, b in items[k + 1 :]:
+                    if abs(a - b) <= COINCIDENT * size:
+                        field = "frame" if body.is_frame else f"link.{body.name}"
+                        raise self.fail(
+                            f"{field}.points.{b_name}",
+                            f"points {a_name} and {b_name} of {_body_words(body.name)} are {abs(a - b):.3g} m apart, "
+                            f"less than {COINCIDENT:g} of the scene's size ({size:.3g} m): they coincide to double "
+                            "precision; one point name per location, or a link long enough to compute with",
+                        )
+
     def resolve_lines(self, bodies: dict[str, Body]) -> None:
         # a [[slider]] block's line: nothing to resolve; kept for symmetry of checks
         for body in bodies.values():
             for line in body.lines.values():
                 if not math.isfinite(line.angle):
-                    raise self.fail(f"link.{body.name}.lines.{line.name}.angle", "angle is not finite")
+                    where = "frame" if body.is_frame else f"link.{body.name}"
+                    raise self.fail(f"{where}.lines.{line.name}.angle", "angle is not finite")
 
     def driver(self, table: dict, bodies: dict[str, Body]) -> Crank | LinearDriver:
         if "crank" in table and "slider" in table:
@@ -653,6 +709,11 @@ class _SceneReader:
                 name = self.name(name, f"compute.points[{k}]", "point")
                 if name not in points:
                     raise self.fail(f"compute.points[{k}]", f"no link has a point {name!r}{_suggest(name, points)}")
+                if name in report:
+                    raise self.fail(
+                        f"compute.points[{k}]",
+                        f"point {name!r} is listed twice (also as compute.points[{report.index(name)}]); list each point once",
+                    )
                 report.append(name)
         else:
             # every point that moves, in the order the links name them
@@ -676,6 +737,8 @@ class _SceneReader:
                     raise self.fail(f"scales.{key}", f"expected a number (per mm of drawing), got {_describe(value)}")
                 if not math.isfinite(number) or number <= 0:
                     raise self.fail(f"scales.{key}", f"must be a positive number, got {value!r}")
+                if not MIN_SCALE <= number <= MAX_MAGNITUDE:
+                    raise self.fail(f"scales.{key}", f"{value!r} is outside the range plans computes in ({MIN_SCALE:g} to {MAX_MAGNITUDE:g})")
                 values[key] = number
         return Scales(**values)
 

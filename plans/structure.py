@@ -85,6 +85,19 @@ class Group:
         return f"{self.kind}({','.join(_sorted_names(self.links))})"
 
     @property
+    def joint(self) -> str:
+        """The joint whose image the group's two construction lines place on the plans.
+
+        RRR, RRP, PRP: the inner joint C; RPR: the sleeve's pivot E (outer
+        joint of j); RPP: the pin B (outer joint of i).
+        """
+        if self.kind == "RPR":
+            return self.outer_j.point
+        if self.kind == "RPP":
+            return self.outer_i.point
+        return self.inner.point
+
+    @property
     def points(self) -> list[str]:
         """The joint point names of the group (R joints only)."""
         return [j.point for j in (self.outer_i, self.inner, self.outer_j) if j.kind == "R"]
@@ -195,6 +208,7 @@ def find_structure(scene: Scene) -> Structure:
         )
         raise StructureError(
             f"{scene.source}: mobility W = 3n − 2p = 3·{n} − 2·{p} = {w}, but a mechanism with one driver needs W = 1; {advice}"
+            + (_loose_points(scene) if w > 1 else "")
         )
     joints = _joints(scene)
     if isinstance(scene.driver, Crank):
@@ -238,8 +252,43 @@ def find_structure(scene: Scene) -> Structure:
                     f"{scene.source}: link {name} is joined to known links at {', '.join(j.label() for j in outer)}: "
                     "a single link held by two joints cannot move (it is part of a structure, not a dyad)"
                 )
+        solved = ", ".join(["the frame"] + _sorted_names([k for k in known if k != FRAME]))
+        detail = "; ".join(_joins(joints, name, known) for name in _sorted_names(left))
         raise StructureError(
             f"{scene.source}: links {', '.join(_sorted_names(left))} do not form class-II Assur groups (dyads) "
-            "attached to the driver; plans solves dyads only (a class III group or higher needs an iterative solution)"
+            f"attached to links solved before them ({solved}): {detail}; each dyad needs one joint from each of its "
+            "two links to a solved link; plans solves dyads only (a class III group or higher needs an iterative solution)"
         )
     return Structure(driver, tuple(groups), w)
+
+
+def _joins(joints: list[Joint], link: str, known: set[str]) -> str:
+    """``link 5: E with 6, G with 7 (not solved)`` for a message."""
+    parts = []
+    for j in joints:
+        if link in j.bodies:
+            other = j.other(link)
+            state = "" if other in known else " (not solved)"
+            parts.append(f"{j.label()} with {'the frame' if other == FRAME else other}{state}")
+    return f"link {link} joins " + (", ".join(parts) if parts else "nothing")
+
+
+def _loose_points(scene: Scene) -> str:
+    """Points of moving links that no other body has, with close names that may have been meant."""
+    import difflib
+
+    names = scene.point_names
+    loose = []
+    for name in names:
+        bodies = scene.bodies_with(name)
+        if len(bodies) == 1 and bodies[0] != FRAME and not scene.bodies[bodies[0]].block:
+            close = [n for n in names if n != name and (n.lower() == name.lower() or n in difflib.get_close_matches(name, names, n=3, cutoff=0.8))]
+            if close:
+                loose.append(f"{name} of link {bodies[0]} (did you mean {close[0]!r}, of {_words(scene.bodies_with(close[0]))}?)")
+    if not loose:
+        return ""
+    return "; a joint is where two bodies name the same point, and only one link has " + ", ".join(loose)
+
+
+def _words(bodies: list[str]) -> str:
+    return " and ".join("the frame" if b == FRAME else f"link {b}" for b in bodies)

@@ -1,19 +1,36 @@
-"""Fuzzing the scene loader: mutated valid scenes give a scene or a PlansError, nothing else."""
+"""Fuzzing the scene loader: mutated valid scenes give a solution or a PlansError, nothing else.
+
+Every mutated scene that loads is taken through the whole pipeline: structure,
+the analytic solution at the scene's position and over a few more, the
+graphical construction, the comparison, the reports (JSON and table, which
+refuse non-finite numbers) and a sweep's CSV, which must never hold NaN or inf.
+"""
 
 import copy
+import csv
+import io
 import math
 import tomllib
 
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+import numpy as np
+
 from plans import PlansError
+from plans.analytic import solve
+from plans.compare import compare
+from plans.graphical import construct
+from plans.report import format_json, solution_json, solution_table, sweep_csv
 from plans.scene import example_names, example_path, from_mapping
 from plans.structure import find_structure
 
 SCENES = {name: tomllib.loads(example_path(name).read_text()) for name in example_names()}
 
-EXTREMES = [0, -1, 1e-300, 1e300, -1e300, math.nan, math.inf, -math.inf, "", "1 kg", "nan m", [], {}, [1, 2, 3], True, "x"]
+EXTREMES = [
+    0, -1, 1e-300, 1e300, -1e300, 1e-9, 1e9, 1e29, -1e-12, math.nan, math.inf, -math.inf,
+    "", "1 kg", "nan m", "1e300 mm", "1e-300 km", "3 kg", [], {}, [1, 2, 3], [0, 0], ["1e-9 m", 0], True, "x", "O", "2.rod",
+]
 
 
 def _paths(node, prefix=()):
@@ -52,19 +69,35 @@ def mutated_scenes(draw):
         if not paths:
             break
         path = draw(st.sampled_from(paths))
-        action = draw(st.sampled_from(["drop", "replace", "replace", "rename"]))
+        action = draw(st.sampled_from(["drop", "replace", "replace", "rename", "number"]))
         value = draw(st.sampled_from(EXTREMES))
+        if action == "number":  # any double at all, NaN, infinities and subnormals included
+            action, value = "replace", draw(st.floats(allow_nan=True, allow_infinity=True))
         data = _mutate(data, path, action, value)
     return name, data
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+def _whole_pipeline(scene):
+    structure = find_structure(scene)
+    analytic = solve(scene, structure=structure)
+    graphical = construct(scene, structure)
+    comparisons = compare(analytic, graphical)
+    format_json(solution_json(analytic, graphical, comparisons))  # allow_nan=False: raises on NaN
+    solution_table(analytic, graphical, comparisons)
+    turn = solve(scene, np.linspace(-3.0, 3.0, 7), structure, allow_partial=True)
+    rows = list(csv.reader(io.StringIO(sweep_csv(turn))))[1:]
+    for row in rows:
+        for cell in row:
+            assert cell == "" or math.isfinite(float(cell)), row
+
+
+@settings(max_examples=250, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(mutated_scenes())
-def test_mutated_scene_gives_a_scene_or_a_plans_error(case):
+def test_mutated_scene_gives_a_solution_or_a_plans_error(case):
     name, data = case
     try:
         scene = from_mapping(data, source=f"{name}.toml")
-        find_structure(scene)
+        _whole_pipeline(scene)
     except PlansError as exc:
         assert str(exc), "an error must say something"
         assert "Traceback" not in str(exc)

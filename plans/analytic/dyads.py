@@ -53,6 +53,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..limits import REFUSE_SINE
 from ..scene import Line
 from .kinematics import (
     BodyState,
@@ -79,10 +80,11 @@ __all__ = [
 ]
 
 #: |sin| of the angle between the two construction lines below which a
-#: position counts as a dead centre.  Near a dead centre the sine behaves like
+#: position counts as a dead centre: :data:`plans.limits.REFUSE_SINE`, the
+#: policy both methods share.  Near a dead centre the sine behaves like
 #: the square root of the loop's discriminant, which rounding knows only to
 #: about 1e-15 relative: a sine below ~3e-8 cannot be told from zero.
-SINGULAR_SINE = 1e-7
+SINGULAR_SINE = REFUSE_SINE
 
 
 @dataclass(frozen=True, eq=False)

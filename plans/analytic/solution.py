@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..limits import NearDeadCentre, expected_rel_error
 from ..scene import Scene
 from ..structure import Structure
 
@@ -103,6 +104,9 @@ class AnalyticSolution:
     valid : bool array (N,)
         False where some group cannot be assembled or sits at a dead centre
         (only with ``allow_partial=True``; the unknown values are NaN there).
+    warnings : tuple[plans.limits.NearDeadCentre, ...]
+        Groups near a dead centre (condition above the solver's
+        ``warn_condition``): one per group and run of consecutive positions.
     """
 
     scene: Scene
@@ -116,6 +120,14 @@ class AnalyticSolution:
     conditions: dict[str, np.ndarray]
     sines: dict[str, np.ndarray]
     valid: np.ndarray
+    warnings: tuple[NearDeadCentre, ...] = ()
+
+    def expected_rel_errors(self, group: str) -> np.ndarray:
+        """Expected relative error of the group's velocities and accelerations, 4·ε_mach·cond², per position.
+
+        See :mod:`plans.limits`; NaN where the group is not assembled.
+        """
+        return expected_rel_error(np.asarray(self.conditions[group]))
 
     def __len__(self) -> int:
         return len(self.driver)
@@ -158,6 +170,7 @@ class AnalyticSolution:
             conditions={n: cut(c) for n, c in self.conditions.items()},
             sines={n: cut(c) for n, c in self.sines.items()},
             valid=cut(self.valid),
+            warnings=tuple(w for w in self.warnings if np.any(np.asarray(self.driver)[index] == w.position)),
         )
 
 

@@ -11,6 +11,7 @@ import math
 import numpy as np
 
 from ..errors import AssemblyError, SingularPositionError, StructureError
+from ..limits import REFUSE_SINE, WARN_CONDITION, NearDeadCentre, position_text
 from ..scene import FRAME, Crank, Line, Scene
 from ..structure import Group, Joint, Structure, find_structure
 from .dyads import DyadSolution, solve_prp, solve_rpp, solve_rpr, solve_rrp, solve_rrr
@@ -32,6 +33,7 @@ def solve(
     structure: Structure | None = None,
     *,
     allow_partial: bool = False,
+    warn_condition: float = WARN_CONDITION,
 ) -> AnalyticSolution:
     """Positions, velocities and accelerations of every link, point and slider.
 
@@ -57,6 +59,12 @@ def solve(
         If True, positions where a group cannot be assembled or sits at a dead
         centre do not raise: ``valid`` is False there and what depends on that
         group is NaN.
+    warn_condition : float
+        A group whose condition number exceeds this at a solved position is
+        near a dead centre: the solution carries a
+        :class:`~plans.limits.NearDeadCentre` warning (one per group and run
+        of consecutive positions, at the worst of them).  Default
+        :data:`plans.limits.WARN_CONDITION`; ``math.inf`` never warns.
 
     Returns
     -------
@@ -68,8 +76,10 @@ def solve(
         A group cannot be assembled at some position (naming the group, the
         joint, the position and the lengths with the gap).
     SingularPositionError
-        A group sits at a dead centre at some position (its 2×2 velocity
-        system is singular).
+        A group sits at a dead centre at some position: |sin| of the angle
+        between its construction lines is below
+        :data:`plans.limits.REFUSE_SINE` (its 2×2 velocity system is
+        singular to working precision).
     StructureError
         The scene is not a driver followed by dyads.
     ValueError
@@ -110,6 +120,8 @@ def solve(
     """
     if structure is None:
         structure = find_structure(scene)
+    if not (warn_condition >= 1):
+        raise ValueError(f"warn_condition must be a number of at least 1 (a condition number), got {warn_condition!r}")
     base = driver_position(scene)
     driver = _positions(positions, base)
     # index 0 is the scene's own position, where location hints choose the branches
@@ -137,7 +149,40 @@ def solve(
         if missing:
             raise StructureError(f"{scene.source}: the structure does not solve the links {', '.join(missing)}")
         states = {name: state.take(slice(1, None)) for name, state in states.items()}
-        return _solution(scene, structure, driver, states, conditions, sines, valid[1:])
+        warnings = _warnings(scene, structure, driver, conditions, sines, valid[1:], warn_condition)
+        return _solution(scene, structure, driver, states, conditions, sines, valid[1:], warnings)
+
+
+def _warnings(scene, structure, driver, conditions, sines, valid, warn_condition) -> tuple[NearDeadCentre, ...]:
+    """One warning per group and run of consecutive solved positions above *warn_condition*, at the worst."""
+    out = []
+    crank = isinstance(scene.driver, Crank)
+    for group in structure.groups:
+        condition = conditions[group.name]
+        near = valid & (condition > warn_condition)
+        k = 0
+        n = len(near)
+        while k < n:
+            if not near[k]:
+                k += 1
+                continue
+            end = k
+            while end < n and near[end]:
+                end += 1
+            worst = k + int(np.argmax(condition[k:end]))
+            out.append(
+                NearDeadCentre(
+                    group.name,
+                    group.joint,
+                    float(driver[worst]),
+                    position_text(crank, float(driver[worst])),
+                    float(condition[worst]),
+                    float(sines[group.name][worst]),
+                    "analytic",
+                )
+            )
+            k = end
+    return tuple(out)
 
 
 # --- driver -------------------------------------------------------------------
@@ -312,20 +357,19 @@ def _branch_sign(scene: Scene, group: Group, states: dict[str, BodyState], asked
 # --- messages -----------------------------------------------------------------
 
 
-def _length(x: float) -> str:
+def _length(x: float, gap: float | None = None) -> str:
+    """A length for messages; with *gap*, enough digits to show a difference of that size."""
     x = float(x)
+    if gap is not None and x != 0 and 0 < abs(gap) < 1e-3 * abs(x):
+        digits = min(16, 2 + math.ceil(math.log10(abs(x) / abs(gap))))
+        return f"{x:.{digits}g} m"
     if x == 0 or 1e-3 <= abs(x) < 1e4:
         return f"{x:.3f} m"
     return f"{x:.3g} m"
 
 
 def _where(scene: Scene, position: float) -> str:
-    if isinstance(scene.driver, Crank):
-        value, text = math.degrees(position), "φ = {}°"
-    else:
-        value, text = position * 1e3, "s = {} mm"
-    short = f"{value:.1f}"
-    return text.format(short if abs(float(short) - value) <= 1e-9 * max(1.0, abs(value)) else f"{value:.6g}")
+    return position_text(isinstance(scene.driver, Crank), position)
 
 
 def _failure(scene: Scene, group: Group, solution: DyadSolution, positions: np.ndarray, fails: np.ndarray) -> Exception:
@@ -346,9 +390,11 @@ def _failure(scene: Scene, group: Group, solution: DyadSolution, positions: np.n
             B, C, D = o_i.point, inner.point, o_j.point
             d = m["distance"]
             if d > m["sum"]:
-                detail = f"|{B}{D}| = {_length(d)} > {B}{C} + {C}{D} = {_length(m['sum'])} (gap {_length(d - m['sum'])})"
+                gap = d - m["sum"]
+                detail = f"|{B}{D}| = {_length(d, gap)} > {B}{C} + {C}{D} = {_length(m['sum'], gap)} (gap {_length(gap)})"
             elif d < m["difference"]:
-                detail = f"|{B}{D}| = {_length(d)} < |{B}{C} − {C}{D}| = {_length(m['difference'])} (gap {_length(m['difference'] - d)})"
+                gap = m["difference"] - d
+                detail = f"|{B}{D}| = {_length(d, gap)} < |{B}{C} − {C}{D}| = {_length(m['difference'], gap)} (gap {_length(gap)})"
             else:
                 detail = f"{B} and {D} coincide, or a point before them is not known"
             message = f"{group.name}: joint {C} cannot assemble at {where}: {detail}"
@@ -358,8 +404,8 @@ def _failure(scene: Scene, group: Group, solution: DyadSolution, positions: np.n
             y, length = m["distance"], m["length"]
             if y > length:
                 detail = (
-                    f"the line {C} runs on (parallel to {guide_line.key}) passes {_length(y)} from {B}, "
-                    f"farther than {B}{C} = {_length(length)} (gap {_length(y - length)})"
+                    f"the line {C} runs on (parallel to {guide_line.key}) passes {_length(y, y - length)} from {B}, "
+                    f"farther than {B}{C} = {_length(length, y - length)} (gap {_length(y - length)})"
                 )
             else:
                 detail = f"a point before {B} or the guide {guide_line.key} is not known"
@@ -369,7 +415,7 @@ def _failure(scene: Scene, group: Group, solution: DyadSolution, positions: np.n
             i_line, _ = _lines(scene, inner)
             d, offset = m["distance"], m["offset"]
             if d < offset:
-                detail = f"|{B}{E}| = {_length(d)} < the offset {_length(offset)} of the line from the pins (gap {_length(offset - d)})"
+                detail = f"|{B}{E}| = {_length(d, offset - d)} < the offset {_length(offset, offset - d)} of the line from the pins (gap {_length(offset - d)})"
             elif d == 0:
                 detail = f"{B} and {E} coincide: the line has no direction"
             else:
@@ -388,7 +434,11 @@ def _failure(scene: Scene, group: Group, solution: DyadSolution, positions: np.n
             what = f"the guides {_lines(scene, o_i)[1].key} and {_lines(scene, o_j)[1].key} are parallel: {inner.point} has no definite position"
         else:
             what = f"the lines {_lines(scene, inner)[1].key} and {_lines(scene, o_j)[1].key} are parallel: the position is not definite"
-        sine_text = f" (sin of the angle between the construction lines = {sine:.1e})" if math.isfinite(sine) else ""
+        sine_text = (
+            f" (|sin| of the angle between the construction lines = {sine:.1e}, below the dead-centre threshold {REFUSE_SINE:g})"
+            if math.isfinite(sine)
+            else ""
+        )
         error = SingularPositionError(
             f"{group.name}: dead centre at {where}: {what}{sine_text}; the 2×2 velocity system of links {i} and {j} "
             f"is singular and their velocities do not exist there{more}"
@@ -409,6 +459,7 @@ def _solution(
     conditions: dict[str, np.ndarray],
     sines: dict[str, np.ndarray],
     valid: np.ndarray,
+    warnings: tuple[NearDeadCentre, ...] = (),
 ) -> AnalyticSolution:
     links = {
         name: LinkMotion(_frozen(state.phi), _frozen(state.omega), _frozen(state.epsilon))
@@ -438,6 +489,7 @@ def _solution(
         conditions={name: _frozen(c) for name, c in conditions.items()},
         sines={name: _frozen(c) for name, c in sines.items()},
         valid=_frozen(valid),
+        warnings=warnings,
     )
 
 

@@ -1,4 +1,6 @@
-"""Drawings of a graphical solution: the mechanism, its plans, and a one-page sheet, as SVG.
+"""Drawings of a graphical solution: the mechanism, its plans, and a one-page sheet, as SVG;
+the plan of positions and the sheets of a multi-position run, cycle diagrams,
+and the A4 pages of a handout (SVG or PDF with the fonts embedded).
 
 Everything is drawn true to scale: the SVG declares its size in millimetres,
 and one millimetre of plan (or k_l metres of mechanism) is one millimetre of
@@ -18,6 +20,24 @@ from .mechanism import draw_mechanism
 from .plan_drawing import draw_acceleration_plan, draw_plan, draw_velocity_plan
 from .sheet import draw_sheet, write_drawings
 
+
+def __getattr__(name: str):
+    # multi-position output and handout pages, loaded on first use
+    if name in ("write_position_sheets", "draw_position_sheet", "render_pdf", "save_figure"):
+        from . import sheets
+
+        return getattr(sheets, name)
+    if name in ("draw_positions_plan",):
+        from .positions_plan import draw_positions_plan
+
+        return draw_positions_plan
+    if name in ("draw_cycle_diagrams", "write_cycle_diagrams"):
+        from . import diagrams
+
+        return getattr(diagrams, name)
+    raise AttributeError(f"module 'plans.drawing' has no attribute {name!r}")
+
+
 __all__ = [
     "draw_mechanism",
     "draw_plan",
@@ -25,4 +45,11 @@ __all__ = [
     "draw_acceleration_plan",
     "draw_sheet",
     "write_drawings",
+    "write_position_sheets",
+    "draw_position_sheet",
+    "draw_positions_plan",
+    "draw_cycle_diagrams",
+    "write_cycle_diagrams",
+    "render_pdf",
+    "save_figure",
 ]

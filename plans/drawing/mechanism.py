@@ -30,6 +30,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 
 from ._canvas import Sketch, fit_axes, fmt_number, unit
 from .labels import place_label
+from ..i18n import term
 from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, MARGIN_MM, PLATE_FILL, SMALL_PT
 from .svg import drawing_rc, new_figure
 
@@ -72,7 +73,7 @@ def _frame_pivots(scene) -> list[str]:
     return [p for p in frame.points if any(p in b.points for n, b in scene.bodies.items() if n != FRAME)]
 
 
-def draw_mechanism(solution, ax=None) -> list:
+def draw_mechanism(solution, ax=None, *, lang: str = "en") -> list:
     """Draw the kinematic scheme of *solution* (a GraphicalSolution) at k_l.
 
     Parameters
@@ -82,6 +83,8 @@ def draw_mechanism(solution, ax=None) -> list:
         Drawn into, with one data unit taken as one millimetre of paper.  When
         omitted, a new figure sized to the drawing (true to scale) is made;
         reach it as ``artists[0].figure``.
+    lang : str
+        Language of the heading (see :mod:`plans.i18n`).
 
     Returns
     -------
@@ -92,7 +95,7 @@ def draw_mechanism(solution, ax=None) -> list:
         if own:
             ax = new_figure().add_axes([0, 0, 1, 1])
         sketch = Sketch(ax, "mech")
-        _Mechanism(sketch, solution).draw()
+        _Mechanism(sketch, solution, lang=lang).draw()
         if own:
             fit_axes(ax, sketch.bounds, MARGIN_MM)
         else:
@@ -109,7 +112,9 @@ def _fit_user_axes(ax, sketch) -> None:
 
 
 class _Mechanism:
-    def __init__(self, sketch: Sketch, solution):
+    def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True):
+        self.lang = lang
+        self.show_caption = caption
         self.s = sketch
         self.sol = solution
         self.scene = solution.scene
@@ -450,8 +455,10 @@ class _Mechanism:
                 self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
 
     def caption(self) -> None:
+        if not self.show_caption:
+            return
         b = self.s.bounds
         x, y = b.xmin, b.ymin - 2.5
-        self.s.text(complex(x, y), "Mechanism", size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+        self.s.text(complex(x, y), term("mechanism", self.lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
         y -= 5.0
         self.s.text(complex(x, y), f"k_l = {fmt_number(self.k_l)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)

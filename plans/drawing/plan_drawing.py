@@ -28,9 +28,10 @@ from .style import (
     MARGIN_MM,
     VECTOR_STYLE,
 )
+from ..i18n import term
 from .svg import drawing_rc, new_figure
 
-__all__ = ["draw_plan", "draw_velocity_plan", "draw_acceleration_plan", "vectors_drawn", "ZERO_MM"]
+__all__ = ["draw_plan", "draw_velocity_plan", "draw_acceleration_plan", "vectors_drawn", "legend_words", "ZERO_MM"]
 
 #: A vector shorter than this [mm] is not drawn (it has no direction to show).
 ZERO_MM = 1e-6
@@ -62,7 +63,7 @@ def vectors_drawn(plan) -> list:
     ]
 
 
-def draw_plan(plan, ax=None) -> list:
+def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True) -> list:
     """Draw a velocity or acceleration plan (``plan.kind`` says which).
 
     Parameters
@@ -72,6 +73,10 @@ def draw_plan(plan, ax=None) -> list:
         Drawn into, one data unit = one millimetre.  When omitted, a new figure
         exactly the size of the plan is made (true to scale); reach it as
         ``artists[0].figure``.
+    lang : str
+        Language of the heading and the legend (see :mod:`plans.i18n`).
+    legend : bool
+        False leaves the legend out (a page that shows one legend for all).
 
     Returns
     -------
@@ -85,7 +90,7 @@ def draw_plan(plan, ax=None) -> list:
         if own:
             ax = new_figure().add_axes([0, 0, 1, 1])
         sketch = Sketch(ax, "vel" if plan.kind == "velocity" else "acc")
-        _draw(sketch, plan)
+        _draw(sketch, plan, lang=lang, legend=legend)
         if own:
             fit_axes(ax, sketch.bounds, MARGIN_MM)
         else:
@@ -97,14 +102,14 @@ def draw_plan(plan, ax=None) -> list:
     return sketch.artists
 
 
-def draw_velocity_plan(plan, ax=None) -> list:
+def draw_velocity_plan(plan, ax=None, *, lang: str = "en") -> list:
     """:func:`draw_plan` for a velocity plan."""
-    return draw_plan(plan, ax)
+    return draw_plan(plan, ax, lang=lang)
 
 
-def draw_acceleration_plan(plan, ax=None) -> list:
+def draw_acceleration_plan(plan, ax=None, *, lang: str = "en") -> list:
     """:func:`draw_plan` for an acceleration plan."""
-    return draw_plan(plan, ax)
+    return draw_plan(plan, ax, lang=lang)
 
 
 def _check(z: complex, what: str) -> complex:
@@ -114,7 +119,7 @@ def _check(z: complex, what: str) -> complex:
     return z
 
 
-def _draw(sketch: Sketch, plan) -> None:
+def _draw(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True) -> None:
     images = {name: _check(z, f"image {name}") for name, z in plan.images.items()}
     vectors = vectors_drawn(plan)
     for v in vectors:
@@ -169,21 +174,48 @@ def _draw(sketch: Sketch, plan) -> None:
         pieces = [(n, "pole-label" if (k == 0 and at == 0j and n == plan.pole) else f"image-{n}") for k, n in enumerate(names)]
         place_label(sketch, at, pieces, size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None)
 
-    _caption(sketch, plan, vectors, drawn_lines)
+    if caption:
+        _caption(sketch, plan, vectors, drawn_lines, lang, legend)
 
 
-def _caption(sketch: Sketch, plan, vectors, drawn_lines: int) -> None:
+#: plan kind -> vector kind -> key of plans.i18n.TERMS
+LEGEND_TERMS = {
+    "velocity": {"absolute": "absolute_velocity", "relative": "relative_velocity"},
+    "acceleration": {
+        "absolute": "absolute_acceleration",
+        "relative": "relative_acceleration",
+        "normal": "normal_component",
+        "tangential": "tangential_component",
+        "coriolis": "coriolis_component",
+    },
+}
+
+
+def legend_words(plan_kind: str, kind: str, lang: str = "en") -> str:
+    """The legend's words for a vector kind on a plan (``"construction"`` for construction lines)."""
+    if kind == "construction":
+        return term("construction_line", lang)
+    key = LEGEND_TERMS.get(plan_kind, {}).get(kind)
+    if key is None:
+        return LEGEND_TEXT[plan_kind].get(kind, kind) if lang == "en" else kind
+    return term(key, lang)
+
+
+def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True) -> None:
     """Heading, scale factor and legend, below the plan where they cover nothing."""
-    symbol, units, heading = _UNITS[plan.kind]
+    symbol, units, _ = _UNITS[plan.kind]
+    heading = term("velocity_plan" if plan.kind == "velocity" else "acceleration_plan", lang)
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
     sketch.text(complex(x, y), heading, size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
     sketch.text(complex(x, y), f"{symbol} = {fmt_number(plan.scale)} {units}", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)
+    if not legend:
+        return
     kinds = [k for k in _KIND_ORDER if any(v.kind == k for v in vectors)]
-    rows = [(k, LEGEND_TEXT[plan.kind].get(k, k)) for k in kinds]
+    rows = [(k, legend_words(plan.kind, k, lang)) for k in kinds]
     if drawn_lines:
-        rows.append(("construction", "construction line"))
+        rows.append(("construction", legend_words(plan.kind, "construction", lang)))
     row_h = text_size("lp", CAPTION_PT)[1] + 0.9
     y -= 4.6
     for kind, words in rows:

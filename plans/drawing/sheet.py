@@ -17,10 +17,11 @@ from matplotlib.mathtext import MathTextParser
 from ._canvas import Sketch, fit_axes, text_size
 from .mechanism import _Mechanism
 from .plan_drawing import _draw as _draw_plan_into
+from ..i18n import term
 from .style import HEADING_PT, MARGIN_MM, SMALL_PT, TITLE_PT
 from .svg import drawing_rc, new_figure, render_svg, write_atomic
 
-__all__ = ["draw_sheet", "write_drawings", "sheet_equations", "PAGES"]
+__all__ = ["draw_sheet", "write_drawings", "sheet_equations", "translate_table", "PAGES"]
 
 #: ISO 216 pages [mm], landscape; portrait is tried as well.
 PAGES = {"A4": (297.0, 210.0), "A3": (420.0, 297.0), "A2": (594.0, 420.0), "A1": (841.0, 594.0), "A0": (1189.0, 841.0)}
@@ -84,14 +85,14 @@ class _Block:
         self.place = place
 
 
-def _drawing_block(fig, kind: str, obj) -> _Block:
+def _drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True) -> _Block:
     ax = fig.add_axes([0, 0, 0.01, 0.01])
     prefix = {"mechanism": "mech", "velocity": "vel", "acceleration": "acc"}[kind]
     sketch = Sketch(ax, prefix)
     if kind == "mechanism":
-        _Mechanism(sketch, obj).draw()
+        _Mechanism(sketch, obj, lang=lang).draw()
     else:
-        _draw_plan_into(sketch, obj)
+        _draw_plan_into(sketch, obj, lang=lang, legend=legend)
     bounds = sketch.bounds
     width, height = bounds.width + 2 * MARGIN_MM, bounds.height + 2 * MARGIN_MM
 
@@ -124,14 +125,14 @@ def _numeric(cell: str) -> bool:
     return bool(re.match(r"^\s*[+\-−]?[0-9.]", cell))
 
 
-def _table_block(table: list[list[str]]) -> _Block:
+def _table_block(table: list[list[str]], heading: str = "Results", size: float = TABLE_PT) -> _Block:
     columns = max(len(r) for r in table)
     rows = [list(r) + [""] * (columns - len(r)) for r in table]
     pad = 2.0
-    widths = [max(text_size(r[c], TABLE_PT, "bold" if i == 0 else "normal")[0] for i, r in enumerate(rows)) + 2 * pad for c in range(columns)]
-    row_h = text_size("lp", TABLE_PT)[1] + 1.6
+    widths = [max(text_size(r[c], size, "bold" if i == 0 else "normal")[0] for i, r in enumerate(rows)) + 2 * pad for c in range(columns)]
+    row_h = text_size("lp", size)[1] + 1.6 * size / TABLE_PT
     heading_h = text_size("lp", HEADING_PT)[1] + 2.0
-    width = sum(widths)
+    width = max(sum(widths), text_size(heading, HEADING_PT, "bold")[0])
     height = heading_h + row_h * len(rows) + 1.0
 
     # a column of numbers is right-aligned, its header too
@@ -143,7 +144,7 @@ def _table_block(table: list[list[str]]) -> _Block:
 
     def place_into(sketch: Sketch, x: float, y: float) -> None:
         top = y + height
-        sketch.text(complex(x, top - heading_h / 2), "Results", size=HEADING_PT, ha="left", va="center", weight="bold", gid="table-heading", obstacle=False)
+        sketch.text(complex(x, top - heading_h / 2), heading, size=HEADING_PT, ha="left", va="center", weight="bold", gid="table-heading", obstacle=False)
         top -= heading_h
         sketch.line([complex(x, top), complex(x + width, top)], lw=0.9, gid="table-rule", obstacle=False)
         for i, row in enumerate(rows):
@@ -152,7 +153,7 @@ def _table_block(table: list[list[str]]) -> _Block:
             for c, cell in enumerate(row):
                 right = c in right_columns
                 at = complex(cx + widths[c] - pad, yc) if right else complex(cx + pad, yc)
-                sketch.text(at, cell, size=TABLE_PT, ha="right" if right else "left", va="center", weight="bold" if i == 0 else "normal", gid="table-cell", obstacle=False)
+                sketch.text(at, cell, size=size, ha="right" if right else "left", va="center", weight="bold" if i == 0 else "normal", gid="table-cell", obstacle=False)
                 cx += widths[c]
             if i == 0:
                 sketch.line([complex(x, top - row_h), complex(x + width, top - row_h)], lw=0.5, gid="table-rule", obstacle=False)
@@ -160,6 +161,24 @@ def _table_block(table: list[list[str]]) -> _Block:
         sketch.line([complex(x, bottom), complex(x + width, bottom)], lw=0.9, gid="table-rule", obstacle=False)
 
     return _Block(width, height, place_into)
+
+
+_TABLE_HEADER = ["quantity", "graphical", "analytic", "rel. error"]
+
+
+def translate_table(table: list[list[str]], lang: str) -> list[list[str]]:
+    """The sheet table with its header row and the words link/slider in *lang*."""
+    if lang == "en" or not table or list(table[0]) != _TABLE_HEADER:
+        return table
+    header = [term(k, lang) for k in ("quantity", "graphical", "analytic", "rel_error")]
+    words = {" link ": f" {term('link', lang)} ", " slider ": f" {term('slider', lang)} "}
+    rows = [header]
+    for row in table[1:]:
+        cell = row[0]
+        for a, b in words.items():
+            cell = cell.replace(a, b)
+        rows.append([cell] + list(row[1:]))
+    return rows
 
 
 def _choose_page(width: float, height: float) -> tuple[str, tuple[float, float]]:
@@ -171,7 +190,15 @@ def _choose_page(width: float, height: float) -> tuple[str, tuple[float, float]]
     return "custom", (need_w, need_h)
 
 
-def draw_sheet(solution, *, formula: str = "", table: list[list[str]] | None = None, equations: list[str] | None = None):
+def draw_sheet(
+    solution,
+    *,
+    formula: str = "",
+    table: list[list[str]] | None = None,
+    equations: list[str] | None = None,
+    lang: str = "en",
+    title: str | None = None,
+):
     """The one-page sheet as a matplotlib Figure (SVG canvas), sized in mm to an ISO page.
 
     Parameters
@@ -183,28 +210,38 @@ def draw_sheet(solution, *, formula: str = "", table: list[list[str]] | None = N
         Results, first row the header.
     equations : list of str, optional
         Lines of vector equations; by default those of the plans' steps.
+    lang : str
+        Language of headings and legends (see :mod:`plans.i18n`); the table's
+        header row is translated when it is the one of
+        :func:`plans.report.sheet_table`.
+    title : str, optional
+        Instead of the scene's title.
     """
+    table = translate_table(table, lang) if table else table
     with drawing_rc():
         fig = new_figure()
-        drawings = [_drawing_block(fig, "mechanism", solution), _drawing_block(fig, "velocity", solution.velocity_plan)]
+        drawings = [_drawing_block(fig, "mechanism", solution, lang), _drawing_block(fig, "velocity", solution.velocity_plan, lang)]
         if solution.acceleration_plan is not None:
-            drawings.append(_drawing_block(fig, "acceleration", solution.acceleration_plan))
+            drawings.append(_drawing_block(fig, "acceleration", solution.acceleration_plan, lang))
 
-        title = str(getattr(solution.scene, "title", "") or "")
+        title = str(title if title is not None else (getattr(solution.scene, "title", "") or ""))
         head_rows = [(title, TITLE_PT, "bold", False)] if title else []
         if formula:
-            head_rows.append((f"Structural formula:  {formula}", HEADING_PT, "normal", False))
+            head_rows.append((f"{term('structural_formula', lang)}:  {formula}", HEADING_PT, "normal", False))
         head = _stack_block(head_rows, "title") if head_rows else None
 
         eq_lines = sheet_equations(solution) if equations is None else list(equations)
+        if lang != "en":  # "driver:" is the one English word of the steps: the structural notation instead
+            driver = f"I(0,{getattr(getattr(solution.scene, 'driver', None), 'link', '')}):"
+            eq_lines = [driver + line[len("driver:"):] if line.startswith("driver:") else line for line in eq_lines]
         eq_block = None
         if eq_lines:
-            rows = [("Vector equations", HEADING_PT, "bold", False)]
+            rows = [(term("vector_equations", lang) if lang != "en" else "Vector equations", HEADING_PT, "bold", False)]
             for line in eq_lines:
                 text, is_math = _pretty(line)
                 rows.append((text, EQ_PT, "normal", is_math))
             eq_block = _stack_block(rows, "equation")
-        table_block = _table_block(table) if table else None
+        table_block = _table_block(table, "Results" if lang == "en" else term("results", lang)) if table else None
 
         # arrangements of the drawings: one row, or the mechanism above the plans
         arrangements = [[drawings]]

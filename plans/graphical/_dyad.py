@@ -126,6 +126,10 @@ def construct_image(
     found = [plan.component(end, at, chain.found_kind, chain.found_label) for end, chain in zip(ends, chains)]
     plan.step(group, equations, known, lines, found, image, sine)
     ctx.sines[group] = min(ctx.sines.get(group, 1.0), sine)
+    # condition number of the intersection, (1 + |cos|)/|sin| of the angle between the two lines
+    d1, d2 = chains[0].direction, chains[1].direction
+    cosine = abs((d1 * d2.conjugate()).real) / (abs(d1) * abs(d2))
+    ctx.conditions[group] = max(ctx.conditions.get(group, 1.0), (1.0 + cosine) / sine)
     return at, found, drawn
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import cmath
 import math
 
+from ..limits import WARN_CONDITION, NearDeadCentre, position_text
 from ..scene import Crank, Scene
 from ..structure import Group, Structure, find_structure
 from . import prp, rpp, rpr, rrp, rrr
@@ -39,6 +40,7 @@ def construct(
     k_a: float | None = None,
     precision: float | None = None,
     arc_segments: int | None = None,
+    warn_condition: float = WARN_CONDITION,
 ) -> GraphicalSolution:
     """Solve the mechanism graphically at the scene's driver position.
 
@@ -69,6 +71,11 @@ def construct(
         None: compass arcs are intersected exactly.  An integer: each arc is a
         shapely polygon with that many segments per quarter circle (faster to
         be wrong: the positions are only as good as the polygon).
+    warn_condition : float
+        A group whose construction lines meet with a condition number above
+        this (|sin| of their angle below ~2/warn_condition) is near a dead
+        centre: the solution carries a :class:`~plans.limits.NearDeadCentre`
+        warning.  Default :data:`plans.limits.WARN_CONDITION`.
 
     Returns
     -------
@@ -79,7 +86,8 @@ def construct(
     plans.errors.AssemblyError
         A group cannot be assembled (names the group, the lengths and the gap).
     plans.errors.SingularPositionError
-        Two construction lines are parallel: a dead-centre position.
+        Two construction lines are parallel: |sin| of their angle is below
+        :data:`plans.limits.REFUSE_SINE`, a dead-centre position.
 
     Examples
     --------
@@ -96,6 +104,8 @@ def construct(
     k_v = k_v if k_v is not None else scene.scales.k_v
     k_a = k_a if k_a is not None else scene.scales.k_a
     precision = precision if precision is not None else scene.scales.precision
+    if not (warn_condition >= 1):
+        raise ValueError(f"warn_condition must be a number of at least 1 (a condition number), got {warn_condition!r}")
     if arc_segments is not None and int(arc_segments) < 1:
         raise ValueError(f"arc_segments must be a positive number of segments per quarter circle, got {arc_segments!r}")
     for key, value in (("k_l", k_l), ("k_v", k_v), ("k_a", k_a), ("precision", precision)):
@@ -156,6 +166,13 @@ def construct(
             entry["a"] = _read(acceleration_plan.images.get(a_label.get(name), 0j), k_a, precision)
         points[name] = entry
     links, sliders = ctx.readings(k_l, k_v, k_a, precision)
+    crank = isinstance(scene.driver, Crank)
+    position = scene.driver.phi if crank else scene.driver.s
+    warnings = tuple(
+        NearDeadCentre(group.name, group.joint, position, position_text(crank, position), ctx.conditions[group.name], ctx.sines[group.name], "graphical")
+        for group in structure.groups
+        if ctx.conditions.get(group.name, 1.0) > warn_condition
+    )
     scales = {"k_l": k_l, "k_v": k_v}
     if k_a is not None:
         scales["k_a"] = k_a
@@ -171,6 +188,8 @@ def construct(
         links=links,
         sliders=sliders,
         sines=dict(ctx.sines),
+        conditions=dict(ctx.conditions),
+        warnings=warnings,
     )
 
 

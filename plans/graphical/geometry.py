@@ -25,6 +25,8 @@ import math
 
 import shapely
 
+from ..limits import REFUSE_SINE
+
 __all__ = [
     "Miss",
     "Parallel",
@@ -40,8 +42,14 @@ __all__ = [
 #: drawing's size from their construction points are treated as parallel.
 MAX_EXTENSION = 1e9
 
-#: Lines whose |sin| of the angle between them is below this are parallel.
-PARALLEL_SINE = 1e-13
+#: Figures that miss each other by less than this fraction of their size
+#: (REFUSE_SINE², ~1e-14: rounding) touch: a stretched or folded dyad is a
+#: dead centre, not a failed assembly (the analytic method's rule too).
+TOUCH = REFUSE_SINE**2
+
+#: Lines whose |sin| of the angle between them is below this are parallel:
+#: the dead-centre threshold :data:`plans.limits.REFUSE_SINE` both methods share.
+PARALLEL_SINE = REFUSE_SINE
 
 
 class Miss(Exception):
@@ -108,9 +116,13 @@ def circle_circle(
     chord = c2 - c1
     d = abs(chord)
     if d > r1 + r2:
-        raise Miss(d - (r1 + r2), "arcs")
+        if d - (r1 + r2) > 0.5 * TOUCH * r1 * r2 / (r1 + r2):
+            raise Miss(d - (r1 + r2), "arcs")
+        chord, d = chord * ((r1 + r2) / d), r1 + r2  # touching from outside, to rounding
     if d < abs(r1 - r2) or d == 0.0:
-        raise Miss(abs(r1 - r2) - d, "arcs")
+        if d == 0.0 or abs(r1 - r2) - d > 0.5 * TOUCH * r1 * r2 / abs(r1 - r2):
+            raise Miss(abs(r1 - r2) - d, "arcs")
+        chord, d = chord * (abs(r1 - r2) / d), abs(r1 - r2)  # touching from inside, to rounding
     e = chord / d
     if arc_segments is None:
         a = (d * d + r1 * r1 - r2 * r2) / (2.0 * d)
@@ -142,7 +154,7 @@ def circle_line(
     distance = offset(center, through, direction)
     along = ((center - through) * direction.conjugate()).real
     foot = through + along * direction
-    if abs(distance) > radius:
+    if abs(distance) > radius and abs(distance) - radius > 0.5 * TOUCH * radius:
         raise Miss(abs(distance) - radius, "arc and line")
     if arc_segments is None:
         h = math.sqrt(max(radius * radius - distance * distance, 0.0))
@@ -171,7 +183,7 @@ def line_line(p1: complex, d1: complex, p2: complex, d2: complex, size: float) -
     Raises
     ------
     Parallel
-        |sin| below 1e-13, or no intersection within
+        |sin| below :data:`PARALLEL_SINE`, or no intersection within
         :data:`MAX_EXTENSION` × size.
     """
     sine = abs((d1 * d2.conjugate()).imag)

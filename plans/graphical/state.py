@@ -28,6 +28,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import AssemblyError, SingularPositionError
+from ..limits import position_text
 from ..scene import FRAME, Crank, Line, Prismatic, Scene
 from . import geometry
 from .plan import ConstructionLine, Plan, PlanVector, Step
@@ -229,6 +230,7 @@ class Construction:
         self.turns_with: dict[str, str] = {}
         self.sliding: dict[str, _Sliding] = {}
         self.sines: dict[str, float] = {}
+        self.conditions: dict[str, float] = {}
         self.size = 0.0  # the mechanism's extent [m], for the reach of ruler lines
 
     # -- the mechanism drawing ----------------------------------------------------
@@ -236,9 +238,8 @@ class Construction:
     def where(self) -> str:
         """The driver position, for messages."""
         driver = self.scene.driver
-        if isinstance(driver, Crank):
-            return f"φ = {math.degrees(driver.phi):.1f}°"
-        return f"s = {driver.s:.6g} m"
+        crank = isinstance(driver, Crank)
+        return position_text(crank, driver.phi if crank else driver.s)
 
     def world(self, body: str, local: complex) -> complex:
         """A point given in the body's own coordinates, on the mechanism [m]."""

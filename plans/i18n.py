@@ -1,0 +1,282 @@
+"""Headings and legend words in the languages the method is taught in, in one place.
+
+English is the default; Serbian (Cyrillic), Russian, Bulgarian and Slovenian
+use the terms of the textbooks (domain.md §8) where they name the thing:
+план брзина / план скоростей / план на скоростите / načrt hitrosti, and so on.
+Point letters and symbols (v_B, a^k, ω₃, k_v) are never translated.
+
+>>> term("velocity_plan", "ru")
+'План скоростей'
+>>> term("velocity_plan", "sl")
+'Načrt hitrosti'
+"""
+
+from __future__ import annotations
+
+__all__ = ["LANGUAGES", "TERMS", "term", "check_language"]
+
+#: language code -> its name in that language
+LANGUAGES = {
+    "en": "English",
+    "sr": "Српски",
+    "ru": "Русский",
+    "bg": "Български",
+    "sl": "Slovenščina",
+}
+
+#: key -> language -> words.  Keep every key complete in every language.
+TERMS: dict[str, dict[str, str]] = {
+    # --- drawings -------------------------------------------------------------
+    "mechanism": {
+        "en": "Mechanism",
+        "sr": "Кинематска шема",
+        "ru": "План механизма",
+        "bg": "План на механизма",
+        "sl": "Kinematska shema",
+    },
+    "velocity_plan": {
+        "en": "Velocity plan",
+        "sr": "План брзина",
+        "ru": "План скоростей",
+        "bg": "План на скоростите",
+        "sl": "Načrt hitrosti",
+    },
+    "acceleration_plan": {
+        "en": "Acceleration plan",
+        "sr": "План убрзања",
+        "ru": "План ускорений",
+        "bg": "План на ускоренията",
+        "sl": "Načrt pospeškov",
+    },
+    "positions_plan": {
+        "en": "Mechanism in its positions, with the paths of its points",
+        "sr": "План положаја механизма и путање тачака",
+        "ru": "План положений механизма и траектории точек",
+        "bg": "План на положенията на механизма и траектории на точките",
+        "sl": "Lege mehanizma in tirnice točk",
+    },
+    "scale_factor": {
+        "en": "scale factor",
+        "sr": "размера",
+        "ru": "масштаб",
+        "bg": "мащаб",
+        "sl": "merilo",
+    },
+    "scale_factors": {
+        "en": "Scale factors",
+        "sr": "Размере",
+        "ru": "Масштабы",
+        "bg": "Мащаби",
+        "sl": "Merila",
+    },
+    "assur_group": {
+        "en": "Assur group",
+        "sr": "Асурова група",
+        "ru": "группа Ассура",
+        "bg": "Асурова група",
+        "sl": "Assurjeva skupina",
+    },
+    "structural_formula": {
+        "en": "Structural formula",
+        "sr": "Структурна формула",
+        "ru": "Структурная формула",
+        "bg": "Структурна формула",
+        "sl": "Strukturna formula",
+    },
+    "vector_equations": {
+        "en": "Vector equations of the plans",
+        "sr": "Векторске једначине планова",
+        "ru": "Векторные уравнения планов",
+        "bg": "Векторни уравнения на плановете",
+        "sl": "Vektorske enačbe načrtov",
+    },
+    "loop_equations": {
+        "en": "Analytic check: complex-number method (loop equations)",
+        "sr": "Аналитичка провера: метода комплексног броја (једначине контура)",
+        "ru": "Аналитическая проверка: метод комплексных чисел (уравнения контуров)",
+        "bg": "Аналитична проверка: метод на комплексните числа (уравнения на контурите)",
+        "sl": "Analitična kontrola: metoda kompleksnih števil (enačbe zank)",
+    },
+    "results": {
+        "en": "Graphical against analytic",
+        "sr": "Графички и аналитички резултати",
+        "ru": "Графические и аналитические результаты",
+        "bg": "Графични и аналитични резултати",
+        "sl": "Grafični in analitični rezultati",
+    },
+    "quantity": {"en": "quantity", "sr": "величина", "ru": "величина", "bg": "величина", "sl": "količina"},
+    "graphical": {"en": "graphical", "sr": "графички", "ru": "графически", "bg": "графично", "sl": "grafično"},
+    "analytic": {"en": "analytic", "sr": "аналитички", "ru": "аналитически", "bg": "аналитично", "sl": "analitično"},
+    "rel_error": {"en": "rel. error", "sr": "рел. грешка", "ru": "отн. погр.", "bg": "отн. грешка", "sl": "rel. napaka"},
+    "link": {"en": "link", "sr": "члан", "ru": "звено", "bg": "звено", "sl": "člen"},
+    "slider": {"en": "slider", "sr": "клизач", "ru": "ползун", "bg": "плъзгач", "sl": "drsnik"},
+    "point": {"en": "point", "sr": "тачка", "ru": "точка", "bg": "точка", "sl": "točka"},
+    "data": {"en": "Data", "sr": "Подаци", "ru": "Исходные данные", "bg": "Изходни данни", "sl": "Podatki"},
+    "driver": {"en": "driver", "sr": "погонски члан", "ru": "ведущее звено", "bg": "водещо звено", "sl": "pogonski člen"},
+    "position": {"en": "Position", "sr": "Положај", "ru": "Положение", "bg": "Положение", "sl": "Lega"},
+    "positions": {"en": "positions", "sr": "положаја", "ru": "положений", "bg": "положения", "sl": "leg"},
+    "positions_list": {"en": "Positions", "sr": "Положаји", "ru": "Положения", "bg": "Положения", "sl": "Lege"},
+    "lengths": {"en": "lengths", "sr": "дужине", "ru": "длины", "bg": "дължини", "sl": "dolžine"},
+    "fixed_points": {"en": "fixed points", "sr": "непокретне тачке", "ru": "неподвижные точки", "bg": "неподвижни точки", "sl": "nepomične točke"},
+    # --- plan legends ---------------------------------------------------------------
+    "absolute_velocity": {
+        "en": "absolute velocity",
+        "sr": "апсолутна брзина",
+        "ru": "абсолютная скорость",
+        "bg": "абсолютна скорост",
+        "sl": "absolutna hitrost",
+    },
+    "relative_velocity": {
+        "en": "relative velocity",
+        "sr": "релативна брзина",
+        "ru": "относительная скорость",
+        "bg": "относителна скорост",
+        "sl": "relativna hitrost",
+    },
+    "absolute_acceleration": {
+        "en": "absolute acceleration",
+        "sr": "апсолутно убрзање",
+        "ru": "абсолютное ускорение",
+        "bg": "абсолютно ускорение",
+        "sl": "absolutni pospešek",
+    },
+    "relative_acceleration": {
+        "en": "relative (sliding) acceleration aʳ",
+        "sr": "релативно убрзање aʳ",
+        "ru": "относительное ускорение aʳ",
+        "bg": "относително ускорение aʳ",
+        "sl": "relativni pospešek aʳ",
+    },
+    "normal_component": {
+        "en": "normal component aⁿ",
+        "sr": "нормална компонента aⁿ",
+        "ru": "нормальная составляющая aⁿ",
+        "bg": "нормална съставяща aⁿ",
+        "sl": "normalna komponenta aⁿ",
+    },
+    "tangential_component": {
+        "en": "tangential component aᵗ",
+        "sr": "тангенцијална компонента aᵗ",
+        "ru": "касательная составляющая aᵗ",
+        "bg": "тангенциална съставяща aᵗ",
+        "sl": "tangencialna komponenta aᵗ",
+    },
+    "coriolis_component": {
+        "en": "Coriolis component aᵏ",
+        "sr": "Кориолисово убрзање aᵏ",
+        "ru": "ускорение Кориолиса aᵏ",
+        "bg": "Кориолисово ускорение aᵏ",
+        "sl": "Coriolisov pospešek aᵏ",
+    },
+    "construction_line": {
+        "en": "construction line",
+        "sr": "помоћна линија",
+        "ru": "линия построения",
+        "bg": "построителна линия",
+        "sl": "konstrukcijska črta",
+    },
+    "path": {"en": "path of a point", "sr": "путања тачке", "ru": "траектория точки", "bg": "траектория на точка", "sl": "tirnica točke"},
+    # --- cycle diagrams -------------------------------------------------------------
+    "cycle_diagrams": {
+        "en": "Kinematic diagrams over the cycle",
+        "sr": "Кинематски дијаграми током циклуса",
+        "ru": "Кинематические диаграммы за цикл",
+        "bg": "Кинематични диаграми за един цикъл",
+        "sl": "Kinematični diagrami v enem ciklu",
+    },
+    "angle": {"en": "angle", "sr": "угао", "ru": "угол", "bg": "ъгъл", "sl": "kot"},
+    "angular_velocity": {"en": "angular velocity", "sr": "угаона брзина", "ru": "угловая скорость", "bg": "ъглова скорост", "sl": "kotna hitrost"},
+    "angular_acceleration": {"en": "angular acceleration", "sr": "угаоно убрзање", "ru": "угловое ускорение", "bg": "ъглово ускорение", "sl": "kotni pospešek"},
+    "velocity": {"en": "velocity", "sr": "брзина", "ru": "скорость", "bg": "скорост", "sl": "hitrost"},
+    "acceleration": {"en": "acceleration", "sr": "убрзање", "ru": "ускорение", "bg": "ускорение", "sl": "pospešek"},
+    "links_motion": {
+        "en": "Links: angle, angular velocity, angular acceleration",
+        "sr": "Чланови: угао, угаона брзина, угаоно убрзање",
+        "ru": "Звенья: угол, угловая скорость, угловое ускорение",
+        "bg": "Звена: ъгъл, ъглова скорост, ъглово ускорение",
+        "sl": "Členi: kot, kotna hitrost, kotni pospešek",
+    },
+    "points_motion": {
+        "en": "Points: velocity and acceleration",
+        "sr": "Тачке: брзина и убрзање",
+        "ru": "Точки: скорость и ускорение",
+        "bg": "Точки: скорост и ускорение",
+        "sl": "Točke: hitrost in pospešek",
+    },
+    "sliders_motion": {
+        "en": "Prismatic pairs: travel, relative velocity, relative and Coriolis accelerations",
+        "sr": "Клизни парови: пут, релативна брзина, релативно и Кориолисово убрзање",
+        "ru": "Поступательные пары: перемещение, относительная скорость, относительное ускорение и ускорение Кориолиса",
+        "bg": "Транслационни двоици: преместване, относителна скорост, относително и Кориолисово ускорение",
+        "sl": "Drsni pari: pomik, relativna hitrost, relativni in Coriolisov pospešek",
+    },
+    "travel": {"en": "travel", "sr": "пут", "ru": "перемещение", "bg": "преместване", "sl": "pomik"},
+    "relative_velocity_short": {"en": "relative velocity", "sr": "релативна брзина", "ru": "относ. скорость", "bg": "относ. скорост", "sl": "relativna hitrost"},
+    "relative_acceleration_short": {"en": "relative acceleration", "sr": "релативно убрзање", "ru": "относ. ускорение", "bg": "относ. ускорение", "sl": "relativni pospešek"},
+    "coriolis_acceleration": {
+        "en": "Coriolis acceleration",
+        "sr": "Кориолисово убрзање",
+        "ru": "ускорение Кориолиса",
+        "bg": "Кориолисово ускорение",
+        "sl": "Coriolisov pospešek",
+    },
+    "turned_from_0": {
+        "en": "angle turned by the crank from position 0",
+        "sr": "угао заокретања погонског члана од положаја 0",
+        "ru": "угол поворота кривошипа от положения 0",
+        "bg": "ъгъл на завъртане на манивелата от положение 0",
+        "sl": "zasuk ročice od lege 0",
+    },
+    "driver_position": {
+        "en": "position of the driver",
+        "sr": "положај погонског члана",
+        "ru": "положение ведущего звена",
+        "bg": "положение на водещото звено",
+        "sl": "lega pogonskega člena",
+    },
+    "no_assembly": {
+        "en": "cannot assemble",
+        "sr": "механизам се не може саставити",
+        "ru": "механизм не собирается",
+        "bg": "механизмът не може да се сглоби",
+        "sl": "mehanizma ni mogoče sestaviti",
+    },
+    "near_dead_centre": {
+        "en": "near a dead centre",
+        "sr": "близу мртвог положаја",
+        "ru": "вблизи мёртвого положения",
+        "bg": "близо до мъртво положение",
+        "sl": "blizu mrtve lege",
+    },
+    "sheet_positions": {
+        "en": "positions drawn",
+        "sr": "нацртани положаји",
+        "ru": "построенные положения",
+        "bg": "построени положения",
+        "sl": "narisane lege",
+    },
+    "components": {"en": "components", "sr": "компоненте", "ru": "составляющие", "bg": "съставящи", "sl": "komponente"},
+    "not_solved": {
+        "en": "not solved at this position",
+        "sr": "није решено у овом положају",
+        "ru": "в этом положении решения нет",
+        "bg": "в това положение няма решение",
+        "sl": "v tej legi ni rešitve",
+    },
+    "continued": {"en": "(continued)", "sr": "(наставак)", "ru": "(продолжение)", "bg": "(продължение)", "sl": "(nadaljevanje)"},
+    "page": {"en": "page", "sr": "страна", "ru": "стр.", "bg": "стр.", "sl": "stran"},
+    "contents": {"en": "Contents", "sr": "Садржај", "ru": "Содержание", "bg": "Съдържание", "sl": "Vsebina"},
+}
+
+
+def check_language(lang: str) -> str:
+    """*lang* if plans speaks it, else a ValueError naming the choices."""
+    if lang not in LANGUAGES:
+        raise ValueError(f"no language {lang!r}; plans speaks {', '.join(LANGUAGES)}")
+    return lang
+
+
+def term(key: str, lang: str = "en") -> str:
+    """The words for *key* in *lang* (``"en"``, ``"sr"``, ``"ru"``, ``"bg"``, ``"sl"``)."""
+    check_language(lang)
+    return TERMS[key][lang]

@@ -1,0 +1,553 @@
+"""Many positions of one mechanism: the course project's 8 or 12 crank positions.
+
+Orchestration only: the analytic solution comes from :mod:`plans.analytic`,
+the plans from :mod:`plans.graphical`, the differences from
+:mod:`plans.compare`.  No drawing happens here (matplotlib is imported only by
+the display methods, on demand).
+
+* :func:`parse_positions` turns ``--positions 12`` or ``--at "0,30,55,90 deg"``
+  into driver positions.
+* :func:`run_positions` solves every position both ways with **one set of
+  scale factors** for all of them, so the plans of one run can be compared
+  sheet against sheet.  Each scale factor that is not given is chosen by
+  first constructing every position at its own automatic scale, then taking
+  the round factor (1, 2, 2.5, 5 × 10ⁿ) that draws the largest of them at
+  most ``drawn_max`` mm long.
+* The graphical construction of each position follows the branch the
+  analytic sweep follows (one continuous branch from the scene's own
+  position): the scene's location hints are moved, position by position, to
+  where the analytic solution puts the hinted points.  The two methods still
+  share no kinematics: only the choice of branch.
+
+Positions are numbered as the course does: 0, 1, 2, … in the sense the crank
+turns (the sign of ω), starting at the scene's own position.
+
+>>> import plans
+>>> from plans.positions import parse_positions, run_positions
+>>> scene = plans.load(plans.example_path("four-bar"))
+>>> [round(math.degrees(p)) % 360 for p in parse_positions("0, 90 deg", scene)]
+[0, 90]
+>>> run = run_positions(scene, parse_positions(4, scene))
+>>> len(run.runs), sorted(run.scales)
+(4, ['k_a', 'k_l', 'k_v'])
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from .errors import AssemblyError, PlansError, SceneError, SingularPositionError
+from .scene import Crank, Scene
+from .units import UnitError, parse_quantity
+
+__all__ = [
+    "parse_positions",
+    "cycle_positions",
+    "fit_scale",
+    "common_scales",
+    "scene_at",
+    "PositionRun",
+    "PositionsRun",
+    "run_positions",
+    "position_text",
+    "Diagrams",
+    "CYCLE_STEPS",
+]
+
+#: Driver positions of the dense sweep behind trajectories and cycle diagrams.
+CYCLE_STEPS = 360
+
+
+# --- which positions ---------------------------------------------------------------
+
+
+def _is_crank(scene: Scene) -> bool:
+    return isinstance(scene.driver, Crank)
+
+
+def _sense(scene: Scene) -> float:
+    """+1 when the crank turns counter-clockwise (or stands still), −1 clockwise."""
+    driver = scene.driver
+    return -1.0 if isinstance(driver, Crank) and driver.omega < 0 else 1.0
+
+
+def _stroke(scene: Scene) -> tuple[float, float]:
+    driver = scene.driver
+    if driver.stroke is None:
+        raise SceneError(
+            "positions over the cycle of a linear driver need its stroke: add stroke = [start, end] to [driver]",
+            scene.source,
+            "driver.stroke",
+        )
+    return driver.stroke
+
+
+def parse_positions(spec, scene: Scene) -> list[float]:
+    """Driver positions from a count or from a list written as text.
+
+    Parameters
+    ----------
+    spec : int, str or sequence
+        * a count N (``12`` or ``"12"`` with no unit): N positions equally
+          spaced over the driver's cycle — a crank's full turn from the
+          scene's own angle, in the sense of ω (position 0 is the scene's
+          own); a linear driver's ``stroke`` from start to end;
+        * a list as text, ``"0,30,55,90 deg"`` or ``"0 deg, 0.5 rad"`` or
+          ``"10,20,30 mm"``: a unit written after the last number applies to
+          every number without one; bare numbers are degrees for a crank
+          and metres for a linear driver (as ``--at``);
+        * a sequence of numbers (SI: rad or m) or of such strings.
+    scene : Scene
+
+    Returns
+    -------
+    list of float
+        Crank angles [rad] or linear-driver positions [m], in order.
+
+    Raises
+    ------
+    SceneError
+        For text that is not a list of positions, a count below 1, or a
+        linear driver without a stroke when a count is asked for.
+    """
+    kind = "angle" if _is_crank(scene) else "length"
+    if isinstance(spec, bool):
+        raise SceneError(f"positions: expected a count or a list, got {spec!r}", scene.source, "--positions")
+    if isinstance(spec, (int, np.integer)):
+        return cycle_positions(scene, int(spec))
+    if isinstance(spec, str):
+        text = spec.strip()
+        if re.fullmatch(r"\d+", text):
+            return cycle_positions(scene, int(text))
+        items = [t.strip() for t in text.split(",")]
+        if not text or any(not t for t in items):
+            raise SceneError(f"positions: expected numbers separated by commas, such as \"0,30,55,90 deg\", got {spec!r}", scene.source, "--at")
+        last = re.match(r"^\s*[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?\s*(.*)$", items[-1])
+        unit = last.group(1).strip() if last else ""
+        values = []
+        for item in items:
+            if unit and re.fullmatch(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?", item):
+                item = f"{item} {unit}"
+            else:
+                try:
+                    item = float(item)
+                except ValueError:
+                    pass
+            try:
+                values.append(parse_quantity(item, kind))
+            except UnitError as exc:
+                raise SceneError(f"positions: {exc}", scene.source, "--at") from None
+        return values
+    try:
+        values = [parse_quantity(v, kind) if isinstance(v, str) else float(v) for v in spec]
+    except (TypeError, UnitError) as exc:
+        raise SceneError(f"positions: expected numbers (rad or m) or quantities as text: {exc}", scene.source) from None
+    if not values or not all(math.isfinite(v) for v in values):
+        raise SceneError(f"positions: expected finite numbers, got {spec!r}", scene.source)
+    return values
+
+
+def cycle_positions(scene: Scene, count: int, *, closed: bool = False) -> list[float]:
+    """*count* positions equally spaced over the driver's cycle (see :func:`parse_positions`).
+
+    With ``closed=True`` a crank's list ends with the starting angle plus a
+    full turn (count + 1 entries), so a trajectory drawn through it closes.
+    """
+    if count < 1:
+        raise SceneError(f"positions: the count must be at least 1, got {count}", scene.source, "--positions")
+    if _is_crank(scene):
+        start, sense = scene.driver.phi, _sense(scene)
+        n = count + 1 if closed else count
+        return [start + sense * 2 * math.pi * k / count for k in range(n)]
+    a, b = _stroke(scene)
+    if count == 1:
+        return [a]
+    return [a + (b - a) * k / (count - 1) for k in range(count)]
+
+
+def position_text(scene: Scene, position: float, digits: int = 1) -> str:
+    """``"φ₂ = 145.0°"`` (angle in [0, 360)) or ``"s = 120.0 mm"``."""
+    driver = scene.driver
+    sub = driver.link.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")) if driver.link.isdigit() else f"_{driver.link}"
+    if isinstance(driver, Crank):
+        degrees = math.degrees(position) % 360.0
+        if round(degrees, digits) >= 360.0:
+            degrees = 0.0
+        return f"φ{sub} = {degrees:.{digits}f}°"
+    return f"s{sub} = {position * 1e3:.{digits}f} mm"
+
+
+# --- scales ---------------------------------------------------------------------------
+
+
+def fit_scale(largest: float, drawn_max: float = 120.0, fallback: float = 1.0) -> float:
+    """The smallest round scale factor (1, 2, 2.5, 5 × 10ⁿ) drawing *largest* at most *drawn_max* mm long."""
+    from .graphical.scales import DRAWN_MAX, round_scale
+
+    if not (math.isfinite(largest) and largest > 0):
+        return fallback
+    return round_scale(largest * DRAWN_MAX / drawn_max, fallback=fallback)
+
+
+def _largest(plan) -> float:
+    """The largest physical vector of a plan [m/s or m/s²]."""
+    return max((abs(v.tip - v.tail) * plan.scale for v in plan.vectors), default=0.0)
+
+
+def _extent(graphical) -> float:
+    """The larger side of the bounding box of the mechanism's points [m]."""
+    zs = list(graphical.positions.values())
+    if not zs:
+        return 0.0
+    xs = [z.real for z in zs]
+    ys = [z.imag for z in zs]
+    return max(max(xs) - min(xs), max(ys) - min(ys))
+
+
+def common_scales(graphicals, *, drawn_max: dict[str, float] | float = 120.0, given: dict[str, float | None] | None = None) -> dict[str, float]:
+    """One round scale factor of each kind that fits every construction.
+
+    Parameters
+    ----------
+    graphicals : iterable of GraphicalSolution
+        Constructions at their own (automatic) scales.
+    drawn_max : float or dict
+        The longest drawn length allowed [mm], for all kinds or per kind
+        (``{"k_l": 90, "k_v": 70, "k_a": 70}``).
+    given : dict, optional
+        Factors fixed by the user; they are kept as they are.
+
+    Returns
+    -------
+    dict
+        ``{"k_l", "k_v"}`` and ``"k_a"`` when the constructions have
+        acceleration plans.
+    """
+    graphicals = list(graphicals)
+    given = {k: v for k, v in (given or {}).items() if v is not None}
+    limit = drawn_max if isinstance(drawn_max, dict) else {"k_l": drawn_max, "k_v": drawn_max, "k_a": drawn_max}
+    largest = {"k_l": 0.0, "k_v": 0.0, "k_a": 0.0}
+    fallback = {}
+    has_a = False
+    for g in graphicals:
+        largest["k_l"] = max(largest["k_l"], _extent(g))
+        largest["k_v"] = max(largest["k_v"], _largest(g.velocity_plan))
+        fallback.setdefault("k_l", g.scales["k_l"])
+        fallback.setdefault("k_v", g.scales["k_v"])
+        if g.acceleration_plan is not None:
+            has_a = True
+            largest["k_a"] = max(largest["k_a"], _largest(g.acceleration_plan))
+            fallback.setdefault("k_a", g.scales["k_a"])
+    out = {}
+    for key in ("k_l", "k_v", "k_a"):
+        if key == "k_a" and not has_a:
+            continue
+        out[key] = given[key] if key in given else fit_scale(largest[key], limit.get(key, 120.0), fallback.get(key, 1.0))
+    return out
+
+
+# --- runs -------------------------------------------------------------------------------
+
+
+def scene_at(scene: Scene, position: float) -> Scene:
+    """The scene with its driver moved to *position* (rad or m)."""
+    driver = scene.driver
+    if isinstance(driver, Crank):
+        return replace(scene, driver=replace(driver, phi=float(position)))
+    return replace(scene, driver=replace(driver, s=float(position)))
+
+
+@dataclass(frozen=True, eq=False)
+class PositionRun:
+    """One numbered position: both solutions and their differences, or why there are none.
+
+    Attributes
+    ----------
+    index : int
+        The course's number of the position: 0, 1, 2, …
+    position : float
+        Crank angle [rad] or linear-driver position [m].
+    scene : Scene
+        The scene at this position (driver moved; branch hints following the
+        analytic sweep).
+    analytic : AnalyticSolution or None
+        At this one position (N = 1).
+    graphical : GraphicalSolution or None
+    comparisons : list of Comparison or None
+    error : PlansError or None
+        Why the position could not be solved (no assembly, dead centre).
+    """
+
+    index: int
+    position: float
+    scene: Scene
+    analytic: object | None = None
+    graphical: object | None = None
+    comparisons: list | None = None
+    error: PlansError | None = None
+
+    @property
+    def ok(self) -> bool:
+        return self.error is None and self.graphical is not None
+
+    @property
+    def label(self) -> str:
+        """``"φ₂ = 145.0°"``."""
+        return position_text(self.scene, self.position)
+
+    # --- notebooks -----------------------------------------------------------
+
+    def figure(self, *, lang: str = "en"):
+        """The position's sheet as a matplotlib Figure (see :func:`plans.drawing.draw_position_sheet`)."""
+        from .drawing.sheets import draw_position_sheet
+
+        return draw_position_sheet(self, lang=lang)
+
+    def _repr_svg_(self) -> str:
+        if not self.ok:
+            return None
+        from .drawing.svg import render_svg
+
+        return render_svg(self.figure()).decode("utf-8")
+
+    def plot(self, ax=None):
+        """Draw the mechanism at this position into *ax* (a new figure when None); returns the artists."""
+        if not self.ok:
+            raise self.error
+        from .drawing import draw_mechanism
+
+        return draw_mechanism(self.graphical, ax)
+
+    def save(self, path, *, lang: str = "en") -> Path:
+        """Write the position's sheet to *path* (``.svg`` or ``.pdf``), atomically."""
+        if not self.ok:
+            raise self.error
+        from .drawing.sheets import save_figure
+
+        return save_figure(self.figure(lang=lang), path)
+
+
+@dataclass(frozen=True, eq=False)
+class PositionsRun:
+    """A multi-position run: one scale factor set, one analytic sweep over the cycle.
+
+    Attributes
+    ----------
+    scene : Scene
+    structure : Structure
+    runs : tuple of PositionRun
+        In the order asked for, numbered 0, 1, 2, …
+    scales : dict
+        ``{"k_l", "k_v", "k_a"}`` shared by every position.
+    precision : float or None
+    cycle : AnalyticSolution
+        The dense sweep over the driver's cycle (``allow_partial``: ``valid``
+        says where the mechanism assembles), for trajectories and diagrams;
+        a crank's sweep ends with the starting angle plus a full turn.
+    """
+
+    scene: Scene
+    structure: object
+    runs: tuple
+    scales: dict
+    precision: float | None
+    cycle: object
+
+    def __len__(self) -> int:
+        return len(self.runs)
+
+    @property
+    def positions(self) -> list[float]:
+        return [r.position for r in self.runs]
+
+    def _repr_svg_(self) -> str:
+        from .drawing.positions_plan import draw_positions_plan
+        from .drawing.svg import render_svg
+
+        return render_svg(draw_positions_plan(self)[0].figure).decode("utf-8")
+
+    def diagrams(self, *, lang: str = "en", components: bool = False) -> "Diagrams":
+        """The kinematic diagrams over the cycle, the positions of the run marked."""
+        return Diagrams(self.cycle, marked=self.positions, lang=lang, components=components)
+
+    def plot(self, ax=None, *, lang: str = "en"):
+        """Draw the plan of positions into *ax* (a new figure when None); returns the artists."""
+        from .drawing.positions_plan import draw_positions_plan
+
+        return draw_positions_plan(self, ax, lang=lang)
+
+    def save(self, path, *, lang: str = "en") -> Path:
+        """Write the plan of positions to *path* (``.svg`` or ``.pdf``)."""
+        from .drawing.positions_plan import draw_positions_plan
+        from .drawing.sheets import save_figure
+
+        return save_figure(draw_positions_plan(self, lang=lang)[0].figure, path)
+
+
+class Diagrams:
+    """Cycle diagrams of an analytic sweep, for notebooks and scripts.
+
+    Displays itself inline (every page of :func:`plans.drawing.diagrams.draw_cycle_diagrams`);
+    ``plot(quantity, ax)`` draws one diagram into an Axes; ``save(directory)``
+    writes the SVG pages.
+
+    >>> import numpy as np, plans
+    >>> scene = plans.load(plans.example_path("four-bar"))
+    >>> d = Diagrams(plans.solve(scene, np.linspace(0, 2 * np.pi, 73)))
+    >>> d.plot("omega")                                   # doctest: +SKIP
+    """
+
+    def __init__(self, analytic, *, marked=None, lang: str = "en", components: bool = False):
+        self.analytic = analytic
+        self.marked = marked
+        self.lang = lang
+        self.components = components
+
+    def figures(self) -> list:
+        """(name, Figure) pairs: ``links``, ``points`` and, with prismatic pairs, ``sliders``."""
+        from .drawing.diagrams import draw_cycle_diagrams
+
+        return draw_cycle_diagrams(self.analytic, marked=self.marked, lang=self.lang, components=self.components)
+
+    def plot(self, quantity: str = "omega", ax=None):
+        """One diagram (``"omega"``, ``"v"``, ``"coriolis"`` …) into *ax*; returns the curves."""
+        from .drawing.diagrams import plot_cycle
+
+        return plot_cycle(self.analytic, quantity, ax, marked=self.marked, lang=self.lang)
+
+    def save(self, directory) -> list[Path]:
+        """Write ``links.svg``, ``points.svg`` (and ``sliders.svg``) into *directory*."""
+        from .drawing.diagrams import write_cycle_diagrams
+
+        return write_cycle_diagrams(self.analytic, directory, marked=self.marked, lang=self.lang, components=self.components)
+
+    def _repr_html_(self) -> str:
+        from .drawing.svg import render_svg
+
+        return "".join(render_svg(fig).decode("utf-8").split("?>", 1)[-1] for _, fig in self.figures())
+
+    def _repr_svg_(self) -> str:
+        from .drawing.svg import render_svg
+
+        return render_svg(self.figures()[0][1]).decode("utf-8")
+
+
+def _hints_at(scene: Scene, analytic, k: int) -> dict:
+    """The scene's assembly hints moved to where the analytic sweep puts the hinted points."""
+    hints = {}
+    for name, hint in scene.assembly.items():
+        if isinstance(hint, complex) or isinstance(hint, float):
+            z = complex(analytic.points[name].r[k])
+            hints[name] = z if math.isfinite(z.real) and math.isfinite(z.imag) else hint
+        else:
+            hints[name] = hint
+    return hints
+
+
+def run_positions(
+    scene: Scene,
+    positions=None,
+    *,
+    k_l: float | None = None,
+    k_v: float | None = None,
+    k_a: float | None = None,
+    precision: float | None = None,
+    drawn_max: dict[str, float] | float = 120.0,
+    cycle_steps: int = CYCLE_STEPS,
+) -> PositionsRun:
+    """Solve the mechanism at every position, analytically and graphically, at one set of scales.
+
+    Parameters
+    ----------
+    scene : Scene
+    positions : None, int, str or sequence
+        Anything :func:`parse_positions` takes; None is the scene's own
+        position only.
+    k_l, k_v, k_a : float, optional
+        Scale factors; each one not given (here or in the scene's
+        ``[scales]``) is the round factor that fits the largest of all the
+        positions (see :func:`common_scales`).
+    precision : float, optional
+        Drafting precision [mm] (see :func:`plans.graphical.construct`).
+    drawn_max : float or dict
+        Longest drawn length [mm] the automatic factors allow.
+    cycle_steps : int
+        Positions of the dense analytic sweep over the cycle.
+
+    Returns
+    -------
+    PositionsRun
+        A position that cannot be assembled, or sits at a dead centre, is
+        kept with its ``error`` and no solutions.
+
+    Raises
+    ------
+    StructureError, SceneError
+        For a scene that cannot be solved at all.
+    """
+    from .analytic import solve
+    from .compare import compare
+    from .graphical import construct
+    from .structure import find_structure
+
+    structure = find_structure(scene)
+    if positions is None:
+        values = [scene.driver.phi if _is_crank(scene) else scene.driver.s]
+    else:
+        values = parse_positions(positions, scene)
+    if not values:
+        raise SceneError("positions: no positions asked for", scene.source)
+
+    sweep = solve(scene, np.asarray(values, dtype=float), structure, allow_partial=True)
+    if _is_crank(scene):
+        cycle_at = cycle_positions(scene, cycle_steps, closed=True)
+    elif scene.driver.stroke is not None:
+        cycle_at = cycle_positions(scene, cycle_steps + 1)
+    else:
+        cycle_at = values
+    cycle = solve(scene, np.asarray(cycle_at, dtype=float), structure, allow_partial=True)
+
+    k_l = k_l if k_l is not None else scene.scales.k_l
+    k_v = k_v if k_v is not None else scene.scales.k_v
+    k_a = k_a if k_a is not None else scene.scales.k_a
+    precision = precision if precision is not None else scene.scales.precision
+
+    prepared = []
+    for index, value in enumerate(values):
+        here = replace(scene_at(scene, value), assembly=_hints_at(scene, sweep, index))
+        if not bool(sweep.valid[index]):
+            try:  # the solver's own message for this position
+                solve(scene, [value], structure)
+                error: PlansError = AssemblyError(f"position {index}: the mechanism cannot be solved at {position_text(scene, value)}")
+            except (AssemblyError, SingularPositionError) as exc:
+                error = exc
+            prepared.append((index, value, here, None, error))
+            continue
+        try:
+            first = construct(here, structure, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision)
+        except (AssemblyError, SingularPositionError) as exc:
+            prepared.append((index, value, here, None, exc))
+            continue
+        prepared.append((index, value, here, first, None))
+
+    scales = common_scales(
+        [g for *_, g, e in prepared if g is not None],
+        drawn_max=drawn_max,
+        given={"k_l": k_l, "k_v": k_v, "k_a": k_a},
+    )
+    runs = []
+    for index, value, here, first, error in prepared:
+        if error is not None:
+            runs.append(PositionRun(index, value, here, error=error))
+            continue
+        graphical = construct(
+            here, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision
+        )
+        analytic = sweep.at(index)
+        runs.append(PositionRun(index, value, here, analytic, graphical, compare(analytic, graphical)))
+    return PositionsRun(scene, structure, tuple(runs), scales, precision, cycle)

@@ -1,0 +1,127 @@
+"""Cycle diagrams: the plotted curves are the analytic sweep, failures are shaded, sheet positions marked."""
+
+from __future__ import annotations
+
+import math
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+import plans
+from plans.drawing.diagrams import NEAR_DEAD_CENTRE, cycle_axis, draw_cycle_diagrams, write_cycle_diagrams
+from plans.positions import run_positions
+from test_positions import STUCK
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+@pytest.fixture(scope="module")
+def six_bar():
+    run = run_positions(plans.load(plans.example_path("six-bar")), 4)
+    return run, dict(draw_cycle_diagrams(run.cycle, marked=run.positions))
+
+
+@pytest.fixture(scope="module")
+def stuck():
+    run = run_positions(plans.loads(STUCK), "10, 350 deg")
+    return run, dict(draw_cycle_diagrams(run.cycle, marked=run.positions))
+
+
+def _lines(ax) -> dict[str, object]:
+    return {line.get_label(): line for line in ax.get_lines() if not line.get_label().startswith("_")}
+
+
+def test_links_points_and_sliders(six_bar):
+    run, figures = six_bar
+    assert list(figures) == ["links", "points", "sliders"]
+    assert len(figures["links"].axes) == 3  # φ, ω, ε
+    assert len(figures["points"].axes) == 2  # |v|, |a|
+    assert len(figures["sliders"].axes) == 4  # s, v_rel, a_rel, |aᵏ|
+
+
+def test_the_curves_are_the_analytic_values_over_the_turn(six_bar):
+    run, figures = six_bar
+    cycle = run.cycle
+    omega_axis = figures["links"].axes[1]
+    curves = _lines(omega_axis)
+    assert set(curves) == {"ω₂", "ω₃", "ω₄", "ω₅"}  # the sleeve 6 turns with the rod 5: not repeated
+    x, y = curves["ω₄"].get_data()
+    assert np.allclose(y, cycle.links["4"].omega)
+    # the crank turns clockwise: x is the angle turned from position 0, 0 … 360°
+    assert x[0] == 0.0 and x[-1] == pytest.approx(360.0)
+    v_curves = _lines(figures["points"].axes[0])
+    assert np.allclose(v_curves["|v_M|"].get_data()[1], np.abs(cycle.points["M"].v))
+    coriolis = _lines(figures["sliders"].axes[3])["|aᵏ| E"].get_data()[1]
+    assert np.allclose(coriolis, np.abs(cycle.sliders["E"].coriolis))
+
+
+def test_the_positions_with_sheets_are_marked_and_numbered(six_bar):
+    run, figures = six_bar
+    _, _, marks = cycle_axis(run.cycle, run.positions)
+    assert [k for k, _ in marks] == [0, 1, 2, 3]
+    assert [x for _, x in marks] == pytest.approx([0.0, 90.0, 180.0, 270.0])
+    top = figures["links"].axes[0]
+    vertical = [line for line in top.get_lines() if line.get_linestyle() == ":" and len(set(line.get_xdata())) == 1]
+    assert sorted(float(line.get_xdata()[0]) for line in vertical) == pytest.approx([0.0, 90.0, 180.0, 270.0])
+    assert [t.get_text() for t in top.texts] == ["0", "1", "2", "3"]
+
+
+def test_where_the_mechanism_cannot_assemble_is_shaded_and_not_plotted(stuck):
+    run, figures = stuck
+    cycle = run.cycle
+    x, _, _ = cycle_axis(cycle)
+    invalid_x = x[~np.asarray(cycle.valid)]
+    assert invalid_x.size and 160.0 < np.median(invalid_x) < 180.0  # around φ = 180° (turned 170° from 10°)
+    for fig in figures.values():
+        for ax in fig.axes:
+            hatched = [p for p in ax.patches if p.get_hatch() == "///"]
+            assert len(hatched) == 1
+            left = hatched[0].get_x()
+            right = left + hatched[0].get_width()
+            assert left <= invalid_x.min() and right >= invalid_x.max()
+            assert left > 0 and right < 360
+            for line in _lines(ax).values():
+                y = np.asarray(line.get_data()[1], dtype=float)
+                assert np.all(np.isnan(y[~np.asarray(cycle.valid)]))
+
+
+def test_beside_an_interval_without_assembly_is_near_a_dead_centre(stuck):
+    run, figures = stuck
+    x, _, _ = cycle_axis(run.cycle)
+    invalid_x = x[~np.asarray(run.cycle.valid)]
+    ax = figures["links"].axes[1]
+    light = sorted((p.get_x(), p.get_x() + p.get_width()) for p in ax.patches if p.get_hatch() != "///")
+    assert len(light) == 2  # either side of the interval where it cannot assemble
+    assert light[0][1] == pytest.approx(invalid_x.min() - 0.5)
+    assert light[1][0] == pytest.approx(invalid_x.max() + 0.5)
+
+
+def test_small_sines_are_near_a_dead_centre(monkeypatch):
+    import plans.drawing.diagrams as diagrams
+
+    run = run_positions(plans.load(plans.example_path("four-bar")), 1)
+    sines = np.asarray(run.cycle.sines["RRR(3,4)"])
+    threshold = float(np.quantile(sines, 0.2))  # the fifth of the turn with the worst transmission angle
+    monkeypatch.setattr(diagrams, "NEAR_DEAD_CENTRE", threshold)
+    assert np.array_equal(diagrams._near_dead(run.cycle), sines < threshold)
+    assert NEAR_DEAD_CENTRE == 0.1
+
+
+def test_the_diagrams_as_svg_in_serbian(tmp_path):
+    run = run_positions(plans.load(plans.example_path("four-bar")), 2)
+    paths = write_cycle_diagrams(run.cycle, tmp_path, marked=run.positions, lang="sr")
+    assert [p.name for p in paths] == ["links.svg", "points.svg"]  # no prismatic pair
+    text = " ".join("".join(t.itertext()) for t in ET.parse(paths[0]).getroot().iter(f"{SVG}text"))
+    assert "Кинематски дијаграми" in text and "угаона брзина" in text
+
+
+def test_components_on_request():
+    run = run_positions(plans.load(plans.example_path("slider-crank")), 2)
+    figures = dict(draw_cycle_diagrams(run.cycle, components=True))
+    assert len(figures["points"].axes) == 6
+    labels = set(_lines(figures["points"].axes[1]))
+    assert "v_B,x" in labels
+    y = _lines(figures["points"].axes[1])["v_B,x"].get_data()[1]
+    assert np.allclose(y, run.cycle.points["B"].v.real)
+    assert math.isfinite(float(np.nanmax(y)))

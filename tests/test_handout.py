@@ -1,0 +1,185 @@
+"""Handouts: the PDF read back — pages, page size, text, embedded fonts with the Cyrillic glyphs — and SVG pages.
+
+The PDF is opened with pypdf (a test dependency); nothing is checked by pixels.
+"""
+
+from __future__ import annotations
+
+import re
+import warnings
+import xml.etree.ElementTree as ET
+
+import pypdf
+import pytest
+
+import plans
+from plans.errors import AssemblyError
+from plans.handout import HandoutError, handout_pages, scene_data_lines, write_handout
+from test_positions import STUCK
+
+A4_PT = (595.2756, 841.8898)
+CYRILLIC = re.compile(r"[\u0400-\u04FF]")
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+def _write(path, scene, **options):
+    """Write a handout, turning matplotlib's missing-glyph warnings into failures."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        paths = write_handout(scene, path, **options)
+    missing = [str(w.message) for w in caught if "missing from" in str(w.message).lower()]
+    assert not missing, missing
+    return paths
+
+
+@pytest.fixture(scope="module")
+def russian(tmp_path_factory):
+    """The four-bar in two positions, in Russian: cover, 2 × (graphical, check), two diagram pages."""
+    path = tmp_path_factory.mktemp("ru") / "four-bar.pdf"
+    assert _write(path, plans.load(plans.example_path("four-bar")), positions=2, lang="ru") == [path]
+    return pypdf.PdfReader(path)
+
+
+@pytest.fixture(scope="module")
+def single(tmp_path_factory):
+    path = tmp_path_factory.mktemp("en") / "slider-crank.pdf"
+    _write(path, plans.load(plans.example_path("slider-crank")))
+    return path
+
+
+def test_the_pages_of_a_multi_position_handout(russian):
+    assert len(russian.pages) == 7
+    for page in russian.pages:
+        assert (float(page.mediabox.width), float(page.mediabox.height)) == pytest.approx(A4_PT, abs=0.01)
+    texts = [page.extract_text() for page in russian.pages]
+    assert "План положений механизма" in texts[0]  # the plan of positions
+    assert "Положения" in texts[0] and "0:  φ₂ = 60.0°" in texts[0] and "1:  φ₂ = 240.0°" in texts[0]
+    for k, (graphical, check) in enumerate(((1, 2), (3, 4))):
+        assert f"Положение {k}:" in texts[graphical]
+        assert "План скоростей" in texts[graphical] and "План ускорений" in texts[graphical]
+        assert "Векторные уравнения планов" in texts[graphical]
+        assert "Масштабы:" in texts[graphical]
+        assert "Аналитическая проверка: метод комплексных чисел" in texts[check]
+        assert "RRR(3,4)" in texts[check] and "величина" in texts[check]
+    assert "Кинематические диаграммы за цикл" in texts[5] and "Звенья" in texts[5]
+    assert "Точки: скорость и ускорение" in texts[6]
+    for number, text in enumerate(texts, start=1):
+        assert f"стр. {number}/7" in text
+
+
+def test_one_scale_factor_set_on_every_page(russian):
+    lines = {re.search(r"Масштабы:.*", page.extract_text()).group(0) for page in russian.pages[:5:2] if "Масштабы" in page.extract_text()}
+    assert len(lines) == 1
+
+
+def test_fonts_are_embedded_truetype_dejavu(russian):
+    seen = set()
+    for page in russian.pages:
+        fonts = page["/Resources"]["/Font"]
+        for ref in fonts.values():
+            font = ref.get_object()
+            assert font["/Subtype"] == "/Type0", font["/Subtype"]  # no Type 3 bitmaps, no unembedded Type 1
+            descendant = font["/DescendantFonts"][0].get_object()
+            assert descendant["/Subtype"] == "/CIDFontType2"
+            assert "/FontFile2" in descendant["/FontDescriptor"].get_object()  # the TrueType program is in the file
+            seen.add(str(font["/BaseFont"]).split("+")[-1])
+    assert {"DejaVuSans", "DejaVuSans-Bold"} <= seen
+
+
+def test_cyrillic_is_drawn_with_real_glyphs_not_missing_glyph_boxes(russian):
+    """Every Cyrillic character maps to a glyph of its own, never to glyph 0 (.notdef, the empty box)."""
+    cyrillic_glyphs = 0
+    for page in russian.pages:
+        for ref in page["/Resources"]["/Font"].values():
+            cmap = ref.get_object()["/ToUnicode"].get_object().get_data().decode("latin-1")
+            for cid, code in re.findall(r"<([0-9A-Fa-f]{4})>\s*<([0-9A-Fa-f]{4})>", cmap):
+                if CYRILLIC.match(chr(int(code, 16))):
+                    assert int(cid, 16) != 0
+                    cyrillic_glyphs += 1
+    assert cyrillic_glyphs > 20
+    text = "".join(page.extract_text() for page in russian.pages)
+    assert "\ufffd" not in text and "□" not in text
+    assert len(CYRILLIC.findall(text)) > 500
+
+
+def test_a_one_position_handout_is_two_pages_the_plans_and_the_check(single):
+    reader = pypdf.PdfReader(single)
+    assert len(reader.pages) == 2
+    first, second = (page.extract_text() for page in reader.pages)
+    assert "Offset slider-crank (E2)" in first and "φ₂ = 45.0°" in first
+    assert "Mechanism" in first and "Velocity plan" in first and "Acceleration plan" in first
+    assert "Structural formula:  I(0,2) → RRP(3,4)" in first
+    assert "Vector equations of the plans" in first
+    assert "Graphical against analytic" in second and "rel. error" in second
+    assert "Analytic check: complex-number method" in second
+    assert "-16.04" in second  # v_B of E2 on the loop line
+
+
+def test_the_pdf_is_the_same_bytes_every_time(single, tmp_path):
+    again = tmp_path / "again.pdf"
+    _write(again, plans.load(plans.example_path("slider-crank")))
+    assert again.read_bytes() == single.read_bytes()
+    assert b"/CreationDate" not in single.read_bytes()
+
+
+def test_svg_pages(tmp_path):
+    paths = write_handout(plans.load(plans.example_path("slider-crank")), tmp_path / "page.svg", lang="sl")
+    assert [p.name for p in paths] == ["page.svg", "page-2.svg"]
+    root = ET.parse(paths[0]).getroot()
+    assert (root.get("width"), root.get("height")) == ("210mm", "297mm")
+    text = " ".join("".join(t.itertext()) for t in root.iter(f"{SVG}text"))
+    assert "Načrt hitrosti" in text and "Načrt pospeškov" in text and "Kinematska shema" in text
+
+
+@pytest.mark.parametrize(
+    "path, options, message",
+    [
+        ("out.png", {}, "a handout is written as .pdf (or .svg, one file per page), not .png"),
+        ("out.pdf", {"lang": "de"}, "no language 'de'; plans speaks en, sr, ru, bg, sl"),
+    ],
+)
+def test_what_cannot_be_written_is_refused_before_anything_is(tmp_path, path, options, message):
+    with pytest.raises(HandoutError) as info:
+        write_handout(plans.load(plans.example_path("four-bar")), tmp_path / path, **options)
+    assert message in str(info.value)
+    assert isinstance(info.value, ValueError) and isinstance(info.value, plans.PlansError)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_single_position_that_cannot_assemble_is_the_solvers_error(tmp_path):
+    from dataclasses import replace
+    import math
+
+    scene = plans.loads(STUCK)
+    scene = replace(scene, driver=replace(scene.driver, phi=math.pi))
+    with pytest.raises(AssemblyError, match=r"RRR\(3,4\)"):
+        write_handout(scene, tmp_path / "x.pdf")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_position_that_cannot_assemble_gets_a_page_that_says_so():
+    pages = handout_pages(plans.loads(STUCK), positions="10, 180 deg")
+    names = [name for name, _ in pages]
+    assert names == ["cover", "position-0", "check-0", "unsolved-1", "diagram-links", "diagram-points"]
+    words = [t.get_text() for t in pages[3][1].findobj(lambda a: hasattr(a, "get_text"))]
+    assert any("cannot assemble" in w for w in words)
+
+
+def test_the_scene_data_lines():
+    lines = scene_data_lines(plans.load(plans.example_path("six-bar")), "sr")
+    assert lines[0] == "погонски члан 2 (O):  ω₂ = −10 rad/s,  ε₂ = 0 rad/s²"
+    assert "2: OA = 150" in lines[1] and "3: AB = 450, AC = 600, BC = 150" in lines[1] and lines[1].startswith("дужине [mm]")
+    assert lines[2] == "непокретне тачке [mm]:  O (0, 0),  D (−450, 350),  E (−200, −150)"
+
+
+def test_long_loop_equations_continue_on_another_page():
+    from plans.drawing.sheets import draw_check_pages
+    from plans.loops import loop_equations
+    from plans.positions import run_positions
+
+    run = run_positions(plans.load(plans.example_path("linear-arm"))).runs[0]
+    figures = draw_check_pages(run, loops=loop_equations(run.analytic), table=[["quantity", "value"]] + [["x", "1"]] * 30)
+    assert len(figures) == 2
+    words = [t.get_text() for t in figures[1].findobj(lambda a: hasattr(a, "get_text") and hasattr(a, "get_fontsize"))]
+    assert "Analytic check: complex-number method (loop equations) (continued)" in words
+    assert "RRP(5,6)" in words  # the last group's equations, moved whole to the next page

@@ -1,0 +1,80 @@
+"""plans draw --positions: one sheet per position at one set of scale factors, and the plan of positions."""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+import plans
+from plans.drawing import write_position_sheets
+from plans.drawing.positions_plan import draw_positions_plan, numbered_points
+from plans.positions import run_positions
+from test_positions import STUCK
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+def _texts(path) -> list[str]:
+    return ["".join(t.itertext()) for t in ET.parse(path).getroot().iter(f"{SVG}text")]
+
+
+@pytest.fixture(scope="module")
+def sheets(tmp_path_factory):
+    directory = tmp_path_factory.mktemp("sheets")
+    (directory / "sheet-05.svg").write_text("<svg/>")  # from an earlier run with more positions
+    run = run_positions(plans.load(plans.example_path("four-bar")), "0, 120 deg")
+    return run, directory, write_position_sheets(run, directory)
+
+
+def test_one_sheet_per_position_and_the_plan_of_positions(sheets):
+    run, directory, paths = sheets
+    assert [p.name for p in paths] == ["sheet-00.svg", "sheet-01.svg", "positions.svg"]
+    assert sorted(p.name for p in directory.iterdir()) == ["positions.svg", "sheet-00.svg", "sheet-01.svg"]
+    for k, path in enumerate(paths[:2]):
+        title = " ".join(_texts(path))
+        assert f"Position {k} ({k + 1}/2): {run.runs[k].label}" in title
+
+
+def test_the_same_scale_factors_on_every_sheet(sheets):
+    run, _, paths = sheets
+    statements = []
+    for path in paths[:2]:
+        statements.append(sorted(t for t in _texts(path) if re.match(r"k_[lva] = ", t)))
+    assert statements[0] == statements[1]
+    assert len(statements[0]) == 3
+    assert f"k_v = {run.scales['k_v']:g} (m/s)/mm" in statements[0]
+
+
+def test_the_plan_of_positions_draws_each_position_and_closed_paths(sheets):
+    run, _, paths = sheets
+    texts = _texts(paths[2])
+    for point in numbered_points(run.scene):
+        for k in range(2):
+            assert f"{point}{'₀₁'[k]}" in texts
+    artists = draw_positions_plan(run)
+    by_gid = {}
+    for artist in artists:
+        by_gid.setdefault(artist.get_gid(), []).append(artist)
+    for point in run.scene.report:
+        (path,) = by_gid[f"pos-path-{point}"]
+        x, y = path.get_data()
+        assert (x[0], y[0]) == pytest.approx((x[-1], y[-1]), abs=1e-9)  # a full crank turn closes the path
+        z = np.asarray(run.cycle.points[point].r) / run.scales["k_l"]
+        assert np.allclose(x, z.real) and np.allclose(y, z.imag)
+    assert "pos-link-1-3" in by_gid  # position 1 in thin lines; position 0 as the full scheme
+    assert "pos-link-3" in by_gid
+
+
+def test_a_position_that_cannot_assemble_gets_no_sheet(tmp_path):
+    run = run_positions(plans.loads(STUCK), "10, 180 deg")
+    paths = write_position_sheets(run, tmp_path)
+    assert [p.name for p in paths] == ["sheet-00.svg", "positions.svg"]
+    artists = draw_positions_plan(run)
+    # the path is broken where the mechanism cannot assemble: two pieces, no NaN drawn
+    pieces = [a for a in artists if (a.get_gid() or "").startswith("pos-path-B")]
+    assert len(pieces) == 2
+    for piece in pieces:
+        assert np.all(np.isfinite(piece.get_xydata()))
