@@ -30,12 +30,41 @@ def _scene_argument(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--example", metavar="NAME", help="use a bundled example scene instead of a file (see: plans examples)")
 
 
-def _position_argument(parser: argparse.ArgumentParser) -> None:
+def _position_argument(parser: argparse.ArgumentParser, *, several: bool = False) -> None:
+    more = " or a list (\"0,30,55,90 deg\"): a sheet per position" if several else ""
     parser.add_argument(
         "--at",
         metavar="POSITION",
         help="driver position instead of the scene's: a crank angle (\"30 deg\", bare numbers are degrees) "
-        "or a linear driver's position (\"50 mm\", bare numbers are m)",
+        f"or a linear driver's position (\"50 mm\", bare numbers are m){more}",
+    )
+    if several:
+        parser.add_argument(
+            "--positions",
+            type=_count,
+            metavar="N",
+            help="N positions equally spaced over the driver's cycle (position 0 is the scene's own), a sheet each",
+        )
+
+
+def _count(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number of positions, got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected at least 1 position, got {text!r}")
+    return value
+
+
+def _language_argument(parser: argparse.ArgumentParser) -> None:
+    from .i18n import LANGUAGES
+
+    parser.add_argument(
+        "--lang",
+        choices=list(LANGUAGES),
+        default="en",
+        help="language of headings and legends: " + ", ".join(f"{k} ({v})" for k, v in LANGUAGES.items()),
     )
 
 
@@ -97,15 +126,34 @@ def build_parser() -> argparse.ArgumentParser:
     _scene_argument(sweep)
     sweep.add_argument("--steps", type=int, default=360, metavar="N", help="number of driver positions (default 360)")
     sweep.add_argument("-o", "--output", metavar="FILE", help="CSV file to write (default: standard output)")
+    sweep.add_argument("--plot", metavar="DIR", help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) into DIR")
+    sweep.add_argument("--components", action="store_true", help="with --plot: x and y components of v and a too")
+    sweep.add_argument("--positions", type=_count, metavar="N", help="with --plot: mark N equally spaced positions (those of plans draw --positions N)")
+    _language_argument(sweep)
     _warn_argument(sweep)
 
-    draw = commands.add_parser("draw", help="draw mechanism.svg, velocity.svg, acceleration.svg and sheet.svg")
+    draw = commands.add_parser(
+        "draw",
+        help="draw mechanism.svg, velocity.svg, acceleration.svg and sheet.svg (or a sheet per position)",
+    )
     _scene_argument(draw)
-    _position_argument(draw)
+    _position_argument(draw, several=True)
     draw.add_argument("-o", "--output", metavar="DIR", required=True, help="directory for the SVG files")
+    _language_argument(draw)
     _warn_argument(draw)
     _scale_arguments(draw)
 
+    handout = commands.add_parser("handout", help="a printable handout: A4 pages of PDF (or SVG pages)")
+    _scene_argument(handout)
+    _position_argument(handout, several=True)
+    handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg for SVG pages")
+    handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
+    _language_argument(handout)
+    _scale_arguments(handout)
+
+    from . import bench
+
+    bench.add_parser(commands)
     commands.add_parser("examples", help="list the bundled example scenes")
     return parser
 
@@ -119,9 +167,21 @@ def _load(args) -> Scene:
         scene = load(args.scene)
     else:
         raise SceneError("no scene: give a scene file or --example NAME (plans examples lists them)")
-    if getattr(args, "at", None) is not None:
+    if getattr(args, "at", None) is not None and not _several(args):
         scene = _at(scene, args.at)
     return scene
+
+
+def _several(args) -> bool:
+    """True when the command asks for a run over several positions."""
+    return getattr(args, "positions", None) is not None or "," in (getattr(args, "at", None) or "")
+
+
+def _position_spec(args):
+    """What plans.positions.parse_positions takes: a count, or the --at list."""
+    if getattr(args, "positions", None) is not None and getattr(args, "at", None) is not None:
+        raise SceneError("give either --positions N or --at with a list of positions, not both")
+    return args.positions if args.positions is not None else args.at
 
 
 def _at(scene: Scene, text: str) -> Scene:
@@ -213,10 +273,20 @@ def _sweep(args) -> int:
         _warn(f"the mechanism is not solved at {lost} of {args.steps} positions; their rows have assembled = 0 and empty cells")
     for message in analyse_sweep(analytic, args.warn_condition).messages():
         _warn(message)
+    marked = None
+    if args.plot and args.positions:
+        from .positions import parse_positions
+
+        marked = parse_positions(args.positions, scene)
     if args.output:
         write_atomic(args.output, text)
-    else:
+    elif not args.plot:
         sys.stdout.write(text)
+    if args.plot:
+        from .drawing.diagrams import write_cycle_diagrams
+
+        for path in write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components):
+            print(path)
     return 0
 
 
@@ -238,20 +308,55 @@ def _draw(args) -> int:
     from .report import sheet_table
 
     scene = _load(args)
-    analytic = solve(scene, warn_condition=args.warn_condition)
-    graphical = _construct(scene, args)
-    comparisons = compare(analytic, graphical)
-    sheet_table_rows = sheet_table(comparisons)
-    _warn_solution(analytic, graphical)
-    paths = write_drawings(
-        graphical,
+    if _several(args):
+        from .drawing import write_position_sheets
+        from .positions import run_positions
+
+        run = run_positions(scene, _position_spec(args), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
+        paths = write_position_sheets(run, Path(args.output), lang=args.lang)
+    else:
+        analytic = solve(scene, warn_condition=args.warn_condition)
+        graphical = _construct(scene, args)
+        comparisons = compare(analytic, graphical)
+        sheet_table_rows = sheet_table(comparisons)
+        _warn_solution(analytic, graphical)
+        paths = write_drawings(
+            graphical,
+            Path(args.output),
+            formula=analytic.structure.formula,
+            table=sheet_table_rows,
+            lang=args.lang,
+        )
+    for path in paths:
+        print(path)
+    return 0
+
+
+def _handout(args) -> int:
+    from .handout import write_handout
+
+    scene = _load(args)
+    positions = _position_spec(args) if _several(args) else None
+    paths = write_handout(
+        scene,
         Path(args.output),
-        formula=analytic.structure.formula,
-        table=sheet_table_rows,
+        positions=positions,
+        lang=args.lang,
+        k_l=args.k_l,
+        k_v=args.k_v,
+        k_a=args.k_a,
+        precision=args.precision,
+        components=args.components,
     )
     for path in paths:
         print(path)
     return 0
+
+
+def _bench(args) -> int:
+    from . import bench
+
+    return bench.run_command(args)
 
 
 def _examples(args) -> int:
@@ -261,7 +366,14 @@ def _examples(args) -> int:
     return 0
 
 
-_COMMANDS = {"solve": _solve, "sweep": _sweep, "draw": _draw, "examples": _examples}
+_COMMANDS = {
+    "solve": _solve,
+    "sweep": _sweep,
+    "draw": _draw,
+    "handout": _handout,
+    "bench": _bench,
+    "examples": _examples,
+}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -131,3 +131,37 @@ def test_solve_never_imports_matplotlib_and_analytic_only_not_shapely():
     )
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert result.stdout.strip() == "[] False"
+
+
+def test_draw_several_positions_writes_a_sheet_each(capsys, tmp_path):
+    status, out, _ = run(capsys, "draw", "--example", "four-bar", "--at", "0,90 deg", "-o", str(tmp_path))
+    assert status == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["positions.svg", "sheet-00.svg", "sheet-01.svg"]
+    assert out.split() == [str(tmp_path / n) for n in ("sheet-00.svg", "sheet-01.svg", "positions.svg")]
+
+
+def test_positions_and_a_list_are_exclusive(capsys, tmp_path):
+    status, _, err = run(capsys, "draw", "--example", "four-bar", "--at", "0,90", "--positions", "4", "-o", str(tmp_path))
+    assert status == 2 and "not both" in err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_sweep_plot_draws_the_cycle_diagrams(capsys, tmp_path):
+    status, out, _ = run(capsys, "sweep", "--example", "quick-return", "--steps", "36", "--plot", str(tmp_path), "--positions", "4")
+    assert status == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["links.svg", "points.svg", "sliders.svg"]
+    assert "driver_phi_deg" not in out  # with --plot and no -o, the CSV is not dumped on the terminal
+
+
+def test_handout_in_russian_is_a_pdf(capsys, tmp_path):
+    target = tmp_path / "sc.pdf"
+    status, _, _ = run(capsys, "handout", "--example", "slider-crank", "-o", str(target), "--lang", "ru")
+    assert status == 0
+    assert target.read_bytes().startswith(b"%PDF")
+
+
+def test_unknown_language_is_refused_by_the_parser(capsys, tmp_path):
+    with pytest.raises(SystemExit) as info:
+        main(["handout", "--example", "slider-crank", "-o", str(tmp_path / "x.pdf"), "--lang", "de"])
+    assert info.value.code == 2
+    assert "invalid choice: 'de'" in capsys.readouterr().err

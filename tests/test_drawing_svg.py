@@ -270,7 +270,7 @@ def test_a_failing_sheet_leaves_existing_files_untouched_and_no_temporaries(tmp_
 
 
 def test_a_failing_write_removes_its_temporaries(tmp_path, monkeypatch):
-    from plans.drawing import svg
+    from plans import _files as svg  # the atomic writer the drawings use
 
     (tmp_path / "mechanism.svg").write_text("good")
     real_replace = os.replace

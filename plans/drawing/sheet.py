@@ -311,6 +311,7 @@ def write_drawings(
     formula: str = "",
     table: list[list[str]] | None = None,
     equations: list[str] | None = None,
+    lang: str = "en",
 ) -> list[Path]:
     """Write ``mechanism.svg``, ``velocity.svg``, ``acceleration.svg`` and ``sheet.svg``.
 
@@ -331,6 +332,8 @@ def write_drawings(
         The results table for the sheet, first row the header.
     equations : list of str, optional
         Vector equations for the sheet; by default from the plans' steps.
+    lang : str
+        Language of headings and legends (:data:`plans.i18n.LANGUAGES`).
 
     Returns
     -------
@@ -342,11 +345,13 @@ def write_drawings(
 
     directory = Path(directory)
     contents: dict[Path, bytes] = {}
-    contents[directory / "mechanism.svg"] = render_svg(draw_mechanism(solution)[0].figure)
-    contents[directory / "velocity.svg"] = render_svg(draw_plan(solution.velocity_plan)[0].figure)
+    contents[directory / "mechanism.svg"] = render_svg(draw_mechanism(solution, lang=lang)[0].figure)
+    contents[directory / "velocity.svg"] = render_svg(draw_plan(solution.velocity_plan, lang=lang)[0].figure)
     if solution.acceleration_plan is not None:
-        contents[directory / "acceleration.svg"] = render_svg(draw_plan(solution.acceleration_plan)[0].figure)
-    contents[directory / "sheet.svg"] = render_svg(draw_sheet(solution, formula=formula, table=table, equations=equations))
+        contents[directory / "acceleration.svg"] = render_svg(draw_plan(solution.acceleration_plan, lang=lang)[0].figure)
+    contents[directory / "sheet.svg"] = render_svg(
+        draw_sheet(solution, formula=formula, table=table, equations=equations, lang=lang)
+    )
     directory.mkdir(parents=True, exist_ok=True)
     paths = write_atomic(contents)
     if solution.acceleration_plan is None:

@@ -14,15 +14,15 @@
 from __future__ import annotations
 
 import io
-import os
 import re
-import tempfile
 from contextlib import contextmanager
 from pathlib import Path
 
 import matplotlib
 from matplotlib.backends.backend_svg import FigureCanvasSVG
 from matplotlib.figure import Figure
+
+from .._files import replace_all
 
 from .style import RC
 
@@ -77,40 +77,5 @@ def svg_size_mm(data: bytes | str) -> tuple[float, float]:
 
 
 def write_atomic(contents: dict[Path, bytes]) -> list[Path]:
-    """Write every file or none.
-
-    Each file goes to a temporary file beside its target; once all are
-    written and flushed, they are renamed into place with :func:`os.replace`.
-    If anything fails before the renames, the temporary files are removed and
-    the targets are untouched.
-
-    Returns
-    -------
-    list of pathlib.Path
-        The targets, in the order given.
-    """
-    temps: list[tuple[str, Path]] = []
-    try:
-        for target, data in contents.items():
-            target = Path(target)
-            fd, temp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
-            temps.append((temp, target))
-            try:
-                mode = target.stat().st_mode & 0o777
-            except FileNotFoundError:
-                mode = 0o644
-            os.chmod(temp, mode)
-            with os.fdopen(fd, "wb") as handle:
-                handle.write(data)
-                handle.flush()
-                os.fsync(handle.fileno())
-        for temp, target in temps:
-            os.replace(temp, target)
-    except BaseException:
-        for temp, _ in temps:
-            try:
-                os.unlink(temp)
-            except FileNotFoundError:
-                pass
-        raise
-    return [Path(t) for t in contents]
+    """Write every file or none: :func:`plans._files.replace_all`."""
+    return replace_all(contents)
