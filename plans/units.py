@@ -73,26 +73,31 @@ def parse_quantity(value: object, kind: str) -> float:
     table = KINDS[kind]
     default = next(iter(table))
     if isinstance(value, bool):
-        raise UnitError(f"expected a {kind} such as 0.3 or \"{_example(kind)}\", got {value!r}")
+        raise UnitError(f"expected {_a(kind)} such as 0.3 or \"{_example(kind)}\", got {value!r}")
     if isinstance(value, (int, float)):
         number, unit = float(value), default
     elif isinstance(value, str):
         match = _QUANTITY.match(value)
         if not match:
-            raise UnitError(f"expected a {kind} such as \"{_example(kind)}\", got {value!r}")
+            raise UnitError(f"expected {_a(kind)} such as \"{_example(kind)}\", got {value!r}")
         number = float(match.group(1))
         unit = (match.group(2) or default).strip()
         if unit not in table:
             other = _kind_of(unit)
             hint = f" ({unit!r} is a unit of {other})" if other else ""
             raise UnitError(
-                f"{value!r} is not a {kind}{hint}; use one of: {', '.join(table)}"
+                f"{value!r} is not {_a(kind)}{hint}; use one of: {', '.join(table)}"
             )
     else:
-        raise UnitError(f"expected a {kind} such as \"{_example(kind)}\", got {value!r}")
+        raise UnitError(f"expected {_a(kind)} such as \"{_example(kind)}\", got {value!r}")
     if not math.isfinite(number):
         raise UnitError(f"{value!r} is not a finite number")
     return number * table[unit]
+
+
+def _a(kind: str) -> str:
+    """The kind with its article: "a length", "an angle"."""
+    return f"an {kind}" if kind[0] in "aeiou" else f"a {kind}"
 
 
 def _example(kind: str) -> str:

@@ -97,7 +97,7 @@ def test_positions_of_a_linear_driver():
         (0, "the count must be at least 1, got 0"),
         ("0, thirty deg", "positions: expected a angle such as"),
         ("1,,2", "expected numbers separated by commas"),
-        ("10, 20 mm", "'10 mm' is not a angle"),
+        ("10, 20 mm", "'10 mm' is not an angle"),
     ],
 )
 def test_bad_positions_are_a_scene_error(six_bar, spec, message):

@@ -82,7 +82,7 @@ def _error(text: str) -> str:
     [
         ('crank = "2"', 'crank = "7"', ["bad.toml", "driver.crank", "there is no link '7'"]),
         ('omega = "10 rad/s"', 'omegaa = "10 rad/s"', ["unknown key 'omegaa'", "did you mean 'omega'?"]),
-        ('angle = "60 deg"', 'angle = "60 kg"', ["driver.angle", "'60 kg' is not a angle"]),
+        ('angle = "60 deg"', 'angle = "60 kg"', ["driver.angle", "'60 kg' is not an angle"]),
         ('B = ["250 mm", 0], M', 'B = ["250 mm", 0, 1], M', ["link.3.points.B", "expected coordinates [x, y]"]),
         ('M = ["100 mm", "60 mm"]', 'M = ["250 mm", 0]', ["coincide", "link 3"]),
         ('[assembly]\nB = [0.2, 0.2]', '[assembly]\nX = [0.2, 0.2]', ["assembly.X", "no link has a point 'X'"]),

@@ -36,7 +36,7 @@ def test_quantities_convert_to_si(text, kind, expected):
     [
         ("3 kg", "length", "'3 kg' is not a length"),
         ("3 m/s", "length", "'m/s' is a unit of velocity"),
-        ("fast", "angular velocity", "expected a angular velocity"),
+        ("fast", "angular velocity", "expected an angular velocity"),
         (float("nan"), "length", "not a finite number"),
         (float("inf"), "angle", "not a finite number"),
         (True, "length", "expected a length"),
