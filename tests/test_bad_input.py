@@ -127,7 +127,7 @@ CASES = [
     ),
     ("nan", edit(FOUR_BAR, 'omega = "10 rad/s"', "omega = nan"), [], ["bad.toml", "driver.omega", "not a finite number"]),
     ("infinite", edit(FOUR_BAR, 'D = ["220 mm", 0]', "D = [inf, 0]"), [], ["bad.toml", "frame.points.D[0]", "not a finite number"]),
-    ("nan-text", edit(FOUR_BAR, 'angle = "60 deg"', 'angle = "nan deg"'), [], ["bad.toml", "driver.angle", "expected a angle such as"]),
+    ("nan-text", edit(FOUR_BAR, 'angle = "60 deg"', 'angle = "nan deg"'), [], ["bad.toml", "driver.angle", "expected an angle such as"]),
     ("kilograms-as-a-length", edit(FOUR_BAR, 'A = ["80 mm", 0]', 'A = ["3 kg", 0]'), [], ["bad.toml", "link.2.points.A[0]", "'3 kg' is not a length", "use one of: m, mm"]),
     ("metres-as-an-angle", edit(FOUR_BAR, 'angle = "60 deg"', 'angle = "60 m"'), [], ["bad.toml", "driver.angle", "('m' is a unit of length)", "use one of: deg"]),
     ("beyond-range", edit(FOUR_BAR, 'D = ["220 mm", 0]', 'D = ["1e300 mm", 0]'), [], ["bad.toml", "frame.points.D[0]", "beyond the range plans computes in", "at most 1e+30 m"]),
