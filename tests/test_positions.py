@@ -95,7 +95,7 @@ def test_positions_of_a_linear_driver():
     "spec, message",
     [
         (0, "the count must be at least 1, got 0"),
-        ("0, thirty deg", "positions: expected a angle such as"),
+        ("0, thirty deg", "positions: expected an angle such as"),
         ("1,,2", "expected numbers separated by commas"),
         ("10, 20 mm", "'10 mm' is not an angle"),
     ],
