@@ -16,6 +16,7 @@ EXPECTED = {
     "linear-arm": "I(0,2) → RPR(3,4) → RRP(5,6)",
     "wedge": "I(0,2) → PRP(3,4)",
     "scotch-yoke": "I(0,2) → RPP(3,4)",
+    "rocker-limit": "I(0,2) → RRR(3,4)",
 }
 
 
