@@ -445,7 +445,6 @@ def _driver_block(b: _Builder) -> LoopBlock:
             done.add(name)
     else:
         guide = scene.frame.lines[driver.guide]
-        u = cmath.exp(1j * guide.angle)
         lines.append(
             rf"$s = {_num(driver.s)}\ \mathrm{{m}},\ \dot{{s}} = {_num(driver.velocity)}\ \mathrm{{m/s}},\ "
             rf"\ddot{{s}} = {_num(driver.acceleration)}\ \mathrm{{m/s^2}},\ u = e^{{i\,{_deg(guide.angle)}}}$"

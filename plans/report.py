@@ -16,7 +16,7 @@ import math
 from .compare import Comparison
 from .errors import PlansError
 from .limits import expected_rel_error
-from .scene import Crank, LinearDriver, Scene
+from .scene import Crank, Scene
 
 __all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table"]
 

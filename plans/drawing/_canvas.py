@@ -21,7 +21,7 @@ from matplotlib.textpath import TextToPath
 from shapely.geometry import LineString, Point, box
 from shapely.geometry import Polygon as ShapelyPolygon
 
-from .style import FONT_FAMILY, INK, MM_PER_PT
+from .style import FONT_FAMILY, INK, MARGIN_MM, MM_PER_PT
 
 __all__ = ["Bounds", "Sketch", "text_size", "fmt_number", "unit"]
 
@@ -259,3 +259,33 @@ def fit_axes(ax, bounds: Bounds, margin: float, rect_mm: tuple[float, float] | N
     ax.set_aspect("auto")
     ax.set_axis_off()
     return width, height
+
+
+def sketch_on(ax, tag: str, draw) -> list:
+    """Run ``draw(sketch)`` on *ax*, or on a new true-scale figure when *ax* is None.
+
+    A new figure is sized to the drawing (1 data unit = 1 mm of paper); a
+    caller's axes get limits with a margin, equal aspect and no axis lines.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
+        Everything drawn; a new figure is ``artists[0].figure``.
+    """
+    from .svg import drawing_rc, new_figure
+
+    with drawing_rc():
+        own = ax is None
+        if own:
+            ax = new_figure().add_axes([0, 0, 1, 1])
+        sketch = Sketch(ax, tag)
+        draw(sketch)
+        if own:
+            fit_axes(ax, sketch.bounds, MARGIN_MM)
+        else:
+            b = sketch.bounds
+            ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
+            ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM)
+            ax.set_aspect("equal")
+            ax.set_axis_off()
+    return sketch.artists

@@ -28,11 +28,10 @@ import shapely
 from shapely.geometry import LineString, MultiPoint, Point
 from shapely.geometry import Polygon as ShapelyPolygon
 
-from ._canvas import Sketch, fit_axes, fmt_number, unit
+from ._canvas import Sketch, fmt_number, sketch_on, unit
 from .labels import place_label
 from ..i18n import term
-from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, MARGIN_MM, PLATE_FILL, SMALL_PT
-from .svg import drawing_rc, new_figure
+from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, PLATE_FILL, SMALL_PT
 
 __all__ = ["draw_mechanism", "mechanism_labels"]
 
@@ -90,25 +89,8 @@ def draw_mechanism(solution, ax=None, *, lang: str = "en") -> list:
     -------
     list of matplotlib.artist.Artist
     """
-    with drawing_rc():
-        own = ax is None
-        if own:
-            ax = new_figure().add_axes([0, 0, 1, 1])
-        sketch = Sketch(ax, "mech")
-        _Mechanism(sketch, solution, lang=lang).draw()
-        if own:
-            fit_axes(ax, sketch.bounds, MARGIN_MM)
-        else:
-            _fit_user_axes(ax, sketch)
-    return sketch.artists
+    return sketch_on(ax, "mech", lambda sketch: _Mechanism(sketch, solution, lang=lang).draw())
 
-
-def _fit_user_axes(ax, sketch) -> None:
-    b = sketch.bounds
-    ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
-    ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM)
-    ax.set_aspect("equal")
-    ax.set_axis_off()
 
 
 class _Mechanism:

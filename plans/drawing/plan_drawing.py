@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from ._canvas import Sketch, fit_axes, fmt_number, text_size, unit
+from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
 from .style import (
     CAPTION_PT,
@@ -25,11 +25,9 @@ from .style import (
     INK,
     LABEL_PT,
     LEGEND_TEXT,
-    MARGIN_MM,
     VECTOR_STYLE,
 )
 from ..i18n import term
-from .svg import drawing_rc, new_figure
 
 __all__ = ["draw_plan", "draw_velocity_plan", "draw_acceleration_plan", "vectors_drawn", "legend_words", "ZERO_MM"]
 
@@ -85,21 +83,8 @@ def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True) -> list:
     """
     if plan.kind not in _UNITS:
         raise ValueError(f"a plan is 'velocity' or 'acceleration', got {plan.kind!r}")
-    with drawing_rc():
-        own = ax is None
-        if own:
-            ax = new_figure().add_axes([0, 0, 1, 1])
-        sketch = Sketch(ax, "vel" if plan.kind == "velocity" else "acc")
-        _draw(sketch, plan, lang=lang, legend=legend)
-        if own:
-            fit_axes(ax, sketch.bounds, MARGIN_MM)
-        else:
-            b = sketch.bounds
-            ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
-            ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM)
-            ax.set_aspect("equal")
-            ax.set_axis_off()
-    return sketch.artists
+    tag = "vel" if plan.kind == "velocity" else "acc"
+    return sketch_on(ax, tag, lambda sketch: _draw(sketch, plan, lang=lang, legend=legend))
 
 
 def draw_velocity_plan(plan, ax=None, *, lang: str = "en") -> list:
@@ -110,6 +95,18 @@ def draw_velocity_plan(plan, ax=None, *, lang: str = "en") -> list:
 def draw_acceleration_plan(plan, ax=None, *, lang: str = "en") -> list:
     """:func:`draw_plan` for an acceleration plan."""
     return draw_plan(plan, ax, lang=lang)
+
+
+def legend_row(sketch, kind: str, words: str, x: float, y: float, *, text_gid: str) -> None:
+    """One legend entry at (x, y) [mm]: a 9 mm sample of the *kind*'s line or arrow, then its words."""
+    a, c = complex(x, y), complex(x + 9.0, y)
+    if kind == "construction":
+        color, lw, dashes = CONSTRUCTION_STYLE
+        sketch.line([a, c], color=color, lw=lw, dashes=dashes, gid=f"legend-{kind}", obstacle=False)
+    else:
+        color, lw, dashes, _ = VECTOR_STYLE[kind]
+        sketch.arrow(a, c, color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}")
+    sketch.text(complex(x + 11.0, y), words, size=CAPTION_PT, ha="left", va="center", gid=text_gid, obstacle=False)
 
 
 def _check(z: complex, what: str) -> complex:
@@ -220,11 +217,4 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     y -= 4.6
     for kind, words in rows:
         y -= row_h
-        a, c = complex(x, y), complex(x + 9.0, y)
-        if kind == "construction":
-            color, lw, dashes = CONSTRUCTION_STYLE
-            sketch.line([a, c], color=color, lw=lw, dashes=dashes, gid=f"legend-{kind}", obstacle=False)
-        else:
-            color, lw, dashes, _ = VECTOR_STYLE[kind]
-            sketch.arrow(a, c, color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}")
-        sketch.text(complex(x + 11.0, y), words, size=CAPTION_PT, ha="left", va="center", gid=f"legend-text-{kind}", obstacle=False)
+        legend_row(sketch, kind, words, x, y, text_gid=f"legend-text-{kind}")

@@ -17,11 +17,10 @@ from __future__ import annotations
 import numpy as np
 
 from ..i18n import term
-from ._canvas import Sketch, fit_axes, fmt_number, unit
+from ._canvas import Sketch, fmt_number, sketch_on, unit
 from .labels import place_label
 from .mechanism import FRAME, _Mechanism
-from .style import CAPTION_PT, HEADING_PT, MARGIN_MM, SMALL_PT
-from .svg import drawing_rc, new_figure
+from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 
 __all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points"]
 
@@ -175,18 +174,4 @@ def draw_positions_plan(positions_run, ax=None, *, lang: str = "en", k_l: float 
     -------
     list of matplotlib.artist.Artist
     """
-    with drawing_rc():
-        own = ax is None
-        if own:
-            ax = new_figure().add_axes([0, 0, 1, 1])
-        sketch = Sketch(ax, "pos")
-        draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l)
-        if own:
-            fit_axes(ax, sketch.bounds, MARGIN_MM)
-        else:
-            b = sketch.bounds
-            ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
-            ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM)
-            ax.set_aspect("equal")
-            ax.set_axis_off()
-    return sketch.artists
+    return sketch_on(ax, "pos", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l))

@@ -27,9 +27,9 @@ from matplotlib.backends.backend_pdf import PdfPages
 from ..i18n import term
 from ._canvas import Sketch, fit_axes, fmt_number, text_size
 from .mechanism import _Mechanism
-from .plan_drawing import _KIND_ORDER, _draw as _draw_plan_into, legend_words, vectors_drawn
+from .plan_drawing import _KIND_ORDER, _draw as _draw_plan_into, legend_row, legend_words, vectors_drawn
 from .sheet import _Block, _table_block, draw_sheet
-from .style import CAPTION_PT, CONSTRUCTION_STYLE, HEADING_PT, MARGIN_MM, SMALL_PT, VECTOR_STYLE
+from .style import CAPTION_PT, HEADING_PT, MARGIN_MM, SMALL_PT
 from .svg import drawing_rc, new_figure, render_svg, write_atomic
 
 __all__ = [
@@ -261,15 +261,7 @@ def _legend_block(graphical, lang: str) -> _Block:
     def place(sketch: Sketch, x: float, y: float) -> None:
         top = y + height
         for kind, words in entries:
-            yc = top - row_h / 2
-            a, c = complex(x, yc), complex(x + 9.0, yc)
-            if kind == "construction":
-                color, lw, dashes = CONSTRUCTION_STYLE
-                sketch.line([a, c], color=color, lw=lw, dashes=dashes, gid=f"legend-{kind}", obstacle=False)
-            else:
-                color, lw, dashes, _ = VECTOR_STYLE[kind]
-                sketch.arrow(a, c, color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}")
-            sketch.text(complex(x + 11.0, yc), words, size=CAPTION_PT, ha="left", va="center", gid="legend-text", obstacle=False)
+            legend_row(sketch, kind, words, x, top - row_h / 2, text_gid="legend-text")
             top -= row_h
 
     return _Block(width, height, place)
@@ -372,7 +364,6 @@ def draw_position_page(
         Raise :class:`PageOverflow` when the blocks do not fit (the handout
         then chooses larger scale factors); False places them anyway.
     """
-    from .sheet import _pretty, sheet_equations
 
     g = run.graphical
     size = A4

@@ -71,7 +71,6 @@ def _construct(ctx: Construction, group: Group, plan, motions, accelerations: bo
     c = group.inner.point
     C = ctx.point(group.links[0], c)
     chains, equations, slidings = [], [], []
-    symbol = "a" if accelerations else "v"
     for link, known, own, other, prismatic in _sides(ctx, group):
         _, u = ctx.line(other)
         ck, _, ck_vector = coincident(ctx, plan, known, c, C)
