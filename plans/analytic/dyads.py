@@ -58,10 +58,9 @@ from ..scene import Line
 from .kinematics import (
     BodyState,
     PointState,
-    condition_number,
-    construction_sine,
     cross,
     dot,
+    is_number,
     sliding_acceleration,
     sliding_velocity,
     coriolis_acceleration,
@@ -105,8 +104,13 @@ class DyadSolution:
     condition : float array (N,)
         Condition number of the velocity matrix with unit columns
         (:func:`~plans.analytic.kinematics.condition_number`).
-    measures : dict[str, numpy.ndarray]
-        The lengths that decide the assembly, for messages [m].
+    measures : dict[str, numpy.ndarray or float]
+        The lengths that decide the assembly, for messages [m]; a length of
+        the links themselves is a float.
+    inner : PointState or None
+        The motion of the inner revolute joint C, where the dyad finds it
+        directly (RRP, PRP: from the travel along the guide): one point of
+        both links.
     """
 
     i: BodyState
@@ -115,7 +119,8 @@ class DyadSolution:
     singular: np.ndarray
     sine: np.ndarray
     condition: np.ndarray
-    measures: dict[str, np.ndarray] = field(default_factory=dict)
+    measures: dict[str, np.ndarray | float] = field(default_factory=dict)
+    inner: PointState | None = None
 
 
 def _quiet(function):
@@ -129,12 +134,24 @@ def _quiet(function):
     return wrapper
 
 
-def _clamped(sin2):
-    """sin² of the construction angle with rounding-level negatives set to zero."""
-    return np.where((sin2 < 0) & (sin2 >= -SINGULAR_SINE**2), 0.0, sin2)
+def _assembles(sin2):
+    """Where sin² of the construction angle admits a position: ``sin² ≥ −SINGULAR_SINE²``.
+
+    A negative sin² of rounding size is an exactly stretched or folded dyad
+    (a dead centre), not a failed assembly; :func:`_root` takes it as 0.
+    """
+    return sin2 >= -SINGULAR_SINE**2
+
+
+def _root(sin2, assembled):
+    """√sin² where *assembled* (rounding-level negatives as 0), NaN elsewhere."""
+    return np.sqrt(np.where(assembled, np.maximum(sin2, 0.0), np.nan))
 
 
 def _nan_where(mask, *arrays):
+    """The arrays with NaN where *mask* holds (the arrays themselves where it holds nowhere)."""
+    if not mask.any():
+        return arrays
     return tuple(np.where(mask, np.nan, x) for x in arrays)
 
 
@@ -143,14 +160,69 @@ def _wrap(phi):
     return np.pi - np.remainder(np.pi - phi, 2 * np.pi)
 
 
-def _diagnose(assembled, c1, c2, positions_need_matrix=False):
+def _angle(turn):
+    """The angle φ in (−π, π] of the unit vector ``turn = e^{iφ}``.
+
+    ``np.angle`` already lies in [−π, π] and is the one transcendental call
+    a link's angle needs (``_wrap`` of a difference of angles costs twice
+    as much, ``np.remainder`` being slow); only an exact −π (Im = −0) is
+    moved to π.
+    """
+    phi = np.angle(turn)
+    if is_number(phi):
+        return np.pi if phi == -np.pi else phi
+    np.putmask(phi, phi == -np.pi, np.pi)
+    return phi
+
+
+def _unit(z: complex) -> complex:
+    """z/|z| for a constant of the scene (the own direction of a link's pin-to-pin line)."""
+    return z / abs(z)
+
+
+def _link_turn(r, own):
+    """(e^{iφ}, |r|) of a link whose own vector *own* lies along the global vector *r*.
+
+    ``e^{iφ} = (r/|r|) · conj(own/|own|)``: the angle φ = arg r − arg own
+    without forming either angle, and |r| for the diagnosis, which needs it
+    too.
+    """
+    length = np.abs(r)
+    turn = r * (1.0 / length)  # a complex array divided by a real one costs twice this
+    own = _unit(own)
+    if own != 1:
+        turn = turn * own.conjugate()
+    return turn, length
+
+
+def _turned(guide: BodyState, delta: float):
+    """(φ, e^{iφ}) of a body turning with *guide*: φ = φ_g + δ in (−π, π]."""
+    turn = guide.direction(delta)
+    if is_number(guide.phi):
+        return _wrap(guide.phi + delta), turn
+    return _angle(turn), turn
+
+
+def _diagnose(assembled, c1, c2, det, norms=None, positions_need_matrix=False):
     """(assembled, singular, sine, condition) from the two columns of the 2×2 matrix.
+
+    ``det`` is ``cross(c1, c2)`` and ``norms``, if known, ``|c1|·|c2|``
+    (each dyad has them already: computing them again cost a fifth of
+    the dyad).  The sine and the condition number are those of
+    :func:`~plans.analytic.kinematics.construction_sine` and
+    :func:`~plans.analytic.kinematics.condition_number`::
+
+        sin γ = |c1 × c2| / (|c1| |c2|),   cond = (1 + |c1 · c2| / (|c1| |c2|)) / sin γ
 
     With ``positions_need_matrix`` (PRP, RPP: the position is solved with the
     same matrix) a singular position is not assembled either.
     """
-    sine = construction_sine(c1, c2)
-    condition = condition_number(c1, c2)
+    if norms is None:
+        norms = np.abs(c1) * np.abs(c2)
+    sine = np.abs(det) / norms
+    cos = np.abs(dot(c1, c2)) / norms
+    # (1 + |cos|)/|sin| == sqrt((1 + |cos|)/(1 − |cos|)) without cancellation near 1
+    condition = (1.0 + cos) / sine
     singular = assembled & ~(sine >= SINGULAR_SINE)
     if positions_need_matrix:
         assembled = assembled & ~singular
@@ -208,27 +280,31 @@ def solve_rrr(B: PointState, D: PointState, i_B: complex, i_C: complex, j_D: com
     l_j = abs(j_C - j_D)
     BD = D.r - B.r
     d = np.abs(BD)
+    d2 = d * d
     # sin² of the angle BCD between the links, in the factored (Heron) form
-    sin2 = _clamped(((l_i + l_j) ** 2 - d**2) * (d**2 - (l_i - l_j) ** 2) / (4 * l_i**2 * l_j**2))
-    assembled = (sin2 >= 0) & (d > 0)
-    x = (l_i**2 - l_j**2 + d**2) / (2 * d)
-    h = np.sqrt(np.where(assembled, sin2, np.nan)) * l_i * l_j / d
+    sin2 = ((l_i + l_j) ** 2 - d2) * (d2 - (l_i - l_j) ** 2) / (4 * l_i**2 * l_j**2)
+    assembled = _assembles(sin2) & (d > 0)
+    x = (l_i**2 - l_j**2 + d2) / (2 * d)
+    h = _root(sin2, assembled) * l_i * l_j / d
     C = B.r + (x + 1j * sign * h) * BD / d
     r_BC = C - B.r
     r_DC = C - D.r
-    phi_i = _wrap(np.angle(r_BC) - cmath.phase(i_C - i_B))
-    phi_j = _wrap(np.angle(r_DC) - cmath.phase(j_C - j_D))
+    # e^{iφ} = (C − B)/|C − B| · conj of the link's own unit vector BC; φ = its angle
+    turn_i, BC = _link_turn(r_BC, i_C - i_B)
+    turn_j, DC = _link_turn(r_DC, j_C - j_D)
+    phi_i, phi_j = _angle(turn_i), _angle(turn_j)
 
     c1, c2 = 1j * r_BC, -1j * r_DC
-    omega_i, omega_j = solve_real_2x2(c1, c2, D.v - B.v)
+    det = cross(c1, c2)
+    omega_i, omega_j = solve_real_2x2(c1, c2, D.v - B.v, det)
     rhs = D.a - B.a + omega_i**2 * r_BC - omega_j**2 * r_DC
-    epsilon_i, epsilon_j = solve_real_2x2(c1, c2, rhs)
+    epsilon_i, epsilon_j = solve_real_2x2(c1, c2, rhs, det)
 
-    assembled, singular, sine, condition = _diagnose(assembled, c1, c2)
-    measures = {"distance": d, "sum": np.full_like(d, l_i + l_j), "difference": np.full_like(d, abs(l_i - l_j))}
+    assembled, singular, sine, condition = _diagnose(assembled, c1, c2, det, BC * DC)  # |c1| = BC, |c2| = DC
+    measures = {"distance": d, "sum": l_i + l_j, "difference": abs(l_i - l_j)}
     omega_i, omega_j, epsilon_i, epsilon_j = _nan_where(singular, omega_i, omega_j, epsilon_i, epsilon_j)
-    i = BodyState.from_point(phi_i, omega_i, epsilon_i, B, i_B)
-    j = BodyState.from_point(phi_j, omega_j, epsilon_j, D, j_D)
+    i = BodyState.from_point(phi_i, omega_i, epsilon_i, B, i_B, turn_i)
+    j = BodyState.from_point(phi_j, omega_j, epsilon_j, D, j_D, turn_j)
     return DyadSolution(i, j, assembled, singular, sine, condition, measures)
 
 
@@ -304,31 +380,34 @@ def solve_rrp(
     P0 = guide.position(p0)
     u = guide.direction(alpha)
     p = B.r - P0
-    x = dot(u, p)
-    y = np.abs(cross(u, p))
-    sin2 = _clamped((l_i - y) * (l_i + y) / l_i**2)
-    assembled = sin2 >= 0
-    t = x + sign * l_i * np.sqrt(np.where(assembled, sin2, np.nan))
+    q = np.conj(u) * p  # x + iy: p in the track's own axes (one product for the dot and the cross)
+    x = q.real
+    y = np.abs(q.imag)
+    sin2 = (l_i - y) * (l_i + y) / l_i**2
+    assembled = _assembles(sin2)
+    t = x + sign * l_i * _root(sin2, assembled)
     C = P0 + t * u
     r_BC = C - B.r
-    phi_i = _wrap(np.angle(r_BC) - cmath.phase(i_C - i_B))
-    phi_j = _wrap(guide.phi + delta)
+    turn_i, BC = _link_turn(r_BC, i_C - i_B)
+    phi_i = _angle(turn_i)
+    phi_j, turn_j = _turned(guide, delta)
 
     C_g = guide.point_at(C)
     c1, c2 = 1j * r_BC, -u
-    omega_i, t_dot = solve_real_2x2(c1, c2, C_g.v - B.v)
+    det = cross(c1, c2)
+    omega_i, t_dot = solve_real_2x2(c1, c2, C_g.v - B.v, det)
     v_rel = t_dot * u
     rhs = C_g.a + coriolis_acceleration(guide.omega, v_rel) - B.a + omega_i**2 * r_BC
-    epsilon_i, t_ddot = solve_real_2x2(c1, c2, rhs)
+    epsilon_i, t_ddot = solve_real_2x2(c1, c2, rhs, det)
 
-    assembled, singular, sine, condition = _diagnose(assembled, c1, c2)
-    measures = {"distance": y, "length": np.full_like(y, l_i)}
+    assembled, singular, sine, condition = _diagnose(assembled, c1, c2, det, BC * np.abs(u))  # |c1| = BC, |c2| = |u|
+    measures = {"distance": y, "length": l_i}
     omega_i, epsilon_i, t_dot, t_ddot = _nan_where(singular, omega_i, epsilon_i, t_dot, t_ddot)
     v_rel, a_rel = t_dot * u, t_ddot * u
     C_state = PointState(C, sliding_velocity(C_g.v, v_rel), sliding_acceleration(C_g.a, guide.omega, v_rel, a_rel))
-    i = BodyState.from_point(phi_i, omega_i, epsilon_i, B, i_B)
-    j = BodyState.from_point(phi_j, guide.omega, guide.epsilon, C_state, j_C)
-    return DyadSolution(i, j, assembled, singular, sine, condition, measures)
+    i = BodyState.from_point(phi_i, omega_i, epsilon_i, B, i_B, turn_i)
+    j = BodyState.from_point(phi_j, guide.omega, guide.epsilon, C_state, j_C, turn_j)
+    return DyadSolution(i, j, assembled, singular, sine, condition, measures, C_state)
 
 
 @_quiet
@@ -403,24 +482,30 @@ def solve_rpr(
     k = (m_i - m_j).imag
     BE = E.r - B.r
     d = np.abs(BE)
-    sin2 = _clamped((d - abs(k)) * (d + abs(k)) / d**2)
-    assembled = (sin2 >= 0) & (d > 0)
-    c = d * np.sqrt(np.where(assembled, sin2, np.nan))
+    sin2 = (d - abs(k)) * (d + abs(k)) / d**2
+    assembled = _assembles(sin2) & (d > 0)
+    c = d * _root(sin2, assembled)
     u = (sign * c - 1j * k) * BE / d**2
-    theta = np.angle(u)
-    phi_i = _wrap(theta - i_line.angle)
-    phi_j = _wrap(theta - j_line.angle)
+    # the links' own x axes: e^{iφ} = u e^{−iα} (α the line's own angle); one angle if the α are equal
+    turn_i = u if i_line.angle == 0 else u * cmath.exp(-1j * i_line.angle)
+    phi_i = _angle(turn_i)
+    if j_line.angle == i_line.angle:
+        turn_j, phi_j = turn_i, phi_i
+    else:
+        turn_j = u * cmath.exp(-1j * j_line.angle)
+        phi_j = _angle(turn_j)
 
     c1, c2 = 1j * BE, u
-    omega, s_dot = solve_real_2x2(c1, c2, E.v - B.v)
+    det = cross(c1, c2)
+    omega, s_dot = solve_real_2x2(c1, c2, E.v - B.v, det)
     rhs = E.a - B.a + omega**2 * BE - coriolis_acceleration(omega, s_dot * u)
-    epsilon, _s_ddot = solve_real_2x2(c1, c2, rhs)
+    epsilon, _s_ddot = solve_real_2x2(c1, c2, rhs, det)
 
-    assembled, singular, sine, condition = _diagnose(assembled, c1, c2)
-    measures = {"distance": d, "offset": np.full_like(d, abs(k))}
+    assembled, singular, sine, condition = _diagnose(assembled, c1, c2, det, d * np.abs(u))  # |c1| = |BE| = d
+    measures = {"distance": d, "offset": abs(k)}
     omega, epsilon = _nan_where(singular, omega, epsilon)
-    i = BodyState.from_point(phi_i, omega, epsilon, B, i_B)
-    j = BodyState.from_point(phi_j, omega, epsilon, E, j_E)
+    i = BodyState.from_point(phi_i, omega, epsilon, B, i_B, turn_i)
+    j = BodyState.from_point(phi_j, omega, epsilon, E, j_E, turn_j)
     return DyadSolution(i, j, assembled, singular, sine, condition, measures)
 
 
@@ -488,27 +573,30 @@ def solve_prp(
     P_i, u_i = guide_i.position(p_i), guide_i.direction(alpha_i)
     P_j, u_j = guide_j.position(p_j), guide_j.direction(alpha_j)
     c1, c2 = u_i, -u_j
-    t_i, _t_j = solve_real_2x2(c1, c2, P_j - P_i)
+    det = cross(c1, c2)
+    t_i, _t_j = solve_real_2x2(c1, c2, P_j - P_i, det)
     known = np.isfinite(c1) & np.isfinite(c2) & np.isfinite(P_j - P_i)
-    assembled, singular, sine, condition = _diagnose(known, c1, c2, positions_need_matrix=True)
+    assembled, singular, sine, condition = _diagnose(known, c1, c2, det, positions_need_matrix=True)
     measures = {}
     (t_i,) = _nan_where(~assembled, t_i)
     C = P_i + t_i * u_i
 
     C_gi, C_gj = guide_i.point_at(C), guide_j.point_at(C)
-    ti_dot, tj_dot = solve_real_2x2(c1, c2, C_gj.v - C_gi.v)
+    ti_dot, tj_dot = solve_real_2x2(c1, c2, C_gj.v - C_gi.v, det)
     rhs = (
         C_gj.a
         + coriolis_acceleration(guide_j.omega, tj_dot * u_j)
         - C_gi.a
         - coriolis_acceleration(guide_i.omega, ti_dot * u_i)
     )
-    ti_ddot, _tj_ddot = solve_real_2x2(c1, c2, rhs)
+    ti_ddot, _tj_ddot = solve_real_2x2(c1, c2, rhs, det)
     v_rel, a_rel = ti_dot * u_i, ti_ddot * u_i
     C_state = PointState(C, sliding_velocity(C_gi.v, v_rel), sliding_acceleration(C_gi.a, guide_i.omega, v_rel, a_rel))
-    i = BodyState.from_point(_wrap(guide_i.phi + delta_i), guide_i.omega, guide_i.epsilon, C_state, i_C)
-    j = BodyState.from_point(_wrap(guide_j.phi + delta_j), guide_j.omega, guide_j.epsilon, C_state, j_C)
-    return DyadSolution(i, j, assembled, singular, sine, condition, measures)
+    phi_i, turn_i = _turned(guide_i, delta_i)
+    phi_j, turn_j = _turned(guide_j, delta_j)
+    i = BodyState.from_point(phi_i, guide_i.omega, guide_i.epsilon, C_state, i_C, turn_i)
+    j = BodyState.from_point(phi_j, guide_j.omega, guide_j.epsilon, C_state, j_C, turn_j)
+    return DyadSolution(i, j, assembled, singular, sine, condition, measures, C_state)
 
 
 @_quiet
@@ -581,22 +669,23 @@ def solve_rpp(
     u_g = guide.direction(alpha_g)
     u_n = guide.direction(alpha_n + delta_o)
     c1, c2 = u_g, u_n
-    t_o, t_n = solve_real_2x2(c1, c2, B.r - P0)
+    det = cross(c1, c2)
+    t_o, t_n = solve_real_2x2(c1, c2, B.r - P0, det)
     known = np.isfinite(c1) & np.isfinite(c2) & np.isfinite(B.r - P0)
-    assembled, singular, sine, condition = _diagnose(known, c1, c2, positions_need_matrix=True)
+    assembled, singular, sine, condition = _diagnose(known, c1, c2, det, positions_need_matrix=True)
     measures = {}
     t_o, t_n = _nan_where(~assembled, t_o, t_n)
 
     B_g = guide.point_at(B.r)
-    to_dot, tn_dot = solve_real_2x2(c1, c2, B.v - B_g.v)
+    to_dot, tn_dot = solve_real_2x2(c1, c2, B.v - B_g.v, det)
     v_rel_o, v_rel_n = to_dot * u_g, tn_dot * u_n
     rhs = B.a - B_g.a - coriolis_acceleration(guide.omega, v_rel_o + v_rel_n)
-    to_ddot, tn_ddot = solve_real_2x2(c1, c2, rhs)
+    to_ddot, tn_ddot = solve_real_2x2(c1, c2, rhs, det)
     a_rel_n = tn_ddot * u_n
 
-    phi_j = _wrap(guide.phi + delta_o)
-    phi_i = _wrap(phi_j + delta_n)
-    i = BodyState.from_point(phi_i, guide.omega, guide.epsilon, B, i_B)
+    phi_j, turn_j = _turned(guide, delta_o)
+    phi_i, turn_i = _turned(guide, delta_o + delta_n)
+    i = BodyState.from_point(phi_i, guide.omega, guide.epsilon, B, i_B, turn_i)
     # the point of j under B: B less i's sliding in j (rotating with ω_g)
     B_j = PointState(
         B.r,
@@ -604,5 +693,5 @@ def solve_rpp(
         B.a - coriolis_acceleration(guide.omega, v_rel_n) - a_rel_n,
     )
     B_in_j = p_j + t_n * cmath.exp(1j * alpha_n)  # B in j's own coordinates
-    j = BodyState.from_point(phi_j, guide.omega, guide.epsilon, B_j, B_in_j)
+    j = BodyState.from_point(phi_j, guide.omega, guide.epsilon, B_j, B_in_j, turn_j)
     return DyadSolution(i, j, assembled, singular, sine, condition, measures)
