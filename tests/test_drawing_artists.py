@@ -163,14 +163,6 @@ def test_scene_structure_and_graphical_do_not_import_matplotlib():
     subprocess.run([sys.executable, "-c", code], cwd=ROOT, check=True)
 
 
-def _construct():
-    try:
-        from plans.graphical import construct
-    except ImportError:
-        return None
-    return construct
-
-
 def _bundled():
     from plans.scene import example_names
 
@@ -179,9 +171,7 @@ def _bundled():
 
 @pytest.mark.parametrize("name", _bundled())
 def test_every_bundled_example_draws(name, tmp_path):
-    construct = _construct()
-    if construct is None:
-        pytest.skip("plans.graphical.construct is not available yet")
+    from plans.graphical import construct
     from plans.scene import example_path, load
 
     solution = construct(load(example_path(name)))

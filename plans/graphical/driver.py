@@ -78,19 +78,7 @@ def driver_velocity(ctx: Construction) -> None:
         equations = (f"v_{first} = ω{body_label(link)} × {driver.pivot}{first}  (⊥ {driver.pivot}{first}, |ω{body_label(link)}|·{driver.pivot}{first})",)
         plan.step("driver", equations, known[:1], [], [], plan.label(first))
     else:
-        line = ctx.scene.frame.lines[driver.guide]
-        v = driver.velocity * line.direction / plan.k0
-        ctx.v_motion[link] = Motion(ctx.point(link, driver.point), v, 0j)
-        for name in _linear_points(ctx):
-            plan.place(plan.label(name), v, name)
-        plan.step(
-            "driver",
-            (f"v_{driver.point} = v (∥ {FRAME}.{driver.guide})",),
-            [plan.absolute(driver.point)],
-            [],
-            [],
-            plan.label(driver.point),
-        )
+        ctx.v_motion[link] = _translation(ctx, plan, driver.velocity, "v")
 
 
 def driver_acceleration(ctx: Construction) -> None:
@@ -132,16 +120,26 @@ def driver_acceleration(ctx: Construction) -> None:
             plan.place(plan.label(name), figure * (ctx.point(link, name) - o), name)
         plan.step("driver", equations, known, [], [], plan.label(first))
     else:
-        line = ctx.scene.frame.lines[driver.guide]
-        a = driver.acceleration * line.direction / plan.k0
-        ctx.a_motion[link] = Motion(ctx.point(link, driver.point), a, 0j)
-        for name in _linear_points(ctx):
-            plan.place(plan.label(name), a, name)
-        plan.step(
-            "driver",
-            (f"a_{driver.point} = a (∥ {FRAME}.{driver.guide})",),
-            [plan.absolute(driver.point)],
-            [],
-            [],
-            plan.label(driver.point),
-        )
+        ctx.a_motion[link] = _translation(ctx, plan, driver.acceleration, "a")
+
+
+def _translation(ctx: Construction, plan, value: float, symbol: str) -> Motion:
+    """A translating driver's step: every point's image at value·u from the pole, u along its guide.
+
+    *value* is the driver's velocity [m/s] or acceleration [m/s²] along the
+    guide; *symbol* is ``"v"`` or ``"a"``.  Returns the link's motion on this plan.
+    """
+    driver = ctx.scene.driver
+    line = ctx.scene.frame.lines[driver.guide]
+    image = value * line.direction / plan.k0
+    for name in _linear_points(ctx):
+        plan.place(plan.label(name), image, name)
+    plan.step(
+        "driver",
+        (f"{symbol}_{driver.point} = {symbol} (∥ {FRAME}.{driver.guide})",),
+        [plan.absolute(driver.point)],
+        [],
+        [],
+        plan.label(driver.point),
+    )
+    return Motion(ctx.point(driver.link, driver.point), image, 0j)
