@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Comparison", "compare", "ZERO_FRACTION"]
+__all__ = ["Comparison", "compare", "ZERO_FRACTION", "QUANTITIES", "PLAN_QUANTITIES"]
 
 #: below this fraction of the largest value of its kind, a value counts as zero
 ZERO_FRACTION = 1e-9
@@ -49,24 +49,37 @@ class Comparison:
 
 
 #: quantities measured against one another when a value is near zero
-_KIND = {"v": "v", "v_rel": "v", "a": "a", "a_rel": "a", "coriolis": "a", "omega": "omega", "epsilon": "epsilon"}
+_KIND = {
+    "r": "r", "s": "r",
+    "v": "v", "v_rel": "v",
+    "a": "a", "a_rel": "a", "coriolis": "a",
+    "omega": "omega", "epsilon": "epsilon",
+}  # fmt: skip
 
-#: what is compared, per section: (quantity, needs accelerations)
+#: what is compared, per section: (quantity, needs accelerations).  r and s
+#: come from the compass construction of the mechanism, the rest from the plans.
 QUANTITIES = {
-    "points": (("v", False), ("a", True)),
+    "points": (("r", False), ("v", False), ("a", True)),
     "links": (("omega", False), ("epsilon", True)),
-    "sliders": (("v_rel", False), ("a_rel", True), ("coriolis", True)),
+    "sliders": (("s", False), ("v_rel", False), ("a_rel", True), ("coriolis", True)),
 }
+
+#: the quantities read off the velocity and acceleration plans (not the mechanism drawing)
+PLAN_QUANTITIES = ("v", "a", "omega", "epsilon", "v_rel", "a_rel", "coriolis")
 
 
 def _analytic_value(analytic, section: str, name: str, quantity: str, k: int):
     record = getattr(analytic, section)[name]
     value = getattr(record, quantity)[k]
-    return complex(value) if quantity in ("v", "a", "coriolis") else float(value)
+    return complex(value) if quantity in ("r", "v", "a", "coriolis") else float(value)
 
 
 def compare(analytic, graphical, position: int = 0) -> list[Comparison]:
-    """Compare every quantity the graphical solution read off its plans.
+    """Compare every quantity the graphical solution constructed or read off its plans.
+
+    Positions of points (r) and slider travels (s) come from the compass
+    construction of the mechanism; velocities, accelerations, ω, ε and the
+    sliders' relative motion from the plans.
 
     Parameters
     ----------
@@ -85,6 +98,8 @@ def compare(analytic, graphical, position: int = 0) -> list[Comparison]:
     pairs: list[tuple[str, str, str, object, object]] = []
     for section, quantities in QUANTITIES.items():
         readings = getattr(graphical, section)
+        if section == "points":  # the constructed positions beside the plan readings
+            readings = {name: {"r": graphical.positions[name], **reading} for name, reading in readings.items()}
         names = [p for p in graphical.scene.report if p in readings] if section == "points" else list(readings)
         for name in names:
             for quantity, needs_a in quantities:

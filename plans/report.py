@@ -13,7 +13,7 @@ import io
 import json
 import math
 
-from .compare import Comparison
+from .compare import PLAN_QUANTITIES, Comparison
 from .errors import PlansError
 from .limits import expected_rel_error
 from .scene import Crank, Scene
@@ -168,8 +168,8 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
         if acc:
             entry["analytic"]["a"] = _vec(motion.a[k])
         if graphical is not None:
-            g = {"r": _vec(graphical.positions[name])}
-            for q in ("v", "a") if acc else ("v",):
+            g = {}
+            for q in ("r", "v", "a") if acc else ("r", "v"):
                 if (row := rows.get(("points", name, q))) is not None:
                     g[q] = _vec(row.graphical)
                     g[f"{q}_abs_error"] = _clean(row.abs_error)
@@ -199,7 +199,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
             entry["analytic"]["coriolis"] = _vec(motion.coriolis[k])
         if graphical is not None and name in graphical.sliders:
             g = {}
-            for q in ("v_rel", "a_rel", "coriolis") if acc else ("v_rel",):
+            for q in ("s", "v_rel", "a_rel", "coriolis") if acc else ("s", "v_rel"):
                 if (row := rows.get(("sliders", name, q))) is not None:
                     g[q] = _vec(row.graphical) if q == "coriolis" else _clean(row.graphical)
                     g[f"{q}_abs_error"] = _clean(row.abs_error)
@@ -315,12 +315,13 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
             w("\n")
             vr = rows.get(("sliders", name, "v_rel"))
             if vr is not None:
-                w(f"  graphical  v_rel = {vr.graphical:.6g}")
+                sr = rows.get(("sliders", name, "s"))
+                w(f"  graphical  s = {sr.graphical:.6g}, v_rel = {vr.graphical:.6g}")
                 ar, co = rows.get(("sliders", name, "a_rel")), rows.get(("sliders", name, "coriolis"))
                 if ar is not None:
                     c = complex(*_vec(complex(co.graphical)))
                     w(f", a_rel = {ar.graphical:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|")
-                worst = max((r for r in (vr, ar, co) if r is not None), key=lambda r: r.rel_error)
+                worst = max((r for r in (sr, vr, ar, co) if r is not None), key=lambda r: r.rel_error)
                 w(f"   (largest rel err {worst.rel_error:.1e})\n")
     w("\nGroups   condition number of the analytic 2×2 system; |sin| between the construction lines; "
       "expected relative error of v, a (4·ε_mach·condition²)\n")
@@ -423,6 +424,8 @@ def sheet_table(comparisons: list[Comparison]) -> list[list[str]]:
     """
     rows = [["quantity", "graphical", "analytic", "rel. error"]]
     for row in comparisons:
+        if row.quantity not in PLAN_QUANTITIES:  # a sheet tabulates what is read off its plans
+            continue
         where = {"points": "", "links": "link ", "sliders": "slider "}[row.section]
         label = f"{_SYMBOL[row.quantity]} {where}{row.name} [{_UNITS[row.quantity]}]"
         rows.append([label, _magnitude(row.graphical), _magnitude(row.analytic), f"{row.rel_error:.1e}"])
