@@ -421,10 +421,15 @@ def sheet_table(comparisons: list[Comparison]) -> list[list[str]]:
 
     Vectors are written as magnitude ∠ direction; signed scalars keep their
     sign (counter-clockwise positive for ω, ε; along the guide for v_rel, a_rel).
+    Quantities that both methods give as exactly zero (the Coriolis term of a
+    guide that does not turn, ω of a link that only translates, a point at
+    rest) are left out, as they are left off the plans.
     """
     rows = [["quantity", "graphical", "analytic", "rel. error"]]
     for row in comparisons:
         if row.quantity not in PLAN_QUANTITIES:  # a sheet tabulates what is read off its plans
+            continue
+        if row.analytic == 0 and row.graphical == 0:
             continue
         where = {"points": "", "links": "link ", "sliders": "slider "}[row.section]
         label = f"{_SYMBOL[row.quantity]} {where}{row.name} [{_UNITS[row.quantity]}]"
