@@ -97,6 +97,18 @@ def draw_acceleration_plan(plan, ax=None, *, lang: str = "en") -> list:
     return draw_plan(plan, ax, lang=lang)
 
 
+_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def image_text(name: str) -> str:
+    """An image's label as the textbook prints it: the link number of a coincident point as a subscript.
+
+    ``"e5"`` → ``"e₅"``, ``"a4′"`` → ``"a₄′"``; names without digits are unchanged.
+    """
+    letters = name.rstrip("0123456789′")
+    return letters + name[len(letters):].translate(_SUBSCRIPT)
+
+
 def legend_row(sketch, kind: str, words: str, x: float, y: float, *, text_gid: str) -> None:
     """One legend entry at (x, y) [mm]: a 9 mm sample of the *kind*'s line or arrow, then its words."""
     a, c = complex(x, y), complex(x + 9.0, y)
@@ -168,7 +180,10 @@ def _draw(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: 
             for end, other in ((v.tail, v.tip), (v.tip, v.tail)):
                 if abs(end - at) <= SAME_MM:
                     away -= unit(other - end)
-        pieces = [(n, "pole-label" if (k == 0 and at == 0j and n == plan.pole) else f"image-{n}") for k, n in enumerate(names)]
+        pieces = [
+            (image_text(n), "pole-label" if (k == 0 and at == 0j and n == plan.pole) else f"image-{n}")
+            for k, n in enumerate(names)
+        ]
         place_label(sketch, at, pieces, size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None)
 
     if caption:
