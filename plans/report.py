@@ -13,7 +13,7 @@ import io
 import json
 import math
 
-from .compare import PLAN_QUANTITIES, Comparison
+from .compare import PLAN_QUANTITIES, QUANTITIES, Comparison
 from .errors import PlansError
 from .limits import expected_rel_error
 from .scene import Crank, Scene
@@ -131,6 +131,20 @@ def _graphical_lookup(comparisons: list[Comparison] | None):
     return table
 
 
+def _graphical_entry(rows: dict, section: str, name: str, accelerations: bool) -> dict:
+    """The ``"graphical"`` entry of one point, link or slider: each compared value with its errors."""
+    entry: dict = {}
+    for quantity, needs_accelerations in QUANTITIES[section]:
+        row = rows.get((section, name, quantity))
+        if row is None or (needs_accelerations and not accelerations):
+            continue
+        value = row.graphical
+        entry[quantity] = _vec(value) if isinstance(value, complex) else _clean(value)
+        entry[f"{quantity}_abs_error"] = _clean(row.abs_error)
+        entry[f"{quantity}_rel_error"] = _clean(row.rel_error)
+    return entry
+
+
 def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None = None, position: int = 0) -> dict:
     """The documented JSON document of one position.
 
@@ -168,13 +182,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
         if acc:
             entry["analytic"]["a"] = _vec(motion.a[k])
         if graphical is not None:
-            g = {}
-            for q in ("r", "v", "a") if acc else ("r", "v"):
-                if (row := rows.get(("points", name, q))) is not None:
-                    g[q] = _vec(row.graphical)
-                    g[f"{q}_abs_error"] = _clean(row.abs_error)
-                    g[f"{q}_rel_error"] = _clean(row.rel_error)
-            entry["graphical"] = g
+            entry["graphical"] = _graphical_entry(rows, "points", name, acc)
         doc["points"][name] = entry
     for name in scene.links:
         motion = analytic.links[name]
@@ -182,13 +190,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
         if acc:
             entry["analytic"]["epsilon"] = _clean(motion.epsilon[k])
         if graphical is not None and name in graphical.links:
-            g = {}
-            for q in ("omega", "epsilon") if acc else ("omega",):
-                if (row := rows.get(("links", name, q))) is not None:
-                    g[q] = _clean(row.graphical)
-                    g[f"{q}_abs_error"] = _clean(row.abs_error)
-                    g[f"{q}_rel_error"] = _clean(row.rel_error)
-            entry["graphical"] = g
+            entry["graphical"] = _graphical_entry(rows, "links", name, acc)
         doc["links"][name] = entry
     for prismatic in scene.prismatics:
         name = prismatic.name
@@ -198,13 +200,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
             entry["analytic"]["a_rel"] = _clean(motion.a_rel[k])
             entry["analytic"]["coriolis"] = _vec(motion.coriolis[k])
         if graphical is not None and name in graphical.sliders:
-            g = {}
-            for q in ("s", "v_rel", "a_rel", "coriolis") if acc else ("s", "v_rel"):
-                if (row := rows.get(("sliders", name, q))) is not None:
-                    g[q] = _vec(row.graphical) if q == "coriolis" else _clean(row.graphical)
-                    g[f"{q}_abs_error"] = _clean(row.abs_error)
-                    g[f"{q}_rel_error"] = _clean(row.rel_error)
-            entry["graphical"] = g
+            entry["graphical"] = _graphical_entry(rows, "sliders", name, acc)
         doc["sliders"][name] = entry
     for group in analytic.structure.groups:
         condition = _condition(analytic.conditions[group.name][k])
