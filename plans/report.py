@@ -242,6 +242,16 @@ def _vector_cells(z: complex) -> list[str]:
     return [f"{z.real:13.6g}", f"{z.imag:13.6g}", f"{magnitude:13.6g}", direction]
 
 
+def _slider_words(travel: float, v_rel: float, accelerations: tuple | None) -> str:
+    """``s = …, v_rel = …[, a_rel = …, Coriolis = (x, y) |magnitude|]`` of one slider."""
+    words = f"s = {travel:.6g}, v_rel = {v_rel:.6g}"
+    if accelerations is not None:
+        a_rel, coriolis = accelerations
+        c = complex(*_vec(complex(coriolis)))
+        words += f", a_rel = {a_rel:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|"
+    return words
+
+
 def _error_cells(row: Comparison | None) -> list[str]:
     if row is None:
         return []
@@ -304,21 +314,15 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
             motion = analytic.sliders[name]
             what = f"{prismatic.slider}.{prismatic.slider_line} on {prismatic.guide}.{prismatic.guide_line}"
             w(f"{name} ({what})\n")
-            w(f"  analytic   s = {motion.s[k]:.6g}, v_rel = {motion.v_rel[k]:.6g}")
-            if acc:
-                c = complex(*_vec(complex(motion.coriolis[k])))
-                w(f", a_rel = {motion.a_rel[k]:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|")
-            w("\n")
+            accelerations = (motion.a_rel[k], motion.coriolis[k]) if acc else None
+            w(f"  analytic   {_slider_words(motion.s[k], motion.v_rel[k], accelerations)}\n")
             vr = rows.get(("sliders", name, "v_rel"))
             if vr is not None:
-                sr = rows.get(("sliders", name, "s"))
-                w(f"  graphical  s = {sr.graphical:.6g}, v_rel = {vr.graphical:.6g}")
-                ar, co = rows.get(("sliders", name, "a_rel")), rows.get(("sliders", name, "coriolis"))
-                if ar is not None:
-                    c = complex(*_vec(complex(co.graphical)))
-                    w(f", a_rel = {ar.graphical:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|")
+                sr, ar, co = (rows.get(("sliders", name, q)) for q in ("s", "a_rel", "coriolis"))
+                accelerations = (ar.graphical, co.graphical) if ar is not None else None
                 worst = max((r for r in (sr, vr, ar, co) if r is not None), key=lambda r: r.rel_error)
-                w(f"   (largest rel err {worst.rel_error:.1e})\n")
+                w(f"  graphical  {_slider_words(sr.graphical, vr.graphical, accelerations)}"
+                  f"   (largest rel err {worst.rel_error:.1e})\n")
     w("\nGroups   condition number of the analytic 2×2 system; |sin| between the construction lines; "
       "expected relative error of v, a (4·ε_mach·condition²)\n")
     for group in analytic.structure.groups:
