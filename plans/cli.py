@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from dataclasses import replace
 from pathlib import Path
 
 from .errors import PlansError, SceneError
@@ -185,11 +184,9 @@ def _position_spec(args):
 
 
 def _at(scene: Scene, text: str) -> Scene:
-    driver = scene.driver
+    kind = "angle" if isinstance(scene.driver, Crank) else "length"
     try:
-        if isinstance(driver, Crank):
-            return replace(scene, driver=replace(driver, phi=parse_quantity(_number(text), "angle")))
-        return replace(scene, driver=replace(driver, s=parse_quantity(_number(text), "length")))
+        return scene.at(parse_quantity(_number(text), kind))
     except UnitError as exc:
         raise SceneError(str(exc), scene.source, "--at") from None
 

@@ -50,7 +50,6 @@ __all__ = [
     "cycle_positions",
     "fit_scale",
     "common_scales",
-    "scene_at",
     "PositionRun",
     "PositionsRun",
     "run_positions",
@@ -252,14 +251,6 @@ def common_scales(graphicals, *, drawn_max: dict[str, float] | float = 120.0, gi
 
 
 # --- runs -------------------------------------------------------------------------------
-
-
-def scene_at(scene: Scene, position: float) -> Scene:
-    """The scene with its driver moved to *position* (rad or m)."""
-    driver = scene.driver
-    if isinstance(driver, Crank):
-        return replace(scene, driver=replace(driver, phi=float(position)))
-    return replace(scene, driver=replace(driver, s=float(position)))
 
 
 @dataclass(frozen=True, eq=False)
@@ -519,7 +510,7 @@ def run_positions(
 
     prepared = []
     for index, value in enumerate(values):
-        here = replace(scene_at(scene, value), assembly=_hints_at(scene, sweep, index))
+        here = replace(scene.at(value), assembly=_hints_at(scene, sweep, index))
         if not bool(sweep.valid[index]):
             try:  # the solver's own message for this position
                 solve(scene, [value], structure)

@@ -28,7 +28,7 @@ import difflib
 import math
 import re
 import tomllib
-from dataclasses import astuple, dataclass, field
+from dataclasses import astuple, dataclass, field, replace
 from importlib import resources
 from pathlib import Path
 
@@ -240,6 +240,13 @@ class Scene:
             for name in body.points:
                 seen.setdefault(name, None)
         return list(seen)
+
+    def at(self, position: float) -> "Scene":
+        """The same scene with its driver moved to *position*: a crank angle [rad] or a linear driver's s [m]."""
+        driver = self.driver
+        if isinstance(driver, Crank):
+            return replace(self, driver=replace(driver, phi=float(position)))
+        return replace(self, driver=replace(driver, s=float(position)))
 
     def home_of(self, point: str) -> str:
         """The body whose motion defines the point: a moving body if any carries it, else the frame."""

@@ -62,7 +62,7 @@ import mpmath
 import numpy as np
 
 from ..errors import PlansError
-from ..scene import Crank, Scene
+from ..scene import Scene
 from ..structure import find_structure
 from .cases import Case, suite
 from .reference import DIGITS, Reference, ReferenceError, reference
@@ -282,10 +282,8 @@ def _worst(errors: list[tuple[float, float, float]]) -> tuple[float, float, floa
 
 def _at(scene: Scene, position: float, ref: Reference) -> Scene:
     """The scene at another driver position, its assembly hints moved to the reference's points."""
-    driver = scene.driver
-    driver = replace(driver, phi=position) if isinstance(driver, Crank) else replace(driver, s=position)
     hints = {name: complex(ref.points[name][0]) for name in scene.assembly}
-    return replace(scene, driver=driver, assembly=hints)
+    return replace(scene.at(position), assembly=hints)
 
 
 def _references(case: Case, structure) -> list[Reference | None]:
