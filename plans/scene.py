@@ -481,7 +481,6 @@ class _SceneReader:
             if names.count(name) > 1:
                 raise self.fail("slider", f"two prismatic joints are both named {name!r}; give one a name = \"...\"")
 
-        self.resolve_lines(bodies)
         self.check_coincident(bodies)
         if "driver" not in data:
             raise self.fail("driver", "missing [driver]: say which link is driven (crank = \"2\" or slider = \"2\")")
@@ -510,15 +509,6 @@ class _SceneReader:
             points[pname] = self.point(value, f"{field}.points.{pname}")
         if name != FRAME and not points:
             raise self.fail(f"{field}.points", "a link needs its points, such as points = { A = [0, 0], B = [0.3, 0] }")
-        seen: dict[complex, str] = {}
-        for pname, z in points.items():
-            if z in seen:
-                raise self.fail(
-                    f"{field}.points.{pname}",
-                    f"points {seen[z]} and {pname} of {_body_words(name)} coincide at ({z.real:g}, {z.imag:g}) m; "
-                    "one point name per location",
-                )
-            seen[z] = pname
         raw_lines = self.table(table.get("lines", {}), f"{field}.lines")
         lines = {}
         for lname, spec in raw_lines.items():
@@ -599,31 +589,27 @@ class _SceneReader:
         return str(max(numbers, default=1) + 1)
 
     def check_coincident(self, bodies: dict[str, Body]) -> None:
-        """Points of one body closer than COINCIDENT × the scene's size are one point to double precision."""
+        """Points of one body at one place, or closer than COINCIDENT × the scene's size (one point to double precision)."""
         zs = [z for body in bodies.values() for z in body.points.values()]
         size = max((abs(a - b) for a in zs for b in zs), default=0.0)
-        if size == 0.0:
-            return
         for body in bodies.values():
             items = list(body.points.items())
             for k, (a_name, a) in enumerate(items):
                 for b_name, b in items[k + 1 :]:
+                    field = "frame" if body.is_frame else f"link.{body.name}"
+                    if a == b:
+                        raise self.fail(
+                            f"{field}.points.{b_name}",
+                            f"points {a_name} and {b_name} of {_body_words(body.name)} coincide at ({a.real:g}, {a.imag:g}) m; "
+                            "one point name per location",
+                        )
                     if abs(a - b) <= COINCIDENT * size:
-                        field = "frame" if body.is_frame else f"link.{body.name}"
                         raise self.fail(
                             f"{field}.points.{b_name}",
                             f"points {a_name} and {b_name} of {_body_words(body.name)} are {abs(a - b):.3g} m apart, "
                             f"less than {COINCIDENT:g} of the scene's size ({size:.3g} m): they coincide to double "
                             "precision; one point name per location, or a link long enough to compute with",
                         )
-
-    def resolve_lines(self, bodies: dict[str, Body]) -> None:
-        # a [[slider]] block's line: nothing to resolve; kept for symmetry of checks
-        for body in bodies.values():
-            for line in body.lines.values():
-                if not math.isfinite(line.angle):
-                    where = "frame" if body.is_frame else f"link.{body.name}"
-                    raise self.fail(f"{where}.lines.{line.name}.angle", "angle is not finite")
 
     def driver(self, table: dict, bodies: dict[str, Body]) -> Crank | LinearDriver:
         if "crank" in table and "slider" in table:
