@@ -48,6 +48,7 @@ __all__ = [
     "load",
     "loads",
     "from_mapping",
+    "body_words",
     "example_names",
     "example_path",
 ]
@@ -529,7 +530,7 @@ class _SceneReader:
                 if pname not in points:
                     raise self.fail(
                         f"{field}.lines.{lname}.through",
-                        f"{_body_words(name)} has no point {pname!r}{_suggest(pname, points)}",
+                        f"{body_words(name)} has no point {pname!r}{_suggest(pname, points)}",
                     )
                 lines[lname] = Line(name, lname, points[pname], angle, pname)
             else:
@@ -546,8 +547,8 @@ class _SceneReader:
             raise self.fail(field, f"there is no link {body!r}{_suggest(body, bodies)}")
         if line not in bodies[body].lines:
             lines = bodies[body].lines
-            known = f"; its lines are: {', '.join(lines)}" if lines else f"; {_body_words(body)} has no lines (add lines = {{ {line} = {{ through = \"P\", angle = 0 }} }})"
-            raise self.fail(field, f"{_body_words(body)} has no line {line!r}{_suggest(line, lines) or known}")
+            known = f"; its lines are: {', '.join(lines)}" if lines else f"; {body_words(body)} has no lines (add lines = {{ {line} = {{ through = \"P\", angle = 0 }} }})"
+            raise self.fail(field, f"{body_words(body)} has no line {line!r}{_suggest(line, lines) or known}")
         return body, line
 
     def slider(self, k: int, table: dict, bodies: dict[str, Body]) -> Prismatic:
@@ -559,7 +560,7 @@ class _SceneReader:
         pin = self.name(table["pin"], f"{field}.pin", "point")
         guide, guide_line = self.line_ref(table["on"], f"{field}.on", bodies)
         if pin in bodies[guide].points:
-            raise self.fail(f"{field}.pin", f"the block is pinned at {pin}, which is a point of its own guide's {_body_words(guide)}: it could not slide")
+            raise self.fail(f"{field}.pin", f"the block is pinned at {pin}, which is a point of its own guide's {body_words(guide)}: it could not slide")
         name = self.name(table.get("name", self.next_link_name(bodies)), f"{field}.name", "link")
         if name in bodies:
             raise self.fail(f"{field}.name", f"there is already a link named {name!r}")
@@ -575,7 +576,7 @@ class _SceneReader:
         slider, slider_line = self.line_ref(table["line"], f"{field}.line", bodies)
         guide, guide_line = self.line_ref(table["on"], f"{field}.on", bodies)
         if slider == guide:
-            raise self.fail(field, f"line and guide are both on {_body_words(slider)}")
+            raise self.fail(field, f"line and guide are both on {body_words(slider)}")
         if slider == FRAME:
             raise self.fail(f"{field}.line", "the frame cannot be the sliding part; swap line and on")
         name = table.get("name", f"{slider}.{slider_line}:{guide}.{guide_line}")
@@ -600,13 +601,13 @@ class _SceneReader:
                     if a == b:
                         raise self.fail(
                             f"{field}.points.{b_name}",
-                            f"points {a_name} and {b_name} of {_body_words(body.name)} coincide at ({a.real:g}, {a.imag:g}) m; "
+                            f"points {a_name} and {b_name} of {body_words(body.name)} coincide at ({a.real:g}, {a.imag:g}) m; "
                             "one point name per location",
                         )
                     if abs(a - b) <= COINCIDENT * size:
                         raise self.fail(
                             f"{field}.points.{b_name}",
-                            f"points {a_name} and {b_name} of {_body_words(body.name)} are {abs(a - b):.3g} m apart, "
+                            f"points {a_name} and {b_name} of {body_words(body.name)} are {abs(a - b):.3g} m apart, "
                             f"less than {COINCIDENT:g} of the scene's size ({size:.3g} m): they coincide to double "
                             "precision; one point name per location, or a link long enough to compute with",
                         )
@@ -749,7 +750,8 @@ def _suggest(name: str, options) -> str:
     return f"; did you mean {close[0]!r}?" if close else ""
 
 
-def _body_words(name: str) -> str:
+def body_words(name: str) -> str:
+    """``"the frame"`` or ``"link 3"``, for messages."""
     return "the frame" if name == FRAME else f"link {name}"
 
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .errors import StructureError
-from .scene import FRAME, Crank, LinearDriver, Prismatic, Scene
+from .scene import FRAME, Crank, LinearDriver, Prismatic, Scene, body_words
 
 __all__ = ["Joint", "Group", "Structure", "find_structure", "mobility"]
 
@@ -284,11 +284,9 @@ def _loose_points(scene: Scene) -> str:
         if len(bodies) == 1 and bodies[0] != FRAME and not scene.bodies[bodies[0]].block:
             close = [n for n in names if n != name and (n.lower() == name.lower() or n in difflib.get_close_matches(name, names, n=3, cutoff=0.8))]
             if close:
-                loose.append(f"{name} of link {bodies[0]} (did you mean {close[0]!r}, of {_words(scene.bodies_with(close[0]))}?)")
+                owners = " and ".join(body_words(b) for b in scene.bodies_with(close[0]))
+                loose.append(f"{name} of link {bodies[0]} (did you mean {close[0]!r}, of {owners}?)")
     if not loose:
         return ""
     return "; a joint is where two bodies name the same point, and only one link has " + ", ".join(loose)
 
-
-def _words(bodies: list[str]) -> str:
-    return " and ".join("the frame" if b == FRAME else f"link {b}" for b in bodies)
