@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+from ._text import subscript
 from .errors import PlansError
 from .i18n import check_language, term
 from .scene import FRAME, Crank, Scene
@@ -76,10 +77,6 @@ def _fmt(x: float) -> str:
     return text.replace("-", "−")
 
 
-def _sub(name: str) -> str:
-    return name.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")) if name.isdigit() else f"_{name}"
-
-
 def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
     """The scene's data as a few lines of text: driver, link lengths, fixed points."""
     unit, factor = _length_unit(scene)
@@ -87,8 +84,8 @@ def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
     link = driver.link
     if isinstance(driver, Crank):
         first = (
-            f"{term('driver', lang)} {link} ({driver.pivot}):  ω{_sub(link)} = {_fmt(driver.omega)} rad/s,  "
-            f"ε{_sub(link)} = {_fmt(driver.epsilon)} rad/s²"
+            f"{term('driver', lang)} {link} ({driver.pivot}):  ω{subscript(link)} = {_fmt(driver.omega)} rad/s,  "
+            f"ε{subscript(link)} = {_fmt(driver.epsilon)} rad/s²"
         )
     else:
         first = (
@@ -128,8 +125,7 @@ def _table(comparisons, lang: str) -> list[list[str]]:
 def _equations(graphical, structure) -> list[str]:
     from .drawing.sheet import sheet_equations
 
-    driver = f"I(0,{structure.driver})"
-    return [driver + line[len("driver"):] if line.startswith("driver:") else line for line in sheet_equations(graphical)]
+    return sheet_equations(graphical, driver_label=f"I(0,{structure.driver})")
 
 
 # --- scales ------------------------------------------------------------------------------
@@ -327,7 +323,7 @@ def handout_pages(
     ``diagram-points``, ``diagram-sliders``.  Arguments as :func:`write_handout`.
     """
     from .drawing.diagrams import draw_cycle_diagrams
-    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, position_page_excess, scale_line
+    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, position_page_excess, scale_line, stamp_page_number
     from .loops import loop_equations
     from .positions import run_positions
 
@@ -379,13 +375,8 @@ def handout_pages(
     # page numbers
     total = len(pages)
     for number, (_, fig) in enumerate(pages, start=1):
-        _number(fig, number, total, lang)
+        stamp_page_number(fig, number, total, lang)
     return pages
-
-
-def _number(fig, number: int, total: int, lang: str) -> None:
-    width, height = fig.get_size_inches() * 25.4
-    fig.text(1 - 11.0 / width, 6.0 / height, f"{term('page', lang)} {number}/{total}", ha="right", va="center", fontsize=7, color="#555555")
 
 
 def _unsolved_page(run, lang: str, where: str, message: str, footer: str):
@@ -399,7 +390,7 @@ def _unsolved_page(run, lang: str, where: str, message: str, footer: str):
 
         for k, line in enumerate(textwrap.wrap(f"{term('not_solved', lang)}: {message}", 110)):
             sketch.text(complex(PAGE_MARGIN, top - 5 - 4.5 * k), line, size=8.5, ha="left", gid="unsolved", obstacle=False)
-        _footer(sketch, A4, footer, None, None, lang)
+        _footer(sketch, footer)
     return fig
 
 
@@ -455,7 +446,8 @@ def write_handout(
         page that says why).
     """
     from .drawing.sheets import render_pdf
-    from .drawing.svg import render_svg, write_atomic
+    from ._files import replace_all
+    from .drawing.svg import render_svg
 
     path = Path(path)
     suffix = path.suffix.lower()
@@ -470,12 +462,12 @@ def write_handout(
     pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components)
     path.parent.mkdir(parents=True, exist_ok=True)
     if suffix == ".pdf":
-        return write_atomic({path: render_pdf([fig for _, fig in pages])})
+        return replace_all({path: render_pdf([fig for _, fig in pages])})
     contents = {}
     for number, (_, fig) in enumerate(pages, start=1):
         target = path if number == 1 else path.with_name(f"{path.stem}-{number}{path.suffix}")
         contents[target] = render_svg(fig)
-    return write_atomic(contents)
+    return replace_all(contents)
 
 
 def _check_solvable(scene: Scene) -> None:

@@ -377,6 +377,22 @@ def _results(b: _Builder, group, stage: int) -> str:
 _UNITS = ("m", "m/s", "m/s^2")
 
 
+def _rigid_lines(b: _Builder, name: str, terms_of) -> list[str]:
+    """z, v (and a) of point *name* as the sum of known terms: ``terms_of(stage)`` gives the terms of a stage."""
+    lines = []
+    m = b.sol.points[name]
+    for stage, letter in enumerate("zva"):
+        if stage == 2 and not b.scene.accelerations:
+            break
+        value = complex((m.r, m.v, m.a)[stage][b.k])
+        terms = terms_of(stage)
+        lines.append(
+            rf"${letter}_{{{_sub(name)}}} = {_side(terms, stage, False)} = {_side(terms, stage, True)}"
+            rf" = {_cplx(value, True)}\ \mathrm{{{_UNITS[stage]}}}$"
+        )
+    return lines
+
+
 def _point_lines(b: _Builder, link: str, joints: dict[str, complex], done: set[str]) -> list[str]:
     """z, v, a of the further points of a link, from a joint of the link by a rigid vector."""
     lines = []
@@ -397,15 +413,7 @@ def _point_lines(b: _Builder, link: str, joints: dict[str, complex], done: set[s
         arm = b.rigid(link, joints[base], local, base, name, unknown=False)
         if arm is None:
             continue
-        m = b.sol.points[name]
-        for stage, letter in enumerate("zva"):
-            if stage == 2 and not b.scene.accelerations:
-                break
-            value = complex((m.r, m.v, m.a)[stage][b.k])
-            lines.append(
-                rf"${letter}_{{{_sub(name)}}} = {_side([start, arm], stage, False)} = {_side([start, arm], stage, True)}"
-                rf" = {_cplx(value, True)}\ \mathrm{{{_UNITS[stage]}}}$"
-            )
+        lines += _rigid_lines(b, name, lambda stage: [start, arm])
         done.add(name)
     return lines
 
@@ -416,33 +424,20 @@ def _driver_block(b: _Builder) -> LoopBlock:
     link = driver.link
     body = scene.bodies[link]
     lines = []
-    done: set[str] = set()
     if isinstance(driver, Crank):
         pivot_local = body.points[driver.pivot]
         pivot = _Point(driver.pivot, complex(scene.frame.points[driver.pivot]), 0j, 0j)
-        done.add(driver.pivot)
         lines.append(
             rf"$\varphi_{{{_sub(link)}}} = {_deg(b.phi(link))},\ \omega_{{{_sub(link)}}} = {_num(b.omega(link))}\ "
             rf"\mathrm{{rad/s}},\ \varepsilon_{{{_sub(link)}}} = {_num(b.epsilon(link))}\ \mathrm{{rad/s^2}}$"
         )
-        joints = {driver.pivot: pivot_local}
         for name, local in body.points.items():
             if name == driver.pivot or (name not in scene.report and len(scene.bodies_with(name)) < 2):
                 continue
             arm = b.rigid(link, pivot_local, local, driver.pivot, name, unknown=False)
             if arm is None:
                 continue
-            m = b.sol.points[name]
-            for stage, letter in enumerate("zva"):
-                if stage == 2 and not scene.accelerations:
-                    break
-                value = complex((m.r, m.v, m.a)[stage][b.k])
-                terms = [pivot, arm] if abs(pivot.r) > 0 or stage == 0 else [arm]
-                lines.append(
-                    rf"${letter}_{{{_sub(name)}}} = {_side(terms, stage, False)} = {_side(terms, stage, True)}"
-                    rf" = {_cplx(value, True)}\ \mathrm{{{_UNITS[stage]}}}$"
-                )
-            done.add(name)
+            lines += _rigid_lines(b, name, lambda stage: [pivot, arm] if abs(pivot.r) > 0 or stage == 0 else [arm])
     else:
         guide = scene.frame.lines[driver.guide]
         lines.append(
@@ -458,9 +453,8 @@ def _driver_block(b: _Builder) -> LoopBlock:
         lines.append(rf"$v_{{{p}}} = \dot{{s}}\,u = {_paren(driver.velocity)}\,{e} = {_cplx(m.v[b.k], True)}\ \mathrm{{m/s}}$")
         if scene.accelerations:
             lines.append(rf"$a_{{{p}}} = \ddot{{s}}\,u = {_paren(driver.acceleration)}\,{e} = {_cplx(m.a[b.k], True)}\ \mathrm{{m/s^2}}$")
-        done.add(driver.point)
         joints = {driver.point: body.points[driver.point]}
-        lines += _point_lines(b, link, joints, done)
+        lines += _point_lines(b, link, joints, {driver.point})
     return LoopBlock(f"I(0,{link})", tuple(lines))
 
 

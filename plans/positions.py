@@ -41,6 +41,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ._text import subscript
 from .errors import AssemblyError, PlansError, SceneError, SingularPositionError
 from .scene import Crank, Scene
 from .units import UnitError, parse_quantity
@@ -172,7 +173,7 @@ def cycle_positions(scene: Scene, count: int, *, closed: bool = False) -> list[f
 def position_text(scene: Scene, position: float, digits: int = 1) -> str:
     """``"φ₂ = 145.0°"`` (angle in [0, 360)) or ``"s = 120.0 mm"``."""
     driver = scene.driver
-    sub = driver.link.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")) if driver.link.isdigit() else f"_{driver.link}"
+    sub = subscript(driver.link)
     if isinstance(driver, Crank):
         degrees = math.degrees(position) % 360.0
         if round(degrees, digits) >= 360.0:

@@ -4,19 +4,17 @@ Three panels, for positions, velocities and accelerations; one marker style
 per method, one colour per case, and the settings of one method on one case
 joined by a thin line (the trade-off that method offers).  The only module of
 the benchmark that imports matplotlib; the SVG is deterministic (no date, a
-fixed hash salt) apart from the measured numbers, and written atomically.
+fixed hash salt) apart from the measured numbers.
 """
 
 from __future__ import annotations
 
 import io
 import math
-from pathlib import Path
 
-from .._files import write_atomic
 from .run import METHODS, BenchResult
 
-__all__ = ["MARKERS", "EPSILON", "ERROR_FLOOR", "render_svg", "write_svg"]
+__all__ = ["MARKERS", "EPSILON", "ERROR_FLOOR", "render_svg"]
 
 #: Marker per method.
 MARKERS = dict(zip(METHODS, ("o", "*", "s", "^", "D")))
@@ -80,8 +78,3 @@ def render_svg(result: BenchResult) -> bytes:
         buffer = io.BytesIO()
         fig.savefig(buffer, format="svg", metadata={"Date": None})
     return buffer.getvalue()
-
-
-def write_svg(result: BenchResult, path: str | Path) -> Path:
-    """Render and write the figure atomically."""
-    return write_atomic(path, render_svg(result))

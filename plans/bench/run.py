@@ -179,6 +179,14 @@ METHODS = ("analytic", "yardstick", "graphical exact", "graphical arcs", "graphi
 # --- timing ------------------------------------------------------------------------------
 
 
+def _calibrate(function) -> int:
+    """How many calls of *function* last about 2 ms (at least one), after one untimed call."""
+    function()
+    start = time.perf_counter()
+    function()
+    return max(1, math.ceil(0.002 / max(time.perf_counter() - start, 1e-7)))
+
+
 def time_call(function, budget: float, repeats: int = 3) -> tuple[float, float]:
     """(median, best) wall time of one call [s], over at least *repeats* timed samples.
 
@@ -187,11 +195,7 @@ def time_call(function, budget: float, repeats: int = 3) -> tuple[float, float]:
     at most 25).  On a shared machine the best is the number that describes
     the code; the median says how much the machine was disturbed.
     """
-    function()
-    start = time.perf_counter()
-    function()
-    once = max(time.perf_counter() - start, 1e-7)
-    loops = max(1, math.ceil(0.002 / once))
+    loops = _calibrate(function)
     samples = []
     spent = 0.0
     while len(samples) < repeats or (spent < budget and len(samples) < 25):
@@ -210,12 +214,7 @@ def time_pair(first, second, budget: float, repeats: int = 5) -> tuple[tuple[flo
     Alternating makes a ratio of the two fair on a machine whose load
     changes during the run.
     """
-    loops = []
-    for function in (first, second):
-        function()
-        start = time.perf_counter()
-        function()
-        loops.append(max(1, math.ceil(0.002 / max(time.perf_counter() - start, 1e-7))))
+    loops = [_calibrate(function) for function in (first, second)]
     samples: tuple[list[float], list[float]] = ([], [])
     spent = 0.0
     while len(samples[0]) < repeats or (spent < 2 * budget and len(samples[0]) < 25):

@@ -7,9 +7,9 @@ and one millimetre of plan (or k_l metres of mechanism) is one millimetre of
 paper when printed at 100 %.  Output is byte-for-byte deterministic and
 written atomically.
 
-This package is the only one in plans that imports matplotlib; nothing in
-``plans.scene``, ``plans.structure``, ``plans.analytic`` or
-``plans.graphical`` imports it.
+This package and :mod:`plans.bench.plot` (the benchmark's figure) are the
+only modules of plans that import matplotlib; nothing in ``plans.scene``,
+``plans.structure``, ``plans.analytic`` or ``plans.graphical`` imports it.
 
 >>> from plans.drawing import write_drawings  # doctest: +SKIP
 >>> write_drawings(solution, "out", formula="I(0,2) → RRP(3,4)")  # doctest: +SKIP

@@ -29,8 +29,11 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
+from .._files import replace_all
+from .._text import subscript
 from ..i18n import term
-from .svg import drawing_rc, write_atomic
+from .sheets import A4
+from .svg import drawing_rc
 
 __all__ = ["NEAR_DEAD_CENTRE", "QUANTITIES", "draw_cycle_diagrams", "write_cycle_diagrams", "plot_cycle", "cycle_axis"]
 
@@ -39,7 +42,6 @@ NEAR_DEAD_CENTRE = 0.1
 
 COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442")
 STYLES = ("-", "--", "-.", ":")
-PAGE = (210.0, 297.0)
 
 
 def cycle_axis(analytic, marked=None) -> tuple[np.ndarray, str, list[tuple[int, float]]]:
@@ -104,7 +106,7 @@ def _near_dead(analytic) -> np.ndarray:
     return near | (beside & ~invalid)
 
 
-def _decorate(ax, x, invalid, near, marks, lang, *, numbers: bool) -> None:
+def _decorate(ax, x, invalid, near, marks, *, numbers: bool) -> None:
     for a, b in _spans(x, invalid):
         ax.axvspan(a, b, facecolor="#d0d0d0", edgecolor="#8c8c8c", hatch="///", linewidth=0.0, zorder=0.5)
     for a, b in _spans(x, near & ~invalid):
@@ -126,17 +128,17 @@ def _finite(values, valid) -> np.ndarray:
 
 
 def _page(title: str, subtitle: str, rows: int) -> tuple[Figure, list]:
-    fig = Figure(figsize=(PAGE[0] / 25.4, PAGE[1] / 25.4), dpi=72)
+    fig = Figure(figsize=(A4[0] / 25.4, A4[1] / 25.4), dpi=72)
     from matplotlib.backends.backend_svg import FigureCanvasSVG
 
     FigureCanvasSVG(fig)
     import textwrap
 
-    fig.text(11 / PAGE[0], 1 - 11 / PAGE[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
-    fig.text(11 / PAGE[0], 1 - 19 / PAGE[1], "\n".join(w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)), fontsize=9, ha="left", va="top", linespacing=1.3)
-    top = 1 - 36 / PAGE[1]
-    bottom = 22 / PAGE[1]
-    axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / PAGE[0], "right": 1 - 40 / PAGE[0], "top": top, "bottom": bottom, "hspace": 0.16})
+    fig.text(11 / A4[0], 1 - 11 / A4[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
+    fig.text(11 / A4[0], 1 - 19 / A4[1], "\n".join(w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)), fontsize=9, ha="left", va="top", linespacing=1.3)
+    top = 1 - 36 / A4[1]
+    bottom = 22 / A4[1]
+    axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / A4[0], "right": 1 - 40 / A4[0], "top": top, "bottom": bottom, "hspace": 0.16})
     return fig, list(np.atleast_1d(axes))
 
 
@@ -152,7 +154,7 @@ def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: b
     if has_marks:
         handles.append(Line2D([], [], color="#606060", lw=0.6, ls=":", label=term("sheet_positions", lang)))
     if handles:
-        fig.legend(handles=handles, loc="lower left", bbox_to_anchor=(24 / PAGE[0], 6 / PAGE[1]), ncol=len(handles), fontsize=7, frameon=False)
+        fig.legend(handles=handles, loc="lower left", bbox_to_anchor=(24 / A4[0], 6 / A4[1]), ncol=len(handles), fontsize=7, frameon=False)
 
 
 def _plot_series(ax, x, series, ylabel):
@@ -185,7 +187,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     x, xlabel, marks = cycle_axis(analytic, marked)
     crank = hasattr(scene.driver, "omega")
     xwords = term("turned_from_0", lang) if crank else term("driver_position", lang)
-    title = f"{term('cycle_diagrams', lang)}"
+    title = term("cycle_diagrams", lang)
     out = []
     with drawing_rc():
         # links
@@ -253,20 +255,13 @@ def _unwrap_nan(phi, valid) -> np.ndarray:
 
 def _finish(fig, axes, x, invalid, near, marks, lang, xlabel, xwords) -> None:
     for n, ax in enumerate(axes):
-        _decorate(ax, x, invalid, near, marks, lang, numbers=n == 0)
+        _decorate(ax, x, invalid, near, marks, numbers=n == 0)
     axes[-1].set_xlabel(f"{xlabel}  —  {xwords}", fontsize=8)
-    if hasattr(axes[-1], "xaxis") and xlabel.startswith("Δφ"):
+    if xlabel.startswith("Δφ"):
         span = float(np.nanmax(x) - np.nanmin(x))
         if span >= 90:
             axes[-1].set_xticks(np.arange(0, np.nanmax(x) + 1e-9, 30.0))
     _legend_note(fig, lang, bool(invalid.any()), bool((near & ~invalid).any()), bool(marks))
-
-
-_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-
-
-def _sub(name: str) -> str:
-    return name.translate(_SUBSCRIPT) if name.isdigit() else f"_{name}"
 
 
 def write_cycle_diagrams(analytic, directory, *, marked=None, lang: str = "en", components: bool = False) -> list[Path]:
@@ -282,21 +277,20 @@ def write_cycle_diagrams(analytic, directory, *, marked=None, lang: str = "en", 
 
     directory = Path(directory)
     contents = {directory / f"{name}.svg": render_svg(fig) for name, fig in draw_cycle_diagrams(analytic, marked=marked, lang=lang, components=components)}
-    directory.mkdir(parents=True, exist_ok=True)
-    return write_atomic(contents)
+    return replace_all(contents)  # creates the directory
 
 
-#: quantity -> (what it is drawn for, label of the axis); see :func:`plot_cycle`.
+#: quantity -> label of its axis; see :func:`plot_cycle`.
 QUANTITIES = {
-    "phi": ("links", "φ [°]"),
-    "omega": ("links", "ω [rad/s]"),
-    "epsilon": ("links", "ε [rad/s²]"),
-    "v": ("points", "|v| [m/s]"),
-    "a": ("points", "|a| [m/s²]"),
-    "s": ("sliders", "s [mm]"),
-    "v_rel": ("sliders", "v_rel [m/s]"),
-    "a_rel": ("sliders", "a_rel [m/s²]"),
-    "coriolis": ("sliders", "|aᵏ| [m/s²]"),
+    "phi": "φ [°]",
+    "omega": "ω [rad/s]",
+    "epsilon": "ε [rad/s²]",
+    "v": "|v| [m/s]",
+    "a": "|a| [m/s²]",
+    "s": "s [mm]",
+    "v_rel": "v_rel [m/s]",
+    "a_rel": "a_rel [m/s²]",
+    "coriolis": "|aᵏ| [m/s²]",
 }
 
 
@@ -306,8 +300,8 @@ def _series(analytic, quantity: str, valid) -> list[tuple[str, np.ndarray]]:
         links = [n for n in scene.links if not scene.bodies[n].block]
         symbol = {"phi": "φ", "omega": "ω", "epsilon": "ε"}[quantity]
         if quantity == "phi":
-            return [(f"{symbol}{_sub(n)}", _unwrap_nan(analytic.links[n].phi, valid)) for n in links]
-        return [(f"{symbol}{_sub(n)}", _finite(getattr(analytic.links[n], quantity), valid)) for n in links]
+            return [(f"{symbol}{subscript(n)}", _unwrap_nan(analytic.links[n].phi, valid)) for n in links]
+        return [(f"{symbol}{subscript(n)}", _finite(getattr(analytic.links[n], quantity), valid)) for n in links]
     if quantity in ("v", "a"):
         points = [p for p in scene.report if p in analytic.points]
         return [(f"|{quantity}_{p}|", _finite(np.abs(getattr(analytic.points[p], quantity)), valid)) for p in points]
@@ -336,7 +330,7 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
             FigureCanvasSVG(fig)
             ax = fig.add_axes([0.12, 0.16, 0.72, 0.76])
         series = _series(analytic, quantity, valid)
-        _plot_series(ax, x, series, QUANTITIES[quantity][1])
-        _decorate(ax, x, ~valid, _near_dead(analytic), marks, lang, numbers=True)
+        _plot_series(ax, x, series, QUANTITIES[quantity])
+        _decorate(ax, x, ~valid, _near_dead(analytic), marks, numbers=True)
         ax.set_xlabel(xlabel, fontsize=8)
     return [line for line in ax.get_lines() if not line.get_label().startswith("_")]

@@ -28,6 +28,7 @@ import shapely
 from shapely.geometry import LineString, MultiPoint, Point
 from shapely.geometry import Polygon as ShapelyPolygon
 
+from .._text import SUBSCRIPT
 from ._canvas import Sketch, fmt_number, sketch_on, unit
 from .labels import place_label
 from ..i18n import term
@@ -47,7 +48,6 @@ HATCH_STEP = 2.2  # mm
 HATCH_LEN = 2.4  # mm
 OMEGA_R = 8.0  # mm
 EPSILON_R = 12.5  # mm
-SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
 def _sub(symbol: str, name: str) -> tuple[str, bool]:

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 
+from .._text import SUBSCRIPT
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
 from .style import (
@@ -24,9 +25,9 @@ from .style import (
     HEADING_PT,
     INK,
     LABEL_PT,
-    LEGEND_TEXT,
     VECTOR_STYLE,
 )
+from ..graphical.plan import KINDS
 from ..i18n import term
 
 __all__ = ["draw_plan", "draw_velocity_plan", "draw_acceleration_plan", "vectors_drawn", "legend_words", "ZERO_MM"]
@@ -39,8 +40,7 @@ SAME_MM = 1e-3
 PAST_MM = 7.0
 BEHIND_MM = 3.0
 
-_KIND_ORDER = ("absolute", "relative", "normal", "tangential", "coriolis")
-_UNITS = {"velocity": ("k_v", "(m/s)/mm", "Velocity plan"), "acceleration": ("k_a", "(m/s²)/mm", "Acceleration plan")}
+_UNITS = {"velocity": ("k_v", "(m/s)/mm"), "acceleration": ("k_a", "(m/s²)/mm")}
 
 
 def vectors_drawn(plan) -> list:
@@ -97,16 +97,13 @@ def draw_acceleration_plan(plan, ax=None, *, lang: str = "en") -> list:
     return draw_plan(plan, ax, lang=lang)
 
 
-_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-
-
 def image_text(name: str) -> str:
     """An image's label as the textbook prints it: the link number of a coincident point as a subscript.
 
     ``"e5"`` → ``"e₅"``, ``"a4′"`` → ``"a₄′"``; names without digits are unchanged.
     """
     letters = name.rstrip("0123456789′")
-    return letters + name[len(letters):].translate(_SUBSCRIPT)
+    return letters + name[len(letters):].translate(SUBSCRIPT)
 
 
 def legend_row(sketch, kind: str, words: str, x: float, y: float, *, text_gid: str) -> None:
@@ -207,15 +204,12 @@ def legend_words(plan_kind: str, kind: str, lang: str = "en") -> str:
     """The legend's words for a vector kind on a plan (``"construction"`` for construction lines)."""
     if kind == "construction":
         return term("construction_line", lang)
-    key = LEGEND_TERMS.get(plan_kind, {}).get(kind)
-    if key is None:
-        return LEGEND_TEXT[plan_kind].get(kind, kind) if lang == "en" else kind
-    return term(key, lang)
+    return term(LEGEND_TERMS[plan_kind][kind], lang)
 
 
 def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True) -> None:
     """Heading, scale factor and legend, below the plan where they cover nothing."""
-    symbol, units, _ = _UNITS[plan.kind]
+    symbol, units = _UNITS[plan.kind]
     heading = term("velocity_plan" if plan.kind == "velocity" else "acceleration_plan", lang)
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
@@ -224,7 +218,7 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     sketch.text(complex(x, y), f"{symbol} = {fmt_number(plan.scale)} {units}", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)
     if not legend:
         return
-    kinds = [k for k in _KIND_ORDER if any(v.kind == k for v in vectors)]
+    kinds = [k for k in KINDS if any(v.kind == k for v in vectors)]
     rows = [(k, legend_words(plan.kind, k, lang)) for k in kinds]
     if drawn_lines:
         rows.append(("construction", legend_words(plan.kind, "construction", lang)))

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._text import SUBSCRIPT
 from ..i18n import term
 from ._canvas import Sketch, fmt_number, sketch_on, unit
 from .labels import place_label
@@ -134,11 +135,8 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
         sketch.text(complex(xx + 9.5, yy - 1.4), name, size=CAPTION_PT, ha="left", va="center", gid="legend-path", obstacle=False)
 
 
-_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-
-
 def _sub(k: int) -> str:
-    return str(k).translate(_SUBSCRIPT)
+    return str(k).translate(SUBSCRIPT)
 
 
 def _hull(pts: list[complex]) -> list[complex]:

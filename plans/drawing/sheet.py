@@ -19,7 +19,8 @@ from .mechanism import _Mechanism
 from .plan_drawing import _draw as _draw_plan_into
 from ..i18n import term
 from .style import HEADING_PT, MARGIN_MM, SMALL_PT, TITLE_PT
-from .svg import drawing_rc, new_figure, render_svg, write_atomic
+from .svg import drawing_rc, new_figure, render_svg
+from .._files import replace_all
 
 __all__ = ["draw_sheet", "write_drawings", "sheet_equations", "translate_table", "PAGES"]
 
@@ -29,10 +30,15 @@ PAGE_MARGIN = 12.0  # mm
 GAP = 8.0  # mm between blocks
 EQ_PT = 8.5
 TABLE_PT = SMALL_PT + 0.5
+SHEET_LINE_GAP = 1.5  # mm between the lines of the title and of the equations
 
 
-def sheet_equations(solution) -> list[str]:
-    """One line per construction step: ``"RRP(3,4):  v_B = v_A + v_BA;  v_B = …"``, velocity plan first."""
+def sheet_equations(solution, driver_label: str | None = None) -> list[str]:
+    """One line per construction step: ``"RRP(3,4):  v_B = v_A + v_BA;  v_B = …"``, velocity plan first.
+
+    With *driver_label* (such as ``"I(0,2)"``) the driver's steps are headed
+    with it instead of the English word ``driver`` (see :func:`label_driver`).
+    """
     lines = []
     for plan in (solution.velocity_plan, solution.acceleration_plan):
         if plan is None:
@@ -40,11 +46,15 @@ def sheet_equations(solution) -> list[str]:
         for step in plan.steps:
             if step.equations:
                 lines.append(f"{step.group}:  " + ";   ".join(step.equations))
-    return lines
+    return lines if driver_label is None else label_driver(lines, driver_label)
+
+
+def label_driver(lines: list[str], label: str) -> list[str]:
+    """Equation lines with a leading ``driver:`` replaced by ``label:`` (``"I(0,2):"``, the structural notation)."""
+    return [f"{label}:" + line[len("driver:"):] if line.startswith("driver:") else line for line in lines]
 
 
 _TOKEN = re.compile(r"(?<![A-Za-z0-9.])([A-Za-zα-ωΑ-Ω])(?:\^([A-Za-z]+))?(?:_([A-Za-z0-9′]+))?(?![A-Za-z0-9])")
-_GREEK_INDEX = re.compile(r"^[α-ω]\d+$")
 _PARSER = MathTextParser("path")
 
 
@@ -79,10 +89,12 @@ def _pretty(line: str) -> tuple[str, bool]:
 class _Block:
     """A rectangle of the sheet [mm] with a function that draws it at a lower-left corner."""
 
-    def __init__(self, width: float, height: float, place):
+    def __init__(self, width: float, height: float, place, drawing: bool = False):
         self.width = width
         self.height = height
         self.place = place
+        #: a drawing of its own axes, placed as ``place(x, y, page_mm)``; other blocks ``place(sketch, x, y)``
+        self.drawing = drawing
 
 
 def _drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True) -> _Block:
@@ -99,23 +111,23 @@ def _drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True) -
     def place(x: float, y: float, page: tuple[float, float]) -> None:
         fit_axes(ax, bounds, MARGIN_MM, rect_mm=(x, y), page_mm=page)
 
-    return _Block(width, height, place)
+    return _Block(width, height, place, drawing=True)
 
 
-def _text_rows(rows: list[tuple[str, float, str, bool]], line_gap: float = 1.5):
-    """Size of a stack of text lines (text, size, weight, mathtext)."""
+def _rows_block(rows: list[tuple[str, float, str, bool]], gid: str, *, line_gap: float, math_scale: float = 1.0) -> _Block:
+    """A stack of text lines (text, size, weight, mathtext), left-aligned.
+
+    Each line is the height of a line of its font, *math_scale* times that for
+    a mathtext line, plus *line_gap* [mm].
+    """
+    heights = [text_size("lp", s)[1] * (math_scale if m else 1.0) + line_gap for _, s, _, m in rows]
     width = max((text_size(t, s, w, m)[0] for t, s, w, m in rows), default=0.0)
-    heights = [text_size("lp", s)[1] + line_gap for _, s, _, _ in rows]
-    return width, sum(heights), heights
-
-
-def _stack_block(rows: list[tuple[str, float, str, bool]], gid: str) -> _Block:
-    width, height, heights = _text_rows(rows)
+    height = sum(heights)
 
     def place_into(sketch: Sketch, x: float, y: float) -> None:
         top = y + height
-        for (text, size, weight, _), h in zip(rows, heights):
-            sketch.text(complex(x, top - h / 2), text, size=size, ha="left", va="center", weight=weight, gid=gid, obstacle=False)
+        for (text, size, weight, is_math), h in zip(rows, heights):
+            sketch.text(complex(x, top - h / 2), text, size=size, ha="left", va="center", weight=weight, gid=gid, obstacle=False, math=is_math)
             top -= h
 
     return _Block(width, height, place_into)
@@ -228,19 +240,18 @@ def draw_sheet(
         head_rows = [(title, TITLE_PT, "bold", False)] if title else []
         if formula:
             head_rows.append((f"{term('structural_formula', lang)}:  {formula}", HEADING_PT, "normal", False))
-        head = _stack_block(head_rows, "title") if head_rows else None
+        head = _rows_block(head_rows, "title", line_gap=SHEET_LINE_GAP) if head_rows else None
 
         eq_lines = sheet_equations(solution) if equations is None else list(equations)
         if lang != "en":  # "driver:" is the one English word of the steps: the structural notation instead
-            driver = f"I(0,{getattr(getattr(solution.scene, 'driver', None), 'link', '')}):"
-            eq_lines = [driver + line[len("driver:"):] if line.startswith("driver:") else line for line in eq_lines]
+            eq_lines = label_driver(eq_lines, f"I(0,{getattr(getattr(solution.scene, 'driver', None), 'link', '')})")
         eq_block = None
         if eq_lines:
             rows = [(term("vector_equations", lang) if lang != "en" else "Vector equations", HEADING_PT, "bold", False)]
             for line in eq_lines:
                 text, is_math = _pretty(line)
                 rows.append((text, EQ_PT, "normal", is_math))
-            eq_block = _stack_block(rows, "equation")
+            eq_block = _rows_block(rows, "equation", line_gap=SHEET_LINE_GAP)
         table_block = _table_block(table, "Results" if lang == "en" else term("results", lang)) if table else None
 
         # arrangements of the drawings: one row, or the mechanism above the plans
@@ -316,7 +327,7 @@ def write_drawings(
     """Write ``mechanism.svg``, ``velocity.svg``, ``acceleration.svg`` and ``sheet.svg``.
 
     All four are rendered in memory first and then written atomically together
-    (see :func:`plans.drawing.svg.write_atomic`): a failure leaves every
+    (see :func:`plans._files.replace_all`): a failure leaves every
     existing file as it was and no temporary file behind.  ``acceleration.svg``
     is written only when the solution has an acceleration plan; an old one in
     *directory* is then removed, so the directory never mixes two runs.
@@ -352,8 +363,7 @@ def write_drawings(
     contents[directory / "sheet.svg"] = render_svg(
         draw_sheet(solution, formula=formula, table=table, equations=equations, lang=lang)
     )
-    directory.mkdir(parents=True, exist_ok=True)
-    paths = write_atomic(contents)
+    paths = replace_all(contents)  # creates the directory
     if solution.acceleration_plan is None:
         stale = directory / "acceleration.svg"
         if stale.exists():

@@ -24,13 +24,14 @@ from pathlib import Path
 import matplotlib
 from matplotlib.backends.backend_pdf import PdfPages
 
+from .._files import replace_all
+from ..graphical.plan import KINDS
 from ..i18n import term
 from ._canvas import Sketch, fit_axes, fmt_number, text_size
-from .mechanism import _Mechanism
-from .plan_drawing import _KIND_ORDER, _draw as _draw_plan_into, legend_row, legend_words, vectors_drawn
-from .sheet import _Block, _table_block, draw_sheet
+from .plan_drawing import legend_row, legend_words, vectors_drawn
+from .sheet import _Block, _drawing_block, _rows_block, _table_block, draw_sheet
 from .style import CAPTION_PT, HEADING_PT, MARGIN_MM, SMALL_PT
-from .svg import drawing_rc, new_figure, render_svg, write_atomic
+from .svg import drawing_rc, new_figure, render_svg
 
 __all__ = [
     "A4",
@@ -45,6 +46,7 @@ __all__ = [
     "draw_cover_page",
     "scale_line",
     "page_text_rows",
+    "stamp_page_number",
     "PageOverflow",
 ]
 
@@ -54,13 +56,22 @@ GAP = 5.0  # mm between blocks
 TEXT_PT = 7.6  # equations on a handout page
 DATA_PT = 8.0
 FOOTER_PT = 7.0
+FOOTER_COLOUR = "#555555"
+PAGE_NUMBER_Y = 6.0  # mm above the foot of the page, the centre of the page number
+PAGE_TITLE_PT = 13.5
+LINE_GAP = 1.1  # mm between the lines of a text block on a page
+MATH_LINE = 1.25  # a mathtext line is this much taller than a line of text
 
 #: rcParams of PDF output: TrueType fonts embedded (DejaVu Sans covers Cyrillic and Greek).
 PDF_RC = {"pdf.fonttype": 42, "pdf.compression": 6}
 
 
 class PageOverflow(Exception):
-    """The blocks of a page do not fit on it at the scale factors given (internal: the handout enlarges them)."""
+    """The blocks of a page do not fit on it at the scale factors given: :func:`draw_position_page` with ``strict=True``.
+
+    (The handout does not rely on it: it measures with :func:`position_page_excess`
+    and enlarges the scale factors until the page fits.)
+    """
 
     def __init__(self, excess: float):
         super().__init__(f"the page is {excess:.1f} mm too tall")
@@ -90,8 +101,7 @@ def save_figure(fig, path) -> Path:
         data = render_pdf([fig])
     else:
         raise ValueError(f"{path}: write a drawing as .svg or .pdf, not {path.suffix or 'without a suffix'}")
-    path.parent.mkdir(parents=True, exist_ok=True)
-    return write_atomic({path: data})[0]
+    return replace_all({path: data})[0]  # creates the directory
 
 
 # --- plans draw --positions -----------------------------------------------------------
@@ -145,8 +155,7 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en") -> list
         fig = draw_position_sheet(run, lang=lang, total=total)
         contents[directory / f"sheet-{run.index:0{width}d}.svg"] = render_svg(fig)
     contents[directory / "positions.svg"] = render_svg(draw_positions_plan(positions_run, lang=lang)[0].figure)
-    directory.mkdir(parents=True, exist_ok=True)
-    paths = write_atomic(contents)
+    paths = replace_all(contents)  # creates the directory
     for old in directory.glob("sheet-*.svg"):
         if old not in contents and re.fullmatch(r"sheet-\d+\.svg", old.name):
             old.unlink()
@@ -207,38 +216,6 @@ def page_text_rows(heading: str, lines: list[str], width: float, size: float = T
     return rows
 
 
-def _rows_block(rows, gid: str, line_gap: float = 1.1) -> _Block:
-    heights = [text_size("lp", s)[1] * (1.25 if m else 1.0) + line_gap for _, s, _, m in rows]
-    width = max((text_size(t, s, w, m)[0] for t, s, w, m in rows), default=0.0)
-    height = sum(heights)
-
-    def place(sketch: Sketch, x: float, y: float) -> None:
-        top = y + height
-        for (text, size, weight, is_math), h in zip(rows, heights):
-            sketch.text(complex(x, top - h / 2), text, size=size, ha="left", va="center", weight=weight, gid=gid, obstacle=False, math=is_math)
-            top -= h
-
-    return _Block(width, height, place)
-
-
-def _drawing(fig, kind: str, obj, lang: str) -> _Block:
-    ax = fig.add_axes([0, 0, 0.01, 0.01])
-    sketch = Sketch(ax, {"mechanism": "mech", "velocity": "vel", "acceleration": "acc"}[kind])
-    if kind == "mechanism":
-        _Mechanism(sketch, obj, lang=lang).draw()
-    else:
-        _draw_plan_into(sketch, obj, lang=lang, legend=False)
-    bounds = sketch.bounds
-    width, height = bounds.width + 2 * MARGIN_MM, bounds.height + 2 * MARGIN_MM
-
-    def place(x: float, y: float, page) -> None:
-        fit_axes(ax, bounds, MARGIN_MM, rect_mm=(x, y), page_mm=page)
-
-    block = _Block(width, height, place)
-    block.drawing = True
-    return block
-
-
 def _legend_block(graphical, lang: str) -> _Block:
     """One legend for both plans: each kind of vector drawn, and construction lines."""
     words: dict[str, list[str]] = {}
@@ -246,13 +223,13 @@ def _legend_block(graphical, lang: str) -> _Block:
         if plan is None:
             continue
         kinds = {v.kind for v in vectors_drawn(plan)}
-        for kind in _KIND_ORDER:
+        for kind in KINDS:
             if kind in kinds:
                 text = legend_words(plan.kind, kind, lang)
                 if text not in words.setdefault(kind, []):
                     words[kind].append(text)
     # one row per style: "absolute velocity / absolute acceleration"
-    entries = [(kind, " / ".join(words[kind])) for kind in _KIND_ORDER if kind in words]
+    entries = [(kind, " / ".join(words[kind])) for kind in KINDS if kind in words]
     entries.append(("construction", legend_words("velocity", "construction", lang)))
     row_h = text_size("lp", CAPTION_PT)[1] + 0.8
     width = 11.0 + max(text_size(w, CAPTION_PT)[0] for _, w in entries)
@@ -267,65 +244,63 @@ def _legend_block(graphical, lang: str) -> _Block:
     return _Block(width, height, place)
 
 
-def _stacked(blocks: list[_Block], gap: float = 3.0) -> _Block:
-    width = max(b.width for b in blocks)
-    height = sum(b.height for b in blocks) + gap * (len(blocks) - 1)
+def _header_rows(title: str, lines: list[str]) -> list[tuple[str, float, str, bool, float, float]]:
+    """The rows of a page's header: (text, size, weight, mathtext, height of its box [mm], advance [mm]).
 
-    def place(sketch: Sketch, x: float, y: float) -> None:
-        top = y + height
-        for b in blocks:
-            b.place(sketch, x, top - b.height)
-            top -= b.height + gap
-
-    return _Block(width, height, place)
+    The title, then the data lines (a leading ``§`` makes one bold).  Both
+    :func:`_header` and :func:`_header_height` read these.
+    """
+    h = text_size("lp", PAGE_TITLE_PT, "bold")[1]
+    rows = [(title, PAGE_TITLE_PT, "bold", False, h, h + 1.2)]
+    for line in lines:
+        weight = "bold" if line.startswith("§") else "normal"
+        line = line.lstrip("§")
+        is_math = "$" in line
+        h = text_size("lp", DATA_PT)[1] * (1.2 if is_math else 1.0) + 0.7
+        rows.append((line, DATA_PT, weight, is_math, h, h))
+    return rows
 
 
 def _header(sketch: Sketch, size, title: str, lines: list[str]) -> float:
     """Title and data lines at the top of a page; returns the y [mm] below them."""
     pw, ph = size
     y = ph - PAGE_MARGIN
-    h = text_size("lp", 13.5, "bold")[1]
-    sketch.text(complex(PAGE_MARGIN, y - h / 2), title, size=13.5, weight="bold", ha="left", gid="page-title", obstacle=False)
-    y -= h + 1.2
-    for line in lines:
-        weight = "bold" if line.startswith("§") else "normal"
-        line = line.lstrip("§")
-        is_math = "$" in line
-        h = text_size("lp", DATA_PT)[1] * (1.2 if is_math else 1.0) + 0.7
-        sketch.text(complex(PAGE_MARGIN, y - h / 2), line, size=DATA_PT, weight=weight, ha="left", gid="page-data", obstacle=False, math=is_math)
-        y -= h
+    for k, (text, pt, weight, is_math, h, advance) in enumerate(_header_rows(title, lines)):
+        gid = "page-title" if k == 0 else "page-data"
+        sketch.text(complex(PAGE_MARGIN, y - h / 2), text, size=pt, weight=weight, ha="left", gid=gid, obstacle=False, math=is_math)
+        y -= advance
     sketch.line([complex(PAGE_MARGIN, y - 1.0), complex(pw - PAGE_MARGIN, y - 1.0)], lw=0.6, gid="page-rule", obstacle=False)
     return y - 1.0 - GAP * 0.8
 
 
-def _footer(sketch: Sketch, size, left: str, page: int | None, pages: int | None, lang: str) -> None:
-    pw, _ = size
+def _header_height(lines) -> float:
+    """What :func:`_header` takes from the top of the page [mm]."""
+    return PAGE_MARGIN + sum(row[5] for row in _header_rows("", list(lines))) + 1.0 + GAP * 0.8
+
+
+def _footer(sketch: Sketch, left: str) -> None:
     y = PAGE_MARGIN * 0.55
-    sketch.text(complex(PAGE_MARGIN, y), left, size=FOOTER_PT, ha="left", va="center", gid="page-footer", obstacle=False, color="#555555")
-    if page is not None:
-        text = f"{term('page', lang)} {page}/{pages}" if pages else f"{term('page', lang)} {page}"
-        sketch.text(complex(pw - PAGE_MARGIN, y), text, size=FOOTER_PT, ha="right", va="center", gid="page-number", obstacle=False, color="#555555")
+    sketch.text(complex(PAGE_MARGIN, y), left, size=FOOTER_PT, ha="left", va="center", gid="page-footer", obstacle=False, color=FOOTER_COLOUR)
 
 
-def _place_rows(fig, sketch: Sketch, size, top: float, rows: list[list[_Block]], *, strict: bool) -> None:
-    """Rows of blocks from *top* down, each row spread over the page width; PageOverflow if they do not fit."""
-    pw, ph = size
-    avail_w = pw - 2 * PAGE_MARGIN
-    need = sum(max(b.height for b in row) for row in rows) + GAP * (len(rows) - 1)
-    bottom = PAGE_MARGIN + 2.0
-    if strict and top - need < bottom - 1e-6:
-        raise PageOverflow(bottom - (top - need))
+def stamp_page_number(fig, number: int, total: int, lang: str) -> None:
+    """``"Page 3/12"`` at the foot of any page (a handout page or a cycle diagram), right-aligned in the margin."""
+    width, height = fig.get_size_inches() * 25.4
+    fig.text(1 - PAGE_MARGIN / width, PAGE_NUMBER_Y / height, f"{term('page', lang)} {number}/{total}", ha="right", va="center", fontsize=FOOTER_PT, color=FOOTER_COLOUR)
+
+
+def _place_rows(sketch: Sketch, size, top: float, rows: list[list[_Block]]) -> None:
+    """Rows of blocks from *top* down, each row spread over the page width (placed even if they do not fit)."""
+    avail_w = size[0] - 2 * PAGE_MARGIN
     for row in rows:
         widths = sum(b.width for b in row)
-        if strict and widths + GAP * (len(row) - 1) > avail_w + 1e-6:
-            raise PageOverflow(0.0)
         spare = max(0.0, avail_w - widths)
         gap = spare / (len(row) - 1) if len(row) > 1 else 0.0
         gap = min(gap, 18.0) if len(row) > 1 else 0.0
         x = PAGE_MARGIN
         h = max(b.height for b in row)
         for b in row:
-            if getattr(b, "drawing", False):
+            if b.drawing:
                 b.place(x, top - b.height, size)
             else:
                 b.place(sketch, x, top - b.height)
@@ -340,8 +315,6 @@ def draw_position_page(
     header_lines: list[str] = (),
     title: str | None = None,
     equations: list[str] | None = None,
-    page: int | None = None,
-    pages: int | None = None,
     footer: str = "",
     strict: bool = True,
 ):
@@ -361,8 +334,9 @@ def draw_position_page(
     equations : list of str, optional
         Vector equations, by default from the plans' steps.
     strict : bool
-        Raise :class:`PageOverflow` when the blocks do not fit (the handout
-        then chooses larger scale factors); False places them anyway.
+        Raise :class:`PageOverflow` when the blocks do not fit in any layout;
+        False places them in the last layout anyway (the handout does so,
+        having fitted the scale factors with :func:`position_page_excess`).
     """
 
     g = run.graphical
@@ -372,11 +346,11 @@ def draw_position_page(
         top = _header(sketch, size, title or run.scene.title, list(header_lines))
         width = size[0] - 2 * PAGE_MARGIN
 
-        mech = _drawing(fig, "mechanism", g, lang)
-        vel = _drawing(fig, "velocity", g.velocity_plan, lang)
-        acc = _drawing(fig, "acceleration", g.acceleration_plan, lang) if g.acceleration_plan is not None else None
+        mech = _drawing_block(fig, "mechanism", g, lang, legend=False)
+        vel = _drawing_block(fig, "velocity", g.velocity_plan, lang, legend=False)
+        acc = _drawing_block(fig, "acceleration", g.acceleration_plan, lang, legend=False) if g.acceleration_plan is not None else None
         legend = _legend_block(g, lang)
-        layouts = _layouts(mech, vel, acc, legend, width)
+        layouts = _layouts(mech, vel, acc, legend, size)
 
         eq_block = _equations_block(g, equations, lang, width)
         chosen = None
@@ -389,23 +363,24 @@ def draw_position_page(
             if strict:
                 raise PageOverflow(_excess(size, top, layouts[-1] + [[eq_block]]))
             chosen = layouts[-1] + [[eq_block]]
-        _place_rows(fig, sketch, size, top, chosen, strict=False)
-        _footer(sketch, size, footer, page, pages, lang)
+        _place_rows(sketch, size, top, chosen)
+        _footer(sketch, footer)
     return fig
 
 
-def _layouts(mech, vel, acc, legend, width: float) -> list[list[list[_Block]]]:
+def _layouts(mech, vel, acc, legend, size) -> list[list[list[_Block]]]:
     """The arrangements of a graphical page's drawings to try, in order of preference."""
+    width = size[0] - 2 * PAGE_MARGIN
     plans_ = [b for b in (vel, acc) if b is not None]
     layouts: list[list[list[_Block]]] = []
     # all three in a row (a long, low mechanism)
     if sum(b.width for b in [mech] + plans_) + GAP * len(plans_) <= width:
         layouts.append([[mech] + plans_, [legend]])
     # the mechanism (and the legend under it) beside the plans stacked: a tall mechanism
-    left, right = _column([mech, legend], gap=GAP), _column(plans_, gap=GAP)
+    left, right = _column([mech, legend], size), _column(plans_, size)
     if left.width + right.width + GAP <= width:
         layouts.append([[left, right]])
-    column = _column(plans_ + [legend], gap=GAP)
+    column = _column(plans_ + [legend], size)
     if mech.width + column.width + GAP <= width:
         layouts.append([[mech, column]])
     # the mechanism and the velocity plan, then the acceleration plan and the legend
@@ -420,15 +395,7 @@ def _equations_block(g, equations, lang: str, width: float) -> _Block:
     from .sheet import _pretty, sheet_equations
 
     lines = [_pretty(line)[0] for line in (sheet_equations(g) if equations is None else equations)]
-    return _rows_block(page_text_rows(term("vector_equations", lang), lines, width), "equation")
-
-
-def _header_height(lines) -> float:
-    """What :func:`_header` takes from the top of the page [mm]."""
-    h = text_size("lp", 13.5, "bold")[1] + 1.2
-    for line in lines:
-        h += text_size("lp", DATA_PT)[1] * (1.2 if "$" in line else 1.0) + 0.7
-    return PAGE_MARGIN + h + 1.0 + GAP * 0.8
+    return _rows_block(page_text_rows(term("vector_equations", lang), lines, width), "equation", line_gap=LINE_GAP, math_scale=MATH_LINE)
 
 
 def position_page_excess(run, *, lang: str = "en", header_lines=(), equations=None, cache: dict | None = None) -> float:
@@ -448,7 +415,7 @@ def position_page_excess(run, *, lang: str = "en", header_lines=(), equations=No
         if key not in cache:
             with drawing_rc():
                 fig = new_figure()
-                block = _drawing(fig, kind, obj, lang)
+                block = _drawing_block(fig, kind, obj, lang, legend=False)
             cache[key] = (block.width, block.height)
         return _Block(*cache[key], None)
 
@@ -458,7 +425,7 @@ def position_page_excess(run, *, lang: str = "en", header_lines=(), equations=No
         acc = size_of("acceleration", g.acceleration_plan, g.acceleration_plan.scale) if g.acceleration_plan is not None else None
         legend = _legend_block(g, lang)
         eq_block = _equations_block(g, equations, lang, width)
-    return min(_excess(A4, top, layout + [[eq_block]]) for layout in _layouts(mech, vel, acc, legend, width))
+    return min(_excess(A4, top, layout + [[eq_block]]) for layout in _layouts(mech, vel, acc, legend, A4))
 
 
 def _fits(size, top: float, rows) -> bool:
@@ -474,16 +441,16 @@ def _excess(size, top: float, rows) -> float:
     return max(over_h, over_w)
 
 
-def _column(blocks: list[_Block], gap: float = GAP) -> _Block:
-    """Blocks one above the other, left-aligned (drawings and sheet blocks alike)."""
+def _column(blocks: list[_Block], size, gap: float = GAP) -> _Block:
+    """Blocks one above the other, left-aligned (drawings and sheet blocks alike), on a page of *size* [mm]."""
     width = max(b.width for b in blocks)
     height = sum(b.height for b in blocks) + gap * (len(blocks) - 1)
 
     def place(sketch: Sketch, x: float, y: float) -> None:
         top = y + height
         for b in blocks:
-            if getattr(b, "drawing", False):
-                b.place(x, top - b.height, A4)
+            if b.drawing:
+                b.place(x, top - b.height, size)
             else:
                 b.place(sketch, x, top - b.height)
             top -= b.height + gap
@@ -541,15 +508,15 @@ def draw_check_pages(
                 top -= block.height + GAP
             if rows:
                 take = len(rows)
-                while take > 1 and _rows_block(rows[:take], "loop").height > top - bottom:
+                while take > 1 and _rows_block(rows[:take], "loop", line_gap=LINE_GAP, math_scale=MATH_LINE).height > top - bottom:
                     take -= 1
                 while take > 1 and rows[take - 1][2] == "bold":  # no heading alone at the foot
                     take -= 1
-                block = _rows_block(rows[:take], "loop")
+                block = _rows_block(rows[:take], "loop", line_gap=LINE_GAP, math_scale=MATH_LINE)
                 block.place(sketch, PAGE_MARGIN, top - block.height)
                 rest = rows[take:]
                 rows = [(f"{heading} {term('continued', lang)}", HEADING_PT, "bold", False)] + rest if rest else []
-            _footer(sketch, size, footer, None, None, lang)
+            _footer(sketch, footer)
             figures.append(fig)
             first = False
     return figures
@@ -561,8 +528,6 @@ def draw_cover_page(
     lang: str = "en",
     header_lines: list[str] = (),
     positions_lines: list[str] = (),
-    page: int | None = None,
-    pages: int | None = None,
     footer: str = "",
     k_l: float | None = None,
 ):
@@ -593,7 +558,7 @@ def draw_cover_page(
             for k, entry in enumerate(positions_lines):
                 c, r = divmod(k, per)
                 sketch.text(complex(PAGE_MARGIN + c * column_w, y - (r + 0.5) * row_h), entry, size=DATA_PT, ha="left", gid="positions-entry", obstacle=False)
-        _footer(sketch, size, footer, page, pages, lang)
+        _footer(sketch, footer)
     return fig
 
 

@@ -20,7 +20,6 @@ __all__ = [
     "TITLE_PT",
     "HEADING_PT",
     "VECTOR_STYLE",
-    "LEGEND_TEXT",
     "CONSTRUCTION_STYLE",
     "INK",
     "PLATE_FILL",
@@ -69,21 +68,6 @@ VECTOR_STYLE = {
     "normal": ("#009E73", 1.1, (5.0, 2.0), 3.0),
     "tangential": ("#D55E00", 1.1, (6.0, 1.8, 1.2, 1.8), 3.0),
     "coriolis": ("#CC79A7", 1.3, (1.4, 1.4), 3.0),
-}
-
-#: Legend wording per plan kind and vector kind.
-LEGEND_TEXT = {
-    "velocity": {
-        "absolute": "absolute velocity",
-        "relative": "relative velocity",
-    },
-    "acceleration": {
-        "absolute": "absolute acceleration",
-        "relative": "relative (sliding) acceleration aʳ",
-        "normal": "normal component aⁿ",
-        "tangential": "tangential component aᵗ",
-        "coriolis": "Coriolis component aᵏ",
-    },
 }
 
 #: Construction lines: thin, grey, dashed.

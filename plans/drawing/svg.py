@@ -1,4 +1,4 @@
-"""Deterministic SVG at a physical size, written atomically.
+"""Deterministic SVG at a physical size.
 
 * :func:`new_figure` makes a matplotlib ``Figure`` (no pyplot, no global
   state) with an SVG canvas, sized in millimetres.
@@ -6,9 +6,9 @@
   hash salt, no date, fonts as text) and rewrites the root ``width`` and
   ``height`` in millimetres, so a viewer or printer at 100 % reproduces the
   scale factors.  The same figure always gives the same bytes.
-* :func:`write_atomic` writes several files so that either all of them are
-  replaced or none is: each goes to a temporary file in the target directory
-  first, and only when all are written are they renamed into place.
+
+The files are written with :func:`plans._files.replace_all`: either all of
+them are replaced or none is.
 """
 
 from __future__ import annotations
@@ -16,17 +16,13 @@ from __future__ import annotations
 import io
 import re
 from contextlib import contextmanager
-from pathlib import Path
-
 import matplotlib
 from matplotlib.backends.backend_svg import FigureCanvasSVG
 from matplotlib.figure import Figure
 
-from .._files import replace_all
-
 from .style import RC
 
-__all__ = ["new_figure", "render_svg", "write_atomic", "drawing_rc", "svg_size_mm"]
+__all__ = ["new_figure", "render_svg", "drawing_rc", "svg_size_mm"]
 
 _ROOT_SIZE = re.compile(rb'(<svg\b[^>]*?)\swidth="([0-9.eE+-]+)pt"\s+height="([0-9.eE+-]+)pt"')
 _MM_SIZE = re.compile(r'<svg\b[^>]*?\swidth="([0-9.]+)mm"\s+height="([0-9.]+)mm"')
@@ -74,8 +70,3 @@ def svg_size_mm(data: bytes | str) -> tuple[float, float]:
     if not match:
         raise ValueError("no width/height in mm on the SVG root")
     return float(match.group(1)), float(match.group(2))
-
-
-def write_atomic(contents: dict[Path, bytes]) -> list[Path]:
-    """Write every file or none: :func:`plans._files.replace_all`."""
-    return replace_all(contents)
