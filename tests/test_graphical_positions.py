@@ -166,3 +166,43 @@ def test_compass_arcs_as_polygons_are_close_to_exact(name):
 def test_bad_options_are_value_errors(option):
     with pytest.raises(ValueError, match=next(iter(option))):
         construct(load(example_path("four-bar")), **option)
+
+
+@pytest.mark.parametrize("h", [0.25, 0.25 + 1e-16, 0.25 - 1e-16, -0.25, -0.25 - 1e-16])
+def test_rpr_with_the_offset_equal_to_the_pivot_distance_is_a_dead_centre_not_a_failed_assembly(h):
+    """|BE| = |h| (to rounding): the rod's line is the tangent ⊥ BE through E, a dead centre for both methods."""
+    from plans.analytic import solve
+    from plans.errors import SingularPositionError
+
+    text = f"""
+[frame]
+points = {{ O = [0, 0], E = [0.5, 0] }}
+[link.2]
+points = {{ O = [0, 0], B = [0.25, 0] }}
+[link.3]
+points = {{ B = [0, 0] }}
+lines = {{ rod = {{ through = [0, {h!r}], angle = 0 }} }}
+[[slider]]
+pin = "E"
+on = "3.rod"
+name = "4"
+[driver]
+crank = "2"
+angle = "0 deg"
+omega = "1 rad/s"
+"""
+    scene = loads(text)
+    with pytest.raises(SingularPositionError, match=r"^RPR\(3,4\): "):
+        solve(scene)
+    with pytest.raises(SingularPositionError, match=r"^RPR\(3,4\): the construction lines ⊥ BE and ∥ 3\.rod .* dead-centre position"):
+        construct(scene)
+    # a little further out it does not assemble, a little nearer it does, by both methods
+    for factor, outcome in ((1 + 1e-9, AssemblyError), (1 - 1e-9, None)):
+        scene = loads(text.replace(repr(h), repr(h * factor)))
+        if outcome is None:
+            assert abs(construct(scene).positions["E"] - 0.5) < POSITION_TOL and solve(scene).valid.all()
+        else:
+            with pytest.raises(outcome, match="gap"):
+                construct(scene)
+            with pytest.raises(outcome, match="gap"):
+                solve(scene)

@@ -18,6 +18,8 @@ __all__ = [
     "pair_lines",
     "turning_with",
     "coincident",
+    "coriolis",
+    "drawn_coriolis",
     "construct_image",
     "offset_line",
     "record_sliding",
@@ -59,21 +61,39 @@ def offset_line(ctx: Construction, own: Line, other: Line, point_local: complex)
     return through + 1j * direction * h, direction
 
 
-def coincident(ctx: Construction, plan: Sketch, body: str, point: str, at: complex) -> tuple[complex, str, Vec | None]:
+def coincident(ctx: Construction, plan: Sketch, body: str, point: str, at: complex) -> tuple[complex, Vec | None]:
     """Image of the point of the known *body* that coincides with *point* at *at* [m].
 
     Placed by the similarity theorem from the body's images; a point of the
     frame is at the pole and gets no label of its own.  Returns (image,
-    label, absolute vector from the pole or None for the frame).
+    absolute vector from the pole or None for the frame).
     """
     motion = (ctx.v_motion if plan.kind == "velocity" else ctx.a_motion)[body]
     image = motion.image_of(at)
-    label = plan.label(point, body)
     if body == FRAME:
-        return image, plan.pole, None
+        return image, None
+    label = plan.label(point, body)
     if label not in plan.images:
         plan.place(label, image)
-    return image, label, plan.absolute(point, body)
+    return image, plan.absolute(point, body)
+
+
+def coriolis(ctx: Construction, omega: float, sliding: _Sliding) -> complex:
+    """The Coriolis acceleration aᵏ = 2 ω_g × v_rel of a sliding point, on the acceleration plan.
+
+    ω_g [rad/s] is the angular velocity of the body carrying the guide (the
+    frame of the relative motion), v_rel the sliding velocity measured on
+    the velocity plan (``sliding.v_rel``); aᵏ is v_rel turned by +90° in
+    the sense of ω_g and 2|ω_g| times as long, zero when the guide does not
+    turn.  Returns it in provisional units of the acceleration plan.
+    """
+    v_rel = sliding.v_rel.delta * ctx.velocity.k0  # [m/s]
+    return 2j * omega * v_rel / ctx.acceleration.k0
+
+
+def drawn_coriolis(drawn: list[Vec]) -> Vec | None:
+    """The Coriolis component drawn on a chain whose only known component it is; None if zero (not drawn)."""
+    return drawn[0] if drawn else None
 
 
 @dataclass

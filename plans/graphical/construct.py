@@ -133,7 +133,6 @@ def construct(
     ctx.velocity = Sketch("velocity", k_v if k_v is not None else _provisional_v(ctx))
     _rest(ctx, ctx.velocity)
     driver_velocity(ctx)
-    _images(ctx, ctx.velocity, ctx.v_motion, [scene.driver.link])
     for group in structure.groups:
         _KINDS[group.kind][1](ctx, group)
         _images(ctx, ctx.velocity, ctx.v_motion, group.links)
@@ -145,7 +144,6 @@ def construct(
         ctx.acceleration = Sketch("acceleration", k_a if k_a is not None else _provisional_a(ctx))
         _rest(ctx, ctx.acceleration)
         driver_acceleration(ctx)
-        _images(ctx, ctx.acceleration, ctx.a_motion, [scene.driver.link])
         for group in structure.groups:
             _KINDS[group.kind][2](ctx, group)
             _images(ctx, ctx.acceleration, ctx.a_motion, group.links)
@@ -217,14 +215,18 @@ def _extent(scene: Scene) -> float:
     return size if size > 0 and math.isfinite(size) else 1.0
 
 
+def _crank_reach(scene: Scene) -> float:
+    """The crank's largest distance from its pivot to a point of it [m]."""
+    body = scene.bodies[scene.driver.link]
+    pivot = body.points[scene.driver.pivot]
+    return max((abs(z - pivot) for z in body.points.values()), default=0.0)
+
+
 def _provisional_v(ctx: Construction) -> float:
     """A provisional k_v from the driver's data (the plan is redrawn at the final k_v)."""
     driver = ctx.scene.driver
     if isinstance(driver, Crank):
-        body = ctx.scene.bodies[driver.link]
-        pivot = body.points[driver.pivot]
-        reach = max((abs(z - pivot) for z in body.points.values()), default=0.0)
-        return round_scale(abs(driver.omega) * reach)
+        return round_scale(abs(driver.omega) * _crank_reach(ctx.scene))
     return round_scale(abs(driver.velocity))
 
 
@@ -234,10 +236,7 @@ def _provisional_a(ctx: Construction) -> float:
     v = ctx.velocity.largest()
     estimate = v * v / ctx.size
     if isinstance(driver, Crank):
-        body = ctx.scene.bodies[driver.link]
-        pivot = body.points[driver.pivot]
-        reach = max((abs(z - pivot) for z in body.points.values()), default=0.0)
-        estimate = max(estimate, math.hypot(driver.omega**2, driver.epsilon) * reach)
+        estimate = max(estimate, math.hypot(driver.omega**2, driver.epsilon) * _crank_reach(ctx.scene))
     else:
         estimate = max(estimate, abs(driver.acceleration))
     return round_scale(estimate)

@@ -70,13 +70,12 @@ def driver_velocity(ctx: Construction) -> None:
         # v_A ⊥ OA, |v_A| = |ω|·OA: OA turned by 90° in the sense of ω, scaled by |ω| / k
         turn = 1j * driver.omega / plan.k0
         ctx.v_motion[link] = Motion(o, 0j, turn)
-        known = []
         for name in names:
             plan.place(plan.label(name), turn * (ctx.point(link, name) - o), name)
-            known.append(plan.absolute(name))
         first = names[0] if names else driver.pivot
+        known = [plan.absolute(first)] if names else []
         equations = (f"v_{first} = ω{body_label(link)} × {driver.pivot}{first}  (⊥ {driver.pivot}{first}, |ω{body_label(link)}|·{driver.pivot}{first})",)
-        plan.step("driver", equations, known[:1], [], [], plan.label(first))
+        plan.step("driver", equations, known, [], [], plan.label(first))
     else:
         ctx.v_motion[link] = _translation(ctx, plan, driver.velocity, "v")
 
@@ -108,11 +107,10 @@ def driver_acceleration(ctx: Construction) -> None:
             if epsilon != 0.0:
                 tip = tip_n + 1j * epsilon * oa / plan.k0
                 known.append(plan.component(tip_n, tip, "tangential", f"a^t_{first}{pivot}"))
-            plan.place(plan.label(first), tip, first)
-            if epsilon != 0.0:
                 equations = [f"a_{first} = a^n_{first}{pivot} + a^t_{first}{pivot}  (a^n ∥ {first}{pivot}, ω²·{pivot}{first}; a^t ⊥ {pivot}{first}, |ε|·{pivot}{first})"]
             else:
                 equations = [f"a_{first} = a^n_{first}{pivot}  (∥ {first}{pivot}, ω²·{pivot}{first}; ε = 0)"]
+            plan.place(plan.label(first), tip, first)
         else:
             first = driver.pivot
             equations = []

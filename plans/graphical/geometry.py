@@ -35,7 +35,6 @@ __all__ = [
     "circle_circle",
     "circle_line",
     "line_line",
-    "perpendicular",
 ]
 
 #: Two lines whose intersection lies further than this many times the
@@ -72,11 +71,6 @@ class Parallel(Exception):
 def offset(point: complex, origin: complex, direction: complex) -> float:
     """Signed distance of *point* from the line (origin, unit direction), left positive."""
     return ((point - origin) * direction.conjugate()).imag
-
-
-def perpendicular(direction: complex) -> complex:
-    """*direction* turned by +90° (counter-clockwise)."""
-    return 1j * direction
 
 
 def _points(geometry) -> list[complex]:

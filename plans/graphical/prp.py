@@ -31,6 +31,8 @@ from ._dyad import (
     Chain,
     coincident,
     construct_image,
+    coriolis,
+    drawn_coriolis,
     name,
     offset_line,
     pair_lines,
@@ -71,16 +73,16 @@ def _construct(ctx: Construction, group: Group, plan, motions, accelerations: bo
     c = group.inner.point
     C = ctx.point(group.links[0], c)
     chains, equations, slidings = [], [], []
-    for link, known, own, other, prismatic in _sides(ctx, group):
+    for link, known, _, other, prismatic in _sides(ctx, group):
         _, u = ctx.line(other)
-        ck, _, ck_vector = coincident(ctx, plan, known, c, C)
+        ck, ck_vector = coincident(ctx, plan, known, c, C)
         ck_name = name(c, known)
-        sliding = ctx.sliding.get(prismatic.name)
         if accelerations:
-            v_rel = sliding.v_rel.delta * ctx.velocity.k0
-            coriolis = 2j * ctx.omega(known) * v_rel / plan.k0  # aᵏ = 2 ω_K × v_rel
-            chains.append(Chain(ck, ck_vector, [(coriolis, "coriolis", f"a^k_{c}{ck_name}")], u, f"∥ {other.key}", "relative", f"a^r_{c}{ck_name}"))
-            equations.append(sliding_equation("a", c, ck_name, known, other.key, ctx.omega(known) != 0))
+            sliding = ctx.sliding[prismatic.name]
+            w = ctx.omega(known)
+            a_k = coriolis(ctx, w, sliding)  # aᵏ = 2 ω_K × v_rel
+            chains.append(Chain(ck, ck_vector, [(a_k, "coriolis", f"a^k_{c}{ck_name}")], u, f"∥ {other.key}", "relative", f"a^r_{c}{ck_name}"))
+            equations.append(sliding_equation("a", c, ck_name, known, other.key, w != 0))
         else:
             chains.append(Chain(ck, ck_vector, [], u, f"∥ {other.key}", "relative", f"v_{c}{ck_name}"))
             equations.append(sliding_equation("v", c, ck_name, known, other.key))
@@ -91,7 +93,7 @@ def _construct(ctx: Construction, group: Group, plan, motions, accelerations: bo
         motions[link] = Motion(C, pc, motions[known].q)
         if accelerations:
             sliding.a_rel = vec
-            sliding.coriolis = extra[0] if extra else None
+            sliding.coriolis = drawn_coriolis(extra)
         else:
             sliding.v_rel = vec
             ctx.turns_with[link] = known

@@ -35,6 +35,8 @@ from ._dyad import (
     Chain,
     coincident,
     construct_image,
+    coriolis,
+    drawn_coriolis,
     known_point,
     name,
     pair_lines,
@@ -42,6 +44,7 @@ from ._dyad import (
     record_sliding,
     ruler_lines,
     sliding_equation,
+    turning_with,
 )
 from .state import Construction, Motion
 
@@ -61,7 +64,7 @@ def position_rpp(ctx: Construction, group: Group) -> list[dict[str, tuple[float,
     i, j, known, inner_i, inner_j, outer_j, outer_k, b = _parts(ctx, group)
     B = known_point(ctx, group.outer_i)
     k_point, u_k = ctx.line(outer_k)
-    phi_j = cmath.phase(u_k) - outer_j.angle
+    phi_j = turning_with(outer_j, cmath.phase(u_k))
     phi_i = phi_j + inner_j.angle - inner_i.angle
     pose_i = pose_from(B, ctx.local(i, b), phi_i)
     i_point = pose_i[1] + cmath.exp(1j * phi_i) * inner_i.origin  # i's line on the mechanism
@@ -79,7 +82,7 @@ def _construct(ctx: Construction, group: Group, plan, motions, accelerations: bo
     i, j, known, inner_i, inner_j, outer_j, outer_k, b = _parts(ctx, group)
     B = ctx.point(i, b)
     pb = plan.images[plan.label(b)]
-    bk, _, bk_vector = coincident(ctx, plan, known, b, B)
+    bk, bk_vector = coincident(ctx, plan, known, b, B)
     bj, bk_name = name(b, j), name(b, known)
     _, u_i = ctx.line(inner_i)
     _, u_k = ctx.line(outer_k)
@@ -87,8 +90,7 @@ def _construct(ctx: Construction, group: Group, plan, motions, accelerations: bo
     if accelerations:
         w = ctx.omega(known)  # i, j and K turn together
         s_in, s_out = ctx.sliding[inner.name], ctx.sliding[outer.name]
-        cor_in = 2j * w * s_in.v_rel.delta * ctx.velocity.k0 / plan.k0
-        cor_out = 2j * w * s_out.v_rel.delta * ctx.velocity.k0 / plan.k0
+        cor_in, cor_out = coriolis(ctx, w, s_in), coriolis(ctx, w, s_out)  # aᵏ = 2 ω × v_rel
         chains = (
             Chain(pb, plan.absolute(b), [(cor_in, "coriolis", f"a^k_{bj}{b}")], u_i, f"∥ {inner_i.key}", "relative", f"a^r_{bj}{b}"),
             Chain(bk, bk_vector, [(cor_out, "coriolis", f"a^k_{bj}{bk_name}")], u_k, f"∥ {outer_k.key}", "relative", f"a^r_{bj}{bk_name}"),
@@ -108,8 +110,8 @@ def _construct(ctx: Construction, group: Group, plan, motions, accelerations: bo
     motions[i] = Motion(B, pb, q)
     motions[j] = Motion(B, p_bj, q)
     if accelerations:
-        s_in.a_rel, s_in.coriolis = rel_in, (drawn[0][0] if drawn[0] else None)
-        s_out.a_rel, s_out.coriolis = rel_out, (drawn[1][0] if drawn[1] else None)
+        s_in.a_rel, s_in.coriolis = rel_in, drawn_coriolis(drawn[0])
+        s_out.a_rel, s_out.coriolis = rel_out, drawn_coriolis(drawn[1])
     else:
         ctx.turns_with[i] = known
         ctx.turns_with[j] = known

@@ -32,7 +32,19 @@ import cmath
 from ..errors import SingularPositionError
 from ..structure import Group
 from . import geometry
-from ._dyad import Chain, construct_image, known_point, name, pair_lines, pose_from, record_sliding, sliding_equation, unit
+from ._dyad import (
+    Chain,
+    construct_image,
+    coriolis,
+    drawn_coriolis,
+    known_point,
+    name,
+    pair_lines,
+    pose_from,
+    record_sliding,
+    sliding_equation,
+    unit,
+)
 from .state import Construction, Motion, _Rotation
 
 __all__ = ["position_rpr", "velocity_rpr", "acceleration_rpr"]
@@ -47,6 +59,27 @@ def _parts(ctx: Construction, group: Group):
     return i, j, line_i, line_j, group.outer_i.point, group.outer_j.point
 
 
+def _too_close(b: str, e: str, be: complex, delta: float) -> str:
+    return (
+        f"the pivots {b} and {e} are |{b}{e}| = {abs(be):.6g} m apart, less than the offset "
+        f"|h| = {abs(delta):.6g} m of the line from them (gap {abs(delta) - abs(be):.3g} m)"
+    )
+
+
+def _along(foot: complex, drawn_b: complex, drawn_e: complex, delta: float, sign: int) -> complex:
+    """The line's direction u of branch *sign*, from its foot P (drawing units).
+
+    The line runs through P and E, and P − B = iδ·u (B's perpendicular), so
+    u is ±unit(E − P) and also −i·unit(P − B)·sign δ: taken from the longer
+    of the tangent PE and the radius BP, the better-drawn direction.  At a
+    tangent position (|BE| = |δ|: P = E, a dead centre) only BP has one.
+    """
+    tangent, radius = drawn_e - foot, foot - drawn_b
+    if abs(tangent) >= abs(radius):
+        return sign * unit(tangent)
+    return (-1j if delta > 0 else 1j) * unit(radius)
+
+
 def position_rpr(ctx: Construction, group: Group) -> list[dict[str, tuple[float, complex]]]:
     """Both assemblies, branch +1 (u·(E − B) > 0) first."""
     i, j, line_i, line_j, b, e = _parts(ctx, group)
@@ -56,25 +89,25 @@ def position_rpr(ctx: Construction, group: Group) -> list[dict[str, tuple[float,
     h_j = geometry.offset(Ej, line_j.origin, line_j.direction)
     delta = h_j - h_i  # signed distance of E from the line through B, left of u
     be = E - B
-    if abs(be) <= abs(delta) or be == 0:
-        raise ctx.assembly_error(
-            group.name,
-            f"the pivots {b} and {e} are |{b}{e}| = {abs(be):.6g} m apart, less than the offset "
-            f"|h| = {abs(delta):.6g} m of the line from them (gap {abs(delta) - abs(be):.3g} m)",
-        )
+    if be == 0:
+        raise ctx.assembly_error(group.name, _too_close(b, e, be, delta))
     if abs(delta) <= NO_OFFSET * abs(be):
         directions = [unit(be), -unit(be)]
     else:
         # foot of the perpendicular from B on the line: on the circle (B, |δ|) and on the Thales circle on BE
+        # (the two touch, to rounding, when |BE| = |δ|: the line ⊥ BE through E, a dead centre)
+        drawn_b = ctx.drawn(B)
         try:
             left, right = geometry.circle_circle(
-                ctx.drawn(B), ctx.mm(abs(delta)), ctx.drawn((B + E) / 2), ctx.mm(abs(be) / 2), ctx.arc_segments
+                drawn_b, ctx.mm(abs(delta)), ctx.drawn((B + E) / 2), ctx.mm(abs(be) / 2), ctx.arc_segments
             )
         except geometry.Miss:
+            if abs(be) < abs(delta):
+                raise ctx.assembly_error(group.name, _too_close(b, e, be, delta)) from None
             raise ctx.assembly_error(group.name, f"the tangent from {e} to the circle of radius {abs(delta):.6g} m about {b} does not exist") from None
         plus, minus = (left, right) if delta > 0 else (right, left)
         drawn_e = ctx.drawn(E)
-        directions = [unit(drawn_e - plus), -unit(drawn_e - minus)]
+        directions = [_along(plus, drawn_b, drawn_e, delta, 1), _along(minus, drawn_b, drawn_e, delta, -1)]
     out = []
     for u in directions:
         angle = cmath.phase(u)
@@ -118,11 +151,10 @@ def acceleration_rpr(ctx: Construction, group: Group) -> None:
     sliding = ctx.sliding[group.inner.prismatic.name]
     w = ctx.omega(i)
     normal = w * w * (B - E) / plan.k0
-    v_rel = sliding.v_rel.delta * ctx.velocity.k0  # v_EiEj [m/s], measured on the velocity plan
-    coriolis = 2j * w * v_rel / plan.k0  # aᵏ = 2 ω × v_EiEj
+    a_k = coriolis(ctx, w, sliding)  # aᵏ = 2 ω × v_EiEj
     chains = (
         Chain(pb, plan.absolute(b), [(normal, "normal", f"a^n_{ei}{b}")], 1j * unit(E - B), f"⊥ {b}{e}", "tangential", f"a^t_{ei}{b}"),
-        Chain(pe, plan.absolute(e), [(coriolis, "coriolis", f"a^k_{ei}{ej}")], u, f"∥ {line_i.key}", "relative", f"a^r_{ei}{ej}"),
+        Chain(pe, plan.absolute(e), [(a_k, "coriolis", f"a^k_{ei}{ej}")], u, f"∥ {line_i.key}", "relative", f"a^r_{ei}{ej}"),
     )
     equations = [
         f"a_{ei} = a_{b} + a^n_{ei}{b} + a^t_{ei}{b}  (a^n ∥ {e}{b}, a^t ⊥ {b}{e})",
@@ -135,4 +167,4 @@ def acceleration_rpr(ctx: Construction, group: Group) -> None:
     ctx.a_motion[j] = Motion(E, pe, q)
     ctx.epsilon_from[i] = _Rotation(tangential, B, E)
     sliding.a_rel = a_rel
-    sliding.coriolis = drawn[1][0] if drawn[1] else None
+    sliding.coriolis = drawn_coriolis(drawn[1])

@@ -33,6 +33,8 @@ from ._dyad import (
     angle_of,
     coincident,
     construct_image,
+    coriolis,
+    drawn_coriolis,
     known_point,
     name,
     offset_line,
@@ -86,7 +88,7 @@ def velocity_rrp(ctx: Construction, group: Group) -> None:
     B, C = ctx.point(i, b), ctx.point(i, c)
     _, u = ctx.line(other)
     pb = plan.images[plan.label(b)]
-    ck, ck_label, ck_vector = coincident(ctx, plan, known, c, C)
+    ck, ck_vector = coincident(ctx, plan, known, c, C)
     ck_name = name(c, known)
     chains = (
         Chain(pb, plan.absolute(b), [], 1j * unit(C - B), f"⊥ {b}{c}", "relative", f"v_{c}{b}"),
@@ -108,16 +110,15 @@ def acceleration_rrp(ctx: Construction, group: Group) -> None:
     B, C = ctx.point(i, b), ctx.point(i, c)
     _, u = ctx.line(other)
     pb = plan.images[plan.label(b)]
-    ck, ck_label, ck_vector = coincident(ctx, plan, known, c, C)
+    ck, ck_vector = coincident(ctx, plan, known, c, C)
     ck_name = name(c, known)
     sliding = ctx.sliding[group.outer_j.prismatic.name]
     w_i, w_k = ctx.omega(i), ctx.omega(known)
     n_cb = w_i * w_i * (B - C) / plan.k0
-    v_rel = sliding.v_rel.delta * ctx.velocity.k0  # v_CCK [m/s], measured on the velocity plan
-    coriolis = 2j * w_k * v_rel / plan.k0  # aᵏ = 2 ω_K × v_CCK
+    a_k = coriolis(ctx, w_k, sliding)  # aᵏ = 2 ω_K × v_CCK
     chains = (
         Chain(pb, plan.absolute(b), [(n_cb, "normal", f"a^n_{c}{b}")], 1j * unit(C - B), f"⊥ {b}{c}", "tangential", f"a^t_{c}{b}"),
-        Chain(ck, ck_vector, [(coriolis, "coriolis", f"a^k_{c}{ck_name}")], u, f"∥ {other.key}", "relative", f"a^r_{c}{ck_name}"),
+        Chain(ck, ck_vector, [(a_k, "coriolis", f"a^k_{c}{ck_name}")], u, f"∥ {other.key}", "relative", f"a^r_{c}{ck_name}"),
     )
     equations = [
         f"a_{c} = a_{b} + a^n_{c}{b} + a^t_{c}{b}  (a^n_{c}{b} ∥ {c}{b}, a^t_{c}{b} ⊥ {b}{c})",
@@ -128,4 +129,4 @@ def acceleration_rrp(ctx: Construction, group: Group) -> None:
     ctx.a_motion[j] = Motion(C, pc, ctx.a_motion[known].q)
     ctx.epsilon_from[i] = _Rotation(t_cb, B, C)
     sliding.a_rel = a_rel
-    sliding.coriolis = drawn[1][0] if drawn[1] else None
+    sliding.coriolis = drawn_coriolis(drawn[1])
