@@ -392,3 +392,32 @@ B = 1
     assert np.allclose(B.v.real, v_B, rtol=0, atol=EXACT_REL * np.max(np.abs(v_B)))
     assert np.allclose(B.a.real, a_B, rtol=0, atol=EXACT_REL * np.max(np.abs(a_B)))
     assert np.max(np.abs(B.r - (r * np.cos(phis) + l * np.cos(theta)))) <= EXACT_REL * l
+
+
+@pytest.mark.parametrize(
+    "name, old, new, points",
+    [
+        ("wedge", 'angle = "90 deg"', 'angle = "30 deg"', ["C"]),  # the follower's guide along the incline
+        ("scotch-yoke", 'slot = { through = "Y", angle = "90 deg" }', 'slot = { through = "Y", angle = 0 }', ["Y", "R"]),  # slot ∥ rail
+    ],
+)
+def test_allow_partial_gives_nan_not_infinite_rates_where_a_prp_or_rpp_has_parallel_guides(name, old, new, points):
+    """PRP and RPP at a dead centre are not assembled: positions and rates are NaN, none of them ±∞."""
+    text = example_path(name).read_text(encoding="utf-8")
+    assert old in text
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no numpy warning may leak
+        solution = solve(loads(text.replace(old, new)), np.linspace(0.0, 0.05, 3), allow_partial=True)
+    assert not solution.valid.any()
+    values = {f"{point}.{field}": getattr(solution.points[point], field) for point in points for field in ("r", "v", "a")}
+    for slider, motion in solution.sliders.items():
+        values.update({f"{slider}.{field}": getattr(motion, field) for field in ("s", "v_rel", "a_rel", "coriolis")})
+    values.update({f"{group}.condition": value for group, value in solution.conditions.items()})
+    for label, value in values.items():
+        value = np.asarray(value)
+        assert np.all(np.isnan(value.real)) and (np.isrealobj(value) or np.all(np.isnan(value.imag))), label
+    for motion in list(solution.points.values()) + list(solution.origins.values()):
+        for value in (motion.r, motion.v, motion.a):
+            assert not np.isinf(value.real).any() and not np.isinf(value.imag).any()
+    for motion in solution.links.values():
+        assert not any(np.isinf(value).any() for value in (motion.phi, motion.omega, motion.epsilon))

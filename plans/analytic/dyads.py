@@ -98,12 +98,14 @@ class DyadSolution:
     assembled : bool array (N,)
         The position exists.
     singular : bool array (N,)
-        Assembled, but at a dead centre (construction lines parallel).
+        At a dead centre (construction lines parallel): the velocities do not
+        exist.  RRR, RRP, RPR are assembled there; PRP and RPP, whose
+        position is solved with the same matrix, are not assembled either.
     sine : float array (N,)
         |sin| of the angle between the two construction lines.
     condition : float array (N,)
         Condition number of the velocity matrix with unit columns
-        (:func:`~plans.analytic.kinematics.condition_number`).
+        (:func:`_diagnose`; see :mod:`plans.limits`).
     measures : dict[str, numpy.ndarray or float]
         The lengths that decide the assembly, for messages [m]; a length of
         the links themselves is a float.
@@ -208,11 +210,13 @@ def _diagnose(assembled, c1, c2, det, norms=None, positions_need_matrix=False):
 
     ``det`` is ``cross(c1, c2)`` and ``norms``, if known, ``|c1|·|c2|``
     (each dyad has them already: computing them again cost a fifth of
-    the dyad).  The sine and the condition number are those of
-    :func:`~plans.analytic.kinematics.construction_sine` and
-    :func:`~plans.analytic.kinematics.condition_number`::
+    the dyad).  The sine of the angle between the columns, and the
+    condition number of the 2×2 matrix with its columns scaled to unit
+    length (independent of the unit system; see :mod:`plans.limits`)::
 
         sin γ = |c1 × c2| / (|c1| |c2|),   cond = (1 + |c1 · c2| / (|c1| |c2|)) / sin γ
+
+    1 and 1 for perpendicular columns; 0 and ∞ at a dead centre.
 
     With ``positions_need_matrix`` (PRP, RPP: the position is solved with the
     same matrix) a singular position is not assembled either.
@@ -583,6 +587,7 @@ def solve_prp(
 
     C_gi, C_gj = guide_i.point_at(C), guide_j.point_at(C)
     ti_dot, tj_dot = solve_real_2x2(c1, c2, C_gj.v - C_gi.v, det)
+    ti_dot, tj_dot = _nan_where(singular, ti_dot, tj_dot)
     rhs = (
         C_gj.a
         + coriolis_acceleration(guide_j.omega, tj_dot * u_j)
@@ -590,6 +595,7 @@ def solve_prp(
         - coriolis_acceleration(guide_i.omega, ti_dot * u_i)
     )
     ti_ddot, _tj_ddot = solve_real_2x2(c1, c2, rhs, det)
+    (ti_ddot,) = _nan_where(singular, ti_ddot)
     v_rel, a_rel = ti_dot * u_i, ti_ddot * u_i
     C_state = PointState(C, sliding_velocity(C_gi.v, v_rel), sliding_acceleration(C_gi.a, guide_i.omega, v_rel, a_rel))
     phi_i, turn_i = _turned(guide_i, delta_i)
@@ -670,17 +676,19 @@ def solve_rpp(
     u_n = guide.direction(alpha_n + delta_o)
     c1, c2 = u_g, u_n
     det = cross(c1, c2)
-    t_o, t_n = solve_real_2x2(c1, c2, B.r - P0, det)
+    _t_o, t_n = solve_real_2x2(c1, c2, B.r - P0, det)
     known = np.isfinite(c1) & np.isfinite(c2) & np.isfinite(B.r - P0)
     assembled, singular, sine, condition = _diagnose(known, c1, c2, det, positions_need_matrix=True)
     measures = {}
-    t_o, t_n = _nan_where(~assembled, t_o, t_n)
+    (t_n,) = _nan_where(~assembled, t_n)
 
     B_g = guide.point_at(B.r)
     to_dot, tn_dot = solve_real_2x2(c1, c2, B.v - B_g.v, det)
+    to_dot, tn_dot = _nan_where(singular, to_dot, tn_dot)
     v_rel_o, v_rel_n = to_dot * u_g, tn_dot * u_n
     rhs = B.a - B_g.a - coriolis_acceleration(guide.omega, v_rel_o + v_rel_n)
-    to_ddot, tn_ddot = solve_real_2x2(c1, c2, rhs, det)
+    _to_ddot, tn_ddot = solve_real_2x2(c1, c2, rhs, det)
+    (tn_ddot,) = _nan_where(singular, tn_ddot)
     a_rel_n = tn_ddot * u_n
 
     phi_j, turn_j = _turned(guide, delta_o)

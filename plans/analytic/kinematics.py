@@ -44,8 +44,6 @@ __all__ = [
     "cross",
     "dot",
     "solve_real_2x2",
-    "construction_sine",
-    "condition_number",
     "track_in_guide",
     "unit_vector",
     "is_number",
@@ -161,29 +159,6 @@ def solve_real_2x2(c1, c2, rhs, det=None):
     return cross(rhs, c2) / det, cross(c1, rhs) / det
 
 
-def construction_sine(c1, c2):
-    """|sin| of the angle between the two columns (the plan's construction lines).
-
-    1 when they are perpendicular, 0 at a dead centre (NaN if a column is zero).
-    """
-    return np.abs(cross(c1, c2)) / (np.abs(c1) * np.abs(c2))
-
-
-def condition_number(c1, c2):
-    """2-norm condition number of the 2×2 matrix with the columns scaled to unit length.
-
-    Scaling the columns makes the number independent of the unit system
-    (a column of a slider travel is dimensionless, one of a rotation is a
-    length): with γ the angle between the construction lines it is
-    ``sqrt((1 + |cos γ|) / (1 − |cos γ|))``: 1 for perpendicular lines,
-    ∞ at a dead centre.
-    """
-    cos = np.abs(dot(c1, c2)) / (np.abs(c1) * np.abs(c2))
-    sin = np.abs(cross(c1, c2)) / (np.abs(c1) * np.abs(c2))
-    # (1 + |cos|)/|sin| == sqrt((1 + |cos|)/(1 − |cos|)) without cancellation near 1
-    return (1.0 + cos) / sin
-
-
 def unit_vector(angle):
     """``e^{iθ}``, the unit vector at angle θ, as ``cos θ + i·sin θ``.
 
@@ -246,11 +221,6 @@ def _all_finite(*values) -> bool:
     return all(np.isfinite(value if is_number(value) else value.sum()) for value in values)
 
 
-def _take(x, index):
-    """x at the given positions; a number (the same at every position) as it is."""
-    return x if is_number(x) else x[index]
-
-
 @dataclass(frozen=True, eq=False)
 class PointState:
     """Position r [m], velocity v [m/s], acceleration a [m/s²] of a point: complex arrays (N,).
@@ -263,10 +233,6 @@ class PointState:
     r: np.ndarray
     v: np.ndarray
     a: np.ndarray
-
-    def take(self, index) -> "PointState":
-        """The states at the given positions (an index array or slice)."""
-        return PointState(_take(self.r, index), _take(self.v, index), _take(self.a, index))
 
 
 @dataclass(frozen=True, eq=False)
@@ -288,27 +254,16 @@ class BodyState:
     epsilon: np.ndarray
     origin: PointState
 
-    def take(self, index) -> "BodyState":
-        """The states at the given positions (an index array or slice)."""
-        state = BodyState(_take(self.phi, index), _take(self.omega, index), _take(self.epsilon, index), self.origin.take(index))
-        if "turn" in self.__dict__:
-            state.__dict__["turn"] = _take(self.turn, index)
-        return state
-
     @classmethod
-    def resting(cls, n: int | None = None) -> "BodyState":
+    def resting(cls) -> "BodyState":
         """The frame: φ = 0, origin at 0, nothing moves.
 
-        Without *n* every quantity is a plain zero, the same at every
-        position (:attr:`at_rest`); with *n*, arrays of n zeros.
+        Every quantity is a plain zero, the same at every position
+        (:attr:`at_rest`).
         """
-        if n is None:
-            state = cls(0.0, 0.0, 0.0, PointState(0j, 0j, 0j))
-            state.__dict__.update(at_rest=True, turn=1 + 0j)
-            return state
-        zero = np.zeros(n)
-        zero_c = np.zeros(n, dtype=complex)
-        return cls(zero, zero, zero, PointState(zero_c, zero_c, zero_c))
+        state = cls(0.0, 0.0, 0.0, PointState(0j, 0j, 0j))
+        state.__dict__.update(at_rest=True, turn=1 + 0j)
+        return state
 
     @classmethod
     def from_point(cls, phi, omega, epsilon, point: PointState, z: complex, turn=None) -> "BodyState":
