@@ -61,3 +61,9 @@ def __getattr__(name: str):
 
         return write_drawings
     raise AttributeError(f"module 'plans' has no attribute {name!r}")
+
+
+# notebook display of graphical results (plans.notebook); nothing happens outside IPython
+from .notebook import register as _register_notebook_display  # noqa: E402
+
+_register_notebook_display()

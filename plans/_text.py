@@ -1,12 +1,15 @@
 """Text helpers shared by the drawings and the handout (no matplotlib here).
 
 * :data:`SUBSCRIPT` — the ``str.translate`` table of the digits to subscript digits;
-* :func:`subscript` — a link's name as the subscript of a symbol: ``"3"`` → ``"₃"``, ``"rod"`` → ``"_rod"``.
+* :func:`subscript` — a link's name as the subscript of a symbol: ``"3"`` → ``"₃"``, ``"rod"`` → ``"_rod"``;
+* :func:`user_text` — text a user typed (a title) made safe to draw as plain text.
 """
 
 from __future__ import annotations
 
-__all__ = ["SUBSCRIPT", "subscript"]
+import unicodedata
+
+__all__ = ["SUBSCRIPT", "subscript", "user_text"]
 
 #: Digits to subscript digits, for :meth:`str.translate`.
 SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
@@ -15,3 +18,25 @@ SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 def subscript(name: str) -> str:
     """*name* as the subscript of a symbol: subscript digits for a number (``"3"`` → ``"₃"``), else ``"_name"``."""
     return name.translate(SUBSCRIPT) if name.isdigit() else f"_{name}"
+
+
+def user_text(text) -> str:
+    """*text* (a title, a name) as plain text for a drawing: never read as math, nothing invisible.
+
+    Unicode NFC; format characters (a byte-order mark U+FEFF, zero-width
+    joiners, direction marks) removed; control characters (tabs, newlines)
+    become spaces, runs of spaces one; every ``$`` escaped as ``\\$``, which
+    matplotlib draws as a literal dollar sign and never passes to its math
+    parser.
+
+    >>> user_text("\\ufeffPump   $\\\\alpha$\\n")
+    'Pump \\\\$\\\\alpha\\\\$'
+    """
+    text = unicodedata.normalize("NFC", str(text))
+    out = []
+    for ch in text:
+        category = unicodedata.category(ch)
+        if category == "Cf":
+            continue
+        out.append(" " if category in ("Cc", "Zl", "Zp") else ch)
+    return " ".join("".join(out).split()).replace("$", r"\$")

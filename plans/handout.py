@@ -323,7 +323,8 @@ def handout_pages(
     ``diagram-points``, ``diagram-sliders``.  Arguments as :func:`write_handout`.
     """
     from .drawing.diagrams import draw_cycle_diagrams
-    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, position_page_excess, scale_line, stamp_page_number
+    from .drawing.layout import stamp_page_number
+    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_excess, scale_line
     from .loops import loop_equations
     from .positions import run_positions
 
@@ -361,7 +362,7 @@ def handout_pages(
             pages.append(("cover", draw_cover_page(run, lang=lang, header_lines=data + ["§" + formula, scale_line(run.scales, lang)], positions_lines=listing, footer=footer, k_l=_cover_scale(run, math.ceil(len(listing) / 3)))))
     for r in run.runs:
         if not r.ok:
-            pages.append((f"unsolved-{r.index}", _unsolved_page(r, lang, where(r), str(r.error), footer)))
+            pages.append((f"unsolved-{r.index}", draw_unsolved_page(r, lang=lang, where=where(r), message=str(r.error), footer=footer)))
             continue
         pages.append((f"position-{r.index}", front(r, run, False)))
         check_head = ["§" + where(r), formula]
@@ -377,21 +378,6 @@ def handout_pages(
     for number, (_, fig) in enumerate(pages, start=1):
         stamp_page_number(fig, number, total, lang)
     return pages
-
-
-def _unsolved_page(run, lang: str, where: str, message: str, footer: str):
-    from .drawing.sheets import A4, PAGE_MARGIN, _footer, _header, _page
-    from .drawing.svg import drawing_rc
-
-    with drawing_rc():
-        fig, sketch = _page(A4)
-        top = _header(sketch, A4, run.scene.title, ["§" + where])
-        import textwrap
-
-        for k, line in enumerate(textwrap.wrap(f"{term('not_solved', lang)}: {message}", 110)):
-            sketch.text(complex(PAGE_MARGIN, top - 5 - 4.5 * k), line, size=8.5, ha="left", gid="unsolved", obstacle=False)
-        _footer(sketch, footer)
-    return fig
 
 
 def write_handout(

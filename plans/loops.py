@@ -79,6 +79,12 @@ def _paren(x: float) -> str:
     return f"({text})" if text.startswith("-") else text
 
 
+def _power_base(x: float) -> str:
+    """*x* as the base of a power: bracketed when negative or in powers of ten (``(5\\cdot10^{4})^2``)."""
+    text = _num(x)
+    return f"({text})" if text.startswith("-") or "^" in text else text
+
+
 def _cplx(z: complex, alone: bool = False) -> str:
     z = complex(z)
     re_, im = z.real, z.imag
@@ -218,7 +224,7 @@ def _numeric(term, stage: int) -> str:
             w = _omega(term.body) if term.unknown else _paren(term.omega)
             return rf"i{w}\cdot{e}"
         eps = _eps(term.body) if term.unknown else _paren(term.epsilon)
-        return rf"(i{eps} - {_paren(term.omega)}^2)\cdot{e}"
+        return rf"(i{eps} - {_power_base(term.omega)}^2)\cdot{e}"
     angle = _phi_symbol(term.body, term.alpha) if (stage == 0 and term.angle_unknown) else _deg(term.phi + term.alpha)
     e = rf"e^{{i\,{angle}}}"
     n = term.name
@@ -232,7 +238,7 @@ def _numeric(term, stage: int) -> str:
     eps = _eps(term.body) if term.angle_unknown else _paren(term.epsilon)
     return (
         rf"{_ds(n, 2)}\,{e} + 2i\cdot{_paren(term.omega)}\cdot{_paren(term.v_rel)}\,{e}"
-        rf" + (i{eps} - {_paren(term.omega)}^2)\cdot{_paren(term.s)}\,{e}"
+        rf" + (i{eps} - {_power_base(term.omega)}^2)\cdot{_paren(term.s)}\,{e}"
     )
 
 

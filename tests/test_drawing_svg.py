@@ -16,6 +16,7 @@ import pytest
 import drawing_fixtures as F
 from plans.drawing import draw_mechanism, draw_plan, write_drawings
 from plans.drawing import sheet as sheet_module
+from plans.drawing import layout as layout_module
 from plans.drawing.mechanism import mechanism_labels
 from plans.drawing.svg import render_svg, svg_size_mm
 
@@ -214,7 +215,7 @@ def test_sheet_has_title_formula_equations_and_table(tmp_path):
     for cell in table[0] + table[1]:
         assert cell in found
     width, height = svg_size_mm((tmp_path / "sheet.svg").read_bytes())
-    assert (round(width), round(height)) in {(w, h) for page in sheet_module.PAGES.values() for w, h in (page, page[::-1])}
+    assert (round(width), round(height)) in {(w, h) for page in layout_module.PAGES.values() for w, h in (page, page[::-1])}
 
 
 def test_sheet_equations_default_to_the_plan_steps():

@@ -10,6 +10,7 @@ import pytest
 from matplotlib.figure import Figure
 
 import plans
+from plans import notebook
 from plans.positions import Diagrams, run_positions
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -24,19 +25,19 @@ def _texts(svg: str) -> list[str]:
     return ["".join(t.itertext()) for t in ET.fromstring(svg.encode("utf-8")).iter(f"{SVG}text")]
 
 
-def test_a_plan_displays_itself_and_plots_into_a_given_axes(graphical):
-    texts = _texts(graphical.velocity_plan._repr_svg_())
+def test_a_plan_displays_as_svg_and_plots_into_a_given_axes(graphical):
+    texts = _texts(notebook.svg(graphical.velocity_plan))
     assert "Velocity plan" in texts and "p" in texts  # the heading and the pole
     ax = Figure().add_subplot()
-    artists = graphical.acceleration_plan.plot(ax, lang="bg")
+    artists = notebook.plot(graphical.acceleration_plan, ax, lang="bg")
     assert artists and all(a.axes is ax for a in artists)
     assert "План на ускоренията" in [t.get_text() for t in ax.texts]
 
 
 def test_a_graphical_solution_shows_its_sheet_and_saves_it_as_pdf(graphical, tmp_path):
-    texts = _texts(graphical._repr_svg_())
+    texts = _texts(notebook.svg(graphical))
     assert "Mechanism" in texts and "Velocity plan" in texts and "Acceleration plan" in texts
-    path = graphical.save(tmp_path / "sheet.pdf", lang="sl")
+    path = notebook.save(graphical, tmp_path / "sheet.pdf", lang="sl")
     reader = pypdf.PdfReader(path)
     assert len(reader.pages) == 1 and "Načrt hitrosti" in reader.pages[0].extract_text()
 
@@ -53,3 +54,23 @@ def test_runs_and_their_diagrams_display_themselves():
     assert np.allclose(curves[0].get_ydata(), np.abs(run.cycle.points["A"].v))
     with pytest.raises(ValueError, match="no diagram of 'jerk'"):
         diagrams.plot("jerk")
+
+
+class _Formatter:
+    def __init__(self):
+        self.named = []
+
+    def for_type_by_name(self, module, name, function):
+        self.named.append((module, name, function))
+
+
+def test_ipython_is_told_to_show_solutions_and_plans_as_svg(graphical):
+    formatter = _Formatter()
+    shell = type("Shell", (), {})()
+    shell.display_formatter = type("DisplayFormatter", (), {"formatters": {"image/svg+xml": formatter}})()
+    assert notebook.register(shell)
+    named = {(module, name): function for module, name, function in formatter.named}
+    # the names registered are where the classes really live
+    assert set(named) == {(type(graphical).__module__, "GraphicalSolution"), (type(graphical.velocity_plan).__module__, "Plan")}
+    assert "Velocity plan" in _texts(named[(type(graphical).__module__, "Plan")](graphical.velocity_plan))
+    assert notebook.register() is False or "IPython" in __import__("sys").modules  # no shell outside IPython

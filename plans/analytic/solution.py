@@ -156,7 +156,7 @@ class AnalyticSolution:
         index = np.atleast_1d(np.arange(len(self))[k])
 
         def cut(x):
-            return _frozen(np.asarray(x)[index])  # fancy indexing copies
+            return frozen(np.asarray(x)[index])  # fancy indexing copies
 
         return AnalyticSolution(
             scene=self.scene,
@@ -174,7 +174,7 @@ class AnalyticSolution:
         )
 
 
-def _frozen(array: np.ndarray) -> np.ndarray:
+def frozen(array: np.ndarray) -> np.ndarray:
     """A read-only view of an array the solver owns."""
     view = np.asarray(array).view()
     view.setflags(write=False)

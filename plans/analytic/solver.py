@@ -26,7 +26,7 @@ from ..scene import FRAME, Crank, Line, Scene
 from ..structure import Group, Joint, Structure, find_structure
 from .dyads import DyadSolution, solve_prp, solve_rpp, solve_rpr, solve_rrp, solve_rrr
 from .kinematics import BodyState, PointState, coriolis_acceleration, dot, is_number
-from .solution import AnalyticSolution, LinkMotion, PointMotion, SliderMotion, _frozen
+from .solution import AnalyticSolution, LinkMotion, PointMotion, SliderMotion, frozen
 
 __all__ = ["solve", "driver_position", "CHUNK"]
 
@@ -700,7 +700,7 @@ def _solution(plan: _Plan, driver: np.ndarray, columns: list[np.ndarray], warn_c
     column = iter(columns)
 
     def take():
-        return _frozen(next(column))
+        return frozen(next(column))
 
     links, poses, origins = {}, {}, {}
     for name in plan.bodies:
@@ -724,7 +724,7 @@ def _solution(plan: _Plan, driver: np.ndarray, columns: list[np.ndarray], warn_c
     return AnalyticSolution(
         scene=plan.scene,
         structure=plan.structure,
-        driver=_frozen(driver),
+        driver=frozen(driver),
         links=links,
         points=points,
         sliders=sliders,

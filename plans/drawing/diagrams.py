@@ -30,9 +30,9 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from .._files import replace_all
-from .._text import subscript
+from .._text import subscript, user_text
 from ..i18n import term
-from .sheets import A4
+from .layout import A4
 from .svg import drawing_rc
 
 __all__ = ["NEAR_DEAD_CENTRE", "QUANTITIES", "draw_cycle_diagrams", "write_cycle_diagrams", "plot_cycle", "cycle_axis"]
@@ -191,7 +191,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     out = []
     with drawing_rc():
         # links
-        fig, axes = _page(title, scene.title + "\n" + term('links_motion', lang), 3 if scene.accelerations else 2)
+        fig, axes = _page(title, user_text(scene.title) + "\n" + term('links_motion', lang), 3 if scene.accelerations else 2)
         _plot_series(axes[0], x, _series(analytic, "phi", valid), f"φ [°]\n({term('angle', lang)})")
         _plot_series(axes[1], x, _series(analytic, "omega", valid), f"ω [rad/s]\n({term('angular_velocity', lang)})")
         if scene.accelerations:
@@ -202,7 +202,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         # points
         points = [p for p in scene.report if p in analytic.points]
         rows = (2 if scene.accelerations else 1) * (3 if components else 1)
-        fig, axes = _page(title, scene.title + "\n" + term('points_motion', lang), rows)
+        fig, axes = _page(title, user_text(scene.title) + "\n" + term('points_motion', lang), rows)
         k = 0
         _plot_series(axes[k], x, _series(analytic, "v", valid), f"|v| [m/s]\n({term('velocity', lang)})")
         k += 1
@@ -223,7 +223,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         pairs = [p.name for p in scene.prismatics if p.name in analytic.sliders]
         if pairs:
             rows = 4 if scene.accelerations else 2
-            fig, axes = _page(title, scene.title + "\n" + term('sliders_motion', lang), rows)
+            fig, axes = _page(title, user_text(scene.title) + "\n" + term('sliders_motion', lang), rows)
             _plot_series(axes[0], x, _series(analytic, "s", valid), f"s [mm]\n({term('travel', lang)})")
             _plot_series(axes[1], x, _series(analytic, "v_rel", valid), f"v_rel [m/s]\n({term('relative_velocity_short', lang)})")
             if scene.accelerations:

@@ -9,27 +9,22 @@ portrait) that holds them, or a larger custom page when even A0 does not.
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
-from matplotlib.mathtext import MathTextParser
-
-from ._canvas import Sketch, fit_axes, text_size
-from .mechanism import _Mechanism
-from .plan_drawing import _draw as _draw_plan_into
-from ..i18n import term
-from .style import HEADING_PT, MARGIN_MM, SMALL_PT, TITLE_PT
-from .svg import drawing_rc, new_figure, render_svg
 from .._files import replace_all
+from .._text import user_text
+from ..i18n import term
+from ._canvas import Sketch
+from .blocks import drawing_block, pretty_equation, rows_block, table_block
+from .layout import choose_page
+from .style import HEADING_PT, TITLE_PT
+from .svg import drawing_rc, new_figure, render_svg
 
-__all__ = ["draw_sheet", "write_drawings", "sheet_equations", "translate_table", "PAGES"]
+__all__ = ["draw_sheet", "write_drawings", "sheet_equations", "translate_table", "label_driver"]
 
-#: ISO 216 pages [mm], landscape; portrait is tried as well.
-PAGES = {"A4": (297.0, 210.0), "A3": (420.0, 297.0), "A2": (594.0, 420.0), "A1": (841.0, 594.0), "A0": (1189.0, 841.0)}
 PAGE_MARGIN = 12.0  # mm
 GAP = 8.0  # mm between blocks
 EQ_PT = 8.5
-TABLE_PT = SMALL_PT + 0.5
 SHEET_LINE_GAP = 1.5  # mm between the lines of the title and of the equations
 
 
@@ -54,127 +49,6 @@ def label_driver(lines: list[str], label: str) -> list[str]:
     return [f"{label}:" + line[len("driver:"):] if line.startswith("driver:") else line for line in lines]
 
 
-_TOKEN = re.compile(r"(?<![A-Za-z0-9.])([A-Za-zα-ωΑ-Ω])(?:\^([A-Za-z]+))?(?:_([A-Za-z0-9′]+))?(?![A-Za-z0-9])")
-_PARSER = MathTextParser("path")
-
-
-def _pretty(line: str) -> tuple[str, bool]:
-    """``v_BA``, ``a^n_CB``, ``ω2`` → mathtext with real sub- and superscripts.
-
-    Returns the plain line when there is nothing to set or mathtext cannot
-    take it.
-    """
-    if "$" in line:
-        return line, False
-
-    def repl(m: re.Match) -> str:
-        base, sup, sub = m.group(1), m.group(2), m.group(3)
-        if not sup and not sub:
-            return m.group(0)
-        sup_part = f"^{{{sup}}}" if sup else ""
-        sub_part = f"_{{{sub}}}" if sub else ""
-        return f"${base}{sup_part}{sub_part}$"
-
-    text = _TOKEN.sub(repl, line)
-    text = re.sub(r"(?<![A-Za-z0-9$])([α-ω])(\d+)(?![A-Za-z0-9])", r"$\1_{\2}$", text)
-    if text == line:
-        return line, False
-    try:
-        _PARSER.parse(text, dpi=72)
-    except Exception:  # mathtext refuses some characters; the plain text is still right
-        return line, False
-    return text, True
-
-
-class _Block:
-    """A rectangle of the sheet [mm] with a function that draws it at a lower-left corner."""
-
-    def __init__(self, width: float, height: float, place, drawing: bool = False):
-        self.width = width
-        self.height = height
-        self.place = place
-        #: a drawing of its own axes, placed as ``place(x, y, page_mm)``; other blocks ``place(sketch, x, y)``
-        self.drawing = drawing
-
-
-def _drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True) -> _Block:
-    ax = fig.add_axes([0, 0, 0.01, 0.01])
-    prefix = {"mechanism": "mech", "velocity": "vel", "acceleration": "acc"}[kind]
-    sketch = Sketch(ax, prefix)
-    if kind == "mechanism":
-        _Mechanism(sketch, obj, lang=lang).draw()
-    else:
-        _draw_plan_into(sketch, obj, lang=lang, legend=legend)
-    bounds = sketch.bounds
-    width, height = bounds.width + 2 * MARGIN_MM, bounds.height + 2 * MARGIN_MM
-
-    def place(x: float, y: float, page: tuple[float, float]) -> None:
-        fit_axes(ax, bounds, MARGIN_MM, rect_mm=(x, y), page_mm=page)
-
-    return _Block(width, height, place, drawing=True)
-
-
-def _rows_block(rows: list[tuple[str, float, str, bool]], gid: str, *, line_gap: float, math_scale: float = 1.0) -> _Block:
-    """A stack of text lines (text, size, weight, mathtext), left-aligned.
-
-    Each line is the height of a line of its font, *math_scale* times that for
-    a mathtext line, plus *line_gap* [mm].
-    """
-    heights = [text_size("lp", s)[1] * (math_scale if m else 1.0) + line_gap for _, s, _, m in rows]
-    width = max((text_size(t, s, w, m)[0] for t, s, w, m in rows), default=0.0)
-    height = sum(heights)
-
-    def place_into(sketch: Sketch, x: float, y: float) -> None:
-        top = y + height
-        for (text, size, weight, is_math), h in zip(rows, heights):
-            sketch.text(complex(x, top - h / 2), text, size=size, ha="left", va="center", weight=weight, gid=gid, obstacle=False, math=is_math)
-            top -= h
-
-    return _Block(width, height, place_into)
-
-
-def _numeric(cell: str) -> bool:
-    return bool(re.match(r"^\s*[+\-−]?[0-9.]", cell))
-
-
-def _table_block(table: list[list[str]], heading: str = "Results", size: float = TABLE_PT) -> _Block:
-    columns = max(len(r) for r in table)
-    rows = [list(r) + [""] * (columns - len(r)) for r in table]
-    pad = 2.0
-    widths = [max(text_size(r[c], size, "bold" if i == 0 else "normal")[0] for i, r in enumerate(rows)) + 2 * pad for c in range(columns)]
-    row_h = text_size("lp", size)[1] + 1.6 * size / TABLE_PT
-    heading_h = text_size("lp", HEADING_PT)[1] + 2.0
-    width = max(sum(widths), text_size(heading, HEADING_PT, "bold")[0])
-    height = heading_h + row_h * len(rows) + 1.0
-
-    # a column of numbers is right-aligned, its header too
-    right_columns = {
-        c
-        for c in range(1, columns)
-        if (cells := [r[c] for r in rows[1:] if r[c].strip()]) and sum(map(_numeric, cells)) * 2 >= len(cells)
-    }
-
-    def place_into(sketch: Sketch, x: float, y: float) -> None:
-        top = y + height
-        sketch.text(complex(x, top - heading_h / 2), heading, size=HEADING_PT, ha="left", va="center", weight="bold", gid="table-heading", obstacle=False)
-        top -= heading_h
-        sketch.line([complex(x, top), complex(x + width, top)], lw=0.9, gid="table-rule", obstacle=False)
-        for i, row in enumerate(rows):
-            cx = x
-            yc = top - row_h * (i + 0.5)
-            for c, cell in enumerate(row):
-                right = c in right_columns
-                at = complex(cx + widths[c] - pad, yc) if right else complex(cx + pad, yc)
-                sketch.text(at, cell, size=size, ha="right" if right else "left", va="center", weight="bold" if i == 0 else "normal", gid="table-cell", obstacle=False)
-                cx += widths[c]
-            if i == 0:
-                sketch.line([complex(x, top - row_h), complex(x + width, top - row_h)], lw=0.5, gid="table-rule", obstacle=False)
-        bottom = top - row_h * len(rows)
-        sketch.line([complex(x, bottom), complex(x + width, bottom)], lw=0.9, gid="table-rule", obstacle=False)
-
-    return _Block(width, height, place_into)
-
-
 _TABLE_HEADER = ["quantity", "graphical", "analytic", "rel. error"]
 
 
@@ -191,15 +65,6 @@ def translate_table(table: list[list[str]], lang: str) -> list[list[str]]:
             cell = cell.replace(a, b)
         rows.append([cell] + list(row[1:]))
     return rows
-
-
-def _choose_page(width: float, height: float) -> tuple[str, tuple[float, float]]:
-    need_w, need_h = width + 2 * PAGE_MARGIN, height + 2 * PAGE_MARGIN
-    for name, (w, h) in PAGES.items():
-        for size in ((w, h), (h, w)):
-            if need_w <= size[0] + 1e-9 and need_h <= size[1] + 1e-9:
-                return name, size
-    return "custom", (need_w, need_h)
 
 
 def draw_sheet(
@@ -232,33 +97,31 @@ def draw_sheet(
     table = translate_table(table, lang) if table else table
     with drawing_rc():
         fig = new_figure()
-        drawings = [_drawing_block(fig, "mechanism", solution, lang), _drawing_block(fig, "velocity", solution.velocity_plan, lang)]
+        drawings = [drawing_block(fig, "mechanism", solution, lang), drawing_block(fig, "velocity", solution.velocity_plan, lang)]
         if solution.acceleration_plan is not None:
-            drawings.append(_drawing_block(fig, "acceleration", solution.acceleration_plan, lang))
+            drawings.append(drawing_block(fig, "acceleration", solution.acceleration_plan, lang))
 
-        title = str(title if title is not None else (getattr(solution.scene, "title", "") or ""))
-        head_rows = [(title, TITLE_PT, "bold", False)] if title else []
+        title = user_text(title if title is not None else (getattr(solution.scene, "title", "") or ""))
+        head_rows = [(title, TITLE_PT, "bold")] if title else []
         if formula:
-            head_rows.append((f"{term('structural_formula', lang)}:  {formula}", HEADING_PT, "normal", False))
-        head = _rows_block(head_rows, "title", line_gap=SHEET_LINE_GAP) if head_rows else None
+            head_rows.append((f"{term('structural_formula', lang)}:  {formula}", HEADING_PT, "normal"))
+        head = rows_block(head_rows, "title", line_gap=SHEET_LINE_GAP) if head_rows else None
 
         eq_lines = sheet_equations(solution) if equations is None else list(equations)
         if lang != "en":  # "driver:" is the one English word of the steps: the structural notation instead
             eq_lines = label_driver(eq_lines, f"I(0,{getattr(getattr(solution.scene, 'driver', None), 'link', '')})")
         eq_block = None
         if eq_lines:
-            rows = [(term("vector_equations", lang) if lang != "en" else "Vector equations", HEADING_PT, "bold", False)]
-            for line in eq_lines:
-                text, is_math = _pretty(line)
-                rows.append((text, EQ_PT, "normal", is_math))
-            eq_block = _rows_block(rows, "equation", line_gap=SHEET_LINE_GAP)
-        table_block = _table_block(table, "Results" if lang == "en" else term("results", lang)) if table else None
+            rows = [(term("vector_equations", lang) if lang != "en" else "Vector equations", HEADING_PT, "bold")]
+            rows += [(pretty_equation(line), EQ_PT, "normal") for line in eq_lines]
+            eq_block = rows_block(rows, "equation", line_gap=SHEET_LINE_GAP)
+        table_block_ = table_block(table, "Results" if lang == "en" else term("results", lang)) if table else None
 
         # arrangements of the drawings: one row, or the mechanism above the plans
         arrangements = [[drawings]]
         if len(drawings) > 1:
             arrangements.append([[drawings[0]], drawings[1:]])
-        texts = [b for b in (eq_block, table_block) if b is not None]
+        texts = [b for b in (eq_block, table_block_) if b is not None]
         best = None
         for rows in arrangements:
             row_w = max(sum(b.width for b in row) + GAP * (len(row) - 1) for row in rows)
@@ -274,7 +137,7 @@ def draw_sheet(
                     bottom_h = sum(b.height for b in texts) + GAP * (len(texts) - 1)
                 width = max(row_w, bottom_w, head.width if head else 0.0)
                 height = (head.height + GAP if head else 0.0) + row_h + (GAP + bottom_h if texts else 0.0)
-                _, page = _choose_page(width, height)
+                _, page = choose_page(width, height, PAGE_MARGIN)
                 area = page[0] * page[1]
                 if best is None or area < best[0] - 1e-6:
                     best = (area, rows, page, side_by_side, width, height)
@@ -293,24 +156,24 @@ def draw_sheet(
         y = ph - max(PAGE_MARGIN, (ph - content_h) / 2)
         if head:
             y -= head.height
-            head.place(sheet, x0, y)
+            head.place(sheet, x0, y, page)
             y -= GAP
         for row in rows:
             h = max(b.height for b in row)
             x = x0
             for b in row:
-                b.place(x, y - b.height, page)  # tops aligned
+                b.place(sheet, x, y - b.height, page)  # tops aligned
                 x += b.width + GAP
             y -= h + GAP
         if texts:
             if side_by_side:
                 x = x0
                 for b in texts:
-                    b.place(sheet, x, y - b.height)
+                    b.place(sheet, x, y - b.height, page)
                     x += b.width + GAP
             else:
                 for b in texts:
-                    b.place(sheet, x0, y - b.height)
+                    b.place(sheet, x0, y - b.height, page)
                     y -= b.height + GAP
     return fig
 

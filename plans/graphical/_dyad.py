@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from ..scene import FRAME, Line, Prismatic
 from ..structure import Joint
 from . import geometry
-from .state import Construction, Sketch, Vec, _Sliding, body_label
+from .state import Construction, Sketch, Vec, Sliding, body_label
 
 __all__ = [
     "Chain",
@@ -78,7 +78,7 @@ def coincident(ctx: Construction, plan: Sketch, body: str, point: str, at: compl
     return image, plan.absolute(point, body)
 
 
-def coriolis(ctx: Construction, omega: float, sliding: _Sliding) -> complex:
+def coriolis(ctx: Construction, omega: float, sliding: Sliding) -> complex:
     """The Coriolis acceleration aᵏ = 2 ω_g × v_rel of a sliding point, on the acceleration plan.
 
     ω_g [rad/s] is the angular velocity of the body carrying the guide (the
@@ -153,11 +153,11 @@ def construct_image(
     return at, found, drawn
 
 
-def record_sliding(ctx: Construction, prismatic: Prismatic, moving: str, direction: complex) -> _Sliding:
+def record_sliding(ctx: Construction, prismatic: Prismatic, moving: str, direction: complex) -> Sliding:
     """The readings entry of a prismatic joint whose vectors are drawn for *moving* relative to the other body."""
     entry = ctx.sliding.get(prismatic.name)
     if entry is None:
-        entry = _Sliding(prismatic, 1 if moving == prismatic.slider else -1, direction)
+        entry = Sliding(prismatic, 1 if moving == prismatic.slider else -1, direction)
         ctx.sliding[prismatic.name] = entry
     return entry
 

@@ -129,25 +129,6 @@ class Plan:
     steps: tuple[Step, ...]
     vectors: tuple[PlanVector, ...]
 
-    # --- display (matplotlib is imported only here, on demand) ----------------
-
-    def plot(self, ax=None, *, lang: str = "en") -> list:
-        """Draw the plan into *ax* (one data unit = 1 mm), or into a new true-to-scale figure; returns the artists."""
-        from ..drawing import draw_plan
-
-        return draw_plan(self, ax, lang=lang)
-
-    def save(self, path, *, lang: str = "en"):
-        """Write the plan to *path* (``.svg`` true to scale, or ``.pdf``), atomically; returns the path."""
-        from ..drawing.sheets import save_figure
-
-        return save_figure(self.plot(lang=lang)[0].figure, path)
-
-    def _repr_svg_(self) -> str:
-        from ..drawing.svg import render_svg
-
-        return render_svg(self.plot()[0].figure).decode("utf-8")
-
 
 @dataclass(frozen=True)
 class GraphicalSolution:
@@ -202,29 +183,3 @@ class GraphicalSolution:
     sines: dict[str, float] = field(default_factory=dict)
     conditions: dict[str, float] = field(default_factory=dict)
     warnings: tuple = ()
-
-    # --- display (matplotlib is imported only here, on demand) ----------------
-
-    def plot(self, ax=None, *, lang: str = "en") -> list:
-        """Draw the mechanism at k_l into *ax*, or into a new true-to-scale figure; returns the artists."""
-        from ..drawing import draw_mechanism
-
-        return draw_mechanism(self, ax, lang=lang)
-
-    def sheet(self, *, lang: str = "en"):
-        """The one-page sheet (mechanism, both plans, vector equations) as a matplotlib Figure."""
-        from ..drawing import draw_sheet
-        from ..structure import find_structure
-
-        return draw_sheet(self, formula=find_structure(self.scene).formula, lang=lang)
-
-    def save(self, path, *, lang: str = "en"):
-        """Write the sheet to *path* (``.svg`` true to scale, or ``.pdf``), atomically; returns the path."""
-        from ..drawing.sheets import save_figure
-
-        return save_figure(self.sheet(lang=lang), path)
-
-    def _repr_svg_(self) -> str:
-        from ..drawing.svg import render_svg
-
-        return render_svg(self.sheet()).decode("utf-8")

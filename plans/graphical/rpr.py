@@ -45,7 +45,7 @@ from ._dyad import (
     sliding_equation,
     unit,
 )
-from .state import Construction, Motion, _Rotation
+from .state import Construction, Motion, Rotation
 
 __all__ = ["position_rpr", "velocity_rpr", "acceleration_rpr"]
 
@@ -135,7 +135,7 @@ def velocity_rpr(ctx: Construction, group: Group) -> None:
     q = (p_ei - pb) / (E - B)
     ctx.v_motion[i] = Motion(B, pb, q)
     ctx.v_motion[j] = Motion(E, pe, q)
-    ctx.omega_from[i] = _Rotation(v_rot, B, E)
+    ctx.omega_from[i] = Rotation(v_rot, B, E)
     ctx.turns_with[j] = i
     record_sliding(ctx, group.inner.prismatic, i, u).v_rel = v_rel
 
@@ -165,6 +165,6 @@ def acceleration_rpr(ctx: Construction, group: Group) -> None:
     q = (p_ei - pb) / (E - B)
     ctx.a_motion[i] = Motion(B, pb, q)
     ctx.a_motion[j] = Motion(E, pe, q)
-    ctx.epsilon_from[i] = _Rotation(tangential, B, E)
+    ctx.epsilon_from[i] = Rotation(tangential, B, E)
     sliding.a_rel = a_rel
     sliding.coriolis = drawn_coriolis(drawn[1])

@@ -45,7 +45,7 @@ from ._dyad import (
     turning_with,
     unit,
 )
-from .state import Construction, Motion, _Rotation
+from .state import Construction, Motion, Rotation
 
 __all__ = ["position_rrp", "velocity_rrp", "acceleration_rrp"]
 
@@ -98,7 +98,7 @@ def velocity_rrp(ctx: Construction, group: Group) -> None:
     pc, (v_cb, v_rel), _ = construct_image(ctx, plan, group.name, equations, chains, plan.label(c), c)
     ctx.v_motion[i] = Motion(B, pb, (pc - pb) / (C - B))
     ctx.v_motion[j] = Motion(C, pc, ctx.v_motion[known].q)
-    ctx.omega_from[i] = _Rotation(v_cb, B, C)
+    ctx.omega_from[i] = Rotation(v_cb, B, C)
     ctx.turns_with[j] = known
     record_sliding(ctx, group.outer_j.prismatic, j, u).v_rel = v_rel
 
@@ -127,6 +127,6 @@ def acceleration_rrp(ctx: Construction, group: Group) -> None:
     pc, (t_cb, a_rel), drawn = construct_image(ctx, plan, group.name, equations, chains, plan.label(c), c)
     ctx.a_motion[i] = Motion(B, pb, (pc - pb) / (C - B))
     ctx.a_motion[j] = Motion(C, pc, ctx.a_motion[known].q)
-    ctx.epsilon_from[i] = _Rotation(t_cb, B, C)
+    ctx.epsilon_from[i] = Rotation(t_cb, B, C)
     sliding.a_rel = a_rel
     sliding.coriolis = drawn_coriolis(drawn[1])

@@ -29,7 +29,7 @@ from __future__ import annotations
 from ..structure import Group
 from . import geometry
 from ._dyad import Chain, angle_of, construct_image, known_point, pose_from, unit
-from .state import Construction, Motion, _Rotation
+from .state import Construction, Motion, Rotation
 
 __all__ = ["position_rrr", "velocity_rrr", "acceleration_rrr"]
 
@@ -80,8 +80,8 @@ def velocity_rrr(ctx: Construction, group: Group) -> None:
     pc, (v_cb, v_cd), _ = construct_image(ctx, plan, group.name, equations, chains, plan.label(c), c)
     ctx.v_motion[i] = Motion(B, pb, (pc - pb) / (C - B))
     ctx.v_motion[j] = Motion(D, pd, (pc - pd) / (C - D))
-    ctx.omega_from[i] = _Rotation(v_cb, B, C)
-    ctx.omega_from[j] = _Rotation(v_cd, D, C)
+    ctx.omega_from[i] = Rotation(v_cb, B, C)
+    ctx.omega_from[j] = Rotation(v_cd, D, C)
 
 
 def acceleration_rrr(ctx: Construction, group: Group) -> None:
@@ -106,5 +106,5 @@ def acceleration_rrr(ctx: Construction, group: Group) -> None:
     pc, (t_cb, t_cd), _ = construct_image(ctx, plan, group.name, equations, chains, plan.label(c), c)
     ctx.a_motion[i] = Motion(B, pb, (pc - pb) / (C - B))
     ctx.a_motion[j] = Motion(D, pd, (pc - pd) / (C - D))
-    ctx.epsilon_from[i] = _Rotation(t_cb, B, C)
-    ctx.epsilon_from[j] = _Rotation(t_cd, D, C)
+    ctx.epsilon_from[i] = Rotation(t_cb, B, C)
+    ctx.epsilon_from[j] = Rotation(t_cd, D, C)

@@ -191,7 +191,7 @@ class Sketch:
 
 
 @dataclass
-class _Rotation:
+class Rotation:
     """Where a link's ω (or ε) is read: a vector ⊥ segment tail→tip of the link."""
 
     vec: Vec
@@ -200,7 +200,7 @@ class _Rotation:
 
 
 @dataclass
-class _Sliding:
+class Sliding:
     """Where a prismatic joint's readings are: vectors of body ``moving`` relative to ``reference``."""
 
     prismatic: Prismatic
@@ -225,10 +225,10 @@ class Construction:
         self.a_motion: dict[str, Motion] = {FRAME: Motion(0j, 0j, 0j)}
         # readings
         self.given: dict[str, tuple[float, float]] = {FRAME: (0.0, 0.0)}
-        self.omega_from: dict[str, _Rotation] = {}
-        self.epsilon_from: dict[str, _Rotation] = {}
+        self.omega_from: dict[str, Rotation] = {}
+        self.epsilon_from: dict[str, Rotation] = {}
         self.turns_with: dict[str, str] = {}
-        self.sliding: dict[str, _Sliding] = {}
+        self.sliding: dict[str, Sliding] = {}
         self.sines: dict[str, float] = {}
         self.conditions: dict[str, float] = {}
         self.size = 0.0  # the mechanism's extent [m], for the reach of ruler lines
@@ -289,7 +289,7 @@ class Construction:
             length = measure(abs(vec.delta) * f, precision) * k
             return math.copysign(length, (vec.delta * direction.conjugate()).real)
 
-        def rotation(source: _Rotation, f: float, k: float) -> float:
+        def rotation(source: Rotation, f: float, k: float) -> float:
             segment = source.tip - source.tail
             length = measure(abs(source.vec.delta) * f, precision) * k / abs(segment)
             return math.copysign(length, (source.vec.delta * segment.conjugate()).imag)

@@ -1,0 +1,321 @@
+"""Blocks: the rectangles a page is made of, each knowing its size [mm] before it is placed.
+
+Data flows one way: solved results → blocks (this module) → page layout
+(:mod:`plans.drawing.layout`) → SVG/PDF (:mod:`plans.drawing.svg`,
+:mod:`plans.drawing.sheets`).
+
+* :class:`Block` — width, height and a function that draws it at a lower-left corner;
+* :func:`drawing_block` — the mechanism or a plan, true to scale, in axes of its own;
+* :func:`rows_block` — a stack of text lines (headings, equations);
+* :func:`table_block` — a table with a heading and rules;
+* :func:`legend_block` — one legend for both plans;
+* :func:`column` — blocks one above the other;
+* :func:`pretty_equation`, :func:`break_math`, :func:`text_rows` — the lines of
+  vector and loop equations, typeset and broken to a width.
+"""
+
+from __future__ import annotations
+
+import re
+
+from ..graphical.plan import KINDS
+from .._text import user_text
+from ._canvas import Sketch, text_size
+from .mechanism import draw_mechanism
+from .plan_drawing import draw_plan, legend_row, legend_words, vectors_drawn
+from .style import CAPTION_PT, HEADING_PT, SMALL_PT
+from .typeset import draw_text, measure
+
+__all__ = [
+    "Block",
+    "drawing_block",
+    "rows_block",
+    "table_block",
+    "legend_block",
+    "column",
+    "pretty_equation",
+    "break_math",
+    "text_rows",
+    "TABLE_PT",
+    "MIN_SHRINK",
+]
+
+TABLE_PT = SMALL_PT + 0.5
+#: a line of an equation is set at most this much smaller before it is wrapped inside a term
+MIN_SHRINK = 0.8
+CONTINUED = "…"
+
+
+class Block:
+    """A rectangle [mm] with a function that draws it with its lower-left corner at (x, y).
+
+    ``place(sketch, x, y, page)``: *sketch* draws on the page's paper axes
+    (text and rules); *page* is the page size [mm], for blocks that have axes
+    of their own (drawings) and put them there.
+    """
+
+    def __init__(self, width: float, height: float, place, kind: str = "text"):
+        self.width = width
+        self.height = height
+        self._place = place
+        #: ``"mechanism"``, ``"velocity"``, ``"acceleration"``, ``"legend"``, ``"table"``, ``"text"``, ``"column"``
+        self.kind = kind
+
+    def place(self, sketch: Sketch, x: float, y: float, page: tuple[float, float]) -> None:
+        self._place(sketch, x, y, page)
+
+
+def drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True) -> Block:
+    """The mechanism (*obj* a GraphicalSolution) or a plan (*obj* a Plan) drawn into new axes of *fig*.
+
+    The drawing is made now (its size is that of its ink plus the margin);
+    placing the block only moves the axes, one data unit staying one
+    millimetre of paper.
+    """
+    ax = fig.add_axes([0, 0, 0.01, 0.01])
+    if kind == "mechanism":
+        draw_mechanism(obj, ax, lang=lang)
+    else:
+        draw_plan(obj, ax, lang=lang, legend=legend)
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    width, height = x1 - x0, y1 - y0
+
+    def place(sketch: Sketch, x: float, y: float, page: tuple[float, float]) -> None:
+        pw, ph = page
+        ax.set_aspect("auto")
+        ax.set_position([x / pw, y / ph, width / pw, height / ph])
+
+    return Block(width, height, place, kind=kind)
+
+
+def rows_block(rows, gid: str, *, line_gap: float) -> Block:
+    """A stack of text lines ``(text, size, weight)``, left-aligned; ``$…$`` parts are typeset (:mod:`.typeset`).
+
+    Each line is as tall as its typeset box plus *line_gap* [mm].
+    """
+    boxes = [measure(t, s, w) for t, s, w in rows]
+    heights = [b[1] + line_gap for b in boxes]
+    width = max((b[0] for b in boxes), default=0.0)
+    height = sum(heights)
+
+    def place(sketch: Sketch, x: float, y: float, page) -> None:
+        top = y + height
+        for (text, size, weight), h in zip(rows, heights):
+            draw_text(sketch, complex(x, top - h / 2), text, size=size, weight=weight, gid=gid)
+            top -= h
+
+    return Block(width, height, place)
+
+
+def _numeric(cell: str) -> bool:
+    return bool(re.match(r"^\s*[+\-−]?[0-9.]", cell))
+
+
+def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT) -> Block:
+    """A table: *heading*, a rule, the header row (bold), a rule, the rows, a rule; numbers right-aligned."""
+    columns = max(len(r) for r in table)
+    rows = [list(r) + [""] * (columns - len(r)) for r in table]
+    pad = 2.0
+    widths = [max(measure(r[c], size, "bold" if i == 0 else "normal")[0] for i, r in enumerate(rows)) + 2 * pad for c in range(columns)]
+    row_h = max(text_size("lp", size)[1], max(measure(cell, size)[1] for r in rows for cell in r)) + 1.6 * size / TABLE_PT
+    heading_h = text_size("lp", HEADING_PT)[1] + 2.0
+    width = max(sum(widths), text_size(heading, HEADING_PT, "bold")[0])
+    height = heading_h + row_h * len(rows) + 1.0
+
+    # a column of numbers is right-aligned, its header too
+    right_columns = {
+        c
+        for c in range(1, columns)
+        if (cells := [r[c] for r in rows[1:] if r[c].strip()]) and sum(map(_numeric, cells)) * 2 >= len(cells)
+    }
+
+    def place(sketch: Sketch, x: float, y: float, page) -> None:
+        top = y + height
+        draw_text(sketch, complex(x, top - heading_h / 2), heading, size=HEADING_PT, weight="bold", gid="table-heading")
+        top -= heading_h
+        sketch.line([complex(x, top), complex(x + width, top)], lw=0.9, gid="table-rule", obstacle=False)
+        for i, row in enumerate(rows):
+            cx = x
+            yc = top - row_h * (i + 0.5)
+            for c, cell in enumerate(row):
+                right = c in right_columns
+                at = complex(cx + widths[c] - pad, yc) if right else complex(cx + pad, yc)
+                draw_text(sketch, at, cell, size=size, ha="right" if right else "left", weight="bold" if i == 0 else "normal", gid="table-cell")
+                cx += widths[c]
+            if i == 0:
+                sketch.line([complex(x, top - row_h), complex(x + width, top - row_h)], lw=0.5, gid="table-rule", obstacle=False)
+        bottom = top - row_h * len(rows)
+        sketch.line([complex(x, bottom), complex(x + width, bottom)], lw=0.9, gid="table-rule", obstacle=False)
+
+    return Block(width, height, place, kind="table")
+
+
+def legend_block(graphical, lang: str) -> Block:
+    """One legend for both plans: each kind of vector drawn, and construction lines."""
+    words: dict[str, list[str]] = {}
+    for plan in (graphical.velocity_plan, graphical.acceleration_plan):
+        if plan is None:
+            continue
+        kinds = {v.kind for v in vectors_drawn(plan)}
+        for kind in KINDS:
+            if kind in kinds:
+                text = legend_words(plan.kind, kind, lang)
+                if text not in words.setdefault(kind, []):
+                    words[kind].append(text)
+    # one row per style: "absolute velocity / absolute acceleration"
+    entries = [(kind, " / ".join(words[kind])) for kind in KINDS if kind in words]
+    entries.append(("construction", legend_words("velocity", "construction", lang)))
+    row_h = text_size("lp", CAPTION_PT)[1] + 0.8
+    width = 11.0 + max(text_size(w, CAPTION_PT)[0] for _, w in entries)
+    height = row_h * len(entries)
+
+    def place(sketch: Sketch, x: float, y: float, page) -> None:
+        top = y + height
+        for kind, text in entries:
+            legend_row(sketch, kind, text, x, top - row_h / 2, text_gid="legend-text")
+            top -= row_h
+
+    return Block(width, height, place, kind="legend")
+
+
+def column(blocks: list[Block], gap: float) -> Block:
+    """Blocks one above the other, left-aligned."""
+    width = max(b.width for b in blocks)
+    height = sum(b.height for b in blocks) + gap * (len(blocks) - 1)
+
+    def place(sketch: Sketch, x: float, y: float, page) -> None:
+        top = y + height
+        for b in blocks:
+            b.place(sketch, x, top - b.height, page)
+            top -= b.height + gap
+
+    return Block(width, height, place, kind="column")
+
+
+# --- equations as text ------------------------------------------------------------------
+
+_TOKEN = re.compile(r"(?<![A-Za-z0-9.])([A-Za-zα-ωΑ-Ω])(?:\^([A-Za-z]+))?(?:_([A-Za-z0-9′]+))?(?![A-Za-z0-9])")
+
+
+def pretty_equation(line: str) -> str:
+    """``v_BA``, ``a^n_CB``, ``ω2`` → typeset sub- and superscripts (``$v_{BA}$``); other text as it is.
+
+    A line that already holds ``$`` is left alone.
+    """
+    if "$" in line:
+        return line
+
+    def repl(m: re.Match) -> str:
+        base, sup, sub = m.group(1), m.group(2), m.group(3)
+        if not sup and not sub:
+            return m.group(0)
+        sup_part = f"^{{{sup}}}" if sup else ""
+        sub_part = f"_{{{sub}}}" if sub else ""
+        return f"${base}{sup_part}{sub_part}$"
+
+    text = _TOKEN.sub(repl, line)
+    return re.sub(r"(?<![A-Za-z0-9$])([α-ω])(\d+)(?![A-Za-z0-9])", r"$\1_{\2}$", text)
+
+
+def _cuts(body: str) -> list[int]:
+    """Where a mathtext body may break: before a top-level ``=``, ``⇒``, ``+`` or ``−`` between terms."""
+    cuts = []
+    depth = 0
+    for k, ch in enumerate(body):
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif depth == 0 and k > 0 and (body.startswith((" = ", " + ", " - "), k) or body.startswith(r"\ \Rightarrow", k)):
+            cuts.append(k)
+    return cuts
+
+
+def break_math(line: str, width: float, size: float) -> list[tuple[str, float]]:
+    """*line* as lines ``(text, size)`` that each fit *width* [mm]; always ends, for any width.
+
+    1. a line that fits is kept;
+    2. a ``$…$`` line is broken before its top-level ``=``, ``⇒``, ``+``,
+       ``−`` (continuations indented), as many terms to a line as fit;
+    3. a piece that alone is still too wide is set smaller, down to
+       :data:`MIN_SHRINK` of *size*;
+    4. what still does not fit is wrapped inside the term as plain text,
+       each broken line ending in ``…`` (so the reader sees it continues).
+    """
+    if measure(line, size)[0] <= width:
+        return [(line, size)]
+    if not (line.startswith("$") and line.endswith("$") and line.count("$") == 2):
+        return [(piece, size) for piece in _wrap_plain(line, width, size)]
+    body = line[1:-1]
+    cuts = _cuts(body)
+    terms = [body[a:b].strip() for a, b in zip([0] + cuts, cuts + [len(body)])]
+    indent = r"\qquad "
+    out: list[tuple[str, float]] = []
+    current = ""
+    for t in terms:
+        trial = f"{current} {t}" if current else (t if not out else indent + t)
+        if current and measure(f"${trial}$", size)[0] > width:
+            out.append((f"${current}$", size))
+            current = indent + t
+        else:
+            current = trial
+    out.append((f"${current}$", size))
+    final: list[tuple[str, float]] = []
+    for text, s in out:
+        w = measure(text, s)[0]
+        if w <= width:
+            final.append((text, s))
+        elif w * MIN_SHRINK <= width:
+            final.append((text, s * width / w * 0.999))
+        else:
+            small = s * MIN_SHRINK
+            final.extend((piece, small) for piece in _wrap_plain(_plain(text), width, small))
+    return final
+
+
+def _plain(text: str) -> str:
+    from ..loops import plain
+
+    return plain(text)
+
+
+def _wrap_plain(text: str, width: float, size: float) -> list[str]:
+    """Plain *text* wrapped to *width* [mm]: at spaces where it can, inside a word where it must (ending ``…``)."""
+    lines: list[str] = []
+    current = ""
+    for word in text.split(" "):
+        trial = f"{current} {word}" if current else word
+        if measure(trial, size)[0] <= width or not current and measure(word, size)[0] <= width:
+            current = trial
+            continue
+        if current:
+            lines.append(current)
+        current = word
+        while measure(current, size)[0] > width and len(current) > 1:
+            # the longest head that fits with its continuation mark
+            lo, hi = 1, len(current) - 1
+            while lo < hi:
+                mid = (lo + hi + 1) // 2
+                if measure(current[:mid] + CONTINUED, size)[0] <= width:
+                    lo = mid
+                else:
+                    hi = mid - 1
+            lines.append(current[:lo] + CONTINUED)
+            current = current[lo:]
+    if current:
+        lines.append(current)
+    return lines
+
+
+def text_rows(heading: str, lines: list[str], width: float, size: float) -> list[tuple[str, float, str]]:
+    """Rows ``(text, size, weight)`` of a text block: a bold heading, then *lines* broken to *width* [mm].
+
+    A line starting with ``§`` is a bold subheading; other lines go through :func:`break_math`.
+    """
+    rows = [(heading, HEADING_PT, "bold")]
+    for line in lines:
+        if line.startswith("§"):
+            rows.extend((piece, size, "bold") for piece in _wrap_plain(user_text(line[1:]) if "$" not in line else line[1:], width, size))
+            continue
+        rows.extend((piece, s, "normal") for piece, s in break_math(line, width, size))
+    return rows

@@ -1,0 +1,271 @@
+"""Typesetting of the pages' text: plain text, and the small TeX subset plans writes its equations in.
+
+matplotlib's mathtext parser takes tens of milliseconds per long line and
+refuses what it does not know (``Double superscript``, an unknown macro),
+which made a handout slow and let a title crash it.  Page text is therefore
+set here: a line is split into runs (plain text, ``$…$`` math), the math is
+read by a small parser that never fails (an unknown command is printed as its
+name), laid out with the font's own advance widths, and drawn as plain text
+artists — a superscript is a smaller run raised from the baseline.  The
+layout of a string is computed once and cached.
+
+What the math subset knows: ``x_{…}``, ``x^{…}`` (both, nested), ``{…}``
+groups, Greek letters by name, ``\\mathrm{…}``, ``\\dot``/``\\ddot``,
+``\\cdot``, ``\\times``, ``\\Rightarrow``, ``\\circ`` (``^\\circ`` is the
+degree sign, attached), spaces ``\\,``, ``\\ ``, ``\\quad``, ``\\qquad``.
+Latin letters are set italic, everything else upright; ``-`` is a true minus.
+
+Script size: 0.75 of the text it belongs to, never below 6 pt (or the text's
+own size when that is smaller), so exponents stay legible in print.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+import unicodedata
+
+from ._canvas import Sketch, text_size
+from .style import MM_PER_PT
+
+__all__ = ["measure", "draw_text", "runs", "plain_runs", "SCRIPT_SCALE", "MIN_SCRIPT_PT", "MATH_LINE"]
+
+SCRIPT_SCALE = 0.75
+MIN_SCRIPT_PT = 6.0
+#: a line with math is this much taller than a line of plain text
+MATH_LINE = 1.3
+SUP_RISE = 0.40  # × the size of the text carrying the script
+SUB_DROP = 0.20
+
+_SYMBOLS = {
+    "cdot": "·", "times": "×", "Rightarrow": "⇒", "rightarrow": "→", "to": "→", "pm": "±", "mp": "∓",
+    "perp": "⊥", "parallel": "∥", "angle": "∠", "infty": "∞", "approx": "≈", "leq": "≤", "geq": "≥",
+    "le": "≤", "ge": "≥", "neq": "≠", "circ": "°", "degree": "°", "prime": "′", "minus": "−",
+    "varphi": "φ", "varepsilon": "ε", "vartheta": "ϑ", "phi": "ϕ", "epsilon": "ϵ", "ldots": "…", "dots": "…",
+    "sqrt": "√", "sum": "Σ", "partial": "∂", "nabla": "∇", "in": "∈", "cdots": "⋯", "lbrace": "{", "rbrace": "}",
+}
+_SPACES = {",": 3 / 18, ":": 4 / 18, ";": 5 / 18, " ": 1 / 3, "!": 0.0, "quad": 1.0, "qquad": 2.0, "enspace": 0.5}
+_ACCENTS = {"dot": "\u0307", "ddot": "\u0308", "vec": "\u20d7", "bar": "\u0304", "hat": "\u0302", "tilde": "\u0303"}
+_UPRIGHT = {"mathrm", "text", "textrm", "mathsf", "operatorname", "mathbf", "mathit"}
+_IGNORED = {"left", "right", "displaystyle", "limits", "big", "Big"}
+_BINARY = {"+": " + ", "-": " − ", "−": " − ", "=": " = ", "·": "·", "×": " × ", "⇒": " ⇒ ", "→": " → ", "≈": " ≈ ", "±": " ± "}
+
+
+def _greek(name: str) -> str | None:
+    try:
+        return unicodedata.lookup(("GREEK CAPITAL LETTER " if name[0].isupper() else "GREEK SMALL LETTER ") + name.upper())
+    except KeyError:
+        return None
+
+
+# --- parsing -----------------------------------------------------------------------------
+
+# nodes: ("char", text, italic) | ("space", em) | ("group", [nodes], upright) | ("script", base, sup, sub)
+
+
+def _parse(s: str) -> list:
+    pos = 0
+
+    def atom(upright: bool):
+        nonlocal pos
+        if pos >= len(s):
+            return None
+        ch = s[pos]
+        if ch == "{":
+            pos += 1
+            nodes = seq(upright, "}")
+            return ("group", nodes, upright)
+        if ch == "\\":
+            pos += 1
+            if pos >= len(s):
+                return ("char", "\\", False)
+            m = re.match(r"[A-Za-z]+", s[pos:])
+            if not m:
+                c = s[pos]
+                pos += 1
+                if c in _SPACES:
+                    return ("space", _SPACES[c])
+                return ("char", c, False)
+            name = m.group(0)
+            pos += len(name)
+            if name in _SPACES:
+                return ("space", _SPACES[name])
+            if name in _IGNORED:
+                return ("space", 0.0)
+            if name in _UPRIGHT:
+                inner = atom(True)
+                return ("group", [inner] if inner else [], True)
+            if name in _ACCENTS:
+                inner = atom(upright)
+                return ("group", _accent(inner, _ACCENTS[name]), upright)
+            if name in _SYMBOLS:
+                return ("char", _SYMBOLS[name], False)
+            greek = _greek(name)
+            if greek:
+                return ("char", greek, False)
+            return ("char", name, False)  # unknown: its name, never an error
+        pos += 1
+        if ch == " ":
+            return ("space", 0.0)
+        return ("char", ch, ch.isascii() and ch.isalpha() and not upright)
+
+    def seq(upright: bool, close: str | None) -> list:
+        nonlocal pos
+        nodes: list = []
+        while pos < len(s):
+            ch = s[pos]
+            if close and ch == close:
+                pos += 1
+                return nodes
+            if ch in "^_":
+                pos += 1
+                script = atom(upright)
+                script = [script] if script else []
+                base = nodes.pop() if nodes and nodes[-1][0] != "space" else ("group", [], upright)
+                if base[0] == "script":
+                    _, b, sup, sub = base
+                else:
+                    b, sup, sub = [base], None, None
+                if ch == "^":
+                    sup = (sup or []) + script  # a second superscript is set beside the first, never an error
+                else:
+                    sub = (sub or []) + script
+                nodes.append(("script", b, sup, sub))
+                continue
+            node = atom(upright)
+            if node is not None:
+                nodes.append(node)
+        return nodes
+
+    return seq(False, None)
+
+
+def _accent(node, mark: str) -> list:
+    if node is None:
+        return [("char", mark, False)]
+    if node[0] == "char":
+        return [("char", node[1] + mark, node[2])]
+    if node[0] == "group" and node[1] and node[1][-1][0] == "char":
+        last = node[1][-1]
+        return node[1][:-1] + [("char", last[1] + mark, last[2])]
+    return [node]
+
+
+# --- layout ------------------------------------------------------------------------------
+
+
+def _script_size(size: float) -> float:
+    return max(size * SCRIPT_SCALE, min(MIN_SCRIPT_PT, size))
+
+
+class _Layout:
+    def __init__(self, weight: str):
+        self.weight = weight
+        self.out: list[list] = []  # [text, x_mm, rise_mm, size_pt, italic]
+        self.x = 0.0
+        self.last: str | None = None  # "op", "open", "atom" or None: whether a minus is binary
+
+    def emit(self, text: str, rise: float, size: float, italic: bool) -> None:
+        if not text:
+            return
+        prev = self.out[-1] if self.out else None
+        if prev and prev[2] == rise and prev[3] == size and prev[4] == italic and abs(prev[1] + prev[5] - self.x) < 1e-9:
+            prev[0] += text
+            prev[5] = text_size(prev[0], size, self.weight)[0]
+        else:
+            self.out.append([text, self.x, rise, size, italic, text_size(text, size, self.weight)[0]])
+        self.x = self.out[-1][1] + self.out[-1][5]
+
+    def nodes(self, nodes, rise: float, size: float, top: bool) -> None:
+        for k, node in enumerate(nodes):
+            kind = node[0]
+            if kind == "space":
+                self.x += node[1] * size * MM_PER_PT
+            elif kind == "char":
+                ch = node[1]
+                if ch in _BINARY and top:
+                    unary = ch in "-−" and self.last in (None, "op", "open")
+                    self.emit("−" if unary else _BINARY[ch], rise, size, False)
+                    self.last = "op"
+                else:
+                    self.emit("−" if ch == "-" else ch, rise, size, node[2])
+                    self.last = "open" if ch in "([{" else "atom"
+            elif kind == "group":
+                self.nodes(node[1], rise, size, top)
+            else:
+                _, base, sup, sub = node
+                self.nodes(base, rise, size, top)
+                if sup and len(sup) == 1 and sup[0][0] == "char" and sup[0][1] == "°":
+                    self.emit("°", rise, size, False)  # the degree sign, attached at full size
+                    sup = None
+                small = _script_size(size)
+                start = self.x
+                ends = []
+                if sup:
+                    self.x = start
+                    self.nodes(sup, rise + SUP_RISE * size * MM_PER_PT, small, False)
+                    ends.append(self.x)
+                if sub:
+                    self.x = start
+                    self.nodes(sub, rise - SUB_DROP * size * MM_PER_PT, small, False)
+                    ends.append(self.x)
+                self.x = max(ends, default=start)
+                self.last = "atom"
+
+
+_DOLLAR = re.compile(r"(?<!\\)\$")
+
+
+def _pieces(text: str) -> list[tuple[str, bool]]:
+    """*text* cut at unescaped ``$``: (piece, is_math); an unpaired ``$`` is a literal dollar."""
+    parts = _DOLLAR.split(text)
+    if len(parts) % 2 == 0:  # odd number of $: the last one is a literal
+        parts = parts[:-2] + [parts[-2] + "$" + parts[-1]]
+    return [(p, k % 2 == 1) for k, p in enumerate(parts) if p]
+
+
+@functools.lru_cache(maxsize=8192)
+def runs(text: str, size: float, weight: str = "normal") -> tuple[tuple[tuple[str, float, float, float, bool], ...], float, bool]:
+    """The runs ``(text, x [mm], rise [mm], size [pt], italic)`` of *text*, its width [mm] and whether it had math."""
+    layout = _Layout(weight)
+    has_math = False
+    for piece, is_math in _pieces(text):
+        if is_math:
+            has_math = True
+            layout.last = None
+            layout.nodes(_parse(piece), 0.0, size, True)
+        else:
+            layout.emit(piece.replace(r"\$", "$"), 0.0, size, False)
+            layout.last = None
+    return tuple((t, x, r, s, i) for t, x, r, s, i, _ in layout.out), layout.x, has_math
+
+
+def plain_runs(text: str) -> str:
+    """The characters *text* shows, in order (math laid out): for tests and searching."""
+    return "".join(r[0] for r in runs(text, 10.0)[0])
+
+
+def measure(text: str, size: float, weight: str = "normal") -> tuple[float, float]:
+    """Width and height [mm] of *text* set at *size* (``$…$`` parts typeset)."""
+    _, width, has_math = runs(text, size, weight)
+    height = text_size("lp", size)[1] * (MATH_LINE if has_math else 1.0)
+    return width, height
+
+
+def draw_text(sketch: Sketch, at: complex, text: str, *, size: float, weight: str = "normal", ha: str = "left", gid: str | None = None, color=None) -> None:
+    """*text* with its box's left (or right, or centre) edge and vertical centre at *at* [mm].
+
+    Every run is a plain text artist: nothing reaches matplotlib's math
+    parser (dollar signs are drawn as dollar signs).
+    """
+    items, width, _ = runs(text, size, weight)
+    x0 = {"left": at.real, "right": at.real - width, "center": at.real - width / 2}[ha]
+    line_h = text_size("lp", size)[1]
+    baseline = at.imag - 0.28 * line_h
+    extra = {} if color is None else {"color": color}
+    for t, x, rise, s, italic in items:
+        artist = sketch.text(
+            complex(x0 + x, baseline + rise), t.replace("$", r"\$"), size=s, ha="left", va="baseline",
+            weight=weight, style="italic" if italic else "normal", gid=gid, obstacle=False, **extra,
+        )
+        artist.set_parse_math(True)  # escaped dollars are shown as "$"

@@ -1,0 +1,82 @@
+"""Notebook display of graphical results, kept out of the results themselves.
+
+The results of :func:`plans.construct` (:class:`plans.graphical.GraphicalSolution`
+and its :class:`plans.graphical.plan.Plan` objects) are plain data: the
+graphical layer never imports the drawing layer.  This module sits above both
+and joins them, one way:
+
+* :func:`plot` — draw a solution's mechanism or a plan into a matplotlib Axes
+  (or a new true-to-scale figure);
+* :func:`sheet` — a solution's one-page sheet as a Figure;
+* :func:`save` — a plan or a solution's sheet to ``.svg`` or ``.pdf``, atomically;
+* :func:`svg` — the SVG text a notebook shows;
+* :func:`register` — tell a running IPython to show solutions and plans as
+  SVG (``import plans`` calls it; it does nothing outside IPython).
+
+matplotlib is imported only when something is drawn.
+
+>>> import plans, plans.notebook as nb
+>>> solution = plans.construct(plans.load(plans.example_path("slider-crank")))
+>>> nb.svg(solution.velocity_plan).startswith("<?xml")               # doctest: +SKIP
+True
+"""
+
+from __future__ import annotations
+
+import sys
+
+__all__ = ["plot", "sheet", "save", "svg", "register"]
+
+
+def _is_plan(obj) -> bool:
+    return hasattr(obj, "images") and hasattr(obj, "pole")
+
+
+def plot(obj, ax=None, *, lang: str = "en") -> list:
+    """Draw a plan, or a solution's mechanism at k_l, into *ax* (one data unit = 1 mm) or a new figure; returns the artists."""
+    from .drawing import draw_mechanism, draw_plan
+
+    return draw_plan(obj, ax, lang=lang) if _is_plan(obj) else draw_mechanism(obj, ax, lang=lang)
+
+
+def sheet(solution, *, lang: str = "en"):
+    """The one-page sheet of a GraphicalSolution (mechanism, both plans, vector equations) as a Figure."""
+    from .drawing import draw_sheet
+    from .structure import find_structure
+
+    return draw_sheet(solution, formula=find_structure(solution.scene).formula, lang=lang)
+
+
+def _figure(obj, lang: str):
+    return plot(obj, lang=lang)[0].figure if _is_plan(obj) else sheet(obj, lang=lang)
+
+
+def save(obj, path, *, lang: str = "en"):
+    """Write a plan, or a solution's sheet, to *path* (``.svg`` true to scale, or ``.pdf``), atomically; returns the path."""
+    from .drawing.sheets import save_figure
+
+    return save_figure(_figure(obj, lang), path)
+
+
+def svg(obj, *, lang: str = "en") -> str:
+    """The SVG of a plan or of a solution's sheet, as text."""
+    from .drawing.svg import render_svg
+
+    return render_svg(_figure(obj, lang)).decode("utf-8")
+
+
+def register(shell=None) -> bool:
+    """Show GraphicalSolution and Plan objects as SVG in IPython (*shell*, or the running one).
+
+    Returns whether a shell was found.  The types are named, not imported,
+    so registering loads nothing.
+    """
+    if shell is None:
+        ipython = sys.modules.get("IPython")
+        shell = ipython.get_ipython() if ipython is not None and hasattr(ipython, "get_ipython") else None
+    if shell is None:
+        return False
+    formatter = shell.display_formatter.formatters["image/svg+xml"]
+    formatter.for_type_by_name("plans.graphical.plan", "Plan", svg)
+    formatter.for_type_by_name("plans.graphical.plan", "GraphicalSolution", svg)
+    return True
