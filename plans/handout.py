@@ -17,9 +17,11 @@ What a handout holds:
   paths of the points, the list of positions), the two pages of every
   position, and the kinematic diagrams over the cycle.
 
-Every position uses the same scale factors, chosen (unless given) as the
-round values that fit the largest mechanism drawing and plan of all the
-positions into their place on an A4 page.
+Every position page has the same arrangement (one :class:`plans.drawing.layout.Frame`
+of boxes, chosen for the drawings it must hold).  The mechanism is drawn at
+one k_l on every page; k_v and k_a are chosen for each position so that its
+plans fill their boxes (each page states its own, and says so).  Factors
+given by the user or the scene are kept.
 
 >>> import plans
 >>> from plans.handout import handout_pages
@@ -31,6 +33,7 @@ positions into their place on an A4 page.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from pathlib import Path
 
 from ._text import subscript
@@ -38,20 +41,7 @@ from .errors import PlansError
 from .i18n import check_language, term
 from .scene import FRAME, Crank, Scene
 
-__all__ = ["HandoutError", "write_handout", "handout_pages", "scene_data_lines", "handout_scales", "BOXES_MM"]
-
-#: Where the drawings go on a page [mm], per layout of the page: the largest
-#: mechanism (width, height) and plans.  Candidate scale factors are made from
-#: these boxes, enlarged and shrunk; the first (largest drawings) whose pages
-#: fit is kept.
-BOXES_MM = {"k_l": (90.0, 80.0), "k_v": (80.0, 80.0), "k_a": (110.0, 80.0)}
-LAYOUT_BOXES_MM = (
-    BOXES_MM,
-    {"k_l": (95.0, 190.0), "k_v": (85.0, 85.0), "k_a": (85.0, 85.0)},
-    {"k_l": (70.0, 70.0), "k_v": (55.0, 70.0), "k_a": (55.0, 70.0)},
-)
-FACTORS = (1.5, 1.3, 1.15, 1.0, 0.85, 0.7, 0.55, 0.4, 0.3)
-
+__all__ = ["HandoutError", "write_handout", "handout_pages", "scene_data_lines", "handout_scales", "round_up", "HANDOUT_MANTISSAS"]
 
 class HandoutError(PlansError, ValueError):
     """A handout that cannot be written as asked (such as several pages into one SVG)."""
@@ -130,6 +120,34 @@ def _equations(graphical, structure) -> list[str]:
 
 # --- scales ------------------------------------------------------------------------------
 
+#: The round mantissas of a handout's scale factors: finer than the textbook's
+#: 1, 2, 2.5, 5 so that a drawing fills its box to within a factor of 4/3.
+HANDOUT_MANTISSAS = (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)
+#: Room [mm] kept around a drawing's geometry in its box: the drawing's margin and labels, each side.
+LABEL_ROOM = 9.0
+#: Room [mm] under a drawing for its heading and scale factor.
+CAPTION_ROOM = 13.0
+#: What a page must give a drawing [mm]: the largest vector of a plan, a plan across, the mechanism across.
+LARGEST_VECTOR_MM = 60.0
+PLAN_ACROSS_MM = 40.0
+MECHANISM_ACROSS_MM = 100.0
+
+
+def round_up(need: float, mantissas=HANDOUT_MANTISSAS) -> float:
+    """The smallest m·10ⁿ (m in *mantissas*) not below *need* (as the nearest float to that decimal)."""
+    n = math.floor(math.log10(need)) - 1
+    while True:
+        for m in mantissas:
+            value = float(f"{m}e{n}")
+            if value >= need * (1 - 1e-12):
+                return value
+        n += 1
+
+
+def _larger(k: float) -> float:
+    """The next round scale factor above k."""
+    return round_up(k * (1 + 1e-9) * 1.0000001)
+
 
 def _bbox(points) -> tuple[float, float]:
     zs = list(points)
@@ -140,124 +158,77 @@ def _bbox(points) -> tuple[float, float]:
     return max(xs) - min(xs), max(ys) - min(ys)
 
 
-def handout_scales(positions_run, boxes: dict[str, tuple[float, float]] = BOXES_MM, given: dict | None = None) -> dict[str, float]:
-    """Round scale factors that fit every position's mechanism and plans into their boxes on the page.
-
-    For each kind, the smallest round factor (1, 2, 2.5, 5 × 10ⁿ) with which
-    the largest width and the largest height over all the positions are drawn
-    within the box (the geometry only; labels and captions take the page's
-    remaining room).
-    """
-    from .graphical.scales import MANTISSAS
-
-    given = {k: v for k, v in (given or {}).items() if v is not None}
-    extents = {"k_l": [0.0, 0.0], "k_v": [0.0, 0.0], "k_a": [0.0, 0.0]}
-    for run in positions_run.runs:
-        if not run.ok:
+def _extents(g) -> dict[str, tuple[float, float, float]]:
+    """Physical (width, height, largest vector) of the mechanism [m] and of each plan [m/s, m/s²]."""
+    out = {"k_l": (*_bbox(g.positions.values()), 0.0)}
+    for key, plan in (("k_v", g.velocity_plan), ("k_a", g.acceleration_plan)):
+        if plan is None:
             continue
-        g = run.graphical
-        w, h = _bbox(g.positions.values())
-        extents["k_l"] = [max(extents["k_l"][0], w), max(extents["k_l"][1], h)]
-        for key, plan in (("k_v", g.velocity_plan), ("k_a", g.acceleration_plan)):
-            if plan is None:
-                continue
-            w, h = _bbox([z * plan.scale for z in plan.images.values()] + [0j])
-            extents[key] = [max(extents[key][0], w), max(extents[key][1], h)]
-    out = {}
-    for key, current in positions_run.scales.items():
-        if key in given:
-            out[key] = given[key]
-            continue
-        bw, bh = boxes[key]
-        need = max(extents[key][0] / bw, extents[key][1] / bh)
-        if not (need > 0 and math.isfinite(need)):
-            out[key] = current
-            continue
-        n = math.floor(math.log10(need)) - 1
-        k = None
-        while k is None:
-            for m in MANTISSAS:
-                value = float(f"{m}e{n}")
-                if value >= need * (1 - 1e-12):
-                    k = value
-                    break
-            n += 1
-        out[key] = k
+        w, h = _bbox([z * plan.scale for z in plan.images.values()] + [0j])
+        largest = max((abs(v.tip - v.tail) * plan.scale for v in plan.vectors), default=0.0)
+        out[key] = (w, h, largest)
     return out
 
 
-def _fit_scales(scene, positions, first, given: dict, precision, overrun, cache: dict):
-    """The run at the largest round scale factors whose graphical pages fit on A4.
+def _geometry_box(box) -> tuple[float, float]:
+    _, _, w, h = box
+    return max(w - 2 * LABEL_ROOM, 5.0), max(h - 2 * LABEL_ROOM - CAPTION_ROOM, 5.0)
 
-    Starts from the largest drawings the page boxes allow (enlarged by
-    :data:`FACTORS` [0]) and, while the pages of the positions with the
-    largest drawings do not fit, makes one scale factor one round step
-    larger: that of the largest drawing among the steps that make the pages
-    fit, else among those that win room.
+
+def _fit(extent, box, fallback: float) -> float:
+    gw, gh = _geometry_box(box)
+    need = max(extent[0] / gw, extent[1] / gh)
+    return round_up(need) if need > 0 and math.isfinite(need) else fallback
+
+
+def handout_scales(runs, frame, given: dict | None = None) -> tuple[float, list[dict[str, float]]]:
+    """The scale factors of a handout's position pages for the drawing boxes of *frame*.
+
+    k_l is common to every position (the mechanism at the same scale on
+    every page and on the plan of positions: its largest width and height
+    over the positions fit the mechanism's box); k_v and k_a are chosen per
+    position, each the smallest round factor (:data:`HANDOUT_MANTISSAS`)
+    with which that position's plan fits its box, so that every plan fills
+    its box.  Each page states its own.  Factors in *given* are kept.
+
+    Returns
+    -------
+    (k_l, [ {"k_l", "k_v", "k_a"} per run ])
     """
-    from .positions import run_positions
-
-    def solve_at(scales):
-        return run_positions(scene, positions, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision)
-
-    def excess(run) -> float:
-        return max((overrun(r, run) for r in _worst(run)), default=0.0)
-
-    candidates = [handout_scales(first, {k: (w * FACTORS[0], h * FACTORS[0]) for k, (w, h) in boxes.items()}, given) for boxes in LAYOUT_BOXES_MM]
-    scales = {key: min(c[key] for c in candidates) for key in candidates[0]}
-    free = [key for key in scales if given.get(key) is None]
-    run = solve_at(scales)
-    over = excess(run)
-    for _ in range(24):
-        if over <= 0.0 or not free:
-            return run
-        options = []
-        for key in free:
-            bumped = {**scales, key: _larger(scales[key])}
-            trial = solve_at(bumped)
-            after = excess(trial)
-            # the largest drawing gives way first: among the bumps that make the page
-            # fit, else among those that win room at all
-            kind = {"k_l": "mechanism", "k_v": "velocity", "k_a": "acceleration"}[key]
-            area = max((w * h for (_, k, s, _), (w, h) in cache.items() if k == kind and s == float(scales[key])), default=0.0)
-            rank = (0 if after <= 0.0 else 1 if after < over - 1e-9 else 2, -area)
-            options.append((rank, key, bumped, trial, after))
-        options.sort(key=lambda o: o[0])
-        _, _, scales, run, over = options[0]
-    return run
+    given = {k: v for k, v in (given or {}).items() if v is not None}
+    solved = [r for r in runs if r.ok]
+    extents = [_extents(r.graphical) for r in solved]
+    if "k_l" in given:
+        k_l = given["k_l"]
+    else:
+        w = max((e["k_l"][0] for e in extents), default=0.0)
+        h = max((e["k_l"][1] for e in extents), default=0.0)
+        k_l = _fit((w, h), frame.boxes["mechanism"], solved[0].graphical.scales["k_l"] if solved else 1.0)
+    per_run = []
+    for r, e in zip(solved, extents):
+        scales = {"k_l": k_l}
+        for key, kind in (("k_v", "velocity"), ("k_a", "acceleration")):
+            if key not in e:
+                continue
+            scales[key] = given[key] if key in given else _fit(e[key], frame.boxes[kind], r.graphical.scales[key])
+        per_run.append(scales)
+    return k_l, per_run
 
 
-def _candidates(run, given: dict) -> list[dict]:
-    """Scale factor sets to try, the largest drawings first."""
-    seen = {}
-    for boxes in LAYOUT_BOXES_MM:
-        for f in FACTORS:
-            scaled = {key: (w * f, h * f) for key, (w, h) in boxes.items()}
-            scales = handout_scales(run, scaled, given)
-            key = tuple(sorted(scales.items()))
-            seen.setdefault(key, scales)
-    ordered = sorted(seen.values(), key=lambda s: sum(math.log10(v) for v in s.values()))
-    return ordered + [{k: _larger(_larger(_larger(v))) if given.get(k) is None else v for k, v in ordered[-1].items()}]
-
-
-def _worst(run) -> list:
-    """The positions with the largest mechanism and plans: the ones whose pages must fit."""
-    picks = []
-    measures = {"mech": lambda g: _bbox(g.positions.values()),
-                "vel": lambda g: _bbox([z for z in g.velocity_plan.images.values()] + [0j]),
-                "acc": lambda g: _bbox([z for z in g.acceleration_plan.images.values()] + [0j]) if g.acceleration_plan else (0.0, 0.0)}
-    solved = [r for r in run.runs if r.ok]
-    for measure in measures.values():
-        for axis in (0, 1):
-            best = max(solved, key=lambda r: measure(r.graphical)[axis], default=None)
-            if best is not None and best not in picks:
-                picks.append(best)
-    if solved:
-        total = max(solved, key=lambda r: sum(sum(m(r.graphical)) for m in measures.values()))
-        if total in picks:
-            picks.remove(total)
-        picks.insert(0, total)
-    return picks
+def _frame_score(runs, frame, given) -> float:
+    """How well *frame* serves the drawings: the worst ratio of drawn size to what a page must give (capped at 1.5)."""
+    k_l, per_run = handout_scales(runs, frame, given)
+    worst = math.inf
+    for r, scales in zip([r for r in runs if r.ok], per_run):
+        e = _extents(r.graphical)
+        ratios = [max(e["k_l"][0], e["k_l"][1]) / k_l / MECHANISM_ACROSS_MM]
+        for key in ("k_v", "k_a"):
+            if key in e and e[key][2] > 0:
+                w, h, largest = e[key]
+                ratios.append(largest / scales[key] / LARGEST_VECTOR_MM)
+                ratios.append(max(w, h) / scales[key] / PLAN_ACROSS_MM)
+        worst = min(worst, min(min(x, 1.5) for x in ratios))
+    return worst
 
 
 def _cover_scale(run, list_rows: int) -> float | None:
@@ -278,28 +249,9 @@ def _cover_scale(run, list_rows: int) -> float | None:
     box_w = 210.0 - 2 * 11.0 - 24.0
     box_h = 297.0 - 2 * 11.0 - 45.0 - 30.0 - 5.0 * (list_rows + 2) - 24.0
     need = max(w / box_w, h / max(box_h, 40.0))
-    from .graphical.scales import MANTISSAS
-
-    n = math.floor(math.log10(need)) - 1
-    while True:
-        for m in MANTISSAS:
-            value = float(f"{m}e{n}")
-            if value >= need:
-                return value
-        n += 1
-
-
-def _larger(k: float) -> float:
-    """The next round scale factor above k."""
-    from .graphical.scales import MANTISSAS
-
-    n = math.floor(math.log10(k)) - 1
-    while True:
-        for m in MANTISSAS:
-            value = float(f"{m}e{n}")
-            if value > k * (1 + 1e-9):
-                return value
-        n += 1
+    if not (need > 0 and math.isfinite(need)):
+        return None
+    return round_up(need)
 
 
 # --- pages --------------------------------------------------------------------------------
@@ -315,6 +267,7 @@ def handout_pages(
     k_a: float | None = None,
     precision: float | None = None,
     components: bool = False,
+    progress=None,
 ) -> list[tuple[str, object]]:
     """The handout's pages as (name, matplotlib Figure) pairs, in order.
 
@@ -322,53 +275,72 @@ def handout_pages(
     ``unsolved-K`` for a position that cannot be solved, ``diagram-links``,
     ``diagram-points``, ``diagram-sliders``.  Arguments as :func:`write_handout`.
     """
+    from .compare import compare
     from .drawing.diagrams import draw_cycle_diagrams
-    from .drawing.layout import stamp_page_number
-    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_excess, scale_line
+    from .drawing.layout import position_frames, stamp_page_number
+    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_bands, scale_line
+    from .graphical import construct
     from .loops import loop_equations
     from .positions import run_positions
 
     check_language(lang)
+    say = progress or (lambda text: None)
     given = {"k_l": k_l if k_l is not None else scene.scales.k_l,
              "k_v": k_v if k_v is not None else scene.scales.k_v,
              "k_a": k_a if k_a is not None else scene.scales.k_a}
-    first = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=precision)
+    run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=precision)
     multi = positions is not None
     data = scene_data_lines(scene, lang)
     footer = f"plans — {scene.title}"
-    formula = f"{term('structural_formula', lang)}:  {first.structure.formula}"
+    formula = f"{term('structural_formula', lang)}:  {run.structure.formula}"
+    solved = [r for r in run.runs if r.ok]
 
     def where(r) -> str:
         return f"{term('position', lang)} {r.index}:  {r.label}" if multi else r.label
 
-    def head(r, run):
-        return ["§" + where(r)] + data + ["§" + formula, scale_line(run.scales, lang)]
+    def head(r, scales):
+        lines = ["§" + where(r)] + data + ["§" + formula, scale_line(scales, lang)]
+        return lines + ([term("scales_per_position", lang)] if multi else [])
 
-    def front(r, run, strict):
-        return draw_position_page(r, lang=lang, header_lines=head(r, run), equations=_equations(r.graphical, run.structure), footer=footer, strict=strict)
+    # one frame of drawing boxes for every position page, chosen for the drawings it must hold
+    pages_runs = {}
+    if solved:
+        sample = solved[0]
+        top, bottom = position_page_bands(sample.graphical, lang=lang, header_lines=head(sample, sample.graphical.scales), equations=_equations(sample.graphical, run.structure))
+        frames = position_frames(top, bottom, sample.graphical.acceleration_plan is not None)
+        frame = max(frames, key=lambda f: _frame_score(run.runs, f, given))
+        _, per_run = handout_scales(run.runs, frame, given)
+        for r, scales in zip(solved, per_run):
+            pages_runs[r.index] = (r, scales)
 
-    cache: dict = {}
+    def at_scales(r, scales):
+        g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision)
+        return replace(r, graphical=g, comparisons=compare(r.analytic, g))
 
-    def overrun(r, run) -> float:
-        return position_page_excess(r, lang=lang, header_lines=head(r, run), equations=_equations(r.graphical, run.structure), cache=cache)
-
-    run = _fit_scales(scene, positions, first, given, precision, overrun, cache)
-
-    solved = [r for r in run.runs if r.ok]
     pages: list[tuple[str, object]] = []
-    if multi:
-        listing = [f"{r.index}:  {r.label}" + ("" if r.ok else f"  ({term('not_solved', lang)})") for r in run.runs]
-        if solved:
-            pages.append(("cover", draw_cover_page(run, lang=lang, header_lines=data + ["§" + formula, scale_line(run.scales, lang)], positions_lines=listing, footer=footer, k_l=_cover_scale(run, math.ceil(len(listing) / 3)))))
-    for r in run.runs:
+    if multi and solved:
+        listing = [f"{r.index}:  {r.label}" + ("" if r.ok else f"  ({term('not_solved', lang)}: {_reason(r)})") for r in run.runs]
+        cover_k = _cover_scale(run, math.ceil(len(listing) / 3))
+        cover_lines = data + ["§" + formula] + ([scale_line({"k_l": cover_k}, lang)] if cover_k else [])
+        pages.append(("cover", draw_cover_page(run, lang=lang, header_lines=cover_lines, positions_lines=listing, footer=footer, k_l=cover_k)))
+    for number, r in enumerate(run.runs, start=1):
+        say(f"{term('position', lang)} {number}/{len(run.runs)}")
         if not r.ok:
             pages.append((f"unsolved-{r.index}", draw_unsolved_page(r, lang=lang, where=where(r), message=str(r.error), footer=footer)))
             continue
-        pages.append((f"position-{r.index}", front(r, run, False)))
+        _, scales = pages_runs[r.index]
+        for _ in range(4):  # a drawing whose labels run out of its box: the next round factor
+            here = at_scales(r, scales)
+            fig, overflow = draw_position_page(here, frame=frame, lang=lang, header_lines=head(here, here.graphical.scales), equations=_equations(here.graphical, run.structure), footer=footer)
+            bump = [key for key, kind in (("k_l", "mechanism"), ("k_v", "velocity"), ("k_a", "acceleration")) if overflow.get(kind, 0.0) > 0.5 and given.get(key) is None]
+            if not bump:
+                break
+            scales = {**scales, **{key: _larger(scales[key]) for key in bump}}
+        pages.append((f"position-{r.index}", fig))
         check_head = ["§" + where(r), formula]
-        checks = draw_check_pages(r, lang=lang, header_lines=check_head, loops=loop_equations(r.analytic), table=_table(r.comparisons, lang), footer=footer)
-        for n, fig in enumerate(checks):
-            pages.append((f"check-{r.index}" + (f"-{n + 1}" if n else ""), fig))
+        checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here.comparisons, lang), footer=footer)
+        for n, page in enumerate(checks):
+            pages.append((f"check-{r.index}" + (f"-{n + 1}" if n else ""), page))
 
     if multi and solved:
         for name, fig in draw_cycle_diagrams(run.cycle, marked=run.positions, lang=lang, components=components):
@@ -378,6 +350,12 @@ def handout_pages(
     for number, (_, fig) in enumerate(pages, start=1):
         stamp_page_number(fig, number, total, lang)
     return pages
+
+
+def _reason(r) -> str:
+    """Why a position was not solved, in one short line (the solver's message up to its first colon-free clause)."""
+    text = str(r.error)
+    return text if len(text) <= 90 else text[:87] + "…"
 
 
 def write_handout(
@@ -391,6 +369,7 @@ def write_handout(
     k_a: float | None = None,
     precision: float | None = None,
     components: bool = False,
+    progress=None,
 ) -> list[Path]:
     """Write the handout of a scene: a PDF of A4 pages, or SVG pages.
 
@@ -398,9 +377,9 @@ def write_handout(
     ----------
     scene : Scene
     path : str or pathlib.Path
-        ``FILE.pdf``: every page in one file.  ``FILE.svg``: the first page
-        to FILE.svg and each further page to ``FILE-2.svg``, ``FILE-3.svg``, …
-        (a one-position handout has two pages).
+        ``FILE.pdf``: every page in one file.  ``FILE.svg``: one file per
+        page, ``FILE-01.svg``, ``FILE-02.svg``, … (numbers zero-padded, so
+        they sort in page order; a one-position handout has two pages).
     positions : None, int, str or sequence
         None: the scene's own position.  Otherwise anything
         :func:`plans.positions.parse_positions` takes (``12``,
@@ -416,6 +395,8 @@ def write_handout(
         Drafting precision [mm] of the graphical readings.
     components : bool
         Cycle diagrams of the x and y components of every point's v and a too.
+    progress : callable, optional
+        Called with a short text (``"position 3/12"``, ``"page 5/28"``) as the work goes on.
 
     Returns
     -------
@@ -445,14 +426,17 @@ def write_handout(
         raise HandoutError(str(exc)) from None
     if positions is None:
         _check_solvable(scene)
-    pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components)
+    pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components, progress=progress)
     path.parent.mkdir(parents=True, exist_ok=True)
+    say = progress or (lambda text: None)
+    total = len(pages)
     if suffix == ".pdf":
-        return replace_all({path: render_pdf([fig for _, fig in pages])})
+        return replace_all({path: render_pdf([fig for _, fig in pages], progress=lambda n: say(f"{term('page', lang)} {n}/{total}"))})
     contents = {}
+    digits = max(2, len(str(total)))
     for number, (_, fig) in enumerate(pages, start=1):
-        target = path if number == 1 else path.with_name(f"{path.stem}-{number}{path.suffix}")
-        contents[target] = render_svg(fig)
+        say(f"{term('page', lang)} {number}/{total}")
+        contents[path.with_name(f"{path.stem}-{number:0{digits}d}{path.suffix}")] = render_svg(fig)
     return replace_all(contents)
 
 

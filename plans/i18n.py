@@ -265,6 +265,13 @@ TERMS: dict[str, dict[str, str]] = {
     },
     "continued": {"en": "(continued)", "sr": "(наставак)", "ru": "(продолжение)", "bg": "(продължение)", "sl": "(nadaljevanje)"},
     "page": {"en": "page", "sr": "страна", "ru": "стр.", "bg": "стр.", "sl": "stran"},
+    "scales_per_position": {
+        "en": "$k_l$ the same for every position; $k_v$, $k_a$ chosen for each position to fill the page",
+        "sr": "$k_l$ исти за све положаје; $k_v$, $k_a$ изабрани за сваки положај",
+        "ru": "$k_l$ одинаков для всех положений; $k_v$, $k_a$ выбраны для каждого положения",
+        "bg": "$k_l$ еднакъв за всички положения; $k_v$, $k_a$ избрани за всяко положение",
+        "sl": "$k_l$ enak za vse lege; $k_v$, $k_a$ izbrana za vsako lego",
+    },
     "contents": {"en": "Contents", "sr": "Садржај", "ru": "Содержание", "bg": "Съдържание", "sl": "Vsebina"},
 }
 

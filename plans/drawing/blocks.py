@@ -9,7 +9,6 @@ Data flows one way: solved results → blocks (this module) → page layout
 * :func:`rows_block` — a stack of text lines (headings, equations);
 * :func:`table_block` — a table with a heading and rules;
 * :func:`legend_block` — one legend for both plans;
-* :func:`column` — blocks one above the other;
 * :func:`pretty_equation`, :func:`break_math`, :func:`text_rows` — the lines of
   vector and loop equations, typeset and broken to a width.
 """
@@ -32,7 +31,6 @@ __all__ = [
     "rows_block",
     "table_block",
     "legend_block",
-    "column",
     "pretty_equation",
     "break_math",
     "text_rows",
@@ -150,8 +148,8 @@ def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT) ->
     return Block(width, height, place, kind="table")
 
 
-def legend_block(graphical, lang: str) -> Block:
-    """One legend for both plans: each kind of vector drawn, and construction lines."""
+def legend_block(graphical, lang: str, columns: int = 1) -> Block:
+    """One legend for both plans: each kind of vector drawn, and construction lines (in *columns*, filled down)."""
     words: dict[str, list[str]] = {}
     for plan in (graphical.velocity_plan, graphical.acceleration_plan):
         if plan is None:
@@ -166,30 +164,18 @@ def legend_block(graphical, lang: str) -> Block:
     entries = [(kind, " / ".join(words[kind])) for kind in KINDS if kind in words]
     entries.append(("construction", legend_words("velocity", "construction", lang)))
     row_h = text_size("lp", CAPTION_PT)[1] + 0.8
-    width = 11.0 + max(text_size(w, CAPTION_PT)[0] for _, w in entries)
-    height = row_h * len(entries)
+    column_w = 11.0 + max(text_size(w, CAPTION_PT)[0] for _, w in entries) + 6.0
+    per = -(-len(entries) // max(1, columns))
+    used = -(-len(entries) // per)
+    width = column_w * used - 6.0
+    height = row_h * per
 
     def place(sketch: Sketch, x: float, y: float, page) -> None:
-        top = y + height
-        for kind, text in entries:
-            legend_row(sketch, kind, text, x, top - row_h / 2, text_gid="legend-text")
-            top -= row_h
+        for k, (kind, text) in enumerate(entries):
+            c, r = divmod(k, per)
+            legend_row(sketch, kind, text, x + c * column_w, y + height - row_h * (r + 0.5), text_gid="legend-text")
 
     return Block(width, height, place, kind="legend")
-
-
-def column(blocks: list[Block], gap: float) -> Block:
-    """Blocks one above the other, left-aligned."""
-    width = max(b.width for b in blocks)
-    height = sum(b.height for b in blocks) + gap * (len(blocks) - 1)
-
-    def place(sketch: Sketch, x: float, y: float, page) -> None:
-        top = y + height
-        for b in blocks:
-            b.place(sketch, x, top - b.height, page)
-            top -= b.height + gap
-
-    return Block(width, height, place, kind="column")
 
 
 # --- equations as text ------------------------------------------------------------------

@@ -2,9 +2,8 @@
 
 * :func:`new_page` — an empty page of a given size [mm] with a paper axes in mm;
 * :func:`header`, :func:`header_height`, :func:`footer`, :func:`stamp_page_number`;
-* :func:`arrangements` — the ways of arranging the mechanism, the plans and the legend;
-* :func:`place_rows`, :func:`excess` — rows of blocks placed from the top, and
-  how far they would run over;
+* :func:`position_frames`, :func:`place_in_box` — the arrangements of a
+  position page's drawings (boxes), and a block placed in its box;
 * :func:`choose_page` — the smallest ISO page that holds a content box.
 
 User text (the title) is drawn as plain text (:func:`plans._text.user_text`).
@@ -15,7 +14,7 @@ from __future__ import annotations
 from .._text import user_text
 from ..i18n import term
 from ._canvas import Sketch
-from .blocks import Block, column
+from .blocks import Block
 from .svg import new_figure
 from .typeset import draw_text, measure
 
@@ -32,10 +31,10 @@ __all__ = [
     "header_height",
     "footer",
     "stamp_page_number",
-    "arrangements",
-    "place_rows",
-    "excess",
     "choose_page",
+    "Frame",
+    "position_frames",
+    "place_in_box",
 ]
 
 A4 = (210.0, 297.0)  # mm, portrait
@@ -98,53 +97,6 @@ def stamp_page_number(fig, number: int, total: int, lang: str) -> None:
     fig.text(1 - PAGE_MARGIN / width, PAGE_NUMBER_Y / height, f"{term('page', lang)} {number}/{total}", ha="right", va="center", fontsize=FOOTER_PT, color=FOOTER_COLOUR)
 
 
-def place_rows(sketch: Sketch, size, top: float, rows: list[list[Block]]) -> None:
-    """Rows of blocks from *top* down, each row spread over the page width (placed even if they do not fit)."""
-    avail_w = size[0] - 2 * PAGE_MARGIN
-    for row in rows:
-        widths = sum(b.width for b in row)
-        spare = max(0.0, avail_w - widths)
-        gap = min(spare / (len(row) - 1), 18.0) if len(row) > 1 else 0.0
-        x = PAGE_MARGIN
-        h = max(b.height for b in row)
-        for b in row:
-            b.place(sketch, x, top - b.height, size)
-            x += b.width + gap
-        top -= h + GAP
-
-
-def excess(size, top: float, rows) -> float:
-    """How far [mm] rows of blocks placed from *top* run past the bottom margin or the width (0 or less: they fit)."""
-    pw, _ = size
-    need = sum(max(b.height for b in row) for row in rows) + GAP * (len(rows) - 1)
-    over_h = need - (top - PAGE_MARGIN - 2.0)
-    over_w = max(sum(b.width for b in row) + GAP * (len(row) - 1) for row in rows) - (pw - 2 * PAGE_MARGIN)
-    return max(over_h, over_w)
-
-
-def arrangements(mech: Block, vel: Block, acc: Block | None, legend: Block, size) -> list[list[list[Block]]]:
-    """The arrangements of a page's drawings to try, in order of preference (rows of blocks)."""
-    width = size[0] - 2 * PAGE_MARGIN
-    plans_ = [b for b in (vel, acc) if b is not None]
-    layouts: list[list[list[Block]]] = []
-    # all three in a row (a long, low mechanism)
-    if sum(b.width for b in [mech] + plans_) + GAP * len(plans_) <= width:
-        layouts.append([[mech] + plans_, [legend]])
-    # the mechanism (and the legend under it) beside the plans stacked: a tall mechanism
-    left, right = column([mech, legend], GAP), column(plans_, GAP)
-    if left.width + right.width + GAP <= width:
-        layouts.append([[left, right]])
-    stack = column(plans_ + [legend], GAP)
-    if mech.width + stack.width + GAP <= width:
-        layouts.append([[mech, stack]])
-    # the mechanism and the velocity plan, then the acceleration plan and the legend
-    if acc is not None:
-        layouts.append([[mech, vel], [acc, legend]])
-    else:
-        layouts.append([[mech, vel], [legend]])
-    return layouts
-
-
 def choose_page(width: float, height: float, margin: float) -> tuple[str, tuple[float, float]]:
     """The smallest ISO page (landscape, then portrait) that holds *width* × *height* [mm] within *margin*."""
     need_w, need_h = width + 2 * margin, height + 2 * margin
@@ -153,3 +105,66 @@ def choose_page(width: float, height: float, margin: float) -> tuple[str, tuple[
             if need_w <= size[0] + 1e-9 and need_h <= size[1] + 1e-9:
                 return name, size
     return "custom", (need_w, need_h)
+
+
+# --- the position page of a handout: one frame of boxes, the same on every position page -------------
+
+
+class Frame:
+    """Boxes [mm] (x, y of the lower-left corner, width, height) for the drawings of a position page.
+
+    ``boxes`` has ``"mechanism"``, ``"velocity"`` and (when there is one)
+    ``"acceleration"``; *name* says which arrangement it is.
+    """
+
+    def __init__(self, name: str, boxes: dict[str, tuple[float, float, float, float]]):
+        self.name = name
+        self.boxes = boxes
+
+    def __repr__(self) -> str:
+        return f"Frame({self.name!r}, {self.boxes!r})"
+
+
+def position_frames(top: float, bottom: float, has_acceleration: bool, size=A4) -> list[Frame]:
+    """The arrangements of a position page's drawings between *bottom* and *top* [mm] to choose from.
+
+    * ``top-N``: the mechanism across the page (N % of the height), the plans
+      side by side under it;
+    * ``left-N``: the mechanism in a column on the left (N % of the width),
+      the plans one above the other on the right;
+    * ``rows``: mechanism, velocity plan, acceleration plan one above the other.
+    """
+    x0 = PAGE_MARGIN
+    width = size[0] - 2 * PAGE_MARGIN
+    height = top - bottom
+    frames = []
+    for share in (0.35, 0.45, 0.55):
+        hm = height * share
+        hp = height - hm - GAP
+        if has_acceleration:
+            wp = (width - GAP) / 2
+            boxes = {"mechanism": (x0, top - hm, width, hm), "velocity": (x0, bottom, wp, hp), "acceleration": (x0 + wp + GAP, bottom, wp, hp)}
+        else:
+            boxes = {"mechanism": (x0, top - hm, width, hm), "velocity": (x0, bottom, width, hp)}
+        frames.append(Frame(f"top-{round(share * 100)}", boxes))
+    for share in (0.4, 0.5, 0.6):
+        wm = width * share
+        wp = width - wm - GAP
+        if has_acceleration:
+            hp = (height - GAP) / 2
+            boxes = {"mechanism": (x0, bottom, wm, height), "velocity": (x0 + wm + GAP, bottom + hp + GAP, wp, hp), "acceleration": (x0 + wm + GAP, bottom, wp, hp)}
+        else:
+            boxes = {"mechanism": (x0, bottom, wm, height), "velocity": (x0 + wm + GAP, bottom, wp, height)}
+        frames.append(Frame(f"left-{round(share * 100)}", boxes))
+    if has_acceleration:
+        h = (height - 2 * GAP) / 3
+        frames.append(Frame("rows", {"mechanism": (x0, bottom + 2 * (h + GAP), width, h), "velocity": (x0, bottom + h + GAP, width, h), "acceleration": (x0, bottom, width, h)}))
+    return frames
+
+
+def place_in_box(block: Block, sketch: Sketch, box, size) -> float:
+    """*block* at the top of *box*, centred across it; returns how far [mm] it runs out of the box (0: inside)."""
+    x, y, w, h = box
+    bx = x + max(0.0, (w - block.width) / 2)
+    block.place(sketch, bx, y + h - block.height, size)
+    return max(0.0, block.width - w, block.height - h)

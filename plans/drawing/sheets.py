@@ -29,10 +29,10 @@ from .._text import user_text
 from ..i18n import term
 from ._canvas import Sketch, fit_axes, fmt_number
 from .blocks import Block, drawing_block, legend_block, pretty_equation, rows_block, table_block, text_rows
-from .layout import A4, GAP, PAGE_MARGIN, arrangements, excess, header, header_height, new_page, place_rows
+from .layout import A4, GAP, PAGE_MARGIN, header, header_height, new_page, place_in_box
 from .sheet import draw_sheet, sheet_equations
 from .style import HEADING_PT, MARGIN_MM, SMALL_PT
-from .svg import drawing_rc, new_figure, render_svg
+from .svg import drawing_rc, render_svg
 from .layout import DATA_PT
 from .layout import footer as page_footer
 from .typeset import draw_text, measure
@@ -43,12 +43,11 @@ __all__ = [
     "write_position_sheets",
     "draw_position_sheet",
     "draw_position_page",
-    "position_page_excess",
+    "position_page_bands",
     "draw_check_pages",
     "draw_cover_page",
     "draw_unsolved_page",
     "scale_line",
-    "PageOverflow",
 ]
 
 TEXT_PT = 8.0  # equations on a handout page (their exponents ≥ 6 pt, see plans.drawing.typeset)
@@ -58,28 +57,18 @@ LINE_GAP = 1.1  # mm between the lines of a text block on a page
 PDF_RC = {"pdf.fonttype": 42, "pdf.compression": 6}
 
 
-class PageOverflow(Exception):
-    """The blocks of a page do not fit on it at the scale factors given: :func:`draw_position_page` with ``strict=True``.
-
-    (The handout does not rely on it: it measures with :func:`position_page_excess`
-    and enlarges the scale factors until the page fits.)
-    """
-
-    def __init__(self, excess: float):
-        super().__init__(f"the page is {excess:.1f} mm too tall")
-        self.excess = excess
-
-
 # --- output -----------------------------------------------------------------------
 
 
-def render_pdf(figures) -> bytes:
-    """The figures as the pages of one PDF (in order), deterministic."""
+def render_pdf(figures, progress=None) -> bytes:
+    """The figures as the pages of one PDF (in order), deterministic; *progress* (optional) is called with each page's number."""
     buffer = io.BytesIO()
     with drawing_rc(), matplotlib.rc_context(PDF_RC):
         with PdfPages(buffer, metadata={"CreationDate": None, "ModDate": None, "Creator": "plans", "Producer": "plans (matplotlib)"}) as pdf:
-            for fig in figures:
+            for number, fig in enumerate(figures, start=1):
                 pdf.savefig(fig)
+                if progress is not None:
+                    progress(number)
     return buffer.getvalue()
 
 
@@ -157,99 +146,72 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en") -> list
 # --- handout pages ------------------------------------------------------------------------
 
 
+def position_page_bands(graphical, *, lang: str = "en", header_lines=(), equations=None) -> tuple[float, float]:
+    """(top, bottom) [mm] of the room a position page leaves for its drawings: under the header, above legend and equations."""
+    width = A4[0] - 2 * PAGE_MARGIN
+    with drawing_rc():
+        legend = legend_block(graphical, lang, columns=2)
+        eq_block = _equations_block(graphical, equations, lang, width)
+    top = A4[1] - header_height(list(header_lines))
+    bottom = PAGE_MARGIN + 4.0 + eq_block.height + GAP + legend.height + GAP
+    return top, bottom
+
+
 def draw_position_page(
     run,
     *,
+    frame,
     lang: str = "en",
     header_lines: list[str] = (),
     title: str | None = None,
     equations: list[str] | None = None,
     footer: str = "",
-    strict: bool = True,
 ):
-    """The graphical page of a position, A4 portrait (a matplotlib Figure).
+    """The graphical page of a position, A4 portrait: returns (Figure, overflow).
 
-    The title and data, the mechanism and both plans true to scale (the
-    scale factors stated under each), one legend for the plans, and the
-    vector equations each group's construction solved.
+    The title and data; the mechanism and both plans true to scale, each at
+    the top of its box of *frame* (a :class:`plans.drawing.layout.Frame`,
+    the same on every position page of a handout); one legend for the plans
+    and the vector equations each group's construction solved, at the foot.
+    *overflow* says, per drawing, how far [mm] it runs out of its box (0:
+    inside), so that the caller can choose a larger scale factor.
 
     Parameters
     ----------
     run : plans.positions.PositionRun
         A solved position (``run.ok``).
     header_lines : list of str
-        Data lines under the title (mathtext allowed; a leading ``§`` makes
+        Data lines under the title (``$…$`` typeset; a leading ``§`` makes
         one bold).
     equations : list of str, optional
         Vector equations, by default from the plans' steps.
-    strict : bool
-        Raise :class:`PageOverflow` when the blocks do not fit in any layout;
-        False places them in the last layout anyway (the handout does so,
-        having fitted the scale factors with :func:`position_page_excess`).
     """
-
     g = run.graphical
     size = A4
+    width = size[0] - 2 * PAGE_MARGIN
+    objects = {"mechanism": g, "velocity": g.velocity_plan, "acceleration": g.acceleration_plan}
+    overflow = {}
     with drawing_rc():
         fig, sketch = new_page(size)
-        top = header(sketch, size, title or run.scene.title, list(header_lines))
-        width = size[0] - 2 * PAGE_MARGIN
-
-        mech = drawing_block(fig, "mechanism", g, lang, legend=False)
-        vel = drawing_block(fig, "velocity", g.velocity_plan, lang, legend=False)
-        acc = drawing_block(fig, "acceleration", g.acceleration_plan, lang, legend=False) if g.acceleration_plan is not None else None
-        legend = legend_block(g, lang)
-        layouts = arrangements(mech, vel, acc, legend, size)
-
+        header(sketch, size, title or run.scene.title, list(header_lines))
         eq_block = _equations_block(g, equations, lang, width)
-        chosen = None
-        for layout in layouts:
-            rows = layout + [[eq_block]]
-            if excess(size, top, rows) <= 0.0:
-                chosen = rows
-                break
-        if chosen is None:
-            if strict:
-                raise PageOverflow(excess(size, top, layouts[-1] + [[eq_block]]))
-            chosen = layouts[-1] + [[eq_block]]
-        place_rows(sketch, size, top, chosen)
+        legend = legend_block(g, lang, columns=2)
+        y = PAGE_MARGIN + 4.0
+        eq_block.place(sketch, PAGE_MARGIN, y, size)
+        y += eq_block.height + GAP
+        legend.place(sketch, PAGE_MARGIN, y, size)
+        for kind, box in frame.boxes.items():
+            if objects.get(kind) is None:
+                continue
+            block = drawing_block(fig, kind, objects[kind], lang, legend=False)
+            overflow[kind] = place_in_box(block, sketch, box, size)
         page_footer(sketch, footer)
-    return fig
+    return fig, overflow
 
 
 def _equations_block(g, equations, lang: str, width: float) -> Block:
     lines = [pretty_equation(line) for line in (sheet_equations(g) if equations is None else equations)]
     return rows_block(text_rows(term("vector_equations", lang), lines, width, TEXT_PT), "equation", line_gap=LINE_GAP)
-
-
-def position_page_excess(run, *, lang: str = "en", header_lines=(), equations=None, cache: dict | None = None) -> float:
-    """How far [mm] the graphical page of a position would run over A4 in its best layout (0 or less: it fits).
-
-    Measures the drawings without making the page; *cache* keeps the size of
-    each drawing by (position, kind, scale factor), so trying other scale
-    factors redraws only what changed.
-    """
-    g = run.graphical
-    cache = {} if cache is None else cache
-    width = A4[0] - 2 * PAGE_MARGIN
-    top = A4[1] - header_height(list(header_lines))
-
-    def size_of(kind, obj, scale):
-        key = (run.index, kind, float(scale), lang)
-        if key not in cache:
-            with drawing_rc():
-                fig = new_figure()
-                block = drawing_block(fig, kind, obj, lang, legend=False)
-            cache[key] = (block.width, block.height)
-        return Block(*cache[key], None, kind=kind)
-
-    with drawing_rc():
-        mech = size_of("mechanism", g, g.scales["k_l"])
-        vel = size_of("velocity", g.velocity_plan, g.velocity_plan.scale)
-        acc = size_of("acceleration", g.acceleration_plan, g.acceleration_plan.scale) if g.acceleration_plan is not None else None
-        legend = legend_block(g, lang)
-        eq_block = _equations_block(g, equations, lang, width)
-    return min(excess(A4, top, layout + [[eq_block]]) for layout in arrangements(mech, vel, acc, legend, A4))
 
 
 def draw_check_pages(
@@ -386,7 +348,7 @@ def draw_unsolved_page(run, *, lang: str, where: str, message: str, footer: str 
 
 
 def scale_line(scales: dict, lang: str) -> str:
-    """``"Scale factors: k_l = 0.01 m/mm, k_v = 0.02 (m/s)/mm, k_a = 0.25 (m/s²)/mm"``."""
+    """``"Scale factors:  $k_l$ = 0.01 m/mm,  $k_v$ = 0.02 (m/s)/mm,  $k_a$ = 0.25 (m/s²)/mm"`` (symbols typeset)."""
     units = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}
-    parts = [f"{key} = {fmt_number(value)} {units[key]}" for key, value in scales.items() if key in units]
+    parts = [f"${key}$ = {fmt_number(value)} {units[key]}" for key, value in scales.items() if key in units]
     return f"{term('scale_factors', lang)}:  " + ",  ".join(parts)
