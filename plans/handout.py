@@ -231,6 +231,52 @@ def _frame_score(runs, frame, given) -> float:
     return worst
 
 
+def _common_k_l(solved, per_run, frame, given, solution_at, lang: str) -> float:
+    """The k_l of every position page: that of :func:`handout_scales`, enlarged until the largest mechanism, drawn, fits its box."""
+    from .drawing.blocks import drawing_block
+    from .drawing.svg import drawing_rc, new_figure
+
+    def area(pair):
+        w, h, _ = _extents(pair[0].graphical)["k_l"]
+        return w * h
+
+    r, scales = max(zip(solved, per_run), key=area)
+    for _ in range(3):
+        g = solution_at(r, scales)
+        with drawing_rc():
+            block = drawing_block(new_figure(), "mechanism", g, lang, legend=False)
+        wider = _make_room(g, frame, {"mechanism": (block.width, block.height)}, scales, {**given, "k_v": 1.0, "k_a": 1.0})
+        if wider["k_l"] == scales["k_l"]:
+            break
+        scales = wider
+    return scales["k_l"]
+
+
+def _make_room(g, frame, sizes, scales, given) -> dict[str, float]:
+    """*scales* with each factor enlarged whose drawing, as drawn (*sizes* [mm]), runs out of its box.
+
+    A drawing is its geometry (physical extent / k) plus what does not scale
+    (margin, labels, caption): the new k gives the geometry what the box
+    leaves beside the latter.
+    """
+    out = dict(scales)
+    e = _extents(g)
+    for key, kind in (("k_l", "mechanism"), ("k_v", "velocity"), ("k_a", "acceleration")):
+        if kind not in sizes or given.get(key) is not None or key not in e:
+            continue
+        (w, h), (_, _, bw, bh) = sizes[kind], frame.boxes[kind]
+        if w <= bw + 0.5 and h <= bh + 0.5:
+            continue
+        k = scales[key]
+        need = k
+        for drawn, box, extent in ((w, bw, e[key][0]), (h, bh, e[key][1])):
+            fixed = drawn - extent / k
+            room = box - fixed
+            need = max(need, extent / room if room > 5.0 else k * 4)
+        out[key] = round_up(need * (1 + 1e-9)) if need > k else _larger(k)
+    return out
+
+
 def _cover_scale(run, list_rows: int) -> float | None:
     """A round k_l that fits the plan of positions (every position and the paths) on the cover page."""
     import numpy as np
@@ -302,6 +348,10 @@ def handout_pages(
         lines = ["§" + where(r)] + data + ["§" + formula, scale_line(scales, lang)]
         return lines + ([term("scales_per_position", lang)] if multi else [])
 
+    def at_scales(r, scales):
+        g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision)
+        return replace(r, graphical=g, comparisons=compare(r.analytic, g))
+
     # one frame of drawing boxes for every position page, chosen for the drawings it must hold
     pages_runs = {}
     if solved:
@@ -309,13 +359,12 @@ def handout_pages(
         top, bottom = position_page_bands(sample.graphical, lang=lang, header_lines=head(sample, sample.graphical.scales), equations=_equations(sample.graphical, run.structure))
         frames = position_frames(top, bottom, sample.graphical.acceleration_plan is not None)
         frame = max(frames, key=lambda f: _frame_score(run.runs, f, given))
-        _, per_run = handout_scales(run.runs, frame, given)
+        k_l_common, per_run = handout_scales(run.runs, frame, given)
+        if given.get("k_l") is None:
+            k_l_common = _common_k_l(solved, per_run, frame, given, lambda r, sc: at_scales(r, sc).graphical, lang)
         for r, scales in zip(solved, per_run):
-            pages_runs[r.index] = (r, scales)
-
-    def at_scales(r, scales):
-        g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision)
-        return replace(r, graphical=g, comparisons=compare(r.analytic, g))
+            pages_runs[r.index] = (r, {**scales, "k_l": k_l_common})
+        fixed = {**given, "k_l": k_l_common}  # the same k_l on every page: only k_v, k_a make room page by page
 
     pages: list[tuple[str, object]] = []
     if multi and solved:
@@ -329,13 +378,13 @@ def handout_pages(
             pages.append((f"unsolved-{r.index}", draw_unsolved_page(r, lang=lang, where=where(r), message=str(r.error), footer=footer)))
             continue
         _, scales = pages_runs[r.index]
-        for _ in range(4):  # a drawing whose labels run out of its box: the next round factor
+        for _ in range(3):  # a drawing whose labels run out of its box: the factor that makes room for them
             here = at_scales(r, scales)
-            fig, overflow = draw_position_page(here, frame=frame, lang=lang, header_lines=head(here, here.graphical.scales), equations=_equations(here.graphical, run.structure), footer=footer)
-            bump = [key for key, kind in (("k_l", "mechanism"), ("k_v", "velocity"), ("k_a", "acceleration")) if overflow.get(kind, 0.0) > 0.5 and given.get(key) is None]
-            if not bump:
+            fig, sizes = draw_position_page(here, frame=frame, lang=lang, header_lines=head(here, here.graphical.scales), equations=_equations(here.graphical, run.structure), footer=footer)
+            wider = _make_room(here.graphical, frame, sizes, scales, fixed)
+            if wider == scales:
                 break
-            scales = {**scales, **{key: _larger(scales[key]) for key in bump}}
+            scales = wider
         pages.append((f"position-{r.index}", fig))
         check_head = ["§" + where(r), formula]
         checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here.comparisons, lang), footer=footer)

@@ -167,14 +167,16 @@ def draw_position_page(
     equations: list[str] | None = None,
     footer: str = "",
 ):
-    """The graphical page of a position, A4 portrait: returns (Figure, overflow).
+    """The graphical page of a position, A4 portrait: returns (Figure, sizes).
 
     The title and data; the mechanism and both plans true to scale, each at
     the top of its box of *frame* (a :class:`plans.drawing.layout.Frame`,
     the same on every position page of a handout); one legend for the plans
     and the vector equations each group's construction solved, at the foot.
-    *overflow* says, per drawing, how far [mm] it runs out of its box (0:
-    inside), so that the caller can choose a larger scale factor.
+    *sizes* gives, per drawing, its size [mm] (width, height) as drawn, so
+    that the caller can see whether it stayed in its box
+    (:func:`plans.drawing.layout.place_in_box`) and choose another scale
+    factor.
 
     Parameters
     ----------
@@ -190,7 +192,7 @@ def draw_position_page(
     size = A4
     width = size[0] - 2 * PAGE_MARGIN
     objects = {"mechanism": g, "velocity": g.velocity_plan, "acceleration": g.acceleration_plan}
-    overflow = {}
+    sizes = {}
     with drawing_rc():
         fig, sketch = new_page(size)
         header(sketch, size, title or run.scene.title, list(header_lines))
@@ -204,9 +206,10 @@ def draw_position_page(
             if objects.get(kind) is None:
                 continue
             block = drawing_block(fig, kind, objects[kind], lang, legend=False)
-            overflow[kind] = place_in_box(block, sketch, box, size)
+            place_in_box(block, sketch, box, size)
+            sizes[kind] = (block.width, block.height)
         page_footer(sketch, footer)
-    return fig, overflow
+    return fig, sizes
 
 
 def _equations_block(g, equations, lang: str, width: float) -> Block:
