@@ -89,11 +89,11 @@ def draw_mechanism(solution, ax=None, *, lang: str = "en") -> list:
     -------
     list of matplotlib.artist.Artist
     """
-    return sketch_on(ax, "mech", lambda sketch: MechanismScheme(sketch, solution, lang=lang).draw())
+    return sketch_on(ax, "mech", lambda sketch: _Mechanism(sketch, solution, lang=lang).draw())
 
 
 
-class MechanismScheme:
+class _Mechanism:
     def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True):
         self.lang = lang
         self.show_caption = caption
