@@ -241,15 +241,10 @@ def _common_k_l(solved, per_run, frame, given, solution_at, lang: str) -> float:
         return w * h
 
     r, scales = max(zip(solved, per_run), key=area)
-    for _ in range(3):
-        g = solution_at(r, scales)
-        with drawing_rc():
-            block = drawing_block(new_figure(), "mechanism", g, lang, legend=False)
-        wider = _make_room(g, frame, {"mechanism": (block.width, block.height)}, scales, {**given, "k_v": 1.0, "k_a": 1.0})
-        if wider["k_l"] == scales["k_l"]:
-            break
-        scales = wider
-    return scales["k_l"]
+    g = solution_at(r, scales)
+    with drawing_rc():
+        block = drawing_block(new_figure(), "mechanism", g, lang, legend=False)
+    return _make_room(g, frame, {"mechanism": (block.width, block.height)}, scales, {**given, "k_v": 1.0, "k_a": 1.0})["k_l"]
 
 
 def _make_room(g, frame, sizes, scales, given) -> dict[str, float]:
@@ -266,7 +261,7 @@ def _make_room(g, frame, sizes, scales, given) -> dict[str, float]:
             continue
         (w, h), (_, _, bw, bh) = sizes[kind], frame.boxes[kind]
         if w <= bw + 0.5 and h <= bh + 0.5:
-            continue
+            continue  # (the page lets a drawing run a little over before it asks)
         k = scales[key]
         need = k
         for drawn, box, extent in ((w, bw, e[key][0]), (h, bh, e[key][1])):
@@ -360,11 +355,12 @@ def handout_pages(
         frames = position_frames(top, bottom, sample.graphical.acceleration_plan is not None)
         frame = max(frames, key=lambda f: _frame_score(run.runs, f, given))
         k_l_common, per_run = handout_scales(run.runs, frame, given)
-        if given.get("k_l") is None:
+        if given.get("k_l") is None and len(solved) > 1:  # one position: its page makes room itself
             k_l_common = _common_k_l(solved, per_run, frame, given, lambda r, sc: at_scales(r, sc).graphical, lang)
         for r, scales in zip(solved, per_run):
             pages_runs[r.index] = (r, {**scales, "k_l": k_l_common})
-        fixed = {**given, "k_l": k_l_common}  # the same k_l on every page: only k_v, k_a make room page by page
+        # the same k_l on every page: only k_v, k_a make room page by page
+        fixed = {**given, "k_l": k_l_common} if len(solved) > 1 else given
 
     pages: list[tuple[str, object]] = []
     if multi and solved:
@@ -378,13 +374,14 @@ def handout_pages(
             pages.append((f"unsolved-{r.index}", draw_unsolved_page(r, lang=lang, where=where(r), message=str(r.error), footer=footer)))
             continue
         _, scales = pages_runs[r.index]
-        for _ in range(3):  # a drawing whose labels run out of its box: the factor that makes room for them
-            here = at_scales(r, scales)
-            fig, sizes = draw_position_page(here, frame=frame, lang=lang, header_lines=head(here, here.graphical.scales), equations=_equations(here.graphical, run.structure), footer=footer)
-            wider = _make_room(here.graphical, frame, sizes, scales, fixed)
-            if wider == scales:
-                break
-            scales = wider
+
+        def rescale(g, kind, size, r=r):
+            key = {"mechanism": "k_l", "velocity": "k_v", "acceleration": "k_a"}[kind]
+            wider = _make_room(g, frame, {kind: size}, g.scales, fixed)
+            return None if wider[key] == g.scales[key] else at_scales(r, {**g.scales, key: wider[key]}).graphical
+
+        fig, g = draw_position_page(at_scales(r, scales), frame=frame, lang=lang, header_lines=lambda g, r=r: head(r, g.scales), equations=_equations(r.graphical, run.structure), footer=footer, rescale=rescale)
+        here = replace(r, graphical=g, comparisons=compare(r.analytic, g))
         pages.append((f"position-{r.index}", fig))
         check_head = ["§" + where(r), formula]
         checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here.comparisons, lang), footer=footer)

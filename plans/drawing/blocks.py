@@ -83,7 +83,9 @@ def drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True) ->
         ax.set_aspect("auto")
         ax.set_position([x / pw, y / ph, width / pw, height / ph])
 
-    return Block(width, height, place, kind=kind)
+    block = Block(width, height, place, kind=kind)
+    block.axes = ax  # so that a page can take the drawing back (ax.remove()) and draw it again
+    return block
 
 
 def rows_block(rows, gid: str, *, line_gap: float) -> Block:

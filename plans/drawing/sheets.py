@@ -52,6 +52,8 @@ __all__ = [
 
 TEXT_PT = 8.0  # equations on a handout page (their exponents ≥ 6 pt, see plans.drawing.typeset)
 LINE_GAP = 1.1  # mm between the lines of a text block on a page
+#: a drawing may run this far [mm] past its box (into the gap between boxes) before it is drawn again smaller
+BOX_TOLERANCE = 2.5
 
 #: rcParams of PDF output: TrueType fonts embedded (DejaVu Sans covers Cyrillic and Greek).
 PDF_RC = {"pdf.fonttype": 42, "pdf.compression": 6}
@@ -162,54 +164,63 @@ def draw_position_page(
     *,
     frame,
     lang: str = "en",
-    header_lines: list[str] = (),
+    header_lines=(),
     title: str | None = None,
     equations: list[str] | None = None,
     footer: str = "",
+    rescale=None,
 ):
-    """The graphical page of a position, A4 portrait: returns (Figure, sizes).
+    """The graphical page of a position, A4 portrait: returns (Figure, the GraphicalSolution drawn).
 
     The title and data; the mechanism and both plans true to scale, each at
     the top of its box of *frame* (a :class:`plans.drawing.layout.Frame`,
     the same on every position page of a handout); one legend for the plans
     and the vector equations each group's construction solved, at the foot.
-    *sizes* gives, per drawing, its size [mm] (width, height) as drawn, so
-    that the caller can see whether it stayed in its box
-    (:func:`plans.drawing.layout.place_in_box`) and choose another scale
-    factor.
 
     Parameters
     ----------
     run : plans.positions.PositionRun
         A solved position (``run.ok``).
-    header_lines : list of str
+    header_lines : list of str, or callable
         Data lines under the title (``$…$`` typeset; a leading ``§`` makes
-        one bold).
+        one bold); a callable is given the solution drawn (its scale factors
+        are those the page states).
     equations : list of str, optional
         Vector equations, by default from the plans' steps.
+    rescale : callable, optional
+        ``rescale(solution, kind, (width, height))`` is called when a drawing
+        (kind ``"mechanism"``, ``"velocity"``, ``"acceleration"``) runs out
+        of its box; it returns the solution at another scale factor to draw
+        again (at most twice), or None to keep the drawing.
     """
     g = run.graphical
     size = A4
     width = size[0] - 2 * PAGE_MARGIN
-    objects = {"mechanism": g, "velocity": g.velocity_plan, "acceleration": g.acceleration_plan}
-    sizes = {}
+    objects = {"mechanism": lambda s: s, "velocity": lambda s: s.velocity_plan, "acceleration": lambda s: s.acceleration_plan}
     with drawing_rc():
         fig, sketch = new_page(size)
-        header(sketch, size, title or run.scene.title, list(header_lines))
+        for kind, box in frame.boxes.items():
+            if objects[kind](g) is None:
+                continue
+            for attempt in range(3):
+                block = drawing_block(fig, kind, objects[kind](g), lang, legend=False)
+                inside = block.width <= box[2] + BOX_TOLERANCE and block.height <= box[3] + BOX_TOLERANCE
+                other = None if inside or rescale is None or attempt == 2 else rescale(g, kind, (block.width, block.height))
+                if other is None:
+                    break
+                block.axes.remove()
+                g = other
+            place_in_box(block, sketch, box, size)
+        lines = header_lines(g) if callable(header_lines) else header_lines
+        header(sketch, size, title or run.scene.title, list(lines))
         eq_block = _equations_block(g, equations, lang, width)
         legend = legend_block(g, lang, columns=2)
         y = PAGE_MARGIN + 4.0
         eq_block.place(sketch, PAGE_MARGIN, y, size)
         y += eq_block.height + GAP
         legend.place(sketch, PAGE_MARGIN, y, size)
-        for kind, box in frame.boxes.items():
-            if objects.get(kind) is None:
-                continue
-            block = drawing_block(fig, kind, objects[kind], lang, legend=False)
-            place_in_box(block, sketch, box, size)
-            sizes[kind] = (block.width, block.height)
         page_footer(sketch, footer)
-    return fig, sizes
+    return fig, g
 
 
 def _equations_block(g, equations, lang: str, width: float) -> Block:
