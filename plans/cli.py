@@ -147,6 +147,7 @@ def build_parser() -> argparse.ArgumentParser:
     _position_argument(handout, several=True)
     handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg for SVG pages")
     handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
+    handout.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr (shown only when stderr is a terminal)")
     _language_argument(handout)
     _scale_arguments(handout)
 
@@ -344,10 +345,28 @@ def _handout(args) -> int:
         k_a=args.k_a,
         precision=args.precision,
         components=args.components,
+        progress=_progress(args),
     )
+    _progress_done(args)
     for path in paths:
         print(path)
     return 0
+
+
+def _progress(args):
+    """A function that shows ``"page 5/28"`` on stderr, in place, when stderr is a terminal (and not --quiet); else None."""
+    if getattr(args, "quiet", False) or not sys.stderr.isatty():
+        return None
+
+    def show(text: str) -> None:
+        print(f"\rplans: {text}\033[K", end="", file=sys.stderr, flush=True)
+
+    return show
+
+
+def _progress_done(args) -> None:
+    if _progress(args) is not None:
+        print("\r\033[K", end="", file=sys.stderr, flush=True)
 
 
 def _bench(args) -> int:
@@ -383,6 +402,9 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_ERROR
     except BrokenPipeError:  # plans solve ... | head
         return 0
+    except KeyboardInterrupt:  # Ctrl-C: files are written all at once at the end, so none is half written
+        print("\nplans: interrupted; nothing written", file=sys.stderr)
+        return 130
     except OSError as exc:  # an output file or directory that cannot be written
         target = getattr(exc, "filename2", None) or exc.filename  # a rename names the temporary file first
         where = f" {target}" if target else ""

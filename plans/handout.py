@@ -473,7 +473,6 @@ def write_handout(
     if positions is None:
         _check_solvable(scene)
     pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components, progress=progress)
-    path.parent.mkdir(parents=True, exist_ok=True)
     say = progress or (lambda text: None)
     total = len(pages)
     if suffix == ".pdf":

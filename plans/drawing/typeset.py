@@ -48,7 +48,10 @@ _SYMBOLS = {
     "varphi": "φ", "varepsilon": "ε", "vartheta": "ϑ", "phi": "ϕ", "epsilon": "ϵ", "ldots": "…", "dots": "…",
     "sqrt": "√", "sum": "Σ", "partial": "∂", "nabla": "∇", "in": "∈", "cdots": "⋯", "lbrace": "{", "rbrace": "}",
 }
-_SPACES = {",": 3 / 18, ":": 4 / 18, ";": 5 / 18, " ": 1 / 3, "!": 0.0, "quad": 1.0, "qquad": 2.0, "enspace": 0.5}
+#: spaces as characters of the font (so that a run of text is not cut at a space)
+_SPACES = {",": "\u2009", ":": "\u2005", ";": "\u2005", " ": " ", "!": "", "quad": "\u2003", "qquad": "\u2003\u2003", "enspace": "\u2002"}
+#: letters set upright in math: the constants e and i (ISO 80000-2); other Latin letters are variables, italic
+_UPRIGHT_LETTERS = {"e", "i"}
 _ACCENTS = {"dot": "\u0307", "ddot": "\u0308", "vec": "\u20d7", "bar": "\u0304", "hat": "\u0302", "tilde": "\u0303"}
 _UPRIGHT = {"mathrm", "text", "textrm", "mathsf", "operatorname", "mathbf", "mathit"}
 _IGNORED = {"left", "right", "displaystyle", "limits", "big", "Big"}
@@ -86,7 +89,7 @@ def _greek(name: str) -> str | None:
 
 # --- parsing -----------------------------------------------------------------------------
 
-# nodes: ("char", text, italic) | ("space", em) | ("group", [nodes], upright) | ("script", base, sup, sub)
+# nodes: ("char", text, italic) | ("space", characters) | ("group", [nodes], upright) | ("script", base, sup, sub)
 
 
 def _parse(s: str) -> list:
@@ -117,7 +120,7 @@ def _parse(s: str) -> list:
             if name in _SPACES:
                 return ("space", _SPACES[name])
             if name in _IGNORED:
-                return ("space", 0.0)
+                return ("space", "")
             if name in _UPRIGHT:
                 inner = atom(True)
                 return ("group", [inner] if inner else [], True)
@@ -132,8 +135,8 @@ def _parse(s: str) -> list:
             return ("char", name, False)  # unknown: its name, never an error
         pos += 1
         if ch == " ":
-            return ("space", 0.0)
-        return ("char", ch, ch.isascii() and ch.isalpha() and not upright)
+            return ("space", "")
+        return ("char", ch, ch.isascii() and ch.isalpha() and ch not in _UPRIGHT_LETTERS and not upright)
 
     def seq(upright: bool, close: str | None) -> list:
         nonlocal pos
@@ -207,7 +210,7 @@ class _Layout:
         for k, node in enumerate(nodes):
             kind = node[0]
             if kind == "space":
-                self.x += node[1] * size * MM_PER_PT
+                self.emit(node[1], rise, size, False)
             elif kind == "char":
                 ch = node[1]
                 if ch in _BINARY and top:

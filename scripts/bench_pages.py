@@ -1,0 +1,55 @@
+"""Whole-process times of the commands that make pages (issue 11 §6 targets).
+
+    python scripts/bench_pages.py            # each command 3 times, best of 3
+    python scripts/bench_pages.py --runs 1
+
+Each command runs in a fresh process (imports included), as a user runs it;
+the table gives the best wall time and the CPU time (user + system) of that
+run, and the target.  Run it from the repository root on an otherwise idle
+machine: other work on the same cores slows the wall times.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+CASES = [
+    ("handout six-bar --positions 12 (PDF, 28 pages)", ["handout", "--example", "six-bar", "--positions", "12", "-o", "{out}/six-bar.pdf"], 5.0),
+    ("draw six-bar --positions 12 (13 SVG)", ["draw", "--example", "six-bar", "--positions", "12", "-o", "{out}/sheets"], 3.0),
+    ("draw six-bar (4 SVG)", ["draw", "--example", "six-bar", "-o", "{out}/one"], 1.0),
+]
+
+
+def _run(argv: list[str]) -> tuple[float, float]:
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "plans", *argv], cwd=ROOT, check=True, stdout=subprocess.DEVNULL, env={**os.environ, "PYTHONPATH": str(ROOT)})
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return wall, cpu
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=3)
+    args = parser.parse_args(argv)
+    print(f"{'command':52} {'wall [s]':>9} {'CPU [s]':>8} {'target':>7}")
+    with tempfile.TemporaryDirectory() as out:
+        for name, command, target in CASES:
+            best = min((_run([a.format(out=out) for a in command]) for _ in range(args.runs)), key=lambda t: t[0])
+            print(f"{name:52} {best[0]:9.2f} {best[1]:8.2f} {target:7.1f}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
