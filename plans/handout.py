@@ -124,7 +124,7 @@ def _equations(graphical, structure) -> list[str]:
 #: 1, 2, 2.5, 5 so that a drawing fills its box to within a factor of 4/3.
 HANDOUT_MANTISSAS = (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)
 #: Room [mm] kept around a drawing's geometry in its box: the drawing's margin and labels, each side.
-LABEL_ROOM = 9.0
+LABEL_ROOM = 6.0
 #: Room [mm] under a drawing for its heading and scale factor.
 CAPTION_ROOM = 13.0
 #: What a page must give a drawing [mm]: the largest vector of a plan, a plan across, the mechanism across.
@@ -309,12 +309,15 @@ def handout_pages(
     precision: float | None = None,
     components: bool = False,
     progress=None,
+    record: list | None = None,
 ) -> list[tuple[str, object]]:
     """The handout's pages as (name, matplotlib Figure) pairs, in order.
 
     Names: ``cover``, ``position-K`` and ``check-K`` for each position K,
     ``unsolved-K`` for a position that cannot be solved, ``diagram-links``,
-    ``diagram-points``, ``diagram-sliders``.  Arguments as :func:`write_handout`.
+    ``diagram-points``, ``diagram-sliders``.  Arguments as :func:`write_handout`;
+    *record* (a list), when given, receives ``(page name, PositionRun drawn)``
+    for every position page (the solution at the scale factors the page states).
     """
     from .compare import compare
     from .drawing.diagrams import draw_cycle_diagrams
@@ -340,8 +343,10 @@ def handout_pages(
         return f"{term('position', lang)} {r.index}:  {r.label}" if multi else r.label
 
     def head(r, scales):
-        lines = ["§" + where(r)] + data + ["§" + formula, scale_line(scales, lang)]
-        return lines + ([term("scales_per_position", lang)] if multi else [])
+        # the scene's data are on the cover of a multi-position handout: its position pages give the room to the drawings
+        if multi:
+            return ["§" + where(r), "§" + formula, scale_line(scales, lang) + ";  " + term("scales_per_position", lang)]
+        return ["§" + where(r)] + data + ["§" + formula, scale_line(scales, lang)]
 
     def at_scales(r, scales):
         g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision)
@@ -382,6 +387,8 @@ def handout_pages(
 
         fig, g = draw_position_page(at_scales(r, scales), frame=frame, lang=lang, header_lines=lambda g, r=r: head(r, g.scales), equations=_equations(r.graphical, run.structure), footer=footer, rescale=rescale)
         here = replace(r, graphical=g, comparisons=compare(r.analytic, g))
+        if record is not None:
+            record.append((f"position-{r.index}", here))
         pages.append((f"position-{r.index}", fig))
         check_head = ["§" + where(r), formula]
         checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here.comparisons, lang), footer=footer)

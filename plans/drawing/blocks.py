@@ -251,10 +251,11 @@ def break_math(line: str, width: float, size: float) -> list[tuple[str, float]]:
     final: list[tuple[str, float]] = []
     for text, s in out:
         w = measure(text, s)[0]
+        shrunk = s * max(MIN_SHRINK, width / w * 0.999)
         if w <= width:
             final.append((text, s))
-        elif w * MIN_SHRINK <= width:
-            final.append((text, s * width / w * 0.999))
+        elif measure(text, shrunk)[0] <= width:
+            final.append((text, shrunk))
         else:
             small = s * MIN_SHRINK
             final.extend((piece, small) for piece in _wrap_plain(_plain(text), width, small))
@@ -262,9 +263,11 @@ def break_math(line: str, width: float, size: float) -> list[tuple[str, float]]:
 
 
 def _plain(text: str) -> str:
+    """A math line as plain text that keeps its meaning (``ω_3^2``, true minus signs), for wrapping inside a term."""
     from ..loops import plain
 
-    return plain(text)
+    flat = plain(text.replace(r"\qquad", r"\quad"))
+    return " ".join(flat.split()).replace(" - ", " − ").replace("(-", "(−").replace("=-", "=−")
 
 
 def _wrap_plain(text: str, width: float, size: float) -> list[str]:

@@ -165,6 +165,6 @@ def position_frames(top: float, bottom: float, has_acceleration: bool, size=A4) 
 def place_in_box(block: Block, sketch: Sketch, box, size) -> float:
     """*block* at the top of *box*, centred across it; returns how far [mm] it runs out of the box (0: inside)."""
     x, y, w, h = box
-    bx = x + max(0.0, (w - block.width) / 2)
+    bx = x + (w - block.width) / 2
     block.place(sketch, bx, y + h - block.height, size)
     return max(0.0, block.width - w, block.height - h)
