@@ -7,9 +7,14 @@
 
 from __future__ import annotations
 
+import re
 import unicodedata
 
-__all__ = ["SUBSCRIPT", "subscript", "user_text"]
+__all__ = ["SUBSCRIPT", "subscript", "user_text", "decimal_comma", "DECIMAL_COMMA"]
+
+#: languages whose numbers are written with a decimal comma (0,025)
+DECIMAL_COMMA = ("sr", "ru", "bg", "sl")
+_DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
 
 #: Digits to subscript digits, for :meth:`str.translate`.
 SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
@@ -40,3 +45,14 @@ def user_text(text) -> str:
             continue
         out.append(" " if category in ("Cc", "Zl", "Zp") else ch)
     return " ".join("".join(out).split()).replace("$", r"\$")
+
+
+def decimal_comma(text: str, lang: str) -> str:
+    """*text* with the decimal point of its numbers as *lang* writes it: ``0.025`` → ``0,025`` in sr, ru, bg, sl.
+
+    Only a point between two digits changes (``5.rod``, ``I(0,2)`` stay).
+
+    >>> decimal_comma("k_v = 0.025 (m/s)/mm, φ = 55.0°", "ru")
+    'k_v = 0,025 (m/s)/mm, φ = 55,0°'
+    """
+    return _DECIMAL_POINT.sub(",", text) if lang in DECIMAL_COMMA else text

@@ -345,7 +345,7 @@ def handout_pages(
     def head(r, scales):
         # the scene's data are on the cover of a multi-position handout: its position pages give the room to the drawings
         if multi:
-            return ["§" + where(r), "§" + formula, scale_line(scales, lang) + ";  " + term("scales_per_position", lang)]
+            return ["§" + where(r), "§" + formula, scale_line(scales, lang), term("scales_per_position", lang)]
         return ["§" + where(r)] + data + ["§" + formula, scale_line(scales, lang)]
 
     def at_scales(r, scales):

@@ -407,20 +407,50 @@ def sweep_csv(analytic) -> str:
 # --- the sheet's results table -------------------------------------------------
 
 _UNITS = {"v": "m/s", "a": "m/s²", "omega": "rad/s", "epsilon": "rad/s²", "v_rel": "m/s", "a_rel": "m/s²", "coriolis": "m/s²"}
-_SYMBOL = {"v": "v", "a": "a", "omega": "ω", "epsilon": "ε", "v_rel": "v_rel", "a_rel": "a_rel", "coriolis": "a_cor"}
+#: the symbols of the sheet table, typeset (``$…$``): v_A, ω₃, the relative velocity vʳ, aʳ and the Coriolis aᵏ
+_SYMBOL = {"v": "v", "a": "a", "omega": r"\omega", "epsilon": r"\varepsilon", "v_rel": "v^{r}", "a_rel": "a^{r}", "coriolis": "a^{k}"}
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def _number(value: float, digits: int = 4) -> str:
+    """*value* to *digits* significant digits as printed in a table: true minus sign, no ``e`` notation.
+
+    Ordinary magnitudes (1e-3 … 1e6) in positional notation (``12160``,
+    ``−0.7759``); others as ``2.615·10⁻⁹``.
+    """
+    if value == 0 or not math.isfinite(value):
+        return "0" if value == 0 else str(value)
+    text = f"{value:.{digits}g}"
+    if "e" in text:
+        if 1e-3 <= abs(value) < 1e6:
+            text = f"{float(text):.0f}"
+        else:
+            mantissa, exponent = text.split("e")
+            text = f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}"
+    return text.replace("-", "−")
 
 
 def _magnitude(value) -> str:
     if isinstance(value, complex):
-        return f"{abs(value):.4g} ∠ {math.degrees(cmath.phase(value)):.1f}°" if value != 0 else "0"
-    return f"{value:.4g}"
+        return f"{_number(abs(value))} ∠ {math.degrees(cmath.phase(value)):.1f}°".replace("-", "−") if value != 0 else "0"
+    return _number(value)
+
+
+def _error(value: float) -> str:
+    """A relative error as ``1.0·10⁻⁴`` (``0`` for none)."""
+    if value == 0:
+        return "0"
+    mantissa, exponent = f"{value:.1e}".split("e")
+    return f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}".replace("-", "−")
 
 
 def sheet_table(comparisons: list[Comparison]) -> list[list[str]]:
     """Rows of preformatted text for a sheet: header, then one row per quantity.
 
     Vectors are written as magnitude ∠ direction; signed scalars keep their
-    sign (counter-clockwise positive for ω, ε; along the guide for v_rel, a_rel).
+    sign (counter-clockwise positive for ω, ε; along the guide for vʳ, aʳ).
+    Symbols are typeset (``$v_{A}$``, ``$\\omega_{3}$``, ``$a^{k}$`` for the
+    Coriolis component); numbers have true minus signs and no ``e`` notation.
     Quantities that both methods give as exactly zero (the Coriolis term of a
     guide that does not turn, ω of a link that only translates, a point at
     rest) are left out, as they are left off the plans.
@@ -431,7 +461,9 @@ def sheet_table(comparisons: list[Comparison]) -> list[list[str]]:
             continue
         if row.analytic == 0 and row.graphical == 0:
             continue
-        where = {"points": "", "links": "link ", "sliders": "slider "}[row.section]
-        label = f"{_SYMBOL[row.quantity]} {where}{row.name} [{_UNITS[row.quantity]}]"
-        rows.append([label, _magnitude(row.graphical), _magnitude(row.analytic), f"{row.rel_error:.1e}"])
+        if row.section == "sliders":
+            label = f"${_SYMBOL[row.quantity]}$ slider {row.name} [{_UNITS[row.quantity]}]"
+        else:
+            label = f"${_SYMBOL[row.quantity]}_{{{row.name}}}$ [{_UNITS[row.quantity]}]"
+        rows.append([label, _magnitude(row.graphical), _magnitude(row.analytic), _error(row.rel_error)])
     return rows

@@ -53,7 +53,7 @@ def test_the_pages_of_a_multi_position_handout(russian):
         assert (float(page.mediabox.width), float(page.mediabox.height)) == pytest.approx(A4_PT, abs=0.01)
     texts = [page.extract_text() for page in russian.pages]
     assert "План положений механизма" in texts[0]  # the plan of positions
-    assert "Положения" in texts[0] and "0:  φ₂ = 60.0°" in texts[0] and "1:  φ₂ = 240.0°" in texts[0]
+    assert "Положения" in texts[0] and "0:  φ₂ = 60,0°" in texts[0] and "1:  φ₂ = 240,0°" in texts[0]  # decimal comma in Russian
     for k, (graphical, check) in enumerate(((1, 2), (3, 4))):
         assert f"Положение {k}:" in texts[graphical]
         assert "План скоростей" in texts[graphical] and "План ускорений" in texts[graphical]
@@ -69,7 +69,8 @@ def test_the_pages_of_a_multi_position_handout(russian):
 
 def test_one_k_l_on_every_position_page_and_the_page_says_k_v_k_a_are_its_own(russian):
     pages = [russian.pages[1].extract_text(), russian.pages[3].extract_text()]
-    k_l = {re.search(r"k\s*l\s*= ([0-9.]+) m/mm", text).group(1) for text in pages}
+    k_l = {re.search(r"k\s*l\s*= ([0-9,]+) m/mm", text).group(1) for text in pages}
+    assert all("," in value for value in k_l)  # decimal comma in Russian
     assert len(k_l) == 1
     for text in pages:
         assert "выбраны для каждого положения" in text
@@ -115,7 +116,7 @@ def test_a_one_position_handout_is_two_pages_the_plans_and_the_check(single):
     assert "Vector equations of the plans" in first
     assert "Graphical against analytic" in second and "rel. error" in second
     assert "Analytic check: complex-number method" in second
-    assert "-16.04" in second  # v_B of E2 on the loop line
+    assert "−16.04" in second  # v_B of E2 on the loop line, with a true minus sign
 
 
 def test_the_pdf_is_the_same_bytes_every_time(single, tmp_path):

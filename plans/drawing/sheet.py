@@ -12,7 +12,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from .._files import replace_all
-from .._text import user_text
+from .._text import decimal_comma, user_text
 from ..i18n import term
 from ._canvas import Sketch
 from .blocks import drawing_block, pretty_equation, rows_block, table_block
@@ -94,7 +94,7 @@ def draw_sheet(
     title : str, optional
         Instead of the scene's title.
     """
-    table = translate_table(table, lang) if table else table
+    table = [[decimal_comma(cell, lang) for cell in row] for row in translate_table(table, lang)] if table else table
     with drawing_rc():
         fig = new_figure()
         drawings = [drawing_block(fig, "mechanism", solution, lang), drawing_block(fig, "velocity", solution.velocity_plan, lang)]

@@ -25,7 +25,7 @@ import matplotlib
 from matplotlib.backends.backend_pdf import PdfPages
 
 from .._files import replace_all
-from .._text import user_text
+from .._text import decimal_comma, user_text
 from ..i18n import term
 from ._canvas import Sketch, fit_axes, fmt_number
 from .blocks import Block, drawing_block, legend_block, pretty_equation, rows_block, table_block, text_rows
@@ -212,7 +212,7 @@ def draw_position_page(
                 g = other
             place_in_box(block, sketch, box, size)
         lines = header_lines(g) if callable(header_lines) else header_lines
-        header(sketch, size, title or run.scene.title, list(lines))
+        header(sketch, size, title or run.scene.title, [decimal_comma(line, lang) for line in lines])
         eq_block = _equations_block(g, equations, lang, width)
         legend = legend_block(g, lang, columns=2)
         y = PAGE_MARGIN + 4.0
@@ -263,17 +263,17 @@ def draw_check_pages(
         if not block.lines:
             continue
         loop_lines.append("§" + block.title)
-        loop_lines.extend(block.lines)
+        loop_lines.extend(decimal_comma(line, lang) for line in block.lines)
     with drawing_rc():
         rows = text_rows(heading, loop_lines, width, TEXT_PT) if loop_lines else []
         figures = []
         first = True
         while first or rows:
             fig, sketch = new_page(size)
-            top = header(sketch, size, title or run.scene.title, list(header_lines))
+            top = header(sketch, size, title or run.scene.title, [decimal_comma(line, lang) for line in header_lines])
             bottom = PAGE_MARGIN + 4.0
             if first and table:
-                block = table_block(table, term("results", lang), size=SMALL_PT + 0.3)
+                block = table_block([[decimal_comma(cell, lang) for cell in row] for row in table], term("results", lang), size=SMALL_PT + 0.3)
                 block.place(sketch, PAGE_MARGIN, top - block.height, size)
                 top -= block.height + GAP
             if rows:
@@ -324,7 +324,8 @@ def draw_cover_page(
     size = A4
     with drawing_rc():
         fig, sketch = new_page(size)
-        top = header(sketch, size, positions_run.scene.title, list(header_lines))
+        top = header(sketch, size, positions_run.scene.title, [decimal_comma(line, lang) for line in header_lines])
+        positions_lines = [decimal_comma(line, lang) for line in positions_lines]
         ax = fig.add_axes([0, 0, 0.01, 0.01])
         plan_sketch = Sketch(ax, "positions")
         draw_positions_into(plan_sketch, positions_run, lang=lang, k_l=k_l)
@@ -353,8 +354,8 @@ def draw_unsolved_page(run, *, lang: str, where: str, message: str, footer: str 
     """The page of a position that cannot be solved: the position and why, in words."""
     with drawing_rc():
         fig, sketch = new_page(A4)
-        top = header(sketch, A4, run.scene.title, ["§" + where])
-        rows = text_rows(term("not_solved", lang), [message], A4[0] - 2 * PAGE_MARGIN, DATA_PT + 0.5)
+        top = header(sketch, A4, run.scene.title, ["§" + decimal_comma(where, lang)])
+        rows = text_rows(term("not_solved", lang), [decimal_comma(message, lang)], A4[0] - 2 * PAGE_MARGIN, DATA_PT + 0.5)
         block = rows_block(rows, "unsolved", line_gap=LINE_GAP)
         block.place(sketch, PAGE_MARGIN, top - block.height, A4)
         page_footer(sketch, footer)
