@@ -216,19 +216,27 @@ def handout_scales(runs, frame, given: dict | None = None) -> tuple[float, list[
 
 
 def _frame_score(runs, frame, given) -> float:
-    """How well *frame* serves the drawings: the worst ratio of drawn size to what a page must give (capped at 1.5)."""
+    """How well *frame* serves the drawings: the mean and the worst ratio of drawn size to what a page must give.
+
+    Ratios (each capped at 1.5: beyond that a drawing is big enough) of the
+    mechanism across to :data:`MECHANISM_ACROSS_MM`, each plan's largest
+    vector to :data:`LARGEST_VECTOR_MM` and its size across to
+    :data:`PLAN_ACROSS_MM`, over every position; the score is the average of
+    their mean and their minimum, so that a frame is chosen that makes the
+    drawings large without leaving one of them small.
+    """
     k_l, per_run = handout_scales(runs, frame, given)
-    worst = math.inf
+    ratios = []
     for r, scales in zip([r for r in runs if r.ok], per_run):
         e = _extents(r.graphical)
-        ratios = [max(e["k_l"][0], e["k_l"][1]) / k_l / MECHANISM_ACROSS_MM]
+        ratios.append(max(e["k_l"][0], e["k_l"][1]) / k_l / MECHANISM_ACROSS_MM)
         for key in ("k_v", "k_a"):
             if key in e and e[key][2] > 0:
                 w, h, largest = e[key]
                 ratios.append(largest / scales[key] / LARGEST_VECTOR_MM)
                 ratios.append(max(w, h) / scales[key] / PLAN_ACROSS_MM)
-        worst = min(worst, min(min(x, 1.5) for x in ratios))
-    return worst
+    capped = [min(x, 1.5) for x in ratios] or [0.0]
+    return 0.5 * (sum(capped) / len(capped) + min(capped))
 
 
 def _common_k_l(solved, per_run, frame, given, solution_at, lang: str) -> float:

@@ -117,7 +117,7 @@ def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT) ->
     rows = [list(r) + [""] * (columns - len(r)) for r in table]
     pad = 2.0
     widths = [max(measure(r[c], size, "bold" if i == 0 else "normal")[0] for i, r in enumerate(rows)) + 2 * pad for c in range(columns)]
-    row_h = max(text_size("lp", size)[1], max(measure(cell, size)[1] for r in rows for cell in r)) + 1.6 * size / TABLE_PT
+    row_h = text_size("lp", size)[1] * 1.1 + 1.6 * size / TABLE_PT  # a subscript (v_A) drops into the padding
     heading_h = text_size("lp", HEADING_PT)[1] + 2.0
     width = max(sum(widths), text_size(heading, HEADING_PT, "bold")[0])
     height = heading_h + row_h * len(rows) + 1.0

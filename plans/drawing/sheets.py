@@ -51,7 +51,7 @@ __all__ = [
 ]
 
 TEXT_PT = 8.0  # equations on a handout page (their exponents ≥ 6 pt, see plans.drawing.typeset)
-LINE_GAP = 1.1  # mm between the lines of a text block on a page
+LINE_GAP = 0.7  # mm between the lines of a text block on a page
 #: a drawing may run this far [mm] past its box (into the gap between boxes) before it is drawn again smaller
 BOX_TOLERANCE = 2.5
 

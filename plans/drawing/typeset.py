@@ -37,7 +37,7 @@ __all__ = ["measure", "draw_text", "text_width", "runs", "plain_runs", "SCRIPT_S
 SCRIPT_SCALE = 0.75
 MIN_SCRIPT_PT = 6.0
 #: a line with math is this much taller than a line of plain text
-MATH_LINE = 1.3
+MATH_LINE = 1.22
 SUP_RISE = 0.40  # × the size of the text carrying the script
 SUB_DROP = 0.20
 
