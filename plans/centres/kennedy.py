@@ -132,11 +132,12 @@ def _meet(l1, l2):
 
 
 def _normal(x):
-    """A homogeneous point as (x, y, 1) or (dx, dy, 0) with dx² + dy² = 1 and the direction's angle in [0, π)."""
+    """A homogeneous point as (x, y, 1) or (dx, dy, 0) with dx² + dy² = 1 and the direction's angle in [0, π)
+    (a direction within 1e-12 of the x axis points along +x)."""
     ab = math.hypot(x[0], x[1])
     if abs(x[2]) <= INFINITY_TOL * ab:
         dx, dy = x[0] / ab, x[1] / ab
-        if dy < 0 or (dy == 0 and dx < 0):
+        if (dy < 0 and abs(dy) > 1e-12) or (abs(dy) <= 1e-12 and dx < 0):  # the angle in [0°, 180°)
             dx, dy = -dx, -dy
         return (dx + 0.0, dy + 0.0, 0.0)
     return (x[0] / x[2], x[1] / x[2], 1.0)
