@@ -117,7 +117,8 @@ def build_parser() -> argparse.ArgumentParser:
     _scene_argument(solve)
     _position_argument(solve)
     solve.add_argument("--json", action="store_true", help="print the documented JSON schema instead of a table")
-    solve.add_argument("--analytic-only", action="store_true", help="skip the graphical construction")
+    solve.add_argument("--analytic-only", action="store_true", help="skip the graphical construction (and the instant centres)")
+    solve.add_argument("--no-centres", action="store_true", help="skip the instant-centre method (ω and v from Kennedy's theorem)")
     _warn_argument(solve)
     _scale_arguments(solve)
 
@@ -149,6 +150,15 @@ def build_parser() -> argparse.ArgumentParser:
     handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
     _language_argument(handout)
     _scale_arguments(handout)
+
+    centres = commands.add_parser(
+        "centres", help="every instant centre by Kennedy's theorem, ω and v from them; draws centres.svg"
+    )
+    _scene_argument(centres)
+    _position_argument(centres)
+    centres.add_argument("-o", "--output", metavar="DIR", default=".", help="directory for centres.svg (default: the current directory)")
+    centres.add_argument("--k-l", type=_positive, metavar="K", help="mechanism scale, m per mm of drawing (default: the scene's, else automatic)")
+    centres.add_argument("--no-drawing", action="store_true", help="print the table only, write no file")
 
     from . import bench
 
@@ -234,11 +244,55 @@ def _solve(args) -> int:
 
         graphical = _construct(scene, args)
         comparisons = compare(analytic, graphical)
+    centres = _solve_centres(scene, analytic, args)
     if args.json:
-        text = format_json(solution_json(analytic, graphical, comparisons))
+        doc = solution_json(analytic, graphical, comparisons)
+        if centres is not None:
+            from .report import add_centres_json
+
+            add_centres_json(doc, *centres)
+        text = format_json(doc)
     else:
         text = solution_table(analytic, graphical, comparisons)
+        if centres is not None:
+            from .report import centres_comparison_table
+
+            text += centres_comparison_table(centres[1])
     _warn_solution(analytic, graphical)
+    sys.stdout.write(text)
+    return 0
+
+
+def _solve_centres(scene: Scene, analytic, args):
+    """The instant-centre method beside the others: (result, comparisons), or None when skipped or undetermined."""
+    if args.no_centres or args.analytic_only:
+        return None
+    from .centres import CentreError, instant_centres
+    from .compare import compare_centres
+
+    try:
+        result = instant_centres(scene, analytic.structure)
+    except CentreError as exc:
+        _warn(f"instant centres left out: {exc}")
+        return None
+    return result, compare_centres(analytic, result)
+
+
+def _centres(args) -> int:
+    from .centres import instant_centres
+    from .report import centres_table
+
+    scene = _load(args)
+    result = instant_centres(scene)
+    text = centres_table(result)
+    if not args.no_drawing:
+        from ._files import replace_all
+        from .drawing.centres import centres_svg
+
+        path = Path(args.output) / "centres.svg"
+        data = centres_svg(result, args.k_l)
+        replace_all({path: data})
+        text += f"\n{path}\n"
     sys.stdout.write(text)
     return 0
 
@@ -369,6 +423,7 @@ _COMMANDS = {
     "draw": _draw,
     "handout": _handout,
     "bench": _bench,
+    "centres": _centres,
     "examples": _examples,
 }
 

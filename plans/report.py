@@ -435,3 +435,124 @@ def sheet_table(comparisons: list[Comparison]) -> list[list[str]]:
         label = f"{_SYMBOL[row.quantity]} {where}{row.name} [{_UNITS[row.quantity]}]"
         rows.append([label, _magnitude(row.graphical), _magnitude(row.analytic), f"{row.rel_error:.1e}"])
     return rows
+
+
+# --- instant centres (plans.centres) ---------------------------------------------
+
+__all__ += ["centres_json", "add_centres_json", "centres_table", "centres_comparison_table"]
+
+
+def _centre_where(centre) -> list:
+    """``[x, y]`` of a finite centre, or None."""
+    return None if centre.point is None else _vec(centre.point)
+
+
+def _centre_direction(centre) -> float | None:
+    """The direction [°] of a centre at infinity, in [0, 180)."""
+    if centre.point is not None:
+        return None
+    d = math.degrees(math.atan2(centre.direction.imag, centre.direction.real))
+    return _clean(0.0 if d >= 180.0 else d)
+
+
+def _found_words(centre) -> str:
+    if centre.found_by == "kennedy":
+        (a, b), (c, d) = centre.lines
+        return f"Kennedy: {a}{b} ∩ {c}{d}"
+    return centre.found_by
+
+
+def centres_json(result) -> dict:
+    """The ``"centres"`` entry of the JSON document: body numbers and every centre.
+
+    Each centre: ``bodies`` (names), ``point`` [m] or null, ``direction_deg``
+    (of a centre at infinity, in [0, 180)) or null, ``found_by``
+    (``"revolute A"``, ``"prismatic NAME"``, ``"kennedy"``) and ``lines`` (the
+    two Kennedy lines, as pairs of centre labels).
+    """
+    return {
+        "body_numbers": dict(result.numbers),
+        "list": [
+            {"label": c.label, "bodies": list(c.bodies), "point": _centre_where(c), "direction_deg": _centre_direction(c),
+             "found_by": c.found_by, "lines": [list(line) for line in c.lines]}
+            for c in result.centres
+        ],
+    }
+
+
+def add_centres_json(doc: dict, result, comparisons: list[Comparison]) -> dict:
+    """Add the instant-centre method to a :func:`solution_json` document, in place (and return it).
+
+    Each reported point gets ``"centres": {"v", "v_abs_error", "v_rel_error"}``
+    and each link ``"centres": {"omega", "omega_abs_error", "omega_rel_error"}``
+    beside ``"analytic"`` (errors against analytic, as for ``"graphical"``),
+    and the document gets the ``"centres"`` key of :func:`centres_json`.
+    """
+    for row in comparisons:
+        value = _vec(row.graphical) if isinstance(row.graphical, complex) else _clean(row.graphical)
+        entry = {row.quantity: value, f"{row.quantity}_abs_error": _clean(row.abs_error),
+                 f"{row.quantity}_rel_error": _clean(row.rel_error)}
+        target = doc[row.section].get(row.name)
+        if target is not None:
+            target["centres"] = entry
+    doc["centres"] = centres_json(result)
+    return doc
+
+
+def _check_finite_centres(result) -> None:
+    for name, omega in result.links.items():
+        if not math.isfinite(omega):
+            raise PlansError(f"{result.scene.source}: ω of link {name} from the instant centres is not a finite number")
+    for name, v in result.points.items():
+        if not (math.isfinite(v.real) and math.isfinite(v.imag)):
+            raise PlansError(f"{result.scene.source}: v of point {name} from the instant centres is not a finite number")
+
+
+def centres_table(result) -> str:
+    """Every instant centre (where, or its direction at infinity, and what gave it), then ω and v from the centres."""
+    _check_finite_centres(result)
+    scene = result.scene
+    out = io.StringIO()
+    w = out.write
+    n = len(result.numbers)
+    names = ", ".join(f"{number} = {'frame' if body == 'frame' else 'link ' + body}" for body, number in result.numbers.items())
+    w(f"{scene.title}\n")
+    w(f"driver: {_driver_words(scene)}\n")
+    w(f"bodies: {names}\n")
+    w(f"\nInstant centres: n = {n} bodies, n(n−1)/2 = {len(result.centres)} centres; x, y [m], or the direction [°] of a centre at infinity\n")
+    w(f"{'centre':8} {'bodies':8} {'x':>13} {'y':>13}   found by\n")
+    for c in result.centres:
+        pair = ",".join(result.numbers[b] for b in c.bodies)
+        if c.point is not None:
+            where = f"{_clean(c.point.real):13.6g} {_clean(c.point.imag):13.6g}"
+        else:
+            where = f"{'at infinity':>13} {_centre_direction(c):12.3f}°"
+        w(f"{c.label:8} {pair:8} {where}   {_found_words(c)}\n")
+    w("\nVelocities from the centres: ω_j from the ratio theorem, v_M = ω_j × (M − P1j)\n")
+    w(f"{'link':6} {'ω [rad/s]':>13}   {'about':6}\n")
+    for name in scene.links:
+        centre = next(c for c in result.centres if set(c.bodies) == {"frame", name})
+        about = centre.label if centre.point is not None else f"{centre.label} (translates)"
+        w(f"{name:6} {_clean(result.links[name]):13.6g}   {about}\n")
+    w(f"\n{'point':6} {'vx [m/s]':>13} {'vy [m/s]':>13} {'|v|':>13} {'dir [°]':>9}\n")
+    for name in scene.report:
+        w(f"{name:6} " + " ".join(_vector_cells(complex(result.points[name]))) + "\n")
+    return out.getvalue()
+
+
+def centres_comparison_table(comparisons: list[Comparison]) -> str:
+    """The solve table's section for the third method: ω and v from the instant centres, with errors against analytic."""
+    out = io.StringIO()
+    w = out.write
+    w("\nInstant centres (Kennedy), a third method: ω of links, v of points; errors against analytic\n")
+    w(f"{'':6} {'':5} {'centres':>13} {'analytic':>13} {'abs err':>10} {'rel err':>10}\n")
+    for row in comparisons:
+        if row.section == "links":
+            w(f"{'link ' + row.name:10} ω {row.graphical:13.6g} {row.analytic:13.6g} {row.abs_error:10.2e} {row.rel_error:10.2e}\n")
+        else:
+            c, a = complex(row.graphical), complex(row.analytic)
+            w(f"{row.name:10} v {abs(c):13.6g} {abs(a):13.6g} {row.abs_error:10.2e} {row.rel_error:10.2e}   (|v|; error of the vector)\n")
+    if comparisons:
+        worst = max(comparisons, key=lambda r: r.rel_error)
+        w(f"largest relative difference centres vs analytic: {worst.rel_error:.2e} ({worst.section[:-1]} {worst.name}, {worst.quantity})\n")
+    return out.getvalue()
