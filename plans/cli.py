@@ -275,7 +275,14 @@ def _solve_centres(scene: Scene, analytic, args):
     except CentreError as exc:
         _warn(f"instant centres left out: {exc}")
         return None
+    _warn_undetermined(result)
     return result, compare_centres(analytic, result)
+
+
+def _warn_undetermined(result) -> None:
+    for centre in result.centres:
+        if not centre.determined:
+            _warn(f"instant centre {centre.label} is {centre.describe()} (the velocities did not need it)")
 
 
 def _centres(args) -> int:
@@ -285,6 +292,7 @@ def _centres(args) -> int:
     scene = _load(args)
     result = instant_centres(scene)
     text = centres_table(result)
+    _warn_undetermined(result)
     if not args.no_drawing:
         from ._files import replace_all
         from .drawing.centres import centres_svg

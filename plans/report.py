@@ -449,13 +449,15 @@ def _centre_where(centre) -> list:
 
 def _centre_direction(centre) -> float | None:
     """The direction [°] of a centre at infinity, in [0, 180)."""
-    if centre.point is not None:
+    if centre.direction is None:
         return None
-    d = math.degrees(math.atan2(centre.direction.imag, centre.direction.real))
-    return _clean(0.0 if d >= 180.0 else d)
+    d = math.degrees(math.atan2(centre.direction.imag, centre.direction.real)) % 180.0
+    return 0.0 if min(d, 180.0 - d) < 1e-9 else d  # along x to round-off: 0°, not −0.000° or 180.000°
 
 
 def _found_words(centre) -> str:
+    if not centre.determined:
+        return f"undetermined: {centre.why}"
     if centre.found_by == "kennedy":
         (a, b), (c, d) = centre.lines
         return f"Kennedy: {a}{b} ∩ {c}{d}"
@@ -467,14 +469,15 @@ def centres_json(result) -> dict:
 
     Each centre: ``bodies`` (names), ``point`` [m] or null, ``direction_deg``
     (of a centre at infinity, in [0, 180)) or null, ``found_by``
-    (``"revolute A"``, ``"prismatic NAME"``, ``"kennedy"``) and ``lines`` (the
-    two Kennedy lines, as pairs of centre labels).
+    (``"revolute A"``, ``"prismatic NAME"``, ``"kennedy"``, ``"undetermined"``),
+    ``lines`` (the two Kennedy lines, as pairs of centre labels) and, for an
+    undetermined centre only, ``why``.
     """
     return {
         "body_numbers": dict(result.numbers),
         "list": [
             {"label": c.label, "bodies": list(c.bodies), "point": _centre_where(c), "direction_deg": _centre_direction(c),
-             "found_by": c.found_by, "lines": [list(line) for line in c.lines]}
+             "found_by": c.found_by, "lines": [list(line) for line in c.lines], **({} if c.determined else {"why": c.why})}
             for c in result.centres
         ],
     }
@@ -525,12 +528,14 @@ def centres_table(result) -> str:
         pair = ",".join(result.numbers[b] for b in c.bodies)
         if c.point is not None:
             where = f"{_clean(c.point.real):13.6g} {_clean(c.point.imag):13.6g}"
+        elif not c.determined:
+            where = f"{'—':>13} {'—':>13}"
         else:
             where = f"{'at infinity':>13} {_centre_direction(c):12.3f}°"
         w(f"{c.label:8} {pair:8} {where}   {_found_words(c)}\n")
     w("\nVelocities from the centres: ω_j from the ratio theorem, v_M = ω_j × (M − P1j)\n")
     w(f"{'link':6} {'ω [rad/s]':>13}   {'about':6}\n")
-    for name in scene.links:
+    for name in [body for body in result.numbers if body != "frame"]:
         centre = next(c for c in result.centres if set(c.bodies) == {"frame", name})
         about = centre.label if centre.point is not None else f"{centre.label} (translates)"
         w(f"{name:6} {_clean(result.links[name]):13.6g}   {about}\n")

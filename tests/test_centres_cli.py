@@ -143,7 +143,7 @@ def test_centres_command_refuses_an_undetermined_centre_and_writes_nothing(tmp_p
     out = tmp_path / "out"
     assert main(["centres", str(scene), "-o", str(out)]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("plans: error: ") and "instant centre P13 cannot be determined" in err
+    assert err.startswith("plans: error: ") and "the velocity of link 3 is not determined" in err and "P13 is undetermined" in err
     assert not out.exists()
 
 
@@ -170,3 +170,19 @@ omega = "2000 rpm"
     # the same mechanism as E2, numbered one lower: P02 is E2's P13
     assert result.centre("frame", "2").point == pytest.approx(complex(0.3198513, 0.3198513), abs=1e-7)
     assert math.isclose(result.links["2"], -59.4427657, rel_tol=1e-8)
+
+
+def test_undetermined_centres_are_in_the_table_the_json_and_a_warning(tmp_path, capsys):
+    assert main(["centres", "--example", "quick-return", "--at", "90", "-o", str(tmp_path)]) == 0
+    captured = capsys.readouterr()
+    assert re.search(r"^P25\s+2,5\s+—\s+—\s+undetermined: the Kennedy lines P12P15, P23P35, P24P45 are one line", captured.out, re.MULTILINE)
+    assert "plans: warning: instant centre P26 is undetermined" in captured.err
+    svg = (tmp_path / "centres.svg").read_text(encoding="utf-8")
+    assert 'id="centres-undetermined-P25"' in svg and 'id="centres-mark-P25"' not in svg
+    assert 'id="centres-diagram-diagonal-P25"' not in svg and 'id="centres-diagram-side-P25"' not in svg
+    assert main(["solve", "--example", "quick-return", "--at", "90", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    p25 = next(c for c in doc["centres"]["list"] if c["label"] == "P25")
+    assert p25["found_by"] == "undetermined" and p25["point"] is None and p25["direction_deg"] is None
+    assert p25["why"].startswith("the Kennedy lines P12P15")
+    assert doc["links"]["5"]["centres"]["omega"] == 0.0

@@ -209,13 +209,35 @@ omega = 1
 
 
 def test_undetermined_centre_is_named_not_computed():
-    # O, A, B, D on one line: the Kennedy lines for P13 (OA and DB) are one line
+    # O, A, B, D on one line: the Kennedy lines for P13 (OA and DB) are one line, and ω3 needs P13
     with pytest.raises(CentreError) as caught:
         instant_centres(loads(FLAT_FOUR_BAR, source="flat.toml"))
     assert isinstance(caught.value, PlansError) and isinstance(caught.value, ArithmeticError)
-    message = str(caught.value)
-    assert message.startswith("flat.toml: instant centre P13 cannot be determined")
-    assert "P12P23" in message and "P14P34" in message
+    assert str(caught.value) == (
+        "flat.toml: the velocity of link 3 is not determined by the instant centres at this position: it needs its "
+        "centre with the frame P13 and one with a link already known (P23); P13 is undetermined: the Kennedy lines "
+        "P12P23, P14P34 are one line at this position"
+    )
+
+
+def test_quick_return_at_90_deg_has_two_undetermined_centres_and_right_velocities():
+    # φ = 90°: O, A, C, D on the vertical through C, so every Kennedy line for P25 and P26 is that
+    # vertical; the velocities do not need them (link 5 translates: P15 at infinity, vertical)
+    scene = load(example_path("quick-return")).at(math.pi / 2)
+    result = instant_centres(scene)
+    undetermined = {c.label: c.why for c in result.centres if not c.determined}
+    assert undetermined == {
+        "P25": "the Kennedy lines P12P15, P23P35, P24P45 are one line at this position",
+        "P26": "the Kennedy lines P12P16, P23P36, P24P46 are one line at this position",
+    }
+    assert all(c.point is None and c.direction is None for c in result.centres if not c.determined)
+    p15 = result.centre("frame", "5")
+    assert p15.point is None and abs(p15.direction.real) < 1e-12
+    analytic = solve(scene)
+    for link in scene.links:
+        assert result.links[link] == pytest.approx(float(analytic.links[link].omega[0]), abs=1e-12 * 6)
+    for point in scene.point_names:
+        assert abs(result.points[point] - complex(analytic.points[point].v[0])) <= 1e-12
 
 
 def test_centres_import_neither_analytic_nor_graphical_nor_matplotlib():

@@ -57,10 +57,15 @@ class Centre:
         For a centre at infinity, the unit direction it lies in (sense
         immaterial: the angle is taken in [0°, 180°)); None for a finite one.
     found_by : str
-        ``"revolute B"``, ``"prismatic NAME"``, or ``"kennedy"``.
+        ``"revolute B"``, ``"prismatic NAME"``, ``"kennedy"``, or
+        ``"undetermined"`` when no two distinct Kennedy lines give it at this
+        position (then ``point`` and ``direction`` are None and ``why`` says
+        which lines were tried).
     lines : tuple
         For a Kennedy centre, the two lines that gave it, as label pairs
         ``(("P12", "P23"), ("P14", "P34"))``; empty for a primary centre.
+    why : str
+        For an undetermined centre, the reason.
     """
 
     bodies: tuple[str, str]
@@ -69,13 +74,20 @@ class Centre:
     direction: complex | None
     found_by: str
     lines: tuple = ()
+    why: str = ""
+
+    @property
+    def determined(self) -> bool:
+        return self.found_by != "undetermined"
 
     @property
     def at_infinity(self) -> bool:
-        return self.point is None
+        return self.point is None and self.direction is not None
 
     def describe(self) -> str:
-        """``(x, y) m`` or ``at infinity, 90.000°`` for tables and messages."""
+        """``(x, y) m``, ``at infinity, 90.000°`` or ``undetermined: …`` for tables and messages."""
+        if not self.determined:
+            return f"undetermined: {self.why}"
         if self.point is not None:
             return f"({self.point.real:.6g}, {self.point.imag:.6g}) m"
         return f"at infinity, direction {math.degrees(math.atan2(self.direction.imag, self.direction.real)):.3f}°"
@@ -182,11 +194,11 @@ def _direction(scene: Scene, poses: dict[str, Pose], body: str, line: str) -> co
 def find_centres(scene: Scene, poses: dict[str, Pose]) -> list[Centre]:
     """Every instant centre of the bodies at their poses, in label order (P12, P13, …, P23, …).
 
-    Raises
-    ------
-    CentreError
-        A centre no pair gives and no two distinct Kennedy lines determine:
-        names the centre and the lines tried.
+    A centre that no pair gives and no two distinct Kennedy lines determine
+    (every line through it coincides with the others, or passes through two
+    coincident centres: a special position, not a wrong number) is returned
+    as ``found_by = "undetermined"`` with the reason; the construction goes
+    on with the others.
     """
     numbers = body_numbers(scene)
     order = list(numbers)
@@ -235,7 +247,10 @@ def find_centres(scene: Scene, poses: dict[str, Pose]) -> list[Centre]:
                 records[(a, c)] = _record(point, (a, c), label(a, c), "kennedy", used, middle, size)
                 break
         else:
-            raise _undetermined(scene, wanted, known, order, label)
+            break
+    for a, c in wanted:
+        if (a, c) not in records:
+            records[(a, c)] = Centre((a, c), label(a, c), None, None, "undetermined", (), _why(known, order, label, a, c))
     return [records[p] for p in wanted]
 
 
@@ -245,8 +260,8 @@ def _record(h, bodies, label, how, lines, middle, size) -> Centre:
     return Centre(bodies, label, middle + size * complex(h[0], h[1]), None, how, lines)
 
 
-def _undetermined(scene, wanted, known, order, label) -> CentreError:
-    a, c = next(p for p in wanted if p not in known)
+def _why(known, order, label, a, c) -> str:
+    """Why the centre of bodies a, c is not determined: the Kennedy lines available for it."""
     tried = []
     for b in order:
         if b in (a, c):
@@ -255,11 +270,8 @@ def _undetermined(scene, wanted, known, order, label) -> CentreError:
         if ab in known and bc in known:
             line = _join(known[ab], known[bc])
             tried.append(f"{label(a, b)}{label(b, c)}" + (" (its two centres coincide)" if line is None else ""))
-    if len(tried) < 2:
-        why = (f"Kennedy's theorem gives only the line {tried[0]}" if tried else "no two of its bodies' centres with a third body are known")
-    else:
-        why = f"the Kennedy lines {', '.join(tried)} are one line or undefined here (a dead centre or a coincidence of joints)"
-    return CentreError(
-        f"{scene.source}: instant centre {label(a, c)} cannot be determined at this position: {why}; "
-        "no intersection of two distinct lines is available"
-    )
+    if not tried:
+        return "no centre of its two bodies with a third body is known"
+    if len(tried) == 1:
+        return f"Kennedy's theorem gives only the line {tried[0]}"
+    return f"the Kennedy lines {', '.join(tried)} are one line at this position"

@@ -47,6 +47,8 @@ class Motion:
 
 def _through(known: Motion, p1j: Centre, pjk: Centre, size: float) -> Motion | None:
     """Body j's motion from body k's through P_jk and P_1j; None when these centres do not determine it."""
+    if not (p1j.determined and pjk.determined):
+        return None
     if pjk.point is not None:
         vk = known.velocity(pjk.point)
         if p1j.point is None:
@@ -112,10 +114,16 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
             j = left[0]
             p1j = by_pair[(FRAME, j)]
             tried = ", ".join(by_pair[(j, k)].label for k in motions if k != FRAME)
+            unknown = [c for c in [p1j] + [by_pair[(j, k)] for k in motions if k != FRAME] if not c.determined]
+            why = (
+                "; ".join(f"{c.label} is {c.describe()}" for c in unknown)
+                if unknown
+                else f"{p1j.label} coincides with each of them or they all lie at infinity in one direction (a dead centre)"
+            )
             raise CentreError(
                 f"{scene.source}: the velocity of link {j} is not determined by the instant centres at this "
-                f"position: its centre with the frame {p1j.label} and its centres with the links already known "
-                f"({tried}) coincide or are all at infinity in one direction (a dead centre)"
+                f"position: it needs its centre with the frame {p1j.label} and one with a link already known "
+                f"({tried}); {why}"
             )
     return {name: motions[name] for name in scene.bodies}
 

@@ -158,6 +158,8 @@ class _CentresDrawing:
 
     def centres(self) -> None:
         for centre in self.r.centres:
+            if not centre.determined:
+                continue  # named in the caption
             text = centre_text(centre.label)
             if centre.point is not None and self.inside(self.mm(centre.point)):
                 q = self.mm(centre.point)
@@ -191,6 +193,8 @@ def _circle_diagram(s: Sketch, result, centre: complex) -> None:
     colour, lw, dashes = CONSTRUCTION_STYLE
     for c in result.centres:
         a, b = at[c.bodies[0]], at[c.bodies[1]]
+        if not c.determined:
+            continue
         if c.found_by == "kennedy":
             s.line([a, b], color=CENTRE_COLOUR, lw=0.7, dashes=(3.0, 2.0), gid=f"diagram-diagonal-{c.label}", zorder=2.0, obstacle=False)
         else:
@@ -275,6 +279,10 @@ def draw_centres(result, k_l: float | None = None):
            size=CAPTION_PT, ha="left", va="bottom", gid="legend", obstacle=False)
     s.text(complex(lo.real, top - 2.0), "an arrow at the edge points to a far centre (+ its distance beyond the arrow) "
            "or one at infinity (∞)", size=CAPTION_PT, ha="left", va="bottom", gid="legend-edge", obstacle=False)
+    missing = [c for c in result.centres if not c.determined]
+    for c in missing:
+        s.text(complex(lo.real, min(s.bounds.ymin, y0) - 3.0), f"{centre_text(c.label)} undetermined: {c.why}",
+               size=CAPTION_PT, ha="left", va="top", color=CENTRE_COLOUR, gid=f"undetermined-{c.label}", obstacle=False)
     b = s.bounds
     xmin, xmax = min(b.xmin, x0), max(b.xmax, x1)
     ymin, ymax = min(b.ymin, y0), max(b.ymax, y1)
