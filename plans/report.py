@@ -448,11 +448,9 @@ def _centre_where(centre) -> list:
 
 
 def _centre_direction(centre) -> float | None:
-    """The direction [°] of a centre at infinity, in [0, 180)."""
-    if centre.direction is None:
-        return None
-    d = math.degrees(math.atan2(centre.direction.imag, centre.direction.real)) % 180.0
-    return 0.0 if min(d, 180.0 - d) < 1e-9 else d  # along x to round-off: 0°, not −0.000° or 180.000°
+    """The direction [°] of a centre at infinity, in [0, 180); None for another."""
+    d = centre.direction_deg
+    return None if d is None else _clean(d)
 
 
 def _found_words(centre) -> str:

@@ -192,6 +192,37 @@ def test_a_pure_translation_wedge_has_every_link_translating():
     assert all(omega == 0 for omega in result.links.values())
 
 
+PARALLELOGRAM = """
+[frame]
+points = { O = [0, 0], D = [0.4, 0] }
+[link.2]
+points = { O = [0, 0], A = [0.1, 0] }
+[link.3]
+points = { A = [0, 0], B = [0.4, 0] }
+[link.4]
+points = { D = [0, 0], B = [0.1, 0] }
+[driver]
+crank = "2"
+angle = "60 deg"
+omega = 10
+[assembly]
+B = [0.45, 0.09]
+"""
+
+
+def test_parallelogram_coupler_translates_its_centres_at_infinity():
+    # crank and rocker parallel: the lines P12P23 and P14P34 never meet, so P13 lies at infinity along
+    # the crank (60°), and P24 along the frame line OD (0°); ω3 = 0, ω4 = ω2, v_B = v_A
+    result = instant_centres(loads(PARALLELOGRAM))
+    p13, p24 = result.centre("frame", "3"), result.centre("2", "4")
+    assert p13.point is None and p13.direction_deg == pytest.approx(60.0, abs=1e-9)
+    assert p24.point is None and p24.direction_deg == 0.0
+    assert p13.describe() == "at infinity, direction 60.000°" and p24.describe() == "at infinity, direction 0.000°"
+    assert result.links["3"] == 0.0 and result.links["4"] == pytest.approx(10.0, rel=1e-14)
+    v_a = 10 * 0.1 * 1j * cmath.exp(1j * math.pi / 3)
+    assert abs(result.points["B"] - v_a) < 1e-14 and abs(result.points["A"] - v_a) < 1e-15
+
+
 FLAT_FOUR_BAR = """
 [frame]
 points = { O = [0, 0], D = [4, 0] }

@@ -90,7 +90,15 @@ class Centre:
             return f"undetermined: {self.why}"
         if self.point is not None:
             return f"({self.point.real:.6g}, {self.point.imag:.6g}) m"
-        return f"at infinity, direction {math.degrees(math.atan2(self.direction.imag, self.direction.real)):.3f}°"
+        return f"at infinity, direction {self.direction_deg:.3f}°"
+
+    @property
+    def direction_deg(self) -> float | None:
+        """The direction [°] of a centre at infinity, in [0, 180) (0 for a direction along x to round-off); else None."""
+        if self.direction is None:
+            return None
+        d = math.degrees(math.atan2(self.direction.imag, self.direction.real)) % 180.0
+        return 0.0 if min(d, 180.0 - d) < 1e-9 else d
 
 
 def _number_key(name: str):
