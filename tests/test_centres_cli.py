@@ -16,6 +16,7 @@ from plans.centres import instant_centres
 from plans.cli import main
 from plans.drawing.centres import centres_svg, draw_centres
 from plans.scene import example_path, load, loads
+from test_centres_kennedy import FLAT_FOUR_BAR
 
 SIX_BAR_LABELS = ["P12", "P13", "P14", "P15", "P16", "P23", "P24", "P25", "P26", "P34", "P35", "P36", "P45", "P46", "P56"]
 
@@ -121,25 +122,11 @@ def test_solve_table_has_the_centres_section_and_no_centres_skips_it(capsys):
         assert "centres" not in doc and all("centres" not in e for e in doc["points"].values())
 
 
-FLAT = """
-[frame]
-points = { O = [0, 0], D = [4, 0] }
-[link.2]
-points = { O = [0, 0], A = [1, 0] }
-[link.3]
-points = { A = [0, 0], B = [2, 0] }
-[link.4]
-points = { D = [0, 0], B = [1, 0] }
-[driver]
-crank = "2"
-angle = 0
-omega = 1
-"""
 
 
 def test_centres_command_refuses_an_undetermined_centre_and_writes_nothing(tmp_path, capsys):
     scene = tmp_path / "flat.toml"
-    scene.write_text(FLAT, encoding="utf-8")
+    scene.write_text(FLAT_FOUR_BAR, encoding="utf-8")
     out = tmp_path / "out"
     assert main(["centres", str(scene), "-o", str(out)]) == 2
     err = capsys.readouterr().err

@@ -452,3 +452,31 @@ def test_kennedy_any_three_centres_collinear_on_random_mechanisms(kind, make):
             det = np.linalg.det(np.array([h[(i, j)], h[(j, k)], h[(i, k)]]))
             assert abs(det) <= 1e-9, (kind, i, j, k, det)
         checked += 1
+
+
+@pytest.mark.parametrize("name", example_names())
+def test_velocities_from_centres_over_the_cycle(name):
+    # twelve crank positions (from the scene's angle, so 90° and 270° of the quick-return too), or five
+    # along a linear driver's stroke; against analytic, relative to the largest value of each kind
+    scene = load(example_path(name))
+    driver = scene.driver
+    if hasattr(driver, "phi"):
+        positions = [driver.phi + k * math.pi / 6 for k in range(12)]
+    else:
+        positions = list(np.linspace(*driver.stroke, 5))
+    checked = 0
+    for position in positions:
+        at = scene.at(position)
+        try:
+            analytic = solve(at)
+        except PlansError:
+            continue  # rocker-limit: the crank cannot reach every angle
+        result = instant_centres(at)
+        omega_scale = max(abs(float(analytic.links[n].omega[0])) for n in at.links)
+        v_scale = max(abs(complex(analytic.points[p].v[0])) for p in at.point_names)
+        for link in at.links:
+            assert abs(result.links[link] - float(analytic.links[link].omega[0])) <= 1e-11 * omega_scale, (position, link)
+        for point in at.point_names:
+            assert abs(result.points[point] - complex(analytic.points[point].v[0])) <= 1e-11 * v_scale, (position, point)
+        checked += 1
+    assert checked >= 3
