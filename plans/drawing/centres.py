@@ -23,7 +23,7 @@ import cmath
 import math
 from dataclasses import dataclass
 
-from shapely.geometry import box
+from shapely.geometry import LineString, box
 
 from ..graphical.scales import round_scale
 from ._canvas import Sketch, fmt_number, text_size, unit
@@ -41,6 +41,8 @@ ROOM_FRACTION = 0.35
 #: centres within this fraction of the mechanism's drawn size beyond it are drawn where they are
 NEAR_FRACTION = 1.0
 EDGE_ARROW = 9.0  # mm
+EDGE_GAP = 3.0  # mm between the room and an edge arrow's tail
+EDGE_SPACING = 13.0  # mm between the tails of two edge arrows
 LONE_LINE = 25.0  # mm each side of the one finite centre on a Kennedy line
 DIAGRAM_R = 22.0  # mm
 LABEL_PT = SMALL_PT + 1.5
@@ -84,6 +86,7 @@ class _CentresDrawing:
         self.lo, self.hi = lo, hi
         self.middle = (lo + hi) / 2
         self.edges: list[complex] = []
+        self.soft: list = []  # the Kennedy lines: a label may cross one, at a cost
 
     def mm(self, z: complex) -> complex:
         return z / self.k_l
@@ -92,14 +95,16 @@ class _CentresDrawing:
         return self.lo.real <= q.real <= self.hi.real and self.lo.imag <= q.imag <= self.hi.imag
 
     def edge_point(self, u: complex) -> complex:
-        """Where the ray from the middle in direction u leaves the room, moved along the edge off earlier arrows."""
+        """Just outside where the ray from the middle in direction u leaves the room, moved across it off earlier arrows.
+
+        Returns the tail of the arrow; its tip is EDGE_ARROW further along u.
+        """
         span = _clip(self.middle, u, self.lo, self.hi)
-        q = self.middle + span[1] * u
-        step = 0
-        base = q
-        while any(abs(q - e) < 6.0 for e in self.edges) and step < 12:
+        base = self.middle + span[1] * u + EDGE_GAP * u
+        q, step = base, 0
+        while any(abs(q - e) < EDGE_SPACING for e in self.edges) and step < 24:
             step += 1
-            q = base + (1j * u) * 7.0 * ((step + 1) // 2) * (1 if step % 2 else -1)
+            q = base + (1j * u) * EDGE_SPACING * ((step + 1) // 2) * (1 if step % 2 else -1)
         self.edges.append(q)
         return q
 
@@ -114,7 +119,7 @@ class _CentresDrawing:
             gap = clear * (1 + k // 16) + 0.6 + 0.5 * (abs(d.real) * w + abs(d.imag) * h)
             c = at + d * gap
             shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-            hits = sum(1 for o in self.s.obstacles if shape.intersects(o))
+            hits = 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
             if best is None or hits < best[0]:
                 best = (hits, c)
             if hits == 0:
@@ -155,6 +160,8 @@ class _CentresDrawing:
                     continue
                 names = "-".join(self.r.numbers[b] for b in bodies)
                 self.s.line([a + t0 * u, a + t1 * u], color=colour, lw=lw * 0.8, dashes=dashes, gid=f"kennedy-{names}", zorder=1.2, obstacle=False)
+                ends = a + t0 * u, a + t1 * u
+                self.soft.append(LineString([(z.real, z.imag) for z in ends]))
 
     def centres(self) -> None:
         for centre in self.r.centres:
@@ -172,16 +179,18 @@ class _CentresDrawing:
                 self.label(q, text, f"label-{centre.label}", q - self.middle, clear)
                 continue
             if centre.point is not None:
-                u = unit(self.mm(centre.point) - self.middle)
-                tip = self.edge_point(u)
+                tail = self.edge_point(unit(self.mm(centre.point) - self.middle))
+                u = unit(self.mm(centre.point) - tail)  # the arrow points at the centre
+                tip = tail + EDGE_ARROW * u
                 beyond = abs(self.mm(centre.point) - tip) * self.k_l
                 text = f"{text} +{beyond:.3g} m"
             else:
                 u = centre.direction
-                tip = self.edge_point(u)
+                tail = self.edge_point(u)
+                tip = tail + EDGE_ARROW * u
                 text = f"{text} ∞"
-            self.s.arrow(tip - EDGE_ARROW * u, tip, color=CENTRE_COLOUR, lw=1.0, head=2.4, gid=f"edge-{centre.label}")
-            self.label(tip - EDGE_ARROW * u, text, f"label-{centre.label}", -1j * u if (-1j * u).real >= 0 else 1j * u, 1.0)
+            self.s.arrow(tail, tip, color=CENTRE_COLOUR, lw=1.0, head=2.4, gid=f"edge-{centre.label}")
+            self.label(tip, text, f"label-{centre.label}", u, 0.8)
 
 
 def _circle_diagram(s: Sketch, result, centre: complex) -> None:
