@@ -480,3 +480,49 @@ def test_velocities_from_centres_over_the_cycle(name):
             assert abs(result.points[point] - complex(analytic.points[point].v[0])) <= 1e-11 * v_scale, (position, point)
         checked += 1
     assert checked >= 3
+
+
+# --- the method's own position step --------------------------------------------------------
+
+
+def _branch_scenes():
+    """Every bundled example with each group's branch forced to +1 and to −1 (README "Assembly branches")."""
+    from dataclasses import replace
+
+    from plans.structure import find_structure
+
+    for name in example_names():
+        scene = load(example_path(name))
+        for group in find_structure(scene).groups:
+            outer = {j.point for j in (group.outer_i, group.outer_j) if j.kind == "R"}
+            hint = next((p for link in group.links for p in scene.bodies[link].points if p not in outer), None)
+            if hint is None:
+                continue
+            for sign in (1, -1):
+                yield pytest.param(replace(scene, assembly={hint: sign}), id=f"{name}-{group.name}-{hint}{sign:+d}")
+
+
+@pytest.mark.parametrize("scene", list(_branch_scenes()))
+def test_own_positions_follow_the_branch_convention_like_analytic(scene):
+    try:
+        analytic = solve(scene)
+    except PlansError as refused:  # quick-return, lever on branch −1: the ram's group cannot reach its guide
+        with pytest.raises(type(refused)):
+            instant_centres(scene)
+        return
+    result = instant_centres(scene)
+    size = result.size
+    for name in scene.point_names:
+        assert abs(result.positions[name] - complex(analytic.points[name].r[0])) <= 1e-12 * size, name
+
+
+def test_own_position_step_refuses_what_cannot_assemble():
+    from plans.errors import AssemblyError
+
+    text = FLAT_FOUR_BAR.replace("D = [4, 0]", "D = [4.5, 0]")  # |AD| = 3.5 > AB + BD = 3
+    with pytest.raises(AssemblyError) as caught:
+        instant_centres(loads(text, source="far.toml"))
+    assert str(caught.value) == (
+        "far.toml: RRR(3,4): joint B cannot assemble: |AD| = 3.5 m with links 2 m and 1 m (gap 0.5 m) "
+        "(at φ = 0.0°, instant-centre method)"
+    )

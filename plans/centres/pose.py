@@ -18,6 +18,7 @@ import cmath
 import math
 
 from ..errors import AssemblyError, SingularPositionError
+from ..limits import position_text
 from ..scene import FRAME, Crank, Prismatic, Scene
 from ..structure import Group, Joint, Structure
 
@@ -250,5 +251,10 @@ def place_bodies(scene: Scene, structure: Structure) -> dict[str, Pose]:
         at = line.origin + driver.s * line.direction
         poses[driver.link] = (line.angle, at - cmath.exp(1j * line.angle) * body.points[driver.point])
     for group in structure.groups:
-        poses.update(_choose(scene, group, _PLACE[group.kind](scene, poses, group)))
+        try:
+            candidates = _PLACE[group.kind](scene, poses, group)
+        except (AssemblyError, SingularPositionError) as exc:
+            position = position_text(isinstance(driver, Crank), driver.phi if isinstance(driver, Crank) else driver.s)
+            raise type(exc)(f"{scene.source}: {exc} (at {position}, instant-centre method)") from None
+        poses.update(_choose(scene, group, candidates))
     return poses
