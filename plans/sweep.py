@@ -22,19 +22,27 @@ kinematics, only where the solver's own masks and conditioning change.
 
 For a crank the sweep is one turn: a gap that runs into the end of the
 sweep resumes at its start (one turn later).
+
+It also writes the sweep as CSV (:func:`sweep_csv`), formatted column by
+column (:func:`format_column`).
 """
 
 from __future__ import annotations
 
+import csv
+import io
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from .limits import REFUSE_SINE, WARN_CONDITION, position_text
+from .limits import REFUSE_SINE, WARN_CONDITION, expected_rel_error, position_text
 from .scene import Crank
 
-__all__ = ["LostAssembly", "DeadCentreCrossing", "SweepReport", "analyse_sweep"]
+__all__ = ["LostAssembly", "DeadCentreCrossing", "SweepReport", "analyse_sweep", "sweep_csv", "format_column", "DIGITS"]
+
+#: Significant digits of a CSV column, at the scale of its largest value.
+DIGITS = 14
 
 
 @dataclass(frozen=True)
@@ -231,3 +239,117 @@ def analyse_sweep(solution, warn_condition: float = WARN_CONDITION) -> SweepRepo
             position = float(x[k] + direction * sine[k] / slope) if slope > 0 else float(x[k])
             crossed.append(DeadCentreCrossing(group.name, group.joint, position, float(x[k]), float(sine[k]), float(condition[k]), crank))
     return SweepReport(tuple(lost), tuple(crossed))
+
+
+# --- the CSV ---------------------------------------------------------------------------------
+
+
+def format_column(values, shown=None, degrees: bool = False) -> list[str]:
+    """The cells of one CSV column: each value to :data:`DIGITS` significant digits of the column's scale.
+
+    The scale is the largest magnitude among the cells shown, 10^e with e
+    its decimal exponent; every value is rounded to a multiple of
+    10^(e − DIGITS + 1) and written in the shortest form that reads back as
+    that number.  So a result that is an input up to round-off comes back as
+    given (``29.999999999999996`` in a column of angles up to 350 is ``30``,
+    ``57.00000000000001`` is ``57``), and round-off far below the column's
+    scale is ``0`` (``-6.8e-18`` beside values of order 1).  With *degrees*
+    angles are given in [0, 360) (after rounding, so that 359.99999999999994
+    is 0).  A cell not shown (*shown* False), NaN or infinite is empty.
+
+    >>> format_column([57.00000000000001, 411.99999999999994, -6.77126e-18, 0.5])
+    ['57', '412', '0', '0.5']
+    >>> format_column([-90.0, 29.999999999999996, 359.99999999999994], degrees=True)
+    ['270', '30', '0']
+    """
+    x = np.array(values, dtype=float)
+    keep = np.isfinite(x) if shown is None else np.isfinite(x) & np.asarray(shown, dtype=bool)
+    cells = [""] * len(x)
+    if not keep.any():
+        return cells
+    if degrees:
+        x = np.mod(x, 360.0)
+    scale = float(np.abs(x[keep]).max())
+    if scale > 0:
+        decimals = DIGITS - 1 - math.floor(math.log10(scale))
+        if decimals <= 22:  # 10^decimals is exact: numpy's rounding (x·10^d to an integer, / 10^d) is exact too
+            x = np.round(x, decimals)
+        else:  # a column of tiny values: Python's correctly rounded decimal rounding
+            x = np.array([round(value, decimals) for value in x.tolist()])
+    if degrees:
+        x[x >= 360.0] -= 360.0
+    x = x + 0.0  # −0 is 0
+    for k, value in zip(np.flatnonzero(keep).tolist(), x[keep].tolist()):
+        text = repr(value)
+        cells[k] = text[:-2] if text.endswith(".0") else text
+    return cells
+
+
+def sweep_csv(analytic) -> str:
+    """Every quantity over the solved driver positions, one row per position.
+
+    Columns: the driver position (``driver_phi_deg`` for a crank, ``driver_s``
+    [m] for a linear driver), ``assembled`` (1 or 0), then per link
+    ``phi_deg``, ``omega``, ``epsilon``; per reported point ``x, y, vx, vy,
+    ax, ay``; per slider ``s, v_rel, a_rel, coriolis_x, coriolis_y``; per
+    group its condition number, the |sin| of the angle between its
+    construction lines and the expected relative error of its velocities and
+    accelerations (4·ε_mach·condition², :mod:`plans.limits`).  SI units;
+    angles in degrees in [0, 360), counter-clockwise from +x.  Acceleration
+    columns are left out when the scene asks for velocities only.  Positions
+    where the mechanism cannot assemble or sits at a dead centre have empty
+    cells and ``assembled = 0``; a cell is never NaN or infinite.  Numbers
+    are written to 14 significant digits of their column's scale
+    (:func:`format_column`): inputs come back as given, round-off prints as 0.
+    """
+    scene = analytic.scene
+    acc = scene.accelerations
+    valid = np.asarray(analytic.valid, dtype=bool)
+    header: list[str] = []
+    cells: list[list[str]] = []
+
+    def add(name: str, values, degrees: bool = False, shown=valid) -> None:
+        header.append(name)
+        cells.append(format_column(values, shown, degrees))
+
+    crank = isinstance(scene.driver, Crank)
+    if crank:
+        add("driver_phi_deg", np.degrees(analytic.driver), degrees=True, shown=None)
+    else:
+        add("driver_s", analytic.driver, shown=None)
+    header.append("assembled")
+    cells.append(["1" if v else "0" for v in valid.tolist()])
+    for name in scene.links:
+        m = analytic.links[name]
+        add(f"{name}.phi_deg", np.degrees(m.phi), degrees=True)
+        add(f"{name}.omega", m.omega)
+        if acc:
+            add(f"{name}.epsilon", m.epsilon)
+    for name in scene.report:
+        m = analytic.points[name]
+        add(f"{name}.x", m.r.real)
+        add(f"{name}.y", m.r.imag)
+        add(f"{name}.vx", m.v.real)
+        add(f"{name}.vy", m.v.imag)
+        if acc:
+            add(f"{name}.ax", m.a.real)
+            add(f"{name}.ay", m.a.imag)
+    for prismatic in scene.prismatics:
+        m = analytic.sliders[prismatic.name]
+        add(f"{prismatic.name}.s", m.s)
+        add(f"{prismatic.name}.v_rel", m.v_rel)
+        if acc:
+            add(f"{prismatic.name}.a_rel", m.a_rel)
+            add(f"{prismatic.name}.coriolis_x", m.coriolis.real)
+            add(f"{prismatic.name}.coriolis_y", m.coriolis.imag)
+    for group in analytic.structure.groups:
+        condition = np.asarray(analytic.conditions[group.name])
+        add(f"{group.name}.condition", np.maximum(condition, 1.0))  # at least 1 (round-off can give 1 − 1e-16)
+        add(f"{group.name}.sine", np.minimum(np.asarray(analytic.sines[group.name]), 1.0))
+        add(f"{group.name}.expected_rel_error", expected_rel_error(condition))
+    out = io.StringIO()
+    csv.writer(out, lineterminator="\n").writerow(header)  # names from the scene may need quoting; numbers do not
+    out.write("\n".join(",".join(row) for row in zip(*cells)))
+    if cells and cells[0]:
+        out.write("\n")
+    return out.getvalue()
