@@ -13,6 +13,11 @@ kinematics, only where the solver's own masks and conditioning change.
   the gap are extrapolated to sin² = 0.  The solver keeps the branch sign
   found at the scene's own position everywhere, so a sweep resumes on the
   same branch after a gap; it never switches branch silently.
+* **Parallel guides.**  The pin of a PRP group is where its two guides
+  cross; where the guides turn through parallel between two grid positions
+  (the sine of the angle between them changes sign) the pin passes through
+  infinity: a loss of assembly between two solved rows, reported as such,
+  never as a dead centre crossed.
 * **Dead centres crossed.**  A local minimum of a group's sine, with the
   group's condition above the warning threshold and the mechanism solved on
   both sides, is a dead centre the sweep passed through (or close by); its
@@ -54,7 +59,12 @@ class LostAssembly:
     group : str
         The first group (in solving order) that fails in the run.
     cause : str
-        ``"cannot assemble"`` or ``"dead centre"``.
+        ``"cannot assemble"``, ``"dead centre"``, or ``"guides parallel"``:
+        the two guides of a PRP group turn through parallel between two
+        solved grid positions, the pin joining its blocks passes through
+        infinity (no grid position is unsolved; *first* = *last* is the
+        position where the guides are parallel, interpolated, and *stop*,
+        *resume* the solved positions on either side).
     first, last : float
         The first and last unsolved grid positions of the run.
     stop, resume : float or None
@@ -64,6 +74,9 @@ class LostAssembly:
         Estimated driver positions of the limits between them.
     crank : bool
         Positions are crank angles [rad] (else linear positions [m]).
+    between : bool
+        The loss lies between two solved grid positions (*stop*, *resume*)
+        and no grid position is unsolved (parallel guides only).
     """
 
     group: str
@@ -75,10 +88,19 @@ class LostAssembly:
     stop_limit: float | None
     resume_limit: float | None
     crank: bool
+    between: bool = False
 
     def __str__(self) -> str:
         where = lambda x, d=None: position_text(self.crank, _wrap(x) if self.crank else x, d)  # noqa: E731
-        if self.cause == "dead centre":
+        if self.cause == "guides parallel" and self.between:
+            return (f"{self.group} loses assembly at {where(self.first, 2).replace(' = ', ' ≈ ')}: its two guides become "
+                    f"parallel there and the pin joining its blocks goes to infinity: the sweep stops after {where(self.stop)} "
+                    f"and resumes at {where(self.resume)}; the motion between those rows does not exist "
+                    "(not a dead centre that can be crossed)")
+        if self.cause == "guides parallel":
+            span = where(self.first) if self.first == self.last else f"{where(self.first)} to {where(self.last)}"
+            head = f"{self.group} loses assembly at {span}: its two guides are parallel and the pin joining its blocks is at infinity"
+        elif self.cause == "dead centre":
             head = f"{self.group} is at a dead centre at {where(self.first)}" if self.first == self.last else (
                 f"{self.group} is at a dead centre from {where(self.first)} to {where(self.last)}")
         else:
@@ -91,7 +113,8 @@ class LostAssembly:
             parts.append("the sweep starts there")
         if self.resume is not None:
             limit = f" (limit ≈ {where(self.resume_limit, 2)})" if self.resume_limit is not None else ""
-            parts.append(f"resumes at {where(self.resume)}{limit} on the same branch")
+            branch = "" if self.cause == "guides parallel" else " on the same branch"  # a PRP has one assembly
+            parts.append(f"resumes at {where(self.resume)}{limit}{branch}")
         else:
             parts.append("does not resume before the end")
         return f"{head}: {' and '.join(parts)}; those rows have assembled = 0 and empty cells"
@@ -169,6 +192,46 @@ def _limit(x_far: float, s_far: float, x_near: float, s_near: float, x_gap: floa
     return min(max(x, lo), hi)
 
 
+def _guide_direction(scene, group, joint, phi):
+    """The global angle [rad] of the line that link *joint.bodies[0]* has in the prismatic *joint*."""
+    pair = joint.prismatic
+    link = joint.bodies[0]
+    line = scene.bodies[link].lines[pair.slider_line if pair.slider == link else pair.guide_line]
+    return phi + line.angle
+
+
+def _parallel_guides(solution, x: np.ndarray, valid: np.ndarray, crank: bool) -> list[tuple[LostAssembly, tuple[int, int]]]:
+    """Where the two guides of a PRP group turn through parallel between two solved grid positions.
+
+    Each block of a PRP turns with its guide; the signed sine of the angle
+    from block i's line to block j's, sin(θ_j − θ_i), changes sign there.
+    For a crank's full turn the last position and the first (one turn on)
+    are neighbours too.  Each with the grid indices on either side.
+    """
+    scene = solution.scene
+    out = []
+    n = len(x)
+    for group in solution.structure.groups:
+        if group.kind != "PRP":
+            continue
+        i, j = group.links
+        theta_i = _guide_direction(scene, group, group.outer_i, np.asarray(solution.links[i].phi, dtype=float))
+        theta_j = _guide_direction(scene, group, group.outer_j, np.asarray(solution.links[j].phi, dtype=float))
+        signed = np.where(valid, np.sin(theta_j - theta_i), np.nan)
+        pairs = [(k, k + 1) for k in range(n - 1)]
+        if crank and n > 2 and abs(x[-1] + (x[1] - x[0]) - (x[0] + 2 * math.pi)) <= 1e-9:  # a full turn
+            pairs.append((n - 1, 0))
+        for a, b in pairs:
+            sa, sb = signed[a], signed[b]
+            if not (sa * sb < 0):  # NaN (not solved) or no change of sign
+                continue
+            xa = float(x[a])
+            xb = float(x[b]) + (2 * math.pi if b < a else 0.0)
+            at = xa + (xb - xa) * sa / (sa - sb)  # linear interpolation to sin = 0
+            out.append((LostAssembly(group.name, "guides parallel", at, at, xa, float(x[b]), None, None, crank, True), (a, b)))
+    return out
+
+
 def analyse_sweep(solution, warn_condition: float = WARN_CONDITION) -> SweepReport:
     """Lost-assembly intervals and dead centres crossed along a solved sweep.
 
@@ -200,7 +263,7 @@ def analyse_sweep(solution, warn_condition: float = WARN_CONDITION) -> SweepRepo
         for group in groups:
             sine = np.asarray(solution.sines[group.name])[start:end]
             if np.any(np.isnan(sine)):
-                culprit, cause = group.name, "cannot assemble"
+                culprit, cause = group.name, "guides parallel" if group.kind == "PRP" else "cannot assemble"
                 break
             if np.any(sine < REFUSE_SINE):
                 culprit, cause = group.name, "dead centre"
@@ -221,7 +284,10 @@ def analyse_sweep(solution, warn_condition: float = WARN_CONDITION) -> SweepRepo
                 resume_limit = _limit(x[1] + step, sines[1], x[0] + step, sines[0], x[-1])
         lost.append(LostAssembly(culprit, cause, float(x[start]), float(x[end - 1]), stop, resume, stop_limit, resume_limit, crank))
 
+    parallel = _parallel_guides(solution, x, valid, crank)
+    lost += [item for item, _ in parallel]
     crossed = []
+    flips = {(item.group, k) for item, pair in parallel for k in pair}
     for group in groups:
         sine = np.asarray(solution.sines[group.name], dtype=float)
         condition = np.asarray(solution.conditions[group.name], dtype=float)
@@ -230,6 +296,8 @@ def analyse_sweep(solution, warn_condition: float = WARN_CONDITION) -> SweepRepo
                 continue
             if not (condition[k] > warn_condition and sine[k] <= sine[k - 1] and sine[k] < sine[k + 1]):
                 continue
+            if (group.name, k) in flips:
+                continue  # a PRP's guides turning through parallel: lost, not crossed
             # |sin| ≈ a·|x − x0| near the dead centre: take the slope of the steeper side
             left = (sine[k - 1] - sine[k]) / abs(x[k] - x[k - 1])
             right = (sine[k + 1] - sine[k]) / abs(x[k + 1] - x[k])
