@@ -189,7 +189,7 @@ class PreparedSolver:
         driver = _positions(positions, plan.base)
         n = len(driver)
         if n <= FEW and plan.resolved and not plan.missing:
-            few = _solve_few(plan, driver, warn_condition)
+            few = _solve_few(plan, driver, warn_condition) if n else None
             if few is not None:
                 columns, calm = few
                 return _solution(plan, driver, columns, warn_condition, calm)
@@ -242,7 +242,8 @@ def _solve_few(plan: "_Plan", driver: np.ndarray, warn_condition: float) -> tupl
     try:
         for x in driver.tolist():
             piece = _solve_one(plan, x)
-            calm = calm and all(condition <= warn_condition for condition in piece.conditions.values())
+            for condition in piece.conditions.values():
+                calm = calm and condition <= warn_condition
             rows.append(_columns(plan, piece))
     except (single.NotHere, ArithmeticError, ValueError):
         return None
@@ -470,6 +471,8 @@ def _positions(positions, base: float) -> np.ndarray:
     if driver.ndim > 1:
         raise ValueError(f"driver positions must be a number or a 1-D array, got an array of shape {driver.shape}")
     driver = np.atleast_1d(driver)
+    if len(driver) <= FEW and all(map(math.isfinite, driver.tolist())):
+        return driver  # a few positions: checked without numpy's fixed cost per call
     bad = ~np.isfinite(driver)
     if bad.any():
         raise ValueError(f"driver position {driver[bad][0]!r} (index {int(np.argmax(bad))}) is not a finite number")
