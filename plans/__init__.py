@@ -3,7 +3,9 @@
 Two independent methods over one scene model:
 
 * :func:`solve` — the analytic complex-number (loop-closure) solution,
-  vectorised over driver positions (numpy only);
+  vectorised over driver positions (numpy only); :func:`prepare` makes a
+  scene ready once for many calls (``solver = plans.prepare(scene)``,
+  ``solver(phi)``);
 * :func:`construct` — the graphical velocity and acceleration plans, built
   group by group with construction lines and read off at scale (shapely);
 
@@ -32,6 +34,7 @@ __all__ = [
     "example_path",
     "find_structure",
     "solve",
+    "prepare",
     "construct",
     "compare",
     "write_drawings",
@@ -48,7 +51,7 @@ __version__ = "0.1.0"
 
 
 def __getattr__(name: str):
-    if name in ("solve", "AnalyticSolution"):
+    if name in ("solve", "prepare", "AnalyticSolution"):
         from . import analytic
 
         return getattr(analytic, name)

@@ -17,6 +17,7 @@ from .compare import PLAN_QUANTITIES, QUANTITIES, Comparison
 from .errors import PlansError
 from .limits import expected_rel_error
 from .scene import Crank, Scene
+from .sweep import sweep_csv
 
 __all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table"]
 
@@ -342,66 +343,7 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
 # --- sweep CSV -----------------------------------------------------------------
 
 
-def sweep_csv(analytic) -> str:
-    """Every quantity over the solved driver positions, one row per position.
-
-    Columns: the driver position (``phi_deg`` for a crank, ``s`` [m] for a
-    linear driver), then per link ``phi_deg``, ``omega``, ``epsilon``; per
-    reported point ``x, y, vx, vy, ax, ay``; per slider ``s, v_rel, a_rel,
-    coriolis_x, coriolis_y``; per group its condition number, the |sin| of
-    the angle between its construction lines and the expected relative error
-    of its velocities and accelerations (4·ε_mach·condition², :mod:`plans.limits`).  Acceleration
-    columns are left out when the scene asks for velocities only.  Positions
-    where the mechanism cannot assemble or sits at a dead centre have empty
-    cells and ``assembled = 0``; a cell is never NaN or infinite (such a
-    value is left empty).
-    """
-    scene = analytic.scene
-    acc = scene.accelerations
-    columns: list[tuple[str, object]] = []
-    if isinstance(scene.driver, Crank):
-        columns.append(("driver_phi_deg", [math.degrees(x) for x in analytic.driver]))
-    else:
-        columns.append(("driver_s", list(analytic.driver)))
-    valid = list(getattr(analytic, "valid", [True] * len(analytic.driver)))
-    columns.append(("assembled", [1 if v else 0 for v in valid]))
-    for name in scene.links:
-        m = analytic.links[name]
-        columns.append((f"{name}.phi_deg", [math.degrees(x) for x in m.phi]))
-        columns.append((f"{name}.omega", m.omega))
-        if acc:
-            columns.append((f"{name}.epsilon", m.epsilon))
-    for name in scene.report:
-        m = analytic.points[name]
-        columns += [(f"{name}.x", m.r.real), (f"{name}.y", m.r.imag), (f"{name}.vx", m.v.real), (f"{name}.vy", m.v.imag)]
-        if acc:
-            columns += [(f"{name}.ax", m.a.real), (f"{name}.ay", m.a.imag)]
-    for prismatic in scene.prismatics:
-        m = analytic.sliders[prismatic.name]
-        columns += [(f"{prismatic.name}.s", m.s), (f"{prismatic.name}.v_rel", m.v_rel)]
-        if acc:
-            columns += [(f"{prismatic.name}.a_rel", m.a_rel), (f"{prismatic.name}.coriolis_x", m.coriolis.real),
-                        (f"{prismatic.name}.coriolis_y", m.coriolis.imag)]
-    for group in analytic.structure.groups:
-        columns.append((f"{group.name}.condition", analytic.conditions[group.name]))
-        columns.append((f"{group.name}.sine", analytic.sines[group.name]))
-        columns.append((f"{group.name}.expected_rel_error", expected_rel_error(analytic.conditions[group.name])))
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(name for name, _ in columns)
-    values = [list(v) for _, v in columns]
-    for k in range(len(analytic.driver)):
-        cells = []
-        for index, column in enumerate(values):
-            x = float(column[k])
-            if index > 1 and (not valid[k] or not math.isfinite(x)):
-                cells.append("")
-            elif index == 1:
-                cells.append(str(int(x)))
-            else:
-                cells.append(repr(_clean(x)))
-        writer.writerow(cells)
-    return out.getvalue()
+# sweep_csv lives with the sweep's analysis (plans/sweep.py) and is imported above.
 
 
 # --- the sheet's results table -------------------------------------------------

@@ -162,12 +162,18 @@ class Sketch:
         largest = max((abs(v.delta) for v in everything), default=0.0)
         tiny = ZERO * largest
 
+        drawn: dict[int, PlanVector | None] = {}  # each vector once: a component is in its step and in the list
+
         def frozen(vs):
-            return tuple(
-                PlanVector(v.tail * f, v.tip * f, v.kind, v.label, measure(abs(v.delta) * f, precision) * k)
-                for v in vs
-                if abs(v.delta) > tiny
-            )
+            out = []
+            for v in vs:
+                key = id(v)
+                if key not in drawn:
+                    length = abs(v.tip - v.tail)
+                    drawn[key] = PlanVector(v.tail * f, v.tip * f, v.kind, v.label, measure(length * f, precision) * k) if length > tiny else None
+                if drawn[key] is not None:
+                    out.append(drawn[key])
+            return tuple(out)
 
         steps = tuple(
             Step(
