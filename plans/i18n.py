@@ -248,6 +248,14 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "в мъртво положение",
         "sl": "v mrtvi legi",
     },
+    "constant": {"en": "constant", "sr": "константно", "ru": "постоянно", "bg": "постоянно", "sl": "konstantno"},
+    "clipped": {
+        "en": "beyond the axis near a dead centre",
+        "sr": "ван осе, близу мртвог положаја",
+        "ru": "за пределами оси, вблизи мёртвого положения",
+        "bg": "извън оста, близо до мъртво положение",
+        "sl": "zunaj osi, blizu mrtve lege",
+    },
     "not_drawn": {
         "en": "not drawn",
         "sr": "нису нацртани",
