@@ -299,6 +299,15 @@ class PositionRun:
         """Why the position is not solved: the solver's message (empty for a solved position)."""
         return "" if self.ok else str(self.error) if self.error is not None else "no graphical construction"
 
+    def brief(self, lang: str = "en") -> str:
+        """The reason in a few words of *lang*, for a listing: ``"RRR(3,4): cannot assemble"`` (empty when solved)."""
+        if self.ok:
+            return ""
+        from .i18n import term
+
+        group = re.match(r"^\s*([A-Z]{3}\([^)]*\))", self.reason)
+        return (f"{group.group(1)}: " if group else "") + term(self.cause, lang)
+
     @property
     def cause(self) -> str:
         """``""`` for a solved position, else ``"dead_centre"`` or ``"no_assembly"`` (keys of :mod:`plans.i18n`)."""

@@ -67,8 +67,23 @@ def test_sweep_and_positions_run_in_the_sense_of_omega(capsys, tmp_path):
     assert status == 0
     phi = np.array([float(r["driver_phi_deg"]) for r in csv.DictReader(io.StringIO(target.read_text()))])
     assert phi[0] == pytest.approx(55.0)
-    assert np.allclose(np.diff(phi), -1.0)  # clockwise, one degree a step
+
+    def turn(d):  # an angle difference in (−180°, 180°]: the CSV may write angles in [0, 360)
+        return np.mod(np.asarray(d) + 180.0, 360.0) - 180.0
+
+    assert np.allclose(turn(np.diff(phi)), -1.0)  # clockwise, one degree a step
     scene = plans.load(plans.example_path("six-bar"))
     run = run_positions(scene, 12)
-    assert np.allclose(np.degrees(run.cycle.driver[:360]), phi)  # the handout's diagrams run through the same positions
+    assert np.allclose(turn(np.degrees(run.cycle.driver[:360]) - phi), 0.0)  # the handout's diagrams run through the same positions
     assert np.allclose(np.degrees(run.positions), 55.0 - 30.0 * np.arange(12))
+
+
+def test_the_handout_cover_lists_each_skipped_position_with_its_reason():
+    from plans.handout import handout_pages
+
+    scene = plans.load(plans.example_path("rocker-limit"))
+    pages = dict(handout_pages(scene, positions="30,90 deg", lang="sr"))
+    cover = " ".join(t.get_text() for t in pages["cover"].findobj(lambda a: hasattr(a, "get_text")))
+    assert "1:  φ₂ = 90.0°  (није решено у овом положају: RRR(3,4): механизам се не може саставити)" in cover
+    unsolved = " ".join(t.get_text() for t in pages["unsolved-1"].findobj(lambda a: hasattr(a, "get_text")))
+    assert "|AD| = 0.707 m > AB + BD = 0.650 m" in unsolved  # the solver's full reason on the position's own page
