@@ -9,7 +9,8 @@ import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 
 import plans
-from plans.drawing.positions_plan import decimal_text, draw_positions_plan, number_ranges
+from plans.drawing.numerals import localised
+from plans.drawing.positions_plan import draw_positions_plan, number_ranges
 from plans.positions import run_positions
 
 
@@ -94,7 +95,8 @@ def test_the_caption_names_the_positions_not_drawn():
         assert words in [t.get_text() for t in _texts(fig)]
 
 
-def test_number_ranges_and_decimal_text():
+def test_number_ranges_and_localised_numbers():
     assert number_ranges([1, 2, 3, 5, 7, 8]) == "1–3, 5, 7, 8"
     assert number_ranges([4]) == "4"
-    assert decimal_text("-0.01", "sr") == "−0,01" and decimal_text("-0.01", "en") == "−0.01"
+    assert localised("-0.01", "sr") == "−0,01" and localised("-0.01", "en") == "−0.01"
+    assert [localised("1.5", lang) for lang in ("en", "sr", "ru", "bg", "sl")] == ["1.5", "1,5", "1,5", "1,5", "1,5"]

@@ -56,6 +56,7 @@ from matplotlib.ticker import ScalarFormatter
 from .._files import replace_all
 from .._text import subscript
 from ..i18n import term
+from .numerals import MINUS, localised
 from .sheets import A4
 from .svg import drawing_rc
 
@@ -76,9 +77,6 @@ MARKERS = ("o", "s", "^", "D", "v", "x", "+", "*")
 NO_ASSEMBLY = {"facecolor": "#d4d4d4", "edgecolor": "#6e6e6e", "hatch": "///"}
 NEAR = {"facecolor": "none", "edgecolor": "#000000", "hatch": "\\\\\\\\"}
 MARK = {"color": "#202020", "lw": 0.7, "ls": "--"}
-#: Languages written with a decimal comma.
-DECIMAL_COMMA = ("sr", "ru", "bg", "sl")
-MINUS = "\u2212"
 
 
 def _plain_text(text: str) -> str:
@@ -100,12 +98,7 @@ def _number(value: float, lang: str, digits: int = 3) -> str:
     else:
         mantissa, exponent = f"{value:.{digits - 1}e}".split("e")
         text = f"{mantissa}·10" + str(int(exponent)).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
-    return _localise(text, lang)
-
-
-def _localise(text: str, lang: str) -> str:
-    text = text.replace("-", MINUS)
-    return text.replace(".", ",") if lang in DECIMAL_COMMA else text
+    return localised(text, lang)
 
 
 class _Ticks(ScalarFormatter):
@@ -117,10 +110,10 @@ class _Ticks(ScalarFormatter):
         self.lang = lang
 
     def __call__(self, x, pos=None):
-        return _localise(super().__call__(x, pos).replace(MINUS, "-"), self.lang)
+        return localised(super().__call__(x, pos).replace(MINUS, "-"), self.lang)
 
     def get_offset(self):
-        return _localise(super().get_offset().replace(MINUS, "-"), self.lang)
+        return localised(super().get_offset().replace(MINUS, "-"), self.lang)
 
 
 def _sense(scene) -> float:
@@ -238,7 +231,7 @@ def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: b
     if has_invalid:
         handles.append(Patch(label=term("no_assembly", lang), **NO_ASSEMBLY))
     if has_near:
-        handles.append(Patch(label=f"{term('near_dead_centre', lang)} (|sin| < {_localise(f'{NEAR_DEAD_CENTRE:g}', lang)})", **NEAR))
+        handles.append(Patch(label=f"{term('near_dead_centre', lang)} (|sin| < {localised(f'{NEAR_DEAD_CENTRE:g}', lang)})", **NEAR))
     if has_marks:
         handles.append(Line2D([], [], marker="v", ms=3.5, label=term("sheet_positions", lang), **MARK))
     if has_clipped:

@@ -17,12 +17,10 @@ and the ``mech-…`` gids of the scheme of position 0 (prefix ``pos``).
 
 from __future__ import annotations
 
-
-import numpy as np
-
 import cmath
 import math
 
+import numpy as np
 import shapely
 from shapely.geometry import LineString, box
 
@@ -31,10 +29,11 @@ from ..i18n import term
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import LABEL_SPACE_MM
 from .mechanism import FRAME
-from .mechanism import _Mechanism as MechanismDrawing
+from .mechanism import _Mechanism as MechanismDrawing  # plandraw renames it MechanismDrawing: import that name after the merge
+from .numerals import localised
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 
-__all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points", "place_number", "number_ranges", "decimal_text"]
+__all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points", "place_number", "number_ranges"]
 
 GHOST = "#8c8c8c"
 PATH_COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
@@ -50,8 +49,6 @@ NUMBER_CLEAR_MM = 0.25
 NEAR_GAPS = (0.5, 1.1, 1.8)
 LEADER_GAPS = (3.5, 5.0, 7.0, 9.5)
 LEADER_PT = 0.35
-#: Languages written with a decimal comma.
-DECIMAL_COMMA = ("sr", "ru", "bg", "sl")
 
 
 def numbered_points(scene) -> list[str]:
@@ -153,7 +150,7 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     x, y = b.xmin, b.ymin - 2.5
     sketch.text(complex(x, y), term("positions_plan", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
-    sketch.text(complex(x, y), f"$k_l$ = {decimal_text(fmt_number(k_l), lang)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    sketch.text(complex(x, y), f"$k_l$ = {localised(fmt_number(k_l), lang)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     skipped = positions_run.skipped
     if skipped:
         for cause in ("no_assembly", "dead_centre"):
@@ -183,12 +180,6 @@ def number_ranges(numbers: list[int]) -> str:
         out.append(f"{numbers[k]}–{numbers[j]}" if j - k >= 2 else ", ".join(str(n) for n in numbers[k : j + 1]))
         k = j + 1
     return ", ".join(out)
-
-
-def decimal_text(text: str, lang: str) -> str:
-    """A number as written in *lang*: decimal comma in sr, ru, bg, sl; true minus sign everywhere."""
-    text = text.replace("-", "\u2212")
-    return text.replace(".", ",") if lang in DECIMAL_COMMA else text
 
 
 def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: float, prefer: complex | None = None):
