@@ -87,3 +87,19 @@ def test_the_handout_cover_lists_each_skipped_position_with_its_reason():
     assert "1:  φ₂ = 90.0°  (није решено у овом положају: RRR(3,4): механизам се не може саставити)" in cover
     unsolved = " ".join(t.get_text() for t in pages["unsolved-1"].findobj(lambda a: hasattr(a, "get_text")))
     assert "|AD| = 0.707 m > AB + BD = 0.650 m" in unsolved  # the solver's full reason on the position's own page
+
+
+def test_a_clockwise_sweep_that_loses_assembly_at_its_end_resumes_at_its_start():
+    """rocker-limit turned clockwise from 55.5°: the interval without assembly runs into the end of the turn."""
+    from plans.positions import cycle_positions
+    from plans.sweep import analyse_sweep
+
+    source = plans.example_path("rocker-limit").read_text()
+    source = source.replace('omega = "10 rad/s"', 'omega = "-10 rad/s"').replace('angle = "30 deg"', 'angle = "55.5 deg"')
+    scene = plans.loads(source)
+    solution = plans.solve(scene, np.asarray(cycle_positions(scene, 360)), allow_partial=True)
+    (lost,) = analyse_sweep(solution).lost
+    limit = math.degrees(math.acos((0.49 + 0.01 - 0.65**2) / 0.14))  # |AD| = AB + BD by the cosine rule: 56.39°
+    assert math.degrees(lost.resume) % 360 == pytest.approx(55.5)
+    assert math.degrees(lost.resume_limit) % 360 == pytest.approx(limit, abs=0.05)
+    assert math.degrees(lost.stop_limit) % 360 == pytest.approx(360 - limit, abs=0.05)
