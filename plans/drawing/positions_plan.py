@@ -190,33 +190,35 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
     crosses no other label.  Returns the Text, or None when there is no room.
     """
     w, h = text_size(text, size)
-    obstacles = np.array(sketch.obstacles, dtype=object) if sketch.obstacles else None
     base = cmath.phase(prefer) if prefer else math.radians(45)
-
-    def boxed(centre: complex):
-        return box(centre.real - w / 2, centre.imag - h / 2, centre.real + w / 2, centre.imag + h / 2)
-
-    def clear(geometry) -> bool:
-        return obstacles is None or float(shapely.distance(geometry, obstacles).min()) >= NUMBER_CLEAR_MM
-
+    candidates = []  # (centre, unit direction, on a leader), in the order they are preferred
     for gap, leader in [(g, False) for g in NEAR_GAPS] + [(g, True) for g in LEADER_GAPS]:
         for k in range(16):
             theta = base + 2 * math.pi * (k // 2 + 1) / 16 * (1 if k % 2 else -1) if k else base
             u = cmath.exp(1j * theta)
-            centre = at + u * (gap + abs(u.real) * w / 2 + abs(u.imag) * h / 2)
-            label = boxed(centre)
-            if not clear(label):
+            candidates.append((at + u * (gap + abs(u.real) * w / 2 + abs(u.imag) * h / 2), u, leader))
+    # only what lies within reach of the farthest candidate can be in the way
+    reach = max(LEADER_GAPS) + w + h + NUMBER_CLEAR_MM
+    shapes = np.array(sketch.obstacles, dtype=object) if sketch.obstacles else np.array([], dtype=object)
+    if len(shapes):
+        x0, y0, x1, y1 = shapely.bounds(shapes).T
+        shapes = shapes[(x0 <= at.real + reach) & (x1 >= at.real - reach) & (y0 <= at.imag + reach) & (y1 >= at.imag - reach)]
+    boxes = np.array([box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2) for c, _, _ in candidates], dtype=object)
+    clearance = shapely.distance(boxes[:, None], shapes[None, :]).min(axis=1) if len(shapes) else np.full(len(boxes), np.inf)
+
+    for (centre, u, leader), label, room in zip(candidates, boxes, clearance):
+        if room < NUMBER_CLEAR_MM:
+            continue
+        if leader:
+            start = at + u * (MARK_R + 0.3)
+            end = centre - u * (abs(u.real) * w / 2 + abs(u.imag) * h / 2 + 0.3)
+            line = LineString([(start.real, start.imag), (end.real, end.imag)])
+            if len(shapes) and float(shapely.distance(line, shapes).min()) < NUMBER_CLEAR_MM:  # the leader crosses nothing either
                 continue
-            if leader:
-                start = at + u * (MARK_R + 0.3)
-                end = centre - u * (abs(u.real) * w / 2 + abs(u.imag) * h / 2 + 0.3)
-                line = LineString([(start.real, start.imag), (end.real, end.imag)])
-                if not clear(line):  # the leader crosses nothing either
-                    continue
-                sketch.line([start, end], color=GHOST, lw=LEADER_PT, gid=f"{gid}-leader", zorder=4.4, obstacle=True)
-            artist = sketch.text(centre, text, size=size, ha="center", va="center", gid=gid, obstacle=False, zorder=6.0)
-            sketch.obstacles.append(label.buffer(LABEL_SPACE_MM, join_style=2))
-            return artist
+            sketch.line([start, end], color=GHOST, lw=LEADER_PT, gid=f"{gid}-leader", zorder=4.4, obstacle=True)
+        artist = sketch.text(centre, text, size=size, ha="center", va="center", gid=gid, obstacle=False, zorder=6.0)
+        sketch.obstacles.append(label.buffer(LABEL_SPACE_MM, join_style=2))
+        return artist
     return None
 
 
