@@ -141,10 +141,11 @@ def test_position_marks_are_not_grid_lines():
     assert len(triangles) == 12 and all(t.get_marker() == "v" for t in triangles)
 
 
-def test_serbian_diagrams_have_decimal_commas_true_minus_signs_and_no_english(tmp_path):
+@pytest.mark.parametrize("lang", ["sr", "ru", "bg", "sl"])
+def test_diagrams_have_decimal_commas_true_minus_signs_and_no_english(tmp_path, lang):
     run = _sweep("quick-return", 72)
-    paths = write_cycle_diagrams(run.cycle, tmp_path, marked=run.positions, lang="sr")
-    english = re.compile(r"\b(angle|velocity|acceleration|constant|position|positions|cannot|near|beyond|travel|relative|drawn|links|points)\b", re.I)
+    paths = write_cycle_diagrams(run.cycle, tmp_path, marked=run.positions, lang=lang)
+    english = re.compile(r"\b(angle|velocity|acceleration|constant|position|positions|cannot|near|beyond|travel|relative|drawn|links|points|turned|crank|driver|sliders?|kinematic)\b", re.I)
     numbers = 0
     for path in paths:
         texts = ["".join(t.itertext()) for t in ET.parse(path).getroot().iter(f"{SVG}text")]

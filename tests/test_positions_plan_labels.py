@@ -61,6 +61,7 @@ def test_every_drawn_number_is_beside_its_own_mark(drawn):
     name, run, fig, renderer = drawn
     k_l = run.scales["k_l"]
     solved = {r.index: r for r in run.runs if r.ok}
+    numbered = set()
     for t in _texts(fig):
         if not t.get_gid().startswith("pos-position-"):
             continue
@@ -71,6 +72,9 @@ def test_every_drawn_number_is_beside_its_own_mark(drawn):
         mark = complex(solved[index].analytic.points[point].r[0]) / k_l  # [mm] by the analytic solution
         x, y = t.get_position()
         assert abs(complex(x, y) - mark) < 14.0, (name, text)
+        numbered.add(point)
+    if name == "six-bar":  # the crank's A, the coupler's B, the rocker's C and the coupler point M all get numbers
+        assert numbered == {"A", "B", "C", "M"}
 
 
 def test_paths_are_not_drawn_where_the_mechanism_does_not_assemble():
