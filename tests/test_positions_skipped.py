@@ -42,10 +42,10 @@ def test_draw_positions_names_every_skipped_position_and_why(capsys, tmp_path):
 
 
 def test_handout_names_skipped_positions_on_stderr(capsys, tmp_path):
-    status, _, err = _run(capsys, "handout", "--example", "rocker-limit", "--at", "30,90,330 deg", "-o", str(tmp_path / "h.pdf"))
+    status, _, err = _run(capsys, "handout", "--example", "rocker-limit", "--at", "30,90 deg", "-o", str(tmp_path / "h.pdf"))
     assert status == 0
     assert re.findall(r"position (\d+) \(φ₂ = 90.0°\) is skipped: RRR\(3,4\): joint B cannot assemble", err) == ["1"]
-    assert "position 0 " not in err and "position 2 " not in err
+    assert "position 0 " not in err
 
 
 def test_a_skipped_position_carries_its_reason():
