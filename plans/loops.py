@@ -236,10 +236,17 @@ def _numeric(term, stage: int) -> str:
     )
 
 
+def _still(term, stage: int) -> bool:
+    """A known rigid vector of a body that does not turn: its velocity (ω = 0) or acceleration (ω = ε = 0) term is zero."""
+    if not isinstance(term, _Rigid) or term.unknown or stage == 0:
+        return False
+    return term.omega == 0 and (stage == 1 or term.epsilon == 0)
+
+
 def _side(terms, stage: int, numeric: bool) -> str:
     parts = []
     if numeric and len(terms) > 1:
-        kept = [t for t in terms if not (isinstance(t, _Point) and (t.r, t.v, t.a)[stage] == 0)]
+        kept = [t for t in terms if not (isinstance(t, _Point) and (t.r, t.v, t.a)[stage] == 0) and not _still(t, stage)]
         terms = kept or terms[:1]
     for k, term in enumerate(terms):
         parts.append(_signed(term.sign, (_numeric if numeric else _symbolic)(term, stage), k == 0))
