@@ -317,8 +317,10 @@ def _sweep(args) -> int:
     if args.steps < 2:
         raise SceneError("--steps must be at least 2")
     driver = scene.driver
-    if isinstance(driver, Crank):
-        positions = driver.phi + 2 * math.pi * np.arange(args.steps) / args.steps
+    if isinstance(driver, Crank):  # in the sense of ω, as the positions of plans draw and handout
+        from .positions import cycle_positions
+
+        positions = np.asarray(cycle_positions(scene, args.steps))
     else:
         if driver.stroke is None:
             raise SceneError("a sweep of a linear driver needs its stroke: add stroke = [start, end] to [driver]", scene.source, "driver.stroke")
@@ -372,6 +374,8 @@ def _draw(args) -> int:
         from .positions import run_positions
 
         run = run_positions(scene, _position_spec(args), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
+        for message in run.skipped_messages():
+            _warn(message)
         paths = write_position_sheets(run, Path(args.output), lang=args.lang)
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
@@ -396,6 +400,11 @@ def _handout(args) -> int:
 
     scene = _load(args)
     positions = _position_spec(args) if _several(args) else None
+    if positions is not None:
+        from .positions import skipped_message, unsolved_positions
+
+        for index, value, error in unsolved_positions(scene, positions):
+            _warn(skipped_message(index, scene, value, str(error)))
     paths = write_handout(
         scene,
         Path(args.output),

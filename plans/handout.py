@@ -356,7 +356,7 @@ def handout_pages(
     solved = [r for r in run.runs if r.ok]
     pages: list[tuple[str, object]] = []
     if multi:
-        listing = [f"{r.index}:  {r.label}" + ("" if r.ok else f"  ({term('not_solved', lang)})") for r in run.runs]
+        listing = [f"{r.index}:  {r.label}" + ("" if r.ok else f"  ({term('not_solved', lang)}: {r.brief(lang)})") for r in run.runs]
         if solved:
             pages.append(("cover", draw_cover_page(run, lang=lang, header_lines=data + ["§" + formula, scale_line(run.scales, lang)], positions_lines=listing, footer=footer, k_l=_cover_scale(run, math.ceil(len(listing) / 3)))))
     for r in run.runs:

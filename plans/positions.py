@@ -54,6 +54,8 @@ __all__ = [
     "PositionRun",
     "PositionsRun",
     "run_positions",
+    "unsolved_positions",
+    "skipped_message",
     "position_text",
     "Diagrams",
     "CYCLE_STEPS",
@@ -292,6 +294,27 @@ class PositionRun:
         """``"φ₂ = 145.0°"``."""
         return position_text(self.scene, self.position)
 
+    @property
+    def reason(self) -> str:
+        """Why the position is not solved: the solver's message (empty for a solved position)."""
+        return "" if self.ok else str(self.error) if self.error is not None else "no graphical construction"
+
+    def brief(self, lang: str = "en") -> str:
+        """The reason in a few words of *lang*, for a listing: ``"RRR(3,4): cannot assemble"`` (empty when solved)."""
+        if self.ok:
+            return ""
+        from .i18n import term
+
+        group = re.match(r"^\s*([A-Z]{3}\([^)]*\))", self.reason)
+        return (f"{group.group(1)}: " if group else "") + term(self.cause, lang)
+
+    @property
+    def cause(self) -> str:
+        """``""`` for a solved position, else ``"dead_centre"`` or ``"no_assembly"`` (keys of :mod:`plans.i18n`)."""
+        if self.ok:
+            return ""
+        return "dead_centre" if isinstance(self.error, SingularPositionError) else "no_assembly"
+
     # --- notebooks -----------------------------------------------------------
 
     def figure(self, *, lang: str = "en"):
@@ -356,6 +379,15 @@ class PositionsRun:
     @property
     def positions(self) -> list[float]:
         return [r.position for r in self.runs]
+
+    @property
+    def skipped(self) -> list[PositionRun]:
+        """The positions that are not solved (no sheet, not drawn), each with its ``reason``."""
+        return [r for r in self.runs if not r.ok]
+
+    def skipped_messages(self) -> list[str]:
+        """One line per position that is not solved: its number, where it is, and why."""
+        return [skipped_message(r.index, r.scene, r.position, r.reason) for r in self.skipped]
 
     def _repr_svg_(self) -> str:
         from .drawing.positions_plan import draw_positions_plan
@@ -427,6 +459,37 @@ class Diagrams:
         from .drawing.svg import render_svg
 
         return render_svg(self.figures()[0][1]).decode("utf-8")
+
+
+def skipped_message(index: int, scene: Scene, position: float, reason: str) -> str:
+    """``"position 1 (φ₂ = 60.0°) is skipped: RRR(3,4): joint B cannot assemble …"``."""
+    return f"position {index} ({position_text(scene, position)}) is skipped: {reason}"
+
+
+def _position_error(scene: Scene, structure, index: int, value: float) -> PlansError:
+    """Why the analytic solver refuses one position: its own message."""
+    from .analytic import solve
+
+    try:
+        solve(scene, [value], structure)
+    except (AssemblyError, SingularPositionError) as exc:
+        return exc
+    return AssemblyError(f"position {index}: the mechanism cannot be solved at {position_text(scene, value)}")
+
+
+def unsolved_positions(scene: Scene, positions) -> list[tuple[int, float, PlansError]]:
+    """(number, position, error) of each position the mechanism cannot be solved at, by the analytic solver alone.
+
+    The same errors :func:`run_positions` keeps in its runs, found without
+    the graphical construction (for a message before a long job).
+    """
+    from .analytic import solve
+    from .structure import find_structure
+
+    structure = find_structure(scene)
+    values = parse_positions(positions, scene) if positions is not None else [scene.driver.phi if _is_crank(scene) else scene.driver.s]
+    sweep = solve(scene, np.asarray(values, dtype=float), structure, allow_partial=True)
+    return [(k, v, _position_error(scene, structure, k, v)) for k, v in enumerate(values) if not bool(sweep.valid[k])]
 
 
 def _hints_at(scene: Scene, analytic, k: int) -> dict:
@@ -512,13 +575,8 @@ def run_positions(
     prepared = []
     for index, value in enumerate(values):
         here = replace(scene.at(value), assembly=_hints_at(scene, sweep, index))
-        if not bool(sweep.valid[index]):
-            try:  # the solver's own message for this position
-                solve(scene, [value], structure)
-                error: PlansError = AssemblyError(f"position {index}: the mechanism cannot be solved at {position_text(scene, value)}")
-            except (AssemblyError, SingularPositionError) as exc:
-                error = exc
-            prepared.append((index, value, here, None, error))
+        if not bool(sweep.valid[index]):  # the solver's own message for this position
+            prepared.append((index, value, here, None, _position_error(scene, structure, index, value)))
             continue
         try:
             first = construct(here, structure, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision)

@@ -257,7 +257,8 @@ def analyse_sweep(solution, warn_condition: float = WARN_CONDITION) -> SweepRepo
     lost = []
     runs = _runs(~valid)
     wrap = crank and n > 1 and runs and runs[-1][1] == n and not (runs[0][0] == 0)
-    step = 2 * math.pi if crank else 0.0
+    # one turn on, in the sense the sweep runs (that of ω for plans sweep)
+    step = (2 * math.pi if n < 2 or x[-1] >= x[0] else -2 * math.pi) if crank else 0.0
     for start, end in runs:
         culprit, cause = groups[0].name if groups else "?", "cannot assemble"
         for group in groups:

@@ -102,7 +102,7 @@ def test_sweep_writes_one_row_per_position(capsys, tmp_path):
     rows = list(csv.DictReader(io.StringIO(target.read_text())))
     assert len(rows) == 36
     assert float(rows[0]["driver_phi_deg"]) == pytest.approx(55.0)
-    assert float(rows[1]["driver_phi_deg"]) == pytest.approx(65.0)
+    assert float(rows[1]["driver_phi_deg"]) == pytest.approx(45.0)  # ω = −10 rad/s: the sweep runs clockwise
     assert all(row["assembled"] == "1" for row in rows)
     assert "RPR(5,6).condition" in rows[0] and "E.coriolis_x" in rows[0]
 
