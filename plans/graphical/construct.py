@@ -12,7 +12,7 @@ import cmath
 import math
 
 from ..limits import WARN_CONDITION, NearDeadCentre, position_text
-from ..scene import Crank, Scene
+from ..scene import Crank, Scene, diameter
 from ..structure import Group, Structure, find_structure
 from . import prp, rpp, rpr, rrp, rrr
 from .driver import driver_acceleration, driver_velocity, place_driver
@@ -206,9 +206,7 @@ def _extent(scene: Scene) -> float:
         zs = list(body.points.values()) + [line.origin for line in body.lines.values()]
         if body.is_frame:
             zs = zs + [0j]
-        for a in zs:
-            for b in zs:
-                size = max(size, abs(a - b))
+        size = max(size, diameter(zs))  # O(n log n): a frame may carry thousands of points
     driver = scene.driver
     if not isinstance(driver, Crank):
         size = max(size, abs(driver.s))
