@@ -460,7 +460,6 @@ def write_handout(
     if positions is None:
         _check_solvable(scene)
     pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components)
-    path.parent.mkdir(parents=True, exist_ok=True)
     if suffix == ".pdf":
         return replace_all({path: render_pdf([fig for _, fig in pages])})
     contents = {}
