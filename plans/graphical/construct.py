@@ -110,7 +110,11 @@ def construct(
     """
     if structure is None:
         structure = find_structure(scene)
-    given = {key: None if value is not None else f"scales.{key}" for key, value in (("k_l", k_l), ("k_v", k_v), ("k_a", k_a))}
+    # where each factor came from, for messages: the scene's [scales] (also when a caller passes its value on)
+    given = {
+        key: f"scales.{key}" if value is None or value == getattr(scene.scales, key) else None
+        for key, value in (("k_l", k_l), ("k_v", k_v), ("k_a", k_a))
+    }
     k_l = k_l if k_l is not None else scene.scales.k_l
     k_v = k_v if k_v is not None else scene.scales.k_v
     k_a = k_a if k_a is not None else scene.scales.k_a
