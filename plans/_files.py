@@ -160,8 +160,8 @@ class _Pending:
 
 
 def _resolve(path: Path) -> Path:
-    """*path* made absolute, a symbolic link at its end followed."""
-    return Path(os.path.realpath(path)) if path.is_symlink() else Path(os.path.abspath(path))
+    """*path* made absolute, every symbolic link on it followed (the file a write replaces)."""
+    return Path(os.path.realpath(path))
 
 
 def _target(path: Path) -> Path:
