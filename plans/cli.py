@@ -126,7 +126,12 @@ def build_parser() -> argparse.ArgumentParser:
     _scene_argument(sweep)
     sweep.add_argument("--steps", type=int, default=360, metavar="N", help="number of driver positions (default 360)")
     sweep.add_argument("-o", "--output", metavar="FILE", help="CSV file to write (default: standard output)")
-    sweep.add_argument("--plot", metavar="DIR", help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) into DIR")
+    sweep.add_argument(
+        "--plot",
+        metavar="DIR",
+        help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) into DIR "
+        "(without -o the CSV still goes to standard output, the diagrams' names to standard error)",
+    )
     sweep.add_argument("--components", action="store_true", help="with --plot: x and y components of v and a too")
     sweep.add_argument("--positions", type=_count, metavar="N", help="with --plot: mark N equally spaced positions (those of plans draw --positions N)")
     _language_argument(sweep)
@@ -308,8 +313,8 @@ def _centres(args) -> int:
 def _sweep(args) -> int:
     import numpy as np
 
+    from ._files import batch, write_atomic
     from .analytic import solve
-    from ._files import write_atomic
     from .report import sweep_csv
     from .sweep import analyse_sweep
 
@@ -339,15 +344,18 @@ def _sweep(args) -> int:
         from .positions import parse_positions
 
         marked = parse_positions(args.positions, scene)
-    if args.output:
-        write_atomic(args.output, text)
-    elif not args.plot:
-        sys.stdout.write(text)
-    if args.plot:
-        from .drawing.diagrams import write_cycle_diagrams
+    paths = []
+    with batch():  # the CSV and the diagrams: all written, or none
+        if args.output:
+            write_atomic(args.output, text)
+        if args.plot:
+            from .drawing.diagrams import write_cycle_diagrams
 
-        for path in write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components):
-            print(path)
+            paths = write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components)
+    if not args.output:
+        sys.stdout.write(text)
+    for path in paths:
+        print(path, file=sys.stderr if not args.output else sys.stdout)
     return 0
 
 
@@ -363,6 +371,7 @@ def _nowhere(scene: Scene, positions) -> PlansError:
 
 
 def _draw(args) -> int:
+    from ._files import batch
     from .analytic import solve
     from .compare import compare
     from .drawing import write_drawings
@@ -376,26 +385,29 @@ def _draw(args) -> int:
         run = run_positions(scene, _position_spec(args), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
         for message in run.skipped_messages():
             _warn(message)
-        paths = write_position_sheets(run, Path(args.output), lang=args.lang)
+        with batch():
+            paths = write_position_sheets(run, Path(args.output), lang=args.lang)
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
         graphical = _construct(scene, args)
         comparisons = compare(analytic, graphical)
         sheet_table_rows = sheet_table(comparisons)
         _warn_solution(analytic, graphical)
-        paths = write_drawings(
-            graphical,
-            Path(args.output),
-            formula=analytic.structure.formula,
-            table=sheet_table_rows,
-            lang=args.lang,
-        )
+        with batch():
+            paths = write_drawings(
+                graphical,
+                Path(args.output),
+                formula=analytic.structure.formula,
+                table=sheet_table_rows,
+                lang=args.lang,
+            )
     for path in paths:
         print(path)
     return 0
 
 
 def _handout(args) -> int:
+    from ._files import batch
     from .handout import write_handout
 
     scene = _load(args)
@@ -405,17 +417,18 @@ def _handout(args) -> int:
 
         for index, value, error in unsolved_positions(scene, positions):
             _warn(skipped_message(index, scene, value, str(error)))
-    paths = write_handout(
-        scene,
-        Path(args.output),
-        positions=positions,
-        lang=args.lang,
-        k_l=args.k_l,
-        k_v=args.k_v,
-        k_a=args.k_a,
-        precision=args.precision,
-        components=args.components,
-    )
+    with batch():  # directories are created only when every page has been rendered
+        paths = write_handout(
+            scene,
+            Path(args.output),
+            positions=positions,
+            lang=args.lang,
+            k_l=args.k_l,
+            k_v=args.k_v,
+            k_a=args.k_a,
+            precision=args.precision,
+            components=args.components,
+        )
     for path in paths:
         print(path)
     return 0

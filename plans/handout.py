@@ -198,7 +198,9 @@ def _fit_scales(scene, positions, first, given: dict, precision, overrun, cache:
     from .positions import run_positions
 
     def solve_at(scales):
-        return run_positions(scene, positions, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision)
+        return run_positions(
+            scene, positions, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision, check_scales=False
+        )
 
     def excess(run) -> float:
         return max((overrun(r, run) for r in _worst(run)), default=0.0)
@@ -460,7 +462,6 @@ def write_handout(
     if positions is None:
         _check_solvable(scene)
     pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components)
-    path.parent.mkdir(parents=True, exist_ok=True)
     if suffix == ".pdf":
         return replace_all({path: render_pdf([fig for _, fig in pages])})
     contents = {}

@@ -514,6 +514,7 @@ def run_positions(
     precision: float | None = None,
     drawn_max: dict[str, float] | float = 120.0,
     cycle_steps: int = CYCLE_STEPS,
+    check_scales: bool = True,
 ) -> PositionsRun:
     """Solve the mechanism at every position, analytically and graphically, at one set of scales.
 
@@ -533,6 +534,9 @@ def run_positions(
         Longest drawn length [mm] the automatic factors allow.
     cycle_steps : int
         Positions of the dense analytic sweep over the cycle.
+    check_scales : bool
+        Refuse given factors that draw a figure larger than a sheet or
+        smaller than 1 mm at some position (see :func:`plans.graphical.construct`).
 
     Returns
     -------
@@ -579,7 +583,7 @@ def run_positions(
             prepared.append((index, value, here, None, _position_error(scene, structure, index, value)))
             continue
         try:
-            first = construct(here, structure, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision)
+            first = construct(here, structure, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, check_scales=check_scales)
         except (AssemblyError, SingularPositionError) as exc:
             prepared.append((index, value, here, None, exc))
             continue
@@ -596,7 +600,8 @@ def run_positions(
             runs.append(PositionRun(index, value, here, error=error))
             continue
         graphical = construct(
-            here, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision
+            here, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision,
+            check_scales=False,  # given factors were checked above; common ones are plans' own choice
         )
         analytic = sweep.at(index)
         runs.append(PositionRun(index, value, here, analytic, graphical, compare(analytic, graphical)))

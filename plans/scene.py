@@ -51,6 +51,7 @@ __all__ = [
     "body_words",
     "example_names",
     "example_path",
+    "diameter",
 ]
 
 #: The name of the fixed body.  Structural formulas print it as 0.
@@ -298,28 +299,94 @@ def load(path: str | Path) -> Scene:
         Naming the file, the key and what is wrong.
     """
     path = Path(path)
+    return loads(_read_scene_text(path), source=str(path))
+
+
+#: Largest scene file plans reads [bytes]: far above any real scene (the bundled ones are ~1 kB).
+MAX_SCENE_BYTES = 1_000_000
+#: Deepest nesting of TOML arrays and tables a scene may have (a real scene nests 5 deep).
+MAX_NESTING = 32
+#: Most points (named points of all bodies, frame included) a scene may have.
+MAX_POINTS = 2_000
+#: Most bodies (moving links and slider blocks) a scene may have.
+MAX_LINKS = 200
+_MB = f"{MAX_SCENE_BYTES / 1e6:g} MB ({MAX_SCENE_BYTES:,} bytes)"
+
+
+def _read_scene_text(path: Path) -> str:
+    """The text of a scene file: a regular file of at most MAX_SCENE_BYTES, UTF-8.
+
+    Devices, pipes and directories are refused without reading from them
+    (``/dev/zero`` would never end); the file is opened non-blocking so that a
+    FIFO with no writer is refused at once instead of hanging.
+    """
+    import os
+    import stat
+
     try:
-        text = path.read_text(encoding="utf-8")
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_CLOEXEC", 0))
     except OSError as exc:
         raise SceneError(f"cannot read the scene file: {exc.strerror or exc}", str(path)) from None
+    mode = os.fstat(fd).st_mode
+    if not stat.S_ISREG(mode):
+        os.close(fd)
+        kind = "a directory" if stat.S_ISDIR(mode) else "not a regular file (a device, pipe or socket)"
+        raise SceneError(f"cannot read the scene file: it is {kind}; a scene is a TOML text file", str(path))
+    with os.fdopen(fd, "rb") as handle:
+        try:
+            data = handle.read(MAX_SCENE_BYTES + 1)
+        except OSError as exc:
+            raise SceneError(f"cannot read the scene file: {exc.strerror or exc}", str(path)) from None
+    if len(data) > MAX_SCENE_BYTES:
+        raise SceneError(
+            f"the scene file is larger than {_MB}, the most plans reads (a scene of a real mechanism is a few kB)",
+            str(path),
+        )
+    try:
+        return data.decode("utf-8")
     except UnicodeDecodeError:
         raise SceneError("the scene file is not UTF-8 text", str(path)) from None
-    return loads(text, source=str(path))
 
 
 def loads(text: str, source: str = "<scene>") -> Scene:
     """Validate a scene given as TOML text; see :func:`load`."""
+    if len(text) > MAX_SCENE_BYTES:
+        raise SceneError(f"the scene is larger than {_MB}, the most plans reads", source)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"not valid TOML: {exc}", source) from None
+    except RecursionError:  # the parser recurses once per level of nested arrays or inline tables
+        raise SceneError(_too_deep(), source) from None
+    _check_nesting(data, source)
     return _SceneReader(data, source, text).scene()
+
+
+def _too_deep() -> str:
+    return (
+        f"arrays or tables are nested more than {MAX_NESTING} deep; "
+        "a scene nests a few levels (link.2.points.A = [x, y])"
+    )
+
+
+def _check_nesting(data: object, source: str) -> None:
+    """Refuse values nested deeper than MAX_NESTING (checked without recursion)."""
+    stack = [(data, 0)]
+    while stack:
+        value, depth = stack.pop()
+        if depth > MAX_NESTING:
+            raise SceneError(_too_deep(), source)
+        if isinstance(value, dict):
+            stack.extend((v, depth + 1) for v in value.values())
+        elif isinstance(value, list):
+            stack.extend((v, depth + 1) for v in value)
 
 
 def from_mapping(data: dict, source: str = "<scene>") -> Scene:
     """Validate a scene given as the mapping TOML would parse to (for programs that build scenes)."""
     if not isinstance(data, dict):
         raise SceneError(f"a scene is a table of sections, got {_describe(data)}", source)
+    _check_nesting(data, source)
     return _SceneReader(data, source, "").scene()
 
 
@@ -482,6 +549,7 @@ class _SceneReader:
             if names.count(name) > 1:
                 raise self.fail("slider", f"two prismatic joints are both named {name!r}; give one a name = \"...\"")
 
+        self.check_size(bodies)
         self.check_coincident(bodies)
         if "driver" not in data:
             raise self.fail("driver", "missing [driver]: say which link is driven (crank = \"2\" or slider = \"2\")")
@@ -590,27 +658,42 @@ class _SceneReader:
         return str(max(numbers, default=1) + 1)
 
     def check_coincident(self, bodies: dict[str, Body]) -> None:
-        """Points of one body at one place, or closer than COINCIDENT × the scene's size (one point to double precision)."""
-        zs = [z for body in bodies.values() for z in body.points.values()]
-        size = max((abs(a - b) for a in zs for b in zs), default=0.0)
+        """Points of one body at one place, or closer than COINCIDENT × the scene's size (one point to double precision).
+
+        The scene's size is the largest distance between two of its points
+        (:func:`diameter`, O(n log n)); close pairs are found on a grid of
+        cells twice the tolerance wide (:func:`_close_pair`), so a scene of
+        MAX_POINTS points is checked in well under a second.
+        """
+        size = diameter([z for body in bodies.values() for z in body.points.values()])
+        tolerance = COINCIDENT * size
         for body in bodies.values():
             items = list(body.points.items())
-            for k, (a_name, a) in enumerate(items):
-                for b_name, b in items[k + 1 :]:
-                    field = "frame" if body.is_frame else f"link.{body.name}"
-                    if a == b:
-                        raise self.fail(
-                            f"{field}.points.{b_name}",
-                            f"points {a_name} and {b_name} of {body_words(body.name)} coincide at ({a.real:g}, {a.imag:g}) m; "
-                            "one point name per location",
-                        )
-                    if abs(a - b) <= COINCIDENT * size:
-                        raise self.fail(
-                            f"{field}.points.{b_name}",
-                            f"points {a_name} and {b_name} of {body_words(body.name)} are {abs(a - b):.3g} m apart, "
-                            f"less than {COINCIDENT:g} of the scene's size ({size:.3g} m): they coincide to double "
-                            "precision; one point name per location, or a link long enough to compute with",
-                        )
+            pair = _close_pair([z for _, z in items], tolerance)
+            if pair is None:
+                continue
+            (a_name, a), (b_name, b) = items[pair[0]], items[pair[1]]
+            field = "frame" if body.is_frame else f"link.{body.name}"
+            if a == b:
+                raise self.fail(
+                    f"{field}.points.{b_name}",
+                    f"points {a_name} and {b_name} of {body_words(body.name)} coincide at ({a.real:g}, {a.imag:g}) m; "
+                    "one point name per location",
+                )
+            raise self.fail(
+                f"{field}.points.{b_name}",
+                f"points {a_name} and {b_name} of {body_words(body.name)} are {abs(a - b):.3g} m apart, "
+                f"less than {COINCIDENT:g} of the scene's size ({size:.3g} m): they coincide to double "
+                "precision; one point name per location, or a link long enough to compute with",
+            )
+
+    def check_size(self, bodies: dict[str, Body]) -> None:
+        """Refuse scenes beyond MAX_POINTS points or MAX_LINKS bodies (time and memory stay bounded)."""
+        points = sum(len(body.points) for body in bodies.values())
+        if points > MAX_POINTS:
+            raise self.fail("link", f"the scene has {points:,} points; plans takes at most {MAX_POINTS:,} (frame and links together)")
+        if len(bodies) - 1 > MAX_LINKS:
+            raise self.fail("link", f"the scene has {len(bodies) - 1:,} links and blocks; plans takes at most {MAX_LINKS:,}")
 
     def driver(self, table: dict, bodies: dict[str, Body]) -> Crank | LinearDriver:
         if "crank" in table and "slider" in table:
@@ -735,6 +818,105 @@ class _SceneReader:
                     raise self.fail(f"scales.{key}", f"{value!r} is outside the range plans computes in ({MIN_SCALE:g} to {MAX_MAGNITUDE:g})")
                 values[key] = number
         return Scales(**values)
+
+
+def diameter(zs: list[complex]) -> float:
+    """The largest distance |a − b| between two of the points [m]; 0 for fewer than two.
+
+    The farthest pair is a pair of antipodal vertices of the convex hull
+    (monotone chain, then rotating calipers): O(n log n) instead of
+    comparing all pairs.  Orientations are decided exactly (see
+    :func:`_turn`), so nearly collinear points cannot mislead the hull.
+    """
+    hull = _hull(zs)
+    if len(hull) < 2:
+        return 0.0
+    if len(hull) == 2:
+        return abs(hull[0] - hull[1])
+    n = len(hull)
+    best = 0.0
+    j = 1
+    for i in range(n):
+        p, q = hull[i], hull[(i + 1) % n]
+        # advance j while hull[j + 1] is farther from the line pq than hull[j]
+        while _turn(p, q, hull[j], hull[(j + 1) % n]) > 0:
+            j = (j + 1) % n
+        best = max(best, abs(hull[j] - p), abs(hull[j] - q))
+    return best
+
+
+def _turn(a: complex, b: complex, c: complex, d: complex) -> int:
+    """The sign of the cross product (b − a) × (d − c), exactly.
+
+    In floating point when the result is far from round-off, else with exact
+    rational arithmetic on the coordinates (they are binary fractions).
+    """
+    ux, uy, vx, vy = b.real - a.real, b.imag - a.imag, d.real - c.real, d.imag - c.imag
+    left, right = ux * vy, uy * vx
+    det = left - right
+    if abs(det) > 8 * _EPS * (abs(left) + abs(right)) and math.isfinite(det):
+        return 1 if det > 0 else -1
+    from fractions import Fraction as F
+
+    exact = (F(b.real) - F(a.real)) * (F(d.imag) - F(c.imag)) - (F(b.imag) - F(a.imag)) * (F(d.real) - F(c.real))
+    return (exact > 0) - (exact < 0)
+
+
+_EPS = 2.0**-52
+
+
+def _hull(zs: list[complex]) -> list[complex]:
+    """Convex hull, counter-clockwise, without collinear points (Andrew's monotone chain)."""
+    points = sorted(set(zs), key=lambda z: (z.real, z.imag))
+    if len(points) <= 2:
+        return points
+
+    def half(seq):
+        out: list[complex] = []
+        for z in seq:
+            while len(out) >= 2 and _turn(out[-2], out[-1], out[-2], z) <= 0:
+                out.pop()
+            out.append(z)
+        return out
+
+    lower, upper = half(points), half(reversed(points))
+    return lower[:-1] + upper[:-1]
+
+
+def _close_pair(zs: list[complex], tolerance: float) -> tuple[int, int] | None:
+    """Indices (i, j), i < j, of two points at most *tolerance* apart, or None.
+
+    Exactly equal points first (a dictionary), then, for a positive tolerance,
+    neighbours on a grid of cells 2 × tolerance wide: two points within the
+    tolerance lie in the same or adjacent cells, and a cell's neighbourhood
+    holds a bounded number of points unless some of them are close (and then
+    the first found is reported).  Of several pairs the one with the smallest
+    j, then the smallest i, is returned.
+    """
+    seen: dict[complex, int] = {}
+    for j, z in enumerate(zs):
+        if z in seen:
+            return seen[z], j
+        seen[z] = j
+    if not tolerance > 0 or len(zs) < 2:
+        return None
+    x0 = min(z.real for z in zs)
+    y0 = min(z.imag for z in zs)
+    width = 2.0 * tolerance
+    cells: dict[tuple[int, int], list[int]] = {}
+    for j, z in enumerate(zs):
+        cx, cy = math.floor((z.real - x0) / width), math.floor((z.imag - y0) / width)
+        near = [
+            i
+            for dx in (-1, 0, 1)
+            for dy in (-1, 0, 1)
+            for i in cells.get((cx + dx, cy + dy), ())
+            if abs(zs[i] - z) <= tolerance
+        ]
+        if near:
+            return min(near), j
+        cells.setdefault((cx, cy), []).append(j)
+    return None
 
 
 def _all_points(bodies: dict[str, Body]) -> dict[str, None]:

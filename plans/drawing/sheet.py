@@ -330,7 +330,8 @@ def write_drawings(
     (see :func:`plans._files.replace_all`): a failure leaves every
     existing file as it was and no temporary file behind.  ``acceleration.svg``
     is written only when the solution has an acceleration plan; an old one in
-    *directory* is then removed, so the directory never mixes two runs.
+    *directory* is then removed if plans wrote it (and nobody changed it since),
+    so the directory never mixes two runs.
 
     Parameters
     ----------
@@ -363,9 +364,5 @@ def write_drawings(
     contents[directory / "sheet.svg"] = render_svg(
         draw_sheet(solution, formula=formula, table=table, equations=equations, lang=lang)
     )
-    paths = replace_all(contents)  # creates the directory
-    if solution.acceleration_plan is None:
-        stale = directory / "acceleration.svg"
-        if stale.exists():
-            stale.unlink()
-    return paths
+    # an acceleration.svg of an earlier run goes if plans wrote it (sheet.svg records it)
+    return replace_all(contents, stale=(directory, r"acceleration\.svg", "sheet.svg"))

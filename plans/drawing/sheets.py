@@ -18,7 +18,6 @@
 from __future__ import annotations
 
 import io
-import re
 from pathlib import Path
 
 import matplotlib
@@ -130,7 +129,8 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en") -> list
     Every sheet uses the run's common scale factors.  A position that cannot
     be solved gets no sheet (it is left out, and the plan of positions does
     not draw it).  All files are written together, atomically; sheets of an
-    earlier run with more positions are removed.
+    earlier run with more positions that plans wrote (and nobody changed
+    since) are removed; other files in *directory* are never touched.
 
     Parameters
     ----------
@@ -155,11 +155,8 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en") -> list
         fig = draw_position_sheet(run, lang=lang, total=total)
         contents[directory / f"sheet-{run.index:0{width}d}.svg"] = render_svg(fig)
     contents[directory / "positions.svg"] = render_svg(draw_positions_plan(positions_run, lang=lang)[0].figure)
-    paths = replace_all(contents)  # creates the directory
-    for old in directory.glob("sheet-*.svg"):
-        if old not in contents and re.fullmatch(r"sheet-\d+\.svg", old.name):
-            old.unlink()
-    return paths
+    # sheets of an earlier run with more positions go if plans wrote them (positions.svg records them)
+    return replace_all(contents, stale=(directory, r"sheet-\d+\.svg", "positions.svg"))
 
 
 # --- handout pages ------------------------------------------------------------------------
