@@ -176,19 +176,60 @@ def _several(args) -> bool:
     return getattr(args, "positions", None) is not None or "," in (getattr(args, "at", None) or "")
 
 
-def _position_spec(args):
-    """What plans.positions.parse_positions takes: a count, or the --at list."""
+def _position_spec(args, scene: Scene):
+    """What plans.positions.parse_positions takes: a count, or the --at list (checked, in rad or m)."""
     if getattr(args, "positions", None) is not None and getattr(args, "at", None) is not None:
         raise SceneError("give either --positions N or --at with a list of positions, not both")
-    return args.positions if args.positions is not None else args.at
+    return args.positions if args.positions is not None else _listed_positions(scene, args.at)
 
 
 def _at(scene: Scene, text: str) -> Scene:
     kind = "angle" if isinstance(scene.driver, Crank) else "length"
     try:
-        return scene.at(parse_quantity(_number(text), kind))
+        value = parse_quantity(_number(text), kind)
     except UnitError as exc:
         raise SceneError(str(exc), scene.source, "--at") from None
+    return scene.at(_sane_position(scene, value, text))
+
+
+#: A crank angle given with --at must lie within this many turns of 0 (beyond
+#: it, the angle's own round-off passes a thousandth of a degree).
+MAX_TURNS = 100
+#: A linear driver's position given with --at must lie within this many times
+#: the scene's size (the largest distance between two of its points).
+MAX_TRAVEL = 1000
+
+
+def _sane_position(scene: Scene, value: float, text: str) -> float:
+    """*value* (rad or m) if it is a driver position plans can report; else a SceneError saying the range."""
+    if isinstance(scene.driver, Crank):
+        if math.isfinite(value) and abs(value) <= MAX_TURNS * 2 * math.pi:
+            return value
+        raise SceneError(
+            f"{text!r} is not a crank angle plans can use: give an angle within ±{360 * MAX_TURNS}° "
+            f"({MAX_TURNS} turns), such as \"30 deg\" (angles are the same every 360°)",
+            scene.source,
+            "--at",
+        )
+    points = [z for body in scene.bodies.values() for z in body.points.values()]
+    size = max((abs(a - b) for a in points for b in points), default=0.0) or 1.0
+    limit = MAX_TRAVEL * size
+    if math.isfinite(value) and abs(value) <= limit:
+        return value
+    raise SceneError(
+        f"{text!r} is not a position plans can use for the linear driver: give a position within ±{limit:.3g} m "
+        f"({MAX_TRAVEL} times the scene's size, {size:.3g} m)",
+        scene.source,
+        "--at",
+    )
+
+
+def _listed_positions(scene: Scene, text: str) -> list[float]:
+    """The positions of an --at list (\"10,25 deg\"), each checked as a single --at is."""
+    from .positions import parse_positions
+
+    values = parse_positions(text, scene)
+    return [_sane_position(scene, v, text) for v in values]
 
 
 def _number(text: str) -> float | str:
@@ -227,20 +268,42 @@ def _solve(args) -> int:
     from .report import format_json, solution_json, solution_table
 
     scene = _load(args)
-    analytic = solve(scene, warn_condition=args.warn_condition)
-    graphical = comparisons = None
-    if not args.analytic_only:
-        from .compare import compare
-
-        graphical = _construct(scene, args)
-        comparisons = compare(analytic, graphical)
-    if args.json:
-        text = format_json(solution_json(analytic, graphical, comparisons))
+    if _several(args):  # --at "10,25 deg": each position solved on its own, a table each, or a JSON list
+        scenes = [scene.at(value) for value in _listed_positions(scene, args.at)]
     else:
-        text = solution_table(analytic, graphical, comparisons)
-    _warn_solution(analytic, graphical)
+        scenes = [scene]
+    documents, tables, solutions = [], [], []
+    for k, one in enumerate(scenes):
+        analytic = solve(one, warn_condition=args.warn_condition)
+        graphical = comparisons = None
+        if not args.analytic_only:
+            from .compare import compare
+
+            graphical = _construct(one, args)
+            comparisons = compare(analytic, graphical)
+        if args.json:
+            documents.append(solution_json(analytic, graphical, comparisons))
+        else:
+            table = solution_table(analytic, graphical, comparisons)
+            if len(scenes) > 1:
+                table = f"position {k} of {len(scenes)}: {_position_words(one)}\n{table}"
+            tables.append(table)
+        solutions.append((analytic, graphical))
+    if args.json:
+        text = format_json(documents[0] if len(scenes) == 1 else documents)
+    else:
+        text = "\n".join(tables)
+    for analytic, graphical in solutions:
+        _warn_solution(analytic, graphical)
     sys.stdout.write(text)
     return 0
+
+
+def _position_words(scene: Scene) -> str:
+    from .limits import position_text
+
+    driver = scene.driver
+    return position_text(isinstance(driver, Crank), driver.phi if isinstance(driver, Crank) else driver.s)
 
 
 def _sweep(args) -> int:
@@ -309,7 +372,7 @@ def _draw(args) -> int:
         from .drawing import write_position_sheets
         from .positions import run_positions
 
-        run = run_positions(scene, _position_spec(args), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
+        run = run_positions(scene, _position_spec(args, scene), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
         paths = write_position_sheets(run, Path(args.output), lang=args.lang)
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
@@ -333,7 +396,7 @@ def _handout(args) -> int:
     from .handout import write_handout
 
     scene = _load(args)
-    positions = _position_spec(args) if _several(args) else None
+    positions = _position_spec(args, scene) if _several(args) else None
     paths = write_handout(
         scene,
         Path(args.output),

@@ -17,6 +17,7 @@ from .compare import PLAN_QUANTITIES, QUANTITIES, Comparison
 from .errors import PlansError
 from .limits import expected_rel_error
 from .scene import Crank, Scene
+from .structure import branches
 
 __all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table"]
 
@@ -202,6 +203,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
         if graphical is not None and name in graphical.sliders:
             entry["graphical"] = _graphical_entry(rows, "sliders", name, acc)
         doc["sliders"][name] = entry
+    branch_of = {b.group: b for b in branches(analytic, k)}
     for group in analytic.structure.groups:
         condition = _condition(analytic.conditions[group.name][k])
         entry = {"kind": group.kind, "links": list(group.links), "joint": group.joint,
@@ -214,6 +216,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
                 entry["graphical_condition"] = _condition(graphical.conditions[group.name])
         else:
             entry["sine"] = entry["analytic_sine"]
+        entry["branch"] = branch_of[group.name].as_dict()
         doc["groups"][group.name] = entry
     position_value = float(analytic.driver[k])
     warnings = [w for w in analytic.warnings if w.position == position_value]
@@ -323,6 +326,7 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
                 worst = max((r for r in (sr, vr, ar, co) if r is not None), key=lambda r: r.rel_error)
                 w(f"  graphical  {_slider_words(sr.graphical, vr.graphical, accelerations)}"
                   f"   (largest rel err {worst.rel_error:.1e})\n")
+    branch_of = {b.group: b for b in branches(analytic, k)}
     w("\nGroups   condition number of the analytic 2×2 system; |sin| between the construction lines; "
       "expected relative error of v, a (4·ε_mach·condition²)\n")
     for group in analytic.structure.groups:
@@ -332,11 +336,20 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
         line = (f"{group.name:12} joint {group.joint:4} condition {condition:10.4g}   sine {sine_text}"
                 f"   expected rel. error {expected_rel_error(condition):.1e}")
         w(line + "\n")
+        w(f"{'':12} {_branch_words(branch_of[group.name])}\n")
     if comparisons:
         worst = max(comparisons, key=lambda r: r.rel_error)
         w(f"\nlargest relative difference graphical vs analytic: {worst.rel_error:.2e} "
           f"({worst.section[:-1]} {worst.name}, {worst.quantity})\n")
     return out.getvalue()
+
+
+def _branch_words(branch) -> str:
+    """``branch +1: C to the left of B→D (default (+1); another assembly exists there)``."""
+    if branch.sign == 0:
+        return "branch: one assembly only"
+    other = "another assembly exists there" if branch.other_assembly else "no other assembly there (dead centre)"
+    return f"branch {branch.sign:+d}: {branch.words} (chosen by {branch.chosen_by}; {other})"
 
 
 # --- sweep CSV -----------------------------------------------------------------

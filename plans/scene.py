@@ -212,6 +212,9 @@ class Scene:
     report: tuple[str, ...]
     scales: Scales
     source: str = "<scene>"
+    #: Line numbers of keys in the scene file, such as ``{"assembly.C": 31}``,
+    #: for messages about them found after loading.
+    key_lines: dict[str, int] = field(default_factory=dict, compare=False, repr=False)
 
     # --- derived views, for solvers and drawings -----------------------------
 
@@ -359,25 +362,49 @@ class _SceneReader:
         return SceneError(message, self.source, where)
 
     def _line_of(self, field: str) -> int | None:
-        """Best-effort line number of a key path in the TOML text."""
-        parts = field.split(".")
+        """Line number of a key path in the TOML text (best effort).
+
+        The key is looked for inside its own section: the ``[link.3]`` header
+        (trailing comments allowed), the k-th ``[[slider]]`` for ``slider.k``,
+        up to the next header; a key path no header names (a point inside an
+        inline table) is looked for from its nearest enclosing header.
+        """
+        parts = re.sub(r"\[\d+\]", "", field).split(".")
         lines = self.text.splitlines()
-        for depth in range(len(parts), 0, -1):
-            key = parts[depth - 1]
-            if key.isdigit() and depth >= 2 and parts[depth - 2] in ("slider", "prismatic"):
+        headers: list[tuple[int, str]] = []
+        counts: dict[str, int] = {}
+        for i, text in enumerate(lines):
+            code = text.split("#", 1)[0].strip()
+            if code.startswith("[[") and code.endswith("]]"):
+                name = code[2:-2].strip()
+                headers.append((i, f"{name}.{counts.get(name, 0)}"))
+                counts[name] = counts.get(name, 0) + 1
+            elif code.startswith("[") and code.endswith("]"):
+                headers.append((i, code[1:-1].strip()))
+        # the longest prefix of the key path that a header names
+        section, depth = None, 0
+        for k in range(len(parts), 0, -1):
+            prefix = ".".join(parts[:k])
+            match = [(i, h) for i, h in headers if h.replace('"', "") == prefix]
+            if match:
+                section, depth = match[0][0], k
+                break
+        if section is None:
+            first, last = 0, (headers[0][0] if headers else len(lines))
+        else:
+            first = section
+            later = [i for i, _ in headers if i > section]
+            last = later[0] if later else len(lines)
+            if depth == len(parts):
+                return section + 1
+        for key in reversed(parts[depth:]):
+            if key.isdigit():
                 continue
             pattern = re.compile(rf'(^|[\s{{,.\[])"?{re.escape(key)}"?\s*(=|\]|\.)')
-            header = ".".join(parts[: depth - 1])
-            start = 0
-            if header:
-                for i, text in enumerate(lines):
-                    if text.strip().strip("[]").strip() == header:
-                        start = i
-                        break
-            for i in range(start, len(lines)):
+            for i in range(first, last):
                 if pattern.search(lines[i].split("#", 1)[0]):
                     return i + 1
-        return None
+        return section + 1 if section is not None else None
 
     def check_keys(self, table: dict, allowed: tuple[str, ...], field: str) -> None:
         for key in table:
@@ -499,6 +526,7 @@ class _SceneReader:
             report=report,
             scales=scales,
             source=self.source,
+            key_lines={f"assembly.{name}": self._line_of(f"assembly.{name}") for name in assembly if self._line_of(f"assembly.{name}")},
         )
 
     def body(self, name: str, table: dict, field: str) -> Body:
