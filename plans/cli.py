@@ -14,7 +14,7 @@ import math
 import sys
 from pathlib import Path
 
-from .errors import PlansError, SceneError
+from .errors import AssemblyError, PlansError, SceneError, SingularPositionError
 from .limits import WARN_CONDITION
 from .scene import Crank, Scene, example_names, example_path, load
 from .units import UnitError, parse_quantity
@@ -166,6 +166,7 @@ def _load(args) -> Scene:
         scene = load(args.scene)
     else:
         raise SceneError("no scene: give a scene file or --example NAME (plans examples lists them)")
+    args.loaded_scene = scene  # for errors found later (main names the file)
     if getattr(args, "at", None) is not None and not _several(args):
         scene = _at(scene, args.at)
     return scene
@@ -436,13 +437,25 @@ _COMMANDS = {
 }
 
 
+def _error_text(exc: PlansError, scene: Scene | None) -> str:
+    """The message of an error, naming the scene file (assembly, dead centre, structure) and with its notes."""
+    text = str(exc)
+    if scene is None or isinstance(exc, SceneError):
+        return text
+    if not text.startswith(scene.source):
+        text = f"{scene.source}: {text}"
+    if isinstance(exc, (AssemblyError, SingularPositionError)) and scene.notes:
+        text += "; note: " + "; ".join(scene.notes)
+    return text
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; returns the exit status (0, or 2 on an error)."""
     args = build_parser().parse_args(argv)
     try:
         return _COMMANDS[args.command](args)
     except PlansError as exc:
-        print(f"plans: error: {exc}", file=sys.stderr)
+        print(f"plans: error: {_error_text(exc, getattr(args, 'loaded_scene', None))}", file=sys.stderr)
         return EXIT_ERROR
     except BrokenPipeError:  # plans solve ... | head
         return 0

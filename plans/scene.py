@@ -215,6 +215,9 @@ class Scene:
     #: Line numbers of keys in the scene file, such as ``{"assembly.C": 31}``,
     #: for messages about them found after loading.
     key_lines: dict[str, int] = field(default_factory=dict, compare=False, repr=False)
+    #: Advice for errors found after loading: a bare length (metres) far larger than the
+    #: scene's other lengths, written by someone who meant millimetres.
+    notes: tuple[str, ...] = field(default=(), compare=False, repr=False)
 
     # --- derived views, for solvers and drawings -----------------------------
 
@@ -329,7 +332,7 @@ def from_mapping(data: dict, source: str = "<scene>") -> Scene:
 _TOP_KEYS = ("title", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales")
 _BODY_KEYS = ("points", "lines")
 _LINE_KEYS = ("through", "angle", "direction")
-_SLIDER_KEYS = ("pin", "on", "name")
+_SLIDER_KEYS = ("pin", "on", "name", "points")
 _PRISMATIC_KEYS = ("line", "on", "name")
 _CRANK_KEYS = ("crank", "pivot", "angle", "omega", "epsilon")
 _LINEAR_KEYS = ("slider", "on", "point", "position", "velocity", "acceleration", "stroke")
@@ -353,6 +356,27 @@ class _SceneReader:
         self.data = data
         self.source = source
         self.text = text
+        self.lengths: list[tuple[str, object, float]] = []  # (field, as written, m) of every length read
+
+    #: A bare length this many times the median of the scene's lengths is implausible.
+    IMPLAUSIBLE = 20.0
+
+    def length_notes(self) -> tuple[str, ...]:
+        """Bare lengths (metres) implausibly large next to the others: the hint that bare lengths are metres."""
+        sizes = sorted(abs(m) for _, _, m in self.lengths if m != 0)
+        if not sizes:
+            return ()
+        median = sizes[len(sizes) // 2]
+        notes = []
+        for field, written, metres in self.lengths:
+            if isinstance(written, (int, float)) and not isinstance(written, bool) and abs(metres) >= 1 and abs(metres) >= self.IMPLAUSIBLE * median:
+                line = self._line_of(field)
+                where = f"{field} (line {line})" if line else field
+                notes.append(
+                    f"bare lengths are metres: {where} = {written:g} is {abs(metres):g} m, next to lengths of about "
+                    f"{median:.3g} m in the rest of the scene; write \"{written:g} mm\" if millimetres were meant"
+                )
+        return tuple(notes[:1])
 
     # -- helpers ---------------------------------------------------------------
 
@@ -424,6 +448,8 @@ class _SceneReader:
             number = parse_quantity(value, kind)
         except UnitError as exc:
             raise self.fail(field, str(exc)) from None
+        if kind == "length" and field.split(".")[0] in ("frame", "link", "slider"):
+            self.lengths.append((field, value, number))
         if abs(number) > MAX_MAGNITUDE:
             unit = _SI_UNITS[kind]
             raise self.fail(
@@ -434,8 +460,20 @@ class _SceneReader:
         return number
 
     def point(self, value: object, field: str) -> complex:
+        if isinstance(value, dict) and set(value) == {"r", "angle"}:  # polar: a length at an angle
+            r = self.quantity(value["r"], "length", f"{field}.r")
+            angle = self.quantity(value["angle"], "angle", f"{field}.angle")
+            if r < 0:
+                raise self.fail(f"{field}.r", f"a distance r is not negative (got {value['r']!r}); turn the angle by 180° instead")
+            return complex(r * math.cos(angle), r * math.sin(angle))
+        if isinstance(value, dict):
+            raise self.fail(
+                field,
+                "expected coordinates [x, y] in m (or [\"300 mm\", 0]), or a length at an angle "
+                f"{{ r = \"260 mm\", angle = \"50 deg\" }}; got a table with keys {', '.join(map(str, value)) or 'none'}",
+            )
         if not (isinstance(value, list) and len(value) == 2):
-            raise self.fail(field, f"expected coordinates [x, y] in m (or [\"300 mm\", 0]), got {_describe(value)}")
+            raise self.fail(field, f"expected coordinates [x, y] in m (or [\"300 mm\", 0]), or {{ r = \"260 mm\", angle = \"50 deg\" }}; got {_describe(value)}")
         x = self.quantity(value[0], "length", f"{field}[0]")
         y = self.quantity(value[1], "length", f"{field}[1]")
         return complex(x, y)
@@ -493,7 +531,7 @@ class _SceneReader:
         for k, table in enumerate(extra):
             prismatics.append(self.prismatic(k, self.table(table, f"prismatic.{k}"), bodies))
         for k, prismatic in enumerate(prismatics[: len(sliders)]):
-            (pin,) = bodies[prismatic.slider].points
+            pin = prismatic.name
             if sum(pin in body.points for body in bodies.values()) < 2:
                 raise self.fail(
                     f"slider.{k}.pin",
@@ -526,6 +564,7 @@ class _SceneReader:
             report=report,
             scales=scales,
             source=self.source,
+            notes=self.length_notes(),
             key_lines={f"assembly.{name}": self._line_of(f"assembly.{name}") for name in assembly if self._line_of(f"assembly.{name}")},
         )
 
@@ -590,9 +629,33 @@ class _SceneReader:
         if pin in bodies[guide].points:
             raise self.fail(f"{field}.pin", f"the block is pinned at {pin}, which is a point of its own guide's {body_words(guide)}: it could not slide")
         name = self.name(table.get("name", self.next_link_name(bodies)), f"{field}.name", "link")
+        own: dict[str, complex] = {}
+        if "points" in table:  # points of the block's own: its pin at (0, 0), its x axis along the guide
+            for pname, value in self.table(table["points"], f"{field}.points").items():
+                pname = self.name(pname, f"{field}.points", "point")
+                if pname == pin:
+                    raise self.fail(f"{field}.points.{pname}", f"the pin {pin} is the block's own (0, 0); list only its other points")
+                own[pname] = self.point(value, f"{field}.points.{pname}")
         if name in bodies:
-            raise self.fail(f"{field}.name", f"there is already a link named {name!r}")
-        bodies[name] = Body(name, {pin: 0j}, {"guide": Line(name, "guide", 0j, 0.0, pin)}, block=True)
+            body = bodies[name]
+            if body.block or name == FRAME:
+                raise self.fail(f"{field}.name", f"there is already a block named {name!r}")
+            if pin not in body.points or not any(pin in b.points for n, b in bodies.items() if n != name):
+                raise self.fail(
+                    f"{field}.name",
+                    f"there is already a link named {name!r}; to make it the block, give it the pin {pin} among its "
+                    "points, pinned to another link or the frame there (the block's guide then runs through the pin "
+                    "along the link's own x axis), or name the block otherwise",
+                )
+            if own:
+                raise self.fail(f"{field}.points", f"link {name} lists its points under [link.{name}]; give them there")
+            if "guide" in body.lines:
+                raise self.fail(f"{field}.name", f"link {name} already has a line named 'guide'; rename it")
+            lines = dict(body.lines)
+            lines["guide"] = Line(name, "guide", body.points[pin], 0.0, pin)
+            bodies[name] = Body(name, body.points, lines, block=True)
+        else:
+            bodies[name] = Body(name, {pin: 0j, **own}, {"guide": Line(name, "guide", 0j, 0.0, pin)}, block=True)
         return Prismatic(pin, name, "guide", guide, guide_line)
 
     def prismatic(self, k: int, table: dict, bodies: dict[str, Body]) -> Prismatic:
