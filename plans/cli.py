@@ -106,14 +106,59 @@ def _scale_arguments(parser: argparse.ArgumentParser) -> None:
     group.add_argument("--precision", type=_positive, metavar="MM", help="drafting precision: round every measured length to this many mm")
 
 
+#: Where the scene format is described, at the end of every --help.
+SCENE_FORMAT = (
+    "Scene files (TOML) are described in the README, section \"Scene files\"; "
+    "plans examples NAME prints a bundled scene to start from."
+)
+
+#: The end of each subcommand's --help: an example to copy.
+EXAMPLES = {
+    "solve": "plans solve --example slider-crank\n  plans examples four-bar > my.toml\n  plans solve my.toml --at \"10,25 deg\" --json",
+    "sweep": "plans sweep --example four-bar --steps 360 -o four-bar.csv --plot diagrams",
+    "draw": "plans draw --example six-bar -o drawings\n  plans draw --example six-bar --positions 12 -o sheets --format png",
+    "handout": "plans handout --example six-bar --positions 12 -o six-bar.pdf --lang sr",
+    "bench": "plans bench --quick -o /tmp/bench",
+    "examples": "plans examples\n  plans examples six-bar > my.toml",
+}
+
+#: What each bundled example shows, in plain words, for ``plans examples``.
+DESCRIPTIONS = {
+    "ladder": "a rod sliding down a wall, its foot pushed along the floor at constant speed",
+    "slider-crank": "an engine's crank, connecting rod and piston, the piston's line offset from the crank's centre",
+    "four-bar": "a crank driving a rocker through a coupler, with a point on the coupler; the crank speeds up",
+    "quick-return": "a shaper: the crank's pin slides in a swinging slotted lever that drives the ram (Coriolis)",
+    "six-bar": "a four-bar whose coupler drives a rod sliding through a swinging sleeve",
+    "linear-arm": "a slide carrying an arm; a rod in a sleeve welded to a rocker; a block on the moving rod",
+    "wedge": "a wedge pushed along the floor lifts a follower sliding in a vertical guide",
+    "scotch-yoke": "a crank whose pin slides in the slot of a yoke that moves straight back and forth",
+    "rocker-limit": "a four-bar whose crank cannot turn fully: it stops at two dead centres",
+}
+
+
+def _add_command(commands, name: str, help: str, **kwargs) -> argparse.ArgumentParser:
+    """A subcommand whose --help ends with an example and where the scene format is described."""
+    return commands.add_parser(name, help=help, description=help[:1].upper() + help[1:] + ".",
+                               epilog=_epilog(name), formatter_class=argparse.RawDescriptionHelpFormatter, **kwargs)
+
+
+def _epilog(name: str) -> str:
+    return f"example:\n  {EXAMPLES[name]}\n\n{SCENE_FORMAT}"
+
+
 def build_parser() -> argparse.ArgumentParser:
+    from . import __version__
+
     parser = argparse.ArgumentParser(
         prog="plans",
         description="Velocity and acceleration plans of planar linkages: analytic (complex numbers) and graphical.",
+        epilog="example:\n  plans solve --example six-bar\n\n" + SCENE_FORMAT + " plans COMMAND --help for each command.",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    parser.add_argument("--version", action="version", version=f"plans {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
-    solve = commands.add_parser("solve", help="solve one position: analytic and graphical values with their differences")
+    solve = _add_command(commands, "solve", "solve one position: analytic and graphical values with their differences")
     _scene_argument(solve)
     _position_argument(solve)
     solve.add_argument("--json", action="store_true", help="print the documented JSON schema instead of a table")
@@ -121,7 +166,7 @@ def build_parser() -> argparse.ArgumentParser:
     _warn_argument(solve)
     _scale_arguments(solve)
 
-    sweep = commands.add_parser("sweep", help="analytic solution over a whole driver cycle, as CSV")
+    sweep = _add_command(commands, "sweep", "analytic solution over a whole driver cycle, as CSV")
     _scene_argument(sweep)
     sweep.add_argument("--steps", type=int, default=360, metavar="N", help="number of driver positions (default 360)")
     sweep.add_argument("-o", "--output", metavar="FILE", help="CSV file to write (default: standard output)")
@@ -131,18 +176,23 @@ def build_parser() -> argparse.ArgumentParser:
     _language_argument(sweep)
     _warn_argument(sweep)
 
-    draw = commands.add_parser(
+    draw = _add_command(
+        commands,
         "draw",
-        help="draw mechanism.svg, velocity.svg, acceleration.svg and sheet.svg (or a sheet per position)",
+        "draw mechanism.svg, velocity.svg, acceleration.svg and sheet.svg (or a sheet per position)",
     )
     _scene_argument(draw)
     _position_argument(draw, several=True)
-    draw.add_argument("-o", "--output", metavar="DIR", required=True, help="directory for the SVG files")
+    draw.add_argument(
+        "-o", "--output", metavar="DIR", required=True,
+        help="directory for the drawings; or, for one position, a file (page.svg, page.pdf, page.png) for the sheet alone",
+    )
+    draw.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="format of the files written into DIR (default svg)")
     _language_argument(draw)
     _warn_argument(draw)
     _scale_arguments(draw)
 
-    handout = commands.add_parser("handout", help="a printable handout: A4 pages of PDF (or SVG pages)")
+    handout = _add_command(commands, "handout", "a printable handout: A4 pages of PDF (or SVG pages)")
     _scene_argument(handout)
     _position_argument(handout, several=True)
     handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg for SVG pages")
@@ -152,8 +202,11 @@ def build_parser() -> argparse.ArgumentParser:
 
     from . import bench
 
-    bench.add_parser(commands)
-    commands.add_parser("examples", help="list the bundled example scenes")
+    bench_parser = bench.add_parser(commands)
+    bench_parser.epilog = f"example:\n  {EXAMPLES['bench']}"
+    bench_parser.formatter_class = argparse.RawDescriptionHelpFormatter
+    examples = _add_command(commands, "examples", "list the bundled example scenes, or print one of them")
+    examples.add_argument("name", nargs="?", metavar="NAME", help="print this example's scene file (TOML), to start a scene of your own from")
     return parser
 
 
@@ -373,24 +426,39 @@ def _draw(args) -> int:
         from .drawing import write_position_sheets
         from .positions import run_positions
 
+        if _is_file(args.output):
+            raise SceneError(f"{args.output}: several positions give several sheets: give a directory (and --format {Path(args.output).suffix[1:]})")
         run = run_positions(scene, _position_spec(args, scene), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
-        paths = write_position_sheets(run, Path(args.output), lang=args.lang)
+        paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format)
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
         graphical = _construct(scene, args)
         comparisons = compare(analytic, graphical)
         sheet_table_rows = sheet_table(comparisons)
         _warn_solution(analytic, graphical)
-        paths = write_drawings(
-            graphical,
-            Path(args.output),
-            formula=analytic.structure.formula,
-            table=sheet_table_rows,
-            lang=args.lang,
-        )
+        if _is_file(args.output):  # -o page.png: the sheet alone, in the format of the suffix
+            from .drawing import draw_sheet
+            from .drawing.sheets import save_figure
+
+            figure = draw_sheet(graphical, formula=analytic.structure.formula, table=sheet_table_rows, lang=args.lang)
+            paths = [save_figure(figure, args.output)]
+        else:
+            paths = write_drawings(
+                graphical,
+                Path(args.output),
+                formula=analytic.structure.formula,
+                table=sheet_table_rows,
+                lang=args.lang,
+                format=args.format,
+            )
     for path in paths:
         print(path)
     return 0
+
+
+def _is_file(output: str) -> bool:
+    """True when -o names a drawing file (page.svg, page.pdf, page.png) rather than a directory."""
+    return Path(output).suffix.lower() in (".svg", ".pdf", ".png") and not Path(output).is_dir()
 
 
 def _handout(args) -> int:
@@ -421,9 +489,12 @@ def _bench(args) -> int:
 
 
 def _examples(args) -> int:
+    if args.name:
+        sys.stdout.write(example_path(args.name).read_text(encoding="utf-8"))
+        return 0
     for name in example_names():
-        scene = load(example_path(name))
-        print(f"{name:14} {scene.title}")
+        words = DESCRIPTIONS.get(name) or load(example_path(name)).title
+        print(f"{name:14} {words}")
     return 0
 
 
