@@ -469,7 +469,7 @@ _SYMBOL = {"v": "v", "a": "a", "omega": "ω", "epsilon": "ε", "v_rel": "v_rel",
 
 def _magnitude(value) -> str:
     if isinstance(value, complex):
-        return f"{abs(value):.4g} ∠ {math.degrees(cmath.phase(value)):.1f}°" if value != 0 else "0"
+        return f"{abs(value):.4g} ∠ {_deg(cmath.phase(value)):.1f}°" if value != 0 else "0"
     return f"{value:.4g}"
 
 

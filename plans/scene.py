@@ -478,6 +478,36 @@ class _SceneReader:
         y = self.quantity(value[1], "length", f"{field}[1]")
         return complex(x, y)
 
+    def triangulated(self, value: dict, points: dict[str, complex], field: str) -> complex:
+        """A point given by its distances from two points listed before it on the same body.
+
+        ``C = { distances = { A = "600 mm", B = "150 mm" } }``: the corner of the
+        triangle ABC, to the left of A→B (``side = "right"`` for the other one).
+        """
+        self.check_keys(value, ("distances", "side"), field)
+        raw = self.table(value["distances"], f"{field}.distances")
+        if len(raw) != 2:
+            raise self.fail(f"{field}.distances", "give the distances from two points, such as distances = { A = \"600 mm\", B = \"150 mm\" }")
+        (a, ra), (b, rb) = raw.items()
+        for name in (a, b):
+            if name not in points:
+                raise self.fail(f"{field}.distances.{name}", f"{name} is not a point listed before it on this body{_suggest(name, points)}")
+        ra = self.quantity(ra, "length", f"{field}.distances.{a}")
+        rb = self.quantity(rb, "length", f"{field}.distances.{b}")
+        side = value.get("side", "left")
+        if side not in ("left", "right"):
+            raise self.fail(f"{field}.side", f"expected \"left\" or \"right\" (of the line {a}→{b}), got {_describe(side)}")
+        A, B = points[a], points[b]
+        d = abs(B - A)
+        if ra <= 0 or rb <= 0 or d == 0 or ra + rb < d or abs(ra - rb) > d:
+            raise self.fail(
+                f"{field}.distances",
+                f"no triangle has sides {a}{b} = {d:.6g} m, {ra:.6g} m and {rb:.6g} m (each side must be shorter than the other two together)",
+            )
+        x = (ra * ra - rb * rb + d * d) / (2 * d)
+        h = math.sqrt(max(ra * ra - x * x, 0.0))
+        return A + (x + 1j * (h if side == "left" else -h)) * (B - A) / d
+
     def direction(self, value: object, field: str) -> float:
         """The angle [rad] of a direction vector [dx, dy] (bare numbers or lengths, only the ratio counts)."""
         if not (isinstance(value, list) and len(value) == 2):
@@ -574,7 +604,10 @@ class _SceneReader:
         points: dict[str, complex] = {}
         for pname, value in raw_points.items():
             pname = self.name(pname, f"{field}.points", "point")
-            points[pname] = self.point(value, f"{field}.points.{pname}")
+            if isinstance(value, dict) and "distances" in value:
+                points[pname] = self.triangulated(value, points, f"{field}.points.{pname}")
+            else:
+                points[pname] = self.point(value, f"{field}.points.{pname}")
         if name != FRAME and not points:
             raise self.fail(f"{field}.points", "a link needs its points, such as points = { A = [0, 0], B = [0.3, 0] }")
         raw_lines = self.table(table.get("lines", {}), f"{field}.lines")

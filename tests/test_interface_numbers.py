@@ -141,3 +141,16 @@ def test_errors_point_at_the_line_of_their_section_despite_header_comments():
     line = text.splitlines().index("D = 1") + 1
     with pytest.raises(SceneError, match=rf"assembly\.D \(line {line}\)"):
         plans.solve(plans.loads(text))
+
+
+def test_a_ternary_link_by_its_side_lengths():
+    # link 3 of the four-bar as a triangle A B M: |AM| = 0.1 m... given by two distances
+    m = complex(0.1, 0.06)
+    am, bm = abs(m), abs(m - 0.25)
+    text = FOUR_BAR.replace('M = ["100 mm", "60 mm"]', f'M = {{ distances = {{ A = "{am * 1000!r} mm", B = {bm!r} }} }}')
+    assert text != FOUR_BAR
+    assert plans.loads(text).bodies["3"].points["M"] == pytest.approx(m, abs=1e-15)
+    below = plans.loads(text.replace("} }", '}, side = "right" }')).bodies["3"].points["M"]
+    assert below == pytest.approx(m.conjugate(), abs=1e-15)
+    with pytest.raises(SceneError, match=r"link.3.points.M.distances \(line 12\): no triangle has sides AB = 0.25 m"):
+        plans.loads(FOUR_BAR.replace('M = ["100 mm", "60 mm"]', 'M = { distances = { A = "10 mm", B = "20 mm" } }'))
