@@ -117,7 +117,7 @@ EXAMPLES = {
     "solve": "plans solve --example slider-crank\n  plans examples four-bar > my.toml\n  plans solve my.toml --at \"10,25 deg\" --json",
     "sweep": "plans sweep --example four-bar --steps 360 -o four-bar.csv --plot diagrams",
     "draw": "plans draw --example six-bar -o drawings\n  plans draw --example six-bar --positions 12 -o sheets --format png",
-    "handout": "plans handout --example six-bar --positions 12 -o six-bar.pdf --lang sr",
+    "handout": "plans handout --example four-bar --positions 4 -o four-bar.pdf --lang sr",
     "bench": "plans bench --quick -o /tmp/bench",
     "examples": "plans examples\n  plans examples six-bar > my.toml",
 }
@@ -172,6 +172,7 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument("-o", "--output", metavar="FILE", help="CSV file to write (default: standard output)")
     sweep.add_argument("--plot", metavar="DIR", help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) into DIR")
     sweep.add_argument("--components", action="store_true", help="with --plot: x and y components of v and a too")
+    sweep.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="with --plot: format of the diagrams (default svg)")
     sweep.add_argument("--positions", type=_count, metavar="N", help="with --plot: mark N equally spaced positions (those of plans draw --positions N)")
     _language_argument(sweep)
     _warn_argument(sweep)
@@ -195,7 +196,7 @@ def build_parser() -> argparse.ArgumentParser:
     handout = _add_command(commands, "handout", "a printable handout: A4 pages of PDF (or SVG pages)")
     _scene_argument(handout)
     _position_argument(handout, several=True)
-    handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg for SVG pages")
+    handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg / FILE.png for a file per page")
     handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
     _language_argument(handout)
     _scale_arguments(handout)
@@ -397,9 +398,18 @@ def _sweep(args) -> int:
     elif not args.plot:
         sys.stdout.write(text)
     if args.plot:
-        from .drawing.diagrams import write_cycle_diagrams
+        if args.format == "svg":
+            from .drawing.diagrams import write_cycle_diagrams
 
-        for path in write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components):
+            paths = write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components)
+        else:
+            from ._files import replace_all
+            from .drawing.diagrams import draw_cycle_diagrams
+            from .drawing.formats import render
+
+            figures = draw_cycle_diagrams(analytic, marked=marked, lang=args.lang, components=args.components)
+            paths = replace_all({Path(args.plot) / f"{name}.{args.format}": render(fig, args.format) for name, fig in figures})
+        for path in paths:
             print(path)
     return 0
 

@@ -89,3 +89,14 @@ def test_draw_writes_png_through_the_cli(tmp_path, capsys):
     assert png_size(tmp_path / "page.png")[0] > 500
     assert main(["draw", "--example", "ladder", "--positions", "2", "-o", str(tmp_path / "p.png")]) == 2
     assert "give a directory" in capsys.readouterr().err
+
+
+def test_handout_pages_and_cycle_diagrams_as_png(tmp_path, capsys):
+    assert main(["handout", "--example", "ladder", "-o", str(tmp_path / "h.png")]) == 0
+    pages = sorted(p.name for p in tmp_path.glob("h*.png"))
+    assert pages[0] == "h-2.png" and "h.png" in pages
+    assert all((tmp_path / p).read_bytes().startswith(PNG) for p in pages)
+    assert main(["sweep", "--example", "wedge", "--steps", "12", "-o", str(tmp_path / "w.csv"),
+                 "--plot", str(tmp_path / "d"), "--format", "png"]) == 0
+    assert sorted(p.name for p in (tmp_path / "d").iterdir()) == ["links.png", "points.png", "sliders.png"]
+    assert all(p.read_bytes().startswith(PNG) for p in (tmp_path / "d").iterdir())
