@@ -115,7 +115,8 @@ def compare(analytic, graphical, position: int = 0) -> list[Comparison]:
     rows = []
     for section, name, quantity, a, g in pairs:
         error = abs(g - a)
-        reference = max(abs(a), ZERO_FRACTION * largest[_KIND[quantity]])
+        top = largest[_KIND[quantity]]
+        reference = abs(a) if abs(a) >= ZERO_FRACTION * top else top  # (nearly) zero: against the largest of its kind
         rel = error / reference if reference > 0 else 0.0
         rows.append(Comparison(section, name, quantity, a, g, error, rel))
     return rows

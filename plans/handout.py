@@ -453,8 +453,8 @@ def write_handout(
 
     path = Path(path)
     suffix = path.suffix.lower()
-    if suffix not in (".pdf", ".svg"):
-        raise HandoutError(f"{path}: a handout is written as .pdf (or .svg, one file per page), not {path.suffix or 'a file without a suffix'}")
+    if suffix not in (".pdf", ".svg", ".png"):
+        raise HandoutError(f"{path}: a handout is written as .pdf (or .svg or .png, one file per page), not {path.suffix or 'a file without a suffix'}")
     try:
         check_language(lang)
     except ValueError as exc:
@@ -467,7 +467,12 @@ def write_handout(
     contents = {}
     for number, (_, fig) in enumerate(pages, start=1):
         target = path if number == 1 else path.with_name(f"{path.stem}-{number}{path.suffix}")
-        contents[target] = render_svg(fig)
+        if suffix == ".png":
+            from .drawing.formats import render_png
+
+            contents[target] = render_png(fig)
+        else:
+            contents[target] = render_svg(fig)
     return replace_all(contents)
 
 

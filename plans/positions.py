@@ -331,15 +331,16 @@ class PositionRun:
         return render_svg(self.figure()).decode("utf-8")
 
     def plot(self, ax=None):
-        """Draw the mechanism at this position into *ax* (a new figure when None); returns the artists."""
+        """Draw the mechanism at this position into *ax* (a new figure when None); returns the Axes."""
         if not self.ok:
             raise self.error
         from .drawing import draw_mechanism
 
-        return draw_mechanism(self.graphical, ax)
+        artists = draw_mechanism(self.graphical, ax)
+        return ax if ax is not None else artists[0].axes
 
     def save(self, path, *, lang: str = "en") -> Path:
-        """Write the position's sheet to *path* (``.svg`` or ``.pdf``), atomically."""
+        """Write the position's sheet to *path* (``.svg``, ``.pdf`` or ``.png``, by its suffix), atomically."""
         if not self.ok:
             raise self.error
         from .drawing.sheets import save_figure
@@ -400,13 +401,14 @@ class PositionsRun:
         return Diagrams(self.cycle, marked=self.positions, lang=lang, components=components)
 
     def plot(self, ax=None, *, lang: str = "en"):
-        """Draw the plan of positions into *ax* (a new figure when None); returns the artists."""
+        """Draw the plan of positions into *ax* (a new figure when None); returns the Axes."""
         from .drawing.positions_plan import draw_positions_plan
 
-        return draw_positions_plan(self, ax, lang=lang)
+        artists = draw_positions_plan(self, ax, lang=lang)
+        return ax if ax is not None else artists[0].axes
 
     def save(self, path, *, lang: str = "en") -> Path:
-        """Write the plan of positions to *path* (``.svg`` or ``.pdf``)."""
+        """Write the plan of positions to *path* (``.svg``, ``.pdf`` or ``.png``, by its suffix)."""
         from .drawing.positions_plan import draw_positions_plan
         from .drawing.sheets import save_figure
 
@@ -417,8 +419,8 @@ class Diagrams:
     """Cycle diagrams of an analytic sweep, for notebooks and scripts.
 
     Displays itself inline (every page of :func:`plans.drawing.diagrams.draw_cycle_diagrams`);
-    ``plot(quantity, ax)`` draws one diagram into an Axes; ``save(directory)``
-    writes the SVG pages.
+    ``plot(quantity, ax)`` draws one diagram into an Axes; ``save(path)``
+    writes them to one file (or a file a page) in the format of the path's suffix.
 
     >>> import numpy as np, plans
     >>> scene = plans.load(plans.example_path("four-bar"))
@@ -439,16 +441,18 @@ class Diagrams:
         return draw_cycle_diagrams(self.analytic, marked=self.marked, lang=self.lang, components=self.components)
 
     def plot(self, quantity: str = "omega", ax=None):
-        """One diagram (``"omega"``, ``"v"``, ``"coriolis"`` …) into *ax*; returns the curves."""
+        """One diagram (``"omega"``, ``"v"``, ``"coriolis"`` …) into *ax* (a new figure when None); returns the Axes."""
         from .drawing.diagrams import plot_cycle
 
-        return plot_cycle(self.analytic, quantity, ax, marked=self.marked, lang=self.lang)
+        curves = plot_cycle(self.analytic, quantity, ax, marked=self.marked, lang=self.lang)
+        return ax if ax is not None else curves[0].axes
 
-    def save(self, directory) -> list[Path]:
-        """Write ``links.svg``, ``points.svg`` (and ``sliders.svg``) into *directory*."""
-        from .drawing.diagrams import write_cycle_diagrams
+    def save(self, path) -> list[Path]:
+        """Write the diagrams to *path* in the format its suffix names (see :func:`plans.drawing.formats.save_pages`):
+        ``diagrams.pdf`` a page each, ``diagrams.svg`` / ``.png`` as ``diagrams-links.svg``, ``diagrams-points.svg`` …"""
+        from .drawing.formats import save_pages
 
-        return write_cycle_diagrams(self.analytic, directory, marked=self.marked, lang=self.lang, components=self.components)
+        return save_pages(self.figures(), path)
 
     def _repr_html_(self) -> str:
         from .drawing.svg import render_svg

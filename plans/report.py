@@ -18,16 +18,22 @@ from .errors import PlansError
 from .limits import expected_rel_error
 from .scene import Crank, Scene
 from .sweep import sweep_csv
+from .structure import branches
 
 __all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table"]
 
 SCHEMA_VERSION = 1
 
 
-def _clean(x: float) -> float:
-    """Floats for output: -0.0 becomes 0.0."""
+#: A value at most this fraction of its quantity's scale (the largest value of that kind at
+#: the same position: lengths, velocities, accelerations, ω, ε) is round-off and reported as 0.
+ROUNDOFF = 1e-12
+
+
+def _clean(x: float, scale: float = 0.0) -> float:
+    """Floats for output: -0.0 becomes 0.0, and so does round-off far below *scale* (:data:`ROUNDOFF`)."""
     x = float(x)
-    return 0.0 if x == 0 else x
+    return 0.0 if x == 0 or abs(x) <= ROUNDOFF * scale else x
 
 
 def _sine(x: float) -> float:
@@ -40,14 +46,50 @@ def _condition(x: float) -> float:
     return max(_clean(x), 1.0)
 
 
-def _vec(z: complex) -> list[float]:
-    return [_clean(z.real), _clean(z.imag)]
+def _vec(z: complex, scale: float = 0.0) -> list[float]:
+    z = complex(z)
+    return [_clean(z.real, scale), _clean(z.imag, scale)]
 
 
 def _deg(phi: float) -> float:
-    """An angle in degrees in (−180, 180]."""
-    d = math.degrees(math.remainder(phi, 2 * math.pi))
-    return 180.0 if d == -180.0 else _clean(d)
+    """An angle [rad] in degrees in [0, 360), as the courses write angles.
+
+    The round-off of the conversion is removed: an angle given as 30° comes
+    back as 30, not 29.999999999999996 (a result within a few units in the
+    last place of a value with 12 significant digits is that value), and an
+    angle within 360·:data:`ROUNDOFF` of a full turn is 0.
+    """
+    d = math.degrees(float(phi)) % 360.0
+    short = float(f"{d:.12g}")
+    if abs(short - d) <= 8 * math.ulp(d):
+        d = short
+    if d <= 360.0 * ROUNDOFF or 360.0 - d <= 360.0 * ROUNDOFF:
+        return 0.0
+    return d
+
+
+def _scales(analytic, k: int) -> dict[str, float]:
+    """The scale of each kind of quantity at position k: the largest magnitude of that kind (for :func:`_clean`)."""
+    def largest(values):
+        finite = [abs(complex(v)) for v in values if math.isfinite(abs(complex(v)))]
+        return max(finite, default=0.0)
+
+    points = analytic.points.values()
+    sliders = analytic.sliders.values()
+    links = analytic.links.values()
+    acc = analytic.scene.accelerations
+    return {
+        "length": largest([m.r[k] for m in points] + [m.s[k] for m in sliders]),
+        "velocity": largest([m.v[k] for m in points] + [m.v_rel[k] for m in sliders]),
+        "acceleration": largest([m.a[k] for m in points] + [m.a_rel[k] for m in sliders] + [m.coriolis[k] for m in sliders]) if acc else 0.0,
+        "omega": largest([m.omega[k] for m in links]),
+        "epsilon": largest([m.epsilon[k] for m in links]) if acc else 0.0,
+    }
+
+
+#: The kind of each compared quantity, for its scale.
+_KIND = {"r": "length", "s": "length", "v": "velocity", "v_rel": "velocity", "a": "acceleration",
+         "a_rel": "acceleration", "coriolis": "acceleration", "omega": "omega", "epsilon": "epsilon"}
 
 
 def check_finite(analytic, graphical=None, comparisons: list[Comparison] | None = None, position: int = 0) -> None:
@@ -116,7 +158,7 @@ def _driver_words(scene: Scene) -> str:
     d = scene.driver
     if isinstance(d, Crank):
         return (
-            f"crank {d.link} about {d.pivot}: φ = {math.degrees(d.phi):.3f}°, "
+            f"crank {d.link} about {d.pivot}: φ = {_deg(d.phi):.3f}°, "
             f"ω = {d.omega:.6g} rad/s, ε = {d.epsilon:.6g} rad/s²"
         )
     return (
@@ -132,7 +174,7 @@ def _graphical_lookup(comparisons: list[Comparison] | None):
     return table
 
 
-def _graphical_entry(rows: dict, section: str, name: str, accelerations: bool) -> dict:
+def _graphical_entry(rows: dict, section: str, name: str, accelerations: bool, scales: dict) -> dict:
     """The ``"graphical"`` entry of one point, link or slider: each compared value with its errors."""
     entry: dict = {}
     for quantity, needs_accelerations in QUANTITIES[section]:
@@ -140,7 +182,8 @@ def _graphical_entry(rows: dict, section: str, name: str, accelerations: bool) -
         if row is None or (needs_accelerations and not accelerations):
             continue
         value = row.graphical
-        entry[quantity] = _vec(value) if isinstance(value, complex) else _clean(value)
+        scale = scales[_KIND[quantity]]
+        entry[quantity] = _vec(value, scale) if isinstance(value, complex) else _clean(value, scale)
         entry[f"{quantity}_abs_error"] = _clean(row.abs_error)
         entry[f"{quantity}_rel_error"] = _clean(row.rel_error)
     return entry
@@ -165,6 +208,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
     k = position
     acc = scene.accelerations
     rows = _graphical_lookup(comparisons)
+    sc = _scales(analytic, k)
     doc: dict = {
         "schema": SCHEMA_VERSION,
         "title": scene.title,
@@ -179,30 +223,31 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
     }
     for name in scene.report:
         motion = analytic.points[name]
-        entry = {"analytic": {"r": _vec(motion.r[k]), "v": _vec(motion.v[k])}}
+        entry = {"analytic": {"r": _vec(motion.r[k], sc["length"]), "v": _vec(motion.v[k], sc["velocity"])}}
         if acc:
-            entry["analytic"]["a"] = _vec(motion.a[k])
+            entry["analytic"]["a"] = _vec(motion.a[k], sc["acceleration"])
         if graphical is not None:
-            entry["graphical"] = _graphical_entry(rows, "points", name, acc)
+            entry["graphical"] = _graphical_entry(rows, "points", name, acc, sc)
         doc["points"][name] = entry
     for name in scene.links:
         motion = analytic.links[name]
-        entry = {"analytic": {"phi_deg": _deg(motion.phi[k]), "omega": _clean(motion.omega[k])}}
+        entry = {"analytic": {"phi_deg": _deg(motion.phi[k]), "omega": _clean(motion.omega[k], sc["omega"])}}
         if acc:
-            entry["analytic"]["epsilon"] = _clean(motion.epsilon[k])
+            entry["analytic"]["epsilon"] = _clean(motion.epsilon[k], sc["epsilon"])
         if graphical is not None and name in graphical.links:
-            entry["graphical"] = _graphical_entry(rows, "links", name, acc)
+            entry["graphical"] = _graphical_entry(rows, "links", name, acc, sc)
         doc["links"][name] = entry
     for prismatic in scene.prismatics:
         name = prismatic.name
         motion = analytic.sliders[name]
-        entry = {"analytic": {"s": _clean(motion.s[k]), "v_rel": _clean(motion.v_rel[k])}}
+        entry = {"analytic": {"s": _clean(motion.s[k], sc["length"]), "v_rel": _clean(motion.v_rel[k], sc["velocity"])}}
         if acc:
-            entry["analytic"]["a_rel"] = _clean(motion.a_rel[k])
-            entry["analytic"]["coriolis"] = _vec(motion.coriolis[k])
+            entry["analytic"]["a_rel"] = _clean(motion.a_rel[k], sc["acceleration"])
+            entry["analytic"]["coriolis"] = _vec(motion.coriolis[k], sc["acceleration"])
         if graphical is not None and name in graphical.sliders:
-            entry["graphical"] = _graphical_entry(rows, "sliders", name, acc)
+            entry["graphical"] = _graphical_entry(rows, "sliders", name, acc, sc)
         doc["sliders"][name] = entry
+    branch_of = {b.group: b for b in branches(analytic, k)}
     for group in analytic.structure.groups:
         condition = _condition(analytic.conditions[group.name][k])
         entry = {"kind": group.kind, "links": list(group.links), "joint": group.joint,
@@ -215,6 +260,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
                 entry["graphical_condition"] = _condition(graphical.conditions[group.name])
         else:
             entry["sine"] = entry["analytic_sine"]
+        entry["branch"] = branch_of[group.name].as_dict()
         doc["groups"][group.name] = entry
     position_value = float(analytic.driver[k])
     warnings = [w for w in analytic.warnings if w.position == position_value]
@@ -236,20 +282,20 @@ def format_json(doc: dict) -> str:
 # --- text table --------------------------------------------------------------
 
 
-def _vector_cells(z: complex) -> list[str]:
-    z = complex(_clean(z.real), _clean(z.imag))
+def _vector_cells(z: complex, scale: float = 0.0) -> list[str]:
+    z = complex(*_vec(z, scale))
     magnitude = abs(z)
-    direction = f"{math.degrees(cmath.phase(z)):9.3f}" if magnitude > 0 else "        —"
+    direction = f"{_deg(cmath.phase(z)):9.3f}" if magnitude > 0 else "        —"
     return [f"{z.real:13.6g}", f"{z.imag:13.6g}", f"{magnitude:13.6g}", direction]
 
 
-def _slider_words(travel: float, v_rel: float, accelerations: tuple | None) -> str:
+def _slider_words(travel: float, v_rel: float, accelerations: tuple | None, sc: dict) -> str:
     """``s = …, v_rel = …[, a_rel = …, Coriolis = (x, y) |magnitude|]`` of one slider."""
-    words = f"s = {travel:.6g}, v_rel = {v_rel:.6g}"
+    words = f"s = {_clean(travel, sc['length']):.6g}, v_rel = {_clean(v_rel, sc['velocity']):.6g}"
     if accelerations is not None:
         a_rel, coriolis = accelerations
-        c = complex(*_vec(complex(coriolis)))
-        words += f", a_rel = {a_rel:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|"
+        c = complex(*_vec(complex(coriolis), sc["acceleration"]))
+        words += f", a_rel = {_clean(a_rel, sc['acceleration']):.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|"
     return words
 
 
@@ -266,6 +312,7 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
     k = position
     acc = scene.accelerations
     rows = _graphical_lookup(comparisons)
+    sc = _scales(analytic, k)
     out = io.StringIO()
     w = out.write
     w(f"{scene.title}\n")
@@ -285,24 +332,24 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
         quantities = [("r", motion.r[k]), ("v", motion.v[k])] + ([("a", motion.a[k])] if acc else [])
         for index, (q, value) in enumerate(quantities):
             label = name if index == 0 else ""
-            w(f"{label:6} {q:3} {'analytic':9} " + " ".join(_vector_cells(complex(value))) + "\n")
+            w(f"{label:6} {q:3} {'analytic':9} " + " ".join(_vector_cells(complex(value), sc[_KIND[q]])) + "\n")
             row = rows.get(("points", name, q))
             if row is not None:
-                w(f"{'':6} {'':3} {'graphical':9} " + " ".join(_vector_cells(complex(row.graphical)))
+                w(f"{'':6} {'':3} {'graphical':9} " + " ".join(_vector_cells(complex(row.graphical), sc[_KIND[q]]))
                   + " " + " ".join(_error_cells(row)) + "\n")
     w("\nLinks   φ [°], ω [rad/s], ε [rad/s²]; counter-clockwise positive\n")
     w(f"{'link':6} {'method':9} {'φ [°]':>11} {'ω':>13} " + (f"{'ε':>13}" if acc else "") + "\n")
     for name in scene.links:
         motion = analytic.links[name]
-        line = f"{name:6} {'analytic':9} {_deg(motion.phi[k]):11.4f} {motion.omega[k]:13.6g} "
+        line = f"{name:6} {'analytic':9} {_deg(motion.phi[k]):11.4f} {_clean(motion.omega[k], sc['omega']):13.6g} "
         if acc:
-            line += f"{motion.epsilon[k]:13.6g}"
+            line += f"{_clean(motion.epsilon[k], sc['epsilon']):13.6g}"
         w(line.rstrip() + "\n")
         om, ep = rows.get(("links", name, "omega")), rows.get(("links", name, "epsilon"))
         if om is not None:
-            line = f"{'':6} {'graphical':9} {'':11} {om.graphical:13.6g} "
+            line = f"{'':6} {'graphical':9} {'':11} {_clean(om.graphical, sc['omega']):13.6g} "
             if ep is not None:
-                line += f"{ep.graphical:13.6g}"
+                line += f"{_clean(ep.graphical, sc['epsilon']):13.6g}"
             w(line.rstrip() + "\n")
             errors = [f"ω {om.abs_error:.2e} ({om.rel_error:.1e} rel)"]
             if ep is not None:
@@ -316,14 +363,15 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
             what = f"{prismatic.slider}.{prismatic.slider_line} on {prismatic.guide}.{prismatic.guide_line}"
             w(f"{name} ({what})\n")
             accelerations = (motion.a_rel[k], motion.coriolis[k]) if acc else None
-            w(f"  analytic   {_slider_words(motion.s[k], motion.v_rel[k], accelerations)}\n")
+            w(f"  analytic   {_slider_words(motion.s[k], motion.v_rel[k], accelerations, sc)}\n")
             vr = rows.get(("sliders", name, "v_rel"))
             if vr is not None:
                 sr, ar, co = (rows.get(("sliders", name, q)) for q in ("s", "a_rel", "coriolis"))
                 accelerations = (ar.graphical, co.graphical) if ar is not None else None
                 worst = max((r for r in (sr, vr, ar, co) if r is not None), key=lambda r: r.rel_error)
-                w(f"  graphical  {_slider_words(sr.graphical, vr.graphical, accelerations)}"
+                w(f"  graphical  {_slider_words(sr.graphical, vr.graphical, accelerations, sc)}"
                   f"   (largest rel err {worst.rel_error:.1e})\n")
+    branch_of = {b.group: b for b in branches(analytic, k)}
     w("\nGroups   condition number of the analytic 2×2 system; |sin| between the construction lines; "
       "expected relative error of v, a (4·ε_mach·condition²)\n")
     for group in analytic.structure.groups:
@@ -333,11 +381,20 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
         line = (f"{group.name:12} joint {group.joint:4} condition {condition:10.4g}   sine {sine_text}"
                 f"   expected rel. error {expected_rel_error(condition):.1e}")
         w(line + "\n")
+        w(f"{'':12} {_branch_words(branch_of[group.name])}\n")
     if comparisons:
         worst = max(comparisons, key=lambda r: r.rel_error)
         w(f"\nlargest relative difference graphical vs analytic: {worst.rel_error:.2e} "
           f"({worst.section[:-1]} {worst.name}, {worst.quantity})\n")
     return out.getvalue()
+
+
+def _branch_words(branch) -> str:
+    """``branch +1: C to the left of B→D (default (+1); another assembly exists there)``."""
+    if branch.sign == 0:
+        return "branch: one assembly only"
+    other = "another assembly exists there" if branch.other_assembly else "no other assembly there (dead centre)"
+    return f"branch {branch.sign:+d}: {branch.words} (chosen by {branch.chosen_by}; {other})"
 
 
 # --- sweep CSV -----------------------------------------------------------------
@@ -354,7 +411,7 @@ _SYMBOL = {"v": "v", "a": "a", "omega": "ω", "epsilon": "ε", "v_rel": "v_rel",
 
 def _magnitude(value) -> str:
     if isinstance(value, complex):
-        return f"{abs(value):.4g} ∠ {math.degrees(cmath.phase(value)):.1f}°" if value != 0 else "0"
+        return f"{abs(value):.4g} ∠ {_deg(cmath.phase(value)):.1f}°" if value != 0 else "0"
     return f"{value:.4g}"
 
 

@@ -213,6 +213,12 @@ class Scene:
     report: tuple[str, ...]
     scales: Scales
     source: str = "<scene>"
+    #: Line numbers of keys in the scene file, such as ``{"assembly.C": 31}``,
+    #: for messages about them found after loading.
+    key_lines: dict[str, int] = field(default_factory=dict, compare=False, repr=False)
+    #: Advice for errors found after loading: a bare length (metres) far larger than the
+    #: scene's other lengths, written by someone who meant millimetres.
+    notes: tuple[str, ...] = field(default=(), compare=False, repr=False)
 
     # --- derived views, for solvers and drawings -----------------------------
 
@@ -393,7 +399,7 @@ def from_mapping(data: dict, source: str = "<scene>") -> Scene:
 _TOP_KEYS = ("title", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales")
 _BODY_KEYS = ("points", "lines")
 _LINE_KEYS = ("through", "angle", "direction")
-_SLIDER_KEYS = ("pin", "on", "name")
+_SLIDER_KEYS = ("pin", "on", "name", "points")
 _PRISMATIC_KEYS = ("line", "on", "name")
 _CRANK_KEYS = ("crank", "pivot", "angle", "omega", "epsilon")
 _LINEAR_KEYS = ("slider", "on", "point", "position", "velocity", "acceleration", "stroke")
@@ -417,6 +423,27 @@ class _SceneReader:
         self.data = data
         self.source = source
         self.text = text
+        self.lengths: list[tuple[str, object, float]] = []  # (field, as written, m) of every length read
+
+    #: A bare length this many times the median of the scene's lengths is implausible.
+    IMPLAUSIBLE = 20.0
+
+    def length_notes(self) -> tuple[str, ...]:
+        """Bare lengths (metres) implausibly large next to the others: the hint that bare lengths are metres."""
+        sizes = sorted(abs(m) for _, _, m in self.lengths if m != 0)
+        if not sizes:
+            return ()
+        median = sizes[len(sizes) // 2]
+        notes = []
+        for field, written, metres in self.lengths:
+            if isinstance(written, (int, float)) and not isinstance(written, bool) and abs(metres) >= 1 and abs(metres) >= self.IMPLAUSIBLE * median:
+                line = self._line_of(field)
+                where = f"{field} (line {line})" if line else field
+                notes.append(
+                    f"bare lengths are metres: {where} = {written:g} is {abs(metres):g} m, next to lengths of about "
+                    f"{median:.3g} m in the rest of the scene; write \"{written:g} mm\" if millimetres were meant"
+                )
+        return tuple(notes[:1])
 
     # -- helpers ---------------------------------------------------------------
 
@@ -426,25 +453,49 @@ class _SceneReader:
         return SceneError(message, self.source, where)
 
     def _line_of(self, field: str) -> int | None:
-        """Best-effort line number of a key path in the TOML text."""
-        parts = field.split(".")
+        """Line number of a key path in the TOML text (best effort).
+
+        The key is looked for inside its own section: the ``[link.3]`` header
+        (trailing comments allowed), the k-th ``[[slider]]`` for ``slider.k``,
+        up to the next header; a key path no header names (a point inside an
+        inline table) is looked for from its nearest enclosing header.
+        """
+        parts = re.sub(r"\[\d+\]", "", field).split(".")
         lines = self.text.splitlines()
-        for depth in range(len(parts), 0, -1):
-            key = parts[depth - 1]
-            if key.isdigit() and depth >= 2 and parts[depth - 2] in ("slider", "prismatic"):
+        headers: list[tuple[int, str]] = []
+        counts: dict[str, int] = {}
+        for i, text in enumerate(lines):
+            code = text.split("#", 1)[0].strip()
+            if code.startswith("[[") and code.endswith("]]"):
+                name = code[2:-2].strip()
+                headers.append((i, f"{name}.{counts.get(name, 0)}"))
+                counts[name] = counts.get(name, 0) + 1
+            elif code.startswith("[") and code.endswith("]"):
+                headers.append((i, code[1:-1].strip()))
+        # the longest prefix of the key path that a header names
+        section, depth = None, 0
+        for k in range(len(parts), 0, -1):
+            prefix = ".".join(parts[:k])
+            match = [(i, h) for i, h in headers if h.replace('"', "") == prefix]
+            if match:
+                section, depth = match[0][0], k
+                break
+        if section is None:
+            first, last = 0, (headers[0][0] if headers else len(lines))
+        else:
+            first = section
+            later = [i for i, _ in headers if i > section]
+            last = later[0] if later else len(lines)
+            if depth == len(parts):
+                return section + 1
+        for key in reversed(parts[depth:]):
+            if key.isdigit():
                 continue
             pattern = re.compile(rf'(^|[\s{{,.\[])"?{re.escape(key)}"?\s*(=|\]|\.)')
-            header = ".".join(parts[: depth - 1])
-            start = 0
-            if header:
-                for i, text in enumerate(lines):
-                    if text.strip().strip("[]").strip() == header:
-                        start = i
-                        break
-            for i in range(start, len(lines)):
+            for i in range(first, last):
                 if pattern.search(lines[i].split("#", 1)[0]):
                     return i + 1
-        return None
+        return section + 1 if section is not None else None
 
     def check_keys(self, table: dict, allowed: tuple[str, ...], field: str) -> None:
         for key in table:
@@ -464,6 +515,8 @@ class _SceneReader:
             number = parse_quantity(value, kind)
         except UnitError as exc:
             raise self.fail(field, str(exc)) from None
+        if kind == "length" and field.split(".")[0] in ("frame", "link", "slider"):
+            self.lengths.append((field, value, number))
         if abs(number) > MAX_MAGNITUDE:
             unit = _SI_UNITS[kind]
             raise self.fail(
@@ -474,11 +527,53 @@ class _SceneReader:
         return number
 
     def point(self, value: object, field: str) -> complex:
+        if isinstance(value, dict) and set(value) == {"r", "angle"}:  # polar: a length at an angle
+            r = self.quantity(value["r"], "length", f"{field}.r")
+            angle = self.quantity(value["angle"], "angle", f"{field}.angle")
+            if r < 0:
+                raise self.fail(f"{field}.r", f"a distance r is not negative (got {value['r']!r}); turn the angle by 180° instead")
+            return complex(r * math.cos(angle), r * math.sin(angle))
+        if isinstance(value, dict):
+            raise self.fail(
+                field,
+                "expected coordinates [x, y] in m (or [\"300 mm\", 0]), or a length at an angle "
+                f"{{ r = \"260 mm\", angle = \"50 deg\" }}; got a table with keys {', '.join(map(str, value)) or 'none'}",
+            )
         if not (isinstance(value, list) and len(value) == 2):
-            raise self.fail(field, f"expected coordinates [x, y] in m (or [\"300 mm\", 0]), got {_describe(value)}")
+            raise self.fail(field, f"expected coordinates [x, y] in m (or [\"300 mm\", 0]), or {{ r = \"260 mm\", angle = \"50 deg\" }}; got {_describe(value)}")
         x = self.quantity(value[0], "length", f"{field}[0]")
         y = self.quantity(value[1], "length", f"{field}[1]")
         return complex(x, y)
+
+    def triangulated(self, value: dict, points: dict[str, complex], field: str) -> complex:
+        """A point given by its distances from two points listed before it on the same body.
+
+        ``C = { distances = { A = "600 mm", B = "150 mm" } }``: the corner of the
+        triangle ABC, to the left of A→B (``side = "right"`` for the other one).
+        """
+        self.check_keys(value, ("distances", "side"), field)
+        raw = self.table(value["distances"], f"{field}.distances")
+        if len(raw) != 2:
+            raise self.fail(f"{field}.distances", "give the distances from two points, such as distances = { A = \"600 mm\", B = \"150 mm\" }")
+        (a, ra), (b, rb) = raw.items()
+        for name in (a, b):
+            if name not in points:
+                raise self.fail(f"{field}.distances.{name}", f"{name} is not a point listed before it on this body{_suggest(name, points)}")
+        ra = self.quantity(ra, "length", f"{field}.distances.{a}")
+        rb = self.quantity(rb, "length", f"{field}.distances.{b}")
+        side = value.get("side", "left")
+        if side not in ("left", "right"):
+            raise self.fail(f"{field}.side", f"expected \"left\" or \"right\" (of the line {a}→{b}), got {_describe(side)}")
+        A, B = points[a], points[b]
+        d = abs(B - A)
+        if ra <= 0 or rb <= 0 or d == 0 or ra + rb < d or abs(ra - rb) > d:
+            raise self.fail(
+                f"{field}.distances",
+                f"no triangle has sides {a}{b} = {d:.6g} m, {ra:.6g} m and {rb:.6g} m (each side must be shorter than the other two together)",
+            )
+        x = (ra * ra - rb * rb + d * d) / (2 * d)
+        h = math.sqrt(max(ra * ra - x * x, 0.0))
+        return A + (x + 1j * (h if side == "left" else -h)) * (B - A) / d
 
     def direction(self, value: object, field: str) -> float:
         """The angle [rad] of a direction vector [dx, dy] (bare numbers or lengths, only the ratio counts)."""
@@ -533,7 +628,7 @@ class _SceneReader:
         for k, table in enumerate(extra):
             prismatics.append(self.prismatic(k, self.table(table, f"prismatic.{k}"), bodies))
         for k, prismatic in enumerate(prismatics[: len(sliders)]):
-            (pin,) = bodies[prismatic.slider].points
+            pin = prismatic.name
             if sum(pin in body.points for body in bodies.values()) < 2:
                 raise self.fail(
                     f"slider.{k}.pin",
@@ -567,6 +662,8 @@ class _SceneReader:
             report=report,
             scales=scales,
             source=self.source,
+            notes=self.length_notes(),
+            key_lines={f"assembly.{name}": self._line_of(f"assembly.{name}") for name in assembly if self._line_of(f"assembly.{name}")},
         )
 
     def body(self, name: str, table: dict, field: str) -> Body:
@@ -575,7 +672,10 @@ class _SceneReader:
         points: dict[str, complex] = {}
         for pname, value in raw_points.items():
             pname = self.name(pname, f"{field}.points", "point")
-            points[pname] = self.point(value, f"{field}.points.{pname}")
+            if isinstance(value, dict) and "distances" in value:
+                points[pname] = self.triangulated(value, points, f"{field}.points.{pname}")
+            else:
+                points[pname] = self.point(value, f"{field}.points.{pname}")
         if name != FRAME and not points:
             raise self.fail(f"{field}.points", "a link needs its points, such as points = { A = [0, 0], B = [0.3, 0] }")
         raw_lines = self.table(table.get("lines", {}), f"{field}.lines")
@@ -630,9 +730,33 @@ class _SceneReader:
         if pin in bodies[guide].points:
             raise self.fail(f"{field}.pin", f"the block is pinned at {pin}, which is a point of its own guide's {body_words(guide)}: it could not slide")
         name = self.name(table.get("name", self.next_link_name(bodies)), f"{field}.name", "link")
+        own: dict[str, complex] = {}
+        if "points" in table:  # points of the block's own: its pin at (0, 0), its x axis along the guide
+            for pname, value in self.table(table["points"], f"{field}.points").items():
+                pname = self.name(pname, f"{field}.points", "point")
+                if pname == pin:
+                    raise self.fail(f"{field}.points.{pname}", f"the pin {pin} is the block's own (0, 0); list only its other points")
+                own[pname] = self.point(value, f"{field}.points.{pname}")
         if name in bodies:
-            raise self.fail(f"{field}.name", f"there is already a link named {name!r}")
-        bodies[name] = Body(name, {pin: 0j}, {"guide": Line(name, "guide", 0j, 0.0, pin)}, block=True)
+            body = bodies[name]
+            if body.block or name == FRAME:
+                raise self.fail(f"{field}.name", f"there is already a block named {name!r}")
+            if pin not in body.points or not any(pin in b.points for n, b in bodies.items() if n != name):
+                raise self.fail(
+                    f"{field}.name",
+                    f"there is already a link named {name!r}; to make it the block, give it the pin {pin} among its "
+                    "points, pinned to another link or the frame there (the block's guide then runs through the pin "
+                    "along the link's own x axis), or name the block otherwise",
+                )
+            if own:
+                raise self.fail(f"{field}.points", f"link {name} lists its points under [link.{name}]; give them there")
+            if "guide" in body.lines:
+                raise self.fail(f"{field}.name", f"link {name} already has a line named 'guide'; rename it")
+            lines = dict(body.lines)
+            lines["guide"] = Line(name, "guide", body.points[pin], 0.0, pin)
+            bodies[name] = Body(name, body.points, lines, block=True)
+        else:
+            bodies[name] = Body(name, {pin: 0j, **own}, {"guide": Line(name, "guide", 0j, 0.0, pin)}, block=True)
         return Prismatic(pin, name, "guide", guide, guide_line)
 
     def prismatic(self, k: int, table: dict, bodies: dict[str, Body]) -> Prismatic:

@@ -158,6 +158,15 @@ class AnalyticSolution:
     def __len__(self) -> int:
         return len(self.driver)
 
+    @property
+    def branches(self):
+        """The assembly branch of each group at the first position, as :class:`plans.structure.Branch`
+        records (sign, words such as ``"C to the left of B→D"``, whether another assembly exists);
+        ``solution.at(k).branches`` for position k.  See :func:`plans.structure.branches`."""
+        from ..structure import branches
+
+        return branches(self)
+
     def motion_of(self, body: str, z: complex) -> PointMotion:
         """Motion of the point with own coordinates z [m] of a body.
 

@@ -626,11 +626,11 @@ def _branch_sign(scene: Scene, group: Group, here: dict[str, BodyState], asked_h
         return 1
     hints = _hint_points(scene, group)
     if not hints:
-        return 1
+        return group.orientation  # +1 in the order of the group's name (Group.orientation)
     name = hints[0]
     hint = scene.assembly[name]
     if isinstance(hint, int):
-        return 1 if hint > 0 else -1
+        return (1 if hint > 0 else -1) * group.orientation
     owner = group.links[0] if name in scene.bodies[group.links[0]].points else group.links[1]
     distance = {}
     for sign in (1, -1):

@@ -91,16 +91,11 @@ def render_pdf(figures) -> bytes:
 
 
 def save_figure(fig, path) -> Path:
-    """Write one figure to *path*: SVG (true to scale) or PDF by the suffix, atomically."""
+    """Write one figure to *path*: SVG (true to scale), PDF or PNG by the suffix, atomically."""
+    from .formats import format_of, render
+
     path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix == ".svg":
-        data = render_svg(fig)
-    elif suffix == ".pdf":
-        data = render_pdf([fig])
-    else:
-        raise ValueError(f"{path}: write a drawing as .svg or .pdf, not {path.suffix or 'without a suffix'}")
-    return replace_all({path: data})[0]  # creates the directory
+    return replace_all({path: render(fig, format_of(path))})[0]  # creates the directory
 
 
 # --- plans draw --positions -----------------------------------------------------------
@@ -123,7 +118,7 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
     )
 
 
-def write_position_sheets(positions_run, directory, *, lang: str = "en") -> list[Path]:
+def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg") -> list[Path]:
     """Write ``sheet-00.svg``, ``sheet-01.svg``, … and ``positions.svg`` (the plan of positions).
 
     Every sheet uses the run's common scale factors.  A position that cannot
@@ -145,6 +140,8 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en") -> list
     """
     from .positions_plan import draw_positions_plan
 
+    from .formats import render
+
     directory = Path(directory)
     total = len(positions_run.runs)
     width = max(2, len(str(total - 1)))
@@ -153,8 +150,10 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en") -> list
         if not run.ok:
             continue
         fig = draw_position_sheet(run, lang=lang, total=total)
-        contents[directory / f"sheet-{run.index:0{width}d}.svg"] = render_svg(fig)
-    contents[directory / "positions.svg"] = render_svg(draw_positions_plan(positions_run, lang=lang)[0].figure)
+        contents[directory / f"sheet-{run.index:0{width}d}.{format}"] = render(fig, format)
+    contents[directory / f"positions.{format}"] = render(draw_positions_plan(positions_run, lang=lang)[0].figure, format)
+    if format != "svg":  # the record of what plans wrote is an SVG comment: other formats remove nothing
+        return replace_all(contents)
     # sheets of an earlier run with more positions go if plans wrote them (positions.svg records them)
     return replace_all(contents, stale=(directory, r"sheet-\d+\.svg", "positions.svg"))
 

@@ -343,11 +343,11 @@ def _branch(scene: Scene, structure: Structure, group: Group, candidates, ctx: C
     if len(candidates) == 1:
         return candidates[0]
     hint = _hint(scene, structure, group)
-    if hint is None:
-        return candidates[0]
+    if hint is None:  # +1 in the order of the group's name (Group.orientation)
+        return candidates[0] if group.orientation > 0 else candidates[1]
     name, value = hint
     if isinstance(value, int):
-        return candidates[0] if value > 0 else candidates[1]
+        return candidates[0] if value * group.orientation > 0 else candidates[1]
     body = next(b for b in scene.bodies_with(name) if b in group.links)
     local = scene.bodies[body].points[name]
 

@@ -131,22 +131,23 @@ class Plan:
 
     # --- display (matplotlib is imported only here, on demand) ----------------
 
-    def plot(self, ax=None, *, lang: str = "en") -> list:
-        """Draw the plan into *ax* (one data unit = 1 mm), or into a new true-to-scale figure; returns the artists."""
+    def plot(self, ax=None, *, lang: str = "en"):
+        """Draw the plan into *ax* (one data unit = 1 mm), or into a new true-to-scale figure; returns the Axes."""
         from ..drawing import draw_plan
 
-        return draw_plan(self, ax, lang=lang)
+        artists = draw_plan(self, ax, lang=lang)
+        return ax if ax is not None else artists[0].axes
 
     def save(self, path, *, lang: str = "en"):
-        """Write the plan to *path* (``.svg`` true to scale, or ``.pdf``), atomically; returns the path."""
+        """Write the plan to *path* (``.svg`` true to scale, ``.pdf`` or ``.png``), atomically; returns the path."""
         from ..drawing.sheets import save_figure
 
-        return save_figure(self.plot(lang=lang)[0].figure, path)
+        return save_figure(self.plot(lang=lang).figure, path)
 
     def _repr_svg_(self) -> str:
         from ..drawing.svg import render_svg
 
-        return render_svg(self.plot()[0].figure).decode("utf-8")
+        return render_svg(self.plot().figure).decode("utf-8")
 
 
 @dataclass(frozen=True)
@@ -205,11 +206,12 @@ class GraphicalSolution:
 
     # --- display (matplotlib is imported only here, on demand) ----------------
 
-    def plot(self, ax=None, *, lang: str = "en") -> list:
-        """Draw the mechanism at k_l into *ax*, or into a new true-to-scale figure; returns the artists."""
+    def plot(self, ax=None, *, lang: str = "en"):
+        """Draw the mechanism at k_l into *ax*, or into a new true-to-scale figure; returns the Axes."""
         from ..drawing import draw_mechanism
 
-        return draw_mechanism(self, ax, lang=lang)
+        artists = draw_mechanism(self, ax, lang=lang)
+        return ax if ax is not None else artists[0].axes
 
     def sheet(self, *, lang: str = "en"):
         """The one-page sheet (mechanism, both plans, vector equations) as a matplotlib Figure."""
@@ -219,7 +221,7 @@ class GraphicalSolution:
         return draw_sheet(self, formula=find_structure(self.scene).formula, lang=lang)
 
     def save(self, path, *, lang: str = "en"):
-        """Write the sheet to *path* (``.svg`` true to scale, or ``.pdf``), atomically; returns the path."""
+        """Write the sheet to *path* (``.svg`` true to scale, ``.pdf`` or ``.png``), atomically; returns the path."""
         from ..drawing.sheets import save_figure
 
         return save_figure(self.sheet(lang=lang), path)
