@@ -213,7 +213,8 @@ _PLACE = {"RRR": _place_rrr, "RRP": _place_rrp, "RPR": _place_rpr, "PRP": _place
 
 def _choose(scene: Scene, group: Group, candidates: list[dict[str, Pose]]) -> dict[str, Pose]:
     """The branch the scene's [assembly] asks for: the first entry naming a point of the group's links
-    (not an outer joint), a sign ±1 or a location the point lies nearest; +1 without one."""
+    (not an outer joint), a sign ±1 (stated in the order of :attr:`Group.sign_order`) or a location
+    the point lies nearest; +1 without one."""
     if len(candidates) == 1:
         return candidates[0]
     outer = {joint.point for joint in (group.outer_i, group.outer_j) if joint.kind == "R"}
@@ -223,11 +224,11 @@ def _choose(scene: Scene, group: Group, candidates: list[dict[str, Pose]]) -> di
         owners = [link for link in group.links if name in scene.bodies[link].points]
         if not owners:
             continue
-        if isinstance(value, int):
-            return candidates[0] if value > 0 else candidates[1]
+        if isinstance(value, int):  # a sign is stated in the order of Group.sign_order
+            return candidates[0] if value * group.orientation > 0 else candidates[1]
         local = _local(scene, owners[0], name)
         return min(candidates, key=lambda c: abs(point_at(c[owners[0]], local) - value))
-    return candidates[0]
+    return candidates[0] if group.orientation > 0 else candidates[1]  # +1 in the order of Group.sign_order
 
 
 def place_bodies(scene: Scene, structure: Structure) -> dict[str, Pose]:
