@@ -14,7 +14,7 @@ import math
 import sys
 from pathlib import Path
 
-from .errors import AssemblyError, PlansError, SceneError, SingularPositionError
+from .errors import AssemblyError, OutputError, PlansError, SceneError, SingularPositionError
 from .limits import WARN_CONDITION
 from .scene import Crank, Scene, example_names, example_path, load
 from .units import UnitError, parse_quantity
@@ -605,7 +605,7 @@ _COMMANDS = {
 def _error_text(exc: PlansError, scene: Scene | None) -> str:
     """The message of an error, naming the scene file (assembly, dead centre, structure) and with its notes."""
     text = str(exc)
-    if scene is None or isinstance(exc, SceneError):
+    if scene is None or isinstance(exc, (SceneError, OutputError)):  # an output is not the scene's fault
         return text
     if not text.startswith(scene.source):
         text = f"{scene.source}: {text}"

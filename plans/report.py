@@ -51,6 +51,13 @@ def _vec(z: complex, scale: float = 0.0) -> list[float]:
     return [_clean(z.real, scale), _clean(z.imag, scale)]
 
 
+def _as_given(x: float) -> float:
+    """*x* without the round-off of a unit conversion: a value within a few units in the last
+    place of a number with 12 significant digits is that number (0.35000000000000003 is 0.35)."""
+    short = float(f"{x:.12g}")
+    return short if abs(short - x) <= 8 * math.ulp(x) else x
+
+
 def _deg(phi: float) -> float:
     """An angle [rad] in degrees in [0, 360), as the courses write angles.
 
@@ -59,10 +66,7 @@ def _deg(phi: float) -> float:
     last place of a value with 12 significant digits is that value), and an
     angle within 360·:data:`ROUNDOFF` of a full turn is 0.
     """
-    d = math.degrees(float(phi)) % 360.0
-    short = float(f"{d:.12g}")
-    if abs(short - d) <= 8 * math.ulp(d):
-        d = short
+    d = _as_given(math.degrees(float(phi)) % 360.0)
     if d <= 360.0 * ROUNDOFF or 360.0 - d <= 360.0 * ROUNDOFF:
         return 0.0
     return d
@@ -443,13 +447,13 @@ __all__ += ["centres_json", "add_centres_json", "centres_table", "centres_compar
 
 def _centre_where(centre) -> list:
     """``[x, y]`` of a finite centre, or None."""
-    return None if centre.point is None else _vec(centre.point)
+    return None if centre.point is None else [_as_given(x) for x in _vec(centre.point)]
 
 
 def _centre_direction(centre) -> float | None:
     """The direction [°] of a centre at infinity, in [0, 180); None for another."""
     d = centre.direction_deg
-    return None if d is None else _clean(d)
+    return None if d is None else _as_given(_clean(d))
 
 
 def _found_words(centre) -> str:

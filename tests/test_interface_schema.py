@@ -30,6 +30,10 @@ GROUP = ["kind", "links", "joint", "condition", "expected_rel_error", "analytic_
 BRANCH = ["sign", "words", "other_assembly", "chosen_by"]
 WARNING = ["group", "joint", "where", "condition", "sine", "expected_rel_error", "method", "message"]
 SCALES = ["k_l", "k_v", "k_a"]
+POINT_CENTRES = ["v", "v_abs_error", "v_rel_error"]
+LINK_CENTRES = ["omega", "omega_abs_error", "omega_rel_error"]
+CENTRES = ["body_numbers", "list"]
+CENTRE = ["label", "bodies", "point", "direction_deg", "found_by", "lines"]
 
 
 def solve_json(capsys, *argv):
@@ -39,15 +43,19 @@ def solve_json(capsys, *argv):
 
 def test_the_whole_schema_has_exactly_the_golden_keys(capsys):
     doc = solve_json(capsys, "--example", "quick-return")
-    assert list(doc) == TOP and doc["schema"] == 1
+    assert list(doc) == TOP + ["centres"] and doc["schema"] == 1
     assert list(doc["driver"]) == CRANK
     assert list(doc["units"]) == UNITS
     for entry in doc["points"].values():
-        assert list(entry) == ["analytic", "graphical"]
+        assert list(entry) == ["analytic", "graphical", "centres"]
         assert list(entry["analytic"]) == POINT_ANALYTIC and list(entry["graphical"]) == POINT_GRAPHICAL
+        assert list(entry["centres"]) == POINT_CENTRES
     for name, entry in doc["links"].items():
         assert list(entry["analytic"]) == LINK_ANALYTIC
         assert list(entry["graphical"]) == LINK_GRAPHICAL, name
+        assert list(entry["centres"]) == LINK_CENTRES, name
+    assert list(doc["centres"]) == CENTRES
+    assert all(list(c) == CENTRE for c in doc["centres"]["list"])
     for entry in doc["sliders"].values():
         assert list(entry["analytic"]) == SLIDER_ANALYTIC and list(entry["graphical"]) == SLIDER_GRAPHICAL
     for entry in doc["groups"].values():
