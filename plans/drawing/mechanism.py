@@ -34,7 +34,7 @@ from .labels import place_label
 from ..i18n import term
 from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, PLATE_FILL, SMALL_PT
 
-__all__ = ["draw_mechanism", "mechanism_labels"]
+__all__ = ["draw_mechanism", "mechanism_labels", "MechanismDrawing"]
 
 FRAME = "frame"  # plans.scene.FRAME, repeated so drawing needs nothing but the solution
 
@@ -89,11 +89,15 @@ def draw_mechanism(solution, ax=None, *, lang: str = "en") -> list:
     -------
     list of matplotlib.artist.Artist
     """
-    return sketch_on(ax, "mech", lambda sketch: _Mechanism(sketch, solution, lang=lang).draw())
+    return sketch_on(ax, "mech", lambda sketch: MechanismDrawing(sketch, solution, lang=lang).draw())
 
 
+class MechanismDrawing:
+    """The kinematic scheme of a solution drawn into a :class:`Sketch`: ``MechanismDrawing(sketch, solution).draw()``.
 
-class _Mechanism:
+    *caption* False leaves out the heading and the scale statement (a page that states them itself).
+    """
+
     def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True):
         self.lang = lang
         self.show_caption = caption

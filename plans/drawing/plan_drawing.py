@@ -30,7 +30,7 @@ from .style import (
 from ..graphical.plan import KINDS
 from ..i18n import term
 
-__all__ = ["draw_plan", "draw_velocity_plan", "draw_acceleration_plan", "vectors_drawn", "legend_words", "ZERO_MM"]
+__all__ = ["draw_plan", "draw_plan_into", "draw_velocity_plan", "draw_acceleration_plan", "vectors_drawn", "legend_words", "ZERO_MM"]
 
 #: A vector shorter than this [mm] is not drawn (it has no direction to show).
 ZERO_MM = 1e-6
@@ -84,7 +84,7 @@ def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True) -> list:
     if plan.kind not in _UNITS:
         raise ValueError(f"a plan is 'velocity' or 'acceleration', got {plan.kind!r}")
     tag = "vel" if plan.kind == "velocity" else "acc"
-    return sketch_on(ax, tag, lambda sketch: _draw(sketch, plan, lang=lang, legend=legend))
+    return sketch_on(ax, tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=legend))
 
 
 def draw_velocity_plan(plan, ax=None, *, lang: str = "en") -> list:
@@ -125,7 +125,11 @@ def _check(z: complex, what: str) -> complex:
     return z
 
 
-def _draw(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True) -> None:
+def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True) -> None:
+    """Draw *plan* into *sketch* (one data unit = 1 mm): what :func:`draw_plan` does on a page's own Sketch.
+
+    *caption* False leaves out the heading, scale and legend; *legend* False only the legend.
+    """
     images = {name: _check(z, f"image {name}") for name, z in plan.images.items()}
     vectors = vectors_drawn(plan)
     for v in vectors:

@@ -20,7 +20,7 @@ from .._text import SUBSCRIPT
 from ..i18n import term
 from ._canvas import Sketch, fmt_number, sketch_on, unit
 from .labels import place_label
-from .mechanism import FRAME, _Mechanism
+from .mechanism import FRAME, MechanismDrawing
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 
 __all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points"]
@@ -105,7 +105,7 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
             sketch.circle(complex(z) / k_l, 0.55, fc="white", ec=GHOST, lw=0.5, gid=f"joint-{run.index}-{p}", zorder=1.4, obstacle=False)
 
     # position 0 in full
-    mech = _Mechanism(sketch, base, lang=lang, caption=False)
+    mech = MechanismDrawing(sketch, base, lang=lang, caption=False)
     mech.draw()
 
     # numbers beside the numbered points of every position
