@@ -67,6 +67,15 @@ def mechanism_labels(solution) -> list[str]:
     return [n for n in names if n in solution.positions]
 
 
+def _on_segment(q: complex, a: complex, b: complex, tol: float) -> bool:
+    """Whether *q* lies within *tol* [mm] of the segment a–b."""
+    u = b - a
+    if abs(u) == 0:
+        return abs(q - a) <= tol
+    t = min(1.0, max(0.0, ((q - a) * u.conjugate()).real / abs(u) ** 2))
+    return abs(q - (a + u * t)) <= tol
+
+
 def _frame_pivots(scene) -> list[str]:
     frame = scene.bodies[FRAME]
     return [p for p in frame.points if any(p in b.points for n, b in scene.bodies.items() if n != FRAME)]
@@ -191,7 +200,23 @@ class MechanismDrawing:
         self.link_labels()
         self.caption()
 
+    def _stack_side(self, body: str) -> float:
+        """+1 or −1 along its own guide for a frame-guided block that shares its pin with a
+        block on a moving line (a follower on a wedge): the side away from the moving
+        line's body, where the follower and its guide are drawn; 0 for any other block."""
+        if not self.is_block(body) or self._guide_of(body) != FRAME:
+            return 0.0
+        pin_name = next(iter(self.scene.bodies[body].points))
+        for pr in self.scene.prismatics:
+            if pr.slider != body and pr.guide != FRAME and pin_name in self.scene.bodies[pr.slider].points and self.is_block(pr.slider):
+                pin = self.p(pin_name)
+                u = cmath.exp(1j * self.block_angle(body))
+                reach = sum(((q - pin) * u.conjugate()).real for q in self.body_points(pr.guide))
+                return -1.0 if reach > 0 else 1.0
+        return 0.0
+
     def frame_guides(self) -> None:
+        self.guides: list[tuple[complex, complex]] = []
         frame = self.scene.bodies[FRAME]
         for name, line in frame.lines.items():
             riders = self.riders(FRAME, name)
@@ -205,12 +230,37 @@ class MechanismDrawing:
                 base = ((self.p(driver.point) - origin) * u.conjugate()).real - driver.s / self.k_l
                 ts += [base + driver.stroke[0] / self.k_l, base + driver.stroke[1] / self.k_l]
             reach = self.block[0] + 8.0
-            a = origin + u * (min(ts) - reach)
-            b = origin + u * (max(ts) + reach)
+            lo, hi = min(ts) - reach, max(ts) + reach
+            # a follower on a moving incline: its guide is a stub on the follower's side only
+            for pr in self.scene.prismatics:
+                if pr.guide == FRAME and pr.guide_line == name:
+                    side = self._stack_side(pr.slider)
+                    if side > 0:
+                        lo = max(lo, min(ts))
+                    elif side < 0:
+                        hi = min(hi, max(ts))
+            # a rod lying along the guide (a ram's connecting link) keeps the guide off its length
+            for body in self.moving:
+                if self.is_block(body):
+                    continue
+                along = [((q - origin) * u.conjugate()) for q in self.body_points(body)]
+                if len(along) < 2 or any(abs(z.imag) > 1.0 for z in along):
+                    continue
+                r0, r1 = min(z.real for z in along), max(z.real for z in along)
+                inside = [t for t in ts if not (r0 < t < r1)]
+                if not inside:
+                    continue
+                if r1 <= min(inside):
+                    lo = max(lo, r1 + self.pin_r + 1.0)
+                elif r0 >= max(inside):
+                    hi = min(hi, r0 - self.pin_r - 1.0)
+            a = origin + u * lo
+            b = origin + u * hi
             n = u * 1j
             side = -1.0 if self._mechanism_side(FRAME, name, origin, n) > 0 else 1.0
             self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=1.2)
             self._hatch(a, b, n * side)
+            self.guides.append((a, b))
 
     def _mechanism_side(self, body: str, line: str, origin: complex, n: complex) -> float:
         """Which side of a frame line the links attached to its sliders lie on (+ along *n*)."""
@@ -278,14 +328,66 @@ class MechanismDrawing:
                 self.bars[body] = (a, c)
 
     def ground_pivots(self) -> None:
+        """Frame pivots: a triangle on hatched ground, turned away from the links that meet it.
+
+        A pivot lying on a hatched frame guide is that ground already (no second
+        hatching); a pivot under a swinging block gets a support tall enough to
+        show beyond the block.
+        """
         for name in _frame_pivots(self.scene):
             q = self.p(name)
+            if any(_on_segment(q, a, b, 0.6) for a, b in getattr(self, "guides", [])):
+                continue
+            height = self.ground
+            under_block = any(self.is_block(b) for b in self.scene.bodies_with(name) if b != FRAME)
+            if under_block:
+                height = max(height, math.hypot(*self.block) / 2 + 2.5)
+            d = self._support_direction(name, q)
+            n = d * 1j
             half = 3.2 * self.symbol_scale
-            left, right = q + complex(-half, -self.ground), q + complex(half, -self.ground)
+            # a support that would stand in a hatched guide's hatching stands on the guide instead
+            on_guide = None
+            for g0, g1 in getattr(self, "guides", []):
+                u = g1 - g0
+                cross = (d.conjugate() * u).imag
+                if abs(cross) < 1e-9:
+                    continue
+                t = ((g0 - q).conjugate() * u).imag / (d.conjugate() * u).imag
+                hit = q + d * t
+                if 0 < t <= height + HATCH_LEN + 1.0 and _on_segment(hit, g0, g1, 1e-6):
+                    on_guide = t if on_guide is None else min(on_guide, t)
+            if on_guide is not None:
+                height = on_guide
+            base = q + d * height
+            left, right = base + n * half, base - n * half
             self.s.polygon([q, left, right], fc="white", lw=0.8, gid=f"ground-{name}", zorder=2.5)
-            a, b = q + complex(-half - 2.0, -self.ground), q + complex(half + 2.0, -self.ground)
-            self.s.line([a, b], lw=1.0, gid="ground-base", zorder=2.5)
-            self._hatch(a, b, -1j)
+            if on_guide is not None:
+                continue  # the guide's own hatching is its ground: not drawn twice
+            a, b = base + n * (half + 2.0), base - n * (half + 2.0)
+            self._hatch(b, a, d)
+
+    def _support_direction(self, name: str, q: complex) -> complex:
+        """Unit direction from a pivot to its ground: as far from every link meeting it as can be, down when free."""
+        angles = []
+        for body in self.scene.bodies_with(name):
+            if body == FRAME:
+                continue
+            for r in self.body_points(body):
+                if abs(r - q) > 1e-6:
+                    angles.append(cmath.phase(r - q))
+            if self.is_block(body):
+                # a block's guide (the rod through a swinging sleeve) runs both ways through the pivot
+                phi = self.block_angle(body)
+                angles += [phi, phi + math.pi]
+        best = None
+        for k in range(24):
+            theta = -math.pi / 2 + 2 * math.pi * k / 24
+            clear = min((abs(cmath.phase(cmath.exp(1j * (theta - a)))) for a in angles), default=math.pi)
+            deviation = abs(cmath.phase(cmath.exp(1j * (theta + math.pi / 2))))
+            score = min(clear, math.radians(75)) - 0.05 * deviation
+            if best is None or score > best[0] + 1e-12:
+                best = (score, theta)
+        return cmath.exp(1j * best[1])
 
     def _guide_of(self, body: str) -> str | None:
         for pr in self.scene.prismatics:
@@ -313,8 +415,12 @@ class MechanismDrawing:
             u = cmath.exp(1j * self.block_angle(body))
             centre = pin
             if any(abs(c - pin) < 1e-9 for c in self.block_centres.values()):
-                options = [pin + u * L, pin - u * L]
-                centre = min(options, key=lambda c: sum(self._rect(c, u).intersection(q).area for q in placed))
+                side = self._stack_side(body)
+                options = [pin + u * L, pin - u * L] if side >= 0 else [pin - u * L, pin + u * L]
+                if side:
+                    centre = options[0]
+                else:
+                    centre = min(options, key=lambda c: sum(self._rect(c, u).intersection(q).area for q in placed))
             rect = self._rect(centre, u)
             corners = [complex(x, y) for x, y in list(rect.exterior.coords)[:-1]]
             self.s.polygon(corners, fc="white", lw=1.1, gid=f"block-{body}", zorder=3.0)
@@ -380,9 +486,12 @@ class MechanismDrawing:
 
     def _crank_arrows(self, driver) -> None:
         centre = self.p(driver.pivot)
+        # the arcs stay within the crank they turn (a 10 mm crank gets a small ω)
+        crank = max((abs(q - centre) for q in self.body_points(driver.link)), default=0.0)
+        fit = 1.0 if crank <= 0 else min(1.0, max(0.35, 0.75 * crank / self.epsilon_r if driver.epsilon else 0.7 * crank / self.omega_r))
         for symbol, value, radius, dashes, gid in (
-            ("ω", driver.omega, self.omega_r, None, "omega"),
-            ("ε", driver.epsilon, self.epsilon_r, (3.0, 1.5), "epsilon"),
+            ("ω", driver.omega, self.omega_r * fit, None, "omega"),
+            ("ε", driver.epsilon, self.epsilon_r * fit, (3.0, 1.5), "epsilon"),
         ):
             if not value:
                 continue
@@ -438,7 +547,11 @@ class MechanismDrawing:
             elif body in self.block_centres:
                 centre = self.block_centres[body]
                 r = math.hypot(*self.block) / 2
-                self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
+                # beside its own block: away from another block on the same pin
+                others = [c for b, c in self.block_centres.items() if b != body and abs(c - centre) < 2 * r]
+                prefer = sum((centre - c for c in others), 0j) or None
+                first = (centre + unit(prefer) * (r + 3.0),) if prefer else ()
+                self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=prefer, first=first, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
 
     def caption(self) -> None:
         if not self.show_caption:

@@ -1,0 +1,106 @@
+"""The mechanism as a kinematic scheme: supports turned away from their links,
+no ground hatched twice, no rod over a guide's hatching, the sleeve's support
+visible, the driver's arcs no bigger than the crank, link numbers beside their
+own link.  Expected geometry is the scene's, read here from the solution."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from matplotlib.collections import LineCollection
+from shapely.geometry import LineString, Point, Polygon
+
+from plans.drawing import draw_mechanism
+from plans.graphical import construct
+from plans.scene import example_path, load
+
+
+def _solve(name, degrees=None):
+    scene = load(example_path(name))
+    if degrees is not None:
+        scene = scene.at(math.radians(degrees))
+    return construct(scene)
+
+
+def _gid(artists, gid):
+    return next(a for a in artists if a.get_gid() == gid)
+
+
+def _mm(solution, point):
+    z = solution.positions[point] / solution.scales["k_l"]
+    return complex(z)
+
+
+def test_a_ground_support_turns_away_from_the_crank_it_carries():
+    # six-bar at 325°: the crank points down-right, where a support drawn straight down would be
+    solution = _solve("six-bar", 325)
+    artists = draw_mechanism(solution)
+    o, a = _mm(solution, "O"), _mm(solution, "A")
+    support = Polygon(_gid(artists, "mech-ground-O").get_xy())
+    crank = LineString([(o.real, o.imag), (a.real, a.imag)])
+    # only the apex touches the crank (at the pivot)
+    assert support.intersection(crank).length < 0.05
+    # and the ω arc does not cross the support
+    xs, ys = _gid(artists, "mech-omega").get_data()
+    assert LineString(list(zip(xs, ys))).distance(support) > 0.0
+
+
+def test_a_pivot_on_a_hatched_guide_stands_on_it_without_a_second_hatching():
+    solution = _solve("linear-arm")
+    artists = draw_mechanism(solution)
+    q = _mm(solution, "Q")
+    triangle = [complex(*xy) for xy in _gid(artists, "mech-ground-Q").get_xy()]
+    # the floor is y = 0 (frame line through O at angle 0): the triangle's base lies on it
+    assert min(abs(z.imag) for z in triangle) < 1e-9
+    # no hatch stroke starts within the support's width around Q except the floor's own
+    hatches = [a for a in artists if isinstance(a, LineCollection) and (a.get_gid() or "").startswith("mech-hatch")]
+    starts = [complex(*seg[0]) for h in hatches for seg in h.get_segments()]
+    below_q = [z for z in starts if abs(z.real - q.real) < 4.0]
+    assert all(abs(z.imag) < 1e-9 for z in below_q)  # every stroke there starts on the floor line
+
+
+def test_a_rod_lying_along_a_guide_is_not_drawn_over_its_hatching():
+    # quick-return: the ram's rod DE lies on the guide of slider E
+    solution = _solve("quick-return")
+    artists = draw_mechanism(solution)
+    d, e = _mm(solution, "D"), _mm(solution, "E")
+    guide = [a for a in artists if (a.get_gid() or "").startswith("mech-guide-")][0]
+    xs, ys = guide.get_data()
+    g = LineString(list(zip(xs, ys)))
+    rod = LineString([(d.real, d.imag), (e.real, e.imag)])
+    assert g.intersection(rod.buffer(0.5)).length < 0.5 * abs(e - d) * 0.1
+
+
+def test_a_swinging_sleeve_shows_its_support_beyond_the_block():
+    solution = _solve("six-bar")
+    artists = draw_mechanism(solution)
+    support = Polygon(_gid(artists, "mech-ground-E").get_xy())
+    block = Polygon(_gid(artists, "mech-block-6").get_xy())
+    assert support.difference(block).area > 0.5 * support.area
+
+
+@pytest.mark.parametrize("name", ["rocker-limit", "slider-crank", "four-bar", "six-bar"])
+def test_the_driver_arcs_are_no_bigger_than_the_crank(name):
+    solution = _solve(name)
+    artists = draw_mechanism(solution)
+    driver = solution.scene.driver
+    o = _mm(solution, driver.pivot)
+    crank = max(abs(_mm(solution, p) - o) for p in solution.scene.bodies[driver.link].points)
+    for gid in ("mech-omega", "mech-epsilon"):
+        try:
+            arc = _gid(artists, gid)
+        except StopIteration:
+            continue
+        xs, ys = arc.get_data()
+        assert max(abs(complex(x, y) - o) for x, y in zip(xs, ys)) <= crank + 1e-9, gid
+
+
+def test_a_block_number_is_nearer_its_own_block_than_the_block_beside_it():
+    solution = _solve("wedge")
+    artists = draw_mechanism(solution)
+    for own, other in (("3", "4"), ("4", "3")):
+        label = Point(*_gid(artists, f"mech-number-{own}").get_position())
+        mine = Polygon(_gid(artists, f"mech-block-{own}").get_xy())
+        theirs = Polygon(_gid(artists, f"mech-block-{other}").get_xy())
+        assert label.distance(mine) < label.distance(theirs), own
