@@ -104,3 +104,36 @@ def test_a_block_number_is_nearer_its_own_block_than_the_block_beside_it():
         mine = Polygon(_gid(artists, f"mech-block-{own}").get_xy())
         theirs = Polygon(_gid(artists, f"mech-block-{other}").get_xy())
         assert label.distance(mine) < label.distance(theirs), own
+
+
+def test_a_yoke_on_its_rail_is_drawn_with_a_slide_bearing_not_lying_on_hatching():
+    solution = _solve("scotch-yoke")
+    artists = draw_mechanism(solution)
+    y, r = _mm(solution, "Y"), _mm(solution, "R")
+    guides = [a for a in artists if (a.get_gid() or "").startswith("mech-guide-")]
+    assert len(guides) == 2  # the two sides of the bearing
+    offsets = []
+    for g in guides:
+        xs, ys = g.get_data()
+        # parallel to the rail (y = 0 in the scene), beside the bar, within its length
+        assert ys[0] == pytest.approx(ys[1])
+        offsets.append(ys[0])
+        assert min(y.real, r.real) <= min(xs) and max(xs) <= max(y.real, r.real)
+    assert min(offsets) < 0 < max(offsets)
+    assert all(abs(o) < 2.0 for o in offsets)
+
+
+def test_a_slot_covers_the_travel_passed_in_and_the_block_fits_in_it():
+    solution = _solve("quick-return")
+    k_l = solution.scales["k_l"]
+    plain = draw_mechanism(solution)
+    slot = Polygon(_gid(plain, "mech-slot-4-slot").get_xy())
+    block = Polygon(_gid(plain, "mech-block-3").get_xy())
+    assert slot.buffer(1e-6).contains(block)
+    # a travel of 0.15 … 0.45 m along the lever's slot (from C): the slot reaches both ends
+    artists = draw_mechanism(solution, slots={"4.slot": (0.15, 0.45)})
+    ring = [complex(*xy) for xy in _gid(artists, "mech-slot-4-slot").get_xy()]
+    c, d = _mm(solution, "C"), _mm(solution, "D")
+    u = (d - c) / abs(d - c)
+    along = [((z - c) * u.conjugate()).real for z in ring]
+    assert min(along) <= 0.15 / k_l and max(along) >= 0.45 / k_l

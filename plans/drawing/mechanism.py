@@ -32,7 +32,7 @@ from .._text import SUBSCRIPT
 from ._canvas import Sketch, fmt_number, sketch_on, unit
 from .labels import place_label
 from ..i18n import term
-from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, PLATE_FILL, SMALL_PT
+from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, MM_PER_PT, PLATE_FILL, SMALL_PT
 
 __all__ = ["draw_mechanism", "mechanism_labels", "MechanismDrawing"]
 
@@ -81,7 +81,7 @@ def _frame_pivots(scene) -> list[str]:
     return [p for p in frame.points if any(p in b.points for n, b in scene.bodies.items() if n != FRAME)]
 
 
-def draw_mechanism(solution, ax=None, *, lang: str = "en") -> list:
+def draw_mechanism(solution, ax=None, *, lang: str = "en", slots: dict | None = None) -> list:
     """Draw the kinematic scheme of *solution* (a GraphicalSolution) at k_l.
 
     Parameters
@@ -93,12 +93,17 @@ def draw_mechanism(solution, ax=None, *, lang: str = "en") -> list:
         reach it as ``artists[0].figure``.
     lang : str
         Language of the heading (see :mod:`plans.i18n`).
+    slots : dict, optional
+        ``"4.slot"`` -> (s_min, s_max) [m]: the stretch of a moving line that a
+        block travels over in the cycle (along the line from its origin), as
+        found by a sweep; the slot is drawn over it.  The drawing solves nothing:
+        without it, a slot is drawn around the block's present place.
 
     Returns
     -------
     list of matplotlib.artist.Artist
     """
-    return sketch_on(ax, "mech", lambda sketch: MechanismDrawing(sketch, solution, lang=lang).draw())
+    return sketch_on(ax, "mech", lambda sketch: MechanismDrawing(sketch, solution, lang=lang, slots=slots).draw())
 
 
 class MechanismDrawing:
@@ -107,7 +112,8 @@ class MechanismDrawing:
     *caption* False leaves out the heading and the scale statement (a page that states them itself).
     """
 
-    def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True):
+    def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True, slots: dict | None = None):
+        self.slots = dict(slots or {})
         self.lang = lang
         self.show_caption = caption
         self.s = sketch
@@ -222,6 +228,11 @@ class MechanismDrawing:
             riders = self.riders(FRAME, name)
             if not riders:
                 continue
+            bars = [pr.slider for pr in self.scene.prismatics if pr.guide == FRAME and pr.guide_line == name and not self.is_block(pr.slider)]
+            if bars and len(bars) == len([pr for pr in self.scene.prismatics if pr.guide == FRAME and pr.guide_line == name]) and getattr(self.scene.driver, "guide", None) != name:
+                for body in bars:
+                    self._bearing(body, name, line)
+                continue
             origin = self.g(FRAME, line.origin)
             u = cmath.exp(1j * line.angle)
             ts = [((r - origin) * u.conjugate()).real for r in riders]
@@ -261,6 +272,25 @@ class MechanismDrawing:
             self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=1.2)
             self._hatch(a, b, n * side)
             self.guides.append((a, b))
+
+    def _bearing(self, body: str, name: str, line) -> None:
+        """A bar sliding along a frame line (a yoke on its rail): the prismatic pair with the frame
+        as its standard symbol, a fixed slide bearing around the bar, hatched on both outer sides."""
+        origin = self.g(FRAME, line.origin)
+        u = cmath.exp(1j * line.angle)
+        n = u * 1j
+        ts = [((q - origin) * u.conjugate()).real for q in self.body_points(body)]
+        t0, t1 = min(ts), max(ts)
+        half = self.block[0] * 0.7
+        centre = t0 + 0.72 * (t1 - t0)
+        centre = min(max(centre, t0 + half), t1 - half) if t1 - t0 > 2 * half else (t0 + t1) / 2
+        gap = BAR_PT * MM_PER_PT / 2 + 0.7
+        for side in (1.0, -1.0):
+            a = origin + u * (centre - half) + n * side * gap
+            b = origin + u * (centre + half) + n * side * gap
+            self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=2.2)
+            self._hatch(a, b, n * side) if side > 0 else self._hatch(b, a, n * side)
+        self.guides.append((origin + u * (centre - half), origin + u * (centre + half)))
 
     def _mechanism_side(self, body: str, line: str, origin: complex, n: complex) -> float:
         """Which side of a frame line the links attached to its sliders lie on (+ along *n*)."""
@@ -306,6 +336,28 @@ class MechanismDrawing:
                 a = origin + u * min(ts)
                 c = origin + u * max(ts)
                 self.s.line([a, c], lw=0.8, gid=f"line-{body}-{name}", zorder=1.6)
+                blocks = [pr.slider for pr in self.scene.prismatics if pr.guide == body and pr.guide_line == name and self.is_block(pr.slider)]
+                if blocks and rides:
+                    self._slot(body, name, origin, u, rides)
+
+    def _slot(self, body: str, name: str, origin: complex, u: complex, rides: list[float]) -> None:
+        """A slot a block slides in, drawn as the slot (two edges and ends) over the travel it uses.
+
+        The travel is data (``slots`` of :func:`draw_mechanism`, metres along the
+        line from its origin, e.g. from a sweep); without it, the slot covers the
+        block's present place and a block length either side.
+        """
+        travel = self.slots.get(f"{body}.{name}")
+        L = self.block[0] / 2
+        if travel is not None:
+            lo, hi = (min(travel) / self.k_l - L - 1.0, max(travel) / self.k_l + L + 1.0)
+            lo, hi = min(lo, min(rides) - L - 1.0), max(hi, max(rides) + L + 1.0)
+        else:
+            lo, hi = min(rides) - 3 * L, max(rides) + 3 * L
+        w = self.block[1] / 2 + 0.5
+        n = u * 1j
+        ring = [origin + u * lo + n * w, origin + u * hi + n * w, origin + u * hi - n * w, origin + u * lo - n * w]
+        self.s.polygon(ring, fc="white", lw=1.2, gid=f"slot-{body}-{name}", zorder=2.1, joinstyle="round")
 
     def links(self) -> None:
         self.plates: dict[str, complex] = {}
