@@ -137,3 +137,17 @@ def test_a_slot_covers_the_travel_passed_in_and_the_block_fits_in_it():
     u = (d - c) / abs(d - c)
     along = [((z - c) * u.conjugate()).real for z in ring]
     assert min(along) <= 0.15 / k_l and max(along) >= 0.45 / k_l
+
+
+def test_a_swinging_sleeve_is_not_drawn_as_a_slot_and_a_slotted_link_shows_no_bar_inside_its_slot():
+    six = draw_mechanism(_solve("six-bar"))
+    assert not any((a.get_gid() or "").startswith("mech-slot-") for a in six)  # rod 5 slides through sleeve 6
+    solution = _solve("quick-return")
+    artists = draw_mechanism(solution)
+    slot = Polygon(_gid(artists, "mech-slot-4-slot").get_xy())
+    for bar in (a for a in artists if (a.get_gid() or "").startswith("mech-link-4")):
+        xs, ys = bar.get_data()
+        assert LineString(list(zip(xs, ys))).intersection(slot.buffer(-0.5)).length < 1e-6
+    # the block's number sits beside it, not at the far end of the lever
+    label = Point(*_gid(artists, "mech-number-3").get_position())
+    assert label.distance(Polygon(_gid(artists, "mech-block-3").get_xy())) < 6.0

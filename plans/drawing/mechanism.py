@@ -67,6 +67,29 @@ def mechanism_labels(solution) -> list[str]:
     return [n for n in names if n in solution.positions]
 
 
+def _outside(a: complex, c: complex, spans) -> list[tuple[complex, complex]]:
+    """The pieces of segment a–c outside the given collinear spans (each a pair of points)."""
+    d = c - a
+    if abs(d) == 0 or not spans:
+        return [(a, c)]
+    L = abs(d)
+    u = d / L
+    cuts = []
+    for p0, p1 in spans:
+        if max(abs(((p - a) * u.conjugate()).imag) for p in (p0, p1)) > 0.5:
+            continue  # not along this segment
+        t0, t1 = sorted(((p - a) * u.conjugate()).real for p in (p0, p1))
+        cuts.append((max(0.0, t0), min(L, t1)))
+    pieces, t = [], 0.0
+    for t0, t1 in sorted(cuts):
+        if t0 > t:
+            pieces.append((a + u * t, a + u * t0))
+        t = max(t, t1)
+    if t < L:
+        pieces.append((a + u * t, c))
+    return pieces
+
+
 def _on_segment(q: complex, a: complex, b: complex, tol: float) -> bool:
     """Whether *q* lies within *tol* [mm] of the segment a–b."""
     u = b - a
@@ -322,6 +345,8 @@ class MechanismDrawing:
         self.s.segments(pairs, lw=0.5, gid="hatch", zorder=1.1)
 
     def moving_lines(self) -> None:
+        self.slotted: set[str] = set()
+        self.slot_spans: dict[str, list[tuple[complex, complex]]] = {}
         for body in self.moving:
             b = self.scene.bodies[body]
             if b.block:
@@ -335,10 +360,26 @@ class MechanismDrawing:
                 ts = own + [t - reach for t in rides] + [t + reach for t in rides] + [0.0]
                 a = origin + u * min(ts)
                 c = origin + u * max(ts)
-                self.s.line([a, c], lw=0.8, gid=f"line-{body}-{name}", zorder=1.6)
-                blocks = [pr.slider for pr in self.scene.prismatics if pr.guide == body and pr.guide_line == name and self.is_block(pr.slider)]
-                if blocks and rides:
-                    self._slot(body, name, origin, u, rides)
+                # a block on a moving pin slides in a slot of this link; a block pivoted on the
+                # frame is a swinging sleeve the link slides through (no slot)
+                pivots = set(_frame_pivots(self.scene))
+                blocks = [
+                    pr.slider
+                    for pr in self.scene.prismatics
+                    if pr.guide == body and pr.guide_line == name and self.is_block(pr.slider)
+                    and not (set(self.scene.bodies[pr.slider].points) & pivots)
+                ]
+                if blocks:
+                    pins = [((q - origin) * u.conjugate()).real for b in blocks for q in self.body_points(b)]
+                    lo, hi = self._slot(body, name, origin, u, pins)
+                    self.slotted.update(f"slot-{body}-{name}/{b}" for b in blocks)
+                    self.slot_spans.setdefault(body, []).append((origin + u * lo, origin + u * hi))
+                spans = [span for spans in self.slot_spans.values() for span in spans]
+                for p0, p1 in _outside(a, c, spans):
+                    self.s.line([p0, p1], lw=0.8, gid=f"line-{body}-{name}", zorder=1.6)
+
+    def _in_slot(self, block: str) -> bool:
+        return any(g.startswith("slot-") and g.endswith(f"/{block}") for g in self.slotted)
 
     def _slot(self, body: str, name: str, origin: complex, u: complex, rides: list[float]) -> None:
         """A slot a block slides in, drawn as the slot (two edges and ends) over the travel it uses.
@@ -353,11 +394,13 @@ class MechanismDrawing:
             lo, hi = (min(travel) / self.k_l - L - 1.0, max(travel) / self.k_l + L + 1.0)
             lo, hi = min(lo, min(rides) - L - 1.0), max(hi, max(rides) + L + 1.0)
         else:
-            lo, hi = min(rides) - 3 * L, max(rides) + 3 * L
+            lo, hi = min(rides) - 2.2 * L, max(rides) + 2.2 * L
         w = self.block[1] / 2 + 0.5
         n = u * 1j
         ring = [origin + u * lo + n * w, origin + u * hi + n * w, origin + u * hi - n * w, origin + u * lo - n * w]
-        self.s.polygon(ring, fc="white", lw=1.2, gid=f"slot-{body}-{name}", zorder=2.1, joinstyle="round")
+        self.s.polygon(ring, fc="white", lw=1.2, gid=f"slot-{body}-{name}", zorder=2.1, joinstyle="round", obstacle=False)
+        self.s.obstacles.append(ShapelyPolygon([(z.real, z.imag) for z in ring]).exterior.buffer(0.3))
+        return lo, hi
 
     def links(self) -> None:
         self.plates: dict[str, complex] = {}
@@ -376,7 +419,9 @@ class MechanismDrawing:
                 self.plates[body] = complex(c.x, c.y)
             else:
                 a, c = max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1]))
-                self.s.line([a, c], lw=BAR_PT, gid=f"link-{body}", zorder=2.0, capstyle="round")
+                # where the link is slotted, the slot is drawn instead of the bar
+                for p0, p1 in _outside(a, c, self.slot_spans.get(body, [])):
+                    self.s.line([p0, p1], lw=BAR_PT, gid=f"link-{body}", zorder=2.0, capstyle="round")
                 self.bars[body] = (a, c)
 
     def ground_pivots(self) -> None:
@@ -416,6 +461,7 @@ class MechanismDrawing:
             if on_guide is not None:
                 continue  # the guide's own hatching is its ground: not drawn twice
             a, b = base + n * (half + 2.0), base - n * (half + 2.0)
+            self.s.line([a, b], lw=1.0, gid="ground-base", zorder=2.5)
             self._hatch(b, a, d)
 
     def _support_direction(self, name: str, q: complex) -> complex:
@@ -603,6 +649,10 @@ class MechanismDrawing:
                 others = [c for b, c in self.block_centres.items() if b != body and abs(c - centre) < 2 * r]
                 prefer = sum((centre - c for c in others), 0j) or None
                 first = (centre + unit(prefer) * (r + 3.0),) if prefer else ()
+                if self._in_slot(body):
+                    # in a slot: beside the block, inside the slot
+                    u = cmath.exp(1j * self.block_angle(body))
+                    first += (centre + u * (self.block[0] / 2 + 2.0), centre - u * (self.block[0] / 2 + 2.0))
                 self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=prefer, first=first, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
 
     def caption(self) -> None:
