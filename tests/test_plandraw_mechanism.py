@@ -151,3 +151,16 @@ def test_a_swinging_sleeve_is_not_drawn_as_a_slot_and_a_slotted_link_shows_no_ba
     # the block's number sits beside it, not at the far end of the lever
     label = Point(*_gid(artists, "mech-number-3").get_position())
     assert label.distance(Polygon(_gid(artists, "mech-block-3").get_xy())) < 6.0
+
+
+def test_a_block_on_a_wedge_sits_on_the_incline_and_the_follower_stands_on_it():
+    solution = _solve("wedge")
+    artists = draw_mechanism(solution)
+    plate = Polygon([(z.real, z.imag) for z in (_mm(solution, p) for p in ("W", "T", "U"))])
+    block3 = Polygon(_gid(artists, "mech-block-3").get_xy())
+    block4 = Polygon(_gid(artists, "mech-block-4").get_xy())
+    c = _mm(solution, "C")
+    assert block3.intersection(plate).area < 1e-6  # on the incline, not across it
+    assert block3.exterior.distance(Point(c.real, c.imag)) < 1e-6  # the pin on its sliding side
+    assert block4.intersection(block3).area < 1e-6
+    assert block4.centroid.y > block3.centroid.y  # the follower above, on its guide

@@ -269,10 +269,12 @@ class MechanismDrawing:
             for pr in self.scene.prismatics:
                 if pr.guide == FRAME and pr.guide_line == name:
                     side = self._stack_side(pr.slider)
+                    # (the follower sits on the block under it: its guide reaches past it)
+                    stack = self.block[0] + self.block[1]
                     if side > 0:
-                        lo = max(lo, min(ts))
+                        lo, hi = max(lo, min(ts)), hi + stack
                     elif side < 0:
-                        hi = min(hi, max(ts))
+                        lo, hi = lo - stack, min(hi, max(ts))
             # a rod lying along the guide (a ram's connecting link) keeps the guide off its length
             for body in self.moving:
                 if self.is_block(body):
@@ -369,7 +371,7 @@ class MechanismDrawing:
                     if pr.guide == body and pr.guide_line == name and self.is_block(pr.slider)
                     and not (set(self.scene.bodies[pr.slider].points) & pivots)
                 ]
-                if blocks:
+                if blocks and not self._is_plate(body):
                     pins = [((q - origin) * u.conjugate()).real for b in blocks for q in self.body_points(b)]
                     lo, hi = self._slot(body, name, origin, u, pins)
                     self.slotted.update(f"slot-{body}-{name}/{b}" for b in blocks)
@@ -377,6 +379,15 @@ class MechanismDrawing:
                 spans = [span for spans in self.slot_spans.values() for span in spans]
                 for p0, p1 in _outside(a, c, spans):
                     self.s.line([p0, p1], lw=0.8, gid=f"line-{body}-{name}", zorder=1.6)
+
+    def _is_plate(self, body: str) -> bool:
+        """A link with three or more points not on one line, drawn as a plate."""
+        pts = self.body_points(body)
+        if len(pts) < 3:
+            return False
+        hull = MultiPoint([(q.real, q.imag) for q in pts]).convex_hull
+        span = max(abs(q - r) for q in pts for r in pts)
+        return hull.geom_type == "Polygon" and hull.area > 0.02 * span * span
 
     def _in_slot(self, block: str) -> bool:
         return any(g.startswith("slot-") and g.endswith(f"/{block}") for g in self.slotted)
@@ -410,8 +421,7 @@ class MechanismDrawing:
                 continue
             pts = self.body_points(body)
             hull = MultiPoint([(q.real, q.imag) for q in pts]).convex_hull
-            span = max(abs(q - r) for q in pts for r in pts)
-            if len(pts) >= 3 and hull.geom_type == "Polygon" and hull.area > 0.02 * span * span:
+            if self._is_plate(body):
                 ring = [complex(x, y) for x, y in list(hull.exterior.coords)[:-1]]
                 self.s.polygon(ring, fc=PLATE_FILL, lw=PLATE_EDGE_PT, gid=f"link-{body}", zorder=1.8, obstacle=False, joinstyle="round")
                 self.s.obstacles.append(hull.exterior.buffer(PLATE_EDGE_PT * 0.2))
@@ -508,15 +518,31 @@ class MechanismDrawing:
             key=lambda b: self._guide_of(b) == FRAME,
         )
         placed: list = []
+        pins: dict[str, complex] = {}
         for body in order:
             pin = self.body_points(body)[0]
             u = cmath.exp(1j * self.block_angle(body))
             centre = pin
-            if any(abs(c - pin) < 1e-9 for c in self.block_centres.values()):
+            guide = self._guide_of(body)
+            if guide in getattr(self, "plates", {}):
+                # a block on the edge of a plate (a wedge's incline) sits on the edge, outside
+                # the plate, its pin at the middle of the side that slides
+                n = u * 1j
+                out = 1.0 if ((pin - self.plates[guide]) * n.conjugate()).real >= 0 else -1.0
+                centre = pin + n * out * self.block[1] / 2
+            if any(abs(p - pin) < 1e-9 for p in pins.values()):
                 side = self._stack_side(body)
                 options = [pin + u * L, pin - u * L] if side >= 0 else [pin - u * L, pin + u * L]
                 if side:
-                    centre = options[0]
+                    # stacked on the block below it: moved along its own guide until clear of it
+                    sense = options[0] - pin
+                    t = 0.0
+                    while t < 4 * L and any(self._rect(pin + sense * (1 + t / L), u).intersection(q).area > 1e-6 for q in placed):
+                        t += 0.25
+                    centre = pin + sense * (1 + t / L)
+                    if t > 0:
+                        # the follower's stem down to its pin
+                        self.s.line([pin, centre], lw=BAR_PT, gid=f"stem-{body}", zorder=2.9, capstyle="round")
                 else:
                     centre = min(options, key=lambda c: sum(self._rect(c, u).intersection(q).area for q in placed))
             rect = self._rect(centre, u)
@@ -524,6 +550,7 @@ class MechanismDrawing:
             self.s.polygon(corners, fc="white", lw=1.1, gid=f"block-{body}", zorder=3.0)
             placed.append(rect)
             self.block_centres[body] = centre
+            pins[body] = pin
         # a linear driver that carries an arm still slides on its guide in a block
         driver = self.scene.driver
         if hasattr(driver, "guide") and not self.is_block(driver.link):
@@ -649,6 +676,11 @@ class MechanismDrawing:
                 others = [c for b, c in self.block_centres.items() if b != body and abs(c - centre) < 2 * r]
                 prefer = sum((centre - c for c in others), 0j) or None
                 first = (centre + unit(prefer) * (r + 3.0),) if prefer else ()
+                if prefer and self._guide_of(body) in self.plates:
+                    # a block on a plate's edge: beside it along the edge, away from the block on it
+                    u = cmath.exp(1j * self.block_angle(body))
+                    along = -u if (prefer * u.conjugate()).real < 0 else u
+                    first = (centre + along * (self.block[0] / 2 + 2.5),) + first
                 if self._in_slot(body):
                     # in a slot: beside the block, inside the slot
                     u = cmath.exp(1j * self.block_angle(body))
