@@ -11,10 +11,12 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.patches import Polygon
 
 from plans.drawing.svg import drawing_rc
+from shapely.geometry import LineString, box
 from shapely.geometry import Polygon as ShapelyPolygon
-from shapely.geometry import box
 
-__all__ = ["label_boxes", "arrowheads", "overlaps"]
+from plans.graphical.plan import KINDS
+
+__all__ = ["label_boxes", "arrowheads", "shafts", "overlaps"]
 
 #: Resolution the extents are measured at: high, so that the renderer's
 #: rounding to whole pixels does not change them by more than a hair.
@@ -24,33 +26,67 @@ SLIVER_MM2 = 0.05
 _MM_PER_PX = 25.4 / DPI
 
 
+def _measured(fig, measure):
+    """Run ``measure(renderer, mm_per_px)`` with *fig* rendered at :data:`DPI` by Agg."""
+    old_dpi, old_canvas = fig.dpi, fig.canvas
+    try:
+        fig.set_dpi(DPI)
+        canvas = FigureCanvasAgg(fig)
+        with drawing_rc():
+            return measure(canvas.get_renderer(), 25.4 / DPI)
+    finally:
+        fig.set_dpi(old_dpi)
+        fig.set_canvas(old_canvas)
+
+
 def label_boxes(fig) -> list[tuple[str, object]]:
-    """(text, shapely box in display units) of every non-empty text drawn in *fig*."""
-    if not hasattr(fig.canvas, "get_renderer"):
-        FigureCanvasAgg(fig)
-    out = []
-    with drawing_rc():
-        renderer = fig.canvas.get_renderer()
+    """(gid:text, box [mm from the figure's corner]) of every non-empty text drawn in *fig*."""
+
+    def measure(renderer, k):
+        out = []
         for ax in fig.axes:
             for t in ax.texts:
                 s = t.get_text()
                 if not s.strip() or s.strip() == ",":
                     continue
-                e = t.get_window_extent(renderer, dpi=DPI)
-                k = _MM_PER_PX
+                e = t.get_window_extent(renderer)
                 out.append((f"{t.get_gid()}:{s}", box(e.x0 * k, e.y0 * k, e.x1 * k, e.y1 * k)))
-    return out
+        return out
+
+    return _measured(fig, measure)
 
 
 def arrowheads(fig) -> list[tuple[str, object]]:
-    out = []
-    for ax in fig.axes:
-        for p in ax.patches:
-            gid = p.get_gid() or ""
-            if isinstance(p, Polygon) and gid.endswith("-head") and "legend" not in gid:
-                xy = p.get_transform().transform(p.get_xy()) * (25.4 / fig.dpi)
-                out.append((gid, ShapelyPolygon(xy).buffer(0)))
-    return out
+    """(gid, polygon [mm from the figure's corner]) of every arrowhead but the legend's."""
+
+    def measure(renderer, k):
+        out = []
+        for ax in fig.axes:
+            for p in ax.patches:
+                gid = p.get_gid() or ""
+                if isinstance(p, Polygon) and gid.endswith("-head") and "legend" not in gid:
+                    xy = p.get_transform().transform(p.get_xy()) * k
+                    out.append((gid, ShapelyPolygon(xy).buffer(0)))
+        return out
+
+    return _measured(fig, measure)
+
+
+def shafts(fig) -> list[tuple[str, object]]:
+    """(gid, outline [mm]) of every vector shaft and link image on a plan (Line2D with a plan gid)."""
+
+    def measure(renderer, k):
+        out = []
+        for ax in fig.axes:
+            for line in ax.lines:
+                gid = line.get_gid() or ""
+                if "legend" in gid or not any(f"-{kind}-" in gid for kind in KINDS):
+                    continue
+                xy = ax.transData.transform(list(zip(*line.get_data()))) * k
+                out.append((gid, LineString(xy).buffer(line.get_linewidth() * 25.4 / 72 / 2)))
+        return out
+
+    return _measured(fig, measure)
 
 
 def overlaps(fig) -> list[str]:

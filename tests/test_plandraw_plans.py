@@ -181,3 +181,51 @@ def test_every_vector_kind_differs_in_greyscale_and_coriolis_is_dark():
     assert len(styles) == len(VECTOR_STYLE)
     r, g, b = to_rgb(VECTOR_STYLE["coriolis"][0])
     assert 0.299 * r + 0.587 * g + 0.114 * b < 0.45
+
+
+def _anchor(plan, text_gid):
+    """The plan point a label names, from its gid (image-b, end-a_n_CA, pole-label)."""
+    prefix = "vel-" if plan.kind == "velocity" else "acc-"
+    name = text_gid.split(":")[0][len(prefix):]
+    if name.startswith("pole-label"):
+        return 0j
+    if name.startswith("image-"):
+        image = name[len("image-"):]  # a gid drops the prime: a′ → a
+        return plan.images.get(image, plan.images.get(image + "′"))
+    if name.startswith("end-"):
+        label = name[len("end-"):]
+        return next(v.tip for v in plan.vectors if v.label.replace("^", "_") == label)
+    return None
+
+
+@pytest.mark.parametrize("name", example_names())
+def test_no_label_lies_on_a_vector_or_link_image_it_does_not_belong_to(solutions, name):
+    from plandraw_overlaps import SLIVER_MM2, label_boxes, shafts
+
+    for plan in (solutions[name].velocity_plan, solutions[name].acceleration_plan):
+        if plan is None:
+            continue
+        fig = draw_plan(plan)[0].figure
+        prefix = "vel-" if plan.kind == "velocity" else "acc-"
+        vectors = {v.label.replace("^", "_"): v for v in plan.vectors}
+        bad = []
+        for text_gid, label_box in label_boxes(fig):
+            at = _anchor(plan, text_gid)
+            if at is None:
+                continue  # caption, legend
+            for gid, outline in shafts(fig):
+                if label_box.intersection(outline).area <= SLIVER_MM2:
+                    continue
+                rest = gid[len(prefix):]
+                if rest.startswith("figure-"):
+                    link = rest[len("figure-"):]
+                    if any(abs(plan.images[i] - at) < 1e-6 for i in plan.links.get(link, ())):
+                        continue
+                else:
+                    kind, _, label = rest.partition("-")
+                    label = label.removesuffix("-tick")
+                    v = vectors.get(label)
+                    if v is not None and min(abs(v.tail - at), abs(v.tip - at)) < 1e-6:
+                        continue
+                bad.append(f"{text_gid} on {gid}")
+        assert bad == [], (name, plan.kind, bad)

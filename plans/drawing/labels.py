@@ -6,9 +6,9 @@ font, see :func:`plans.drawing._canvas.text_size`) is scored by its
 clearance from everything already drawn (vectors, bars, pins, other labels,
 as shapely geometries) against its distance from the anchor: up to
 ``CLEAR_MM`` of clearance is worth four times its length in distance, an
-overlap costs as much as 3 mm of distance, and the preferred direction breaks
-ties.  A label therefore moves a few millimetres to get clear, but not so far
-that it could be read as another point's.  The best box becomes
+overlap costs as much as ``OVERLAP_MM`` of distance, and the preferred direction breaks
+ties.  A label therefore moves off to get clear, with a leader line when it
+goes further than a glance would join it to its point.  The best box becomes
 an obstacle for the labels placed after it, so labels never sit on each other
 when there is room for them.  The scoring is a pure function of the
 geometry, so placement is deterministic.
@@ -32,6 +32,9 @@ __all__ = ["CLEAR_MM", "LABEL_SPACE_MM", "place_label"]
 CLEAR_MM = 0.8
 #: Extra space [mm] kept around a placed label.
 LABEL_SPACE_MM = 0.9
+#: An overlap costs as much as this much distance [mm]: a label moves up to
+#: about this much further (with a leader line) rather than cover a mark.
+OVERLAP_MM = 12.0
 #: How far [mm] a label may be moved off its point, with a leader line, when nothing nearer is free.
 FARTHEST_MM = 30.0
 _SEPARATOR = ", "
@@ -147,7 +150,7 @@ def place_label(
                 np.minimum.at(clear, i, shapely.distance(boxes[i], shapes[j]))
         for (center, gap, turn), c in zip(ring, clear):
             c = float(c)
-            score = 4.0 * min(c, CLEAR_MM) - (3.0 if c <= 0.0 else 0.0) - gap - 0.15 * turn - 1e-6 * order
+            score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - gap - 0.15 * turn - 1e-6 * order
             order += 1
             if best is None or score > best[0]:
                 best = (score, center, gap, c)

@@ -47,6 +47,7 @@ GROUND = 5.0  # mm, height of the ground triangle
 HATCH_STEP = 2.2  # mm
 HATCH_LEN = 2.4  # mm
 OMEGA_R = 8.0  # mm
+LEADER_FROM_MM = 4.5  # a label further than this from its point gets a leader line
 EPSILON_R = 12.5  # mm
 
 
@@ -651,7 +652,7 @@ class MechanismDrawing:
             self._label(tip, rf"${symbol}_{{{driver.point}}}$", gid=f"{gid}-label", size=LABEL_PT, prefer=u * side, math_=True)
 
     def _label(self, anchor, text, *, gid, size, prefer=None, math_=False, first=(), gaps=(0.6, 1.4, 2.4, 3.6, 5.5, 8.0)):
-        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_)
+        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_, leader_from=LEADER_FROM_MM)
 
     def point_labels(self) -> None:
         for name in mechanism_labels(self.sol):
