@@ -164,3 +164,26 @@ def test_a_block_on_a_wedge_sits_on_the_incline_and_the_follower_stands_on_it():
     assert block3.exterior.distance(Point(c.real, c.imag)) < 1e-6  # the pin on its sliding side
     assert block4.intersection(block3).area < 1e-6
     assert block4.centroid.y > block3.centroid.y  # the follower above, on its guide
+
+
+def test_a_linear_driver_label_is_not_on_the_other_arrow():
+    from plandraw_overlaps import SLIVER_MM2, _measured, label_boxes
+
+    fig = draw_mechanism(_solve("wedge"))[0].figure
+
+    def arrows(renderer, k):
+        ax = fig.axes[0]
+        out = {}
+        for line in ax.lines:
+            if line.get_gid() in ("mech-velocity", "mech-acceleration"):
+                xy = ax.transData.transform(list(zip(*line.get_data()))) * k
+                out[line.get_gid()] = LineString(xy).buffer(line.get_linewidth() * 25.4 / 72 / 2)
+        return out
+
+    shafts = _measured(fig, arrows)
+    assert set(shafts) == {"mech-velocity", "mech-acceleration"}
+    boxes = dict(label_boxes(fig))
+    v_label = next(b for g, b in boxes.items() if g.startswith("mech-velocity-label"))
+    a_label = next(b for g, b in boxes.items() if g.startswith("mech-acceleration-label"))
+    assert v_label.intersection(shafts["mech-acceleration"]).area <= SLIVER_MM2
+    assert a_label.intersection(shafts["mech-velocity"]).area <= SLIVER_MM2

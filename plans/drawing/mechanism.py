@@ -640,6 +640,7 @@ class MechanismDrawing:
             if best is None or d > best[0] + 1e-9:
                 best = (d, side)
         side = best[1]
+        labels = []
         for k, (symbol, value, dashes, gid) in enumerate(
             (("v", driver.velocity, None, "velocity"), ("a", driver.acceleration, (3.0, 1.5), "acceleration"))
         ):
@@ -649,7 +650,10 @@ class MechanismDrawing:
             base = q + u * side * (offset + 4.5 * k)
             tail, tip = base - sense * 7.0, base + sense * 7.0
             self.s.arrow(tail, tip, lw=0.9, dashes=dashes, head=2.6, gid=gid)
-            self._label(tip, rf"${symbol}_{{{driver.point}}}$", gid=f"{gid}-label", size=LABEL_PT, prefer=u * side, math_=True)
+            labels.append((tip, rf"${symbol}_{{{driver.point}}}$", f"{gid}-label"))
+        # labels after both arrows, so that neither label lands on the other arrow
+        for tip, text, gid in labels:
+            self._label(tip, text, gid=gid, size=LABEL_PT, prefer=u * side, math_=True)
 
     def _label(self, anchor, text, *, gid, size, prefer=None, math_=False, first=(), gaps=(0.6, 1.4, 2.4, 3.6, 5.5, 8.0)):
         return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_, leader_from=LEADER_FROM_MM)
