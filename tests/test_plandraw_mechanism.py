@@ -44,6 +44,9 @@ def test_a_ground_support_turns_away_from_the_crank_it_carries():
     # and the ω arc does not cross the support
     xs, ys = _gid(artists, "mech-omega").get_data()
     assert LineString(list(zip(xs, ys))).distance(support) > 0.0
+    # nor does the support come near the coupler AB passing by
+    b = _mm(solution, "B")
+    assert support.distance(LineString([(a.real, a.imag), (b.real, b.imag)])) > 2.0
 
 
 def test_a_pivot_on_a_hatched_guide_stands_on_it_without_a_second_hatching():

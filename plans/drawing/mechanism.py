@@ -415,6 +415,12 @@ class MechanismDrawing:
         return lo, hi
 
     def links(self) -> None:
+        start = len(self.s.obstacles)
+        self._links()
+        # the links' own shapes: a support keeps clear of links passing by (guides are judged apart)
+        self.link_shapes = list(self.s.obstacles[start:])
+
+    def _links(self) -> None:
         self.plates: dict[str, complex] = {}
         self.bars: dict[str, tuple[complex, complex]] = {}
         for body in self.moving:
@@ -450,7 +456,7 @@ class MechanismDrawing:
             under_block = any(self.is_block(b) for b in self.scene.bodies_with(name) if b != FRAME)
             if under_block:
                 height = max(height, math.hypot(*self.block) / 2 + 2.5)
-            d = self._support_direction(name, q)
+            d = self._support_direction(name, q, height)
             n = d * 1j
             half = 3.2 * self.symbol_scale
             # a support that would stand in a hatched guide's hatching stands on the guide instead
@@ -475,8 +481,18 @@ class MechanismDrawing:
             self.s.line([a, b], lw=1.0, gid="ground-base", zorder=2.5)
             self._hatch(b, a, d)
 
-    def _support_direction(self, name: str, q: complex) -> complex:
-        """Unit direction from a pivot to its ground: as far from every link meeting it as can be, down when free."""
+    def _support_footprint(self, q: complex, d: complex, height: float):
+        """The area a support of *height* turned along *d* covers (triangle, base, hatching), less the pin."""
+        n = d * 1j
+        half = 3.2 * self.symbol_scale + 2.0
+        far = height + HATCH_LEN
+        pts = [q + d * (self.pin_r + 0.3) + n * 0.5, q + d * (self.pin_r + 0.3) - n * 0.5, q + d * far - n * half, q + d * far + n * half]
+        return ShapelyPolygon([(z.real, z.imag) for z in pts]).buffer(2.0)
+
+    def _support_direction(self, name: str, q: complex, height: float | None = None) -> complex:
+        """Unit direction from a pivot to its ground: as far from every link meeting it as can be (up to 75°),
+        clear of other links drawn near, then down, then up, in preference to sideways."""
+        height = self.ground if height is None else height
         angles = []
         for body in self.scene.bodies_with(name):
             if body == FRAME:
@@ -489,11 +505,21 @@ class MechanismDrawing:
                 phi = self.block_angle(body)
                 angles += [phi, phi + math.pi]
         best = None
+        hole = Point(q.real, q.imag).buffer(self.pin_r + 0.3)  # what meets the pivot itself is judged above
         for k in range(24):
             theta = -math.pi / 2 + 2 * math.pi * k / 24
             clear = min((abs(cmath.phase(cmath.exp(1j * (theta - a)))) for a in angles), default=math.pi)
-            deviation = abs(cmath.phase(cmath.exp(1j * (theta + math.pi / 2))))
+            # the drawing-office habit: a support below its pivot, else above (hanging), else sideways
+            down = abs(cmath.phase(cmath.exp(1j * (theta + math.pi / 2))))
+            up = abs(cmath.phase(cmath.exp(1j * (theta - math.pi / 2)))) + math.radians(10)
+            deviation = min(down, up)
             score = min(clear, math.radians(75)) - 0.05 * deviation
+            # and clear of what is drawn near it (another link passing by)
+            d = cmath.exp(1j * theta)
+            foot = self._support_footprint(q, d, height)
+            near = [o for o in getattr(self, "link_shapes", []) if not o.intersects(hole)]
+            if any(o.intersects(foot) for o in near):
+                score -= 1.0
             if best is None or score > best[0] + 1e-12:
                 best = (score, theta)
         return cmath.exp(1j * best[1])
