@@ -28,8 +28,7 @@ from .._text import SUBSCRIPT
 from ..i18n import term
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import LABEL_SPACE_MM
-from .mechanism import FRAME
-from .mechanism import _Mechanism as MechanismDrawing  # plandraw renames it MechanismDrawing: import that name after the merge
+from .mechanism import FRAME, MechanismDrawing
 from .numerals import localised
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 

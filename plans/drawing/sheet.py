@@ -15,8 +15,8 @@ from pathlib import Path
 from matplotlib.mathtext import MathTextParser
 
 from ._canvas import Sketch, fit_axes, text_size
-from .mechanism import _Mechanism
-from .plan_drawing import _draw as _draw_plan_into
+from .mechanism import MechanismDrawing
+from .plan_drawing import draw_plan_into
 from ..i18n import term
 from .style import HEADING_PT, MARGIN_MM, SMALL_PT, TITLE_PT
 from .svg import drawing_rc, new_figure, render_svg
@@ -102,9 +102,9 @@ def _drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True) -
     prefix = {"mechanism": "mech", "velocity": "vel", "acceleration": "acc"}[kind]
     sketch = Sketch(ax, prefix)
     if kind == "mechanism":
-        _Mechanism(sketch, obj, lang=lang).draw()
+        MechanismDrawing(sketch, obj, lang=lang).draw()
     else:
-        _draw_plan_into(sketch, obj, lang=lang, legend=legend)
+        draw_plan_into(sketch, obj, lang=lang, legend=legend)
     bounds = sketch.bounds
     width, height = bounds.width + 2 * MARGIN_MM, bounds.height + 2 * MARGIN_MM
 

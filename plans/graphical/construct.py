@@ -172,8 +172,8 @@ def construct(
         k_a = None
 
     # --- the finished plans and what is read off them ---------------------------------
-    velocity_plan = ctx.velocity.finish(k_v, precision)
-    acceleration_plan = ctx.acceleration.finish(k_a, precision) if k_a is not None else None
+    velocity_plan = ctx.velocity.finish(k_v, precision, ctx.velocity.link_images(scene))
+    acceleration_plan = ctx.acceleration.finish(k_a, precision, ctx.acceleration.link_images(scene)) if k_a is not None else None
     v_label = {point: label for label, point in ctx.velocity.named.items()}
     a_label = {point: label for label, point in ctx.acceleration.named.items()} if acceleration_plan else {}
     points = {}

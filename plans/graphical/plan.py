@@ -120,6 +120,10 @@ class Plan:
     vectors : tuple[PlanVector, ...]
         Everything to draw: absolute vectors from the pole and all components,
         zero-length ones left out.
+    links : dict[str, tuple[str, ...]]
+        Moving link -> labels of the images of its points on this plan (the
+        image of a link's figure, similar to the link: ``"3": ("a", "b", "c")``,
+        ``"5": ("b", "e5", "m")``).  Empty when not known.
     """
 
     kind: str
@@ -128,6 +132,7 @@ class Plan:
     images: dict[str, complex]
     steps: tuple[Step, ...]
     vectors: tuple[PlanVector, ...]
+    links: dict[str, tuple[str, ...]] = field(default_factory=dict)
 
     # --- display (matplotlib is imported only here, on demand) ----------------
 
