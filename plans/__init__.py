@@ -3,7 +3,9 @@
 Two independent methods over one scene model:
 
 * :func:`solve` — the analytic complex-number (loop-closure) solution,
-  vectorised over driver positions (numpy only);
+  vectorised over driver positions (numpy only); :func:`prepare` makes a
+  scene ready once for many calls (``solver = plans.prepare(scene)``,
+  ``solver(phi)``);
 * :func:`construct` — the graphical velocity and acceleration plans, built
   group by group with construction lines and read off at scale (shapely);
 
@@ -21,7 +23,7 @@ Example
 """
 
 from .errors import AssemblyError, PlansError, SceneError, SingularPositionError, StructureError
-from .scene import Scene, example_names, example_path, load, loads
+from .scene import Scene, example_names, example_path, from_mapping, load, loads
 from .structure import find_structure
 from .compare import compare
 
@@ -32,9 +34,14 @@ __all__ = [
     "example_path",
     "find_structure",
     "solve",
+    "prepare",
     "construct",
     "compare",
     "write_drawings",
+    "write_position_sheets",
+    "run_positions",
+    "write_handout",
+    "from_mapping",
     "Scene",
     "AnalyticSolution",
     "PlansError",
@@ -47,8 +54,13 @@ __all__ = [
 __version__ = "0.1.0"
 
 
+def __dir__() -> list[str]:
+    """The public names, those loaded on first use included (``dir(plans)`` in a notebook)."""
+    return sorted(set(__all__) | {"__version__"})
+
+
 def __getattr__(name: str):
-    if name in ("solve", "AnalyticSolution"):
+    if name in ("solve", "prepare", "AnalyticSolution"):
         from . import analytic
 
         return getattr(analytic, name)
@@ -56,10 +68,18 @@ def __getattr__(name: str):
         from .graphical import construct
 
         return construct
-    if name == "write_drawings":
-        from .drawing import write_drawings
+    if name in ("write_drawings", "write_position_sheets"):
+        from . import drawing
 
-        return write_drawings
+        return getattr(drawing, name)
+    if name == "run_positions":
+        from .positions import run_positions
+
+        return run_positions
+    if name == "write_handout":
+        from .handout import write_handout
+
+        return write_handout
     raise AttributeError(f"module 'plans' has no attribute {name!r}")
 
 

@@ -14,7 +14,7 @@ import math
 import sys
 from pathlib import Path
 
-from .errors import PlansError, SceneError
+from .errors import AssemblyError, OutputError, PlansError, SceneError, SingularPositionError
 from .limits import WARN_CONDITION
 from .scene import Crank, Scene, example_names, example_path, load
 from .units import UnitError, parse_quantity
@@ -106,55 +106,124 @@ def _scale_arguments(parser: argparse.ArgumentParser) -> None:
     group.add_argument("--precision", type=_positive, metavar="MM", help="drafting precision: round every measured length to this many mm")
 
 
+#: Where the scene format is described, at the end of every --help.
+SCENE_FORMAT = (
+    "Scene files (TOML) are described in the README, section \"Scene files\"; "
+    "plans examples NAME prints a bundled scene to start from."
+)
+
+#: The end of each subcommand's --help: an example to copy.
+EXAMPLES = {
+    "solve": "plans solve --example slider-crank\n  plans examples four-bar > my.toml\n  plans solve my.toml --at \"10,25 deg\" --json",
+    "sweep": "plans sweep --example four-bar --steps 360 -o four-bar.csv --plot diagrams",
+    "draw": "plans draw --example six-bar -o drawings\n  plans draw --example six-bar --positions 12 -o sheets --format png",
+    "handout": "plans handout --example four-bar --positions 4 -o four-bar.pdf --lang sr",
+    "bench": "plans bench --quick -o /tmp/bench",
+    "examples": "plans examples\n  plans examples six-bar > my.toml",
+}
+
+#: What each bundled example shows, in plain words, for ``plans examples``.
+DESCRIPTIONS = {
+    "ladder": "a rod sliding down a wall, its foot pushed along the floor at constant speed",
+    "slider-crank": "an engine's crank, connecting rod and piston, the piston's line offset from the crank's centre",
+    "four-bar": "a crank driving a rocker through a coupler, with a point on the coupler; the crank speeds up",
+    "quick-return": "a shaper: the crank's pin slides in a swinging slotted lever that drives the ram (Coriolis)",
+    "six-bar": "a four-bar whose coupler drives a rod sliding through a swinging sleeve",
+    "linear-arm": "a slide carrying an arm; a rod in a sleeve welded to a rocker; a block on the moving rod",
+    "wedge": "a wedge pushed along the floor lifts a follower sliding in a vertical guide",
+    "scotch-yoke": "a crank whose pin slides in the slot of a yoke that moves straight back and forth",
+    "rocker-limit": "a four-bar whose crank cannot turn fully: it stops at two dead centres",
+}
+
+
+def _add_command(commands, name: str, help: str, **kwargs) -> argparse.ArgumentParser:
+    """A subcommand whose --help ends with an example and where the scene format is described."""
+    return commands.add_parser(name, help=help, description=help[:1].upper() + help[1:] + ".",
+                               epilog=_epilog(name), formatter_class=argparse.RawDescriptionHelpFormatter, **kwargs)
+
+
+def _epilog(name: str) -> str:
+    return f"example:\n  {EXAMPLES[name]}\n\n{SCENE_FORMAT}"
+
+
 def build_parser() -> argparse.ArgumentParser:
+    from . import __version__
+
     parser = argparse.ArgumentParser(
         prog="plans",
         description="Velocity and acceleration plans of planar linkages: analytic (complex numbers) and graphical.",
+        epilog="example:\n  plans solve --example six-bar\n\n" + SCENE_FORMAT + " plans COMMAND --help for each command.",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    parser.add_argument("--version", action="version", version=f"plans {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
-    solve = commands.add_parser("solve", help="solve one position: analytic and graphical values with their differences")
+    solve = _add_command(commands, "solve", "solve one position: analytic and graphical values with their differences")
     _scene_argument(solve)
     _position_argument(solve)
     solve.add_argument("--json", action="store_true", help="print the documented JSON schema instead of a table")
-    solve.add_argument("--analytic-only", action="store_true", help="skip the graphical construction")
+    solve.add_argument("--analytic-only", action="store_true", help="skip the graphical construction (and the instant centres)")
+    solve.add_argument("--no-centres", action="store_true", help="skip the instant-centre method (ω and v from Kennedy's theorem)")
     _warn_argument(solve)
     _scale_arguments(solve)
 
-    sweep = commands.add_parser("sweep", help="analytic solution over a whole driver cycle, as CSV")
+    sweep = _add_command(commands, "sweep", "analytic solution over a whole driver cycle, as CSV")
     _scene_argument(sweep)
     sweep.add_argument("--steps", type=int, default=360, metavar="N", help="number of driver positions (default 360)")
     sweep.add_argument("-o", "--output", metavar="FILE", help="CSV file to write (default: standard output)")
-    sweep.add_argument("--plot", metavar="DIR", help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) into DIR")
+    sweep.add_argument(
+        "--plot",
+        metavar="DIR",
+        help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) into DIR "
+        "(without -o the CSV still goes to standard output, the diagrams' names to standard error)",
+    )
     sweep.add_argument("--components", action="store_true", help="with --plot: x and y components of v and a too")
+    sweep.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="with --plot: format of the diagrams (default svg)")
     sweep.add_argument("--positions", type=_count, metavar="N", help="with --plot: mark N equally spaced positions (those of plans draw --positions N)")
     _language_argument(sweep)
     _warn_argument(sweep)
 
-    draw = commands.add_parser(
+    draw = _add_command(
+        commands,
         "draw",
-        help="draw mechanism.svg, velocity.svg, acceleration.svg and sheet.svg (or a sheet per position)",
+        "draw mechanism.svg, velocity.svg, acceleration.svg and sheet.svg (or a sheet per position)",
     )
     _scene_argument(draw)
     _position_argument(draw, several=True)
-    draw.add_argument("-o", "--output", metavar="DIR", required=True, help="directory for the SVG files")
+    draw.add_argument(
+        "-o", "--output", metavar="DIR", required=True,
+        help="directory for the drawings; or, for one position, a file (page.svg, page.pdf, page.png) for the sheet alone",
+    )
+    draw.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="format of the files written into DIR (default svg)")
     _language_argument(draw)
     _warn_argument(draw)
     _scale_arguments(draw)
 
-    handout = commands.add_parser("handout", help="a printable handout: A4 pages of PDF (or SVG pages)")
+    handout = _add_command(commands, "handout", "a printable handout: A4 pages of PDF (or SVG pages)")
     _scene_argument(handout)
     _position_argument(handout, several=True)
-    handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg for SVG pages")
+    handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg / FILE.png for a file per page")
     handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
     handout.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr (shown only when stderr is a terminal)")
     _language_argument(handout)
     _scale_arguments(handout)
 
+    centres = commands.add_parser(
+        "centres", help="every instant centre by Kennedy's theorem, ω and v from them; draws centres.svg"
+    )
+    _scene_argument(centres)
+    _position_argument(centres)
+    centres.add_argument("-o", "--output", metavar="DIR", default=".", help="directory for centres.svg (default: the current directory)")
+    centres.add_argument("--k-l", type=_positive, metavar="K", help="mechanism scale, m per mm of drawing (default: the scene's, else automatic)")
+    centres.add_argument("--no-drawing", action="store_true", help="print the table only, write no file")
+
     from . import bench
 
-    bench.add_parser(commands)
-    commands.add_parser("examples", help="list the bundled example scenes")
+    bench_parser = bench.add_parser(commands)
+    bench_parser.epilog = f"example:\n  {EXAMPLES['bench']}"
+    bench_parser.formatter_class = argparse.RawDescriptionHelpFormatter
+    examples = _add_command(commands, "examples", "list the bundled example scenes, or print one of them")
+    examples.add_argument("name", nargs="?", metavar="NAME", help="print this example's scene file (TOML), to start a scene of your own from")
     return parser
 
 
@@ -167,6 +236,7 @@ def _load(args) -> Scene:
         scene = load(args.scene)
     else:
         raise SceneError("no scene: give a scene file or --example NAME (plans examples lists them)")
+    args.loaded_scene = scene  # for errors found later (main names the file)
     if getattr(args, "at", None) is not None and not _several(args):
         scene = _at(scene, args.at)
     return scene
@@ -177,19 +247,60 @@ def _several(args) -> bool:
     return getattr(args, "positions", None) is not None or "," in (getattr(args, "at", None) or "")
 
 
-def _position_spec(args):
-    """What plans.positions.parse_positions takes: a count, or the --at list."""
+def _position_spec(args, scene: Scene):
+    """What plans.positions.parse_positions takes: a count, or the --at list (checked, in rad or m)."""
     if getattr(args, "positions", None) is not None and getattr(args, "at", None) is not None:
         raise SceneError("give either --positions N or --at with a list of positions, not both")
-    return args.positions if args.positions is not None else args.at
+    return args.positions if args.positions is not None else _listed_positions(scene, args.at)
 
 
 def _at(scene: Scene, text: str) -> Scene:
     kind = "angle" if isinstance(scene.driver, Crank) else "length"
     try:
-        return scene.at(parse_quantity(_number(text), kind))
+        value = parse_quantity(_number(text), kind)
     except UnitError as exc:
         raise SceneError(str(exc), scene.source, "--at") from None
+    return scene.at(_sane_position(scene, value, text))
+
+
+#: A crank angle given with --at must lie within this many turns of 0 (beyond
+#: it, the angle's own round-off passes a thousandth of a degree).
+MAX_TURNS = 100
+#: A linear driver's position given with --at must lie within this many times
+#: the scene's size (the largest distance between two of its points).
+MAX_TRAVEL = 1000
+
+
+def _sane_position(scene: Scene, value: float, text: str) -> float:
+    """*value* (rad or m) if it is a driver position plans can report; else a SceneError saying the range."""
+    if isinstance(scene.driver, Crank):
+        if math.isfinite(value) and abs(value) <= MAX_TURNS * 2 * math.pi:
+            return value
+        raise SceneError(
+            f"{text!r} is not a crank angle plans can use: give an angle within ±{360 * MAX_TURNS}° "
+            f"({MAX_TURNS} turns), such as \"30 deg\" (angles are the same every 360°)",
+            scene.source,
+            "--at",
+        )
+    points = [z for body in scene.bodies.values() for z in body.points.values()]
+    size = max((abs(a - b) for a in points for b in points), default=0.0) or 1.0
+    limit = MAX_TRAVEL * size
+    if math.isfinite(value) and abs(value) <= limit:
+        return value
+    raise SceneError(
+        f"{text!r} is not a position plans can use for the linear driver: give a position within ±{limit:.3g} m "
+        f"({MAX_TRAVEL} times the scene's size, {size:.3g} m)",
+        scene.source,
+        "--at",
+    )
+
+
+def _listed_positions(scene: Scene, text: str) -> list[float]:
+    """The positions of an --at list (\"10,25 deg\"), each checked as a single --at is."""
+    from .positions import parse_positions
+
+    values = parse_positions(text, scene)
+    return [_sane_position(scene, v, text) for v in values]
 
 
 def _number(text: str) -> float | str:
@@ -228,27 +339,101 @@ def _solve(args) -> int:
     from .report import format_json, solution_json, solution_table
 
     scene = _load(args)
-    analytic = solve(scene, warn_condition=args.warn_condition)
-    graphical = comparisons = None
-    if not args.analytic_only:
-        from .compare import compare
-
-        graphical = _construct(scene, args)
-        comparisons = compare(analytic, graphical)
-    if args.json:
-        text = format_json(solution_json(analytic, graphical, comparisons))
+    if _several(args):  # --at "10,25 deg": each position solved on its own, a table each, or a JSON list
+        scenes = [scene.at(value) for value in _listed_positions(scene, args.at)]
     else:
-        text = solution_table(analytic, graphical, comparisons)
-    _warn_solution(analytic, graphical)
+        scenes = [scene]
+    documents, tables, solutions = [], [], []
+    for k, one in enumerate(scenes):
+        analytic = solve(one, warn_condition=args.warn_condition)
+        graphical = comparisons = None
+        if not args.analytic_only:
+            from .compare import compare
+
+            graphical = _construct(one, args)
+            comparisons = compare(analytic, graphical)
+        centres = _solve_centres(one, analytic, args)
+        if args.json:
+            doc = solution_json(analytic, graphical, comparisons)
+            if centres is not None:
+                from .report import add_centres_json
+
+                add_centres_json(doc, *centres)
+            documents.append(doc)
+        else:
+            table = solution_table(analytic, graphical, comparisons)
+            if centres is not None:
+                from .report import centres_comparison_table
+
+                table += centres_comparison_table(centres[1])
+            if len(scenes) > 1:
+                table = f"position {k} of {len(scenes)}: {_position_words(one)}\n{table}"
+            tables.append(table)
+        solutions.append((analytic, graphical))
+    if args.json:
+        text = format_json(documents[0] if len(scenes) == 1 else documents)
+    else:
+        text = "\n".join(tables)
+    for analytic, graphical in solutions:
+        _warn_solution(analytic, graphical)
     sys.stdout.write(text)
     return 0
+
+
+def _solve_centres(scene: Scene, analytic, args):
+    """The instant-centre method beside the others: (result, comparisons), or None when skipped or undetermined."""
+    if args.no_centres or args.analytic_only:
+        return None
+    from .centres import CentreError, instant_centres
+    from .compare import compare_centres
+
+    try:
+        result = instant_centres(scene, analytic.structure)
+    except CentreError as exc:
+        _warn(f"instant centres left out: {exc}")
+        return None
+    _warn_undetermined(result)
+    return result, compare_centres(analytic, result)
+
+
+def _warn_undetermined(result) -> None:
+    for centre in result.centres:
+        if not centre.determined:
+            _warn(f"instant centre {centre.label} is {centre.describe()} (the velocities did not need it)")
+
+
+def _centres(args) -> int:
+    from .centres import instant_centres
+    from .report import centres_table
+
+    scene = _load(args)
+    result = instant_centres(scene)
+    text = centres_table(result)
+    _warn_undetermined(result)
+    if not args.no_drawing:
+        from ._files import replace_all
+        from .drawing.centres import centres_svg
+
+        path = Path(args.output) / "centres.svg"
+        data = centres_svg(result, args.k_l)
+        replace_all({path: data})
+        text += f"\n{path}\n"
+    sys.stdout.write(text)
+    return 0
+
+
+def _position_words(scene: Scene) -> str:
+    from .limits import position_text
+
+    driver = scene.driver
+    return position_text(isinstance(driver, Crank), driver.phi if isinstance(driver, Crank) else driver.s)
 
 
 def _sweep(args) -> int:
     import numpy as np
 
+    from ._files import batch, write_atomic
     from .analytic import solve
-    from ._files import write_atomic
     from .report import sweep_csv
     from .sweep import analyse_sweep
 
@@ -256,8 +441,10 @@ def _sweep(args) -> int:
     if args.steps < 2:
         raise SceneError("--steps must be at least 2")
     driver = scene.driver
-    if isinstance(driver, Crank):
-        positions = driver.phi + 2 * math.pi * np.arange(args.steps) / args.steps
+    if isinstance(driver, Crank):  # in the sense of ω, as the positions of plans draw and handout
+        from .positions import cycle_positions
+
+        positions = np.asarray(cycle_positions(scene, args.steps))
     else:
         if driver.stroke is None:
             raise SceneError("a sweep of a linear driver needs its stroke: add stroke = [start, end] to [driver]", scene.source, "driver.stroke")
@@ -276,15 +463,26 @@ def _sweep(args) -> int:
         from .positions import parse_positions
 
         marked = parse_positions(args.positions, scene)
-    if args.output:
-        write_atomic(args.output, text)
-    elif not args.plot:
-        sys.stdout.write(text)
-    if args.plot:
-        from .drawing.diagrams import write_cycle_diagrams
+    paths = []
+    with batch():  # the CSV and the diagrams: all written, or none
+        if args.output:
+            write_atomic(args.output, text)
+        if args.plot:
+            if args.format == "svg":
+                from .drawing.diagrams import write_cycle_diagrams
 
-        for path in write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components):
-            print(path)
+                paths = write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components)
+            else:
+                from ._files import replace_all
+                from .drawing.diagrams import draw_cycle_diagrams
+                from .drawing.formats import render
+
+                figures = draw_cycle_diagrams(analytic, marked=marked, lang=args.lang, components=args.components)
+                paths = replace_all({Path(args.plot) / f"{name}.{args.format}": render(fig, args.format) for name, fig in figures})
+    if not args.output:
+        sys.stdout.write(text)
+    for path in paths:
+        print(path, file=sys.stderr if not args.output else sys.stdout)
     return 0
 
 
@@ -300,6 +498,7 @@ def _nowhere(scene: Scene, positions) -> PlansError:
 
 
 def _draw(args) -> int:
+    from ._files import batch
     from .analytic import solve
     from .compare import compare
     from .drawing import write_drawings
@@ -310,43 +509,69 @@ def _draw(args) -> int:
         from .drawing import write_position_sheets
         from .positions import run_positions
 
-        run = run_positions(scene, _position_spec(args), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
-        paths = write_position_sheets(run, Path(args.output), lang=args.lang)
+        if _is_file(args.output):
+            raise SceneError(f"{args.output}: several positions give several sheets: give a directory (and --format {Path(args.output).suffix[1:]})")
+        run = run_positions(scene, _position_spec(args, scene), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
+        for message in run.skipped_messages():
+            _warn(message)
+        with batch():
+            paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format)
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
         graphical = _construct(scene, args)
         comparisons = compare(analytic, graphical)
         sheet_table_rows = sheet_table(comparisons)
         _warn_solution(analytic, graphical)
-        paths = write_drawings(
-            graphical,
-            Path(args.output),
-            formula=analytic.structure.formula,
-            table=sheet_table_rows,
-            lang=args.lang,
-        )
+        with batch():
+            if _is_file(args.output):  # -o page.png: the sheet alone, in the format of the suffix
+                from .drawing import draw_sheet
+                from .drawing.formats import save_figure
+
+                figure = draw_sheet(graphical, formula=analytic.structure.formula, table=sheet_table_rows, lang=args.lang)
+                paths = [save_figure(figure, args.output)]
+            else:
+                paths = write_drawings(
+                    graphical,
+                    Path(args.output),
+                    formula=analytic.structure.formula,
+                    table=sheet_table_rows,
+                    lang=args.lang,
+                    format=args.format,
+                )
     for path in paths:
         print(path)
     return 0
 
 
+def _is_file(output: str) -> bool:
+    """True when -o names a drawing file (page.svg, page.pdf, page.png) rather than a directory."""
+    return Path(output).suffix.lower() in (".svg", ".pdf", ".png") and not Path(output).is_dir()
+
+
 def _handout(args) -> int:
+    from ._files import batch
     from .handout import write_handout
 
     scene = _load(args)
-    positions = _position_spec(args) if _several(args) else None
-    paths = write_handout(
-        scene,
-        Path(args.output),
-        positions=positions,
-        lang=args.lang,
-        k_l=args.k_l,
-        k_v=args.k_v,
-        k_a=args.k_a,
-        precision=args.precision,
-        components=args.components,
-        progress=_progress(args),
-    )
+    positions = _position_spec(args, scene) if _several(args) else None
+    if positions is not None:
+        from .positions import skipped_message, unsolved_positions
+
+        for index, value, error in unsolved_positions(scene, positions):
+            _warn(skipped_message(index, scene, value, str(error)))
+    with batch():  # directories are created only when every page has been rendered
+        paths = write_handout(
+            scene,
+            Path(args.output),
+            positions=positions,
+            lang=args.lang,
+            k_l=args.k_l,
+            k_v=args.k_v,
+            k_a=args.k_a,
+            precision=args.precision,
+            components=args.components,
+            progress=_progress(args),
+        )
     _progress_done(args)
     for path in paths:
         print(path)
@@ -376,9 +601,12 @@ def _bench(args) -> int:
 
 
 def _examples(args) -> int:
+    if args.name:
+        sys.stdout.write(example_path(args.name).read_text(encoding="utf-8"))
+        return 0
     for name in example_names():
-        scene = load(example_path(name))
-        print(f"{name:14} {scene.title}")
+        words = DESCRIPTIONS.get(name) or load(example_path(name)).title
+        print(f"{name:14} {words}")
     return 0
 
 
@@ -388,8 +616,21 @@ _COMMANDS = {
     "draw": _draw,
     "handout": _handout,
     "bench": _bench,
+    "centres": _centres,
     "examples": _examples,
 }
+
+
+def _error_text(exc: PlansError, scene: Scene | None) -> str:
+    """The message of an error, naming the scene file (assembly, dead centre, structure) and with its notes."""
+    text = str(exc)
+    if scene is None or isinstance(exc, (SceneError, OutputError)):  # an output is not the scene's fault
+        return text
+    if not text.startswith(scene.source):
+        text = f"{scene.source}: {text}"
+    if isinstance(exc, (AssemblyError, SingularPositionError)) and scene.notes:
+        text += "; note: " + "; ".join(scene.notes)
+    return text
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -398,7 +639,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return _COMMANDS[args.command](args)
     except PlansError as exc:
-        print(f"plans: error: {exc}", file=sys.stderr)
+        print(f"plans: error: {_error_text(exc, getattr(args, 'loaded_scene', None))}", file=sys.stderr)
         return EXIT_ERROR
     except BrokenPipeError:  # plans solve ... | head
         return 0

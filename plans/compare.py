@@ -115,7 +115,42 @@ def compare(analytic, graphical, position: int = 0) -> list[Comparison]:
     rows = []
     for section, name, quantity, a, g in pairs:
         error = abs(g - a)
-        reference = max(abs(a), ZERO_FRACTION * largest[_KIND[quantity]])
+        top = largest[_KIND[quantity]]
+        reference = abs(a) if abs(a) >= ZERO_FRACTION * top else top  # (nearly) zero: against the largest of its kind
         rel = error / reference if reference > 0 else 0.0
         rows.append(Comparison(section, name, quantity, a, g, error, rel))
+    return rows
+
+__all__ += ["compare_centres"]
+
+
+def compare_centres(analytic, centres, position: int = 0) -> list[Comparison]:
+    """Velocities from the instant centres against analytic: ω of every link, v of every reported point.
+
+    Parameters
+    ----------
+    analytic : plans.analytic.AnalyticSolution
+    centres : plans.centres.InstantCentres
+        Found at the analytic solution's driver position number *position*.
+
+    Returns
+    -------
+    list[Comparison]
+        Points (``"v"``, in the scene's report order), then links
+        (``"omega"``); the ``graphical`` field holds the value from the
+        centres.  Errors as in :func:`compare`.
+    """
+    scene = centres.scene
+    pairs = [("points", name, "v", _analytic_value(analytic, "points", name, "v", position), complex(centres.points[name]))
+             for name in scene.report]
+    pairs += [("links", name, "omega", _analytic_value(analytic, "links", name, "omega", position), float(centres.links[name]))
+              for name in scene.links]
+    largest: dict[str, float] = {}
+    for _, _, quantity, a, _ in pairs:
+        largest[quantity] = max(largest.get(quantity, 0.0), abs(a))
+    rows = []
+    for section, name, quantity, a, c in pairs:
+        error = abs(c - a)
+        reference = max(abs(a), ZERO_FRACTION * largest[quantity])
+        rows.append(Comparison(section, name, quantity, a, c, error, error / reference if reference > 0 else 0.0))
     return rows

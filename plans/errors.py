@@ -12,6 +12,7 @@ __all__ = [
     "StructureError",
     "AssemblyError",
     "SingularPositionError",
+    "OutputError",
 ]
 
 
@@ -50,3 +51,7 @@ class AssemblyError(PlansError, ArithmeticError):
 
 class SingularPositionError(PlansError, ArithmeticError):
     """A group sits exactly at a dead centre: its velocities do not exist."""
+
+
+class OutputError(PlansError, ValueError):
+    """An output path plans will not write: not a regular file (a directory, a device), or named twice."""

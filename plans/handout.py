@@ -357,7 +357,7 @@ def handout_pages(
         return ["§" + where(r)] + data + ["§" + formula, scale_line(scales, lang)]
 
     def at_scales(r, scales):
-        g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision)
+        g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
         return replace(r, graphical=g, comparisons=compare(r.analytic, g))
 
     # one frame of drawing boxes for every position page, chosen for the drawings it must hold
@@ -377,7 +377,7 @@ def handout_pages(
 
     pages: list[tuple[str, object]] = []
     if multi and solved:
-        listing = [f"{r.index}:  {r.label}" + ("" if r.ok else f"  ({term('not_solved', lang)}: {_reason(r)})") for r in run.runs]
+        listing = [f"{r.index}:  {r.label}" + ("" if r.ok else f"  ({term('not_solved', lang)}: {r.brief(lang)})") for r in run.runs]
         cover_k = _cover_scale(run, math.ceil(len(listing) / 3))
         cover_lines = data + ["§" + formula] + ([scale_line({"k_l": cover_k}, lang)] if cover_k else [])
         pages.append(("cover", draw_cover_page(run, lang=lang, header_lines=cover_lines, positions_lines=listing, footer=footer, k_l=cover_k)))
@@ -411,12 +411,6 @@ def handout_pages(
     for number, (_, fig) in enumerate(pages, start=1):
         stamp_page_number(fig, number, total, lang)
     return pages
-
-
-def _reason(r) -> str:
-    """Why a position was not solved, in one short line (the solver's message up to its first colon-free clause)."""
-    text = str(r.error)
-    return text if len(text) <= 90 else text[:87] + "…"
 
 
 def write_handout(
@@ -473,14 +467,14 @@ def write_handout(
         assembled included; in a multi-position run such a position gets a
         page that says why).
     """
-    from .drawing.sheets import render_pdf
+    from .drawing.formats import render_pdf
     from ._files import replace_all
     from .drawing.svg import render_svg
 
     path = Path(path)
     suffix = path.suffix.lower()
-    if suffix not in (".pdf", ".svg"):
-        raise HandoutError(f"{path}: a handout is written as .pdf (or .svg, one file per page), not {path.suffix or 'a file without a suffix'}")
+    if suffix not in (".pdf", ".svg", ".png"):
+        raise HandoutError(f"{path}: a handout is written as .pdf (or .svg or .png, one file per page), not {path.suffix or 'a file without a suffix'}")
     try:
         check_language(lang)
     except ValueError as exc:
@@ -496,7 +490,13 @@ def write_handout(
     digits = max(2, len(str(total)))
     for number, (_, fig) in enumerate(pages, start=1):
         say(f"{term('page', lang)} {number}/{total}")
-        contents[path.with_name(f"{path.stem}-{number:0{digits}d}{path.suffix}")] = render_svg(fig)
+        target = path.with_name(f"{path.stem}-{number:0{digits}d}{path.suffix}")
+        if suffix == ".png":
+            from .drawing.formats import render_png
+
+            contents[target] = render_png(fig)
+        else:
+            contents[target] = render_svg(fig)
     return replace_all(contents)
 
 

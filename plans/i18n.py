@@ -241,6 +241,28 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "механизмът не може да се сглоби",
         "sl": "mehanizma ni mogoče sestaviti",
     },
+    "dead_centre": {
+        "en": "at a dead centre",
+        "sr": "у мртвом положају",
+        "ru": "в мёртвом положении",
+        "bg": "в мъртво положение",
+        "sl": "v mrtvi legi",
+    },
+    "constant": {"en": "constant", "sr": "константно", "ru": "постоянно", "bg": "постоянно", "sl": "konstantno"},
+    "clipped": {
+        "en": "beyond the axis near a dead centre",
+        "sr": "ван осе, близу мртвог положаја",
+        "ru": "за пределами оси, вблизи мёртвого положения",
+        "bg": "извън оста, близо до мъртво положение",
+        "sl": "zunaj osi, blizu mrtve lege",
+    },
+    "not_drawn": {
+        "en": "not drawn",
+        "sr": "нису нацртани",
+        "ru": "не построены",
+        "bg": "не са построени",
+        "sl": "niso narisane",
+    },
     "near_dead_centre": {
         "en": "near a dead centre",
         "sr": "близу мртвог положаја",

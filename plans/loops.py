@@ -242,10 +242,17 @@ def _numeric(term, stage: int) -> str:
     )
 
 
+def _still(term, stage: int) -> bool:
+    """A known rigid vector of a body that does not turn: its velocity (ω = 0) or acceleration (ω = ε = 0) term is zero."""
+    if not isinstance(term, _Rigid) or term.unknown or stage == 0:
+        return False
+    return term.omega == 0 and (stage == 1 or term.epsilon == 0)
+
+
 def _side(terms, stage: int, numeric: bool) -> str:
     parts = []
     if numeric and len(terms) > 1:
-        kept = [t for t in terms if not (isinstance(t, _Point) and (t.r, t.v, t.a)[stage] == 0)]
+        kept = [t for t in terms if not (isinstance(t, _Point) and (t.r, t.v, t.a)[stage] == 0) and not _still(t, stage)]
         terms = kept or terms[:1]
     for k, term in enumerate(terms):
         parts.append(_signed(term.sign, (_numeric if numeric else _symbolic)(term, stage), k == 0))
@@ -446,16 +453,20 @@ def _driver_block(b: _Builder) -> LoopBlock:
             lines += _rigid_lines(b, name, lambda stage: [pivot, arm] if abs(pivot.r) > 0 or stage == 0 else [arm])
     else:
         guide = scene.frame.lines[driver.guide]
+        s = float(b.sol.driver[b.k])  # this position's travel, not the scene's own
         lines.append(
-            rf"$s = {_num(driver.s)}\ \mathrm{{m}},\ \dot{{s}} = {_num(driver.velocity)}\ \mathrm{{m/s}},\ "
+            rf"$s = {_num(s)}\ \mathrm{{m}},\ \dot{{s}} = {_num(driver.velocity)}\ \mathrm{{m/s}},\ "
             rf"\ddot{{s}} = {_num(driver.acceleration)}\ \mathrm{{m/s^2}},\ u = e^{{i\,{_deg(guide.angle)}}}$"
         )
         m = b.sol.points[driver.point]
         p = _sub(driver.point)
         e = rf"e^{{i\,{_deg(guide.angle)}}}"
         q = complex(guide.origin)
+        # the guide's own through point (O for a line through O), named as the scene names it
+        q_label = b.point_name(FRAME, q, "")
+        q_label = _sub(q_label) if q_label else rf"Q_{{{_sub(guide.name)}}}"
         start = f"{_cplx(q)} + " if q != 0 else ""
-        lines.append(rf"$z_{{{p}}} = z_Q + s\,u = {start}{_paren(driver.s)}\,{e} = {_cplx(m.r[b.k], True)}\ \mathrm{{m}}$")
+        lines.append(rf"$z_{{{p}}} = z_{{{q_label}}} + s\,u = {start}{_paren(s)}\,{e} = {_cplx(m.r[b.k], True)}\ \mathrm{{m}}$")
         lines.append(rf"$v_{{{p}}} = \dot{{s}}\,u = {_paren(driver.velocity)}\,{e} = {_cplx(m.v[b.k], True)}\ \mathrm{{m/s}}$")
         if scene.accelerations:
             lines.append(rf"$a_{{{p}}} = \ddot{{s}}\,u = {_paren(driver.acceleration)}\,{e} = {_cplx(m.a[b.k], True)}\ \mathrm{{m/s^2}}$")

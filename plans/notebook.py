@@ -6,14 +6,17 @@ graphical layer never imports the drawing layer.  This module sits above both
 and joins them, one way:
 
 * :func:`plot` — draw a solution's mechanism or a plan into a matplotlib Axes
-  (or a new true-to-scale figure);
+  (or a new true-to-scale figure), returning the Axes;
 * :func:`sheet` — a solution's one-page sheet as a Figure;
-* :func:`save` — a plan or a solution's sheet to ``.svg`` or ``.pdf``, atomically;
+* :func:`save` — a plan or a solution's sheet to ``.svg``, ``.pdf`` or ``.png``, atomically;
 * :func:`svg` — the SVG text a notebook shows;
 * :func:`register` — tell a running IPython to show solutions and plans as
   SVG (``import plans`` calls it; it does nothing outside IPython).
 
-matplotlib is imported only when something is drawn.
+The results' own ``.plot``, ``.save`` and ``.sheet`` methods call these functions
+through :data:`plans.graphical.plan.DISPLAY`, which importing this module fills: the
+graphical layer never imports drawing code.  matplotlib is imported only when
+something is drawn.
 
 >>> import plans, plans.notebook as nb
 >>> solution = plans.construct(plans.load(plans.example_path("slider-crank")))
@@ -25,6 +28,8 @@ from __future__ import annotations
 
 import sys
 
+from .graphical.plan import DISPLAY
+
 __all__ = ["plot", "sheet", "save", "svg", "register"]
 
 
@@ -32,11 +37,16 @@ def _is_plan(obj) -> bool:
     return hasattr(obj, "images") and hasattr(obj, "pole")
 
 
-def plot(obj, ax=None, *, lang: str = "en") -> list:
-    """Draw a plan, or a solution's mechanism at k_l, into *ax* (one data unit = 1 mm) or a new figure; returns the artists."""
+def _artists(obj, ax=None, lang: str = "en") -> list:
     from .drawing import draw_mechanism, draw_plan
 
     return draw_plan(obj, ax, lang=lang) if _is_plan(obj) else draw_mechanism(obj, ax, lang=lang)
+
+
+def plot(obj, ax=None, *, lang: str = "en"):
+    """Draw a plan, or a solution's mechanism at k_l, into *ax* (one data unit = 1 mm) or a new figure; returns the Axes."""
+    artists = _artists(obj, ax, lang)
+    return ax if ax is not None else artists[0].axes
 
 
 def sheet(solution, *, lang: str = "en"):
@@ -48,12 +58,12 @@ def sheet(solution, *, lang: str = "en"):
 
 
 def _figure(obj, lang: str):
-    return plot(obj, lang=lang)[0].figure if _is_plan(obj) else sheet(obj, lang=lang)
+    return plot(obj, lang=lang).figure if _is_plan(obj) else sheet(obj, lang=lang)
 
 
 def save(obj, path, *, lang: str = "en"):
-    """Write a plan, or a solution's sheet, to *path* (``.svg`` true to scale, or ``.pdf``), atomically; returns the path."""
-    from .drawing.sheets import save_figure
+    """Write a plan, or a solution's sheet, to *path* (``.svg`` true to scale, ``.pdf`` or ``.png``), atomically; returns the path."""
+    from .drawing.formats import save_figure
 
     return save_figure(_figure(obj, lang), path)
 
@@ -80,3 +90,6 @@ def register(shell=None) -> bool:
     formatter.for_type_by_name("plans.graphical.plan", "Plan", svg)
     formatter.for_type_by_name("plans.graphical.plan", "GraphicalSolution", svg)
     return True
+
+
+DISPLAY.update(plot=plot, save=save, sheet=sheet)

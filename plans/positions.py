@@ -54,6 +54,8 @@ __all__ = [
     "PositionRun",
     "PositionsRun",
     "run_positions",
+    "unsolved_positions",
+    "skipped_message",
     "position_text",
     "Diagrams",
     "CYCLE_STEPS",
@@ -292,6 +294,27 @@ class PositionRun:
         """``"φ₂ = 145.0°"``."""
         return position_text(self.scene, self.position)
 
+    @property
+    def reason(self) -> str:
+        """Why the position is not solved: the solver's message (empty for a solved position)."""
+        return "" if self.ok else str(self.error) if self.error is not None else "no graphical construction"
+
+    def brief(self, lang: str = "en") -> str:
+        """The reason in a few words of *lang*, for a listing: ``"RRR(3,4): cannot assemble"`` (empty when solved)."""
+        if self.ok:
+            return ""
+        from .i18n import term
+
+        group = re.match(r"^\s*([A-Z]{3}\([^)]*\))", self.reason)
+        return (f"{group.group(1)}: " if group else "") + term(self.cause, lang)
+
+    @property
+    def cause(self) -> str:
+        """``""`` for a solved position, else ``"dead_centre"`` or ``"no_assembly"`` (keys of :mod:`plans.i18n`)."""
+        if self.ok:
+            return ""
+        return "dead_centre" if isinstance(self.error, SingularPositionError) else "no_assembly"
+
     # --- notebooks -----------------------------------------------------------
 
     def figure(self, *, lang: str = "en"):
@@ -308,18 +331,19 @@ class PositionRun:
         return render_svg(self.figure()).decode("utf-8")
 
     def plot(self, ax=None):
-        """Draw the mechanism at this position into *ax* (a new figure when None); returns the artists."""
+        """Draw the mechanism at this position into *ax* (a new figure when None); returns the Axes."""
         if not self.ok:
             raise self.error
         from .drawing import draw_mechanism
 
-        return draw_mechanism(self.graphical, ax)
+        artists = draw_mechanism(self.graphical, ax)
+        return ax if ax is not None else artists[0].axes
 
     def save(self, path, *, lang: str = "en") -> Path:
-        """Write the position's sheet to *path* (``.svg`` or ``.pdf``), atomically."""
+        """Write the position's sheet to *path* (``.svg``, ``.pdf`` or ``.png``, by its suffix), atomically."""
         if not self.ok:
             raise self.error
-        from .drawing.sheets import save_figure
+        from .drawing.formats import save_figure
 
         return save_figure(self.figure(lang=lang), path)
 
@@ -357,6 +381,15 @@ class PositionsRun:
     def positions(self) -> list[float]:
         return [r.position for r in self.runs]
 
+    @property
+    def skipped(self) -> list[PositionRun]:
+        """The positions that are not solved (no sheet, not drawn), each with its ``reason``."""
+        return [r for r in self.runs if not r.ok]
+
+    def skipped_messages(self) -> list[str]:
+        """One line per position that is not solved: its number, where it is, and why."""
+        return [skipped_message(r.index, r.scene, r.position, r.reason) for r in self.skipped]
+
     def _repr_svg_(self) -> str:
         from .drawing.positions_plan import draw_positions_plan
         from .drawing.svg import render_svg
@@ -368,15 +401,16 @@ class PositionsRun:
         return Diagrams(self.cycle, marked=self.positions, lang=lang, components=components)
 
     def plot(self, ax=None, *, lang: str = "en"):
-        """Draw the plan of positions into *ax* (a new figure when None); returns the artists."""
+        """Draw the plan of positions into *ax* (a new figure when None); returns the Axes."""
         from .drawing.positions_plan import draw_positions_plan
 
-        return draw_positions_plan(self, ax, lang=lang)
+        artists = draw_positions_plan(self, ax, lang=lang)
+        return ax if ax is not None else artists[0].axes
 
     def save(self, path, *, lang: str = "en") -> Path:
-        """Write the plan of positions to *path* (``.svg`` or ``.pdf``)."""
+        """Write the plan of positions to *path* (``.svg``, ``.pdf`` or ``.png``, by its suffix)."""
         from .drawing.positions_plan import draw_positions_plan
-        from .drawing.sheets import save_figure
+        from .drawing.formats import save_figure
 
         return save_figure(draw_positions_plan(self, lang=lang)[0].figure, path)
 
@@ -385,8 +419,8 @@ class Diagrams:
     """Cycle diagrams of an analytic sweep, for notebooks and scripts.
 
     Displays itself inline (every page of :func:`plans.drawing.diagrams.draw_cycle_diagrams`);
-    ``plot(quantity, ax)`` draws one diagram into an Axes; ``save(directory)``
-    writes the SVG pages.
+    ``plot(quantity, ax)`` draws one diagram into an Axes; ``save(path)``
+    writes them to one file (or a file a page) in the format of the path's suffix.
 
     >>> import numpy as np, plans
     >>> scene = plans.load(plans.example_path("four-bar"))
@@ -407,16 +441,18 @@ class Diagrams:
         return draw_cycle_diagrams(self.analytic, marked=self.marked, lang=self.lang, components=self.components)
 
     def plot(self, quantity: str = "omega", ax=None):
-        """One diagram (``"omega"``, ``"v"``, ``"coriolis"`` …) into *ax*; returns the curves."""
+        """One diagram (``"omega"``, ``"v"``, ``"coriolis"`` …) into *ax* (a new figure when None); returns the Axes."""
         from .drawing.diagrams import plot_cycle
 
-        return plot_cycle(self.analytic, quantity, ax, marked=self.marked, lang=self.lang)
+        curves = plot_cycle(self.analytic, quantity, ax, marked=self.marked, lang=self.lang)
+        return ax if ax is not None else curves[0].axes
 
-    def save(self, directory) -> list[Path]:
-        """Write ``links.svg``, ``points.svg`` (and ``sliders.svg``) into *directory*."""
-        from .drawing.diagrams import write_cycle_diagrams
+    def save(self, path) -> list[Path]:
+        """Write the diagrams to *path* in the format its suffix names (see :func:`plans.drawing.formats.save_pages`):
+        ``diagrams.pdf`` a page each, ``diagrams.svg`` / ``.png`` as ``diagrams-links.svg``, ``diagrams-points.svg`` …"""
+        from .drawing.formats import save_pages
 
-        return write_cycle_diagrams(self.analytic, directory, marked=self.marked, lang=self.lang, components=self.components)
+        return save_pages(self.figures(), path)
 
     def _repr_html_(self) -> str:
         from .drawing.svg import render_svg
@@ -427,6 +463,37 @@ class Diagrams:
         from .drawing.svg import render_svg
 
         return render_svg(self.figures()[0][1]).decode("utf-8")
+
+
+def skipped_message(index: int, scene: Scene, position: float, reason: str) -> str:
+    """``"position 1 (φ₂ = 60.0°) is skipped: RRR(3,4): joint B cannot assemble …"``."""
+    return f"position {index} ({position_text(scene, position)}) is skipped: {reason}"
+
+
+def _position_error(scene: Scene, structure, index: int, value: float) -> PlansError:
+    """Why the analytic solver refuses one position: its own message."""
+    from .analytic import solve
+
+    try:
+        solve(scene, [value], structure)
+    except (AssemblyError, SingularPositionError) as exc:
+        return exc
+    return AssemblyError(f"position {index}: the mechanism cannot be solved at {position_text(scene, value)}")
+
+
+def unsolved_positions(scene: Scene, positions) -> list[tuple[int, float, PlansError]]:
+    """(number, position, error) of each position the mechanism cannot be solved at, by the analytic solver alone.
+
+    The same errors :func:`run_positions` keeps in its runs, found without
+    the graphical construction (for a message before a long job).
+    """
+    from .analytic import solve
+    from .structure import find_structure
+
+    structure = find_structure(scene)
+    values = parse_positions(positions, scene) if positions is not None else [scene.driver.phi if _is_crank(scene) else scene.driver.s]
+    sweep = solve(scene, np.asarray(values, dtype=float), structure, allow_partial=True)
+    return [(k, v, _position_error(scene, structure, k, v)) for k, v in enumerate(values) if not bool(sweep.valid[k])]
 
 
 def _hints_at(scene: Scene, analytic, k: int) -> dict:
@@ -451,6 +518,7 @@ def run_positions(
     precision: float | None = None,
     drawn_max: dict[str, float] | float = 120.0,
     cycle_steps: int = CYCLE_STEPS,
+    check_scales: bool = True,
 ) -> PositionsRun:
     """Solve the mechanism at every position, analytically and graphically, at one set of scales.
 
@@ -470,6 +538,9 @@ def run_positions(
         Longest drawn length [mm] the automatic factors allow.
     cycle_steps : int
         Positions of the dense analytic sweep over the cycle.
+    check_scales : bool
+        Refuse given factors that draw a figure larger than a sheet or
+        smaller than 1 mm at some position (see :func:`plans.graphical.construct`).
 
     Returns
     -------
@@ -512,16 +583,11 @@ def run_positions(
     prepared = []
     for index, value in enumerate(values):
         here = replace(scene.at(value), assembly=_hints_at(scene, sweep, index))
-        if not bool(sweep.valid[index]):
-            try:  # the solver's own message for this position
-                solve(scene, [value], structure)
-                error: PlansError = AssemblyError(f"position {index}: the mechanism cannot be solved at {position_text(scene, value)}")
-            except (AssemblyError, SingularPositionError) as exc:
-                error = exc
-            prepared.append((index, value, here, None, error))
+        if not bool(sweep.valid[index]):  # the solver's own message for this position
+            prepared.append((index, value, here, None, _position_error(scene, structure, index, value)))
             continue
         try:
-            first = construct(here, structure, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision)
+            first = construct(here, structure, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, check_scales=check_scales)
         except (AssemblyError, SingularPositionError) as exc:
             prepared.append((index, value, here, None, exc))
             continue
@@ -538,7 +604,8 @@ def run_positions(
             runs.append(PositionRun(index, value, here, error=error))
             continue
         graphical = construct(
-            here, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision
+            here, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision,
+            check_scales=False,  # given factors were checked above; common ones are plans' own choice
         )
         analytic = sweep.at(index)
         runs.append(PositionRun(index, value, here, analytic, graphical, compare(analytic, graphical)))

@@ -17,16 +17,23 @@ from .compare import PLAN_QUANTITIES, QUANTITIES, Comparison
 from .errors import PlansError
 from .limits import expected_rel_error
 from .scene import Crank, Scene
+from .sweep import sweep_csv
+from .structure import branches
 
 __all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table"]
 
 SCHEMA_VERSION = 1
 
 
-def _clean(x: float) -> float:
-    """Floats for output: -0.0 becomes 0.0."""
+#: A value at most this fraction of its quantity's scale (the largest value of that kind at
+#: the same position: lengths, velocities, accelerations, ω, ε) is round-off and reported as 0.
+ROUNDOFF = 1e-12
+
+
+def _clean(x: float, scale: float = 0.0) -> float:
+    """Floats for output: -0.0 becomes 0.0, and so does round-off far below *scale* (:data:`ROUNDOFF`)."""
     x = float(x)
-    return 0.0 if x == 0 else x
+    return 0.0 if x == 0 or abs(x) <= ROUNDOFF * scale else x
 
 
 def _sine(x: float) -> float:
@@ -39,14 +46,54 @@ def _condition(x: float) -> float:
     return max(_clean(x), 1.0)
 
 
-def _vec(z: complex) -> list[float]:
-    return [_clean(z.real), _clean(z.imag)]
+def _vec(z: complex, scale: float = 0.0) -> list[float]:
+    z = complex(z)
+    return [_clean(z.real, scale), _clean(z.imag, scale)]
+
+
+def _as_given(x: float) -> float:
+    """*x* without the round-off of a unit conversion: a value within a few units in the last
+    place of a number with 12 significant digits is that number (0.35000000000000003 is 0.35)."""
+    short = float(f"{x:.12g}")
+    return short if abs(short - x) <= 8 * math.ulp(x) else x
 
 
 def _deg(phi: float) -> float:
-    """An angle in degrees in (−180, 180]."""
-    d = math.degrees(math.remainder(phi, 2 * math.pi))
-    return 180.0 if d == -180.0 else _clean(d)
+    """An angle [rad] in degrees in [0, 360), as the courses write angles.
+
+    The round-off of the conversion is removed: an angle given as 30° comes
+    back as 30, not 29.999999999999996 (a result within a few units in the
+    last place of a value with 12 significant digits is that value), and an
+    angle within 360·:data:`ROUNDOFF` of a full turn is 0.
+    """
+    d = _as_given(math.degrees(float(phi)) % 360.0)
+    if d <= 360.0 * ROUNDOFF or 360.0 - d <= 360.0 * ROUNDOFF:
+        return 0.0
+    return d
+
+
+def _scales(analytic, k: int) -> dict[str, float]:
+    """The scale of each kind of quantity at position k: the largest magnitude of that kind (for :func:`_clean`)."""
+    def largest(values):
+        finite = [abs(complex(v)) for v in values if math.isfinite(abs(complex(v)))]
+        return max(finite, default=0.0)
+
+    points = analytic.points.values()
+    sliders = analytic.sliders.values()
+    links = analytic.links.values()
+    acc = analytic.scene.accelerations
+    return {
+        "length": largest([m.r[k] for m in points] + [m.s[k] for m in sliders]),
+        "velocity": largest([m.v[k] for m in points] + [m.v_rel[k] for m in sliders]),
+        "acceleration": largest([m.a[k] for m in points] + [m.a_rel[k] for m in sliders] + [m.coriolis[k] for m in sliders]) if acc else 0.0,
+        "omega": largest([m.omega[k] for m in links]),
+        "epsilon": largest([m.epsilon[k] for m in links]) if acc else 0.0,
+    }
+
+
+#: The kind of each compared quantity, for its scale.
+_KIND = {"r": "length", "s": "length", "v": "velocity", "v_rel": "velocity", "a": "acceleration",
+         "a_rel": "acceleration", "coriolis": "acceleration", "omega": "omega", "epsilon": "epsilon"}
 
 
 def check_finite(analytic, graphical=None, comparisons: list[Comparison] | None = None, position: int = 0) -> None:
@@ -115,7 +162,7 @@ def _driver_words(scene: Scene) -> str:
     d = scene.driver
     if isinstance(d, Crank):
         return (
-            f"crank {d.link} about {d.pivot}: φ = {math.degrees(d.phi):.3f}°, "
+            f"crank {d.link} about {d.pivot}: φ = {_deg(d.phi):.3f}°, "
             f"ω = {d.omega:.6g} rad/s, ε = {d.epsilon:.6g} rad/s²"
         )
     return (
@@ -131,7 +178,7 @@ def _graphical_lookup(comparisons: list[Comparison] | None):
     return table
 
 
-def _graphical_entry(rows: dict, section: str, name: str, accelerations: bool) -> dict:
+def _graphical_entry(rows: dict, section: str, name: str, accelerations: bool, scales: dict) -> dict:
     """The ``"graphical"`` entry of one point, link or slider: each compared value with its errors."""
     entry: dict = {}
     for quantity, needs_accelerations in QUANTITIES[section]:
@@ -139,7 +186,8 @@ def _graphical_entry(rows: dict, section: str, name: str, accelerations: bool) -
         if row is None or (needs_accelerations and not accelerations):
             continue
         value = row.graphical
-        entry[quantity] = _vec(value) if isinstance(value, complex) else _clean(value)
+        scale = scales[_KIND[quantity]]
+        entry[quantity] = _vec(value, scale) if isinstance(value, complex) else _clean(value, scale)
         entry[f"{quantity}_abs_error"] = _clean(row.abs_error)
         entry[f"{quantity}_rel_error"] = _clean(row.rel_error)
     return entry
@@ -164,6 +212,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
     k = position
     acc = scene.accelerations
     rows = _graphical_lookup(comparisons)
+    sc = _scales(analytic, k)
     doc: dict = {
         "schema": SCHEMA_VERSION,
         "title": scene.title,
@@ -178,30 +227,31 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
     }
     for name in scene.report:
         motion = analytic.points[name]
-        entry = {"analytic": {"r": _vec(motion.r[k]), "v": _vec(motion.v[k])}}
+        entry = {"analytic": {"r": _vec(motion.r[k], sc["length"]), "v": _vec(motion.v[k], sc["velocity"])}}
         if acc:
-            entry["analytic"]["a"] = _vec(motion.a[k])
+            entry["analytic"]["a"] = _vec(motion.a[k], sc["acceleration"])
         if graphical is not None:
-            entry["graphical"] = _graphical_entry(rows, "points", name, acc)
+            entry["graphical"] = _graphical_entry(rows, "points", name, acc, sc)
         doc["points"][name] = entry
     for name in scene.links:
         motion = analytic.links[name]
-        entry = {"analytic": {"phi_deg": _deg(motion.phi[k]), "omega": _clean(motion.omega[k])}}
+        entry = {"analytic": {"phi_deg": _deg(motion.phi[k]), "omega": _clean(motion.omega[k], sc["omega"])}}
         if acc:
-            entry["analytic"]["epsilon"] = _clean(motion.epsilon[k])
+            entry["analytic"]["epsilon"] = _clean(motion.epsilon[k], sc["epsilon"])
         if graphical is not None and name in graphical.links:
-            entry["graphical"] = _graphical_entry(rows, "links", name, acc)
+            entry["graphical"] = _graphical_entry(rows, "links", name, acc, sc)
         doc["links"][name] = entry
     for prismatic in scene.prismatics:
         name = prismatic.name
         motion = analytic.sliders[name]
-        entry = {"analytic": {"s": _clean(motion.s[k]), "v_rel": _clean(motion.v_rel[k])}}
+        entry = {"analytic": {"s": _clean(motion.s[k], sc["length"]), "v_rel": _clean(motion.v_rel[k], sc["velocity"])}}
         if acc:
-            entry["analytic"]["a_rel"] = _clean(motion.a_rel[k])
-            entry["analytic"]["coriolis"] = _vec(motion.coriolis[k])
+            entry["analytic"]["a_rel"] = _clean(motion.a_rel[k], sc["acceleration"])
+            entry["analytic"]["coriolis"] = _vec(motion.coriolis[k], sc["acceleration"])
         if graphical is not None and name in graphical.sliders:
-            entry["graphical"] = _graphical_entry(rows, "sliders", name, acc)
+            entry["graphical"] = _graphical_entry(rows, "sliders", name, acc, sc)
         doc["sliders"][name] = entry
+    branch_of = {b.group: b for b in branches(analytic, k)}
     for group in analytic.structure.groups:
         condition = _condition(analytic.conditions[group.name][k])
         entry = {"kind": group.kind, "links": list(group.links), "joint": group.joint,
@@ -214,6 +264,7 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
                 entry["graphical_condition"] = _condition(graphical.conditions[group.name])
         else:
             entry["sine"] = entry["analytic_sine"]
+        entry["branch"] = branch_of[group.name].as_dict()
         doc["groups"][group.name] = entry
     position_value = float(analytic.driver[k])
     warnings = [w for w in analytic.warnings if w.position == position_value]
@@ -235,20 +286,20 @@ def format_json(doc: dict) -> str:
 # --- text table --------------------------------------------------------------
 
 
-def _vector_cells(z: complex) -> list[str]:
-    z = complex(_clean(z.real), _clean(z.imag))
+def _vector_cells(z: complex, scale: float = 0.0) -> list[str]:
+    z = complex(*_vec(z, scale))
     magnitude = abs(z)
-    direction = f"{math.degrees(cmath.phase(z)):9.3f}" if magnitude > 0 else "        —"
+    direction = f"{_deg(cmath.phase(z)):9.3f}" if magnitude > 0 else "        —"
     return [f"{z.real:13.6g}", f"{z.imag:13.6g}", f"{magnitude:13.6g}", direction]
 
 
-def _slider_words(travel: float, v_rel: float, accelerations: tuple | None) -> str:
+def _slider_words(travel: float, v_rel: float, accelerations: tuple | None, sc: dict) -> str:
     """``s = …, v_rel = …[, a_rel = …, Coriolis = (x, y) |magnitude|]`` of one slider."""
-    words = f"s = {travel:.6g}, v_rel = {v_rel:.6g}"
+    words = f"s = {_clean(travel, sc['length']):.6g}, v_rel = {_clean(v_rel, sc['velocity']):.6g}"
     if accelerations is not None:
         a_rel, coriolis = accelerations
-        c = complex(*_vec(complex(coriolis)))
-        words += f", a_rel = {a_rel:.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|"
+        c = complex(*_vec(complex(coriolis), sc["acceleration"]))
+        words += f", a_rel = {_clean(a_rel, sc['acceleration']):.6g}, Coriolis = ({c.real:.6g}, {c.imag:.6g}) |{abs(c):.6g}|"
     return words
 
 
@@ -265,6 +316,7 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
     k = position
     acc = scene.accelerations
     rows = _graphical_lookup(comparisons)
+    sc = _scales(analytic, k)
     out = io.StringIO()
     w = out.write
     w(f"{scene.title}\n")
@@ -284,24 +336,24 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
         quantities = [("r", motion.r[k]), ("v", motion.v[k])] + ([("a", motion.a[k])] if acc else [])
         for index, (q, value) in enumerate(quantities):
             label = name if index == 0 else ""
-            w(f"{label:6} {q:3} {'analytic':9} " + " ".join(_vector_cells(complex(value))) + "\n")
+            w(f"{label:6} {q:3} {'analytic':9} " + " ".join(_vector_cells(complex(value), sc[_KIND[q]])) + "\n")
             row = rows.get(("points", name, q))
             if row is not None:
-                w(f"{'':6} {'':3} {'graphical':9} " + " ".join(_vector_cells(complex(row.graphical)))
+                w(f"{'':6} {'':3} {'graphical':9} " + " ".join(_vector_cells(complex(row.graphical), sc[_KIND[q]]))
                   + " " + " ".join(_error_cells(row)) + "\n")
     w("\nLinks   φ [°], ω [rad/s], ε [rad/s²]; counter-clockwise positive\n")
     w(f"{'link':6} {'method':9} {'φ [°]':>11} {'ω':>13} " + (f"{'ε':>13}" if acc else "") + "\n")
     for name in scene.links:
         motion = analytic.links[name]
-        line = f"{name:6} {'analytic':9} {_deg(motion.phi[k]):11.4f} {motion.omega[k]:13.6g} "
+        line = f"{name:6} {'analytic':9} {_deg(motion.phi[k]):11.4f} {_clean(motion.omega[k], sc['omega']):13.6g} "
         if acc:
-            line += f"{motion.epsilon[k]:13.6g}"
+            line += f"{_clean(motion.epsilon[k], sc['epsilon']):13.6g}"
         w(line.rstrip() + "\n")
         om, ep = rows.get(("links", name, "omega")), rows.get(("links", name, "epsilon"))
         if om is not None:
-            line = f"{'':6} {'graphical':9} {'':11} {om.graphical:13.6g} "
+            line = f"{'':6} {'graphical':9} {'':11} {_clean(om.graphical, sc['omega']):13.6g} "
             if ep is not None:
-                line += f"{ep.graphical:13.6g}"
+                line += f"{_clean(ep.graphical, sc['epsilon']):13.6g}"
             w(line.rstrip() + "\n")
             errors = [f"ω {om.abs_error:.2e} ({om.rel_error:.1e} rel)"]
             if ep is not None:
@@ -315,14 +367,15 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
             what = f"{prismatic.slider}.{prismatic.slider_line} on {prismatic.guide}.{prismatic.guide_line}"
             w(f"{name} ({what})\n")
             accelerations = (motion.a_rel[k], motion.coriolis[k]) if acc else None
-            w(f"  analytic   {_slider_words(motion.s[k], motion.v_rel[k], accelerations)}\n")
+            w(f"  analytic   {_slider_words(motion.s[k], motion.v_rel[k], accelerations, sc)}\n")
             vr = rows.get(("sliders", name, "v_rel"))
             if vr is not None:
                 sr, ar, co = (rows.get(("sliders", name, q)) for q in ("s", "a_rel", "coriolis"))
                 accelerations = (ar.graphical, co.graphical) if ar is not None else None
                 worst = max((r for r in (sr, vr, ar, co) if r is not None), key=lambda r: r.rel_error)
-                w(f"  graphical  {_slider_words(sr.graphical, vr.graphical, accelerations)}"
+                w(f"  graphical  {_slider_words(sr.graphical, vr.graphical, accelerations, sc)}"
                   f"   (largest rel err {worst.rel_error:.1e})\n")
+    branch_of = {b.group: b for b in branches(analytic, k)}
     w("\nGroups   condition number of the analytic 2×2 system; |sin| between the construction lines; "
       "expected relative error of v, a (4·ε_mach·condition²)\n")
     for group in analytic.structure.groups:
@@ -332,6 +385,7 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
         line = (f"{group.name:12} joint {group.joint:4} condition {condition:10.4g}   sine {sine_text}"
                 f"   expected rel. error {expected_rel_error(condition):.1e}")
         w(line + "\n")
+        w(f"{'':12} {_branch_words(branch_of[group.name])}\n")
     if comparisons:
         worst = max(comparisons, key=lambda r: r.rel_error)
         w(f"\nlargest relative difference graphical vs analytic: {worst.rel_error:.2e} "
@@ -339,69 +393,18 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
     return out.getvalue()
 
 
+def _branch_words(branch) -> str:
+    """``branch +1: C to the left of B→D (default (+1); another assembly exists there)``."""
+    if branch.sign == 0:
+        return "branch: one assembly only"
+    other = "another assembly exists there" if branch.other_assembly else "no other assembly there (dead centre)"
+    return f"branch {branch.sign:+d}: {branch.words} (chosen by {branch.chosen_by}; {other})"
+
+
 # --- sweep CSV -----------------------------------------------------------------
 
 
-def sweep_csv(analytic) -> str:
-    """Every quantity over the solved driver positions, one row per position.
-
-    Columns: the driver position (``phi_deg`` for a crank, ``s`` [m] for a
-    linear driver), then per link ``phi_deg``, ``omega``, ``epsilon``; per
-    reported point ``x, y, vx, vy, ax, ay``; per slider ``s, v_rel, a_rel,
-    coriolis_x, coriolis_y``; per group its condition number, the |sin| of
-    the angle between its construction lines and the expected relative error
-    of its velocities and accelerations (4·ε_mach·condition², :mod:`plans.limits`).  Acceleration
-    columns are left out when the scene asks for velocities only.  Positions
-    where the mechanism cannot assemble or sits at a dead centre have empty
-    cells and ``assembled = 0``; a cell is never NaN or infinite (such a
-    value is left empty).
-    """
-    scene = analytic.scene
-    acc = scene.accelerations
-    columns: list[tuple[str, object]] = []
-    if isinstance(scene.driver, Crank):
-        columns.append(("driver_phi_deg", [math.degrees(x) for x in analytic.driver]))
-    else:
-        columns.append(("driver_s", list(analytic.driver)))
-    valid = list(getattr(analytic, "valid", [True] * len(analytic.driver)))
-    columns.append(("assembled", [1 if v else 0 for v in valid]))
-    for name in scene.links:
-        m = analytic.links[name]
-        columns.append((f"{name}.phi_deg", [math.degrees(x) for x in m.phi]))
-        columns.append((f"{name}.omega", m.omega))
-        if acc:
-            columns.append((f"{name}.epsilon", m.epsilon))
-    for name in scene.report:
-        m = analytic.points[name]
-        columns += [(f"{name}.x", m.r.real), (f"{name}.y", m.r.imag), (f"{name}.vx", m.v.real), (f"{name}.vy", m.v.imag)]
-        if acc:
-            columns += [(f"{name}.ax", m.a.real), (f"{name}.ay", m.a.imag)]
-    for prismatic in scene.prismatics:
-        m = analytic.sliders[prismatic.name]
-        columns += [(f"{prismatic.name}.s", m.s), (f"{prismatic.name}.v_rel", m.v_rel)]
-        if acc:
-            columns += [(f"{prismatic.name}.a_rel", m.a_rel), (f"{prismatic.name}.coriolis_x", m.coriolis.real),
-                        (f"{prismatic.name}.coriolis_y", m.coriolis.imag)]
-    for group in analytic.structure.groups:
-        columns.append((f"{group.name}.condition", analytic.conditions[group.name]))
-        columns.append((f"{group.name}.sine", analytic.sines[group.name]))
-        columns.append((f"{group.name}.expected_rel_error", expected_rel_error(analytic.conditions[group.name])))
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(name for name, _ in columns)
-    values = [list(v) for _, v in columns]
-    for k in range(len(analytic.driver)):
-        cells = []
-        for index, column in enumerate(values):
-            x = float(column[k])
-            if index > 1 and (not valid[k] or not math.isfinite(x)):
-                cells.append("")
-            elif index == 1:
-                cells.append(str(int(x)))
-            else:
-                cells.append(repr(_clean(x)))
-        writer.writerow(cells)
-    return out.getvalue()
+# sweep_csv lives with the sweep's analysis (plans/sweep.py) and is imported above.
 
 
 # --- the sheet's results table -------------------------------------------------
@@ -432,7 +435,7 @@ def _number(value: float, digits: int = 4) -> str:
 
 def _magnitude(value) -> str:
     if isinstance(value, complex):
-        return f"{_number(abs(value))} ∠ {math.degrees(cmath.phase(value)):.1f}°".replace("-", "−") if value != 0 else "0"
+        return f"{_number(abs(value))} ∠ {_deg(cmath.phase(value)):.1f}°".replace("-", "−") if value != 0 else "0"
     return _number(value)
 
 
@@ -467,3 +470,127 @@ def sheet_table(comparisons: list[Comparison]) -> list[list[str]]:
             label = f"${_SYMBOL[row.quantity]}_{{{row.name}}}$ [{_UNITS[row.quantity]}]"
         rows.append([label, _magnitude(row.graphical), _magnitude(row.analytic), _error(row.rel_error)])
     return rows
+
+
+# --- instant centres (plans.centres) ---------------------------------------------
+
+__all__ += ["centres_json", "add_centres_json", "centres_table", "centres_comparison_table"]
+
+
+def _centre_where(centre) -> list:
+    """``[x, y]`` of a finite centre, or None."""
+    return None if centre.point is None else [_as_given(x) for x in _vec(centre.point)]
+
+
+def _centre_direction(centre) -> float | None:
+    """The direction [°] of a centre at infinity, in [0, 180); None for another."""
+    d = centre.direction_deg
+    return None if d is None else _as_given(_clean(d))
+
+
+def _found_words(centre) -> str:
+    if not centre.determined:
+        return f"undetermined: {centre.why}"
+    if centre.found_by == "kennedy":
+        (a, b), (c, d) = centre.lines
+        return f"Kennedy: {a}{b} ∩ {c}{d}"
+    return centre.found_by
+
+
+def centres_json(result) -> dict:
+    """The ``"centres"`` entry of the JSON document: body numbers and every centre.
+
+    Each centre: ``bodies`` (names), ``point`` [m] or null, ``direction_deg``
+    (of a centre at infinity, in [0, 180)) or null, ``found_by``
+    (``"revolute A"``, ``"prismatic NAME"``, ``"kennedy"``, ``"undetermined"``),
+    ``lines`` (the two Kennedy lines, as pairs of centre labels) and, for an
+    undetermined centre only, ``why``.
+    """
+    return {
+        "body_numbers": dict(result.numbers),
+        "list": [
+            {"label": c.label, "bodies": list(c.bodies), "point": _centre_where(c), "direction_deg": _centre_direction(c),
+             "found_by": c.found_by, "lines": [list(line) for line in c.lines], **({} if c.determined else {"why": c.why})}
+            for c in result.centres
+        ],
+    }
+
+
+def add_centres_json(doc: dict, result, comparisons: list[Comparison]) -> dict:
+    """Add the instant-centre method to a :func:`solution_json` document, in place (and return it).
+
+    Each reported point gets ``"centres": {"v", "v_abs_error", "v_rel_error"}``
+    and each link ``"centres": {"omega", "omega_abs_error", "omega_rel_error"}``
+    beside ``"analytic"`` (errors against analytic, as for ``"graphical"``),
+    and the document gets the ``"centres"`` key of :func:`centres_json`.
+    """
+    for row in comparisons:
+        value = _vec(row.graphical) if isinstance(row.graphical, complex) else _clean(row.graphical)
+        entry = {row.quantity: value, f"{row.quantity}_abs_error": _clean(row.abs_error),
+                 f"{row.quantity}_rel_error": _clean(row.rel_error)}
+        target = doc[row.section].get(row.name)
+        if target is not None:
+            target["centres"] = entry
+    doc["centres"] = centres_json(result)
+    return doc
+
+
+def _check_finite_centres(result) -> None:
+    for name, omega in result.links.items():
+        if not math.isfinite(omega):
+            raise PlansError(f"{result.scene.source}: ω of link {name} from the instant centres is not a finite number")
+    for name, v in result.points.items():
+        if not (math.isfinite(v.real) and math.isfinite(v.imag)):
+            raise PlansError(f"{result.scene.source}: v of point {name} from the instant centres is not a finite number")
+
+
+def centres_table(result) -> str:
+    """Every instant centre (where, or its direction at infinity, and what gave it), then ω and v from the centres."""
+    _check_finite_centres(result)
+    scene = result.scene
+    out = io.StringIO()
+    w = out.write
+    n = len(result.numbers)
+    names = ", ".join(f"{number} = {'frame' if body == 'frame' else 'link ' + body}" for body, number in result.numbers.items())
+    w(f"{scene.title}\n")
+    w(f"driver: {_driver_words(scene)}\n")
+    w(f"bodies: {names}\n")
+    w(f"\nInstant centres: n = {n} bodies, n(n−1)/2 = {len(result.centres)} centres; x, y [m], or the direction [°] of a centre at infinity\n")
+    w(f"{'centre':8} {'bodies':8} {'x':>13} {'y':>13}   found by\n")
+    for c in result.centres:
+        pair = ",".join(result.numbers[b] for b in c.bodies)
+        if c.point is not None:
+            where = f"{_clean(c.point.real):13.6g} {_clean(c.point.imag):13.6g}"
+        elif not c.determined:
+            where = f"{'—':>13} {'—':>13}"
+        else:
+            where = f"{'at infinity':>13} {_centre_direction(c):12.3f}°"
+        w(f"{c.label:8} {pair:8} {where}   {_found_words(c)}\n")
+    w("\nVelocities from the centres: ω_j from the ratio theorem, v_M = ω_j × (M − P1j)\n")
+    w(f"{'link':6} {'ω [rad/s]':>13}   {'about':6}\n")
+    for name in [body for body in result.numbers if body != "frame"]:
+        centre = next(c for c in result.centres if set(c.bodies) == {"frame", name})
+        about = centre.label if centre.point is not None else f"{centre.label} (translates)"
+        w(f"{name:6} {_clean(result.links[name]):13.6g}   {about}\n")
+    w(f"\n{'point':6} {'vx [m/s]':>13} {'vy [m/s]':>13} {'|v|':>13} {'dir [°]':>9}\n")
+    for name in scene.report:
+        w(f"{name:6} " + " ".join(_vector_cells(complex(result.points[name]))) + "\n")
+    return out.getvalue()
+
+
+def centres_comparison_table(comparisons: list[Comparison]) -> str:
+    """The solve table's section for the third method: ω and v from the instant centres, with errors against analytic."""
+    out = io.StringIO()
+    w = out.write
+    w("\nInstant centres (Kennedy), a third method: ω of links, v of points; errors against analytic\n")
+    w(f"{'':6} {'':5} {'centres':>13} {'analytic':>13} {'abs err':>10} {'rel err':>10}\n")
+    for row in comparisons:
+        if row.section == "links":
+            w(f"{'link ' + row.name:10} ω {row.graphical:13.6g} {row.analytic:13.6g} {row.abs_error:10.2e} {row.rel_error:10.2e}\n")
+        else:
+            c, a = complex(row.graphical), complex(row.analytic)
+            w(f"{row.name:10} v {abs(c):13.6g} {abs(a):13.6g} {row.abs_error:10.2e} {row.rel_error:10.2e}   (|v|; error of the vector)\n")
+    if comparisons:
+        worst = max(comparisons, key=lambda r: r.rel_error)
+        w(f"largest relative difference centres vs analytic: {worst.rel_error:.2e} ({worst.section[:-1]} {worst.name}, {worst.quantity})\n")
+    return out.getvalue()

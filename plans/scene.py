@@ -51,6 +51,7 @@ __all__ = [
     "body_words",
     "example_names",
     "example_path",
+    "diameter",
 ]
 
 #: The name of the fixed body.  Structural formulas print it as 0.
@@ -212,6 +213,12 @@ class Scene:
     report: tuple[str, ...]
     scales: Scales
     source: str = "<scene>"
+    #: Line numbers of keys in the scene file, such as ``{"assembly.C": 31}``,
+    #: for messages about them found after loading.
+    key_lines: dict[str, int] = field(default_factory=dict, compare=False, repr=False)
+    #: Advice for errors found after loading: a bare length (metres) far larger than the
+    #: scene's other lengths, written by someone who meant millimetres.
+    notes: tuple[str, ...] = field(default=(), compare=False, repr=False)
 
     # --- derived views, for solvers and drawings -----------------------------
 
@@ -298,35 +305,101 @@ def load(path: str | Path) -> Scene:
         Naming the file, the key and what is wrong.
     """
     path = Path(path)
+    return loads(_read_scene_text(path), source=str(path))
+
+
+#: Largest scene file plans reads [bytes]: far above any real scene (the bundled ones are ~1 kB).
+MAX_SCENE_BYTES = 1_000_000
+#: Deepest nesting of TOML arrays and tables a scene may have (a real scene nests 5 deep).
+MAX_NESTING = 32
+#: Most points (named points of all bodies, frame included) a scene may have.
+MAX_POINTS = 2_000
+#: Most bodies (moving links and slider blocks) a scene may have.
+MAX_LINKS = 200
+_MB = f"{MAX_SCENE_BYTES / 1e6:g} MB ({MAX_SCENE_BYTES:,} bytes)"
+
+
+def _read_scene_text(path: Path) -> str:
+    """The text of a scene file: a regular file of at most MAX_SCENE_BYTES, UTF-8.
+
+    Devices, pipes and directories are refused without reading from them
+    (``/dev/zero`` would never end); the file is opened non-blocking so that a
+    FIFO with no writer is refused at once instead of hanging.
+    """
+    import os
+    import stat
+
     try:
-        text = path.read_text(encoding="utf-8")
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_CLOEXEC", 0))
     except OSError as exc:
         raise SceneError(f"cannot read the scene file: {exc.strerror or exc}", str(path)) from None
+    mode = os.fstat(fd).st_mode
+    if not stat.S_ISREG(mode):
+        os.close(fd)
+        kind = "a directory" if stat.S_ISDIR(mode) else "not a regular file (a device, pipe or socket)"
+        raise SceneError(f"cannot read the scene file: it is {kind}; a scene is a TOML text file", str(path))
+    with os.fdopen(fd, "rb") as handle:
+        try:
+            data = handle.read(MAX_SCENE_BYTES + 1)
+        except OSError as exc:
+            raise SceneError(f"cannot read the scene file: {exc.strerror or exc}", str(path)) from None
+    if len(data) > MAX_SCENE_BYTES:
+        raise SceneError(
+            f"the scene file is larger than {_MB}, the most plans reads (a scene of a real mechanism is a few kB)",
+            str(path),
+        )
+    try:
+        return data.decode("utf-8")
     except UnicodeDecodeError:
         raise SceneError("the scene file is not UTF-8 text", str(path)) from None
-    return loads(text, source=str(path))
 
 
 def loads(text: str, source: str = "<scene>") -> Scene:
     """Validate a scene given as TOML text; see :func:`load`."""
+    if len(text) > MAX_SCENE_BYTES:
+        raise SceneError(f"the scene is larger than {_MB}, the most plans reads", source)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"not valid TOML: {exc}", source) from None
+    except RecursionError:  # the parser recurses once per level of nested arrays or inline tables
+        raise SceneError(_too_deep(), source) from None
+    _check_nesting(data, source)
     return _SceneReader(data, source, text).scene()
+
+
+def _too_deep() -> str:
+    return (
+        f"arrays or tables are nested more than {MAX_NESTING} deep; "
+        "a scene nests a few levels (link.2.points.A = [x, y])"
+    )
+
+
+def _check_nesting(data: object, source: str) -> None:
+    """Refuse values nested deeper than MAX_NESTING (checked without recursion)."""
+    stack = [(data, 0)]
+    while stack:
+        value, depth = stack.pop()
+        if depth > MAX_NESTING:
+            raise SceneError(_too_deep(), source)
+        if isinstance(value, dict):
+            stack.extend((v, depth + 1) for v in value.values())
+        elif isinstance(value, list):
+            stack.extend((v, depth + 1) for v in value)
 
 
 def from_mapping(data: dict, source: str = "<scene>") -> Scene:
     """Validate a scene given as the mapping TOML would parse to (for programs that build scenes)."""
     if not isinstance(data, dict):
         raise SceneError(f"a scene is a table of sections, got {_describe(data)}", source)
+    _check_nesting(data, source)
     return _SceneReader(data, source, "").scene()
 
 
 _TOP_KEYS = ("title", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales")
 _BODY_KEYS = ("points", "lines")
 _LINE_KEYS = ("through", "angle", "direction")
-_SLIDER_KEYS = ("pin", "on", "name")
+_SLIDER_KEYS = ("pin", "on", "name", "points")
 _PRISMATIC_KEYS = ("line", "on", "name")
 _CRANK_KEYS = ("crank", "pivot", "angle", "omega", "epsilon")
 _LINEAR_KEYS = ("slider", "on", "point", "position", "velocity", "acceleration", "stroke")
@@ -350,6 +423,27 @@ class _SceneReader:
         self.data = data
         self.source = source
         self.text = text
+        self.lengths: list[tuple[str, object, float]] = []  # (field, as written, m) of every length read
+
+    #: A bare length this many times the median of the scene's lengths is implausible.
+    IMPLAUSIBLE = 20.0
+
+    def length_notes(self) -> tuple[str, ...]:
+        """Bare lengths (metres) implausibly large next to the others: the hint that bare lengths are metres."""
+        sizes = sorted(abs(m) for _, _, m in self.lengths if m != 0)
+        if not sizes:
+            return ()
+        median = sizes[len(sizes) // 2]
+        notes = []
+        for field, written, metres in self.lengths:
+            if isinstance(written, (int, float)) and not isinstance(written, bool) and abs(metres) >= 1 and abs(metres) >= self.IMPLAUSIBLE * median:
+                line = self._line_of(field)
+                where = f"{field} (line {line})" if line else field
+                notes.append(
+                    f"bare lengths are metres: {where} = {written:g} is {abs(metres):g} m, next to lengths of about "
+                    f"{median:.3g} m in the rest of the scene; write \"{written:g} mm\" if millimetres were meant"
+                )
+        return tuple(notes[:1])
 
     # -- helpers ---------------------------------------------------------------
 
@@ -359,25 +453,49 @@ class _SceneReader:
         return SceneError(message, self.source, where)
 
     def _line_of(self, field: str) -> int | None:
-        """Best-effort line number of a key path in the TOML text."""
-        parts = field.split(".")
+        """Line number of a key path in the TOML text (best effort).
+
+        The key is looked for inside its own section: the ``[link.3]`` header
+        (trailing comments allowed), the k-th ``[[slider]]`` for ``slider.k``,
+        up to the next header; a key path no header names (a point inside an
+        inline table) is looked for from its nearest enclosing header.
+        """
+        parts = re.sub(r"\[\d+\]", "", field).split(".")
         lines = self.text.splitlines()
-        for depth in range(len(parts), 0, -1):
-            key = parts[depth - 1]
-            if key.isdigit() and depth >= 2 and parts[depth - 2] in ("slider", "prismatic"):
+        headers: list[tuple[int, str]] = []
+        counts: dict[str, int] = {}
+        for i, text in enumerate(lines):
+            code = text.split("#", 1)[0].strip()
+            if code.startswith("[[") and code.endswith("]]"):
+                name = code[2:-2].strip()
+                headers.append((i, f"{name}.{counts.get(name, 0)}"))
+                counts[name] = counts.get(name, 0) + 1
+            elif code.startswith("[") and code.endswith("]"):
+                headers.append((i, code[1:-1].strip()))
+        # the longest prefix of the key path that a header names
+        section, depth = None, 0
+        for k in range(len(parts), 0, -1):
+            prefix = ".".join(parts[:k])
+            match = [(i, h) for i, h in headers if h.replace('"', "") == prefix]
+            if match:
+                section, depth = match[0][0], k
+                break
+        if section is None:
+            first, last = 0, (headers[0][0] if headers else len(lines))
+        else:
+            first = section
+            later = [i for i, _ in headers if i > section]
+            last = later[0] if later else len(lines)
+            if depth == len(parts):
+                return section + 1
+        for key in reversed(parts[depth:]):
+            if key.isdigit():
                 continue
             pattern = re.compile(rf'(^|[\s{{,.\[])"?{re.escape(key)}"?\s*(=|\]|\.)')
-            header = ".".join(parts[: depth - 1])
-            start = 0
-            if header:
-                for i, text in enumerate(lines):
-                    if text.strip().strip("[]").strip() == header:
-                        start = i
-                        break
-            for i in range(start, len(lines)):
+            for i in range(first, last):
                 if pattern.search(lines[i].split("#", 1)[0]):
                     return i + 1
-        return None
+        return section + 1 if section is not None else None
 
     def check_keys(self, table: dict, allowed: tuple[str, ...], field: str) -> None:
         for key in table:
@@ -397,6 +515,8 @@ class _SceneReader:
             number = parse_quantity(value, kind)
         except UnitError as exc:
             raise self.fail(field, str(exc)) from None
+        if kind == "length" and field.split(".")[0] in ("frame", "link", "slider"):
+            self.lengths.append((field, value, number))
         if abs(number) > MAX_MAGNITUDE:
             unit = _SI_UNITS[kind]
             raise self.fail(
@@ -407,11 +527,53 @@ class _SceneReader:
         return number
 
     def point(self, value: object, field: str) -> complex:
+        if isinstance(value, dict) and set(value) == {"r", "angle"}:  # polar: a length at an angle
+            r = self.quantity(value["r"], "length", f"{field}.r")
+            angle = self.quantity(value["angle"], "angle", f"{field}.angle")
+            if r < 0:
+                raise self.fail(f"{field}.r", f"a distance r is not negative (got {value['r']!r}); turn the angle by 180° instead")
+            return complex(r * math.cos(angle), r * math.sin(angle))
+        if isinstance(value, dict):
+            raise self.fail(
+                field,
+                "expected coordinates [x, y] in m (or [\"300 mm\", 0]), or a length at an angle "
+                f"{{ r = \"260 mm\", angle = \"50 deg\" }}; got a table with keys {', '.join(map(str, value)) or 'none'}",
+            )
         if not (isinstance(value, list) and len(value) == 2):
-            raise self.fail(field, f"expected coordinates [x, y] in m (or [\"300 mm\", 0]), got {_describe(value)}")
+            raise self.fail(field, f"expected coordinates [x, y] in m (or [\"300 mm\", 0]), or {{ r = \"260 mm\", angle = \"50 deg\" }}; got {_describe(value)}")
         x = self.quantity(value[0], "length", f"{field}[0]")
         y = self.quantity(value[1], "length", f"{field}[1]")
         return complex(x, y)
+
+    def triangulated(self, value: dict, points: dict[str, complex], field: str) -> complex:
+        """A point given by its distances from two points listed before it on the same body.
+
+        ``C = { distances = { A = "600 mm", B = "150 mm" } }``: the corner of the
+        triangle ABC, to the left of A→B (``side = "right"`` for the other one).
+        """
+        self.check_keys(value, ("distances", "side"), field)
+        raw = self.table(value["distances"], f"{field}.distances")
+        if len(raw) != 2:
+            raise self.fail(f"{field}.distances", "give the distances from two points, such as distances = { A = \"600 mm\", B = \"150 mm\" }")
+        (a, ra), (b, rb) = raw.items()
+        for name in (a, b):
+            if name not in points:
+                raise self.fail(f"{field}.distances.{name}", f"{name} is not a point listed before it on this body{_suggest(name, points)}")
+        ra = self.quantity(ra, "length", f"{field}.distances.{a}")
+        rb = self.quantity(rb, "length", f"{field}.distances.{b}")
+        side = value.get("side", "left")
+        if side not in ("left", "right"):
+            raise self.fail(f"{field}.side", f"expected \"left\" or \"right\" (of the line {a}→{b}), got {_describe(side)}")
+        A, B = points[a], points[b]
+        d = abs(B - A)
+        if ra <= 0 or rb <= 0 or d == 0 or ra + rb < d or abs(ra - rb) > d:
+            raise self.fail(
+                f"{field}.distances",
+                f"no triangle has sides {a}{b} = {d:.6g} m, {ra:.6g} m and {rb:.6g} m (each side must be shorter than the other two together)",
+            )
+        x = (ra * ra - rb * rb + d * d) / (2 * d)
+        h = math.sqrt(max(ra * ra - x * x, 0.0))
+        return A + (x + 1j * (h if side == "left" else -h)) * (B - A) / d
 
     def direction(self, value: object, field: str) -> float:
         """The angle [rad] of a direction vector [dx, dy] (bare numbers or lengths, only the ratio counts)."""
@@ -466,7 +628,7 @@ class _SceneReader:
         for k, table in enumerate(extra):
             prismatics.append(self.prismatic(k, self.table(table, f"prismatic.{k}"), bodies))
         for k, prismatic in enumerate(prismatics[: len(sliders)]):
-            (pin,) = bodies[prismatic.slider].points
+            pin = prismatic.name
             if sum(pin in body.points for body in bodies.values()) < 2:
                 raise self.fail(
                     f"slider.{k}.pin",
@@ -482,6 +644,7 @@ class _SceneReader:
             if names.count(name) > 1:
                 raise self.fail("slider", f"two prismatic joints are both named {name!r}; give one a name = \"...\"")
 
+        self.check_size(bodies)
         self.check_coincident(bodies)
         if "driver" not in data:
             raise self.fail("driver", "missing [driver]: say which link is driven (crank = \"2\" or slider = \"2\")")
@@ -499,6 +662,8 @@ class _SceneReader:
             report=report,
             scales=scales,
             source=self.source,
+            notes=self.length_notes(),
+            key_lines={f"assembly.{name}": self._line_of(f"assembly.{name}") for name in assembly if self._line_of(f"assembly.{name}")},
         )
 
     def body(self, name: str, table: dict, field: str) -> Body:
@@ -507,7 +672,10 @@ class _SceneReader:
         points: dict[str, complex] = {}
         for pname, value in raw_points.items():
             pname = self.name(pname, f"{field}.points", "point")
-            points[pname] = self.point(value, f"{field}.points.{pname}")
+            if isinstance(value, dict) and "distances" in value:
+                points[pname] = self.triangulated(value, points, f"{field}.points.{pname}")
+            else:
+                points[pname] = self.point(value, f"{field}.points.{pname}")
         if name != FRAME and not points:
             raise self.fail(f"{field}.points", "a link needs its points, such as points = { A = [0, 0], B = [0.3, 0] }")
         raw_lines = self.table(table.get("lines", {}), f"{field}.lines")
@@ -562,9 +730,33 @@ class _SceneReader:
         if pin in bodies[guide].points:
             raise self.fail(f"{field}.pin", f"the block is pinned at {pin}, which is a point of its own guide's {body_words(guide)}: it could not slide")
         name = self.name(table.get("name", self.next_link_name(bodies)), f"{field}.name", "link")
+        own: dict[str, complex] = {}
+        if "points" in table:  # points of the block's own: its pin at (0, 0), its x axis along the guide
+            for pname, value in self.table(table["points"], f"{field}.points").items():
+                pname = self.name(pname, f"{field}.points", "point")
+                if pname == pin:
+                    raise self.fail(f"{field}.points.{pname}", f"the pin {pin} is the block's own (0, 0); list only its other points")
+                own[pname] = self.point(value, f"{field}.points.{pname}")
         if name in bodies:
-            raise self.fail(f"{field}.name", f"there is already a link named {name!r}")
-        bodies[name] = Body(name, {pin: 0j}, {"guide": Line(name, "guide", 0j, 0.0, pin)}, block=True)
+            body = bodies[name]
+            if body.block or name == FRAME:
+                raise self.fail(f"{field}.name", f"there is already a block named {name!r}")
+            if pin not in body.points or not any(pin in b.points for n, b in bodies.items() if n != name):
+                raise self.fail(
+                    f"{field}.name",
+                    f"there is already a link named {name!r}; to make it the block, give it the pin {pin} among its "
+                    "points, pinned to another link or the frame there (the block's guide then runs through the pin "
+                    "along the link's own x axis), or name the block otherwise",
+                )
+            if own:
+                raise self.fail(f"{field}.points", f"link {name} lists its points under [link.{name}]; give them there")
+            if "guide" in body.lines:
+                raise self.fail(f"{field}.name", f"link {name} already has a line named 'guide'; rename it")
+            lines = dict(body.lines)
+            lines["guide"] = Line(name, "guide", body.points[pin], 0.0, pin)
+            bodies[name] = Body(name, body.points, lines, block=True)
+        else:
+            bodies[name] = Body(name, {pin: 0j, **own}, {"guide": Line(name, "guide", 0j, 0.0, pin)}, block=True)
         return Prismatic(pin, name, "guide", guide, guide_line)
 
     def prismatic(self, k: int, table: dict, bodies: dict[str, Body]) -> Prismatic:
@@ -590,27 +782,42 @@ class _SceneReader:
         return str(max(numbers, default=1) + 1)
 
     def check_coincident(self, bodies: dict[str, Body]) -> None:
-        """Points of one body at one place, or closer than COINCIDENT × the scene's size (one point to double precision)."""
-        zs = [z for body in bodies.values() for z in body.points.values()]
-        size = max((abs(a - b) for a in zs for b in zs), default=0.0)
+        """Points of one body at one place, or closer than COINCIDENT × the scene's size (one point to double precision).
+
+        The scene's size is the largest distance between two of its points
+        (:func:`diameter`, O(n log n)); close pairs are found on a grid of
+        cells twice the tolerance wide (:func:`_close_pair`), so a scene of
+        MAX_POINTS points is checked in well under a second.
+        """
+        size = diameter([z for body in bodies.values() for z in body.points.values()])
+        tolerance = COINCIDENT * size
         for body in bodies.values():
             items = list(body.points.items())
-            for k, (a_name, a) in enumerate(items):
-                for b_name, b in items[k + 1 :]:
-                    field = "frame" if body.is_frame else f"link.{body.name}"
-                    if a == b:
-                        raise self.fail(
-                            f"{field}.points.{b_name}",
-                            f"points {a_name} and {b_name} of {body_words(body.name)} coincide at ({a.real:g}, {a.imag:g}) m; "
-                            "one point name per location",
-                        )
-                    if abs(a - b) <= COINCIDENT * size:
-                        raise self.fail(
-                            f"{field}.points.{b_name}",
-                            f"points {a_name} and {b_name} of {body_words(body.name)} are {abs(a - b):.3g} m apart, "
-                            f"less than {COINCIDENT:g} of the scene's size ({size:.3g} m): they coincide to double "
-                            "precision; one point name per location, or a link long enough to compute with",
-                        )
+            pair = _close_pair([z for _, z in items], tolerance)
+            if pair is None:
+                continue
+            (a_name, a), (b_name, b) = items[pair[0]], items[pair[1]]
+            field = "frame" if body.is_frame else f"link.{body.name}"
+            if a == b:
+                raise self.fail(
+                    f"{field}.points.{b_name}",
+                    f"points {a_name} and {b_name} of {body_words(body.name)} coincide at ({a.real:g}, {a.imag:g}) m; "
+                    "one point name per location",
+                )
+            raise self.fail(
+                f"{field}.points.{b_name}",
+                f"points {a_name} and {b_name} of {body_words(body.name)} are {abs(a - b):.3g} m apart, "
+                f"less than {COINCIDENT:g} of the scene's size ({size:.3g} m): they coincide to double "
+                "precision; one point name per location, or a link long enough to compute with",
+            )
+
+    def check_size(self, bodies: dict[str, Body]) -> None:
+        """Refuse scenes beyond MAX_POINTS points or MAX_LINKS bodies (time and memory stay bounded)."""
+        points = sum(len(body.points) for body in bodies.values())
+        if points > MAX_POINTS:
+            raise self.fail("link", f"the scene has {points:,} points; plans takes at most {MAX_POINTS:,} (frame and links together)")
+        if len(bodies) - 1 > MAX_LINKS:
+            raise self.fail("link", f"the scene has {len(bodies) - 1:,} links and blocks; plans takes at most {MAX_LINKS:,}")
 
     def driver(self, table: dict, bodies: dict[str, Body]) -> Crank | LinearDriver:
         if "crank" in table and "slider" in table:
@@ -735,6 +942,105 @@ class _SceneReader:
                     raise self.fail(f"scales.{key}", f"{value!r} is outside the range plans computes in ({MIN_SCALE:g} to {MAX_MAGNITUDE:g})")
                 values[key] = number
         return Scales(**values)
+
+
+def diameter(zs: list[complex]) -> float:
+    """The largest distance |a − b| between two of the points [m]; 0 for fewer than two.
+
+    The farthest pair is a pair of antipodal vertices of the convex hull
+    (monotone chain, then rotating calipers): O(n log n) instead of
+    comparing all pairs.  Orientations are decided exactly (see
+    :func:`_turn`), so nearly collinear points cannot mislead the hull.
+    """
+    hull = _hull(zs)
+    if len(hull) < 2:
+        return 0.0
+    if len(hull) == 2:
+        return abs(hull[0] - hull[1])
+    n = len(hull)
+    best = 0.0
+    j = 1
+    for i in range(n):
+        p, q = hull[i], hull[(i + 1) % n]
+        # advance j while hull[j + 1] is farther from the line pq than hull[j]
+        while _turn(p, q, hull[j], hull[(j + 1) % n]) > 0:
+            j = (j + 1) % n
+        best = max(best, abs(hull[j] - p), abs(hull[j] - q))
+    return best
+
+
+def _turn(a: complex, b: complex, c: complex, d: complex) -> int:
+    """The sign of the cross product (b − a) × (d − c), exactly.
+
+    In floating point when the result is far from round-off, else with exact
+    rational arithmetic on the coordinates (they are binary fractions).
+    """
+    ux, uy, vx, vy = b.real - a.real, b.imag - a.imag, d.real - c.real, d.imag - c.imag
+    left, right = ux * vy, uy * vx
+    det = left - right
+    if abs(det) > 8 * _EPS * (abs(left) + abs(right)) and math.isfinite(det):
+        return 1 if det > 0 else -1
+    from fractions import Fraction as F
+
+    exact = (F(b.real) - F(a.real)) * (F(d.imag) - F(c.imag)) - (F(b.imag) - F(a.imag)) * (F(d.real) - F(c.real))
+    return (exact > 0) - (exact < 0)
+
+
+_EPS = 2.0**-52
+
+
+def _hull(zs: list[complex]) -> list[complex]:
+    """Convex hull, counter-clockwise, without collinear points (Andrew's monotone chain)."""
+    points = sorted(set(zs), key=lambda z: (z.real, z.imag))
+    if len(points) <= 2:
+        return points
+
+    def half(seq):
+        out: list[complex] = []
+        for z in seq:
+            while len(out) >= 2 and _turn(out[-2], out[-1], out[-2], z) <= 0:
+                out.pop()
+            out.append(z)
+        return out
+
+    lower, upper = half(points), half(reversed(points))
+    return lower[:-1] + upper[:-1]
+
+
+def _close_pair(zs: list[complex], tolerance: float) -> tuple[int, int] | None:
+    """Indices (i, j), i < j, of two points at most *tolerance* apart, or None.
+
+    Exactly equal points first (a dictionary), then, for a positive tolerance,
+    neighbours on a grid of cells 2 × tolerance wide: two points within the
+    tolerance lie in the same or adjacent cells, and a cell's neighbourhood
+    holds a bounded number of points unless some of them are close (and then
+    the first found is reported).  Of several pairs the one with the smallest
+    j, then the smallest i, is returned.
+    """
+    seen: dict[complex, int] = {}
+    for j, z in enumerate(zs):
+        if z in seen:
+            return seen[z], j
+        seen[z] = j
+    if not tolerance > 0 or len(zs) < 2:
+        return None
+    x0 = min(z.real for z in zs)
+    y0 = min(z.imag for z in zs)
+    width = 2.0 * tolerance
+    cells: dict[tuple[int, int], list[int]] = {}
+    for j, z in enumerate(zs):
+        cx, cy = math.floor((z.real - x0) / width), math.floor((z.imag - y0) / width)
+        near = [
+            i
+            for dx in (-1, 0, 1)
+            for dy in (-1, 0, 1)
+            for i in cells.get((cx + dx, cy + dy), ())
+            if abs(zs[i] - z) <= tolerance
+        ]
+        if near:
+            return min(near), j
+        cells.setdefault((cx, cy), []).append(j)
+    return None
 
 
 def _all_points(bodies: dict[str, Body]) -> dict[str, None]:

@@ -18,12 +18,14 @@ W = 3n − 2p, where n counts the moving links and p the joints.
 
 from __future__ import annotations
 
+import cmath
+import math
 from dataclasses import dataclass
 
-from .errors import StructureError
+from .errors import SceneError, StructureError
 from .scene import FRAME, Crank, LinearDriver, Prismatic, Scene, body_words
 
-__all__ = ["Joint", "Group", "Structure", "find_structure", "mobility"]
+__all__ = ["Joint", "Group", "Structure", "Branch", "find_structure", "mobility", "branch_points", "branches"]
 
 
 @dataclass(frozen=True)
@@ -78,6 +80,9 @@ class Group:
     outer_i: Joint
     inner: Joint
     outer_j: Joint
+    #: The links in the order a branch sign is stated in (see :attr:`orientation`);
+    #: empty: the order of ``links``.
+    sign_order: tuple[str, ...] = ()
 
     @property
     def name(self) -> str:
@@ -101,6 +106,28 @@ class Group:
     def points(self) -> list[str]:
         """The joint point names of the group (R joints only)."""
         return [j.point for j in (self.outer_i, self.inner, self.outer_j) if j.kind == "R"]
+
+    @property
+    def two_assemblies(self) -> bool:
+        """True for RRR, RRP and RPR (two assembly branches); PRP and RPP have one."""
+        return self.kind in ("RRR", "RRP", "RPR")
+
+    @property
+    def orientation(self) -> int:
+        """+1 when the solvers' link order (i, j) is :attr:`sign_order`, else −1.
+
+        The branch sign a scene writes (and plans reports) is stated with the
+        links in one order that does not depend on the order of the file or
+        on whether a sliding pair is written ``[[slider]]`` or ``[[prismatic]]``
+        (which decides i and j of an RPR): RRR, the order of the group's name
+        (``RRR(3,4)``: from the outer joint of link 3 to that of link 4); RPR,
+        the link that is not a slider block first, else the order of the
+        name.  The solvers' sign is this sign times the orientation.  RRP,
+        PRP, RPP: +1 (their convention does not depend on the order).
+        """
+        if self.kind in ("RRR", "RPR") and self.sign_order and tuple(self.sign_order) != tuple(self.links):
+            return -1
+        return 1
 
 
 @dataclass(frozen=True)
@@ -189,6 +216,16 @@ def _make_group(i: str, j: str, outer_i: Joint, inner: Joint, outer_j: Joint) ->
     return Group(kind, (i, j), outer_i, inner, outer_j)
 
 
+def _with_sign_order(scene: Scene, group: Group) -> Group:
+    """The group with the link order its branch sign is stated in (:attr:`Group.orientation`)."""
+    order = tuple(_sorted_names(group.links))
+    if group.kind == "RPR":
+        blocks = [link for link in group.links if scene.bodies[link].block]
+        if len(blocks) == 1:
+            order = tuple(link for link in group.links if link not in blocks) + tuple(blocks)
+    return Group(group.kind, group.links, group.outer_i, group.inner, group.outer_j, order)
+
+
 def find_structure(scene: Scene) -> Structure:
     """Find the driver and the dyads in an order where each attaches to known links.
 
@@ -237,7 +274,7 @@ def find_structure(scene: Scene) -> Structure:
                         f"{scene.source}: links {a} and {b} form a PPP group, which has no definite position; "
                         "replace one prismatic joint by a revolute"
                     )
-                groups.append(group)
+                groups.append(_with_sign_order(scene, group))
                 known |= {a, b}
                 progress = True
                 break
@@ -259,7 +296,9 @@ def find_structure(scene: Scene) -> Structure:
             f"attached to links solved before them ({solved}): {detail}; each dyad needs one joint from each of its "
             "two links to a solved link; plans solves dyads only (a class III group or higher needs an iterative solution)"
         )
-    return Structure(driver, tuple(groups), w)
+    structure = Structure(driver, tuple(groups), w)
+    check_assembly(scene, structure)
+    return structure
 
 
 def _joins(joints: list[Joint], link: str, known: set[str]) -> str:
@@ -290,3 +329,198 @@ def _loose_points(scene: Scene) -> str:
         return ""
     return "; a joint is where two bodies name the same point, and only one link has " + ", ".join(loose)
 
+
+
+# --- assembly branches ----------------------------------------------------------
+
+
+def _outer_points(group: Group) -> set[str]:
+    return {o.point for o in (group.outer_i, group.outer_j) if o.kind == "R"}
+
+
+def branch_points(scene: Scene, group: Group) -> list[str]:
+    """The points an ``[assembly]`` key may name to choose the group's branch.
+
+    The points of the group's two links, except its outer joints (they are
+    where they are on both branches).  Empty for a group with one assembly.
+    """
+    if not group.two_assemblies:
+        return []
+    outer = _outer_points(group)
+    names: list[str] = []
+    for link in _sorted_names(group.links):
+        for name in scene.bodies[link].points:
+            if name not in outer and name not in names:
+                names.append(name)
+    return names
+
+
+def check_assembly(scene: Scene, structure: "Structure") -> None:
+    """Refuse ``[assembly]`` keys that cannot choose a branch, and two keys for one group.
+
+    A key chooses the branch of the first group (in solving order) whose
+    :func:`branch_points` include it.  A frame point, a point of the driver,
+    an outer joint of a group and a point of a group with one assembly choose
+    nothing: the error names the points that do choose each group's branch.
+    """
+    chosen: dict[str, str] = {}
+    for name in scene.assembly:
+        group = next((g for g in structure.groups if name in branch_points(scene, g)), None)
+        field = _assembly_field(scene, name)
+        if group is None:
+            raise SceneError(f"{_why_not(scene, structure, name)}; {_who_decides(scene, structure)}", scene.source, field)
+        if group.name in chosen:
+            raise SceneError(
+                f"{chosen[group.name]} and {name} both choose the branch of {group.name}; give one of them",
+                scene.source,
+                field,
+            )
+        chosen[group.name] = name
+
+
+def _assembly_field(scene: Scene, name: str) -> str:
+    line = getattr(scene, "key_lines", {}).get(f"assembly.{name}")
+    return f"assembly.{name} (line {line})" if line else f"assembly.{name}"
+
+
+def _why_not(scene: Scene, structure: Structure, name: str) -> str:
+    """Why the point *name* cannot choose a branch."""
+    owners = scene.bodies_with(name)
+    if set(owners) <= {FRAME, structure.driver}:
+        if FRAME in owners:
+            also = f" (and of the driver, link {structure.driver})" if structure.driver in owners else ""
+            return f"{name} is a point of the frame{also}, which does not move: it cannot choose an assembly branch"
+    for group in structure.groups:
+        if name in _outer_points(group) and any(name in scene.bodies[link].points for link in group.links):
+            known = [b for b in owners if b not in group.links]
+            return (
+                f"{name} joins {group.name} to {' and '.join(body_words(b) for b in known)} (an outer joint): it lies "
+                "where it lies on both branches, so it cannot choose one"
+            )
+        if name in scene.bodies[group.links[0]].points or name in scene.bodies[group.links[1]].points:
+            return f"{group.name} has one assembly only: there is no branch for {name} to choose"
+    if structure.driver in owners:
+        return f"{name} is a point of the driver, link {structure.driver}, whose position is given: it cannot choose an assembly branch"
+    return f"{name} is not a point of a group with two assemblies: it cannot choose an assembly branch"
+
+
+def _who_decides(scene: Scene, structure: Structure) -> str:
+    parts = []
+    for group in structure.groups:
+        if not group.two_assemblies:
+            continue
+        names = branch_points(scene, group)
+        if names:
+            parts.append(f"{group.name} by {' or '.join(names)}")
+        else:
+            links = " or ".join(body_words(link) for link in _sorted_names(group.links))
+            parts.append(f"{group.name} by a point of {links} off its joints (add one to choose)")
+    if not parts:
+        return "no group of this mechanism has two assemblies: leave [assembly] out"
+    return "the branch of " + "; of ".join(parts) + " (write NAME = [x, y] near where it lies, or NAME = 1 or -1)"
+
+
+@dataclass(frozen=True)
+class Branch:
+    """The assembly branch one group took at one position.
+
+    Attributes
+    ----------
+    group : str
+        The group's name, ``"RRR(3,4)"``.
+    sign : int
+        +1 or −1 as an ``[assembly]`` sign writes it (see :attr:`Group.orientation`
+        and the README's "Assembly branches"); 0 for a group with one assembly.
+    words : str
+        The branch in words: ``"C to the left of B→D"``.
+    other_assembly : bool
+        Whether the group could be assembled the other way at this position
+        (False for PRP and RPP, which have one assembly, and at a dead
+        centre, where the two coincide).
+    chosen_by : str
+        ``"C near (x, y)"``, ``"C = -1"`` or ``"default (+1)"``: what chose it.
+    """
+
+    group: str
+    sign: int
+    words: str
+    other_assembly: bool
+    chosen_by: str
+
+    def as_dict(self) -> dict:
+        return {"sign": self.sign, "words": self.words, "other_assembly": self.other_assembly, "chosen_by": self.chosen_by}
+
+
+def branches(solution, position: int = 0) -> tuple[Branch, ...]:
+    """The branch each group of an analytic solution took at one of its positions.
+
+    Found from the solved positions themselves (not from the solver's
+    choice): RRR, the side of C from the directed line B→D; RRP, whether C
+    is the intersection further along the guide's direction u,
+    ``(C − B)·u > 0``; RPR, whether the common line's direction points from
+    one pivot towards the other, ``u·(E − B) > 0`` — each with the links in
+    the order of the group's name.
+    """
+    scene = solution.scene
+    out = []
+    for group in solution.structure.groups:
+        out.append(_branch(scene, solution, group, position))
+    return tuple(out)
+
+
+def _at(solution, name: str, k: int) -> complex:
+    return complex(solution.points[name].r[k])
+
+
+def _phi(solution, body: str, k: int) -> float:
+    return 0.0 if body == FRAME else float(solution.links[body].phi[k])
+
+
+def _branch(scene: Scene, solution, group: Group, k: int) -> Branch:
+    sine = float(solution.sines[group.name][k])
+    other = group.two_assemblies and math.isfinite(sine) and sine > 0
+    chosen = _chosen_by(scene, group)
+    if group.kind == "RRR":
+        a, b = _canonical(group)
+        B, D, c = a.point, b.point, group.inner.point
+        side = (complex(_at(solution, D, k) - _at(solution, B, k)).conjugate() * (_at(solution, c, k) - _at(solution, B, k))).imag
+        sign = 1 if side > 0 else -1
+        words = f"{c} to the {'left' if sign > 0 else 'right'} of {B}→{D}"
+    elif group.kind == "RRP":
+        B, c = group.outer_i.point, group.inner.point
+        known = group.outer_j.bodies[1]
+        p = group.outer_j.prismatic
+        line = scene.bodies[known].lines[p.guide_line if p.guide == known else p.slider_line]
+        u = cmath.exp(1j * (_phi(solution, known, k) + line.angle))
+        along = ((_at(solution, c, k) - _at(solution, B, k)) * u.conjugate()).real
+        sign = 1 if along > 0 else -1
+        words = f"{c} at the intersection {'further along' if sign > 0 else 'nearer the start of'} {line.key} (of the two the circle about {B} meets)"
+    elif group.kind == "RPR":
+        a, b = _canonical(group)
+        i = group.links[0]  # the solvers' i carries the guide line of the inner pair
+        p = group.inner.prismatic
+        line = scene.bodies[i].lines[p.guide_line if p.guide == i else p.slider_line]
+        u = cmath.exp(1j * (_phi(solution, i, k) + line.angle))
+        along = ((_at(solution, b.point, k) - _at(solution, a.point, k)) * u.conjugate()).real
+        sign = 1 if along > 0 else -1
+        words = f"line {line.key} pointing {'from ' + a.point + ' towards ' + b.point if sign > 0 else 'from ' + b.point + ' towards ' + a.point}"
+    else:
+        return Branch(group.name, 0, "one assembly only", False, "none needed")
+    return Branch(group.name, sign, words, other, chosen)
+
+
+def _canonical(group: Group) -> tuple[Joint, Joint]:
+    """The outer joints in the order of :attr:`Group.sign_order`."""
+    if group.orientation > 0:
+        return group.outer_i, group.outer_j
+    return group.outer_j, group.outer_i
+
+
+def _chosen_by(scene: Scene, group: Group) -> str:
+    for name in branch_points(scene, group):
+        if name in scene.assembly:
+            hint = scene.assembly[name]
+            if isinstance(hint, int):
+                return f"{name} = {hint:+d}"
+            return f"{name} near ({hint.real:g}, {hint.imag:g}) m"
+    return "default (+1)" if group.two_assemblies else "none needed"

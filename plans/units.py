@@ -25,7 +25,7 @@ KINDS: dict[str, dict[str, float]] = {
 }
 
 _NUMBER = r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?"
-_QUANTITY = re.compile(rf"^\s*({_NUMBER})\s*([^\s\d].*?)?\s*$")
+_QUANTITY = re.compile(rf"^\s*({_NUMBER})(?:\s*([^\s\d].*?)|\s+(1/\S+))?\s*$")  # "1 1/min": a unit may start with 1/
 
 
 class UnitError(ValueError):
@@ -81,7 +81,7 @@ def parse_quantity(value: object, kind: str) -> float:
         if not match:
             raise UnitError(f"expected {_a(kind)} such as \"{_example(kind)}\", got {value!r}")
         number = float(match.group(1))
-        unit = (match.group(2) or default).strip()
+        unit = (match.group(2) or match.group(3) or default).strip()
         if unit not in table:
             other = _kind_of(unit)
             hint = f" ({unit!r} is a unit of {other})" if other else ""

@@ -102,7 +102,7 @@ def test_sweep_writes_one_row_per_position(capsys, tmp_path):
     rows = list(csv.DictReader(io.StringIO(target.read_text())))
     assert len(rows) == 36
     assert float(rows[0]["driver_phi_deg"]) == pytest.approx(55.0)
-    assert float(rows[1]["driver_phi_deg"]) == pytest.approx(65.0)
+    assert float(rows[1]["driver_phi_deg"]) == pytest.approx(45.0)  # ω = −10 rad/s: the sweep runs clockwise
     assert all(row["assembled"] == "1" for row in rows)
     assert "RPR(5,6).condition" in rows[0] and "E.coriolis_x" in rows[0]
 
@@ -147,10 +147,12 @@ def test_positions_and_a_list_are_exclusive(capsys, tmp_path):
 
 
 def test_sweep_plot_draws_the_cycle_diagrams(capsys, tmp_path):
-    status, out, _ = run(capsys, "sweep", "--example", "quick-return", "--steps", "36", "--plot", str(tmp_path), "--positions", "4")
+    status, out, err = run(capsys, "sweep", "--example", "quick-return", "--steps", "36", "--plot", str(tmp_path), "--positions", "4")
     assert status == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["links.svg", "points.svg", "sliders.svg"]
-    assert "driver_phi_deg" not in out  # with --plot and no -o, the CSV is not dumped on the terminal
+    # without -o the CSV goes to standard output as the help says (issue 9), the diagrams' names to stderr
+    assert out.startswith("driver_phi_deg,") and len(out.splitlines()) == 37
+    assert str(tmp_path / "links.svg") in err
 
 
 def test_handout_in_russian_is_a_pdf(capsys, tmp_path):

@@ -45,14 +45,14 @@ def test_the_curves_are_the_analytic_values_over_the_turn(six_bar):
     cycle = run.cycle
     omega_axis = figures["links"].axes[1]
     curves = _lines(omega_axis)
-    assert set(curves) == {"ω₂", "ω₃", "ω₄", "ω₅"}  # the sleeve 6 turns with the rod 5: not repeated
+    assert set(curves) == {"ω₃", "ω₄", "ω₅"}  # the sleeve 6 turns with the rod 5: not repeated; ω₂ is constant: a note
     x, y = curves["ω₄"].get_data()
     assert np.allclose(y, cycle.links["4"].omega)
     # the crank turns clockwise: x is the angle turned from position 0, 0 … 360°
     assert x[0] == 0.0 and x[-1] == pytest.approx(360.0)
     v_curves = _lines(figures["points"].axes[0])
-    assert np.allclose(v_curves["|v_M|"].get_data()[1], np.abs(cycle.points["M"].v))
-    coriolis = _lines(figures["sliders"].axes[3])["|aᵏ| E"].get_data()[1]
+    assert np.allclose(v_curves[r"$|v_{\mathrm{M}}|$"].get_data()[1], np.abs(cycle.points["M"].v))
+    coriolis = _lines(figures["sliders"].axes[3])[r"$|a^k_{\mathrm{E}}|$"].get_data()[1]
     assert np.allclose(coriolis, np.abs(cycle.sliders["E"].coriolis))
 
 
@@ -62,9 +62,9 @@ def test_the_positions_with_sheets_are_marked_and_numbered(six_bar):
     assert [k for k, _ in marks] == [0, 1, 2, 3]
     assert [x for _, x in marks] == pytest.approx([0.0, 90.0, 180.0, 270.0])
     top = figures["links"].axes[0]
-    vertical = [line for line in top.get_lines() if line.get_linestyle() == ":" and len(set(line.get_xdata())) == 1]
+    vertical = [line for line in top.get_lines() if line.get_linestyle() == "--" and len(set(line.get_xdata())) == 1]
     assert sorted(float(line.get_xdata()[0]) for line in vertical) == pytest.approx([0.0, 90.0, 180.0, 270.0])
-    assert [t.get_text() for t in top.texts] == ["0", "1", "2", "3"]
+    assert [t.get_text() for t in top.texts if t.get_text().isdigit()] == ["0", "1", "2", "3"]
 
 
 def test_where_the_mechanism_cannot_assemble_is_shaded_and_not_plotted(stuck):
@@ -92,9 +92,9 @@ def test_beside_an_interval_without_assembly_is_near_a_dead_centre(stuck):
     invalid_x = x[~np.asarray(run.cycle.valid)]
     ax = figures["links"].axes[1]
     light = sorted((p.get_x(), p.get_x() + p.get_width()) for p in ax.patches if p.get_hatch() != "///")
-    assert len(light) == 2  # either side of the interval where it cannot assemble
-    assert light[0][1] == pytest.approx(invalid_x.min() - 0.5)
-    assert light[1][0] == pytest.approx(invalid_x.max() + 0.5)
+    assert len(light) == 2  # either side of the interval where it cannot assemble (drawn at least BAND_MIN wide)
+    assert light[0][0] <= invalid_x.min() - 1.5 and light[0][1] >= invalid_x.min() - 0.5
+    assert light[1][0] <= invalid_x.max() + 0.5 and light[1][1] >= invalid_x.max() + 1.5
 
 
 def test_small_sines_are_near_a_dead_centre(monkeypatch):
@@ -121,7 +121,7 @@ def test_components_on_request():
     figures = dict(draw_cycle_diagrams(run.cycle, components=True))
     assert len(figures["points"].axes) == 6
     labels = set(_lines(figures["points"].axes[1]))
-    assert "v_B,x" in labels
-    y = _lines(figures["points"].axes[1])["v_B,x"].get_data()[1]
+    assert r"$v_{\mathrm{B,x}}$" in labels
+    y = _lines(figures["points"].axes[1])[r"$v_{\mathrm{B,x}}$"].get_data()[1]
     assert np.allclose(y, run.cycle.points["B"].v.real)
     assert math.isfinite(float(np.nanmax(y)))

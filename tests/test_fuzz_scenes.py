@@ -101,3 +101,53 @@ def test_mutated_scene_gives_a_solution_or_a_plans_error(case):
     except PlansError as exc:
         assert str(exc), "an error must say something"
         assert "Traceback" not in str(exc)
+
+
+# --- valid scenes must still solve ------------------------------------------------------
+# Any PlansError passes the test above, so a valid scene wrongly refused would pass too.
+# Here the unmutated scenes and harmless rewritings of them must solve, and give the same
+# mechanism.
+
+_LENGTH_KEYS = ("points",)
+
+
+def _in_mm(value):
+    """A coordinate written as millimetres: 0.15 -> "150.0 mm"; strings with units kept."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return f"{value * 1000!r} mm"
+    return value
+
+
+def _harmless(data, rewrite):
+    data = copy.deepcopy(data)
+    if rewrite == "reorder-links":  # the [link.N] tables in the opposite order
+        data["link"] = dict(reversed(list(data["link"].items())))
+    elif rewrite == "points-in-mm":  # every bare coordinate of every link rewritten in mm
+        for link in data["link"].values():
+            link["points"] = {k: [_in_mm(c) for c in v] for k, v in link["points"].items()}
+    elif rewrite == "title":
+        data["title"] = "Заглавље — a title in two scripts, with \"quotes\" & <angle brackets>"
+    elif rewrite == "full-turn" and "crank" in data["driver"]:  # the same crank angle, one turn on
+        angle = data["driver"]["angle"]
+        degrees = float(angle.split()[0]) if isinstance(angle, str) and angle.endswith("deg") else None
+        if degrees is not None:
+            data["driver"]["angle"] = f"{degrees + 360} deg"
+    elif rewrite == "report-listed":  # [compute] points listing every moving point explicitly
+        scene = from_mapping(copy.deepcopy(data))
+        data.setdefault("compute", {})["points"] = list(scene.report)
+    return data
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(sorted(SCENES)), st.lists(st.sampled_from(["reorder-links", "points-in-mm", "title", "full-turn", "report-listed"]), max_size=3))
+def test_valid_and_harmlessly_rewritten_scenes_still_solve(name, rewrites):
+    data = SCENES[name]
+    original = from_mapping(copy.deepcopy(data), source=f"{name}.toml")
+    for rewrite in rewrites:
+        data = _harmless(data, rewrite)
+    scene = from_mapping(data, source=f"{name}.toml")  # no PlansError may escape here ...
+    _whole_pipeline(scene)  # ... nor here
+    one, two = solve(original), solve(scene)
+    for point in original.report:
+        assert abs(complex(one.points[point].r[0]) - complex(two.points[point].r[0])) < 1e-12
+        assert abs(complex(one.points[point].v[0]) - complex(two.points[point].v[0])) <= 1e-12 * (1 + abs(complex(one.points[point].v[0])))

@@ -64,7 +64,7 @@ def test_every_example_agrees(name):
 @pytest.mark.parametrize("k", [("k_l", 1e-3), ("k_v", 1e-3), ("k_a", 1e3)])
 def test_agreement_does_not_depend_on_the_scale_factors(name, k):
     scene = load(example_path(name))
-    check(name, construct(scene, **{k[0]: k[1]}), solve(scene))
+    check(name, construct(scene, check_scales=False, **{k[0]: k[1]}), solve(scene))  # factors off the sheet on purpose
 
 
 SIGN_VARIANTS = {

@@ -138,7 +138,7 @@ def test_svg_pages(tmp_path):
 @pytest.mark.parametrize(
     "path, options, message",
     [
-        ("out.png", {}, "a handout is written as .pdf (or .svg, one file per page), not .png"),
+        ("out.jpg", {}, "a handout is written as .pdf (or .svg or .png, one file per page), not .jpg"),
         ("out.pdf", {"lang": "de"}, "no language 'de'; plans speaks en, sr, ru, bg, sl"),
     ],
 )

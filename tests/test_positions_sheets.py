@@ -24,8 +24,9 @@ def _texts(path) -> list[str]:
 @pytest.fixture(scope="module")
 def sheets(tmp_path_factory):
     directory = tmp_path_factory.mktemp("sheets")
-    (directory / "sheet-05.svg").write_text("<svg/>")  # from an earlier run with more positions
-    run = run_positions(plans.load(plans.example_path("four-bar")), "0, 120 deg")
+    scene = plans.load(plans.example_path("four-bar"))
+    write_position_sheets(run_positions(scene, 6), directory)  # an earlier run with more positions
+    run = run_positions(scene, "0, 120 deg")
     return run, directory, write_position_sheets(run, directory)
 
 

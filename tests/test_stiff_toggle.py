@@ -256,5 +256,5 @@ def test_the_cli_refuses_a_dead_centre_with_one_line(tmp_path, capsys):
     assert main(["solve", str(path)]) == 2
     out, err = capsys.readouterr()
     assert out == "" and err.count("\n") == 1 and "Traceback" not in err
-    assert err.startswith("plans: error: RRR(3,4): dead centre at φ = 180.0°: A, B and D are in line")
+    assert err.startswith(f"plans: error: {path}: RRR(3,4): dead centre at φ = 180.0°: A, B and D are in line")
     assert f"below the dead-centre threshold {REFUSE_SINE:g}" in err

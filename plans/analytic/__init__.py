@@ -16,10 +16,12 @@ matplotlib nor shapely, nor the graphical construction.
 
 from .dyads import SINGULAR_SINE, DyadSolution, solve_prp, solve_rpp, solve_rpr, solve_rrp, solve_rrr
 from .solution import AnalyticSolution, LinkMotion, PointMotion, SliderMotion
-from .solver import driver_position, solve
+from .solver import PreparedSolver, driver_position, prepare, solve
 
 __all__ = [
     "solve",
+    "prepare",
+    "PreparedSolver",
     "driver_position",
     "AnalyticSolution",
     "LinkMotion",

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..limits import NearDeadCentre, expected_rel_error
+from ..limits import NearDeadCentre, chain_rel_error, expected_rel_error
 from ..scene import Scene
 from ..structure import Structure
 
@@ -129,8 +129,43 @@ class AnalyticSolution:
         """
         return expected_rel_error(np.asarray(self.conditions[group]))
 
+    def expected_chain_rel_errors(self, group: str) -> np.ndarray:
+        """Expected relative error of the group's velocities and accelerations with the errors it inherits, per position.
+
+        A group solved from points or guides of earlier groups inherits their
+        errors, amplified by its own condition (see :mod:`plans.limits`)::
+
+            E_k = 4·ε_mach·cond_k² + cond_k · max E_g   over the groups g it takes a known point or guide from
+
+        Relative to the scale of each kind of quantity (the largest |v|, |a|
+        of the group's points), not to each quantity itself.  NaN where a
+        group it depends on is not assembled.
+        """
+        groups = {g.name: g for g in self.structure.groups}
+        solved_by = {link: g.name for g in self.structure.groups for link in g.links}
+        figures: dict[str, np.ndarray] = {}
+
+        def figure(name: str) -> np.ndarray:
+            if name not in figures:
+                g = groups[name]
+                upstream = [solved_by[joint.bodies[1]] for joint in (g.outer_i, g.outer_j) if joint.bodies[1] in solved_by]
+                inherited = np.zeros(len(self)) if not upstream else np.maximum.reduce([figure(u) for u in upstream] + [np.zeros(len(self))])
+                figures[name] = chain_rel_error(np.asarray(self.conditions[name], dtype=float), inherited)
+            return figures[name]
+
+        return figure(group)
+
     def __len__(self) -> int:
         return len(self.driver)
+
+    @property
+    def branches(self):
+        """The assembly branch of each group at the first position, as :class:`plans.structure.Branch`
+        records (sign, words such as ``"C to the left of B→D"``, whether another assembly exists);
+        ``solution.at(k).branches`` for position k.  See :func:`plans.structure.branches`."""
+        from ..structure import branches
+
+        return branches(self)
 
     def motion_of(self, body: str, z: complex) -> PointMotion:
         """Motion of the point with own coordinates z [m] of a body.

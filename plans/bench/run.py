@@ -96,12 +96,15 @@ class Settings:
         Also time ``plans solve`` and ``plans draw`` as whole processes.
     process_runs : int
         Runs of each (the median is reported).
+    cold_ns : tuple[int, ...]
+        Sizes at which the first call in a fresh process (memory not yet
+        touched: page faults) is timed for plans and for the yardstick.
     cases : tuple[str, ...] or None
         Only these cases (None: the whole suite).
     """
 
     ns: tuple[int, ...] = (1, 360, 3600, 100_000)
-    yardstick_ns: tuple[int, ...] = (3600, 100_000)
+    yardstick_ns: tuple[int, ...] = (1, 3600, 100_000)
     samples: int = 8
     arc_segments: tuple[int, ...] = (2, 8, 32, 128)
     precisions: tuple[float, ...] = (0.1, 0.5)
@@ -109,13 +112,14 @@ class Settings:
     processes: bool = True
     process_runs: int = 5
     cases: tuple[str, ...] | None = None
+    cold_ns: tuple[int, ...] = ()
 
 
 #: ``plans bench``: about 40 s on a 2-CPU virtual machine.
-DEFAULT = Settings()
+DEFAULT = Settings(cold_ns=(3600, 100_000))
 #: ``plans bench --quick``: a smoke run, a few seconds.
 QUICK = Settings(
-    ns=(1, 360, 3600), yardstick_ns=(3600,), samples=3, arc_segments=(4, 32), budget=0.01, processes=False
+    ns=(1, 360, 3600), yardstick_ns=(1, 3600), samples=3, arc_segments=(4, 32), budget=0.01, processes=False, cold_ns=()
 )
 
 
@@ -154,7 +158,7 @@ class Row:
 
 @dataclass(frozen=True)
 class Target:
-    """A performance target of issue 6 and what this run measured."""
+    """A performance target (issues 6 and 14) and what this run measured."""
 
     name: str
     goal: str
@@ -170,6 +174,7 @@ class BenchResult:
     targets: list[Target]
     processes: dict[str, float] = field(default_factory=dict)
     seconds: float = 0.0
+    cold: dict[int, tuple[float, float]] = field(default_factory=dict)
 
 
 #: The methods, in the order tables list them.
@@ -434,6 +439,51 @@ def time_processes(runs: int) -> dict[str, float]:
     return out
 
 
+_COLD = """
+import sys, time
+from plans.bench.cases import suite
+from plans.bench.yardstick import offset_slider_crank
+from plans.analytic import solve
+from plans.structure import find_structure
+which, n = sys.argv[1], int(sys.argv[2])
+case = next(c for c in suite(1) if c.name == "slider-crank")
+p = case.yardstick
+positions, _ = case.grid(n)
+structure = find_structure(case.scene)
+if which == "plans":
+    run = lambda x: solve(case.scene, x, structure, allow_partial=True)
+else:
+    run = lambda x: offset_slider_crank(x, p["r"], p["l"], p["e"], p["omega"], p["epsilon"])
+run(positions[:2])  # the code is loaded and the scene prepared; the memory for n positions is not yet touched
+start = time.perf_counter()
+run(positions)
+print(time.perf_counter() - start)
+"""
+
+
+def time_cold(ns: tuple[int, ...], runs: int) -> dict[int, tuple[float, float]]:
+    """Per size n: median wall time [s] of the first n-position call in a fresh process, (plans, yardstick).
+
+    The offset slider-crank of the suite.  Each process solves two positions
+    first, so what is timed is the call itself with memory the process has
+    not used yet (page faults), as in a one-shot ``plans sweep``.
+    """
+    root = str(Path(__file__).resolve().parents[2])
+    env = dict(os.environ)
+    env["PYTHONPATH"] = root + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
+    out = {}
+    for n in ns:
+        times = {}
+        for which in ("plans", "yardstick"):
+            samples = []
+            for _ in range(runs):
+                done = subprocess.run([sys.executable, "-c", _COLD, which, str(n)], env=env, capture_output=True, text=True)
+                samples.append(float(done.stdout) if done.returncode == 0 else math.nan)
+            times[which] = statistics.median(samples)
+        out[n] = (times["plans"], times["yardstick"])
+    return out
+
+
 # --- targets -------------------------------------------------------------------------------
 
 
@@ -444,7 +494,7 @@ def _find(rows: list[Row], case: str, method: str, setting: str) -> Row | None:
     return None
 
 
-def _targets(rows: list[Row], processes: dict[str, float]) -> list[Target]:
+def _targets(rows: list[Row], processes: dict[str, float], cold: dict[int, tuple[float, float]] | None = None) -> list[Target]:
     targets = []
 
     def add(name, goal, value, text, limit, below=True):
@@ -465,6 +515,19 @@ def _targets(rows: list[Row], processes: dict[str, float]) -> list[Target]:
         add(f"cost of generality: solve / yardstick at N = {n}", "≤ 2×", ratio, lambda v: f"{v:.1f}×", 2.0)
     row = _find(rows, "six-bar", "graphical exact", "exact arcs")
     add("graphical, six-bar, one position, both plans", "≤ 2 ms", row and row.seconds, lambda v: f"{v * 1e3:.2f} ms", 2e-3)
+    # issue 14
+    row = _find(rows, "slider-crank", "analytic", "N = 1")
+    add("analytic, offset slider-crank, one position", "< 30 µs", row and row.seconds, lambda v: f"{v * 1e6:.1f} µs", 30e-6)
+    yard = _find(rows, "slider-crank", "yardstick", "N = 1")
+    add("one position: solve / yardstick", "≤ 1.5×", yard.versus / yard.seconds if yard else None, lambda v: f"{v:.2f}×", 1.5)
+    row = _find(rows, "six-bar", "analytic", "N = 1")
+    add("analytic, six-bar, one position", "< 60 µs", row and row.seconds, lambda v: f"{v * 1e6:.1f} µs", 60e-6)
+    for n, (general, yardstick) in sorted((cold or {}).items()):
+        add(f"cost of generality, cold (first call in a fresh process) at N = {n}", "≤ 2×", general / yardstick,
+            lambda v: f"{v:.1f}×", 2.0)
+    row = _find(rows, "six-bar", "graphical exact", "exact arcs")
+    add("graphical, six-bar, one position, both plans (issue 14)", "< 250 µs", row and row.seconds,
+        lambda v: f"{v * 1e6:.0f} µs", 250e-6)
     add("plans solve --example six-bar, whole process", "≤ 0.5 s", processes.get("plans solve --example six-bar"),
         lambda v: f"{v:.2f} s", 0.5)
     add("plans draw --example six-bar (four SVGs), whole process", "≤ 3 s", processes.get("plans draw --example six-bar"),
@@ -495,7 +558,12 @@ def run_bench(settings: Settings = DEFAULT, progress=None) -> BenchResult:
         if progress:
             progress("bench: whole processes")
         processes = time_processes(settings.process_runs)
-    return BenchResult(machine(), settings, rows, _targets(rows, processes), processes, time.perf_counter() - start)
+    cold = {}
+    if settings.cold_ns and any(case.name == "slider-crank" for case in cases):
+        if progress:
+            progress("bench: first calls in fresh processes")
+        cold = time_cold(settings.cold_ns, max(3, settings.process_runs))
+    return BenchResult(machine(), settings, rows, _targets(rows, processes, cold), processes, time.perf_counter() - start, cold)
 
 
 # --- output ------------------------------------------------------------------------------------
@@ -583,6 +651,10 @@ def markdown(result: BenchResult) -> str:
     for t in result.targets:
         verdict = "not measured" if t.met is None else ("met" if t.met else "**missed**")
         lines.append(f"| {t.name} | {t.goal} | {t.measured} | {verdict} |")
+    if result.cold:
+        lines += ["", "First call in a fresh process (offset slider-crank, median of fresh processes, wall time): "
+                  + "; ".join(f"N = {n}: plans {general * 1e3:.2f} ms, yardstick {yardstick * 1e3:.2f} ms"
+                              for n, (general, yardstick) in sorted(result.cold.items())) + "."]
     if result.processes:
         lines += ["", f"Whole processes (median of {settings.process_runs} runs, wall time): "
                   + "; ".join(f"`{name}` {seconds:.3f} s" for name, seconds in result.processes.items()) + "."]

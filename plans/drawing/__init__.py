@@ -23,10 +23,14 @@ from .sheet import draw_sheet, write_drawings
 
 def __getattr__(name: str):
     # multi-position output and handout pages, loaded on first use
-    if name in ("write_position_sheets", "draw_position_sheet", "render_pdf", "save_figure"):
+    if name in ("write_position_sheets", "draw_position_sheet"):
         from . import sheets
 
         return getattr(sheets, name)
+    if name in ("render_pdf", "save_figure"):
+        from . import formats
+
+        return getattr(formats, name)
     if name in ("draw_positions_plan",):
         from .positions_plan import draw_positions_plan
 

@@ -6,17 +6,38 @@ Three figures (A4 portrait, the size of a handout page):
   turn with their guides and are left out);
 * points — |v| and |a| of every reported point, and with ``components=True``
   their x and y components;
-* sliders — travel s, relative velocity v_rel, relative acceleration a_rel
-  and the magnitude of the Coriolis acceleration of every prismatic pair
-  (only when the mechanism has one).
+* sliders — travel s, relative velocity vʳ = ṡ and relative acceleration
+  aʳ = s̈ along the guide, and the magnitude of the Coriolis acceleration |aᵏ|
+  of every prismatic pair (only when the
+  mechanism has one).
 
-The horizontal axis is the angle the crank has turned from position 0 (in
-the sense of ω), or the linear driver's position.  Intervals where the
-mechanism cannot assemble are shaded grey and hatched; those near a dead
-centre (|sin| of the angle between a group's construction lines below
-:data:`NEAR_DEAD_CENTRE`, and the positions beside an interval without
-assembly, which is entered through a dead centre) light orange; the positions that have sheets are
-marked with dotted vertical lines and their numbers.
+Conventions, the same as :mod:`plans.positions` and ``plans sweep``:
+
+* The horizontal axis is the angle the crank has turned from position 0 *in
+  the sense of its ω* (so 0, 1, 2 … of the marked positions run left to
+  right), or the linear driver's position.
+* An angle φ is unwrapped continuously along the whole sweep (across an
+  interval without assembly too) and starts in [0°, 360°): it differs from
+  the CSV's angle in [0, 360) by whole turns only.  The crank's own φ is the
+  horizontal axis and is not drawn again: the panel says how it relates.
+* A quantity constant by the scene (the crank's ω and ε, the angle of a
+  linear driver, |aᵏ| on a guide that does not turn) is not drawn as a flat
+  curve but written in the panel; curves equal at every position (links
+  that turn together: ω₃ ≡ ω₄) are drawn once, with both names.
+* Near a dead centre the values run off to infinity: each panel's vertical
+  range is that of the well-conditioned positions (not near a dead centre);
+  values beyond it are clipped, marked with ▲/▼ at the edge, and their
+  extremes written in the panel.
+* Intervals where the mechanism cannot assemble are grey and hatched ``///``;
+  those near a dead centre (|sin| of the angle between a group's
+  construction lines below :data:`NEAR_DEAD_CENTRE`, and the positions beside
+  an interval without assembly, which is entered through a dead centre) are
+  hatched ``\\\\`` in black: both read in black and white.  The positions that
+  have sheets are marked with dashed vertical lines, a ▼ and their numbers;
+  the grid has horizontal lines only, so the marks are never taken for it.
+* Curves differ in colour, line style and marker, so they read without
+  colour too.  Numbers use the decimal comma in sr, ru, bg and sl, and a true
+  minus sign; the scene's title is drawn as plain text.
 
 Only the drawing happens here: every value comes from the
 :class:`~plans.analytic.AnalyticSolution`.
@@ -24,14 +45,18 @@ Only the drawing happens here: every value comes from the
 
 from __future__ import annotations
 
+import math
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import ScalarFormatter
 
 from .._files import replace_all
 from .._text import subscript, user_text
 from ..i18n import term
+from .numerals import MINUS, localised
 from .layout import A4
 from .svg import drawing_rc
 
@@ -39,27 +64,70 @@ __all__ = ["NEAR_DEAD_CENTRE", "QUANTITIES", "draw_cycle_diagrams", "write_cycle
 
 #: |sin| of the angle between construction lines below which a position counts as near a dead centre.
 NEAR_DEAD_CENTRE = 0.1
+#: Positions where every group's |sin| is at least this are well-conditioned: they set a panel's vertical range
+#: when the others reach beyond it by more than :data:`CLIP_BEYOND` times its span.
+WELL_CONDITIONED = 0.3
+CLIP_BEYOND = 0.5
+#: The near-dead-centre band is drawn at least this share of the horizontal axis wide, so that it can be seen.
+BAND_MIN = 0.008
 
-COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442")
+COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#8C6D31")
 STYLES = ("-", "--", "-.", ":")
+MARKERS = ("o", "s", "^", "D", "v", "x", "+", "*")
+NO_ASSEMBLY = {"facecolor": "#d4d4d4", "edgecolor": "#6e6e6e", "hatch": "///"}
+NEAR = {"facecolor": "none", "edgecolor": "#000000", "hatch": "\\\\\\\\"}
+MARK = {"color": "#202020", "lw": 0.7, "ls": "--"}
+
+
+def _number(value: float, lang: str, digits: int = 3) -> str:
+    """A number for a panel note: ordinary magnitudes without exponent, a true minus, the language's decimal mark."""
+    value = float(value)
+    if value == 0 or not math.isfinite(value):
+        return "0" if value == 0 else "?"
+    if 1e-3 <= abs(value) < 1e6:
+        decimals = max(0, digits - 1 - int(math.floor(math.log10(abs(value)))))
+        text = f"{value:.{decimals}f}"
+    else:
+        mantissa, exponent = f"{value:.{digits - 1}e}".split("e")
+        text = f"{mantissa}·10" + str(int(exponent)).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    return localised(text, lang)
+
+
+class _Ticks(ScalarFormatter):
+    """Tick labels without an offset or exponent for ordinary magnitudes, a true minus, the decimal comma in sr, ru, bg, sl."""
+
+    def __init__(self, lang: str):
+        super().__init__(useOffset=False)
+        self.set_powerlimits((-4, 6))
+        self.lang = lang
+
+    def __call__(self, x, pos=None):
+        return localised(super().__call__(x, pos).replace(MINUS, "-"), self.lang)
+
+    def get_offset(self):
+        return localised(super().get_offset().replace(MINUS, "-"), self.lang)
+
+
+def _sense(scene) -> float:
+    """+1 when the crank turns counter-clockwise (or stands still), −1 clockwise; +1 for a linear driver."""
+    omega = getattr(scene.driver, "omega", 0.0)
+    return -1.0 if omega < 0 else 1.0
 
 
 def cycle_axis(analytic, marked=None) -> tuple[np.ndarray, str, list[tuple[int, float]]]:
     """The x values of a sweep, the axis label, and the marked positions as (number, x).
 
     For a crank, x is the angle turned from the sweep's first position in the
-    sense the sweep runs (that of ω for the sweeps of :mod:`plans.positions`) [°]; for a linear driver, the position [mm].  *marked* are
-    driver positions (rad or m), numbered 0, 1, 2 … in the order given.
+    sense of the crank's ω [°] (the sense :mod:`plans.positions` and ``plans
+    sweep`` number and run positions in); for a linear driver, the position
+    [mm].  *marked* are driver positions (rad or m), numbered 0, 1, 2 … in the
+    order given.
     """
     scene = analytic.scene
     driver = np.asarray(analytic.driver, dtype=float)
     marks = []
     if hasattr(scene.driver, "omega"):
-        # the sense the sweep runs in (that of ω for plans.positions' sweeps)
-        if len(driver) > 1 and driver[-1] != driver[0]:
-            sense = 1.0 if driver[-1] > driver[0] else -1.0
-        else:
-            sense = -1.0 if scene.driver.omega < 0 else 1.0
+        sense = _sense(scene)
         start = driver[0]
         x = np.degrees(sense * (driver - start))
         label = "Δφ [°]"
@@ -106,18 +174,23 @@ def _near_dead(analytic) -> np.ndarray:
     return near | (beside & ~invalid)
 
 
-def _decorate(ax, x, invalid, near, marks, *, numbers: bool) -> None:
+def _decorate(ax, x, invalid, near, marks, lang, *, numbers: bool) -> None:
     for a, b in _spans(x, invalid):
-        ax.axvspan(a, b, facecolor="#d0d0d0", edgecolor="#8c8c8c", hatch="///", linewidth=0.0, zorder=0.5)
+        ax.axvspan(a, b, linewidth=0.0, zorder=0.5, **NO_ASSEMBLY)
+    widest = BAND_MIN * float(np.nanmax(x) - np.nanmin(x))
     for a, b in _spans(x, near & ~invalid):
-        ax.axvspan(a, b, facecolor="#fbe3c8", edgecolor="none", linewidth=0.0, zorder=0.4)
+        grow = max(0.0, widest - (b - a)) / 2
+        ax.axvspan(a - grow, b + grow, linewidth=0.0, zorder=0.4, **NEAR)
     for k, xm in marks:
-        ax.axvline(xm, color="#606060", lw=0.6, ls=":", zorder=0.6)
+        ax.axvline(xm, zorder=0.6, **MARK)
+        ax.plot([xm], [1.0], marker="v", ms=3.5, color=MARK["color"], transform=ax.get_xaxis_transform(), clip_on=False, zorder=3, label="_mark")
         if numbers:
-            ax.text(xm, 1.01, str(k), transform=ax.get_xaxis_transform(), ha="center", va="bottom", fontsize=6.5, color="#404040")
-    ax.grid(True, lw=0.3, color="#e0e0e0")
+            ax.text(xm, 1.025, str(k), transform=ax.get_xaxis_transform(), ha="center", va="bottom", fontsize=6.5, color="#202020")
+    ax.grid(True, axis="y", lw=0.3, color="#d8d8d8")
     ax.axhline(0.0, color="#000000", lw=0.5, zorder=0.7)
     ax.tick_params(labelsize=7)
+    ax.xaxis.set_major_formatter(_Ticks(lang))
+    ax.yaxis.set_major_formatter(_Ticks(lang))
     ax.set_xlim(float(np.nanmin(x)), float(np.nanmax(x)))
 
 
@@ -137,32 +210,145 @@ def _page(title: str, subtitle: str, rows: int) -> tuple[Figure, list]:
     fig.text(11 / A4[0], 1 - 11 / A4[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
     fig.text(11 / A4[0], 1 - 19 / A4[1], "\n".join(w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)), fontsize=9, ha="left", va="top", linespacing=1.3)
     top = 1 - 36 / A4[1]
-    bottom = 22 / A4[1]
-    axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / A4[0], "right": 1 - 40 / A4[0], "top": top, "bottom": bottom, "hspace": 0.16})
+    bottom = 26 / A4[1]
+    axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / A4[0], "right": 1 - 40 / A4[0], "top": top, "bottom": bottom, "hspace": 0.2})
     return fig, list(np.atleast_1d(axes))
 
 
-def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: bool) -> None:
-    from matplotlib.patches import Patch
+def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: bool, has_clipped: bool) -> None:
     from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
 
     handles = []
     if has_invalid:
-        handles.append(Patch(facecolor="#d0d0d0", edgecolor="#8c8c8c", hatch="///", label=term("no_assembly", lang)))
+        handles.append(Patch(label=term("no_assembly", lang), **NO_ASSEMBLY))
     if has_near:
-        handles.append(Patch(facecolor="#fbe3c8", label=f"{term('near_dead_centre', lang)} (|sin| < {NEAR_DEAD_CENTRE:g})"))
+        handles.append(Patch(label=f"{term('near_dead_centre', lang)} (|sin| < {localised(f'{NEAR_DEAD_CENTRE:g}', lang)})", **NEAR))
     if has_marks:
-        handles.append(Line2D([], [], color="#606060", lw=0.6, ls=":", label=term("sheet_positions", lang)))
+        handles.append(Line2D([], [], marker="v", ms=3.5, label=term("sheet_positions", lang), **MARK))
+    if has_clipped:
+        handles.append(Line2D([], [], color="#000000", ls="none", marker="^", ms=3.5, label=term("clipped", lang)))
     if handles:
-        fig.legend(handles=handles, loc="lower left", bbox_to_anchor=(24 / A4[0], 6 / A4[1]), ncol=len(handles), fontsize=7, frameon=False)
+        fig.legend(handles=handles, loc="lower left", bbox_to_anchor=(24 / A4[0], 5 / A4[1]), ncol=2, fontsize=7, frameon=False)
 
 
-def _plot_series(ax, x, series, ylabel):
-    for n, (label, y) in enumerate(series):
-        ax.plot(x, y, color=COLOURS[n % len(COLOURS)], ls=STYLES[(n // len(COLOURS)) % len(STYLES)], lw=1.1, label=label)
+@dataclass
+class _Panel:
+    """What one panel shows: curves (names, values), and notes for what is not drawn as a curve."""
+
+    curves: list
+    notes: list
+
+
+def _panel(series, valid, lang: str, unit: str, extra_notes=()) -> _Panel:
+    """Constant series become notes, equal series one curve with all their names."""
+    curves, notes = [], list(extra_notes)
+    for name, y in series:
+        y = np.asarray(y, dtype=float)
+        ok = valid & np.isfinite(y)
+        if not ok.any():
+            continue
+        values = y[ok]
+        scale = max(float(np.max(np.abs(values))), 1e-300)
+        if float(np.ptp(values)) <= 1e-9 * scale:
+            value = float(values[0]) if abs(float(values[0])) > 1e-12 * scale else 0.0
+            notes.append(f"{name} = {_number(value, lang)}{(' ' + unit) if unit and value else ''}")
+            continue
+        for curve in curves:
+            other = curve[1]
+            if np.array_equal(np.isfinite(other), np.isfinite(y)) and np.allclose(other[ok], values, rtol=1e-9, atol=1e-12 * scale):
+                curve[0].append(name)
+                break
+        else:
+            curves.append(([name], y))
+    if notes:
+        notes = [f"{', '.join(notes)}  ({term('constant', lang)})"] if not extra_notes else [", ".join(notes)]
+    return _Panel([(" = ".join(names), y) for names, y in curves], notes)
+
+
+def _well_conditioned(analytic) -> np.ndarray:
+    """Positions where every group's |sin| is at least :data:`WELL_CONDITIONED`."""
+    good = np.asarray(analytic.valid, dtype=bool).copy()
+    for sines in analytic.sines.values():
+        s = np.asarray(sines, dtype=float)
+        good &= np.isfinite(s) & (s >= WELL_CONDITIONED)
+    return good
+
+
+def _clip(ax, x, panel: _Panel, good, lang: str, unit: str) -> bool:
+    """Limit the vertical range to the well-conditioned positions; mark and write what lies beyond. True if clipped."""
+    if not panel.curves:
+        return False
+    ys = np.array([y for _, y in panel.curves], dtype=float)
+    if not good.any():
+        return False
+    inside = ys[:, good]
+    lo, hi = float(np.nanmin(inside)), float(np.nanmax(inside))
+    full_lo, full_hi = float(np.nanmin(ys)), float(np.nanmax(ys))
+    span = max(hi - lo, 1e-12 * max(abs(hi), abs(lo), 1e-300))
+    if full_lo >= lo - CLIP_BEYOND * span and full_hi <= hi + CLIP_BEYOND * span:
+        return False
+    bottom, top = lo - 0.12 * span, hi + 0.12 * span
+    if full_lo >= lo - CLIP_BEYOND * span:
+        bottom = min(bottom, full_lo - 0.05 * span)
+    if full_hi <= hi + CLIP_BEYOND * span:
+        top = max(top, full_hi + 0.05 * span)
+    ax.set_ylim(bottom, top)
+    extremes: dict[str, list[str]] = {}
+    for name, y in panel.curves:
+        for edge, over, marker in ((top, y > top, "^"), (bottom, y < bottom, "v")):
+            over = np.where(np.isfinite(y), over, False)
+            if not over.any():
+                continue
+            # one mark per run of clipped positions, at its extreme
+            k = 0
+            while k < len(y):
+                if over[k]:
+                    j = k
+                    while j + 1 < len(y) and over[j + 1]:
+                        j += 1
+                    run = slice(k, j + 1)
+                    extreme = k + int(np.argmax(np.abs(y[run])))
+                    ax.plot([x[extreme]], [edge], marker=marker, ms=4, color="#000000", clip_on=False, zorder=3.5, label="_clipped")
+                    k = j + 1
+                else:
+                    k += 1
+            extreme = float(np.nanmax(y[over])) if marker == "^" else float(np.nanmin(y[over]))
+            extremes.setdefault(name, []).append(_number(extreme, lang))
+    beyond = [f"{name}: {' / '.join(values)}" for name, values in extremes.items()]
+    if beyond:
+        ax.text(0.99, 0.97, f"{term('clipped', lang)}: " + ", ".join(beyond) + (f" {unit}" if unit else ""), transform=ax.transAxes,
+                ha="right", va="top", fontsize=6.5, bbox={"facecolor": "white", "edgecolor": "none", "pad": 1.0}, zorder=5)
+    return bool(beyond)
+
+
+def _plot_panel(ax, x, panel: _Panel, ylabel: str) -> None:
+    step = max(1, len(x) // 10)
+    for n, (label, y) in enumerate(panel.curves):
+        ax.plot(
+            x, y, color=COLOURS[n % len(COLOURS)], ls=STYLES[n % len(STYLES)], lw=1.1, label=label,
+            marker=MARKERS[n % len(MARKERS)], ms=3.2, markevery=((n * step) // max(1, len(panel.curves)), step),
+            mfc="white" if n % 2 else COLOURS[n % len(COLOURS)],
+        )
     ax.set_ylabel(ylabel, fontsize=8)
-    if series:
-        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7, frameon=False, borderaxespad=0.0)
+    if panel.curves:
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7, frameon=False, borderaxespad=0.0, handlelength=3.0)
+    if panel.notes:
+        ax.text(0.01, 0.97, "\n".join(panel.notes), transform=ax.transAxes, ha="left", va="top", fontsize=6.5,
+                bbox={"facecolor": "white", "edgecolor": "none", "pad": 1.0}, zorder=5)
+
+
+def _name(symbol: str, sub: str) -> str:
+    """A symbol with a subscript, typeset: digits as Unicode subscripts (``ω₃``), a name in mathtext (``$v_{\\mathrm{M}}$``).
+
+    The name comes from the scene: characters mathtext would read as commands are escaped.
+    """
+    if sub.isdigit() and "^" not in symbol:
+        return symbol + subscript(sub)
+    safe = sub.replace("\\", "").replace("{", "").replace("}", "")
+    for c in "$_%#&^~":
+        safe = safe.replace(c, "\\" + c)
+    return rf"${symbol}_{{\mathrm{{{safe}}}}}$"
 
 
 def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False) -> list[tuple[str, Figure]]:
@@ -184,84 +370,66 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     valid = np.asarray(analytic.valid, dtype=bool)
     invalid = ~valid
     near = _near_dead(analytic)
+    good = _well_conditioned(analytic)
     x, xlabel, marks = cycle_axis(analytic, marked)
     crank = hasattr(scene.driver, "omega")
     xwords = term("turned_from_0", lang) if crank else term("driver_position", lang)
     title = term("cycle_diagrams", lang)
+    subtitle = user_text(scene.title)
     out = []
+
+    def page(name, words, panels):
+        fig, axes = _page(title, subtitle + "\n" + words, len(panels))
+        clipped = False
+        for ax, (quantity, ylabel, unit) in zip(axes, panels):
+            panel = _quantity_panel(analytic, quantity, valid, lang, unit)
+            _plot_panel(ax, x, panel, ylabel)
+            _decorate(ax, x, invalid, near, marks, lang, numbers=ax is axes[0])
+            clipped |= _clip(ax, x, panel, good, lang, unit)
+        axes[-1].set_xlabel(f"{xlabel}  —  {xwords}", fontsize=8)
+        if crank and float(np.nanmax(x) - np.nanmin(x)) >= 90:
+            axes[-1].set_xticks(np.arange(0, np.nanmax(x) + 1e-9, 30.0))
+        _legend_note(fig, lang, bool(invalid.any()), bool((near & ~invalid).any()), bool(marks), clipped)
+        out.append((name, fig))
+
     with drawing_rc():
-        # links
-        fig, axes = _page(title, user_text(scene.title) + "\n" + term('links_motion', lang), 3 if scene.accelerations else 2)
-        _plot_series(axes[0], x, _series(analytic, "phi", valid), f"φ [°]\n({term('angle', lang)})")
-        _plot_series(axes[1], x, _series(analytic, "omega", valid), f"ω [rad/s]\n({term('angular_velocity', lang)})")
+        panels = [("phi", f"φ [°]\n({term('angle', lang)})", "°"), ("omega", f"ω [rad/s]\n({term('angular_velocity', lang)})", "rad/s")]
         if scene.accelerations:
-            _plot_series(axes[2], x, _series(analytic, "epsilon", valid), f"ε [rad/s²]\n({term('angular_acceleration', lang)})")
-        _finish(fig, axes, x, invalid, near, marks, lang, xlabel, xwords)
-        out.append(("links", fig))
+            panels.append(("epsilon", f"ε [rad/s²]\n({term('angular_acceleration', lang)})", "rad/s²"))
+        page("links", term("links_motion", lang), panels)
 
-        # points
-        points = [p for p in scene.report if p in analytic.points]
-        rows = (2 if scene.accelerations else 1) * (3 if components else 1)
-        fig, axes = _page(title, user_text(scene.title) + "\n" + term('points_motion', lang), rows)
-        k = 0
-        _plot_series(axes[k], x, _series(analytic, "v", valid), f"|v| [m/s]\n({term('velocity', lang)})")
-        k += 1
+        panels = [("v", f"|v| [m/s]\n({term('velocity', lang)})", "m/s")]
         if components:
-            _plot_series(axes[k], x, [(f"v_{p},x", _finite(analytic.points[p].v.real, valid)) for p in points], "v_x [m/s]")
-            _plot_series(axes[k + 1], x, [(f"v_{p},y", _finite(analytic.points[p].v.imag, valid)) for p in points], "v_y [m/s]")
-            k += 2
+            panels += [("vx", "$v_x$ [m/s]", "m/s"), ("vy", "$v_y$ [m/s]", "m/s")]
         if scene.accelerations:
-            _plot_series(axes[k], x, _series(analytic, "a", valid), f"|a| [m/s²]\n({term('acceleration', lang)})")
-            k += 1
+            panels.append(("a", f"|a| [m/s²]\n({term('acceleration', lang)})", "m/s²"))
             if components:
-                _plot_series(axes[k], x, [(f"a_{p},x", _finite(analytic.points[p].a.real, valid)) for p in points], "a_x [m/s²]")
-                _plot_series(axes[k + 1], x, [(f"a_{p},y", _finite(analytic.points[p].a.imag, valid)) for p in points], "a_y [m/s²]")
-        _finish(fig, axes, x, invalid, near, marks, lang, xlabel, xwords)
-        out.append(("points", fig))
+                panels += [("ax", "$a_x$ [m/s²]", "m/s²"), ("ay", "$a_y$ [m/s²]", "m/s²")]
+        page("points", term("points_motion", lang), panels)
 
-        # sliders
-        pairs = [p.name for p in scene.prismatics if p.name in analytic.sliders]
-        if pairs:
-            rows = 4 if scene.accelerations else 2
-            fig, axes = _page(title, user_text(scene.title) + "\n" + term('sliders_motion', lang), rows)
-            _plot_series(axes[0], x, _series(analytic, "s", valid), f"s [mm]\n({term('travel', lang)})")
-            _plot_series(axes[1], x, _series(analytic, "v_rel", valid), f"v_rel [m/s]\n({term('relative_velocity_short', lang)})")
+        if any(p.name in analytic.sliders for p in scene.prismatics):
+            panels = [("s", f"s [mm]\n({term('travel', lang)})", "mm"), ("v_rel", f"vʳ [m/s]\n({term('relative_velocity_short', lang)})", "m/s")]
             if scene.accelerations:
-                _plot_series(axes[2], x, _series(analytic, "a_rel", valid), f"a_rel [m/s²]\n({term('relative_acceleration_short', lang)})")
-                _plot_series(axes[3], x, _series(analytic, "coriolis", valid), f"|aᵏ| [m/s²]\n({term('coriolis_acceleration', lang)})")
-            _finish(fig, axes, x, invalid, near, marks, lang, xlabel, xwords)
-            out.append(("sliders", fig))
+                panels += [
+                    ("a_rel", f"aʳ [m/s²]\n({term('relative_acceleration_short', lang)})", "m/s²"),
+                    ("coriolis", f"|aᵏ| [m/s²]\n({term('coriolis_acceleration', lang)})", "m/s²"),
+                ]
+            page("sliders", term("sliders_motion", lang), panels)
     return out
 
 
 def _unwrap_nan(phi, valid) -> np.ndarray:
-    """φ in degrees, unwrapped along each run of valid positions."""
+    """φ in degrees, unwrapped continuously over every valid position (across gaps too), starting in [0°, 360°).
+
+    It differs from the angle in [0, 360) of the CSV by whole turns only.
+    """
     phi = np.array(phi, dtype=float)
     out = np.full_like(phi, np.nan)
     ok = valid & np.isfinite(phi)
-    k = 0
-    n = len(phi)
-    while k < n:
-        if ok[k]:
-            j = k
-            while j + 1 < n and ok[j + 1]:
-                j += 1
-            out[k : j + 1] = np.degrees(np.unwrap(phi[k : j + 1]))
-            k = j + 1
-        else:
-            k += 1
+    if ok.any():
+        turned = np.degrees(np.unwrap(phi[ok]))
+        out[ok] = turned - 360.0 * math.floor(turned[0] / 360.0)
     return out
-
-
-def _finish(fig, axes, x, invalid, near, marks, lang, xlabel, xwords) -> None:
-    for n, ax in enumerate(axes):
-        _decorate(ax, x, invalid, near, marks, numbers=n == 0)
-    axes[-1].set_xlabel(f"{xlabel}  —  {xwords}", fontsize=8)
-    if xlabel.startswith("Δφ"):
-        span = float(np.nanmax(x) - np.nanmin(x))
-        if span >= 90:
-            axes[-1].set_xticks(np.arange(0, np.nanmax(x) + 1e-9, 30.0))
-    _legend_note(fig, lang, bool(invalid.any()), bool((near & ~invalid).any()), bool(marks))
 
 
 def write_cycle_diagrams(analytic, directory, *, marked=None, lang: str = "en", components: bool = False) -> list[Path]:
@@ -288,10 +456,24 @@ QUANTITIES = {
     "v": "|v| [m/s]",
     "a": "|a| [m/s²]",
     "s": "s [mm]",
-    "v_rel": "v_rel [m/s]",
-    "a_rel": "a_rel [m/s²]",
+    "v_rel": "vʳ [m/s]",
+    "a_rel": "aʳ [m/s²]",
     "coriolis": "|aᵏ| [m/s²]",
 }
+_UNITS = {"phi": "°", "omega": "rad/s", "epsilon": "rad/s²", "v": "m/s", "a": "m/s²", "s": "mm", "v_rel": "m/s", "a_rel": "m/s²", "coriolis": "m/s²"}
+
+
+def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str) -> _Panel:
+    scene = analytic.scene
+    extra = []
+    series = _series(analytic, quantity, valid)
+    if quantity == "phi" and hasattr(scene.driver, "omega"):
+        link = scene.driver.link
+        start = _number(math.degrees(float(analytic.driver[0])) % 360.0, lang, 4)
+        sign = "−" if _sense(scene) < 0 else "+"
+        extra.append(f"φ{subscript(link)} = {start}° {sign} Δφ")
+        series = [(n, y) for n, y in series if n != f"φ{subscript(link)}"]
+    return _panel(series, valid, lang, unit, extra)
 
 
 def _series(analytic, quantity: str, valid) -> list[tuple[str, np.ndarray]]:
@@ -300,17 +482,25 @@ def _series(analytic, quantity: str, valid) -> list[tuple[str, np.ndarray]]:
         links = [n for n in scene.links if not scene.bodies[n].block]
         symbol = {"phi": "φ", "omega": "ω", "epsilon": "ε"}[quantity]
         if quantity == "phi":
-            return [(f"{symbol}{subscript(n)}", _unwrap_nan(analytic.links[n].phi, valid)) for n in links]
-        return [(f"{symbol}{subscript(n)}", _finite(getattr(analytic.links[n], quantity), valid)) for n in links]
+            return [(_name(symbol, n), _unwrap_nan(analytic.links[n].phi, valid)) for n in links]
+        return [(_name(symbol, n), _finite(getattr(analytic.links[n], quantity), valid)) for n in links]
+    points = [p for p in scene.report if p in analytic.points]
     if quantity in ("v", "a"):
-        points = [p for p in scene.report if p in analytic.points]
-        return [(f"|{quantity}_{p}|", _finite(np.abs(getattr(analytic.points[p], quantity)), valid)) for p in points]
+        return [(_abs(_name(quantity, p)), _finite(np.abs(getattr(analytic.points[p], quantity)), valid)) for p in points]
+    if quantity in ("vx", "vy", "ax", "ay"):
+        part = "real" if quantity[1] == "x" else "imag"
+        return [(_name(quantity[0], f"{p},{quantity[1]}"), _finite(getattr(getattr(analytic.points[p], quantity[0]), part), valid)) for p in points]
     pairs = [p.name for p in scene.prismatics if p.name in analytic.sliders]
     if quantity == "s":
-        return [(f"s_{n}", _finite(np.asarray(analytic.sliders[n].s) * 1e3, valid)) for n in pairs]
+        return [(_name("s", n), _finite(np.asarray(analytic.sliders[n].s) * 1e3, valid)) for n in pairs]
     if quantity == "coriolis":
-        return [(f"|aᵏ| {n}", _finite(np.abs(analytic.sliders[n].coriolis), valid)) for n in pairs]
-    return [(f"{quantity} {n}", _finite(getattr(analytic.sliders[n], quantity), valid)) for n in pairs]
+        return [(_abs(_name("a^k", n)), _finite(np.abs(analytic.sliders[n].coriolis), valid)) for n in pairs]
+    symbol = {"v_rel": "v^r", "a_rel": "a^r"}[quantity]
+    return [(_name(symbol, n), _finite(getattr(analytic.sliders[n], quantity), valid)) for n in pairs]
+
+
+def _abs(name: str) -> str:
+    return f"$|{name[1:-1]}|$" if name.startswith("$") else f"|{name}|"
 
 
 def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang: str = "en") -> list:
@@ -321,6 +511,7 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
     if quantity not in QUANTITIES:
         raise ValueError(f"no diagram of {quantity!r}; choose one of {', '.join(QUANTITIES)}")
     valid = np.asarray(analytic.valid, dtype=bool)
+    near = _near_dead(analytic)
     x, xlabel, marks = cycle_axis(analytic, marked)
     with drawing_rc():
         if ax is None:
@@ -329,8 +520,9 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
 
             FigureCanvasSVG(fig)
             ax = fig.add_axes([0.12, 0.16, 0.72, 0.76])
-        series = _series(analytic, quantity, valid)
-        _plot_series(ax, x, series, QUANTITIES[quantity])
-        _decorate(ax, x, ~valid, _near_dead(analytic), marks, numbers=True)
+        panel = _quantity_panel(analytic, quantity, valid, lang, _UNITS[quantity])
+        _plot_panel(ax, x, panel, QUANTITIES[quantity])
+        _decorate(ax, x, ~valid, near, marks, lang, numbers=True)
+        _clip(ax, x, panel, _well_conditioned(analytic), lang, _UNITS[quantity])
         ax.set_xlabel(xlabel, fontsize=8)
     return [line for line in ax.get_lines() if not line.get_label().startswith("_")]

@@ -6,9 +6,9 @@ font, see :func:`plans.drawing._canvas.text_size`) is scored by its
 clearance from everything already drawn (vectors, bars, pins, other labels,
 as shapely geometries) against its distance from the anchor: up to
 ``CLEAR_MM`` of clearance is worth four times its length in distance, an
-overlap costs as much as 3 mm of distance, and the preferred direction breaks
-ties.  A label therefore moves a few millimetres to get clear, but not so far
-that it could be read as another point's.  The best box becomes
+overlap costs as much as ``OVERLAP_MM`` of distance, and the preferred direction breaks
+ties.  A label therefore moves off to get clear, with a leader line when it
+goes further than a glance would join it to its point.  The best box becomes
 an obstacle for the labels placed after it, so labels never sit on each other
 when there is room for them.  The scoring is a pure function of the
 geometry, so placement is deterministic.
@@ -21,9 +21,10 @@ import math
 
 import numpy as np
 import shapely
-from shapely.geometry import box
+from shapely.geometry import Point, box
 
 from ._canvas import Sketch, text_size
+from .style import LEADER_STYLE
 
 __all__ = ["CLEAR_MM", "LABEL_SPACE_MM", "place_label"]
 
@@ -31,7 +32,26 @@ __all__ = ["CLEAR_MM", "LABEL_SPACE_MM", "place_label"]
 CLEAR_MM = 0.8
 #: Extra space [mm] kept around a placed label.
 LABEL_SPACE_MM = 0.9
+#: An overlap costs as much as this much distance [mm]: a label moves up to
+#: about this much further (with a leader line) rather than cover a mark.
+OVERLAP_MM = 12.0
+#: How far [mm] a label may be moved off its point, with a leader line, when nothing nearer is free.
+FARTHEST_MM = 30.0
 _SEPARATOR = ", "
+
+
+def _leader(sketch: Sketch, anchor: complex, center: complex, w: float, h: float) -> None:
+    """A thin line from just off *anchor* to the nearest side of the label's box."""
+    from shapely.ops import nearest_points
+
+    label_box = box(center.real - w / 2, center.imag - h / 2, center.real + w / 2, center.imag + h / 2)
+    _, near = nearest_points(Point(anchor.real, anchor.imag), label_box.exterior)
+    end = complex(near.x, near.y)
+    if abs(end - anchor) < 1.2:
+        return
+    u = (end - anchor) / abs(end - anchor)
+    color, lw = LEADER_STYLE
+    sketch.line([anchor + u * 0.5, end - u * 0.25], color=color, lw=lw, gid="leader", zorder=5.0, obstacle=True, bound=False)
 
 
 def place_label(
@@ -48,6 +68,7 @@ def place_label(
     weight: str = "normal",
     zorder: float = 6.0,
     mathtext: bool = False,
+    leader_from: float | None = None,
 ) -> list:
     """Place one label (several names written ``"p, o, d"``) near *anchor*.
 
@@ -70,6 +91,9 @@ def place_label(
         Extra candidate centres tried before the rings (a plate's centroid).
     mathtext : bool
         The text is matplotlib mathtext (``"$v_A$"``), measured as such.
+    leader_from : float, optional
+        A label placed at a gap of at least this [mm] is joined to its point
+        by a thin leader line (where points crowd, a label may sit further off).
 
     Returns
     -------
@@ -78,32 +102,66 @@ def place_label(
     texts = [t for t, _ in pieces]
     full = _SEPARATOR.join(texts)
     w, h = text_size(full, size, weight, mathtext)
-    obstacles = np.array(sketch.obstacles, dtype=object) if sketch.obstacles else None
-
-    def clearance(center: complex) -> float:
-        if obstacles is None:
-            return math.inf
-        candidate = box(center.real - w / 2, center.imag - h / 2, center.real + w / 2, center.imag + h / 2)
-        return float(shapely.distance(candidate, obstacles).min())
-
-    best = None
-    order = 0
-    candidates: list[tuple[complex, float, float]] = [(c, 0.0, 0.0) for c in first]
     base_angle = cmath.phase(prefer) if prefer else math.radians(45)
-    for gap in gaps:
+
+    def ring_at(gap: float) -> list[tuple[complex, float, float]]:
+        out = []
         for k in range(16):
             theta = base_angle + 2 * math.pi * k / 16
             u = cmath.exp(1j * theta)
             reach = gap + abs(u.real) * w / 2 + abs(u.imag) * h / 2
-            turn = 1 - math.cos(theta - base_angle)
-            candidates.append((anchor + u * reach, gap, turn))
-    for center, gap, turn in candidates:
-        c = clearance(center)
-        score = 4.0 * min(c, CLEAR_MM) - (3.0 if c <= 0.0 else 0.0) - gap - 0.15 * turn - 1e-6 * order
-        order += 1
-        if best is None or score > best[0]:
-            best = (score, center)
+            out.append((anchor + u * reach, gap, 1 - math.cos(theta - base_angle)))
+        return out
+
+    # Rings in turn: a candidate scores at most 4·CLEAR_MM − gap, so once the
+    # best so far beats that bound for the next ring, the rest cannot win
+    # (the result is the one an exhaustive search gives, at a fraction of the
+    # cost).  When every ring overlaps something, rings further out are tried
+    # (up to FARTHEST_MM) and the label gets a leader line.
+    rings = ([[(c, 0.0, 0.0) for c in first]] if first else []) + [ring_at(g) for g in gaps]
+    extra = gaps[-1] if gaps else 1.0
+    best = None  # (score, centre, gap, clearance)
+    order = 0
+    while rings:
+        ring = rings.pop(0)
+        gap = ring[0][1]
+        if best is not None and best[0] > 4.0 * CLEAR_MM - gap:
+            break
+        xs = np.array([c.real for c, _, _ in ring])
+        ys = np.array([c.imag for c, _, _ in ring])
+        boxes = shapely.box(xs - w / 2, ys - h / 2, xs + w / 2, ys + h / 2)
+        # only what lies within CLEAR_MM of a candidate can change its score
+        near = sketch.obstacles.near(
+            xs.min() - w / 2 - CLEAR_MM, ys.min() - h / 2 - CLEAR_MM, xs.max() + w / 2 + CLEAR_MM, ys.max() + h / 2 + CLEAR_MM
+        )
+        clear = np.full(len(ring), math.inf)
+        if near:
+            # measure only the pairs whose bounding boxes come within CLEAR_MM
+            shapes = np.array(near, dtype=object)
+            ob = shapely.bounds(shapes)
+            hit = (
+                (ob[None, :, 0] <= (xs + w / 2 + CLEAR_MM)[:, None])
+                & (ob[None, :, 2] >= (xs - w / 2 - CLEAR_MM)[:, None])
+                & (ob[None, :, 1] <= (ys + h / 2 + CLEAR_MM)[:, None])
+                & (ob[None, :, 3] >= (ys - h / 2 - CLEAR_MM)[:, None])
+            )
+            i, j = np.nonzero(hit)
+            if len(i):
+                np.minimum.at(clear, i, shapely.distance(boxes[i], shapes[j]))
+        for (center, gap, turn), c in zip(ring, clear):
+            c = float(c)
+            score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - gap - 0.15 * turn - 1e-6 * order
+            order += 1
+            if best is None or score > best[0]:
+                best = (score, center, gap, c)
+        if not rings and best[3] <= 0.0 and extra * 1.4 <= FARTHEST_MM:
+            extra *= 1.4
+            rings.append(ring_at(extra))
+            if leader_from is None:
+                leader_from = extra
     center = best[1]
+    if leader_from is not None and best[2] >= leader_from:
+        _leader(sketch, anchor, center, w, h)
 
     artists = []
     x = center.real - w / 2

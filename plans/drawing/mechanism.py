@@ -32,7 +32,7 @@ from .._text import SUBSCRIPT
 from ._canvas import Sketch, fmt_number, sketch_on, unit
 from .labels import place_label
 from ..i18n import term
-from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, PLATE_FILL, SMALL_PT
+from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, MM_PER_PT, PLATE_FILL, SMALL_PT
 
 __all__ = ["draw_mechanism", "mechanism_labels", "MechanismDrawing"]
 
@@ -47,6 +47,7 @@ GROUND = 5.0  # mm, height of the ground triangle
 HATCH_STEP = 2.2  # mm
 HATCH_LEN = 2.4  # mm
 OMEGA_R = 8.0  # mm
+LEADER_FROM_MM = 4.5  # a label further than this from its point gets a leader line
 EPSILON_R = 12.5  # mm
 
 
@@ -67,12 +68,44 @@ def mechanism_labels(solution) -> list[str]:
     return [n for n in names if n in solution.positions]
 
 
+def _outside(a: complex, c: complex, spans) -> list[tuple[complex, complex]]:
+    """The pieces of segment a–c outside the given collinear spans (each a pair of points)."""
+    d = c - a
+    if abs(d) == 0 or not spans:
+        return [(a, c)]
+    L = abs(d)
+    u = d / L
+    cuts = []
+    for p0, p1 in spans:
+        if max(abs(((p - a) * u.conjugate()).imag) for p in (p0, p1)) > 0.5:
+            continue  # not along this segment
+        t0, t1 = sorted(((p - a) * u.conjugate()).real for p in (p0, p1))
+        cuts.append((max(0.0, t0), min(L, t1)))
+    pieces, t = [], 0.0
+    for t0, t1 in sorted(cuts):
+        if t0 > t:
+            pieces.append((a + u * t, a + u * t0))
+        t = max(t, t1)
+    if t < L:
+        pieces.append((a + u * t, c))
+    return pieces
+
+
+def _on_segment(q: complex, a: complex, b: complex, tol: float) -> bool:
+    """Whether *q* lies within *tol* [mm] of the segment a–b."""
+    u = b - a
+    if abs(u) == 0:
+        return abs(q - a) <= tol
+    t = min(1.0, max(0.0, ((q - a) * u.conjugate()).real / abs(u) ** 2))
+    return abs(q - (a + u * t)) <= tol
+
+
 def _frame_pivots(scene) -> list[str]:
     frame = scene.bodies[FRAME]
     return [p for p in frame.points if any(p in b.points for n, b in scene.bodies.items() if n != FRAME)]
 
 
-def draw_mechanism(solution, ax=None, *, lang: str = "en") -> list:
+def draw_mechanism(solution, ax=None, *, lang: str = "en", slots: dict | None = None) -> list:
     """Draw the kinematic scheme of *solution* (a GraphicalSolution) at k_l.
 
     Parameters
@@ -84,12 +117,17 @@ def draw_mechanism(solution, ax=None, *, lang: str = "en") -> list:
         reach it as ``artists[0].figure``.
     lang : str
         Language of the heading (see :mod:`plans.i18n`).
+    slots : dict, optional
+        ``"4.slot"`` -> (s_min, s_max) [m]: the stretch of a moving line that a
+        block travels over in the cycle (along the line from its origin), as
+        found by a sweep; the slot is drawn over it.  The drawing solves nothing:
+        without it, a slot is drawn around the block's present place.
 
     Returns
     -------
     list of matplotlib.artist.Artist
     """
-    return sketch_on(ax, "mech", lambda sketch: MechanismDrawing(sketch, solution, lang=lang).draw())
+    return sketch_on(ax, "mech", lambda sketch: MechanismDrawing(sketch, solution, lang=lang, slots=slots).draw())
 
 
 class MechanismDrawing:
@@ -98,7 +136,8 @@ class MechanismDrawing:
     *caption* False leaves out the heading and the scale statement (a page that states them itself).
     """
 
-    def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True):
+    def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True, slots: dict | None = None):
+        self.slots = dict(slots or {})
         self.lang = lang
         self.show_caption = caption
         self.s = sketch
@@ -191,11 +230,32 @@ class MechanismDrawing:
         self.link_labels()
         self.caption()
 
+    def _stack_side(self, body: str) -> float:
+        """+1 or −1 along its own guide for a frame-guided block that shares its pin with a
+        block on a moving line (a follower on a wedge): the side away from the moving
+        line's body, where the follower and its guide are drawn; 0 for any other block."""
+        if not self.is_block(body) or self._guide_of(body) != FRAME:
+            return 0.0
+        pin_name = next(iter(self.scene.bodies[body].points))
+        for pr in self.scene.prismatics:
+            if pr.slider != body and pr.guide != FRAME and pin_name in self.scene.bodies[pr.slider].points and self.is_block(pr.slider):
+                pin = self.p(pin_name)
+                u = cmath.exp(1j * self.block_angle(body))
+                reach = sum(((q - pin) * u.conjugate()).real for q in self.body_points(pr.guide))
+                return -1.0 if reach > 0 else 1.0
+        return 0.0
+
     def frame_guides(self) -> None:
+        self.guides: list[tuple[complex, complex]] = []
         frame = self.scene.bodies[FRAME]
         for name, line in frame.lines.items():
             riders = self.riders(FRAME, name)
             if not riders:
+                continue
+            bars = [pr.slider for pr in self.scene.prismatics if pr.guide == FRAME and pr.guide_line == name and not self.is_block(pr.slider)]
+            if bars and len(bars) == len([pr for pr in self.scene.prismatics if pr.guide == FRAME and pr.guide_line == name]) and getattr(self.scene.driver, "guide", None) != name:
+                for body in bars:
+                    self._bearing(body, name, line)
                 continue
             origin = self.g(FRAME, line.origin)
             u = cmath.exp(1j * line.angle)
@@ -205,12 +265,58 @@ class MechanismDrawing:
                 base = ((self.p(driver.point) - origin) * u.conjugate()).real - driver.s / self.k_l
                 ts += [base + driver.stroke[0] / self.k_l, base + driver.stroke[1] / self.k_l]
             reach = self.block[0] + 8.0
-            a = origin + u * (min(ts) - reach)
-            b = origin + u * (max(ts) + reach)
+            lo, hi = min(ts) - reach, max(ts) + reach
+            # a follower on a moving incline: its guide is a stub on the follower's side only
+            for pr in self.scene.prismatics:
+                if pr.guide == FRAME and pr.guide_line == name:
+                    side = self._stack_side(pr.slider)
+                    # (the follower sits on the block under it: its guide reaches past it)
+                    stack = self.block[0] + self.block[1]
+                    if side > 0:
+                        lo, hi = max(lo, min(ts)), hi + stack
+                    elif side < 0:
+                        lo, hi = lo - stack, min(hi, max(ts))
+            # a rod lying along the guide (a ram's connecting link) keeps the guide off its length
+            for body in self.moving:
+                if self.is_block(body):
+                    continue
+                along = [((q - origin) * u.conjugate()) for q in self.body_points(body)]
+                if len(along) < 2 or any(abs(z.imag) > 1.0 for z in along):
+                    continue
+                r0, r1 = min(z.real for z in along), max(z.real for z in along)
+                inside = [t for t in ts if not (r0 < t < r1)]
+                if not inside:
+                    continue
+                if r1 <= min(inside):
+                    lo = max(lo, r1 + self.pin_r + 1.0)
+                elif r0 >= max(inside):
+                    hi = min(hi, r0 - self.pin_r - 1.0)
+            a = origin + u * lo
+            b = origin + u * hi
             n = u * 1j
             side = -1.0 if self._mechanism_side(FRAME, name, origin, n) > 0 else 1.0
             self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=1.2)
             self._hatch(a, b, n * side)
+            self.guides.append((a, b))
+
+    def _bearing(self, body: str, name: str, line) -> None:
+        """A bar sliding along a frame line (a yoke on its rail): the prismatic pair with the frame
+        as its standard symbol, a fixed slide bearing around the bar, hatched on both outer sides."""
+        origin = self.g(FRAME, line.origin)
+        u = cmath.exp(1j * line.angle)
+        n = u * 1j
+        ts = [((q - origin) * u.conjugate()).real for q in self.body_points(body)]
+        t0, t1 = min(ts), max(ts)
+        half = self.block[0] * 0.7
+        centre = t0 + 0.72 * (t1 - t0)
+        centre = min(max(centre, t0 + half), t1 - half) if t1 - t0 > 2 * half else (t0 + t1) / 2
+        gap = BAR_PT * MM_PER_PT / 2 + 0.7
+        for side in (1.0, -1.0):
+            a = origin + u * (centre - half) + n * side * gap
+            b = origin + u * (centre + half) + n * side * gap
+            self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=2.2)
+            self._hatch(a, b, n * side) if side > 0 else self._hatch(b, a, n * side)
+        self.guides.append((origin + u * (centre - half), origin + u * (centre + half)))
 
     def _mechanism_side(self, body: str, line: str, origin: complex, n: complex) -> float:
         """Which side of a frame line the links attached to its sliders lie on (+ along *n*)."""
@@ -242,6 +348,8 @@ class MechanismDrawing:
         self.s.segments(pairs, lw=0.5, gid="hatch", zorder=1.1)
 
     def moving_lines(self) -> None:
+        self.slotted: set[str] = set()
+        self.slot_spans: dict[str, list[tuple[complex, complex]]] = {}
         for body in self.moving:
             b = self.scene.bodies[body]
             if b.block:
@@ -255,9 +363,64 @@ class MechanismDrawing:
                 ts = own + [t - reach for t in rides] + [t + reach for t in rides] + [0.0]
                 a = origin + u * min(ts)
                 c = origin + u * max(ts)
-                self.s.line([a, c], lw=0.8, gid=f"line-{body}-{name}", zorder=1.6)
+                # a block on a moving pin slides in a slot of this link; a block pivoted on the
+                # frame is a swinging sleeve the link slides through (no slot)
+                pivots = set(_frame_pivots(self.scene))
+                blocks = [
+                    pr.slider
+                    for pr in self.scene.prismatics
+                    if pr.guide == body and pr.guide_line == name and self.is_block(pr.slider)
+                    and not (set(self.scene.bodies[pr.slider].points) & pivots)
+                ]
+                if blocks and not self._is_plate(body):
+                    pins = [((q - origin) * u.conjugate()).real for b in blocks for q in self.body_points(b)]
+                    lo, hi = self._slot(body, name, origin, u, pins)
+                    self.slotted.update(f"slot-{body}-{name}/{b}" for b in blocks)
+                    self.slot_spans.setdefault(body, []).append((origin + u * lo, origin + u * hi))
+                spans = [span for spans in self.slot_spans.values() for span in spans]
+                for p0, p1 in _outside(a, c, spans):
+                    self.s.line([p0, p1], lw=0.8, gid=f"line-{body}-{name}", zorder=1.6)
+
+    def _is_plate(self, body: str) -> bool:
+        """A link with three or more points not on one line, drawn as a plate."""
+        pts = self.body_points(body)
+        if len(pts) < 3:
+            return False
+        hull = MultiPoint([(q.real, q.imag) for q in pts]).convex_hull
+        span = max(abs(q - r) for q in pts for r in pts)
+        return hull.geom_type == "Polygon" and hull.area > 0.02 * span * span
+
+    def _in_slot(self, block: str) -> bool:
+        return any(g.startswith("slot-") and g.endswith(f"/{block}") for g in self.slotted)
+
+    def _slot(self, body: str, name: str, origin: complex, u: complex, rides: list[float]) -> None:
+        """A slot a block slides in, drawn as the slot (two edges and ends) over the travel it uses.
+
+        The travel is data (``slots`` of :func:`draw_mechanism`, metres along the
+        line from its origin, e.g. from a sweep); without it, the slot covers the
+        block's present place and a block length either side.
+        """
+        travel = self.slots.get(f"{body}.{name}")
+        L = self.block[0] / 2
+        if travel is not None:
+            lo, hi = (min(travel) / self.k_l - L - 1.0, max(travel) / self.k_l + L + 1.0)
+            lo, hi = min(lo, min(rides) - L - 1.0), max(hi, max(rides) + L + 1.0)
+        else:
+            lo, hi = min(rides) - 2.2 * L, max(rides) + 2.2 * L
+        w = self.block[1] / 2 + 0.5
+        n = u * 1j
+        ring = [origin + u * lo + n * w, origin + u * hi + n * w, origin + u * hi - n * w, origin + u * lo - n * w]
+        self.s.polygon(ring, fc="white", lw=1.2, gid=f"slot-{body}-{name}", zorder=2.1, joinstyle="round", obstacle=False)
+        self.s.obstacles.append(ShapelyPolygon([(z.real, z.imag) for z in ring]).exterior.buffer(0.3))
+        return lo, hi
 
     def links(self) -> None:
+        start = len(self.s.obstacles)
+        self._links()
+        # the links' own shapes: a support keeps clear of links passing by (guides are judged apart)
+        self.link_shapes = list(self.s.obstacles[start:])
+
+    def _links(self) -> None:
         self.plates: dict[str, complex] = {}
         self.bars: dict[str, tuple[complex, complex]] = {}
         for body in self.moving:
@@ -265,8 +428,7 @@ class MechanismDrawing:
                 continue
             pts = self.body_points(body)
             hull = MultiPoint([(q.real, q.imag) for q in pts]).convex_hull
-            span = max(abs(q - r) for q in pts for r in pts)
-            if len(pts) >= 3 and hull.geom_type == "Polygon" and hull.area > 0.02 * span * span:
+            if self._is_plate(body):
                 ring = [complex(x, y) for x, y in list(hull.exterior.coords)[:-1]]
                 self.s.polygon(ring, fc=PLATE_FILL, lw=PLATE_EDGE_PT, gid=f"link-{body}", zorder=1.8, obstacle=False, joinstyle="round")
                 self.s.obstacles.append(hull.exterior.buffer(PLATE_EDGE_PT * 0.2))
@@ -274,18 +436,93 @@ class MechanismDrawing:
                 self.plates[body] = complex(c.x, c.y)
             else:
                 a, c = max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1]))
-                self.s.line([a, c], lw=BAR_PT, gid=f"link-{body}", zorder=2.0, capstyle="round")
+                # where the link is slotted, the slot is drawn instead of the bar
+                for p0, p1 in _outside(a, c, self.slot_spans.get(body, [])):
+                    self.s.line([p0, p1], lw=BAR_PT, gid=f"link-{body}", zorder=2.0, capstyle="round")
                 self.bars[body] = (a, c)
 
     def ground_pivots(self) -> None:
+        """Frame pivots: a triangle on hatched ground, turned away from the links that meet it.
+
+        A pivot lying on a hatched frame guide is that ground already (no second
+        hatching); a pivot under a swinging block gets a support tall enough to
+        show beyond the block.
+        """
         for name in _frame_pivots(self.scene):
             q = self.p(name)
+            if any(_on_segment(q, a, b, 0.6) for a, b in getattr(self, "guides", [])):
+                continue
+            height = self.ground
+            under_block = any(self.is_block(b) for b in self.scene.bodies_with(name) if b != FRAME)
+            if under_block:
+                height = max(height, math.hypot(*self.block) / 2 + 2.5)
+            d = self._support_direction(name, q, height)
+            n = d * 1j
             half = 3.2 * self.symbol_scale
-            left, right = q + complex(-half, -self.ground), q + complex(half, -self.ground)
+            # a support that would stand in a hatched guide's hatching stands on the guide instead
+            on_guide = None
+            for g0, g1 in getattr(self, "guides", []):
+                u = g1 - g0
+                cross = (d.conjugate() * u).imag
+                if abs(cross) < 1e-9:
+                    continue
+                t = ((g0 - q).conjugate() * u).imag / (d.conjugate() * u).imag
+                hit = q + d * t
+                if 0 < t <= height + HATCH_LEN + 1.0 and _on_segment(hit, g0, g1, 1e-6):
+                    on_guide = t if on_guide is None else min(on_guide, t)
+            if on_guide is not None:
+                height = on_guide
+            base = q + d * height
+            left, right = base + n * half, base - n * half
             self.s.polygon([q, left, right], fc="white", lw=0.8, gid=f"ground-{name}", zorder=2.5)
-            a, b = q + complex(-half - 2.0, -self.ground), q + complex(half + 2.0, -self.ground)
+            if on_guide is not None:
+                continue  # the guide's own hatching is its ground: not drawn twice
+            a, b = base + n * (half + 2.0), base - n * (half + 2.0)
             self.s.line([a, b], lw=1.0, gid="ground-base", zorder=2.5)
-            self._hatch(a, b, -1j)
+            self._hatch(b, a, d)
+
+    def _support_footprint(self, q: complex, d: complex, height: float):
+        """The area a support of *height* turned along *d* covers (triangle, base, hatching), less the pin."""
+        n = d * 1j
+        half = 3.2 * self.symbol_scale + 2.0
+        far = height + HATCH_LEN
+        pts = [q + d * (self.pin_r + 0.3) + n * 0.5, q + d * (self.pin_r + 0.3) - n * 0.5, q + d * far - n * half, q + d * far + n * half]
+        return ShapelyPolygon([(z.real, z.imag) for z in pts]).buffer(2.0)
+
+    def _support_direction(self, name: str, q: complex, height: float | None = None) -> complex:
+        """Unit direction from a pivot to its ground: as far from every link meeting it as can be (up to 75°),
+        clear of other links drawn near, then down, then up, in preference to sideways."""
+        height = self.ground if height is None else height
+        angles = []
+        for body in self.scene.bodies_with(name):
+            if body == FRAME:
+                continue
+            for r in self.body_points(body):
+                if abs(r - q) > 1e-6:
+                    angles.append(cmath.phase(r - q))
+            if self.is_block(body):
+                # a block's guide (the rod through a swinging sleeve) runs both ways through the pivot
+                phi = self.block_angle(body)
+                angles += [phi, phi + math.pi]
+        best = None
+        hole = Point(q.real, q.imag).buffer(self.pin_r + 0.3)  # what meets the pivot itself is judged above
+        for k in range(24):
+            theta = -math.pi / 2 + 2 * math.pi * k / 24
+            clear = min((abs(cmath.phase(cmath.exp(1j * (theta - a)))) for a in angles), default=math.pi)
+            # the drawing-office habit: a support below its pivot, else above (hanging), else sideways
+            down = abs(cmath.phase(cmath.exp(1j * (theta + math.pi / 2))))
+            up = abs(cmath.phase(cmath.exp(1j * (theta - math.pi / 2)))) + math.radians(10)
+            deviation = min(down, up)
+            score = min(clear, math.radians(75)) - 0.05 * deviation
+            # and clear of what is drawn near it (another link passing by)
+            d = cmath.exp(1j * theta)
+            foot = self._support_footprint(q, d, height)
+            near = [o for o in getattr(self, "link_shapes", []) if not o.intersects(hole)]
+            if any(o.intersects(foot) for o in near):
+                score -= 1.0
+            if best is None or score > best[0] + 1e-12:
+                best = (score, theta)
+        return cmath.exp(1j * best[1])
 
     def _guide_of(self, body: str) -> str | None:
         for pr in self.scene.prismatics:
@@ -308,18 +545,39 @@ class MechanismDrawing:
             key=lambda b: self._guide_of(b) == FRAME,
         )
         placed: list = []
+        pins: dict[str, complex] = {}
         for body in order:
             pin = self.body_points(body)[0]
             u = cmath.exp(1j * self.block_angle(body))
             centre = pin
-            if any(abs(c - pin) < 1e-9 for c in self.block_centres.values()):
-                options = [pin + u * L, pin - u * L]
-                centre = min(options, key=lambda c: sum(self._rect(c, u).intersection(q).area for q in placed))
+            guide = self._guide_of(body)
+            if guide in getattr(self, "plates", {}):
+                # a block on the edge of a plate (a wedge's incline) sits on the edge, outside
+                # the plate, its pin at the middle of the side that slides
+                n = u * 1j
+                out = 1.0 if ((pin - self.plates[guide]) * n.conjugate()).real >= 0 else -1.0
+                centre = pin + n * out * self.block[1] / 2
+            if any(abs(p - pin) < 1e-9 for p in pins.values()):
+                side = self._stack_side(body)
+                options = [pin + u * L, pin - u * L] if side >= 0 else [pin - u * L, pin + u * L]
+                if side:
+                    # stacked on the block below it: moved along its own guide until clear of it
+                    sense = options[0] - pin
+                    t = 0.0
+                    while t < 4 * L and any(self._rect(pin + sense * (1 + t / L), u).intersection(q).area > 1e-6 for q in placed):
+                        t += 0.25
+                    centre = pin + sense * (1 + t / L)
+                    if t > 0:
+                        # the follower's stem down to its pin
+                        self.s.line([pin, centre], lw=BAR_PT, gid=f"stem-{body}", zorder=2.9, capstyle="round")
+                else:
+                    centre = min(options, key=lambda c: sum(self._rect(c, u).intersection(q).area for q in placed))
             rect = self._rect(centre, u)
             corners = [complex(x, y) for x, y in list(rect.exterior.coords)[:-1]]
             self.s.polygon(corners, fc="white", lw=1.1, gid=f"block-{body}", zorder=3.0)
             placed.append(rect)
             self.block_centres[body] = centre
+            pins[body] = pin
         # a linear driver that carries an arm still slides on its guide in a block
         driver = self.scene.driver
         if hasattr(driver, "guide") and not self.is_block(driver.link):
@@ -380,9 +638,12 @@ class MechanismDrawing:
 
     def _crank_arrows(self, driver) -> None:
         centre = self.p(driver.pivot)
+        # the arcs stay within the crank they turn (a 10 mm crank gets a small ω)
+        crank = max((abs(q - centre) for q in self.body_points(driver.link)), default=0.0)
+        fit = 1.0 if crank <= 0 else min(1.0, max(0.35, 0.75 * crank / self.epsilon_r if driver.epsilon else 0.7 * crank / self.omega_r))
         for symbol, value, radius, dashes, gid in (
-            ("ω", driver.omega, self.omega_r, None, "omega"),
-            ("ε", driver.epsilon, self.epsilon_r, (3.0, 1.5), "epsilon"),
+            ("ω", driver.omega, self.omega_r * fit, None, "omega"),
+            ("ε", driver.epsilon, self.epsilon_r * fit, (3.0, 1.5), "epsilon"),
         ):
             if not value:
                 continue
@@ -405,6 +666,7 @@ class MechanismDrawing:
             if best is None or d > best[0] + 1e-9:
                 best = (d, side)
         side = best[1]
+        labels = []
         for k, (symbol, value, dashes, gid) in enumerate(
             (("v", driver.velocity, None, "velocity"), ("a", driver.acceleration, (3.0, 1.5), "acceleration"))
         ):
@@ -414,10 +676,13 @@ class MechanismDrawing:
             base = q + u * side * (offset + 4.5 * k)
             tail, tip = base - sense * 7.0, base + sense * 7.0
             self.s.arrow(tail, tip, lw=0.9, dashes=dashes, head=2.6, gid=gid)
-            self._label(tip, rf"${symbol}_{{{driver.point}}}$", gid=f"{gid}-label", size=LABEL_PT, prefer=u * side, math_=True)
+            labels.append((tip, rf"${symbol}_{{{driver.point}}}$", f"{gid}-label"))
+        # labels after both arrows, so that neither label lands on the other arrow
+        for tip, text, gid in labels:
+            self._label(tip, text, gid=gid, size=LABEL_PT, prefer=u * side, math_=True)
 
     def _label(self, anchor, text, *, gid, size, prefer=None, math_=False, first=(), gaps=(0.6, 1.4, 2.4, 3.6, 5.5, 8.0)):
-        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_)
+        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_, leader_from=LEADER_FROM_MM)
 
     def point_labels(self) -> None:
         for name in mechanism_labels(self.sol):
@@ -438,7 +703,20 @@ class MechanismDrawing:
             elif body in self.block_centres:
                 centre = self.block_centres[body]
                 r = math.hypot(*self.block) / 2
-                self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
+                # beside its own block: away from another block on the same pin
+                others = [c for b, c in self.block_centres.items() if b != body and abs(c - centre) < 2 * r]
+                prefer = sum((centre - c for c in others), 0j) or None
+                first = (centre + unit(prefer) * (r + 3.0),) if prefer else ()
+                if prefer and self._guide_of(body) in self.plates:
+                    # a block on a plate's edge: beside it along the edge, away from the block on it
+                    u = cmath.exp(1j * self.block_angle(body))
+                    along = -u if (prefer * u.conjugate()).real < 0 else u
+                    first = (centre + along * (self.block[0] / 2 + 2.5),) + first
+                if self._in_slot(body):
+                    # in a slot: beside the block, inside the slot
+                    u = cmath.exp(1j * self.block_angle(body))
+                    first += (centre + u * (self.block[0] / 2 + 2.0), centre - u * (self.block[0] / 2 + 2.0))
+                self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=prefer, first=first, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
 
     def caption(self) -> None:
         if not self.show_caption:

@@ -16,12 +16,17 @@ from __future__ import annotations
 
 import math
 
+from shapely.geometry import MultiPoint
+
 from .._text import SUBSCRIPT
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
+
 from .style import (
     CAPTION_PT,
     CONSTRUCTION_STYLE,
+    FIGURE_STYLE,
+    MM_PER_PT,
     HEADING_PT,
     INK,
     LABEL_PT,
@@ -30,10 +35,31 @@ from .style import (
 from ..graphical.plan import KINDS
 from ..i18n import term
 
-__all__ = ["draw_plan", "draw_plan_into", "draw_velocity_plan", "draw_acceleration_plan", "vectors_drawn", "legend_words", "ZERO_MM"]
+__all__ = [
+    "draw_plan",
+    "draw_plan_into",
+    "draw_velocity_plan",
+    "draw_acceleration_plan",
+    "vectors_drawn",
+    "vector_math",
+    "end_letters",
+    "legend_words",
+    "ZERO_MM",
+    "SHORT_MM",
+]
 
 #: A vector shorter than this [mm] is not drawn (it has no direction to show).
 ZERO_MM = 1e-6
+#: A vector shorter than this [mm] is too short for an arrow: its end is marked
+#: as a labelled point and a note under the plan gives its length.
+SHORT_MM = 1.0
+#: A component lying along an absolute vector is drawn this far beside it [mm],
+#: with thin ticks to its true ends, so that it can be seen.
+BESIDE_MM = 1.2
+#: A label set further than this from its point [mm] gets a leader line.
+LEADER_FROM_MM = 2.0
+#: Label gaps [mm] tried in turn on a plan (the far ones with a leader line).
+PLAN_GAPS = (0.6, 1.4, 2.4, 3.6, 5.5, 8.0, 11.0, 15.0)
 #: Images closer than this [mm] share one label ("p, o, d").
 SAME_MM = 1e-3
 #: How far a construction line runs past the intersection and behind its start [mm].
@@ -43,22 +69,50 @@ BEHIND_MM = 3.0
 _UNITS = {"velocity": ("k_v", "(m/s)/mm"), "acceleration": ("k_a", "(m/s²)/mm")}
 
 
+def _same(v, w) -> bool:
+    return abs(v.tail - w.tail) <= SAME_MM and abs(v.tip - w.tip) <= SAME_MM
+
+
 def vectors_drawn(plan) -> list:
-    """The plan's vectors that a drawing shows.
+    """The plan's vectors that a drawing shows, each once.
 
     Zero-length vectors are left out, and so is a component that coincides
     with an absolute vector (the normal acceleration of a crank pin turning at
     constant speed *is* its acceleration): drawn under it, it could not be
-    seen, yet it would add a legend entry.
+    seen, yet it would add a legend entry.  Identical vectors (the points of
+    one sliding link: p→w, p→t, p→u) are drawn once, the first in plan order;
+    the label at their tip names every image.  Vectors shorter than
+    :data:`SHORT_MM` are in the list but drawn as a point (see :func:`draw_plan`).
     """
     vectors = [v for v in plan.vectors if abs(v.tip - v.tail) > ZERO_MM]
     absolute = [v for v in vectors if v.kind == "absolute"]
-    return [
-        v
-        for v in vectors
-        if v.kind == "absolute"
-        or not any(abs(v.tail - w.tail) <= SAME_MM and abs(v.tip - w.tip) <= SAME_MM for w in absolute)
-    ]
+    out: list = []
+    for v in vectors:
+        if v.kind != "absolute" and any(_same(v, w) for w in absolute):
+            continue
+        if any(_same(v, w) for w in out):
+            continue
+        out.append(v)
+    return out
+
+
+def vector_math(label: str) -> str:
+    """A plan vector's name as mathtext: ``"a^n_CA"`` → ``"$a^{n}_{\\mathrm{CA}}$"``."""
+    head, _, sub = label.partition("_")
+    symbol, _, sup = head.partition("^")
+    text = symbol + (f"^{{{sup}}}" if sup else "") + (rf"_{{\mathrm{{{sub}}}}}" if sub else "")
+    return f"${text}$"
+
+
+def end_letters(vectors) -> dict[str, str]:
+    """Vector label -> the letter of its end point, as textbooks letter the plan: normal
+    components end at n₁, n₂, …, Coriolis components at k (k₁, k₂, … when there are several)."""
+    out = {}
+    for kind, letter in (("normal", "n"), ("coriolis", "k")):
+        these = [v for v in vectors if v.kind == kind]
+        for index, v in enumerate(these, 1):
+            out[v.label] = letter + (str(index).translate(SUBSCRIPT) if (kind == "normal" or len(these) > 1) else "")
+    return out
 
 
 def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True) -> list:
@@ -135,6 +189,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
     for v in vectors:
         _check(v.tail, v.label)
         _check(v.tip, v.label)
+    letters = end_letters(vectors)
 
     # construction lines, thin, under everything
     drawn_lines = 0
@@ -151,44 +206,128 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             sketch.line([a, b], color=color, lw=lw, dashes=dashes, gid=f"construction-{step.image}", zorder=1.0, obstacle=True)
             drawn_lines += 1
 
+    _figures(sketch, plan, images, vectors)
+
     # components under the absolute vectors, in a fixed order of kinds
+    absolute = [v for v in vectors if v.kind == "absolute" and v.length >= SHORT_MM]
     for kind in ("normal", "tangential", "coriolis", "relative", "absolute"):
         for v in vectors:
-            if v.kind != kind:
+            if v.kind != kind or v.length < SHORT_MM:
                 continue
             color, lw, dashes, head = VECTOR_STYLE[kind]
             z = 3.0 if kind == "absolute" else 2.5
-            sketch.arrow(complex(v.tail), complex(v.tip), color=color, lw=lw, dashes=dashes, head=head, gid=f"{kind}-{v.label}", zorder=z)
+            tail, tip = complex(v.tail), complex(v.tip)
+            if kind != "absolute":
+                shift = _beside(tail, tip, absolute)
+                if shift:
+                    for end in (tail, tip):
+                        sketch.line([end, end + shift * 1.25], color=color, lw=0.4, gid=f"{kind}-{v.label}-tick", zorder=z, obstacle=False)
+                    tail, tip = tail + shift, tip + shift
+            sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=_head(head, lw, v.length), gid=f"{kind}-{v.label}", zorder=z)
 
-    # the pole and the image points
+    # the pole, the image points and the lettered ends of components
     sketch.circle(0j, 0.55, fc=INK, lw=0, gid="pole", zorder=4.0)
     for name, z in images.items():
         if abs(z) > SAME_MM:
             sketch.circle(z, 0.4, fc=INK, lw=0, gid=f"dot-{name}", zorder=4.0, obstacle=False)
+    ends = []
+    for v in vectors:
+        if v.label in letters:
+            tip = complex(v.tip)
+            if not any(abs(tip - z) <= SAME_MM for z in images.values()):
+                sketch.circle(tip, 0.3, fc=INK, lw=0, gid=f"end-dot-{v.label}", zorder=4.0, obstacle=False)
+            ends.append((tip, letters[v.label], v.label))
+    shorts = [v for v in vectors if v.length < SHORT_MM]
+    for v in shorts:
+        if v.label not in letters and not any(abs(complex(v.tip) - z) <= SAME_MM for z in images.values()):
+            sketch.circle(complex(v.tip), 0.3, fc=INK, lw=0, gid=f"end-dot-{v.label}", zorder=4.0, obstacle=False)
 
-    # labels: the pole first, then each group of coincident images
-    groups: list[tuple[complex, list[str]]] = [(0j, [plan.pole])]
+    # labels: the pole first, then each group of coincident images (and component ends)
+    groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [(image_text(plan.pole), "pole-label")])]
+
+    def join(z: complex, piece: tuple[str, str], within: float) -> None:
+        for at, pieces in groups:
+            if abs(at - z) <= within:
+                pieces.append(piece)
+                return
+        groups.append((z, [piece]))
+
     for name, z in images.items():
-        for at, names in groups:
-            if abs(at - z) <= SAME_MM:
-                names.append(name)
-                break
-        else:
-            groups.append((z, [name]))
-    for at, names in groups:
+        join(z, (image_text(name), f"image-{name}"), SAME_MM)
+    for z, letter, label in ends:
+        # an end a short component away from an image shares its label ("a′, n₁")
+        join(z, (letter, f"end-{label}"), SHORT_MM if any(v.label == label for v in shorts) else SAME_MM)
+    for at, pieces in groups:
         away = 0j
         for v in vectors:
             for end, other in ((v.tail, v.tip), (v.tip, v.tail)):
-                if abs(end - at) <= SAME_MM:
+                if abs(end - at) <= SAME_MM and abs(other - end) > SAME_MM:
                     away -= unit(other - end)
-        pieces = [
-            (image_text(n), "pole-label" if (k == 0 and at == 0j and n == plan.pole) else f"image-{n}")
-            for k, n in enumerate(names)
-        ]
-        place_label(sketch, at, pieces, size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None)
+        place_label(sketch, at, pieces, size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
 
     if caption:
-        _caption(sketch, plan, vectors, drawn_lines, lang, legend)
+        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label)) for v in shorts])
+
+
+def _head(head: float, lw: float, length: float) -> float:
+    """Arrowhead length [mm]: the style's, but never more than a third of the vector."""
+    return min(head, length / 3.0)
+
+
+def _beside(tail: complex, tip: complex, absolute) -> complex:
+    """The shift [mm] that takes a component off an absolute vector it would lie on unseen, or 0.
+
+    A component whose ends are both within :data:`BESIDE_MM` of the absolute
+    vector's line, along a stretch it shares with it, is moved across (to the
+    side it already leans to) until both ends are :data:`BESIDE_MM` off.
+    """
+    d = tip - tail
+    for w in absolute:
+        u = unit(w.tip - w.tail)
+        off = [((z - w.tail) * u.conjugate()) for z in (tail, tip)]
+        if all(abs(o.imag) < BESIDE_MM for o in off):
+            lo, hi = sorted(o.real for o in off)
+            overlap = min(hi, w.length) - max(lo, 0.0)
+            if overlap > 0.3 * abs(d):
+                side = 1.0 if sum(o.imag for o in off) >= 0 else -1.0
+                worst = min(o.imag * side for o in off)
+                return u * 1j * side * (BESIDE_MM - worst)
+    return 0j
+
+
+def _at(z: complex, w: complex) -> bool:
+    return abs(z - w) <= SAME_MM
+
+
+def _figures(sketch: Sketch, plan, images: dict, vectors) -> None:
+    """The image of each link: its triangle (a b c) lightly filled, or the segment its images lie on (b e₅ m).
+
+    Two images already joined by a drawn vector need no segment.
+    """
+    edge, lw, fill = FIGURE_STYLE
+    for link, labels in getattr(plan, "links", {}).items():
+        pts: list[complex] = []
+        for label in labels:
+            z = images.get(label)
+            if z is not None and all(abs(z - q) > SAME_MM for q in pts):
+                pts.append(z)
+        if len(pts) < 2:
+            continue
+        if len(pts) == 2:
+            a, b = pts
+            if any({_at(v.tail, a), _at(v.tip, b)} == {True} or (_at(v.tail, b) and _at(v.tip, a)) for v in vectors):
+                continue
+            sketch.line([a, b], color=edge, lw=lw, gid=f"figure-{link}", zorder=1.5)
+            continue
+        hull = MultiPoint([(q.real, q.imag) for q in pts]).convex_hull
+        span = max(abs(q - r) for q in pts for r in pts)
+        if hull.geom_type == "Polygon" and hull.area > 0.01 * span * span:
+            ring = [complex(x, y) for x, y in list(hull.exterior.coords)[:-1]]
+            sketch.polygon(ring, fc=fill, ec=edge, lw=lw, gid=f"figure-{link}", zorder=0.8, obstacle=False)
+            sketch.obstacles.append(hull.exterior.buffer(lw * MM_PER_PT / 2))
+        else:
+            a, b = max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1]))
+            sketch.line([a, b], color=edge, lw=lw, gid=f"figure-{link}", zorder=1.5)
 
 
 #: plan kind -> vector kind -> key of plans.i18n.TERMS
@@ -211,8 +350,8 @@ def legend_words(plan_kind: str, kind: str, lang: str = "en") -> str:
     return term(LEGEND_TERMS[plan_kind][kind], lang)
 
 
-def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True) -> None:
-    """Heading, scale factor and legend, below the plan where they cover nothing."""
+def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True, notes=()) -> None:
+    """Heading, scale factor, notes on vectors too short to draw, and the legend, below the plan."""
     symbol, units = _UNITS[plan.kind]
     heading = term("velocity_plan" if plan.kind == "velocity" else "acceleration_plan", lang)
     b = sketch.bounds
@@ -220,6 +359,11 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     sketch.text(complex(x, y), heading, size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
     sketch.text(complex(x, y), f"{symbol} = {fmt_number(plan.scale)} {units}", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)
+    for v, letter in notes:
+        # language-neutral: the vector, its drawn length, and the point that stands for it
+        y -= 4.6
+        where = f"  ({letter})" if letter else ""
+        sketch.text(complex(x, y), f"|{vector_math(v.label)}| = {v.length:.2f} mm{where}", size=CAPTION_PT, ha="left", va="top", gid=f"short-{v.label}", obstacle=False, math=True)
     if not legend:
         return
     kinds = [k for k in KINDS if any(v.kind == k for v in vectors)]

@@ -4,35 +4,54 @@ Position 0 is drawn in full (the kinematic scheme of :mod:`plans.drawing.mechani
 the others in thin grey lines, their joints as small circles.  The path of
 every reported point over the driver's cycle (a coupler curve) is drawn from
 the run's analytic sweep, broken where the mechanism cannot assemble.  The
-positions are numbered 0, 1, 2, … beside the driver's moving point and beside
-the last reported point, as the course numbers them.
+positions are numbered 0, 1, 2, … at the driver's moving point and at every
+moving reported point, as the course numbers them, where a number has room:
+beside its mark, else at the end of a short leader line, else not at all
+(no number is ever drawn over another mark or label).  Paths are drawn only
+where the mechanism assembles, and the caption names the positions that are
+not drawn and why.
 
-Gids: ``pos-link-<k>-<body>``, ``pos-path-<point>``, ``pos-number-<k>``,
+Gids: ``pos-link-<k>-<body>``, ``pos-path-<point>``, ``pos-position-<k>-<point>`` (a number; ``…-leader`` its leader line), ``pos-mark-<k>-<point>``,
 and the ``mech-…`` gids of the scheme of position 0 (prefix ``pos``).
 """
 
 from __future__ import annotations
 
+import cmath
+import math
 
 import numpy as np
+import shapely
+from shapely.geometry import LineString, box
 
 from .._text import SUBSCRIPT
 from ..i18n import term
-from ._canvas import Sketch, fmt_number, sketch_on, unit
-from .labels import place_label
+from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
+from .labels import LABEL_SPACE_MM
 from .mechanism import FRAME, MechanismDrawing
+from .numerals import localised
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 
-__all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points"]
+__all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points", "place_number", "number_ranges"]
 
 GHOST = "#8c8c8c"
 PATH_COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
 GHOST_PT = 0.8
 PATH_PT = 0.9
+#: Radius [mm] of the mark at a numbered point of a position.
+MARK_R = 0.45
+#: Size [pt] of a position number.
+NUMBER_PT = SMALL_PT + 0.5
+#: Clearance [mm] a position number keeps from every other mark and label.
+NUMBER_CLEAR_MM = 0.25
+#: Gaps [mm] between mark and number tried beside the mark, then at the end of a leader line.
+NEAR_GAPS = (0.5, 1.1, 1.8)
+LEADER_GAPS = (3.5, 5.0, 7.0, 9.5)
+LEADER_PT = 0.35
 
 
 def numbered_points(scene) -> list[str]:
-    """The points the positions are numbered at: the driver's moving point, and the last reported point."""
+    """The points the positions are numbered at: the driver's moving point, then every moving reported point."""
     driver = scene.driver
     body = scene.bodies[driver.link]
     if hasattr(driver, "pivot"):
@@ -42,9 +61,7 @@ def numbered_points(scene) -> list[str]:
         moving = [driver.point]
     out = moving[:1]
     frame = scene.bodies[FRAME].points
-    tail = [p for p in scene.report if p not in frame]
-    if tail and tail[-1] not in out:
-        out.append(tail[-1])
+    out += [p for p in scene.report if p not in frame and p not in out]
     return out
 
 
@@ -75,13 +92,15 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     if k_l != base.scales["k_l"]:
         base = _rescaled(base, k_l)
 
-    # paths first (under everything)
+    # paths first (under everything), only where the mechanism assembles
     cycle = positions_run.cycle
+    assembled = np.asarray(cycle.valid, dtype=bool)
     frame = scene.bodies[FRAME].points
     moving = [p for p in scene.report if p not in frame and p in cycle.points]
     for n, name in enumerate(moving):
         colour = PATH_COLOURS[n % len(PATH_COLOURS)]
-        for seg in _segments(np.asarray(cycle.points[name].r) / k_l):
+        track = np.where(assembled, np.asarray(cycle.points[name].r), np.nan + 0j)
+        for seg in _segments(track / k_l):
             pts = [complex(z) for z in seg]
             sketch.line(pts, color=colour, lw=PATH_PT, dashes=(4.0, 1.5), gid=f"path-{name}", zorder=1.0, obstacle=False)
 
@@ -104,28 +123,43 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
                 continue
             sketch.circle(complex(z) / k_l, 0.55, fc="white", ec=GHOST, lw=0.5, gid=f"joint-{run.index}-{p}", zorder=1.4, obstacle=False)
 
-    # position 0 in full
+    # a mark at every numbered point of every position, all of them obstacles before any label is placed
+    numbered = numbered_points(scene)
+    marks = []
+    for run in runs:
+        for p in numbered:
+            if p in run.graphical.positions:
+                at = complex(run.graphical.positions[p]) / k_l
+                sketch.circle(at, MARK_R, fc="#000000", lw=0, gid=f"mark-{run.index}-{p}", zorder=4.5, obstacle=True)
+                marks.append((run.index, p, at))
+
+    # position 0 in full (its labels keep clear of the marks)
     mech = MechanismDrawing(sketch, base, lang=lang, caption=False)
     mech.draw()
 
-    # numbers beside the numbered points of every position
-    for run in runs:
-        g = run.graphical
-        for p in numbered_points(scene):
-            if p not in g.positions:
-                continue
-            at = complex(g.positions[p]) / k_l
-            centre = complex(np.nanmean(np.asarray(cycle.points[p].r))) / k_l if p in cycle.points else mech.centroid
-            sketch.circle(at, 0.45, fc="#000000", lw=0, gid=f"mark-{run.index}-{p}", zorder=4.5, obstacle=True)
-            away = unit(at - centre) if abs(at - centre) > 1e-9 else None
-            place_label(sketch, at, [(f"{p}{_sub(run.index)}", f"number-{run.index}")], size=SMALL_PT + 0.5, prefer=away, gaps=(0.6, 1.2, 2.2, 3.5, 5.0, 7.0))
+    # numbers where they have room: beside the mark, else on a short leader line, else left out;
+    # position 0 of every point first, then the others in order
+    centres = {p: (complex(np.nanmean(np.asarray(cycle.points[p].r)[assembled])) / k_l if p in cycle.points and assembled.any() else mech.centroid) for p in numbered}
+    for index, p, at in sorted(marks, key=lambda m: (m[0] != runs[0].index, m[0], numbered.index(m[1]))):
+        away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
+        place_number(sketch, at, f"{p}{_sub(index)}", gid=f"position-{index}-{p}", size=NUMBER_PT, prefer=away)
 
     # caption
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 2.5
     sketch.text(complex(x, y), term("positions_plan", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
-    sketch.text(complex(x, y), f"k_l = {fmt_number(k_l)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)
+    sketch.text(complex(x, y), f"$k_l$ = {localised(fmt_number(k_l), lang)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    skipped = positions_run.skipped
+    if skipped:
+        for cause in ("no_assembly", "dead_centre"):
+            numbers = [r.index for r in skipped if r.cause == cause]
+            if numbers:
+                y -= 4.5
+                sketch.text(
+                    complex(x, y), f"{term('not_drawn', lang)} ({term(cause, lang)}): {number_ranges(numbers)}",
+                    size=CAPTION_PT, ha="left", va="top", gid=f"skipped-{cause}", obstacle=False,
+                )
     y -= 5.0
     for n, name in enumerate(moving):
         colour = PATH_COLOURS[n % len(PATH_COLOURS)]
@@ -133,6 +167,58 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
         yy = y - (n // 6) * 4.5
         sketch.line([complex(xx, yy - 1.4), complex(xx + 8.0, yy - 1.4)], color=colour, lw=PATH_PT, dashes=(4.0, 1.5), gid=f"legend-path-{name}", obstacle=False)
         sketch.text(complex(xx + 9.5, yy - 1.4), name, size=CAPTION_PT, ha="left", va="center", gid="legend-path", obstacle=False)
+
+
+def number_ranges(numbers: list[int]) -> str:
+    """``[1, 2, 3, 5, 7, 8]`` → ``"1–3, 5, 7, 8"`` (runs of three or more joined by an en dash)."""
+    out, k = [], 0
+    while k < len(numbers):
+        j = k
+        while j + 1 < len(numbers) and numbers[j + 1] == numbers[j] + 1:
+            j += 1
+        out.append(f"{numbers[k]}–{numbers[j]}" if j - k >= 2 else ", ".join(str(n) for n in numbers[k : j + 1]))
+        k = j + 1
+    return ", ".join(out)
+
+
+def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: float, prefer: complex | None = None):
+    """A position number beside its mark where it has room; else at the end of a short leader line; else none.
+
+    Room means its box keeps :data:`NUMBER_CLEAR_MM` from every obstacle
+    (marks, the scheme, its labels, the numbers already placed) and a leader
+    crosses no other label.  Returns the Text, or None when there is no room.
+    """
+    w, h = text_size(text, size)
+    base = cmath.phase(prefer) if prefer else math.radians(45)
+    candidates = []  # (centre, unit direction, on a leader), in the order they are preferred
+    for gap, leader in [(g, False) for g in NEAR_GAPS] + [(g, True) for g in LEADER_GAPS]:
+        for k in range(16):
+            theta = base + 2 * math.pi * (k // 2 + 1) / 16 * (1 if k % 2 else -1) if k else base
+            u = cmath.exp(1j * theta)
+            candidates.append((at + u * (gap + abs(u.real) * w / 2 + abs(u.imag) * h / 2), u, leader))
+    # only what lies within reach of the farthest candidate can be in the way
+    reach = max(LEADER_GAPS) + w + h + NUMBER_CLEAR_MM
+    shapes = np.array(sketch.obstacles, dtype=object) if sketch.obstacles else np.array([], dtype=object)
+    if len(shapes):
+        x0, y0, x1, y1 = shapely.bounds(shapes).T
+        shapes = shapes[(x0 <= at.real + reach) & (x1 >= at.real - reach) & (y0 <= at.imag + reach) & (y1 >= at.imag - reach)]
+    boxes = np.array([box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2) for c, _, _ in candidates], dtype=object)
+    clearance = shapely.distance(boxes[:, None], shapes[None, :]).min(axis=1) if len(shapes) else np.full(len(boxes), np.inf)
+
+    for (centre, u, leader), label, room in zip(candidates, boxes, clearance):
+        if room < NUMBER_CLEAR_MM:
+            continue
+        if leader:
+            start = at + u * (MARK_R + 0.3)
+            end = centre - u * (abs(u.real) * w / 2 + abs(u.imag) * h / 2 + 0.3)
+            line = LineString([(start.real, start.imag), (end.real, end.imag)])
+            if len(shapes) and float(shapely.distance(line, shapes).min()) < NUMBER_CLEAR_MM:  # the leader crosses nothing either
+                continue
+            sketch.line([start, end], color=GHOST, lw=LEADER_PT, gid=f"{gid}-leader", zorder=4.4, obstacle=True)
+        artist = sketch.text(centre, text, size=size, ha="center", va="center", gid=gid, obstacle=False, zorder=6.0)
+        sketch.obstacles.append(label.buffer(LABEL_SPACE_MM, join_style=2))
+        return artist
+    return None
 
 
 def _sub(k: int) -> str:

@@ -186,14 +186,16 @@ def write_drawings(
     table: list[list[str]] | None = None,
     equations: list[str] | None = None,
     lang: str = "en",
+    format: str = "svg",
 ) -> list[Path]:
-    """Write ``mechanism.svg``, ``velocity.svg``, ``acceleration.svg`` and ``sheet.svg``.
+    """Write ``mechanism.svg``, ``velocity.svg``, ``acceleration.svg`` and ``sheet.svg`` (or ``.pdf``, ``.png``: *format*).
 
     All four are rendered in memory first and then written atomically together
     (see :func:`plans._files.replace_all`): a failure leaves every
     existing file as it was and no temporary file behind.  ``acceleration.svg``
     is written only when the solution has an acceleration plan; an old one in
-    *directory* is then removed, so the directory never mixes two runs.
+    *directory* is then removed if plans wrote it (and nobody changed it since),
+    so the directory never mixes two runs.
 
     Parameters
     ----------
@@ -217,18 +219,18 @@ def write_drawings(
     from .mechanism import draw_mechanism
     from .plan_drawing import draw_plan
 
+    from .formats import render
+
     directory = Path(directory)
     contents: dict[Path, bytes] = {}
-    contents[directory / "mechanism.svg"] = render_svg(draw_mechanism(solution, lang=lang)[0].figure)
-    contents[directory / "velocity.svg"] = render_svg(draw_plan(solution.velocity_plan, lang=lang)[0].figure)
+    contents[directory / f"mechanism.{format}"] = render(draw_mechanism(solution, lang=lang)[0].figure, format)
+    contents[directory / f"velocity.{format}"] = render(draw_plan(solution.velocity_plan, lang=lang)[0].figure, format)
     if solution.acceleration_plan is not None:
-        contents[directory / "acceleration.svg"] = render_svg(draw_plan(solution.acceleration_plan, lang=lang)[0].figure)
-    contents[directory / "sheet.svg"] = render_svg(
-        draw_sheet(solution, formula=formula, table=table, equations=equations, lang=lang)
+        contents[directory / f"acceleration.{format}"] = render(draw_plan(solution.acceleration_plan, lang=lang)[0].figure, format)
+    contents[directory / f"sheet.{format}"] = render(
+        draw_sheet(solution, formula=formula, table=table, equations=equations, lang=lang), format
     )
-    paths = replace_all(contents)  # creates the directory
-    if solution.acceleration_plan is None:
-        stale = directory / "acceleration.svg"
-        if stale.exists():
-            stale.unlink()
-    return paths
+    if format != "svg":  # the record of what plans wrote is an SVG comment: other formats remove nothing
+        return replace_all(contents)
+    # an acceleration.svg of an earlier run goes if plans wrote it (sheet.svg records it)
+    return replace_all(contents, stale=(directory, r"acceleration\.svg", "sheet.svg"))

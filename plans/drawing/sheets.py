@@ -9,20 +9,16 @@
   the complex-number loop equations with their numbers.
 * :func:`draw_cover_page` — the first page of a multi-position handout: the
   data and the plan of positions.
-* :func:`render_pdf` — figures as the pages of one PDF: TrueType (Type 42)
+* :func:`plans.drawing.formats.render_pdf` — figures as the pages of one PDF: TrueType (Type 42)
   DejaVu Sans embedded, which has the Cyrillic glyphs; no creation date, so
   the same pages give the same bytes.
-* :func:`save_figure` — one figure to ``.svg`` or ``.pdf``, atomically.
+* :func:`plans.drawing.formats.save_figure` — one figure to ``.svg``, ``.pdf`` or ``.png``, atomically.
 """
 
 from __future__ import annotations
 
-import io
-import re
 from pathlib import Path
 
-import matplotlib
-from matplotlib.backends.backend_pdf import PdfPages
 
 from .._files import replace_all
 from .._text import decimal_comma, user_text
@@ -32,14 +28,12 @@ from .blocks import Block, drawing_block, legend_block, pretty_equation, rows_bl
 from .layout import A4, GAP, PAGE_MARGIN, header, header_height, new_page, place_in_box
 from .sheet import draw_sheet, sheet_equations
 from .style import HEADING_PT, MARGIN_MM, SMALL_PT
-from .svg import drawing_rc, render_svg
+from .svg import drawing_rc
 from .layout import DATA_PT
 from .layout import footer as page_footer
 from .typeset import draw_text, measure
 
 __all__ = [
-    "render_pdf",
-    "save_figure",
     "write_position_sheets",
     "draw_position_sheet",
     "draw_position_page",
@@ -56,37 +50,6 @@ LINE_GAP = 0.7  # mm between the lines of a text block on a page
 BOX_TOLERANCE = 2.5
 
 #: rcParams of PDF output: TrueType fonts embedded (DejaVu Sans covers Cyrillic and Greek).
-PDF_RC = {"pdf.fonttype": 42, "pdf.compression": 6}
-
-
-# --- output -----------------------------------------------------------------------
-
-
-def render_pdf(figures, progress=None) -> bytes:
-    """The figures as the pages of one PDF (in order), deterministic; *progress* (optional) is called with each page's number."""
-    buffer = io.BytesIO()
-    with drawing_rc(), matplotlib.rc_context(PDF_RC):
-        with PdfPages(buffer, metadata={"CreationDate": None, "ModDate": None, "Creator": "plans", "Producer": "plans (matplotlib)"}) as pdf:
-            for number, fig in enumerate(figures, start=1):
-                pdf.savefig(fig)
-                if progress is not None:
-                    progress(number)
-    return buffer.getvalue()
-
-
-def save_figure(fig, path) -> Path:
-    """Write one figure to *path*: SVG (true to scale) or PDF by the suffix, atomically."""
-    path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix == ".svg":
-        data = render_svg(fig)
-    elif suffix == ".pdf":
-        data = render_pdf([fig])
-    else:
-        raise ValueError(f"{path}: write a drawing as .svg or .pdf, not {path.suffix or 'without a suffix'}")
-    return replace_all({path: data})[0]  # creates the directory
-
-
 # --- plans draw --positions -----------------------------------------------------------
 
 
@@ -107,13 +70,14 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
     )
 
 
-def write_position_sheets(positions_run, directory, *, lang: str = "en") -> list[Path]:
+def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg") -> list[Path]:
     """Write ``sheet-00.svg``, ``sheet-01.svg``, … and ``positions.svg`` (the plan of positions).
 
     Every sheet uses the run's common scale factors.  A position that cannot
     be solved gets no sheet (it is left out, and the plan of positions does
     not draw it).  All files are written together, atomically; sheets of an
-    earlier run with more positions are removed.
+    earlier run with more positions that plans wrote (and nobody changed
+    since) are removed; other files in *directory* are never touched.
 
     Parameters
     ----------
@@ -128,6 +92,8 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en") -> list
     """
     from .positions_plan import draw_positions_plan
 
+    from .formats import render
+
     directory = Path(directory)
     total = len(positions_run.runs)
     width = max(2, len(str(total - 1)))
@@ -136,13 +102,12 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en") -> list
         if not run.ok:
             continue
         fig = draw_position_sheet(run, lang=lang, total=total)
-        contents[directory / f"sheet-{run.index:0{width}d}.svg"] = render_svg(fig)
-    contents[directory / "positions.svg"] = render_svg(draw_positions_plan(positions_run, lang=lang)[0].figure)
-    paths = replace_all(contents)  # creates the directory
-    for old in directory.glob("sheet-*.svg"):
-        if old not in contents and re.fullmatch(r"sheet-\d+\.svg", old.name):
-            old.unlink()
-    return paths
+        contents[directory / f"sheet-{run.index:0{width}d}.{format}"] = render(fig, format)
+    contents[directory / f"positions.{format}"] = render(draw_positions_plan(positions_run, lang=lang)[0].figure, format)
+    if format != "svg":  # the record of what plans wrote is an SVG comment: other formats remove nothing
+        return replace_all(contents)
+    # sheets of an earlier run with more positions go if plans wrote them (positions.svg records them)
+    return replace_all(contents, stale=(directory, r"sheet-\d+\.svg", "positions.svg"))
 
 
 # --- handout pages ------------------------------------------------------------------------

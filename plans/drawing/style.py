@@ -21,6 +21,9 @@ __all__ = [
     "HEADING_PT",
     "VECTOR_STYLE",
     "CONSTRUCTION_STYLE",
+    "ARROW_RATIO",
+    "FIGURE_STYLE",
+    "LEADER_STYLE",
     "INK",
     "PLATE_FILL",
     "MARGIN_MM",
@@ -62,13 +65,26 @@ PLATE_FILL = "#dfe8f3"
 MARGIN_MM = 4.0  # white space around the content of a drawing
 
 #: kind -> (colour, line width [pt], dash pattern or None, arrowhead length [mm]).
+#: In greyscale the kinds differ by weight and pattern alone: absolute heavy
+#: solid, relative light solid, normal dashed, tangential dash-dot, Coriolis
+#: dotted and dark (not a light grey).
 VECTOR_STYLE = {
     "absolute": ("#000000", 1.7, None, 3.6),
-    "relative": ("#0072B2", 1.1, None, 3.0),
+    "relative": ("#0072B2", 1.0, None, 3.0),
     "normal": ("#009E73", 1.1, (5.0, 2.0), 3.0),
     "tangential": ("#D55E00", 1.1, (6.0, 1.8, 1.2, 1.8), 3.0),
-    "coriolis": ("#CC79A7", 1.3, (1.4, 1.4), 3.0),
+    "coriolis": ("#6A1B7A", 1.3, (1.2, 1.2), 3.0),
 }
+
+#: Arrowheads are slender: length : width = ARROW_RATIO : 1 (drafting practice, about 3:1).
+ARROW_RATIO = 3.0
 
 #: Construction lines: thin, grey, dashed.
 CONSTRUCTION_STYLE = ("#7f7f7f", 0.5, (4.0, 2.5))
+
+#: The image of a link on a plan (the figure similar to the link: triangle a b c, segment b e₅ m):
+#: (edge colour, line width [pt], fill).
+FIGURE_STYLE = ("#404040", 0.6, "#eeeeee")
+
+#: Leader lines from a label moved away from its point.
+LEADER_STYLE = ("#404040", 0.4)

@@ -10,14 +10,15 @@ from __future__ import annotations
 
 import cmath
 import math
+from dataclasses import replace
 
 from ..limits import WARN_CONDITION, NearDeadCentre, position_text
-from ..scene import Crank, Scene
+from ..scene import Crank, Scales, Scene, diameter
 from ..structure import Group, Structure, find_structure
 from . import prp, rpp, rpr, rrp, rrr
 from .driver import driver_acceleration, driver_velocity, place_driver
 from .plan import GraphicalSolution
-from .scales import measure, round_scale
+from .scales import DRAWN_LARGEST, check_scale, extent, measure, round_scale
 from .state import Construction, Sketch
 
 __all__ = ["construct"]
@@ -41,6 +42,7 @@ def construct(
     precision: float | None = None,
     arc_segments: int | None = None,
     warn_condition: float = WARN_CONDITION,
+    check_scales: bool = True,
 ) -> GraphicalSolution:
     """Solve the mechanism graphically at the scene's driver position.
 
@@ -76,6 +78,11 @@ def construct(
         this (|sin| of their angle below ~2/warn_condition) is near a dead
         centre: the solution carries a :class:`~plans.limits.NearDeadCentre`
         warning.  Default :data:`plans.limits.WARN_CONDITION`.
+    check_scales : bool
+        Refuse a given scale factor (here or in the scene's ``[scales]``)
+        that draws the mechanism or a plan larger than a sheet or smaller
+        than a millimetre (:func:`plans.graphical.scales.check_scale`).
+        False for factors plans chose itself (common to several positions).
 
     Returns
     -------
@@ -83,6 +90,9 @@ def construct(
 
     Raises
     ------
+    plans.errors.SceneError
+        A given scale factor draws a figure larger than a sheet or smaller
+        than 1 mm; the message gives the range that fits.
     plans.errors.AssemblyError
         A group cannot be assembled (names the group, the lengths and the gap).
     plans.errors.SingularPositionError
@@ -100,6 +110,11 @@ def construct(
     """
     if structure is None:
         structure = find_structure(scene)
+    # where each factor came from, for messages: the scene's [scales] (also when a caller passes its value on)
+    given = {
+        key: f"scales.{key}" if value is None or value == getattr(scene.scales, key) else None
+        for key, value in (("k_l", k_l), ("k_v", k_v), ("k_a", k_a))
+    }
     k_l = k_l if k_l is not None else scene.scales.k_l
     k_v = k_v if k_v is not None else scene.scales.k_v
     k_a = k_a if k_a is not None else scene.scales.k_a
@@ -111,6 +126,10 @@ def construct(
     for key, value in (("k_l", k_l), ("k_v", k_v), ("k_a", k_a), ("precision", precision)):
         if value is not None and not (math.isfinite(value) and value > 0):
             raise ValueError(f"{key} must be a positive number, got {value!r}")
+
+    given = {key: field for key, field in given.items() if {"k_l": k_l, "k_v": k_v, "k_a": k_a}[key] is not None}
+    if check_scales and given:
+        _refuse_unfit_early(scene, structure, {"k_l": k_l, "k_v": k_v, "k_a": k_a}, given, precision, arc_segments)
 
     size = _extent(scene)
     ctx = Construction(scene, arc_segments, k_l if k_l is not None else round_scale(size))
@@ -153,8 +172,8 @@ def construct(
         k_a = None
 
     # --- the finished plans and what is read off them ---------------------------------
-    velocity_plan = ctx.velocity.finish(k_v, precision)
-    acceleration_plan = ctx.acceleration.finish(k_a, precision) if k_a is not None else None
+    velocity_plan = ctx.velocity.finish(k_v, precision, ctx.velocity.link_images(scene))
+    acceleration_plan = ctx.acceleration.finish(k_a, precision, ctx.acceleration.link_images(scene)) if k_a is not None else None
     v_label = {point: label for label, point in ctx.velocity.named.items()}
     a_label = {point: label for label, point in ctx.acceleration.named.items()} if acceleration_plan else {}
     points = {}
@@ -174,7 +193,7 @@ def construct(
     scales = {"k_l": k_l, "k_v": k_v}
     if k_a is not None:
         scales["k_a"] = k_a
-    return GraphicalSolution(
+    solution = GraphicalSolution(
         scene=scene,
         scales=scales,
         precision=precision,
@@ -189,6 +208,68 @@ def construct(
         conditions=dict(ctx.conditions),
         warnings=warnings,
     )
+    if check_scales and given:
+        sizes = figure_sizes(solution)
+        for key, field in given.items():
+            if key in scales:
+                check_scale(key, scales[key], sizes[key], what=_FIGURES[key], where=_where(scene), source=scene.source, field=field)
+    return solution
+
+
+_FIGURES = {"k_l": "the mechanism", "k_v": "the velocity plan", "k_a": "the acceleration plan"}
+
+
+def figure_sizes(solution: GraphicalSolution) -> dict[str, float]:
+    """Physical size of each figure [m, m/s, m/s²]: the larger side of its bounding box.
+
+    The mechanism's points; a plan's pole, images and vector ends (times its scale).
+    """
+    sizes = {"k_l": extent(solution.positions.values())}
+    for key, plan in (("k_v", solution.velocity_plan), ("k_a", solution.acceleration_plan)):
+        if plan is not None:
+            ends = [0j, *plan.images.values(), *(v.tail for v in plan.vectors), *(v.tip for v in plan.vectors)]
+            sizes[key] = extent(ends) * plan.scale
+    return sizes
+
+
+def _where(scene: Scene) -> str:
+    crank = isinstance(scene.driver, Crank)
+    return "at " + position_text(crank, scene.driver.phi if crank else scene.driver.s)
+
+
+def _refuse_unfit_early(scene: Scene, structure: Structure, ks: dict, given: dict, precision, arc_segments) -> None:
+    """Refuse, before drawing, a given factor that certainly draws a figure larger than a sheet.
+
+    Each figure is at least as large as something known before the
+    construction (a bounding box's larger side is at least 1/√2 of the
+    distance of two of its points): the mechanism as any one body, the
+    velocity plan as the driver's velocity vector, the acceleration plan as
+    the driver's acceleration vector.  Drawing at such a factor would
+    overflow, so the range that fits comes from a construction at
+    automatic scale factors.
+    """
+    bounds = {"k_l": max(diameter(list(body.points.values())) for body in scene.bodies.values())}
+    driver = scene.driver
+    if isinstance(driver, Crank):
+        reach = _crank_reach(scene)
+        bounds["k_v"] = abs(driver.omega) * reach
+        bounds["k_a"] = math.hypot(driver.omega**2, driver.epsilon) * reach
+    else:
+        bounds["k_v"], bounds["k_a"] = abs(driver.velocity), abs(driver.acceleration)
+    if not any(bounds[key] / math.sqrt(2) / ks[key] > DRAWN_LARGEST for key in given):
+        return
+    automatic = construct(
+        replace(scene, scales=Scales(precision=precision)),
+        structure,
+        precision=precision,
+        arc_segments=arc_segments,
+        warn_condition=math.inf,
+        check_scales=False,
+    )
+    sizes = figure_sizes(automatic)
+    for key, field in given.items():
+        if key in sizes:
+            check_scale(key, ks[key], sizes[key], what=_FIGURES[key], where=_where(scene), source=scene.source, field=field)
 
 
 def _read(image: complex, k: float, precision: float | None) -> complex:
@@ -206,9 +287,7 @@ def _extent(scene: Scene) -> float:
         zs = list(body.points.values()) + [line.origin for line in body.lines.values()]
         if body.is_frame:
             zs = zs + [0j]
-        for a in zs:
-            for b in zs:
-                size = max(size, abs(a - b))
+        size = max(size, diameter(zs))  # O(n log n): a frame may carry thousands of points
     driver = scene.driver
     if not isinstance(driver, Crank):
         size = max(size, abs(driver.s))
@@ -264,11 +343,11 @@ def _branch(scene: Scene, structure: Structure, group: Group, candidates, ctx: C
     if len(candidates) == 1:
         return candidates[0]
     hint = _hint(scene, structure, group)
-    if hint is None:
-        return candidates[0]
+    if hint is None:  # +1 in the order of the group's name (Group.orientation)
+        return candidates[0] if group.orientation > 0 else candidates[1]
     name, value = hint
     if isinstance(value, int):
-        return candidates[0] if value > 0 else candidates[1]
+        return candidates[0] if value * group.orientation > 0 else candidates[1]
     body = next(b for b in scene.bodies_with(name) if b in group.links)
     local = scene.bodies[body].points[name]
 

@@ -21,6 +21,32 @@ __all__ = ["KINDS", "PlanVector", "ConstructionLine", "Step", "Plan", "Graphical
 #: aʳ; ``normal``, ``tangential`` and ``coriolis`` are acceleration components.
 KINDS = ("absolute", "relative", "normal", "tangential", "coriolis")
 
+#: How the results below draw themselves (``.plot``, ``.save``, ``.sheet``): the
+#: functions of :mod:`plans.notebook`, which fills this table when it is imported
+#: (``import plans`` does).  The results are data and this module never imports the
+#: drawing layer: the dependency runs one way, drawing → results.
+DISPLAY: dict = {}
+
+
+def _display(name: str):
+    if name not in DISPLAY:
+        from ..errors import PlansError
+
+        raise PlansError("drawing is not set up: import plans (plans.notebook) to plot or save a result")
+    return DISPLAY[name]
+
+
+class _Drawable:
+    """``.plot(ax=None)`` (returns the Axes) and ``.save(path)`` (one file, in the format of its suffix)."""
+
+    def plot(self, ax=None, *, lang: str = "en"):
+        """Draw into *ax* (one data unit = 1 mm), or into a new true-to-scale figure; returns the Axes."""
+        return _display("plot")(self, ax, lang=lang)
+
+    def save(self, path, *, lang: str = "en"):
+        """Write the drawing (a plan, or a solution's sheet) to *path*: ``.svg`` true to scale, ``.pdf`` or ``.png``; returns the path."""
+        return _display("save")(self, path, lang=lang)
+
 
 @dataclass(frozen=True)
 class PlanVector:
@@ -99,7 +125,7 @@ class Step:
 
 
 @dataclass(frozen=True)
-class Plan:
+class Plan(_Drawable):
     """A velocity or an acceleration plan.
 
     Attributes
@@ -120,6 +146,10 @@ class Plan:
     vectors : tuple[PlanVector, ...]
         Everything to draw: absolute vectors from the pole and all components,
         zero-length ones left out.
+    links : dict[str, tuple[str, ...]]
+        Moving link -> labels of the images of its points on this plan (the
+        image of a link's figure, similar to the link: ``"3": ("a", "b", "c")``,
+        ``"5": ("b", "e5", "m")``).  Empty when not known.
     """
 
     kind: str
@@ -128,10 +158,11 @@ class Plan:
     images: dict[str, complex]
     steps: tuple[Step, ...]
     vectors: tuple[PlanVector, ...]
+    links: dict[str, tuple[str, ...]] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
-class GraphicalSolution:
+class GraphicalSolution(_Drawable):
     """The graphical method's answer at one driver position.
 
     Positions come from the compass construction of the mechanism at k_l;
@@ -183,3 +214,7 @@ class GraphicalSolution:
     sines: dict[str, float] = field(default_factory=dict)
     conditions: dict[str, float] = field(default_factory=dict)
     warnings: tuple = ()
+
+    def sheet(self, *, lang: str = "en"):
+        """The one-page sheet (mechanism, both plans, vector equations) as a matplotlib Figure."""
+        return _display("sheet")(self, lang=lang)

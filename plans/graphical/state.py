@@ -151,7 +151,27 @@ class Sketch:
 
     # -- the finished plan ------------------------------------------------------
 
-    def finish(self, k: float, precision: float | None) -> Plan:
+    def link_images(self, scene: Scene) -> dict[str, tuple[str, ...]]:
+        """Moving link -> the labels of its points' images on this plan (a point's own image
+        where the link has one of its own at a slider, ``"e5"``, else the shared one, ``"b"``)."""
+        out = {}
+        for body in scene.links:
+            labels = []
+            for point in scene.bodies[body].points:
+                own, shared = self.label(point, body), self.label(point)
+                label = own if own in self.images else shared
+                if label in self.images and label not in labels:
+                    labels.append(label)
+            # the link's own points at the sliders it carries (e5: the point of 5 under E)
+            for point in scene.point_names:
+                label = self.label(point, body)
+                if label in self.images and label not in labels:
+                    labels.append(label)
+            if len(labels) >= 2:
+                out[body] = tuple(labels)
+        return out
+
+    def finish(self, k: float, precision: float | None, links: dict[str, tuple[str, ...]] | None = None) -> Plan:
         """The plan redrawn at scale *k*, named absolute vectors added, zero vectors left out."""
         f = self.k0 / k
         absolute = []
@@ -162,12 +182,18 @@ class Sketch:
         largest = max((abs(v.delta) for v in everything), default=0.0)
         tiny = ZERO * largest
 
+        drawn: dict[int, PlanVector | None] = {}  # each vector once: a component is in its step and in the list
+
         def frozen(vs):
-            return tuple(
-                PlanVector(v.tail * f, v.tip * f, v.kind, v.label, measure(abs(v.delta) * f, precision) * k)
-                for v in vs
-                if abs(v.delta) > tiny
-            )
+            out = []
+            for v in vs:
+                key = id(v)
+                if key not in drawn:
+                    length = abs(v.tip - v.tail)
+                    drawn[key] = PlanVector(v.tail * f, v.tip * f, v.kind, v.label, measure(length * f, precision) * k) if length > tiny else None
+                if drawn[key] is not None:
+                    out.append(drawn[key])
+            return tuple(out)
 
         steps = tuple(
             Step(
@@ -182,7 +208,7 @@ class Sketch:
             for s in self.steps
         )
         images = {label: z * f for label, z in self.images.items()}
-        return Plan(self.kind, k, self.pole, images, steps, frozen(absolute + self.components))
+        return Plan(self.kind, k, self.pole, images, steps, frozen(absolute + self.components), dict(links or {}))
 
     def largest(self) -> float:
         """The largest vector the finished plan draws [physical units]: a named point's absolute vector or a component."""

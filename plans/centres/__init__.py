@@ -1,0 +1,122 @@
+"""Instant centres (Kennedy–Aronhold): a third, independent method for the velocities.
+
+For a scene at its driver position: the bodies are placed by this method's
+own position step (:mod:`plans.centres.pose`), every instant centre P_ij of
+the n bodies — n(n−1)/2 of them — is found, the primary ones from the pairs
+and the rest by Kennedy's theorem (:mod:`plans.centres.kennedy`), and ω of
+every link and v of every named point follow from the centres
+(:mod:`plans.centres.velocities`).  It shares the scene model and the
+structure with :mod:`plans.analytic` and :mod:`plans.graphical` and nothing of
+their kinematics; it never imports matplotlib.
+
+Body numbers: the links keep the scene's names, the frame is 1 (the
+workbooks' crank 2, coupler 3, …), or 0 when a link is already called 1.
+
+>>> from plans.scene import load, example_path
+>>> result = instant_centres(load(example_path("slider-crank")))
+>>> [c.label for c in result.centres]
+['P12', 'P13', 'P14', 'P23', 'P24', 'P34']
+>>> result.centre("3", "frame").describe()
+'(0.319851, 0.319851) m'
+>>> round(result.points["B"].real, 4)
+-16.0407
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..scene import Scene
+from ..structure import Structure, find_structure
+from .kennedy import Centre, CentreError, body_numbers, find_centres
+from .pose import Pose, place_bodies, point_at
+from .velocities import Motion, body_motions, point_velocities
+
+__all__ = ["instant_centres", "InstantCentres", "Centre", "CentreError", "Motion", "body_numbers"]
+
+
+@dataclass(frozen=True)
+class InstantCentres:
+    """The instant centres of a scene at its position and the velocities they give.
+
+    Attributes
+    ----------
+    scene : plans.scene.Scene
+    numbers : dict[str, str]
+        Body name → its number in the labels (frame first).
+    poses : dict[str, tuple[float, complex]]
+        Each body's (φ [rad], origin [m]) from this method's position step.
+    positions : dict[str, complex]
+        Every named point [m].
+    centres : list[Centre]
+        All n(n−1)/2 centres, P12, P13, …, lower number first.
+    size : float
+        The mechanism's size [m] (larger side of its bounding box).
+    motions : dict[str, Motion]
+        Each body's rotation about P_1j, or translation.
+    links : dict[str, float]
+        ω [rad/s] of every link, counter-clockwise positive.
+    points : dict[str, complex]
+        v [m/s] of every named point.
+    """
+
+    scene: Scene
+    numbers: dict
+    poses: dict
+    positions: dict
+    centres: list
+    size: float
+    motions: dict
+    links: dict
+    points: dict
+
+    def centre(self, a: str, b: str) -> Centre:
+        """P_ab by the bodies' names (either order; ``"frame"`` for the frame)."""
+        for centre in self.centres:
+            if set(centre.bodies) == {a, b}:
+                return centre
+        raise KeyError(f"no centre of bodies {a!r} and {b!r}")
+
+
+def _size(positions: dict[str, complex]) -> float:
+    xs = [z.real for z in positions.values()]
+    ys = [z.imag for z in positions.values()]
+    size = max(max(xs) - min(xs), max(ys) - min(ys))
+    return size if size > 0 else 1.0
+
+
+def instant_centres(scene: Scene, structure: Structure | None = None) -> InstantCentres:
+    """Place the bodies, find every instant centre, and the velocities from them.
+
+    Parameters
+    ----------
+    scene : plans.scene.Scene
+        At its own driver position (``scene.at(position)`` for another).
+    structure : plans.structure.Structure, optional
+
+    Raises
+    ------
+    plans.errors.AssemblyError, plans.errors.SingularPositionError
+        The mechanism cannot be placed at this position.
+    CentreError
+        A centre or a link's ω the construction cannot determine (a dead
+        centre, coincident joints): names the centre or the link.
+    """
+    if structure is None:
+        structure = find_structure(scene)
+    poses: dict[str, Pose] = place_bodies(scene, structure)
+    positions = {name: point_at(poses[scene.home_of(name)], scene.bodies[scene.home_of(name)].points[name]) for name in scene.point_names}
+    size = _size(positions)
+    centres = find_centres(scene, poses)
+    motions = body_motions(scene, poses, centres, size)
+    return InstantCentres(
+        scene=scene,
+        numbers=body_numbers(scene),
+        poses=poses,
+        positions=positions,
+        centres=centres,
+        size=size,
+        motions=motions,
+        links={name: motions[name].omega for name in scene.links},
+        points=point_velocities(scene, poses, motions),
+    )

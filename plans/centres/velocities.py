@@ -1,0 +1,137 @@
+"""Velocities from the instant centres: ω of every link and v of every named point.
+
+Each body's motion at the instant is a rotation about its centre P_1j with
+the frame (1 = the frame) or, when P_1j is at infinity, a translation.  A
+body j is found from a body k whose motion is known, through their common
+centre P_jk, a point of both bodies with one velocity:
+
+* P_jk and P_1j finite — the angular-velocity ratio theorem.  As a point
+  of k, P_jk moves with v_k(P_jk); as a point of j, with
+  ω_j × (P_jk − P_1j) = i·ω_j·(P_jk − P_1j).  So
+  ``ω_j = v_k(P_jk) / (i·(P_jk − P_1j))``; when k turns about P_1k this is
+  ``ω_j / ω_k = (P_jk − P_1k) / (P_jk − P_1j)``, a real number because the
+  three centres lie on one line (Kennedy): the same sense when P_jk lies
+  outside the segment P_1j P_1k.
+* P_1j at infinity, P_jk finite — j translates with the velocity of P_jk.
+* P_jk at infinity — j turns with k (ω_j = ω_k) about P_1j; if P_1j is at
+  infinity too, both translate and j's velocity is k's plus a relative one
+  perpendicular to P_jk's direction, perpendicular in all to P_1j's.
+
+A point M of body j then moves with ``v_M = ω_j × (M − P_1j)`` (or the
+translation's velocity).  Units SI, ω counter-clockwise positive.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..scene import FRAME, Crank, Scene
+from .kennedy import JOIN_TOL, Centre, CentreError
+from .pose import Pose, point_at
+
+__all__ = ["Motion", "body_motions", "point_velocities"]
+
+
+@dataclass(frozen=True)
+class Motion:
+    """A body's velocity field: ``v(z) = v0 + i·ω·(z − about)`` [m/s]; ω [rad/s]."""
+
+    omega: float
+    about: complex
+    v0: complex = 0j
+
+    def velocity(self, z: complex) -> complex:
+        """The velocity [m/s] of the body's point at z [m]."""
+        return self.v0 + 1j * self.omega * (z - self.about)
+
+
+def _through(known: Motion, p1j: Centre, pjk: Centre, size: float) -> Motion | None:
+    """Body j's motion from body k's through P_jk and P_1j; None when these centres do not determine it."""
+    if not (p1j.determined and pjk.determined):
+        return None
+    if pjk.point is not None:
+        vk = known.velocity(pjk.point)
+        if p1j.point is None:
+            return Motion(0.0, 0j, vk)
+        arm = pjk.point - p1j.point
+        if abs(arm) <= JOIN_TOL * size:
+            return None
+        return Motion((vk / (1j * arm)).real, p1j.point)
+    if p1j.point is not None:
+        return Motion(known.omega, p1j.point)
+    if known.omega != 0.0:
+        return None
+    across_jk, across_1j = 1j * pjk.direction, 1j * p1j.direction
+    sine = (across_1j.conjugate() * across_jk).imag
+    if abs(sine) <= JOIN_TOL:
+        return None
+    t = -(across_1j.conjugate() * known.v0).imag / sine
+    return Motion(0.0, 0j, known.v0 + t * across_jk)
+
+
+def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], size: float) -> dict[str, Motion]:
+    """The motion of every body (the frame's is zero), found from the driver through the centres.
+
+    Parameters
+    ----------
+    size : float
+        The mechanism's size [m]; centres closer than ``JOIN_TOL·size`` count as one.
+
+    Raises
+    ------
+    CentreError
+        A link whose centres with the frame and with every known body
+        coincide (a dead centre): names the link and the centres.
+    """
+    by_pair = {}
+    for centre in centres:
+        a, b = centre.bodies
+        by_pair[(a, b)] = by_pair[(b, a)] = centre
+    driver = scene.driver
+    if isinstance(driver, Crank):
+        pivot = scene.frame.points[driver.pivot]
+        start = Motion(driver.omega, pivot)
+    else:
+        line = scene.frame.lines[driver.guide]
+        start = Motion(0.0, 0j, driver.velocity * line.direction)
+    motions = {FRAME: Motion(0.0, 0j), driver.link: start}
+    left = [name for name in scene.links if name != driver.link]
+    while left:
+        for j in left:
+            p1j = by_pair[(FRAME, j)]
+            found = None
+            for k, known in motions.items():
+                if k == FRAME:
+                    continue
+                found = _through(known, p1j, by_pair[(j, k)], size)
+                if found is not None:
+                    break
+            if found is not None:
+                motions[j] = found
+                left.remove(j)
+                break
+        else:
+            j = left[0]
+            p1j = by_pair[(FRAME, j)]
+            tried = ", ".join(by_pair[(j, k)].label for k in motions if k != FRAME)
+            unknown = [c for c in [p1j] + [by_pair[(j, k)] for k in motions if k != FRAME] if not c.determined]
+            why = (
+                "; ".join(f"{c.label} is {c.describe()}" for c in unknown)
+                if unknown
+                else f"{p1j.label} coincides with each of them or they all lie at infinity in one direction (a dead centre)"
+            )
+            raise CentreError(
+                f"{scene.source}: the velocity of link {j} is not determined by the instant centres at this "
+                f"position: it needs its centre with the frame {p1j.label} and one with a link already known "
+                f"({tried}); {why}"
+            )
+    return {name: motions[name] for name in scene.bodies}
+
+
+def point_velocities(scene: Scene, poses: dict[str, Pose], motions: dict[str, Motion]) -> dict[str, complex]:
+    """v [m/s] of every named point, from the motion of the body it belongs to."""
+    out = {}
+    for name in scene.point_names:
+        home = scene.home_of(name)
+        out[name] = motions[home].velocity(point_at(poses[home], scene.bodies[home].points[name]))
+    return out

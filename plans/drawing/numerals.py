@@ -1,0 +1,24 @@
+"""Numbers as a page in a given language writes them (no matplotlib here).
+
+* :data:`DECIMAL_COMMA` — the languages written with a decimal comma (sr, ru, bg, sl);
+* :func:`localised` — a number already formatted as text, with the language's
+  decimal mark and a true minus sign (U+2212).
+
+>>> localised("-0.25", "sr"), localised("-0.25", "en")
+('−0,25', '−0.25')
+"""
+
+from __future__ import annotations
+
+__all__ = ["DECIMAL_COMMA", "MINUS", "localised"]
+
+#: Languages written with a decimal comma.
+DECIMAL_COMMA = ("sr", "ru", "bg", "sl")
+#: The minus sign (not the hyphen-minus).
+MINUS = "\u2212"
+
+
+def localised(text: str, lang: str) -> str:
+    """*text* (a formatted number, or a line of them) with a true minus sign and, in sr, ru, bg, sl, a decimal comma."""
+    text = text.replace("-", MINUS)
+    return text.replace(".", ",") if lang in DECIMAL_COMMA else text

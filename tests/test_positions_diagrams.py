@@ -1,0 +1,171 @@
+"""Cycle diagrams: spikes near a dead centre clipped and said, angles continuous and the CSV's, bands and curves
+that read in black and white, nothing flat or drawn twice, marks off the grid, numbers and words in the page's language."""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import re
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+import plans
+from plans.cli import main
+from plans.drawing.diagrams import draw_cycle_diagrams, write_cycle_diagrams
+from plans.positions import run_positions
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+def _sweep(name, steps=360):
+    scene = plans.load(plans.example_path(name))
+    run = run_positions(scene, 12 if isinstance(scene.driver, plans.scene.Crank) else 6, cycle_steps=steps)
+    return run
+
+
+@pytest.fixture(scope="module")
+def rocker_limit():
+    run = _sweep("rocker-limit")
+    return run, dict(draw_cycle_diagrams(run.cycle, marked=run.positions))
+
+
+def _curves(ax):
+    return {line.get_label(): line for line in ax.get_lines() if not line.get_label().startswith("_")}
+
+
+def _notes(ax):
+    return " ".join(t.get_text() for t in ax.texts)
+
+
+def test_a_spike_near_a_dead_centre_does_not_set_the_axis(rocker_limit):
+    run, figures = rocker_limit
+    cycle = run.cycle
+    eps4 = np.asarray(cycle.links["4"].epsilon)
+    ok = np.asarray(cycle.valid)
+    biggest = float(np.nanmax(np.where(ok, eps4, np.nan)))
+    assert biggest > 3e4  # rocker-limit: ε₄ reaches 35 000 rad/s² at the limit positions
+    ax = figures["links"].axes[2]
+    low, high = ax.get_ylim()
+    assert high < biggest / 10  # the working range is what the axis shows
+    # every value where both construction lines are well apart (|sin| ≥ 0.3) is inside the axis
+    well = ok & (np.asarray(cycle.sines["RRR(3,4)"]) >= 0.3)
+    for name in ("3", "4"):
+        values = np.asarray(cycle.links[name].epsilon)[well]
+        assert low <= values.min() and values.max() <= high
+    # what is clipped is marked at the edge and written with its extreme
+    clipped = [line for line in ax.get_lines() if line.get_label() == "_clipped"]
+    assert any(line.get_marker() == "^" and line.get_ydata()[0] == pytest.approx(high) for line in clipped)
+    assert "beyond the axis near a dead centre" in _notes(ax)
+    assert f"ε₄: {biggest:.0f}" in _notes(ax).replace("\u2212", "-")
+
+
+def test_angles_are_continuous_and_the_csvs_up_to_whole_turns(rocker_limit, capsys, tmp_path):
+    run, figures = rocker_limit
+    status = main(["sweep", "--example", "rocker-limit", "--steps", "360", "-o", str(tmp_path / "rl.csv")])
+    capsys.readouterr()
+    assert status == 0
+    rows = list(csv.DictReader(io.StringIO((tmp_path / "rl.csv").read_text())))
+    curve = _curves(figures["links"].axes[0])["φ₄"].get_ydata()[:360]
+    from_csv = np.array([float(r["4.phi_deg"]) if r["4.phi_deg"] else np.nan for r in rows])
+    both = np.isfinite(curve) & np.isfinite(from_csv)
+    assert both.sum() > 100
+    turns = (curve[both] - from_csv[both]) / 360.0
+    assert np.allclose(turns, np.round(turns), atol=1e-9)  # the same angle, up to whole turns
+    steps = np.diff(curve[np.isfinite(curve)])
+    assert np.max(np.abs(steps)) < 20.0  # continuous, across the interval without assembly too
+    assert 0.0 <= curve[np.isfinite(curve)][0] < 360.0
+
+
+def test_the_bands_read_in_black_and_white(rocker_limit):
+    _, figures = rocker_limit
+    ax = figures["links"].axes[1]
+    hatches = {p.get_hatch() for p in ax.patches}
+    assert "///" in hatches  # cannot assemble
+    near = [p for p in ax.patches if p.get_hatch() and "\\" in p.get_hatch()]
+    assert len(near) == 2  # entering and leaving the interval without assembly
+    for patch in near:
+        assert patch.get_edgecolor()[:3] == (0.0, 0.0, 0.0)  # black hatch, not a pale fill
+        assert patch.get_facecolor()[3] == 0.0
+        assert patch.get_width() >= 0.008 * 360 - 1e-9  # wide enough to see
+
+
+def test_nothing_flat_and_nothing_twice_and_every_curve_its_own_style():
+    for name in plans.example_names():
+        scene = plans.load(plans.example_path(name))
+        if not isinstance(scene.driver, plans.scene.Crank) and scene.driver.stroke is None:
+            continue
+        run = run_positions(scene, 2, cycle_steps=72)
+        for page, fig in draw_cycle_diagrams(run.cycle, marked=run.positions):
+            for ax in fig.axes:
+                curves = list(_curves(ax).values())
+                data = [np.asarray(c.get_ydata(), dtype=float) for c in curves]
+                for k, y in enumerate(data):
+                    finite = y[np.isfinite(y)]
+                    assert np.ptp(finite) > 1e-9 * max(1.0, np.max(np.abs(finite))), (name, page, curves[k].get_label())
+                    for other in data[k + 1 :]:
+                        assert not np.allclose(y, other, equal_nan=True), (name, page, curves[k].get_label())
+                styles = [(c.get_linestyle(), c.get_marker()) for c in curves]
+                assert len(set(styles)) == len(styles), (name, page)
+
+
+def test_constants_of_the_scene_are_written_not_drawn():
+    six = _sweep("six-bar", 72)
+    links = dict(draw_cycle_diagrams(six.cycle))["links"]
+    assert "ω₂" not in _curves(links.axes[1]) and "ε₂" not in _curves(links.axes[2]) and "φ₂" not in _curves(links.axes[0])
+    assert "ω₂ = \u221210.0 rad/s  (constant)" in _notes(links.axes[1])  # ω = −10 rad/s in six-bar.toml
+    assert "φ₂ = 55.00° \u2212 Δφ" in _notes(links.axes[0])  # clockwise from 55°
+    arm = _sweep("linear-arm", 40)
+    figures = dict(draw_cycle_diagrams(arm.cycle))
+    assert "φ₂ = 0  (constant)" in _notes(figures["links"].axes[0])
+    # the rod 3 and the rocker 4 carrying its welded sleeve turn together: one curve, both names
+    omega = _curves(figures["links"].axes[1])
+    assert "ω₃ = ω₄" in omega and "ω₃" not in omega and "ω₄" not in omega
+    assert np.allclose(omega["ω₃ = ω₄"].get_ydata(), arm.cycle.links["4"].omega)
+    # the quick-return's block E slides on a frame guide: no Coriolis acceleration, said once
+    qr = _sweep("quick-return", 40)
+    coriolis = dict(draw_cycle_diagrams(qr.cycle))["sliders"].axes[3]
+    assert list(_curves(coriolis)) == [r"$|a^k_{\mathrm{A}}|$"]
+    assert r"$|a^k_{\mathrm{E}}|$ = 0" in _notes(coriolis)
+
+
+def test_position_marks_are_not_grid_lines():
+    run = _sweep("six-bar", 72)
+    ax = dict(draw_cycle_diagrams(run.cycle, marked=run.positions))["links"].axes[0]
+    assert not any(line.get_visible() for line in ax.xaxis.get_gridlines())  # grid: horizontal lines only
+    marks = [line for line in ax.get_lines() if line.get_linestyle() == "--" and len(set(line.get_xdata())) == 1]
+    assert sorted(float(m.get_xdata()[0]) for m in marks) == pytest.approx(30.0 * np.arange(12))
+    triangles = [line for line in ax.get_lines() if line.get_label() == "_mark"]
+    assert len(triangles) == 12 and all(t.get_marker() == "v" for t in triangles)
+
+
+@pytest.mark.parametrize("lang", ["sr", "ru", "bg", "sl"])
+def test_diagrams_have_decimal_commas_true_minus_signs_and_no_english(tmp_path, lang):
+    run = _sweep("quick-return", 72)
+    paths = write_cycle_diagrams(run.cycle, tmp_path, marked=run.positions, lang=lang)
+    english = re.compile(r"\b(angle|velocity|acceleration|constant|position|positions|cannot|near|beyond|travel|relative|drawn|links|points|turned|crank|driver|sliders?|kinematic)\b", re.I)
+    numbers = 0
+    for path in paths:
+        texts = ["".join(t.itertext()) for t in ET.parse(path).getroot().iter(f"{SVG}text")]
+        title = plans.load(plans.example_path("quick-return")).title
+        for text in texts:
+            if text == title:
+                continue
+            assert not english.search(text), (path.name, text)
+            assert not re.search(r"\d\.\d", text), (path.name, text)  # decimal comma
+            assert not re.search(r"-\d", text), (path.name, text)  # a true minus sign before a number
+            numbers += bool(re.search(r"\d,\d", text))
+    assert numbers >= 3
+
+
+def test_a_title_is_drawn_as_plain_text(tmp_path):
+    source = plans.example_path("four-bar").read_text()
+    source = re.sub(r'^title = ".*"$', lambda m: 'title = "Pump $\\\\alpha$ 50% {x}_1"', source, flags=re.M)
+    scene = plans.loads(source)
+    assert scene.title == "Pump $\\alpha$ 50% {x}_1"
+    solution = plans.solve(scene, np.linspace(0, 2 * math.pi, 13))
+    paths = write_cycle_diagrams(solution, tmp_path)
+    texts = ["".join(t.itertext()) for t in ET.parse(paths[0]).getroot().iter(f"{SVG}text")]
+    assert "Pump $\\alpha$ 50% {x}_1" in texts

@@ -1,0 +1,105 @@
+"""Positions that cannot be solved are named, with the reason, on stderr and on the page; runs go in the sense of ω."""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import re
+
+import numpy as np
+import pytest
+
+import plans
+from plans.cli import main
+from plans.positions import run_positions
+
+
+def _rocker_limit_assembles(phi: float) -> bool:
+    """rocker-limit by hand: O = 0, OA = 0.1 m, D = (0.7, 0), AB = 0.45 m, BD = 0.2 m; B exists iff |AD| ≤ AB + BD."""
+    a = 0.1 * complex(math.cos(phi), math.sin(phi))
+    return abs(0.7 - a) <= 0.45 + 0.2
+
+
+def _run(capsys, *argv):
+    status = main(list(argv))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def test_draw_positions_names_every_skipped_position_and_why(capsys, tmp_path):
+    status, out, err = _run(capsys, "draw", "--example", "rocker-limit", "--positions", "12", "-o", str(tmp_path))
+    assert status == 0
+    expected = [k for k in range(12) if not _rocker_limit_assembles(math.radians(30 + 30 * k))]
+    assert expected == list(range(1, 10))  # the hand check itself: φ = 60° … 300°
+    said = [int(m) for m in re.findall(r"^plans: warning: position (\d+) \(φ₂ = [\d.]+°\) is skipped: RRR\(3,4\): joint B cannot assemble", err, re.M)]
+    assert said == expected
+    sheets = sorted(p.name for p in tmp_path.glob("sheet-*.svg"))
+    assert sheets == ["sheet-00.svg", "sheet-10.svg", "sheet-11.svg"]
+    # and the plan of positions says which positions it does not draw
+    svg = (tmp_path / "positions.svg").read_text()
+    assert "not drawn" in svg and "1–9" in svg
+
+
+def test_handout_names_skipped_positions_on_stderr(capsys, tmp_path):
+    status, _, err = _run(capsys, "handout", "--example", "rocker-limit", "--at", "30,90 deg", "-o", str(tmp_path / "h.pdf"))
+    assert status == 0
+    assert re.findall(r"position (\d+) \(φ₂ = 90.0°\) is skipped: RRR\(3,4\): joint B cannot assemble", err) == ["1"]
+    assert "position 0 " not in err
+
+
+def test_a_skipped_position_carries_its_reason():
+    scene = plans.load(plans.example_path("rocker-limit"))
+    run = run_positions(scene, "30,90 deg")
+    solved, skipped = run.runs
+    assert solved.ok and solved.reason == "" and solved.cause == ""
+    assert not skipped.ok and skipped.cause == "no_assembly"
+    # |AD| at φ = 90°: √(0.7² + 0.1²) = 0.7071 m against AB + BD = 0.65 m
+    assert "|AD| = 0.707 m > AB + BD = 0.650 m" in skipped.reason
+    assert [r.index for r in run.skipped] == [1]
+    assert run.skipped_messages() == [f"position 1 (φ₂ = 90.0°) is skipped: {skipped.reason}"]
+
+
+def test_sweep_and_positions_run_in_the_sense_of_omega(capsys, tmp_path):
+    """six-bar: ω₂ = −10 rad/s from φ = 55°: the sweep, the run's cycle and its positions all go clockwise."""
+    target = tmp_path / "sweep.csv"
+    status, _, _ = _run(capsys, "sweep", "--example", "six-bar", "--steps", "360", "-o", str(target))
+    assert status == 0
+    phi = np.array([float(r["driver_phi_deg"]) for r in csv.DictReader(io.StringIO(target.read_text()))])
+    assert phi[0] == pytest.approx(55.0)
+
+    def turn(d):  # an angle difference in (−180°, 180°]: the CSV may write angles in [0, 360)
+        return np.mod(np.asarray(d) + 180.0, 360.0) - 180.0
+
+    assert np.allclose(turn(np.diff(phi)), -1.0)  # clockwise, one degree a step
+    scene = plans.load(plans.example_path("six-bar"))
+    run = run_positions(scene, 12)
+    assert np.allclose(turn(np.degrees(run.cycle.driver[:360]) - phi), 0.0)  # the handout's diagrams run through the same positions
+    assert np.allclose(np.degrees(run.positions), 55.0 - 30.0 * np.arange(12))
+
+
+def test_the_handout_cover_lists_each_skipped_position_with_its_reason():
+    from plans.handout import handout_pages
+
+    scene = plans.load(plans.example_path("rocker-limit"))
+    pages = dict(handout_pages(scene, positions="30,90 deg", lang="sr"))
+    cover = " ".join(t.get_text() for t in pages["cover"].findobj(lambda a: hasattr(a, "get_text")))
+    assert "1:  φ₂ = 90.0°  (није решено у овом положају: RRR(3,4): механизам се не може саставити)" in cover
+    unsolved = " ".join(t.get_text() for t in pages["unsolved-1"].findobj(lambda a: hasattr(a, "get_text")))
+    assert "|AD| = 0.707 m > AB + BD = 0.650 m" in unsolved  # the solver's full reason on the position's own page
+
+
+def test_a_clockwise_sweep_that_loses_assembly_at_its_end_resumes_at_its_start():
+    """rocker-limit turned clockwise from 55.5°: the interval without assembly runs into the end of the turn."""
+    from plans.positions import cycle_positions
+    from plans.sweep import analyse_sweep
+
+    source = plans.example_path("rocker-limit").read_text()
+    source = source.replace('omega = "10 rad/s"', 'omega = "-10 rad/s"').replace('angle = "30 deg"', 'angle = "55.5 deg"')
+    scene = plans.loads(source)
+    solution = plans.solve(scene, np.asarray(cycle_positions(scene, 360)), allow_partial=True)
+    (lost,) = analyse_sweep(solution).lost
+    limit = math.degrees(math.acos((0.49 + 0.01 - 0.65**2) / 0.14))  # |AD| = AB + BD by the cosine rule: 56.39°
+    assert math.degrees(lost.resume) % 360 == pytest.approx(55.5)
+    assert math.degrees(lost.resume_limit) % 360 == pytest.approx(limit, abs=0.05)
+    assert math.degrees(lost.stop_limit) % 360 == pytest.approx(360 - limit, abs=0.05)
