@@ -14,7 +14,7 @@ and joins them, one way:
   SVG (``import plans`` calls it; it does nothing outside IPython).
 
 The results' own ``.plot``, ``.save`` and ``.sheet`` methods call these functions
-through :data:`plans.graphical.plan.DISPLAY`, which importing this module fills: the
+through :data:`plans.display.DISPLAY`, which importing this module fills: the
 graphical layer never imports drawing code.  matplotlib is imported only when
 something is drawn.
 
@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import sys
 
-from .graphical.plan import DISPLAY
+from .display import DISPLAY
 
 __all__ = ["plot", "sheet", "save", "svg", "register"]
 

@@ -21,31 +21,24 @@ __all__ = ["KINDS", "PlanVector", "ConstructionLine", "Step", "Plan", "Graphical
 #: aʳ; ``normal``, ``tangential`` and ``coriolis`` are acceleration components.
 KINDS = ("absolute", "relative", "normal", "tangential", "coriolis")
 
-#: How the results below draw themselves (``.plot``, ``.save``, ``.sheet``): the
-#: functions of :mod:`plans.notebook`, which fills this table when it is imported
-#: (``import plans`` does).  The results are data and this module never imports the
-#: drawing layer: the dependency runs one way, drawing → results.
-DISPLAY: dict = {}
-
-
-def _display(name: str):
-    if name not in DISPLAY:
-        from ..errors import PlansError
-
-        raise PlansError("drawing is not set up: import plans (plans.notebook) to plot or save a result")
-    return DISPLAY[name]
-
-
 class _Drawable:
-    """``.plot(ax=None)`` (returns the Axes) and ``.save(path)`` (one file, in the format of its suffix)."""
+    """``.plot(ax=None)`` (returns the Axes) and ``.save(path)`` (one file, in the format of its suffix).
+
+    The drawing functions are those :mod:`plans.notebook` registers in
+    :data:`plans.display.DISPLAY`: this module never imports the drawing layer.
+    """
 
     def plot(self, ax=None, *, lang: str = "en"):
         """Draw into *ax* (one data unit = 1 mm), or into a new true-to-scale figure; returns the Axes."""
-        return _display("plot")(self, ax, lang=lang)
+        from ..display import display_function
+
+        return display_function("plot")(self, ax, lang=lang)
 
     def save(self, path, *, lang: str = "en"):
         """Write the drawing (a plan, or a solution's sheet) to *path*: ``.svg`` true to scale, ``.pdf`` or ``.png``; returns the path."""
-        return _display("save")(self, path, lang=lang)
+        from ..display import display_function
+
+        return display_function("save")(self, path, lang=lang)
 
 
 @dataclass(frozen=True)
@@ -217,4 +210,6 @@ class GraphicalSolution(_Drawable):
 
     def sheet(self, *, lang: str = "en"):
         """The one-page sheet (mechanism, both plans, vector equations) as a matplotlib Figure."""
-        return _display("sheet")(self, lang=lang)
+        from ..display import display_function
+
+        return display_function("sheet")(self, lang=lang)
