@@ -146,8 +146,9 @@ def _assembles(sin2):
 
 
 def _root(sin2, assembled):
-    """√sin² where *assembled* (rounding-level negatives as 0), NaN elsewhere."""
-    return np.sqrt(np.where(assembled, np.maximum(sin2, 0.0), np.nan))
+    """√sin² where *assembled* (rounding-level negatives as 0), NaN elsewhere (``np.where`` only if somewhere)."""
+    root = np.sqrt(np.maximum(sin2, 0.0))
+    return root if assembled.all() else np.where(assembled, root, np.nan)
 
 
 def _nan_where(mask, *arrays):

@@ -4,6 +4,12 @@ All arrays have shape (N,), one entry per driver position, in SI units
 (m, rad, s); angles counter-clockwise from +x, ω and ε counter-clockwise
 positive.  Points and vectors are complex numbers ``x + iy``.  The arrays are
 read-only.
+
+The solver computes every number before it returns, but it makes the
+result's dicts of motions, and their arrays, only when they are first read
+(:meth:`AnalyticSolution._deferred`): at one position, building some forty
+arrays and a dozen objects that a caller may never look at cost as much as
+the mechanics itself.
 """
 
 from __future__ import annotations
@@ -122,6 +128,31 @@ class AnalyticSolution:
     valid: np.ndarray
     warnings: tuple[NearDeadCentre, ...] = ()
 
+    @classmethod
+    def _deferred(cls, scene: Scene, structure: Structure, driver: np.ndarray, warnings: tuple, build, known: dict | None = None) -> "AnalyticSolution":
+        """A solution whose other attributes are made when first read, by ``build(name)`` (once each).
+
+        *known*: attributes made already.  Reading gives the same values as
+        a solution made with all of them; the solver uses this (see the
+        module docstring).
+        """
+        self = object.__new__(cls)
+        vars(self).update(known or {}, scene=scene, structure=structure, driver=driver, warnings=warnings, _build=build)
+        return self
+
+    def __getattr__(self, name: str):
+        # called only for an attribute not set yet: one that a deferred solution makes now
+        build = vars(self).get("_build")
+        if build is None or name not in _DEFERRED:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        value = vars(self)[name] = build(name)
+        return value
+
+    def __getstate__(self) -> dict:
+        """Every attribute made (for copy and pickle)."""
+        state = {name: getattr(self, name) for name in _ALL}
+        return state
+
     def expected_rel_errors(self, group: str) -> np.ndarray:
         """Expected relative error of the group's velocities and accelerations, 4·ε_mach·cond², per position.
 
@@ -198,6 +229,11 @@ class AnalyticSolution:
             valid=cut(self.valid),
             warnings=tuple(w for w in self.warnings if np.any(np.asarray(self.driver)[index] == w.position)),
         )
+
+
+#: The attributes of a solution, and those a deferred one makes when first read.
+_ALL = ("scene", "structure", "driver", "links", "points", "sliders", "poses", "origins", "conditions", "sines", "valid", "warnings")
+_DEFERRED = frozenset(_ALL) - {"scene", "structure", "driver", "warnings"}
 
 
 def _frozen(array: np.ndarray) -> np.ndarray:

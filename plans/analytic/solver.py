@@ -227,16 +227,17 @@ def _solve_vectorised(plan: "_Plan", driver: np.ndarray, asked_here: bool, allow
                     # the error names the first failing position of the first group that fails: one piece finds it
                     _solve_piece(plan, driver, False, asked_here)
                 columns.put(start, _columns(plan, piece))
-    return _solution(plan, driver, [_frozen(column) for column in columns.arrays()], warn_condition)
+    return _solution(plan, driver, _Once(lambda: [_frozen(column) for column in columns.arrays()]), warn_condition)
 
 
-def _solve_few(plan: "_Plan", driver: np.ndarray, warn_condition: float) -> tuple[list[np.ndarray], bool] | None:
+def _solve_few(plan: "_Plan", driver: np.ndarray, warn_condition: float) -> "tuple[_Once, bool] | None":
     """The columns of the result (:func:`_columns`) at a few positions, one at a time in plain complex arithmetic.
 
     With them, whether every group's condition is at most *warn_condition*
     everywhere (then there is nothing to warn of).  None if some position is not an ordinary one (:class:`single.NotHere`):
     the caller then solves them all vectorised, which reports it.  The
-    columns are rows of one read-only block per kind of number.
+    columns are rows of one read-only block per kind of number, made when
+    the first of them is asked for.
     """
     rows = []
     calm = True
@@ -248,13 +249,32 @@ def _solve_few(plan: "_Plan", driver: np.ndarray, warn_condition: float) -> tupl
             rows.append(_columns(plan, piece))
     except (single.NotHere, ArithmeticError, ValueError):
         return None
-    out: list = [None] * len(plan.dtypes)
-    for dtype, ks, pick in plan.by_dtype:
-        block = np.array([pick(row) for row in rows], dtype).T  # (columns, positions)
-        block.setflags(write=False)  # its rows, views of it, are read-only too
-        for k, column in zip(ks, block):
-            out[k] = column
-    return out, calm
+
+    def make() -> list[np.ndarray]:
+        out: list = [None] * len(plan.dtypes)
+        for dtype, ks in plan.kinds:
+            block = np.array([values[k] for k in ks for values in rows], dtype).reshape(len(ks), len(rows))  # (columns, positions)
+            block.setflags(write=False)  # its rows, views of it, are read-only too
+            for k, column in zip(ks, block):
+                out[k] = column
+        return out
+
+    return _Once(make), calm
+
+
+class _Once:
+    """The columns of the result, made by ``make()`` when first asked for (``columns()``), then kept."""
+
+    __slots__ = ("make", "made")
+
+    def __init__(self, make):
+        self.make = make
+        self.made: list[np.ndarray] | None = None
+
+    def __call__(self) -> list[np.ndarray]:
+        if self.made is None:
+            self.made = self.make()
+        return self.made
 
 
 def _solve_one(plan: "_Plan", x: float) -> "_Piece":
@@ -373,11 +393,19 @@ class _Plan:
             + [float, float] * len(structure.groups)
             + [bool]
         )
-        #: the columns of each kind of number, for the blocks of :func:`_solve_few`
-        self.by_dtype = []
-        for dtype in (float, complex, bool):
-            ks = [k for k, d in enumerate(self.dtypes) if d is dtype]
-            self.by_dtype.append((dtype, ks, lambda row, ks=ks: [row[k] for k in ks]))
+        #: each kind of number and its columns: the blocks of :func:`_solve_few`
+        self.kinds = [(dtype, [k for k, d in enumerate(self.dtypes) if d is dtype]) for dtype in (float, complex, bool)]
+        #: where each body's, point's and slider's columns start, and the groups' (:func:`_part`)
+        self.body_columns = [(name, 6 * m) for m, name in enumerate(self.bodies)]
+        start = 6 * len(self.bodies)
+        self.point_columns = [(name, start + 3 * m) for m, (name, _, _) in enumerate(self.points)]
+        start += 3 * len(self.points)
+        self.slider_columns = [(pair.name, start + 4 * m) for m, pair in enumerate(scene.prismatics)]
+        start += 4 * len(scene.prismatics)
+        self.condition_columns = [(name, start + m) for m, name in enumerate(self.names)]
+        self.sine_columns = [(name, start + len(self.names) + m) for m, name in enumerate(self.names)]
+        self.valid_column = start + 2 * len(self.names)
+        assert self.valid_column == len(self.dtypes) - 1
         driver = scene.driver
         if isinstance(driver, Crank):
             pivot = single.Point(scene.frame.points[driver.pivot], 0j, 0j)
@@ -453,9 +481,16 @@ def _solve_piece(plan: _Plan, driver: np.ndarray, allow_partial: bool, asked_her
         if solution.inner is not None:  # the inner joint's motion, as the dyad found it, for both links
             for link in group.links:
                 points[(link, scene.bodies[link].points[group.inner.point])] = solution.inner
-        conditions[plan.names[k]] = np.where(solution.assembled, solution.condition, np.nan)
-        sines[plan.names[k]] = np.where(solution.assembled, solution.sine, np.nan)
+        conditions[plan.names[k]] = _nan_unless(solution.assembled, solution.condition)
+        sines[plan.names[k]] = _nan_unless(solution.assembled, solution.sine)
     return _Piece(states, points, conditions, sines, valid)
+
+
+def _nan_unless(assembled, values):
+    """The values, NaN where the group is not assembled (as they are if it is everywhere: no ``np.where``)."""
+    if is_number(values) or not assembled.all():
+        return np.where(assembled, values, np.nan)
+    return values
 
 
 # --- driver -------------------------------------------------------------------
@@ -836,46 +871,43 @@ class _Columns:
         return out
 
 
-def _solution(plan: _Plan, driver: np.ndarray, columns: list[np.ndarray], warn_condition: float, calm: bool = False) -> AnalyticSolution:
-    """The result from the columns of :func:`_columns`, each a read-only array over the positions.
+def _solution(plan: _Plan, driver: np.ndarray, columns: _Once, warn_condition: float, calm: bool = False) -> AnalyticSolution:
+    """The result from the columns of :func:`_columns` (``columns()``: each as a read-only array over the positions).
 
-    *calm*: no group's condition exceeds *warn_condition* (known already): no warnings to look for.
+    Its dicts of motions are made when first read (:func:`_part`); the
+    warnings now, unless *calm*: no group's condition exceeds
+    *warn_condition* (known already), so there is nothing to look for.
     """
-    take = iter(columns).__next__
-
-    links, poses, origins = {}, {}, {}
-    for name in plan.bodies:
-        phi, omega, epsilon, r, v, a = take(), take(), take(), take(), take(), take()
-        if name != FRAME:
-            links[name] = LinkMotion(phi, omega, epsilon)
-        poses[name] = (phi, r)
-        origins[name] = PointMotion(r, v, a)
-    points = {}
-    for name, _, _ in plan.points:
-        r, v, a = take(), take(), take()
-        points[name] = PointMotion(r, v, a)
-    sliders = {}
-    for pair in plan.scene.prismatics:
-        s, v_rel, a_rel, coriolis = take(), take(), take(), take()
-        sliders[pair.name] = SliderMotion(s, v_rel, a_rel, coriolis)
-    conditions = {name: take() for name in plan.names}
-    sines = {name: take() for name in plan.names}
-    valid = take()
-    warnings = () if calm else _warnings(plan.scene, plan.structure, driver, conditions, sines, valid, warn_condition)
-    return AnalyticSolution(
-        scene=plan.scene,
-        structure=plan.structure,
-        driver=_frozen(driver),
-        links=links,
-        points=points,
-        sliders=sliders,
-        poses=poses,
-        origins=origins,
-        conditions=conditions,
-        sines=sines,
-        valid=valid,
-        warnings=warnings,
+    known = {}
+    warnings: tuple = ()
+    if not calm:
+        known = {name: _part(plan, columns(), name) for name in ("conditions", "sines", "valid")}
+        warnings = _warnings(plan.scene, plan.structure, driver, known["conditions"], known["sines"], known["valid"], warn_condition)
+    return AnalyticSolution._deferred(
+        plan.scene, plan.structure, _frozen(driver), warnings, lambda name: _part(plan, columns(), name), known
     )
+
+
+def _part(plan: _Plan, columns, name: str):
+    """One attribute of the result (``links``, ``points``, …, ``valid``) from the list of its columns (:func:`_columns`)."""
+    c = columns
+    if name == "links":
+        return {body: LinkMotion(c[k], c[k + 1], c[k + 2]) for body, k in plan.body_columns if body != FRAME}
+    if name == "poses":
+        return {body: (c[k], c[k + 3]) for body, k in plan.body_columns}
+    if name == "origins":
+        return {body: PointMotion(c[k + 3], c[k + 4], c[k + 5]) for body, k in plan.body_columns}
+    if name == "points":
+        return {point: PointMotion(c[k], c[k + 1], c[k + 2]) for point, k in plan.point_columns}
+    if name == "sliders":
+        return {pair: SliderMotion(c[k], c[k + 1], c[k + 2], c[k + 3]) for pair, k in plan.slider_columns}
+    if name == "conditions":
+        return {group: c[k] for group, k in plan.condition_columns}
+    if name == "sines":
+        return {group: c[k] for group, k in plan.sine_columns}
+    if name == "valid":
+        return c[plan.valid_column]
+    raise AttributeError(name)
 
 
 def _slider_motion(scene: Scene, pair, states: dict[str, BodyState], points: dict | None = None) -> tuple:
