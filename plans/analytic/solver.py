@@ -219,15 +219,23 @@ def _solve_vectorised(plan: "_Plan", driver: np.ndarray, asked_here: bool, allow
                 raise StructureError(f"{scene.source}: the structure does not solve the links {', '.join(plan.missing)}")
             columns = _Columns(plan.dtypes, n)
             columns.put(0, _columns(plan, piece))
+            calm = _calm(piece, warn_condition)
         else:
             columns = _Columns(plan.dtypes, n)
+            calm = True
             for start in range(0, n, CHUNK):
                 piece = _solve_piece(plan, driver[start : start + CHUNK], True, asked_here)
                 if not allow_partial and not piece.valid.all():
                     # the error names the first failing position of the first group that fails: one piece finds it
                     _solve_piece(plan, driver, False, asked_here)
                 columns.put(start, _columns(plan, piece))
-    return _solution(plan, driver, _Once(lambda: [_frozen(column) for column in columns.arrays()]), warn_condition)
+                calm = calm and _calm(piece, warn_condition)
+    return _solution(plan, driver, _Once(lambda: [_frozen(column) for column in columns.arrays()]), warn_condition, calm)
+
+
+def _calm(piece: "_Piece", warn_condition: float) -> bool:
+    """No group's condition exceeds *warn_condition* anywhere in the piece (NaN, not assembled, does not): nothing to warn of."""
+    return not any((condition > warn_condition).any() for condition in piece.conditions.values())
 
 
 def _solve_few(plan: "_Plan", driver: np.ndarray, warn_condition: float) -> "tuple[_Once, bool] | None":
