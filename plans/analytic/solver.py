@@ -27,7 +27,7 @@ from ..scene import FRAME, Crank, Line, Scene
 from ..structure import Group, Joint, Structure, find_structure
 from . import single
 from .dyads import DyadSolution, solve_prp, solve_rpp, solve_rpr, solve_rrp, solve_rrr
-from .kinematics import BodyState, PointState, coriolis_acceleration, dot, is_number
+from .kinematics import BodyState, PointState, _sum, coriolis_acceleration, dot, is_number
 from .solution import AnalyticSolution, LinkMotion, PointMotion, SliderMotion, _frozen
 
 __all__ = ["solve", "prepare", "PreparedSolver", "driver_position", "CHUNK", "FEW"]
@@ -839,7 +839,8 @@ class _Columns:
     def put(self, start: int, parts: list) -> None:
         """Add one piece's columns, for the positions from *start* on."""
         if not self.values:
-            if start == 0 and all(is_number(part) or len(part) == self.n for part in parts):
+            # every array of a piece runs over its positions (numpy broadcasts numbers to them), as `valid` does
+            if start == 0 and len(parts[-1]) == self.n:
                 self.values = list(parts)  # the piece is everything
                 return
             self._allocate(parts)
@@ -925,7 +926,10 @@ def _slider_motion(scene: Scene, pair, states: dict[str, BodyState], points: dic
     guide's direction and G the guide's point under Q_s::
 
         s = (Q_s − Q_g)·u_g,   v_rel = (v_Qs − v_G)·u_g,   a_rel = (a_Qs − a_G)·u_g,
-        aᵏ = 2iω_g·v_rel·u_g
+        aᵏ = 2iω_g·u_g·v_rel
+
+    (On a guide that does not move, v_G and a_G are plain zeros, left out;
+    ``2iω_g·u_g`` is then one number times v_rel.)
     """
     guide = states[pair.guide]
     slider_line = scene.bodies[pair.slider].lines[pair.slider_line]
@@ -934,10 +938,10 @@ def _slider_motion(scene: Scene, pair, states: dict[str, BodyState], points: dic
     u_g = guide.direction(guide_line.angle)
     Q_g = guide.position(guide_line.origin)
     G = guide.point_at(Q_s.r)
-    v_rel = dot(u_g, Q_s.v - G.v)
+    v_rel = dot(u_g, _sum(Q_s.v, -G.v))
     return (
         dot(u_g, Q_s.r - Q_g),
         v_rel,
-        dot(u_g, Q_s.a - G.a),
-        coriolis_acceleration(guide.omega, v_rel * u_g),
+        dot(u_g, _sum(Q_s.a, -G.a)),
+        coriolis_acceleration(guide.omega, u_g) * v_rel,
     )
