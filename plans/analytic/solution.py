@@ -6,10 +6,12 @@ positive.  Points and vectors are complex numbers ``x + iy``.  The arrays are
 read-only.
 
 The solver computes every number before it returns, but it makes the
-result's dicts of motions, and their arrays, only when they are first read
-(:meth:`AnalyticSolution._deferred`): at one position, building some forty
-arrays and a dozen objects that a caller may never look at cost as much as
-the mechanics itself.
+result's dicts of motions (``links``, ``points``, ``sliders``, ``poses``,
+``origins``, ``conditions``, ``sines``) and ``valid``, and their arrays,
+only when each is first read (:meth:`AnalyticSolution._deferred`): at one
+position, building some forty arrays and a dozen objects that a caller may
+not look at cost as much as the mechanics itself.  Reading gives the same
+values, kept for the next read.
 """
 
 from __future__ import annotations
@@ -140,14 +142,6 @@ class AnalyticSolution:
         vars(self).update(known or {}, scene=scene, structure=structure, driver=driver, warnings=warnings, _build=build)
         return self
 
-    def __getattr__(self, name: str):
-        # called only for an attribute not set yet: one that a deferred solution makes now
-        build = vars(self).get("_build")
-        if build is None or name not in _DEFERRED:
-            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-        value = vars(self)[name] = build(name)
-        return value
-
     def __getstate__(self) -> dict:
         """Every attribute made (for copy and pickle)."""
         state = {name: getattr(self, name) for name in _ALL}
@@ -233,7 +227,34 @@ class AnalyticSolution:
 
 #: The attributes of a solution, and those a deferred one makes when first read.
 _ALL = ("scene", "structure", "driver", "links", "points", "sliders", "poses", "origins", "conditions", "sines", "valid", "warnings")
-_DEFERRED = frozenset(_ALL) - {"scene", "structure", "driver", "warnings"}
+_DEFERRED = ("links", "points", "sliders", "poses", "origins", "conditions", "sines", "valid")
+
+
+class _MadeOnFirstRead:
+    """An attribute of a deferred :class:`AnalyticSolution`, made by its ``_build`` when first read, then kept.
+
+    It is kept in the instance's ``__dict__``, which Python reads before this
+    (a descriptor without ``__set__``): so a solution made with every
+    attribute, and a deferred one after its first read, never come here.
+    """
+
+    def __init__(self, name: str):
+        self.name = name
+
+    def __get__(self, solution, owner=None):
+        if solution is None:
+            return self
+        made = vars(solution)
+        build = made.get("_build")
+        if build is None:
+            raise AttributeError(f"{owner.__name__!r} object has no attribute {self.name!r}")
+        value = made[self.name] = build(self.name)
+        return value
+
+
+# set after the dataclass is made, so that they are not taken for default values of its fields
+for _name in _DEFERRED:
+    setattr(AnalyticSolution, _name, _MadeOnFirstRead(_name))
 
 
 def _frozen(array: np.ndarray) -> np.ndarray:

@@ -10,13 +10,17 @@ bodies, points and sliders of the result.  A long sweep is solved in pieces
 of :data:`CHUNK` positions, so that the temporaries of each numpy step stay
 in the processor's cache.  Quantities that are the same at every position
 (the frame's, a driver's ω and ε, a block's angle on a fixed guide) are
-carried as plain numbers and made arrays only in the result.
+carried as plain numbers and made arrays only in the result.  The result's
+dicts of motions and their arrays are made when first read (see
+:mod:`plans.analytic.solution`); the warnings are looked for only if some
+group's condition exceeds the limit.
 """
 
 from __future__ import annotations
 
 import cmath
 import math
+import operator
 from dataclasses import dataclass
 
 import numpy as np
@@ -230,7 +234,12 @@ def _solve_vectorised(plan: "_Plan", driver: np.ndarray, asked_here: bool, allow
                     _solve_piece(plan, driver, False, asked_here)
                 columns.put(start, _columns(plan, piece))
                 calm = calm and _calm(piece, warn_condition)
-    return _solution(plan, driver, _Once(lambda: [_frozen(column) for column in columns.arrays()]), warn_condition, calm)
+
+    def make() -> list[np.ndarray]:
+        arrays = columns.arrays()
+        return [_frozen(arrays[k]) for k in plan.order]  # ordered by kind of number (see _part)
+
+    return _solution(plan, driver, _Once(make), warn_condition, calm)
 
 
 def _calm(piece: "_Piece", warn_condition: float) -> bool:
@@ -259,13 +268,12 @@ def _solve_few(plan: "_Plan", driver: np.ndarray, warn_condition: float) -> "tup
         return None
 
     def make() -> list[np.ndarray]:
-        out: list = [None] * len(plan.dtypes)
-        for dtype, ks in plan.kinds:
-            block = np.array([values[k] for k in ks for values in rows], dtype).reshape(len(ks), len(rows))  # (columns, positions)
+        out: list[np.ndarray] = []
+        for dtype, _, pick in plan.kinds:
+            block = np.array([pick(values) for values in rows], dtype).T  # (columns, positions)
             block.setflags(write=False)  # its rows, views of it, are read-only too
-            for k, column in zip(ks, block):
-                out[k] = column
-        return out
+            out.extend(block)
+        return out  # ordered by kind of number (plan.order)
 
     return _Once(make), calm
 
@@ -401,19 +409,28 @@ class _Plan:
             + [float, float] * len(structure.groups)
             + [bool]
         )
-        #: each kind of number and its columns: the blocks of :func:`_solve_few`
-        self.kinds = [(dtype, [k for k, d in enumerate(self.dtypes) if d is dtype]) for dtype in (float, complex, bool)]
-        #: where each body's, point's and slider's columns start, and the groups' (:func:`_part`)
-        self.body_columns = [(name, 6 * m) for m, name in enumerate(self.bodies)]
+        #: each kind of number, its columns and a function that picks them from a list of all: the blocks of :func:`_solve_few`
+        self.kinds = []
+        for dtype in (float, complex, bool):
+            ks = [k for k, d in enumerate(self.dtypes) if d is dtype]
+            self.kinds.append((dtype, ks, operator.itemgetter(*ks) if len(ks) > 1 else lambda row, k=ks[0]: (row[k],)))
+        #: the columns ordered by kind of number, as the result's list of columns holds them (:func:`_part`)
+        self.order = [k for _, ks, _ in self.kinds for k in ks]
+        at = {k: place for place, k in enumerate(self.order)}  # where column k is in that list
+
+        def places(start: int, count: int) -> tuple[int, ...]:
+            return tuple(at[k] for k in range(start, start + count))
+
+        #: where each body's, point's and slider's columns are in the result's list, and the groups'
+        self.body_columns = [(name, places(6 * m, 6)) for m, name in enumerate(self.bodies)]
         start = 6 * len(self.bodies)
-        self.point_columns = [(name, start + 3 * m) for m, (name, _, _) in enumerate(self.points)]
+        self.point_columns = [(name, places(start + 3 * m, 3)) for m, (name, _, _) in enumerate(self.points)]
         start += 3 * len(self.points)
-        self.slider_columns = [(pair.name, start + 4 * m) for m, pair in enumerate(scene.prismatics)]
+        self.slider_columns = [(pair.name, places(start + 4 * m, 4)) for m, pair in enumerate(scene.prismatics)]
         start += 4 * len(scene.prismatics)
-        self.condition_columns = [(name, start + m) for m, name in enumerate(self.names)]
-        self.sine_columns = [(name, start + len(self.names) + m) for m, name in enumerate(self.names)]
-        self.valid_column = start + 2 * len(self.names)
-        assert self.valid_column == len(self.dtypes) - 1
+        self.condition_columns = [(name, at[start + m]) for m, name in enumerate(self.names)]
+        self.sine_columns = [(name, at[start + len(self.names) + m]) for m, name in enumerate(self.names)]
+        self.valid_column = at[start + 2 * len(self.names)]
         driver = scene.driver
         if isinstance(driver, Crank):
             pivot = single.Point(scene.frame.points[driver.pivot], 0j, 0j)
@@ -897,19 +914,23 @@ def _solution(plan: _Plan, driver: np.ndarray, columns: _Once, warn_condition: f
     )
 
 
-def _part(plan: _Plan, columns, name: str):
-    """One attribute of the result (``links``, ``points``, …, ``valid``) from the list of its columns (:func:`_columns`)."""
+def _part(plan: _Plan, columns: list[np.ndarray], name: str):
+    """One attribute of the result (``links``, ``points``, …, ``valid``) from the list of the columns of :func:`_columns`.
+
+    The list holds them ordered by kind of number (``plan.order``); the
+    plan knows where each body's, point's, … columns are in it.
+    """
     c = columns
     if name == "links":
-        return {body: LinkMotion(c[k], c[k + 1], c[k + 2]) for body, k in plan.body_columns if body != FRAME}
+        return {body: LinkMotion(c[phi], c[omega], c[epsilon]) for body, (phi, omega, epsilon, *_) in plan.body_columns if body != FRAME}
     if name == "poses":
-        return {body: (c[k], c[k + 3]) for body, k in plan.body_columns}
+        return {body: (c[phi], c[r]) for body, (phi, _, _, r, _, _) in plan.body_columns}
     if name == "origins":
-        return {body: PointMotion(c[k + 3], c[k + 4], c[k + 5]) for body, k in plan.body_columns}
+        return {body: PointMotion(c[r], c[v], c[a]) for body, (*_, r, v, a) in plan.body_columns}
     if name == "points":
-        return {point: PointMotion(c[k], c[k + 1], c[k + 2]) for point, k in plan.point_columns}
+        return {point: PointMotion(c[r], c[v], c[a]) for point, (r, v, a) in plan.point_columns}
     if name == "sliders":
-        return {pair: SliderMotion(c[k], c[k + 1], c[k + 2], c[k + 3]) for pair, k in plan.slider_columns}
+        return {pair: SliderMotion(c[s], c[v], c[a], c[k]) for pair, (s, v, a, k) in plan.slider_columns}
     if name == "conditions":
         return {group: c[k] for group, k in plan.condition_columns}
     if name == "sines":
