@@ -39,6 +39,7 @@ __all__ = [
     "rigid_velocity",
     "rigid_acceleration",
     "coriolis_acceleration",
+    "coriolis_term",
     "sliding_velocity",
     "sliding_acceleration",
     "cross",
@@ -113,6 +114,16 @@ def coriolis_acceleration(omega_g, v_rel):
         Velocity of the slider relative to the guide (a vector along the guide).
     """
     return 2j * omega_g * v_rel  # zero on a guide that does not turn, but NaN where v_rel is: not left out
+
+
+def coriolis_term(omega_g, v_rel):
+    """Coriolis acceleration ``2iω_g v_rel`` as a term of a sum: a plain zero, which :func:`_sum` leaves out, where ω_g is.
+
+    For a sum whose other terms are NaN wherever v_rel is (a dyad's
+    acceleration, solved with v_rel): on a guide that does not turn, it
+    spares two operations over all positions that add zeros.
+    """
+    return _scaled(2j * omega_g, v_rel)
 
 
 def sliding_velocity(v_Cg, v_rel):
