@@ -58,6 +58,8 @@ from ..scene import Line
 from .kinematics import (
     BodyState,
     PointState,
+    sum_terms,
+    coriolis_term,
     cross,
     dot,
     is_number,
@@ -146,8 +148,9 @@ def _assembles(sin2):
 
 
 def _root(sin2, assembled):
-    """√sin² where *assembled* (rounding-level negatives as 0), NaN elsewhere."""
-    return np.sqrt(np.where(assembled, np.maximum(sin2, 0.0), np.nan))
+    """√sin² where *assembled* (rounding-level negatives as 0), NaN elsewhere (``np.where`` only if somewhere)."""
+    root = np.sqrt(np.maximum(sin2, 0.0))
+    return root if assembled.all() else np.where(assembled, root, np.nan)
 
 
 def _nan_where(mask, *arrays):
@@ -401,14 +404,17 @@ def solve_rrp(
     det = cross(c1, c2)
     omega_i, t_dot = solve_real_2x2(c1, c2, C_g.v - B.v, det)
     v_rel = t_dot * u
-    rhs = C_g.a + coriolis_acceleration(guide.omega, v_rel) - B.a + omega_i**2 * r_BC
+    coriolis = coriolis_term(guide.omega, v_rel)
+    rhs = sum_terms(C_g.a, coriolis) - B.a + omega_i**2 * r_BC
     epsilon_i, t_ddot = solve_real_2x2(c1, c2, rhs, det)
 
     assembled, singular, sine, condition = _diagnose(assembled, c1, c2, det, BC * np.abs(u))  # |c1| = BC, |c2| = |u|
     measures = {"distance": y, "length": l_i}
-    omega_i, epsilon_i, t_dot, t_ddot = _nan_where(singular, omega_i, epsilon_i, t_dot, t_ddot)
-    v_rel, a_rel = t_dot * u, t_ddot * u
-    C_state = PointState(C, sliding_velocity(C_g.v, v_rel), sliding_acceleration(C_g.a, guide.omega, v_rel, a_rel))
+    if singular.any():
+        omega_i, epsilon_i, t_dot, t_ddot = _nan_where(singular, omega_i, epsilon_i, t_dot, t_ddot)
+        v_rel = t_dot * u
+        coriolis = coriolis_term(guide.omega, v_rel)
+    C_state = PointState(C, sliding_velocity(C_g.v, v_rel), sum_terms(C_g.a, coriolis, t_ddot * u))  # a_Cg + 2iω_g v_rel + a_rel
     i = BodyState.from_point(phi_i, omega_i, epsilon_i, B, i_B, turn_i)
     j = BodyState.from_point(phi_j, guide.omega, guide.epsilon, C_state, j_C, turn_j)
     return DyadSolution(i, j, assembled, singular, sine, condition, measures, C_state)

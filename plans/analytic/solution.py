@@ -4,6 +4,14 @@ All arrays have shape (N,), one entry per driver position, in SI units
 (m, rad, s); angles counter-clockwise from +x, ω and ε counter-clockwise
 positive.  Points and vectors are complex numbers ``x + iy``.  The arrays are
 read-only.
+
+The solver computes every number before it returns, but it makes the
+result's dicts of motions (``links``, ``points``, ``sliders``, ``poses``,
+``origins``, ``conditions``, ``sines``) and ``valid``, and their arrays,
+only when each is first read (:meth:`AnalyticSolution._deferred`): at one
+position, building some forty arrays and a dozen objects that a caller may
+not look at cost as much as the mechanics itself.  Reading gives the same
+values, kept for the next read.
 """
 
 from __future__ import annotations
@@ -16,7 +24,7 @@ from ..limits import NearDeadCentre, chain_rel_error, expected_rel_error
 from ..scene import Scene
 from ..structure import Structure
 
-__all__ = ["LinkMotion", "PointMotion", "SliderMotion", "AnalyticSolution"]
+__all__ = ["LinkMotion", "PointMotion", "SliderMotion", "AnalyticSolution", "frozen"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -122,6 +130,23 @@ class AnalyticSolution:
     valid: np.ndarray
     warnings: tuple[NearDeadCentre, ...] = ()
 
+    @classmethod
+    def _deferred(cls, scene: Scene, structure: Structure, driver: np.ndarray, warnings: tuple, build, known: dict | None = None) -> "AnalyticSolution":
+        """A solution whose other attributes are made when first read, by ``build(name)`` (once each).
+
+        *known*: attributes made already.  Reading gives the same values as
+        a solution made with all of them; the solver uses this (see the
+        module docstring).
+        """
+        self = object.__new__(cls)
+        vars(self).update(known or {}, scene=scene, structure=structure, driver=driver, warnings=warnings, _build=build)
+        return self
+
+    def __getstate__(self) -> dict:
+        """Every attribute made (for copy and pickle)."""
+        state = {name: getattr(self, name) for name in _ALL}
+        return state
+
     def expected_rel_errors(self, group: str) -> np.ndarray:
         """Expected relative error of the group's velocities and accelerations, 4·ε_mach·cond², per position.
 
@@ -207,6 +232,38 @@ class AnalyticSolution:
             valid=cut(self.valid),
             warnings=tuple(w for w in self.warnings if np.any(np.asarray(self.driver)[index] == w.position)),
         )
+
+
+#: The attributes of a solution, and those a deferred one makes when first read.
+_ALL = ("scene", "structure", "driver", "links", "points", "sliders", "poses", "origins", "conditions", "sines", "valid", "warnings")
+_DEFERRED = ("links", "points", "sliders", "poses", "origins", "conditions", "sines", "valid")
+
+
+class _MadeOnFirstRead:
+    """An attribute of a deferred :class:`AnalyticSolution`, made by its ``_build`` when first read, then kept.
+
+    It is kept in the instance's ``__dict__``, which Python reads before this
+    (a descriptor without ``__set__``): so a solution made with every
+    attribute, and a deferred one after its first read, never come here.
+    """
+
+    def __init__(self, name: str):
+        self.name = name
+
+    def __get__(self, solution, owner=None):
+        if solution is None:
+            return self
+        made = vars(solution)
+        build = made.get("_build")
+        if build is None:
+            raise AttributeError(f"{owner.__name__!r} object has no attribute {self.name!r}")
+        value = made[self.name] = build(self.name)
+        return value
+
+
+# set after the dataclass is made, so that they are not taken for default values of its fields
+for _name in _DEFERRED:
+    setattr(AnalyticSolution, _name, _MadeOnFirstRead(_name))
 
 
 def frozen(array: np.ndarray) -> np.ndarray:

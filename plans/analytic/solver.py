@@ -10,13 +10,17 @@ bodies, points and sliders of the result.  A long sweep is solved in pieces
 of :data:`CHUNK` positions, so that the temporaries of each numpy step stay
 in the processor's cache.  Quantities that are the same at every position
 (the frame's, a driver's ω and ε, a block's angle on a fixed guide) are
-carried as plain numbers and made arrays only in the result.
+carried as plain numbers and made arrays only in the result.  The result's
+dicts of motions and their arrays are made when first read (see
+:mod:`plans.analytic.solution`); the warnings are looked for only if some
+group's condition exceeds the limit.
 """
 
 from __future__ import annotations
 
 import cmath
 import math
+import operator
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,7 +31,7 @@ from ..scene import FRAME, Crank, Line, Scene
 from ..structure import Group, Joint, Structure, find_structure
 from . import single
 from .dyads import DyadSolution, solve_prp, solve_rpp, solve_rpr, solve_rrp, solve_rrr
-from .kinematics import BodyState, PointState, coriolis_acceleration, dot, is_number
+from .kinematics import BodyState, PointState, sum_terms, coriolis_acceleration, dot, is_number
 from .solution import AnalyticSolution, LinkMotion, PointMotion, SliderMotion, frozen
 
 __all__ = ["solve", "prepare", "PreparedSolver", "driver_position", "CHUNK", "FEW"]
@@ -219,24 +223,38 @@ def _solve_vectorised(plan: "_Plan", driver: np.ndarray, asked_here: bool, allow
                 raise StructureError(f"{scene.source}: the structure does not solve the links {', '.join(plan.missing)}")
             columns = _Columns(plan.dtypes, n)
             columns.put(0, _columns(plan, piece))
+            calm = _calm(piece, warn_condition)
         else:
             columns = _Columns(plan.dtypes, n)
+            calm = True
             for start in range(0, n, CHUNK):
                 piece = _solve_piece(plan, driver[start : start + CHUNK], True, asked_here)
                 if not allow_partial and not piece.valid.all():
                     # the error names the first failing position of the first group that fails: one piece finds it
                     _solve_piece(plan, driver, False, asked_here)
                 columns.put(start, _columns(plan, piece))
-    return _solution(plan, driver, [frozen(column) for column in columns.arrays()], warn_condition)
+                calm = calm and _calm(piece, warn_condition)
+
+    def make() -> list[np.ndarray]:
+        arrays = columns.arrays()
+        return [frozen(arrays[k]) for k in plan.order]  # ordered by kind of number (see _part)
+
+    return _solution(plan, driver, _Once(make), warn_condition, calm)
 
 
-def _solve_few(plan: "_Plan", driver: np.ndarray, warn_condition: float) -> tuple[list[np.ndarray], bool] | None:
+def _calm(piece: "_Piece", warn_condition: float) -> bool:
+    """No group's condition exceeds *warn_condition* anywhere in the piece (NaN, not assembled, does not): nothing to warn of."""
+    return not any((condition > warn_condition).any() for condition in piece.conditions.values())
+
+
+def _solve_few(plan: "_Plan", driver: np.ndarray, warn_condition: float) -> "tuple[_Once, bool] | None":
     """The columns of the result (:func:`_columns`) at a few positions, one at a time in plain complex arithmetic.
 
     With them, whether every group's condition is at most *warn_condition*
     everywhere (then there is nothing to warn of).  None if some position is not an ordinary one (:class:`single.NotHere`):
     the caller then solves them all vectorised, which reports it.  The
-    columns are rows of one read-only block per kind of number.
+    columns are rows of one read-only block per kind of number, made when
+    the first of them is asked for.
     """
     rows = []
     calm = True
@@ -248,13 +266,31 @@ def _solve_few(plan: "_Plan", driver: np.ndarray, warn_condition: float) -> tupl
             rows.append(_columns(plan, piece))
     except (single.NotHere, ArithmeticError, ValueError):
         return None
-    out: list = [None] * len(plan.dtypes)
-    for dtype, ks, pick in plan.by_dtype:
-        block = np.array([pick(row) for row in rows], dtype).T  # (columns, positions)
-        block.setflags(write=False)  # its rows, views of it, are read-only too
-        for k, column in zip(ks, block):
-            out[k] = column
-    return out, calm
+
+    def make() -> list[np.ndarray]:
+        out: list[np.ndarray] = []
+        for dtype, _, pick in plan.kinds:
+            block = np.array([pick(values) for values in rows], dtype).T  # (columns, positions)
+            block.setflags(write=False)  # its rows, views of it, are read-only too
+            out.extend(block)
+        return out  # ordered by kind of number (plan.order)
+
+    return _Once(make), calm
+
+
+class _Once:
+    """The columns of the result, made by ``make()`` when first asked for (``columns()``), then kept."""
+
+    __slots__ = ("make", "made")
+
+    def __init__(self, make):
+        self.make = make
+        self.made: list[np.ndarray] | None = None
+
+    def __call__(self) -> list[np.ndarray]:
+        if self.made is None:
+            self.made = self.make()
+        return self.made
 
 
 def _solve_one(plan: "_Plan", x: float) -> "_Piece":
@@ -373,11 +409,28 @@ class _Plan:
             + [float, float] * len(structure.groups)
             + [bool]
         )
-        #: the columns of each kind of number, for the blocks of :func:`_solve_few`
-        self.by_dtype = []
+        #: each kind of number, its columns and a function that picks them from a list of all: the blocks of :func:`_solve_few`
+        self.kinds = []
         for dtype in (float, complex, bool):
             ks = [k for k, d in enumerate(self.dtypes) if d is dtype]
-            self.by_dtype.append((dtype, ks, lambda row, ks=ks: [row[k] for k in ks]))
+            self.kinds.append((dtype, ks, operator.itemgetter(*ks) if len(ks) > 1 else lambda row, k=ks[0]: (row[k],)))
+        #: the columns ordered by kind of number, as the result's list of columns holds them (:func:`_part`)
+        self.order = [k for _, ks, _ in self.kinds for k in ks]
+        at = {k: place for place, k in enumerate(self.order)}  # where column k is in that list
+
+        def places(start: int, count: int) -> tuple[int, ...]:
+            return tuple(at[k] for k in range(start, start + count))
+
+        #: where each body's, point's and slider's columns are in the result's list, and the groups'
+        self.body_columns = [(name, places(6 * m, 6)) for m, name in enumerate(self.bodies)]
+        start = 6 * len(self.bodies)
+        self.point_columns = [(name, places(start + 3 * m, 3)) for m, (name, _, _) in enumerate(self.points)]
+        start += 3 * len(self.points)
+        self.slider_columns = [(pair.name, places(start + 4 * m, 4)) for m, pair in enumerate(scene.prismatics)]
+        start += 4 * len(scene.prismatics)
+        self.condition_columns = [(name, at[start + m]) for m, name in enumerate(self.names)]
+        self.sine_columns = [(name, at[start + len(self.names) + m]) for m, name in enumerate(self.names)]
+        self.valid_column = at[start + 2 * len(self.names)]
         driver = scene.driver
         if isinstance(driver, Crank):
             pivot = single.Point(scene.frame.points[driver.pivot], 0j, 0j)
@@ -453,9 +506,16 @@ def _solve_piece(plan: _Plan, driver: np.ndarray, allow_partial: bool, asked_her
         if solution.inner is not None:  # the inner joint's motion, as the dyad found it, for both links
             for link in group.links:
                 points[(link, scene.bodies[link].points[group.inner.point])] = solution.inner
-        conditions[plan.names[k]] = np.where(solution.assembled, solution.condition, np.nan)
-        sines[plan.names[k]] = np.where(solution.assembled, solution.sine, np.nan)
+        conditions[plan.names[k]] = _nan_unless(solution.assembled, solution.condition)
+        sines[plan.names[k]] = _nan_unless(solution.assembled, solution.sine)
     return _Piece(states, points, conditions, sines, valid)
+
+
+def _nan_unless(assembled, values):
+    """The values, NaN where the group is not assembled (as they are if it is everywhere: no ``np.where``)."""
+    if is_number(values) or not assembled.all():
+        return np.where(assembled, values, np.nan)
+    return values
 
 
 # --- driver -------------------------------------------------------------------
@@ -796,7 +856,8 @@ class _Columns:
     def put(self, start: int, parts: list) -> None:
         """Add one piece's columns, for the positions from *start* on."""
         if not self.values:
-            if start == 0 and all(is_number(part) or len(part) == self.n for part in parts):
+            # every array of a piece runs over its positions (numpy broadcasts numbers to them), as `valid` does
+            if start == 0 and len(parts[-1]) == self.n:
                 self.values = list(parts)  # the piece is everything
                 return
             self._allocate(parts)
@@ -836,46 +897,47 @@ class _Columns:
         return out
 
 
-def _solution(plan: _Plan, driver: np.ndarray, columns: list[np.ndarray], warn_condition: float, calm: bool = False) -> AnalyticSolution:
-    """The result from the columns of :func:`_columns`, each a read-only array over the positions.
+def _solution(plan: _Plan, driver: np.ndarray, columns: _Once, warn_condition: float, calm: bool = False) -> AnalyticSolution:
+    """The result from the columns of :func:`_columns` (``columns()``: each as a read-only array over the positions).
 
-    *calm*: no group's condition exceeds *warn_condition* (known already): no warnings to look for.
+    Its dicts of motions are made when first read (:func:`_part`); the
+    warnings now, unless *calm*: no group's condition exceeds
+    *warn_condition* (known already), so there is nothing to look for.
     """
-    take = iter(columns).__next__
-
-    links, poses, origins = {}, {}, {}
-    for name in plan.bodies:
-        phi, omega, epsilon, r, v, a = take(), take(), take(), take(), take(), take()
-        if name != FRAME:
-            links[name] = LinkMotion(phi, omega, epsilon)
-        poses[name] = (phi, r)
-        origins[name] = PointMotion(r, v, a)
-    points = {}
-    for name, _, _ in plan.points:
-        r, v, a = take(), take(), take()
-        points[name] = PointMotion(r, v, a)
-    sliders = {}
-    for pair in plan.scene.prismatics:
-        s, v_rel, a_rel, coriolis = take(), take(), take(), take()
-        sliders[pair.name] = SliderMotion(s, v_rel, a_rel, coriolis)
-    conditions = {name: take() for name in plan.names}
-    sines = {name: take() for name in plan.names}
-    valid = take()
-    warnings = () if calm else _warnings(plan.scene, plan.structure, driver, conditions, sines, valid, warn_condition)
-    return AnalyticSolution(
-        scene=plan.scene,
-        structure=plan.structure,
-        driver=frozen(driver),
-        links=links,
-        points=points,
-        sliders=sliders,
-        poses=poses,
-        origins=origins,
-        conditions=conditions,
-        sines=sines,
-        valid=valid,
-        warnings=warnings,
+    known = {}
+    warnings: tuple = ()
+    if not calm:
+        known = {name: _part(plan, columns(), name) for name in ("conditions", "sines", "valid")}
+        warnings = _warnings(plan.scene, plan.structure, driver, known["conditions"], known["sines"], known["valid"], warn_condition)
+    return AnalyticSolution._deferred(
+        plan.scene, plan.structure, frozen(driver), warnings, lambda name: _part(plan, columns(), name), known
     )
+
+
+def _part(plan: _Plan, columns: list[np.ndarray], name: str):
+    """One attribute of the result (``links``, ``points``, …, ``valid``) from the list of the columns of :func:`_columns`.
+
+    The list holds them ordered by kind of number (``plan.order``); the
+    plan knows where each body's, point's, … columns are in it.
+    """
+    c = columns
+    if name == "links":
+        return {body: LinkMotion(c[phi], c[omega], c[epsilon]) for body, (phi, omega, epsilon, *_) in plan.body_columns if body != FRAME}
+    if name == "poses":
+        return {body: (c[phi], c[r]) for body, (phi, _, _, r, _, _) in plan.body_columns}
+    if name == "origins":
+        return {body: PointMotion(c[r], c[v], c[a]) for body, (*_, r, v, a) in plan.body_columns}
+    if name == "points":
+        return {point: PointMotion(c[r], c[v], c[a]) for point, (r, v, a) in plan.point_columns}
+    if name == "sliders":
+        return {pair: SliderMotion(c[s], c[v], c[a], c[k]) for pair, (s, v, a, k) in plan.slider_columns}
+    if name == "conditions":
+        return {group: c[k] for group, k in plan.condition_columns}
+    if name == "sines":
+        return {group: c[k] for group, k in plan.sine_columns}
+    if name == "valid":
+        return c[plan.valid_column]
+    raise AttributeError(name)
 
 
 def _slider_motion(scene: Scene, pair, states: dict[str, BodyState], points: dict | None = None) -> tuple:
@@ -885,7 +947,10 @@ def _slider_motion(scene: Scene, pair, states: dict[str, BodyState], points: dic
     guide's direction and G the guide's point under Q_s::
 
         s = (Q_s − Q_g)·u_g,   v_rel = (v_Qs − v_G)·u_g,   a_rel = (a_Qs − a_G)·u_g,
-        aᵏ = 2iω_g·v_rel·u_g
+        aᵏ = 2iω_g·u_g·v_rel
+
+    (On a guide that does not move, v_G and a_G are plain zeros, left out;
+    ``2iω_g·u_g`` is then one number times v_rel.)
     """
     guide = states[pair.guide]
     slider_line = scene.bodies[pair.slider].lines[pair.slider_line]
@@ -894,10 +959,10 @@ def _slider_motion(scene: Scene, pair, states: dict[str, BodyState], points: dic
     u_g = guide.direction(guide_line.angle)
     Q_g = guide.position(guide_line.origin)
     G = guide.point_at(Q_s.r)
-    v_rel = dot(u_g, Q_s.v - G.v)
+    v_rel = dot(u_g, sum_terms(Q_s.v, -G.v))
     return (
         dot(u_g, Q_s.r - Q_g),
         v_rel,
-        dot(u_g, Q_s.a - G.a),
-        coriolis_acceleration(guide.omega, v_rel * u_g),
+        dot(u_g, sum_terms(Q_s.a, -G.a)),
+        coriolis_acceleration(guide.omega, u_g) * v_rel,
     )

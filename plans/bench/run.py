@@ -28,7 +28,10 @@ Method settings
   over N positions of the case's sweep that include the sample positions;
   the errors are read at those.
 * ``yardstick`` (slider-cranks only): :mod:`plans.bench.yardstick`, the
-  offset slider-crank in closed numpy form.
+  offset slider-crank in closed numpy form.  At N = 1 it is timed twice
+  against plans: a bare call, and a call with every attribute of the
+  result read (:data:`READ_ALL`; plans makes the result's dicts and arrays
+  when they are first read).
 * ``graphical exact``: :func:`plans.graphical.construct` with exact arcs.
 * ``graphical arcs``: arcs as shapely polygons with n segments per quarter
   circle; positions, and what is constructed from them, are as good as the
@@ -352,7 +355,26 @@ def _yardstick_rows(case: Case, structure, refs, settings: Settings) -> list[Row
         rows.append(
             Row(case.name, case.kind, "yardstick", f"N = {n}", n, best / n, median / n, *_worst(errors), len(errors), 0, general / n)
         )
+        if n == 1:
+            # plans makes the result's dicts and arrays when they are first read: time it with all of them read too
+            (median, best), (_, general) = time_pair(
+                lambda: offset_slider_crank(positions, p["r"], p["l"], p["e"], p["omega"], p["epsilon"]),
+                lambda: read_all(solve(case.scene, positions, structure, allow_partial=True)),
+                settings.budget,
+            )
+            rows.append(Row(case.name, case.kind, "yardstick", READ_ALL, n, best, median, *_worst(errors), len(errors), 0, general))
     return rows
+
+
+#: The yardstick row at one position timed against plans with every attribute of the result read.
+READ_ALL = "N = 1, plans' result read in full"
+
+
+def read_all(solution):
+    """Read every attribute of a solution: its dicts of motions and their arrays are made on first reading."""
+    for name in ("links", "points", "sliders", "poses", "origins", "conditions", "sines", "valid"):
+        getattr(solution, name)
+    return solution
 
 
 def _drafted(z: complex, k_l: float, precision: float) -> complex:
@@ -651,6 +673,11 @@ def markdown(result: BenchResult) -> str:
     for t in result.targets:
         verdict = "not measured" if t.met is None else ("met" if t.met else "**missed**")
         lines.append(f"| {t.name} | {t.goal} | {t.measured} | {verdict} |")
+    read = _find(result.rows, "slider-crank", "yardstick", READ_ALL)
+    if read:
+        lines += ["", f"One position of the offset slider-crank with every attribute of plans' result read (its dicts and "
+                  f"arrays are made when first read): plans {read.versus * 1e6:.1f} µs, yardstick {read.seconds * 1e6:.1f} µs, "
+                  f"{read.versus / read.seconds:.2f}×."]
     if result.cold:
         lines += ["", "First call in a fresh process (offset slider-crank, median of fresh processes, wall time): "
                   + "; ".join(f"N = {n}: plans {general * 1e3:.2f} ms, yardstick {yardstick * 1e3:.2f} ms"
