@@ -67,6 +67,12 @@ def _fmt(x: float) -> str:
     return text.replace("-", "−")
 
 
+def _guide_angle(scene: Scene, name: str) -> float:
+    """The angle [rad] of the frame's line *name* (0 when the frame has no such line)."""
+    line = scene.bodies[FRAME].lines.get(name)
+    return line.angle if line is not None else 0.0
+
+
 def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
     """The scene's data as a few lines of text: driver, link lengths, fixed points."""
     unit, factor = _length_unit(scene)
@@ -79,7 +85,7 @@ def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
         )
     else:
         first = (
-            f"{term('driver', lang)} {link} ({driver.point}, frame.{driver.guide}):  v = {_fmt(driver.velocity)} m/s,  "
+            f"{term('driver', lang)} {link} ({driver.point}, {driver.guide} ∥ {_fmt(math.degrees(_guide_angle(scene, driver.guide)))}°):  v = {_fmt(driver.velocity)} m/s,  "
             f"a = {_fmt(driver.acceleration)} m/s²"
         )
         if driver.stroke:

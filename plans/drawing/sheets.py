@@ -48,6 +48,8 @@ TEXT_PT = 8.0  # equations on a handout page (their exponents ≥ 6 pt, see plan
 LINE_GAP = 0.7  # mm between the lines of a text block on a page
 #: a drawing may run this far [mm] past its box (into the gap between boxes) before it is drawn again smaller
 BOX_TOLERANCE = 2.5
+#: text sizes [pt] tried on a check page, largest first, so that the table and the loop equations share one page
+CHECK_PT = (8.0, 7.6, 7.2, 6.8)
 
 #: rcParams of PDF output: TrueType fonts embedded (DejaVu Sans covers Cyrillic and Greek).
 # --- plans draw --positions -----------------------------------------------------------
@@ -229,8 +231,19 @@ def draw_check_pages(
             continue
         loop_lines.append("§" + block.title)
         loop_lines.extend(decimal_comma(line, lang) for line in block.lines)
+    cells = [[decimal_comma(cell, lang) for cell in row] for row in table] if table else None
     with drawing_rc():
+        # the smallest text that puts everything on one page, down to CHECK_MIN_PT; else continued pages at TEXT_PT
         rows = text_rows(heading, loop_lines, width, TEXT_PT) if loop_lines else []
+        room = size[1] - header_height([decimal_comma(line, lang) for line in header_lines]) - (PAGE_MARGIN + 4.0)
+        for pt in CHECK_PT:
+            table_h = table_block(cells, term("results", lang), size=pt - 0.4).height + GAP if cells else 0.0
+            trial = text_rows(heading, loop_lines, width, pt) if loop_lines else []
+            if _rows_that_fit(trial, room - table_h) == len(trial):
+                rows, table_pt = trial, pt - 0.4
+                break
+        else:
+            table_pt = SMALL_PT + 0.3
         figures = []
         first = True
         while first or rows:
@@ -238,7 +251,7 @@ def draw_check_pages(
             top = header(sketch, size, title or run.scene.title, [decimal_comma(line, lang) for line in header_lines])
             bottom = PAGE_MARGIN + 4.0
             if first and table:
-                block = table_block([[decimal_comma(cell, lang) for cell in row] for row in table], term("results", lang), size=SMALL_PT + 0.3)
+                block = table_block(cells, term("results", lang), size=table_pt)
                 block.place(sketch, PAGE_MARGIN, top - block.height, size)
                 top -= block.height + GAP
             if rows:
