@@ -248,7 +248,9 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "в мъртво положение",
         "sl": "v mrtvi legi",
     },
-    "constant": {"en": "constant", "sr": "константно", "ru": "постоянно", "bg": "постоянно", "sl": "konstantno"},
+    # a note in a cycle diagram: a sweep holds the driver's ω, ε as the scene gives them at every position
+    "constant": {"en": "the same at every position", "sr": "исто у сваком положају", "ru": "одинаково во всех положениях",
+                 "bg": "еднакво във всички положения", "sl": "enako v vseh legah"},
     "clipped": {
         "en": "beyond the axis near a dead centre",
         "sr": "ван осе, близу мртвог положаја",

@@ -115,11 +115,11 @@ def test_constants_of_the_scene_are_written_not_drawn():
     six = _sweep("six-bar", 72)
     links = dict(draw_cycle_diagrams(six.cycle))["links"]
     assert "ω₂" not in _curves(links.axes[1]) and "ε₂" not in _curves(links.axes[2]) and "φ₂" not in _curves(links.axes[0])
-    assert "ω₂ = \u221210.0 rad/s  (constant)" in _notes(links.axes[1])  # ω = −10 rad/s in six-bar.toml
+    assert "ω₂ = \u221210.0 rad/s  (the same at every position)" in _notes(links.axes[1])  # ω = −10 rad/s in six-bar.toml
     assert "φ₂ = 55.00° \u2212 Δφ" in _notes(links.axes[0])  # clockwise from 55°
     arm = _sweep("linear-arm", 40)
     figures = dict(draw_cycle_diagrams(arm.cycle))
-    assert "φ₂ = 0  (constant)" in _notes(figures["links"].axes[0])
+    assert "φ₂ = 0  (the same at every position)" in _notes(figures["links"].axes[0])
     # the rod 3 and the rocker 4 carrying its welded sleeve turn together: one curve, both names
     omega = _curves(figures["links"].axes[1])
     assert "ω₃ = ω₄" in omega and "ω₃" not in omega and "ω₄" not in omega
@@ -169,3 +169,17 @@ def test_a_title_is_drawn_as_plain_text(tmp_path):
     paths = write_cycle_diagrams(solution, tmp_path)
     texts = ["".join(t.itertext()) for t in ET.parse(paths[0]).getroot().iter(f"{SVG}text")]
     assert "Pump $\\alpha$ 50% {x}_1" in texts
+
+
+def test_an_angle_panel_is_not_pulled_down_to_zero():
+    """A rocker angle that runs within 30°…60° is drawn over that range, not from 0 (the zero line does not widen it)."""
+    import plans
+    from plans.drawing.diagrams import draw_cycle_diagrams
+
+    scene = plans.load(plans.example_path("four-bar"))
+    sweep = plans.solve(scene, np.radians(np.arange(0.0, 360.0, 5.0)), allow_partial=True)
+    phi = {name: np.degrees(np.unwrap(np.asarray(link.phi))) % 360.0 for name, link in sweep.links.items()}
+    figures = dict(draw_cycle_diagrams(sweep))
+    bottom, top = figures["links"].axes[0].get_ylim()
+    lows = [float(np.min(v)) for name, v in phi.items() if name != scene.driver.link]
+    assert bottom > 0.0 or min(lows) <= 0.0  # 0 is in the range only when an angle reaches it

@@ -51,6 +51,7 @@ from pathlib import Path
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.ticker import ScalarFormatter
 
 from .._files import replace_all
@@ -187,7 +188,8 @@ def _decorate(ax, x, invalid, near, marks, lang, *, numbers: bool) -> None:
         if numbers:
             ax.text(xm, 1.025, str(k), transform=ax.get_xaxis_transform(), ha="center", va="bottom", fontsize=6.5, color="#202020")
     ax.grid(True, axis="y", lw=0.3, color="#d8d8d8")
-    ax.axhline(0.0, color="#000000", lw=0.5, zorder=0.7)
+    # the zero line where the range holds 0, without pulling 0 into the range (a φ from 140° to 155° stays readable)
+    ax.add_artist(Line2D([0.0, 1.0], [0.0, 0.0], transform=ax.get_yaxis_transform(), color="#000000", lw=0.5, zorder=0.7, label="_zero"))
     ax.tick_params(labelsize=7)
     ax.xaxis.set_major_formatter(_Ticks(lang))
     ax.yaxis.set_major_formatter(_Ticks(lang))
@@ -216,7 +218,6 @@ def _page(title: str, subtitle: str, rows: int) -> tuple[Figure, list]:
 
 
 def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: bool, has_clipped: bool) -> None:
-    from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
     handles = []
