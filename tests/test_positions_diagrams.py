@@ -183,3 +183,24 @@ def test_an_angle_panel_is_not_pulled_down_to_zero():
     bottom, top = figures["links"].axes[0].get_ylim()
     lows = [float(np.min(v)) for name, v in phi.items() if name != scene.driver.link]
     assert bottom > 0.0 or min(lows) <= 0.0  # 0 is in the range only when an angle reaches it
+
+
+def test_curve_markers_sit_on_the_marked_positions():
+    """With positions marked, a curve's markers are drawn only at those positions (not between their lines)."""
+    import plans
+    from plans.drawing.diagrams import cycle_axis, draw_cycle_diagrams
+
+    scene = plans.load(plans.example_path("six-bar"))
+    steps = np.radians(np.arange(0.0, 360.0, 2.0))
+    sweep = plans.solve(scene, scene.driver.phi + np.sign(scene.driver.omega) * steps, allow_partial=True)
+    marked = [scene.driver.phi + np.sign(scene.driver.omega) * np.radians(30.0 * k) for k in range(12)]
+    x, _, marks = cycle_axis(sweep, marked)
+    expected = sorted(30.0 * k for k in range(12))
+    assert [round(m, 6) for _, m in sorted(marks, key=lambda m: m[1])] == expected
+    figures = dict(draw_cycle_diagrams(sweep, marked=marked))
+    for ax in figures["links"].axes:
+        for line in ax.get_lines():
+            if line.get_label().startswith("_") or line.get_marker() in (None, "None", ""):
+                continue
+            shown = np.asarray(line.get_xdata())[line.get_markevery()]
+            assert sorted(np.round(shown, 6)) == expected, line.get_label()

@@ -323,12 +323,19 @@ def _clip(ax, x, panel: _Panel, good, lang: str, unit: str) -> bool:
     return bool(beyond)
 
 
-def _plot_panel(ax, x, panel: _Panel, ylabel: str) -> None:
+def _plot_panel(ax, x, panel: _Panel, ylabel: str, marks=()) -> None:
+    """The curves, told apart by colour, line style and marker shape.
+
+    With marked positions, each curve's markers sit on the marked positions' lines
+    (a marker between them would be read as a position); otherwise about ten a curve.
+    """
     step = max(1, len(x) // 10)
+    on_marks = sorted({int(np.nanargmin(np.abs(x - xm))) for _, xm in marks}) if len(marks) else None
     for n, (label, y) in enumerate(panel.curves):
         ax.plot(
             x, y, color=COLOURS[n % len(COLOURS)], ls=STYLES[n % len(STYLES)], lw=1.1, label=label,
-            marker=MARKERS[n % len(MARKERS)], ms=3.2, markevery=((n * step) // max(1, len(panel.curves)), step),
+            marker=MARKERS[n % len(MARKERS)], ms=3.2,
+            markevery=on_marks if on_marks is not None else ((n * step) // max(1, len(panel.curves)), step),
             mfc="white" if n % 2 else COLOURS[n % len(COLOURS)],
         )
     ax.set_ylabel(ylabel, fontsize=8)
@@ -384,7 +391,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         clipped = False
         for ax, (quantity, ylabel, unit) in zip(axes, panels):
             panel = _quantity_panel(analytic, quantity, valid, lang, unit)
-            _plot_panel(ax, x, panel, ylabel)
+            _plot_panel(ax, x, panel, ylabel, marks)
             _decorate(ax, x, invalid, near, marks, lang, numbers=ax is axes[0])
             clipped |= _clip(ax, x, panel, good, lang, unit)
         axes[-1].set_xlabel(f"{xlabel}  —  {xwords}", fontsize=8)
@@ -522,7 +529,7 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
             FigureCanvasSVG(fig)
             ax = fig.add_axes([0.12, 0.16, 0.72, 0.76])
         panel = _quantity_panel(analytic, quantity, valid, lang, _UNITS[quantity])
-        _plot_panel(ax, x, panel, QUANTITIES[quantity])
+        _plot_panel(ax, x, panel, QUANTITIES[quantity], marks)
         _decorate(ax, x, ~valid, near, marks, lang, numbers=True)
         _clip(ax, x, panel, _well_conditioned(analytic), lang, _UNITS[quantity])
         ax.set_xlabel(xlabel, fontsize=8)
