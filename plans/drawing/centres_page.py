@@ -1,0 +1,238 @@
+"""The handout's instant-centre page of a position (``plans handout … --centres``).
+
+After a position's pages, one A4 page: the mechanism at that position with
+every instant centre marked and labelled (P₁₂ …), the Kennedy lines thin,
+the circle diagram beside it (:func:`plans.drawing.centres.draw_centres_into`),
+and a table of ω of every link and v of every reported point found from the
+centres (:mod:`plans.centres`, the third method: its own positions and
+nothing of the analytic or graphical kinematics) beside the analytic values
+of the handout's own analytic solution, with the relative error
+(:func:`plans.compare.compare_centres`).
+
+The page is built from the public names of the page layer
+(:mod:`plans.drawing.layout`, :mod:`plans.drawing.blocks`,
+:mod:`plans.drawing.typeset`); words from :mod:`plans.i18n`, decimal comma in
+sr, ru, bg, sl.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+
+from .._text import decimal_comma
+from ..i18n import term
+from .blocks import Block, rows_block, table_block, text_rows
+from .centres import centre_text, draw_centres_into, draw_circle_diagram_into
+from .layout import A4, GAP, PAGE_MARGIN, footer as page_footer, header, new_page
+from .svg import drawing_rc
+
+__all__ = ["draw_centres_page", "centres_page_table", "centres_page_k_l", "CENTRES_PAGE_MANTISSAS"]
+
+#: the round mantissas of the page's k_l
+CENTRES_PAGE_MANTISSAS = (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)
+TEXT_PT = 8.0
+LEGEND_PT = 7.5
+LINE_GAP = 0.7
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def _round_up(need: float) -> float:
+    """The smallest m·10ⁿ (m in :data:`CENTRES_PAGE_MANTISSAS`) not below *need*."""
+    n = math.floor(math.log10(need)) - 1
+    while True:
+        for m in CENTRES_PAGE_MANTISSAS:
+            value = float(f"{m}e{n}")
+            if value >= need * (1 - 1e-12):
+                return value
+        n += 1
+
+
+def _round_down(below: float) -> float:
+    """The largest m·10ⁿ (m in :data:`CENTRES_PAGE_MANTISSAS`) not above *below*."""
+    n = math.floor(math.log10(below)) + 1
+    while True:
+        for m in reversed(CENTRES_PAGE_MANTISSAS):
+            value = float(f"{m}e{n}")
+            if value <= below * (1 + 1e-12):
+                return value
+        n -= 1
+
+
+def _number(value: float, digits: int = 6) -> str:
+    """*value* to *digits* significant digits: true minus, ``·10ⁿ`` outside 1e-3 … 1e6."""
+    if value == 0 or not math.isfinite(value):
+        return "0" if value == 0 else str(value)
+    text = f"{value:.{digits}g}"
+    if "e" in text:
+        if 1e-3 <= abs(value) < 1e6:
+            text = f"{float(text):.0f}"
+        else:
+            mantissa, exponent = text.split("e")
+            text = f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}"
+    return text.replace("-", "−")
+
+
+def _vector(z: complex) -> str:
+    if z == 0:
+        return "0"
+    return f"{_number(abs(z))} ∠ {math.degrees(cmath.phase(z)):.1f}°".replace("-", "−")
+
+
+def _error(value: float) -> str:
+    if value == 0:
+        return "0"
+    mantissa, exponent = f"{value:.1e}".split("e")
+    return f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}".replace("-", "−")
+
+
+def _about(result, body: str) -> str:
+    """The label of P_1j of *body* (``P₁₃``), ``P₁₄ ∞`` when it is at infinity (the body translates)."""
+    if body == "frame":
+        return "—"
+    centre = result.centre("frame", body)
+    return centre_text(centre.label) + ("" if centre.point is not None else " ∞")
+
+
+def centres_page_table(result, comparisons, lang: str = "en") -> list[list[str]]:
+    """The page's table: header, then ω of every link and v of every reported point, from the centres and analytic.
+
+    Columns: quantity, the centre P_1j its body turns about, the value from
+    the centres, the analytic value, the relative error (of the vector for v).
+    *comparisons* from :func:`plans.compare.compare_centres`.
+    """
+    rows = [[term("quantity", lang), "$P_{1j}$", term("by_centres", lang), term("analytic", lang), term("rel_error", lang)]]
+    by = {(c.section, c.name): c for c in comparisons}
+    for name in result.scene.links:
+        row = by.get(("links", name))
+        if row is not None:
+            rows.append([f"$\\omega_{{{name}}}$ [rad/s]", _about(result, name), _number(row.graphical), _number(row.analytic), _error(row.rel_error)])
+    for name in result.scene.report:
+        row = by.get(("points", name))
+        if row is not None:
+            rows.append([f"$v_{{{name}}}$ [m/s]", _about(result, result.scene.home_of(name)), _vector(complex(row.graphical)),
+                         _vector(complex(row.analytic)), _error(row.rel_error)])
+    return [[decimal_comma(cell, lang) for cell in row] for row in rows]
+
+
+def _rules(lang: str) -> list[str]:
+    return [
+        f"{term('centres_omega_rule', lang)}:  $\\omega_j / \\omega_k = P_{{1k}}P_{{jk}} / P_{{1j}}P_{{jk}}$",
+        f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{1j}}M$",
+    ]
+
+
+def _drawing(fig, result, k_l: float | None, lang: str, diagram: bool = False) -> Block:
+    """The mechanism with its centres at *k_l* (None: the circle diagram alone) as a block in axes of its own."""
+    ax = fig.add_axes([0, 0, 0.01, 0.01])
+    if k_l is None:
+        width, height = draw_circle_diagram_into(ax, result, lang)
+    else:
+        width, height = draw_centres_into(ax, result, k_l, lang, legend=False, diagram=diagram)
+
+    def place(sketch, x: float, y: float, page) -> None:
+        pw, ph = page
+        ax.set_position([x / pw, y / ph, width / pw, height / ph])
+
+    block = Block(width, height, place, kind="mechanism")
+    block.axes = ax
+    return block
+
+
+def centres_page_k_l(fig, result, box: tuple[float, float], lang: str = "en", start: float | None = None, diagram: bool = False) -> tuple[float, Block]:
+    """The round k_l that draws the centres as large as fits *box* (width, height [mm]), and the drawing at it.
+
+    A drawing's size is a part that scales with 1/k_l (the mechanism and the
+    near centres) and a part that does not (labels, arrows, the circle
+    diagram): two trial drawings give both, the third is at the k_l that
+    fits; larger round values are tried while it still runs over.
+    """
+    from ..graphical.scales import round_scale
+
+    bw, bh = box
+    k0 = start or round_scale(result.size)
+    first = _drawing(fig, result, k0, lang, diagram)
+    k1 = k0 * 2
+    second = _drawing(fig, result, k1, lang, diagram)
+    needs = []
+    for a, b, room in ((first.width, second.width, bw), (first.height, second.height, bh)):
+        scaled = (a - b) / (1 / k0 - 1 / k1)  # mm·(m/mm): the part that scales with 1/k_l
+        fixed = a - scaled / k0
+        if scaled > 0:
+            needs.append(scaled / (room - fixed) if room - fixed > 5.0 else k1)
+    need = max(needs, default=k0)
+    for trial in (first, second):
+        trial.axes.remove()
+    k = _round_up(need * (1 + 1e-9))
+    for _ in range(6):
+        block = _drawing(fig, result, k, lang, diagram)
+        if block.width <= bw + 0.5 and block.height <= bh + 0.5:
+            for _ in range(2):  # the estimate errs on the large side: a smaller round k_l may still fit
+                smaller = _round_down(k * 0.999)
+                trial = _drawing(fig, result, smaller, lang, diagram)
+                if not (trial.width <= bw + 0.5 and trial.height <= bh + 0.5):
+                    trial.axes.remove()
+                    break
+                block.axes.remove()
+                k, block = smaller, trial
+            return k, block
+        block.axes.remove()
+        k = _round_up(k * 1.001)
+    return k, _drawing(fig, result, k, lang, diagram)
+
+
+def draw_centres_page(run, *, lang: str = "en", header_lines=(), title: str | None = None, footer: str = ""):
+    """The instant-centre page of a solved position *run* (a :class:`plans.positions.PositionRun`), A4 portrait.
+
+    The centres are found by :func:`plans.centres.instant_centres` from the
+    position's scene alone; the analytic values compared with are those of
+    ``run.analytic``.  Where the method cannot find the velocities at this
+    position (a centre it needs is undetermined), the page says so.
+    """
+    from ..centres import instant_centres
+    from ..compare import compare_centres
+    from ..errors import PlansError
+
+    size = A4
+    width = size[0] - 2 * PAGE_MARGIN
+    kennedy = term("kennedy_theorem", lang)
+    lines = [decimal_comma(line, lang) for line in header_lines] + [
+        "§" + term("centres_page", lang),
+        f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}",
+    ]
+    with drawing_rc():
+        fig, sketch = new_page(size)
+        top = header(sketch, size, title or run.scene.title, lines)
+        bottom = PAGE_MARGIN + 4.0
+        try:
+            result = instant_centres(run.scene, run.analytic.structure)
+            comparisons = compare_centres(run.analytic, result)
+        except PlansError as exc:
+            rows = text_rows(term("instant_centres", lang), [decimal_comma(str(exc), lang)], width, TEXT_PT)
+            block = rows_block(rows, "centres-refused", line_gap=LINE_GAP)
+            block.place(sketch, PAGE_MARGIN, top - block.height, size)
+            page_footer(sketch, footer)
+            return fig
+        table = table_block(centres_page_table(result, comparisons, lang), term("centres_results", lang))
+        rules = rows_block([(line, TEXT_PT, "normal") for line in _rules(lang)], "centres-rule", line_gap=LINE_GAP)
+        legend_lines = [f"{term('centres_legend', lang)};", term("centres_edge_legend", lang)]
+        legend = rows_block(text_rows("", legend_lines, width, LEGEND_PT)[1:], "centres-legend", line_gap=0.5)
+        circle = _drawing(fig, result, None, lang)
+        # the circle diagram beside the table when both fit across the page, else beside the mechanism
+        beside_table = table.width + GAP + circle.width <= width
+        if not beside_table:
+            circle.axes.remove()
+        y = bottom
+        for block, gap in ((rules, GAP * 0.6), (table, GAP), (legend, GAP * 0.6)):
+            if block is not legend:  # the legend goes right under the drawing, placed below
+                block.place(sketch, PAGE_MARGIN, y, size)
+            if block is table and beside_table:
+                circle.place(sketch, PAGE_MARGIN + width - circle.width, y + max(0.0, (table.height - circle.height) / 2), size)
+                gap += max(0.0, circle.height - table.height)
+            y += block.height + gap
+        k_l, drawing = centres_page_k_l(fig, result, (width, top - y), lang, start=run.scene.scales.k_l, diagram=not beside_table)
+        drawing.place(sketch, PAGE_MARGIN + (width - drawing.width) / 2, top - drawing.height, size)
+        legend.place(sketch, PAGE_MARGIN, top - drawing.height - GAP * 0.6 - legend.height, size)
+        page_footer(sketch, footer)
+    fig.centres_k_l = k_l  # (the tests read the scale the page states)
+    return fig
