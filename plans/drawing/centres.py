@@ -221,7 +221,18 @@ def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> Non
         s.circle(q, 1.0, fc=INK, ec=INK, lw=0.3, gid=f"diagram-body-{result.numbers[name]}", zorder=4.0)
         s.text(q + 4.2 * unit(q - centre), result.numbers[name], size=HEADING_PT, gid=f"diagram-number-{result.numbers[name]}")
     s.text(centre - 1j * (DIAGRAM_R + 8.0), term("circle_diagram", lang), size=CAPTION_PT, weight="bold", gid="diagram-heading", obstacle=False)
-    for k, line in enumerate(term("circle_diagram_legend", lang).split("\n")):
+    lines = []
+    for part in term("circle_diagram_legend", lang).split("\n"):  # each part wrapped to the diagram's width
+        current = ""
+        for word in part.split():
+            trial = f"{current} {word}".strip()
+            if current and text_size(trial, CAPTION_PT)[0] > 2 * DIAGRAM_R + 6.0:
+                lines.append(current)
+                current = word
+            else:
+                current = trial
+        lines.append(current)
+    for k, line in enumerate(lines):
         s.text(centre - 1j * (DIAGRAM_R + 12.5 + 4.0 * k), line, size=CAPTION_PT, gid="diagram-legend", obstacle=False)
 
 
@@ -255,13 +266,16 @@ def _shapes(artists) -> list:
     return shapes
 
 
-def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | None = None, legend: bool = True, diagram: bool = True):
+def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | None = None, legend: bool = True, diagram: bool = True,
+                      room_min: float = ROOM_MIN):
     """The mechanism at k_l with every instant centre, and the circle diagram beside it, drawn into *ax*.
 
     One data unit is one millimetre of paper.  *title* (plain text), when
     given, goes above; *legend* adds the two lines that say what rings,
     dots, dashed lines and edge arrows mean; *diagram* False leaves the circle
     diagram out (a page puts it elsewhere: :func:`draw_circle_diagram_into`).
+    *room_min* [mm] is the least room kept around the mechanism for the
+    Kennedy lines and labels (far centres' arrows go outside it).
     The axes' limits are set to the ink plus the margin.
 
     Returns
@@ -272,7 +286,7 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     artists = draw_mechanism(_Drawn(scene, {"k_l": k_l}, result.positions, result.poses), ax, lang=lang)
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     lo, hi = complex(x0 + MARGIN_MM, y0 + MARGIN_MM), complex(x1 - MARGIN_MM, y1 - MARGIN_MM)
-    room = max(ROOM_MIN, ROOM_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag))
+    room = max(room_min, ROOM_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag))
     reach = NEAR_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag)
     near = [c.point / k_l for c in result.centres if c.point is not None]
     near = [q for q in near if lo.real - reach <= q.real <= hi.real + reach and lo.imag - reach <= q.imag <= hi.imag + reach]

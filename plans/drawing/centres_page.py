@@ -33,6 +33,8 @@ __all__ = ["draw_centres_page", "centres_page_table", "centres_page_k_l", "CENTR
 CENTRES_PAGE_MANTISSAS = (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)
 TEXT_PT = 8.0
 LEGEND_PT = 7.5
+#: the least room [mm] around the mechanism on the page (its near centres widen it; far ones are arrows outside)
+ROOM_MIN = 12.0
 LINE_GAP = 0.7
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
@@ -122,13 +124,13 @@ def _rules(lang: str) -> list[str]:
     ]
 
 
-def _drawing(fig, result, k_l: float | None, lang: str, diagram: bool = False) -> Block:
+def _drawing(fig, result, k_l: float | None, lang: str) -> Block:
     """The mechanism with its centres at *k_l* (None: the circle diagram alone) as a block in axes of its own."""
     ax = fig.add_axes([0, 0, 0.01, 0.01])
     if k_l is None:
         width, height = draw_circle_diagram_into(ax, result, lang)
     else:
-        width, height = draw_centres_into(ax, result, k_l, lang, legend=False, diagram=diagram)
+        width, height = draw_centres_into(ax, result, k_l, lang, legend=False, diagram=False, room_min=ROOM_MIN)
 
     def place(sketch, x: float, y: float, page) -> None:
         pw, ph = page
@@ -139,38 +141,54 @@ def _drawing(fig, result, k_l: float | None, lang: str, diagram: bool = False) -
     return block
 
 
-def centres_page_k_l(fig, result, box: tuple[float, float], lang: str = "en", start: float | None = None, diagram: bool = False) -> tuple[float, Block]:
-    """The round k_l that draws the centres as large as fits *box* (width, height [mm]), and the drawing at it.
+def _fits(block: Block, box: tuple[float, float]) -> bool:
+    return block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5
 
-    A drawing's size is a part that scales with 1/k_l (the mechanism and the
-    near centres) and a part that does not (labels, arrows, the circle
-    diagram): two trial drawings give both, the third is at the k_l that
-    fits; larger round values are tried while it still runs over.
+
+def _size_model(fig, result, lang: str, k0: float) -> tuple[tuple[float, float], tuple[float, float]]:
+    """((scaled, fixed) across, (scaled, fixed) up) of the drawing: size [mm] ≈ fixed + scaled / k_l.
+
+    The part that scales is the mechanism with its near centres, the fixed
+    part labels, arrows and margins (the room kept around a small mechanism
+    has a floor, so the trials are at k0 and k0/2, where the mechanism is
+    large); two trial drawings give both.
+    """
+    k1 = k0 / 2
+    first, second = _drawing(fig, result, k0, lang), _drawing(fig, result, k1, lang)
+    model = []
+    for a, b in ((first.width, second.width), (first.height, second.height)):
+        scaled = max((a - b) / (1 / k0 - 1 / k1), 0.0)
+        model.append((scaled, a - scaled / k0))
+    for trial in (first, second):
+        trial.axes.remove()
+    return model[0], model[1]
+
+
+def _need(model, box: tuple[float, float], k0: float) -> float:
+    """The k_l the model says fits *box* (4·k0 where the fixed part alone fills it)."""
+    needs = [scaled / (room - fixed) if room - fixed > 5.0 else 4 * k0 for (scaled, fixed), room in zip(model, box) if scaled > 0]
+    return max(needs, default=k0)
+
+
+def centres_page_k_l(fig, result, box: tuple[float, float], lang: str = "en", start: float | None = None, model=None) -> tuple[float, Block]:
+    """The round k_l that draws the centres (without the circle diagram) as large as fits *box* (width, height [mm]), and the drawing.
+
+    The first guess comes from :func:`_size_model` (*model* when given); the
+    next larger round values are tried while the drawing still runs over,
+    and the next smaller ones while it still fits.
     """
     from ..graphical.scales import round_scale
 
-    bw, bh = box
     k0 = start or round_scale(result.size)
-    first = _drawing(fig, result, k0, lang, diagram)
-    k1 = k0 * 2
-    second = _drawing(fig, result, k1, lang, diagram)
-    needs = []
-    for a, b, room in ((first.width, second.width, bw), (first.height, second.height, bh)):
-        scaled = (a - b) / (1 / k0 - 1 / k1)  # mm·(m/mm): the part that scales with 1/k_l
-        fixed = a - scaled / k0
-        if scaled > 0:
-            needs.append(scaled / (room - fixed) if room - fixed > 5.0 else k1)
-    need = max(needs, default=k0)
-    for trial in (first, second):
-        trial.axes.remove()
-    k = _round_up(need * (1 + 1e-9))
-    for _ in range(6):
-        block = _drawing(fig, result, k, lang, diagram)
-        if block.width <= bw + 0.5 and block.height <= bh + 0.5:
-            for _ in range(2):  # the estimate errs on the large side: a smaller round k_l may still fit
+    model = model or _size_model(fig, result, lang, k0)
+    k = _round_up(_need(model, box, k0) * (1 + 1e-9))
+    for _ in range(8):
+        block = _drawing(fig, result, k, lang)
+        if _fits(block, box):
+            for _ in range(2):  # a smaller round k_l may still fit
                 smaller = _round_down(k * 0.999)
-                trial = _drawing(fig, result, smaller, lang, diagram)
-                if not (trial.width <= bw + 0.5 and trial.height <= bh + 0.5):
+                trial = _drawing(fig, result, smaller, lang)
+                if not _fits(trial, box):
                     trial.axes.remove()
                     break
                 block.axes.remove()
@@ -178,7 +196,7 @@ def centres_page_k_l(fig, result, box: tuple[float, float], lang: str = "en", st
             return k, block
         block.axes.remove()
         k = _round_up(k * 1.001)
-    return k, _drawing(fig, result, k, lang, diagram)
+    return k, _drawing(fig, result, k, lang)
 
 
 def draw_centres_page(run, *, lang: str = "en", header_lines=(), title: str | None = None, footer: str = ""):
@@ -218,21 +236,41 @@ def draw_centres_page(run, *, lang: str = "en", header_lines=(), title: str | No
         legend_lines = [f"{term('centres_legend', lang)};", term("centres_edge_legend", lang)]
         legend = rows_block(text_rows("", legend_lines, width, LEGEND_PT)[1:], "centres-legend", line_gap=0.5)
         circle = _drawing(fig, result, None, lang)
-        # the circle diagram beside the table when both fit across the page, else beside the mechanism
-        beside_table = table.width + GAP + circle.width <= width
-        if not beside_table:
-            circle.axes.remove()
-        y = bottom
-        for block, gap in ((rules, GAP * 0.6), (table, GAP), (legend, GAP * 0.6)):
-            if block is not legend:  # the legend goes right under the drawing, placed below
-                block.place(sketch, PAGE_MARGIN, y, size)
-            if block is table and beside_table:
-                circle.place(sketch, PAGE_MARGIN + width - circle.width, y + max(0.0, (table.height - circle.height) / 2), size)
-                gap += max(0.0, circle.height - table.height)
-            y += block.height + gap
-        k_l, drawing = centres_page_k_l(fig, result, (width, top - y), lang, start=run.scene.scales.k_l, diagram=not beside_table)
-        drawing.place(sketch, PAGE_MARGIN + (width - drawing.width) / 2, top - drawing.height, size)
-        legend.place(sketch, PAGE_MARGIN, top - drawing.height - GAP * 0.6 - legend.height, size)
+        # the circle diagram beside the mechanism, beside the table or under the mechanism: whichever draws it largest
+        k0 = run.scene.scales.k_l or None
+        from ..graphical.scales import round_scale
+
+        k0 = k0 or round_scale(result.size)
+        model = _size_model(fig, result, lang, k0)
+        below = rules.height + GAP * 0.6 + table.height + GAP + legend.height + GAP * 0.6
+        beside_mechanism = (width - circle.width - GAP, top - bottom - below)
+        # beside the table, the legend goes above the table, left of the circle diagram
+        narrow = rows_block(text_rows("", legend_lines, width - circle.width - GAP, LEGEND_PT)[1:], "centres-legend", line_gap=0.5)
+        left_column = table.height + GAP + narrow.height
+        beside_table = (width, top - bottom - rules.height - GAP * 0.6 - max(left_column, circle.height) - GAP)
+        stacked = (width, beside_mechanism[1] - circle.height - GAP)
+        # the layout that draws the mechanism largest (the first of equals: the diagram beside the mechanism)
+        layouts = [("beside", beside_mechanism), ("stacked", stacked)]
+        if table.width + GAP + circle.width <= width:
+            layouts.insert(1, ("table", beside_table))
+        needs = [(_need(model, box, k0) * (1.0 if n == 0 else 1.05), n, name, box) for n, (name, box) in enumerate(layouts) if box[1] > 20.0]
+        _, _, layout, box = min(needs)
+        k_l, drawing = centres_page_k_l(fig, result, box, lang, start=k0, model=model)
+        rules.place(sketch, PAGE_MARGIN, bottom, size)
+        y = bottom + rules.height + GAP * 0.6
+        table.place(sketch, PAGE_MARGIN, y, size)
+        x = PAGE_MARGIN + (width - drawing.width) / 2
+        if layout == "table":
+            circle.place(sketch, PAGE_MARGIN + width - circle.width, y, size)
+            narrow.place(sketch, PAGE_MARGIN, y + table.height + GAP, size)
+        elif layout == "beside":
+            x = PAGE_MARGIN + (width - drawing.width - GAP - circle.width) / 2
+            circle.place(sketch, x + drawing.width + GAP, top - (drawing.height + circle.height) / 2, size)
+            legend.place(sketch, PAGE_MARGIN, top - max(drawing.height, circle.height) - GAP * 0.6 - legend.height, size)
+        else:
+            circle.place(sketch, PAGE_MARGIN + (width - circle.width) / 2, top - drawing.height - GAP - circle.height, size)
+            legend.place(sketch, PAGE_MARGIN, top - drawing.height - GAP - circle.height - GAP * 0.6 - legend.height, size)
+        drawing.place(sketch, x, top - drawing.height, size)
         page_footer(sketch, footer)
     fig.centres_k_l = k_l  # (the tests read the scale the page states)
     return fig
