@@ -141,10 +141,6 @@ def _drawing(fig, result, k_l: float | None, lang: str) -> Block:
     return block
 
 
-def _fits(block: Block, box: tuple[float, float]) -> bool:
-    return block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5
-
-
 def _size_model(fig, result, lang: str, k0: float) -> tuple[tuple[float, float], tuple[float, float]]:
     """((scaled, fixed) across, (scaled, fixed) up) of the drawing: size [mm] ≈ fixed + scaled / k_l.
 
@@ -170,33 +166,43 @@ def _need(model, box: tuple[float, float], k0: float) -> float:
     return max(needs, default=k0)
 
 
-def centres_page_k_l(fig, result, box: tuple[float, float], lang: str = "en", start: float | None = None, model=None) -> tuple[float, Block]:
-    """The round k_l that draws the centres (without the circle diagram) as large as fits *box* (width, height [mm]), and the drawing.
+class _Sizes:
+    """The drawing's size [mm] at each k_l tried (each drawn once, then taken off the page)."""
 
-    The first guess comes from :func:`_size_model` (*model* when given); the
-    next larger round values are tried while the drawing still runs over,
-    and the next smaller ones while it still fits.
+    def __init__(self, fig, result, lang: str):
+        self.fig, self.result, self.lang = fig, result, lang
+        self.known: dict[float, tuple[float, float]] = {}
+
+    def fits(self, k: float, box: tuple[float, float]) -> bool:
+        if k not in self.known:
+            block = _drawing(self.fig, self.result, k, self.lang)
+            self.known[k] = (block.width, block.height)
+            block.axes.remove()
+        w, h = self.known[k]
+        return w <= box[0] + 0.5 and h <= box[1] + 0.5
+
+
+def centres_page_k_l(sizes: _Sizes, box: tuple[float, float], guess: float) -> float:
+    """The smallest round k_l (the largest drawing) with which the centres drawing fits *box* (width, height [mm]).
+
+    From the round value at *guess*: larger ones while the drawing runs
+    over, else smaller ones while it still fits (a drawing's labels and
+    arrows do not scale, and which centres are drawn where they are depends
+    on the size, so the size is measured, never extrapolated).
     """
-    from ..graphical.scales import round_scale
-
-    k0 = start or round_scale(result.size)
-    model = model or _size_model(fig, result, lang, k0)
-    k = _round_up(_need(model, box, k0) * (1 + 1e-9))
-    for _ in range(8):
-        block = _drawing(fig, result, k, lang)
-        if _fits(block, box):
-            for _ in range(2):  # a smaller round k_l may still fit
-                smaller = _round_down(k * 0.999)
-                trial = _drawing(fig, result, smaller, lang)
-                if not _fits(trial, box):
-                    trial.axes.remove()
-                    break
-                block.axes.remove()
-                k, block = smaller, trial
-            return k, block
-        block.axes.remove()
+    k = _round_up(guess)
+    if sizes.fits(k, box):
+        for _ in range(12):
+            smaller = _round_down(k * 0.999)
+            if not sizes.fits(smaller, box):
+                break
+            k = smaller
+        return k
+    for _ in range(12):
         k = _round_up(k * 1.001)
-    return k, _drawing(fig, result, k, lang)
+        if sizes.fits(k, box):
+            break
+    return k
 
 
 def draw_centres_page(run, *, lang: str = "en", header_lines=(), title: str | None = None, footer: str = ""):
@@ -253,9 +259,14 @@ def draw_centres_page(run, *, lang: str = "en", header_lines=(), title: str | No
         layouts = [("beside", beside_mechanism), ("stacked", stacked)]
         if table.width + GAP + circle.width <= width:
             layouts.insert(1, ("table", beside_table))
-        needs = [(_need(model, box, k0) * (1.0 if n == 0 else 1.05), n, name, box) for n, (name, box) in enumerate(layouts) if box[1] > 20.0]
-        _, _, layout, box = min(needs)
-        k_l, drawing = centres_page_k_l(fig, result, box, lang, start=k0, model=model)
+        sizes = _Sizes(fig, result, lang)
+        tried = []
+        for n, (name, box) in enumerate(layouts):
+            if box[1] > 20.0 and box[0] > 20.0:
+                guess = min(max(_need(model, box, k0), k0 / 8), k0 * 8)
+                tried.append((centres_page_k_l(sizes, box, guess), n, name, box))
+        k_l, _, layout, box = min(tried)
+        drawing = _drawing(fig, result, k_l, lang)
         rules.place(sketch, PAGE_MARGIN, bottom, size)
         y = bottom + rules.height + GAP * 0.6
         table.place(sketch, PAGE_MARGIN, y, size)
