@@ -160,3 +160,23 @@ def test_plans_centres_draws_in_the_language_asked(tmp_path):
     svg = (tmp_path / "centres.svg").read_text()
     assert "кружни дијаграм" in svg and "Тренутни полови брзина" in svg
     assert "circle diagram" not in svg
+
+
+@pytest.mark.parametrize("example", ["four-bar", "scotch-yoke", "quick-return"])
+def test_the_drawings_are_inside_the_page_apart_from_each_other_and_from_the_table(example):
+    from plans.drawing.layout import A4, PAGE_MARGIN
+
+    scene = plans.load(plans.example_path(example))
+    fig = dict(handout_pages(scene, centres=True, lang="ru"))["centres-0"]
+    boxes = []
+    for ax in sorted(fig.axes[1:], key=lambda ax: not any("label-P" in (t.get_gid() or "") for t in ax.texts)):
+        x0, y0, w, h = ax.get_position().bounds  # (the first is the page's paper; the mechanism with its labelled centres first)
+        boxes.append((x0 * A4[0], y0 * A4[1], (x0 + w) * A4[0], (y0 + h) * A4[1]))
+    assert len(boxes) == 2  # the mechanism with its centres, and the circle diagram
+    for x0, y0, x1, y1 in boxes:
+        assert PAGE_MARGIN - 0.5 <= x0 and x1 <= A4[0] - PAGE_MARGIN + 0.5 and PAGE_MARGIN <= y0 and y1 <= A4[1] - PAGE_MARGIN
+    (a0, b0, a1, b1), (c0, d0, c1, d1) = boxes
+    assert a1 <= c0 or c1 <= a0 or b1 <= d0 or d1 <= b0, boxes
+    table_top = max(y for text, x, y, gid in _texts(fig) if "table-heading" in gid)
+    mechanism = boxes[0]
+    assert mechanism[1] > table_top, (mechanism, table_top)
