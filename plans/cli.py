@@ -204,6 +204,7 @@ def build_parser() -> argparse.ArgumentParser:
     _position_argument(handout, several=True)
     handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg / FILE.png for a file per page")
     handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
+    handout.add_argument("--centres", action="store_true", help="a page more per position: the instant centres (Kennedy's theorem) and the velocities from them against analytic")
     handout.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr (shown only when stderr is a terminal)")
     _language_argument(handout)
     _scale_arguments(handout)
@@ -216,6 +217,7 @@ def build_parser() -> argparse.ArgumentParser:
     centres.add_argument("-o", "--output", metavar="DIR", default=".", help="directory for centres.svg (default: the current directory)")
     centres.add_argument("--k-l", type=_positive, metavar="K", help="mechanism scale, m per mm of drawing (default: the scene's, else automatic)")
     centres.add_argument("--no-drawing", action="store_true", help="print the table only, write no file")
+    _language_argument(centres)
 
     from . import bench
 
@@ -415,7 +417,7 @@ def _centres(args) -> int:
         from .drawing.centres import centres_svg
 
         path = Path(args.output) / "centres.svg"
-        data = centres_svg(result, args.k_l)
+        data = centres_svg(result, args.k_l, args.lang)
         replace_all({path: data})
         text += f"\n{path}\n"
     sys.stdout.write(text)
@@ -570,6 +572,7 @@ def _handout(args) -> int:
             k_a=args.k_a,
             precision=args.precision,
             components=args.components,
+            centres=args.centres,
             progress=_progress(args),
         )
     _progress_done(args)

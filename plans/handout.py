@@ -324,12 +324,13 @@ def handout_pages(
     components: bool = False,
     progress=None,
     record: list | None = None,
+    centres: bool = False,
 ) -> list[tuple[str, object]]:
     """The handout's pages as (name, matplotlib Figure) pairs, in order.
 
     Names: ``cover``, ``position-K`` and ``check-K`` for each position K,
     ``unsolved-K`` for a position that cannot be solved, ``diagram-links``,
-    ``diagram-points``, ``diagram-sliders``.  Arguments as :func:`write_handout`;
+    ``diagram-points``, ``diagram-sliders``, and ``centres-K`` with *centres*.  Arguments as :func:`write_handout`;
     *record* (a list), when given, receives ``(page name, PositionRun drawn)``
     for every position page (the solution at the scale factors the page states).
     """
@@ -408,6 +409,10 @@ def handout_pages(
         checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here.comparisons, lang), footer=footer)
         for n, page in enumerate(checks):
             pages.append((f"check-{r.index}" + (f"-{n + 1}" if n else ""), page))
+        if centres:  # the instant-centre page of the position (plans.drawing.centres_page)
+            from .drawing.centres_page import draw_centres_page
+
+            pages.append((f"centres-{r.index}", draw_centres_page(r, lang=lang, header_lines=check_head, footer=footer)))
 
     if multi and solved:
         for name, fig in draw_cycle_diagrams(run.cycle, marked=run.positions, lang=lang, components=components):
@@ -431,6 +436,7 @@ def write_handout(
     precision: float | None = None,
     components: bool = False,
     progress=None,
+    centres: bool = False,
 ) -> list[Path]:
     """Write the handout of a scene: a PDF of A4 pages, or SVG pages.
 
@@ -458,6 +464,10 @@ def write_handout(
         Cycle diagrams of the x and y components of every point's v and a too.
     progress : callable, optional
         Called with a short text (``"position 3/12"``, ``"page 5/28"``) as the work goes on.
+    centres : bool
+        A page more after each position's: the instant centres (Kennedy's
+        theorem, :mod:`plans.centres`) drawn on the mechanism with the circle
+        diagram, and ω, v from them against the analytic values.
 
     Returns
     -------
@@ -487,7 +497,7 @@ def write_handout(
         raise HandoutError(str(exc)) from None
     if positions is None:
         _check_solvable(scene)
-    pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components, progress=progress)
+    pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components, progress=progress, centres=centres)
     say = progress or (lambda text: None)
     total = len(pages)
     if suffix == ".pdf":

@@ -25,13 +25,15 @@ from dataclasses import dataclass
 
 from shapely.geometry import LineString, box
 
+from .._text import decimal_comma, user_text
 from ..graphical.scales import round_scale
+from ..i18n import term
 from ._canvas import Sketch, fmt_number, text_size, unit
 from .mechanism import draw_mechanism
 from .style import CAPTION_PT, CONSTRUCTION_STYLE, HEADING_PT, INK, MARGIN_MM, SMALL_PT, TITLE_PT
 from .svg import new_figure, render_svg
 
-__all__ = ["draw_centres", "centres_svg", "centre_text", "CENTRE_COLOUR"]
+__all__ = ["draw_centres", "draw_centres_into", "draw_circle_diagram_into", "centres_svg", "centre_text", "undetermined_text", "CENTRE_COLOUR"]
 
 CENTRE_COLOUR = "#C0392B"
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
@@ -78,8 +80,15 @@ def _clip(p: complex, u: complex, lo: complex, hi: complex) -> tuple[float, floa
     return (t0, t1) if t0 <= t1 else None
 
 
+def undetermined_text(centre, lang: str = "en") -> str:
+    """``P₂₅ undetermined: …`` in *lang* (the method's own reason in English, which names the lines tried)."""
+    why = centre.why if lang == "en" else term("centre_undetermined_why", lang)
+    return f"{centre_text(centre.label)} {term('centre_undetermined', lang)}: {why}"
+
+
 class _CentresDrawing:
-    def __init__(self, sketch: Sketch, result, k_l: float, lo: complex, hi: complex):
+    def __init__(self, sketch: Sketch, result, k_l: float, lo: complex, hi: complex, lang: str = "en"):
+        self.lang = lang
         self.s = sketch
         self.r = result
         self.k_l = k_l
@@ -183,7 +192,7 @@ class _CentresDrawing:
                 u = unit(self.mm(centre.point) - tail)  # the arrow points at the centre
                 tip = tail + EDGE_ARROW * u
                 beyond = abs(self.mm(centre.point) - tip) * self.k_l
-                text = f"{text} +{beyond:.3g} m"
+                text = decimal_comma(f"{text} +{beyond:.3g} m", self.lang)
             else:
                 u = centre.direction
                 tail = self.edge_point(u)
@@ -193,7 +202,7 @@ class _CentresDrawing:
             self.label(tip, text, f"label-{centre.label}", u, 0.8)
 
 
-def _circle_diagram(s: Sketch, result, centre: complex) -> None:
+def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> None:
     """Bodies on a circle (1 at the top, clockwise), primary centres as sides, Kennedy ones as dashed diagonals."""
     names = list(result.numbers)
     n = len(names)
@@ -211,8 +220,20 @@ def _circle_diagram(s: Sketch, result, centre: complex) -> None:
     for name, q in at.items():
         s.circle(q, 1.0, fc=INK, ec=INK, lw=0.3, gid=f"diagram-body-{result.numbers[name]}", zorder=4.0)
         s.text(q + 4.2 * unit(q - centre), result.numbers[name], size=HEADING_PT, gid=f"diagram-number-{result.numbers[name]}")
-    s.text(centre - 1j * (DIAGRAM_R + 8.0), "circle diagram", size=CAPTION_PT, weight="bold", gid="diagram-heading", obstacle=False)
-    s.text(centre - 1j * (DIAGRAM_R + 12.5), "sides: pairs; dashed: Kennedy", size=CAPTION_PT, gid="diagram-legend", obstacle=False)
+    s.text(centre - 1j * (DIAGRAM_R + 8.0), term("circle_diagram", lang), size=CAPTION_PT, weight="bold", gid="diagram-heading", obstacle=False)
+    lines = []
+    for part in term("circle_diagram_legend", lang).split("\n"):  # each part wrapped to the diagram's width
+        current = ""
+        for word in part.split():
+            trial = f"{current} {word}".strip()
+            if current and text_size(trial, CAPTION_PT)[0] > 2 * DIAGRAM_R + 6.0:
+                lines.append(current)
+                current = word
+            else:
+                current = trial
+        lines.append(current)
+    for k, line in enumerate(lines):
+        s.text(centre - 1j * (DIAGRAM_R + 12.5 + 4.0 * k), line, size=CAPTION_PT, gid="diagram-legend", obstacle=False)
 
 
 def _shapes(artists) -> list:
@@ -245,7 +266,76 @@ def _shapes(artists) -> list:
     return shapes
 
 
-def draw_centres(result, k_l: float | None = None):
+def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | None = None, legend: bool = True, diagram: bool = True,
+                      room_min: float = ROOM_MIN):
+    """The mechanism at k_l with every instant centre, and the circle diagram beside it, drawn into *ax*.
+
+    One data unit is one millimetre of paper.  *title* (plain text), when
+    given, goes above; *legend* adds the two lines that say what rings,
+    dots, dashed lines and edge arrows mean; *diagram* False leaves the circle
+    diagram out (a page puts it elsewhere: :func:`draw_circle_diagram_into`).
+    *room_min* [mm] is the least room kept around the mechanism for the
+    Kennedy lines and labels (far centres' arrows go outside it).
+    The axes' limits are set to the ink plus the margin.
+
+    Returns
+    -------
+    (width, height) [mm] of the drawing.
+    """
+    scene = result.scene
+    artists = draw_mechanism(_Drawn(scene, {"k_l": k_l}, result.positions, result.poses), ax, lang=lang)
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    lo, hi = complex(x0 + MARGIN_MM, y0 + MARGIN_MM), complex(x1 - MARGIN_MM, y1 - MARGIN_MM)
+    room = max(room_min, ROOM_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag))
+    reach = NEAR_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag)
+    near = [c.point / k_l for c in result.centres if c.point is not None]
+    near = [q for q in near if lo.real - reach <= q.real <= hi.real + reach and lo.imag - reach <= q.imag <= hi.imag + reach]
+    lo, hi = lo - room * (1 + 1j), hi + room * (1 + 1j)
+    for q in near:  # a centre up to one mechanism's size away is drawn where it is, with some room around it
+        lo = complex(min(lo.real, q.real - 12.0), min(lo.imag, q.imag - 8.0))
+        hi = complex(max(hi.real, q.real + 12.0), max(hi.imag, q.imag + 8.0))
+    s = Sketch(ax, "centres")
+    s.obstacles.extend(_shapes(artists))
+    drawing = _CentresDrawing(s, result, k_l, lo, hi, lang)
+    drawing.kennedy_lines()
+    drawing.centres()
+    if diagram:
+        _circle_diagram(s, result, complex(max(s.bounds.xmax, x1) + 14.0 + DIAGRAM_R, (lo.imag + hi.imag) / 2 + 6.0), lang)
+    top = s.bounds.ymax + 4.0
+    if legend:
+        words = decimal_comma(f"k_l = {fmt_number(k_l)} m/mm;  n(n−1)/2 = {len(result.centres)};  ", lang)
+        s.text(complex(lo.real, top + 2.0), words + term("centres_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend", obstacle=False)
+        s.text(complex(lo.real, top - 2.0), term("centres_edge_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend-edge", obstacle=False)
+        top += 5.0
+    if title is not None:
+        s.text(complex(lo.real, top + 2.0), user_text(title), size=TITLE_PT - 3, ha="left", va="bottom", weight="bold", gid="title", obstacle=False)
+    missing = [c for c in result.centres if not c.determined]
+    for k, c in enumerate(missing):
+        s.text(complex(lo.real, min(s.bounds.ymin, y0) - 3.0), undetermined_text(c, lang),
+               size=CAPTION_PT, ha="left", va="top", color=CENTRE_COLOUR, gid=f"undetermined-{c.label}", obstacle=False)
+    b = s.bounds
+    xmin, xmax = min(b.xmin, x0), max(b.xmax, x1)
+    ymin, ymax = min(b.ymin, y0), max(b.ymax, y1)
+    ax.set_xlim(xmin - MARGIN_MM, xmax + MARGIN_MM)
+    ax.set_ylim(ymin - MARGIN_MM, ymax + MARGIN_MM)
+    ax.set_aspect("auto")
+    ax.set_axis_off()
+    return xmax - xmin + 2 * MARGIN_MM, ymax - ymin + 2 * MARGIN_MM
+
+
+def draw_circle_diagram_into(ax, result, lang: str = "en") -> tuple[float, float]:
+    """The circle diagram alone, drawn into *ax* (one data unit a millimetre); returns its (width, height) [mm]."""
+    s = Sketch(ax, "centres")
+    _circle_diagram(s, result, 0j, lang)
+    b = s.bounds
+    ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
+    ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM)
+    ax.set_aspect("auto")
+    ax.set_axis_off()
+    return b.xmax - b.xmin + 2 * MARGIN_MM, b.ymax - b.ymin + 2 * MARGIN_MM
+
+
+def draw_centres(result, k_l: float | None = None, lang: str = "en"):
     """The figure: the mechanism at k_l with every instant centre, and the circle diagram.
 
     Parameters
@@ -254,6 +344,8 @@ def draw_centres(result, k_l: float | None = None):
     k_l : float, optional
         m per mm; default the scene's ``[scales] k_l``, else the round value
         (1, 2, 2.5, 5 × 10ⁿ) drawing the mechanism's larger side 60–120 mm long.
+    lang : str
+        Language of the words (see :mod:`plans.i18n`); decimal comma in sr, ru, bg, sl.
 
     Returns
     -------
@@ -264,47 +356,12 @@ def draw_centres(result, k_l: float | None = None):
     k_l = k_l or scene.scales.k_l or round_scale(result.size)
     fig = new_figure()
     ax = fig.add_axes([0, 0, 1, 1])
-    artists = draw_mechanism(_Drawn(scene, {"k_l": k_l}, result.positions, result.poses), ax)
-    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-    lo, hi = complex(x0 + MARGIN_MM, y0 + MARGIN_MM), complex(x1 - MARGIN_MM, y1 - MARGIN_MM)
-    room = max(ROOM_MIN, ROOM_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag))
-    reach = NEAR_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag)
-    near = [c.point / k_l for c in result.centres if c.point is not None]
-    near = [q for q in near if lo.real - reach <= q.real <= hi.real + reach and lo.imag - reach <= q.imag <= hi.imag + reach]
-    lo, hi = lo - room * (1 + 1j), hi + room * (1 + 1j)
-    for q in near:  # a centre up to one mechanism's size away is drawn where it is, with some room around it
-        lo = complex(min(lo.real, q.real - 12.0), min(lo.imag, q.imag - 8.0))
-        hi = complex(max(hi.real, q.real + 12.0), max(hi.imag, q.imag + 8.0))
-    s = Sketch(ax, "centres")
-    s.obstacles.extend(_shapes(artists))
-    drawing = _CentresDrawing(s, result, k_l, lo, hi)
-    drawing.kennedy_lines()
-    drawing.centres()
-    _circle_diagram(s, result, complex(max(s.bounds.xmax, x1) + 14.0 + DIAGRAM_R, (lo.imag + hi.imag) / 2 + 6.0))
-    top = s.bounds.ymax + 4.0
-    s.text(complex(lo.real, top + 7.0), f"Instant centres — {scene.title}", size=TITLE_PT - 3, ha="left", va="bottom", weight="bold", gid="title", obstacle=False)
-    s.text(complex(lo.real, top + 2.0), f"k_l = {fmt_number(k_l)} m/mm;  {len(result.centres)} centres: "
-           "rings at a pair, dots found by Kennedy's theorem on the dashed lines;",
-           size=CAPTION_PT, ha="left", va="bottom", gid="legend", obstacle=False)
-    s.text(complex(lo.real, top - 2.0), "an arrow at the edge points to a far centre (+ its distance beyond the arrow) "
-           "or one at infinity (∞)", size=CAPTION_PT, ha="left", va="bottom", gid="legend-edge", obstacle=False)
-    missing = [c for c in result.centres if not c.determined]
-    for c in missing:
-        s.text(complex(lo.real, min(s.bounds.ymin, y0) - 3.0), f"{centre_text(c.label)} undetermined: {c.why}",
-               size=CAPTION_PT, ha="left", va="top", color=CENTRE_COLOUR, gid=f"undetermined-{c.label}", obstacle=False)
-    b = s.bounds
-    xmin, xmax = min(b.xmin, x0), max(b.xmax, x1)
-    ymin, ymax = min(b.ymin, y0), max(b.ymax, y1)
-    width, height = xmax - xmin + 2 * MARGIN_MM, ymax - ymin + 2 * MARGIN_MM
+    width, height = draw_centres_into(ax, result, k_l, lang, title=f"{term('instant_centres', lang)} — {user_text(scene.title)}")
     fig.set_size_inches(width / 25.4, height / 25.4)
     ax.set_position([0.0, 0.0, 1.0, 1.0])
-    ax.set_xlim(xmin - MARGIN_MM, xmax + MARGIN_MM)
-    ax.set_ylim(ymin - MARGIN_MM, ymax + MARGIN_MM)
-    ax.set_aspect("auto")
-    ax.set_axis_off()
     return fig
 
 
-def centres_svg(result, k_l: float | None = None) -> bytes:
+def centres_svg(result, k_l: float | None = None, lang: str = "en") -> bytes:
     """``centres.svg`` as bytes (deterministic); see :func:`draw_centres`."""
-    return render_svg(draw_centres(result, k_l))
+    return render_svg(draw_centres(result, k_l, lang))
