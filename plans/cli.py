@@ -520,7 +520,7 @@ def _draw(args) -> int:
         analytic = solve(scene, warn_condition=args.warn_condition)
         graphical = _construct(scene, args)
         comparisons = compare(analytic, graphical)
-        sheet_table_rows = sheet_table(comparisons)
+        sheet_table_rows = sheet_table(comparisons, graphical, analytic)
         _warn_solution(analytic, graphical)
         with batch():
             if _is_file(args.output):  # -o page.png: the sheet alone, in the format of the suffix

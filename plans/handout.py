@@ -111,11 +111,12 @@ def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
     return [line for line in (first, second, third) if line]
 
 
-def _table(comparisons, lang: str) -> list[list[str]]:
+def _table(run, lang: str) -> list[list[str]]:
+    """The results table of a solved position, its slider rows named as the drawn vectors."""
     from .report import sheet_table
     from .drawing.sheet import translate_table
 
-    return translate_table(sheet_table(comparisons), lang)
+    return translate_table(sheet_table(run.comparisons, run.graphical, run.analytic), lang)
 
 
 def _equations(graphical, structure) -> list[str]:
@@ -405,7 +406,7 @@ def handout_pages(
             record.append((f"position-{r.index}", here))
         pages.append((f"position-{r.index}", fig))
         check_head = ["§" + where(r), formula]
-        checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here.comparisons, lang), footer=footer)
+        checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here, lang), footer=footer)
         for n, page in enumerate(checks):
             pages.append((f"check-{r.index}" + (f"-{n + 1}" if n else ""), page))
 

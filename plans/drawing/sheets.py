@@ -66,7 +66,7 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
     return draw_sheet(
         run.graphical,
         formula=run.analytic.structure.formula,
-        table=sheet_table(run.comparisons),
+        table=sheet_table(run.comparisons, run.graphical, run.analytic),
         lang=lang,
         title=_position_title(run, total or run.index + 1, lang),
     )
