@@ -340,14 +340,15 @@ def handout_pages(
     from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_bands, scale_line
     from .graphical import construct
     from .loops import loop_equations
-    from .positions import run_positions
+    from .positions import at_page_precision, run_positions
 
     check_language(lang)
+    scene = at_page_precision(scene, precision)  # lengths measured and printed to 0.1 mm unless told
     say = progress or (lambda text: None)
     given = {"k_l": k_l if k_l is not None else scene.scales.k_l,
              "k_v": k_v if k_v is not None else scene.scales.k_v,
              "k_a": k_a if k_a is not None else scene.scales.k_a}
-    run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=precision)
+    run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=None)
     multi = positions is not None
     data = scene_data_lines(scene, lang)
     footer = f"plans — {scene.title}"
@@ -454,7 +455,10 @@ def write_handout(
         Scale factors; by default the round values that fit every position
         on the page.
     precision : float, optional
-        Drafting precision [mm] of the graphical readings.
+        Drafting precision [mm] of the graphical readings: every length is
+        measured (and printed) to it.  Default: the scene's ``[scales]
+        precision``, else :data:`plans.positions.PAGE_PRECISION` (0.1 mm);
+        0 gives exact readings.
     components : bool
         Cycle diagrams of the x and y components of every point's v and a too.
     progress : callable, optional
