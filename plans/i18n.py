@@ -295,6 +295,17 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "$k_l$ enak za vse lege; $k_v$, $k_a$ izbrana za vsako lego",
     },
     "contents": {"en": "Contents", "sr": "Садржај", "ru": "Содержание", "bg": "Съдържание", "sl": "Vsebina"},
+    # readings of a plan (issue 10 §2): what a student measures and computes
+    "readings": {
+        "en": "readings",
+        "sr": "очитавања",
+        "ru": "отсчёты",
+        "bg": "отчитания",
+        "sl": "odčitki",
+    },
+    "segment": {"en": "segment", "sr": "дуж", "ru": "отрезок", "bg": "отсечка", "sl": "daljica"},
+    "cw": {"en": "cw", "sr": "↻", "ru": "↻", "bg": "↻", "sl": "↻"},
+    "ccw": {"en": "ccw", "sr": "↺", "ru": "↺", "bg": "↺", "sl": "↺"},
 }
 
 

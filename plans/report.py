@@ -21,7 +21,7 @@ from .sweep import sweep_csv
 from .structure import branches
 
 __all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table", "guide_direction",
-           "drawn_rows"]
+           "drawn_rows", "table_number"]
 
 SCHEMA_VERSION = 1
 
@@ -432,7 +432,7 @@ _SYMBOL = {"v": "v", "a": "a", "omega": r"\omega", "epsilon": r"\varepsilon", "v
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
-def _number(value: float, digits: int = 4) -> str:
+def table_number(value: float, digits: int = 4) -> str:
     """*value* to *digits* significant digits as printed in a table: true minus sign, no ``e`` notation.
 
     Ordinary magnitudes (1e-3 … 1e6) in positional notation (``12160``,
@@ -452,8 +452,8 @@ def _number(value: float, digits: int = 4) -> str:
 
 def _magnitude(value) -> str:
     if isinstance(value, complex):
-        return f"{_number(abs(value))} ∠ {_deg(cmath.phase(value)):.1f}°".replace("-", "−") if value != 0 else "0"
-    return _number(value)
+        return f"{table_number(abs(value))} ∠ {_deg(cmath.phase(value)):.1f}°".replace("-", "−") if value != 0 else "0"
+    return table_number(value)
 
 
 def _error(value: float) -> str:
