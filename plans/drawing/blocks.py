@@ -22,7 +22,7 @@ import re
 
 from ..graphical.plan import KINDS
 from ..i18n import term
-from .._text import user_text
+from .._text import decimal_comma, user_text
 from ._canvas import Sketch, text_size
 from .mechanism import draw_mechanism
 from .plan_drawing import SAME_MM, draw_plan, end_letters, image_text, legend_row, legend_words, vectors_drawn
@@ -49,6 +49,8 @@ __all__ = [
 TABLE_PT = SMALL_PT + 0.5
 #: text size [pt] of the readings tables
 READINGS_PT = SMALL_PT
+#: the smallest size a readings table is set at to stand beside the other one
+READINGS_MIN_PT = 6.0
 #: a line of an equation is set at most this much smaller before it is wrapped inside a term
 MIN_SHRINK = 0.8
 CONTINUED = "…"
@@ -121,14 +123,15 @@ def _numeric(cell: str) -> bool:
     return bool(re.match(r"^\s*[+\-−]?[0-9.]", cell))
 
 
-def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT, heading_size: float = HEADING_PT) -> Block:
+def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT, heading_size: float = HEADING_PT, pad: float = 2.0,
+                row_gap: float | None = None) -> Block:
     """A table: *heading*, a rule, the header row (bold), a rule, the rows, a rule; numbers right-aligned."""
     columns = max(len(r) for r in table)
     rows = [list(r) + [""] * (columns - len(r)) for r in table]
-    pad = 2.0
     widths = [max(measure(r[c], size, "bold" if i == 0 else "normal")[0] for i, r in enumerate(rows)) + 2 * pad for c in range(columns)]
-    row_h = text_size("lp", size)[1] * 1.1 + 1.6 * size / TABLE_PT  # a subscript (v_A) drops into the padding
-    heading_h = text_size("lp", heading_size)[1] + 2.0
+    # a subscript (v_A) drops into the padding: *row_gap* [mm] (by default 1.6 mm at TABLE_PT, in proportion)
+    row_h = text_size("lp", size)[1] * 1.1 + (1.6 * size / TABLE_PT if row_gap is None else row_gap)
+    heading_h = text_size("lp", heading_size)[1] + (2.0 if row_gap is None else 1.2)
     width = max(sum(widths), measure(heading, heading_size, "bold")[0])
     height = heading_h + row_h * len(rows) + 1.0
 
@@ -251,7 +254,7 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
     by_label = {v.label: v for v in plan.vectors}
     precision = graphical.precision
     unit = _UNIT[kind]
-    rows = [["", term("segment", lang), "mm", f"× ${key[0]}_{{{key[2]}}}$", "÷ l [m]", "="]]
+    rows = [["", term("segment", lang), "mm", f"× ${key[0]}_{{{key[2]}}}$  (÷ l [m])", "="]]
 
     def row(symbol: str, v, divide: float | None = None, sense: float | None = None) -> list[str]:
         length = v.value / k if v is not None else 0.0
@@ -264,7 +267,8 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
             text = f"{table_number(abs(value))} {rate_unit}{words}"
         else:
             text = f"{table_number(value)} {unit}"
-        return [symbol, segment, printed_length(length, precision), f"× {fmt(k)}", "" if divide is None else f"÷ {table_number(divide)}", text]
+        factor = f"× {fmt(k)}" + ("" if divide is None else f"  ÷ {table_number(divide)}")
+        return [symbol, segment, printed_length(length, precision), factor, text]
 
     from ._canvas import fmt_number as fmt
 
@@ -289,9 +293,11 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
         v = by_label.get(label)
         symbol_text = "$" + " = ".join(f"{tex}_{{{link}}}" for link in links) + "$"
         r = row(symbol_text, v, divide=length, sense=graphical.links[links[0]][rate])
-        r[4] = f"÷ {table_number(length)} ({segment})"
+        r[3] += f" ({segment})"
         rows.append(r)
-    return rows if len(rows) > 1 else []
+    if len(rows) == 1:
+        return []
+    return [[decimal_comma(cell, lang) for cell in r] for r in rows]
 
 
 def readings_block(graphical, lang: str = "en", *, size: float = READINGS_PT, width: float | None = None) -> Block | None:
@@ -299,17 +305,22 @@ def readings_block(graphical, lang: str = "en", *, size: float = READINGS_PT, wi
     when side by side they are wider than *width* [mm]; None when there is nothing to read."""
     from ..i18n import term as words
 
-    tables = []
+    contents = []
     for kind in ("velocity", "acceleration"):
         rows = plan_readings(graphical, kind, lang)
         if rows:
             heading = f"{words('velocity_plan' if kind == 'velocity' else 'acceleration_plan', lang)}: {words('readings', lang)}"
-            tables.append(table_block(rows, heading, size=size, heading_size=size + 1.0))
-    if not tables:
+            contents.append((rows, heading))
+    if not contents:
         return None
-    gap = 6.0
-    side = sum(t.width for t in tables) + gap * (len(tables) - 1)
-    across = width is None or side <= width
+    gap = 5.0
+    # the given size, or smaller down to READINGS_MIN_PT, so that the two tables stand side by side in *width*
+    for pt in [size] + [p for p in (size - 0.5, size - 1.0, size - 1.5) if p >= READINGS_MIN_PT]:
+        tables = [table_block(rows, heading, size=pt, heading_size=pt + 1.0, pad=1.4, row_gap=0.9) for rows, heading in contents]
+        side = sum(t.width for t in tables) + gap * (len(tables) - 1)
+        across = width is None or side <= width
+        if across:
+            break
     w = side if across else max(t.width for t in tables)
     h = max(t.height for t in tables) if across else sum(t.height for t in tables) + gap * (len(tables) - 1)
 
