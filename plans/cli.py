@@ -71,9 +71,9 @@ def _not_negative(text: str) -> float:
     try:
         value = float(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a number of mm, 0 or more, got {text!r}") from None
+        raise argparse.ArgumentTypeError(f"expected a positive number of mm, or 0 for exact readings, got {text!r}") from None
     if not (math.isfinite(value) and value >= 0):
-        raise argparse.ArgumentTypeError(f"expected a number of mm, 0 or more, got {text!r}")
+        raise argparse.ArgumentTypeError(f"expected a positive number of mm, or 0 for exact readings, got {text!r}")
     return value
 
 

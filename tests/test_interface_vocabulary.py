@@ -98,6 +98,11 @@ VOCABULARY = {
     "continued": {"sr": "(наставак)", "ru": "(продолжение)", "bg": "(продължение)", "sl": "(nadaljevanje)"},
     "page": {"sr": "страна", "ru": "стр.", "bg": "стр.", "sl": "stran"},
     "contents": {"sr": "Садржај", "ru": "Содержание", "bg": "Съдържание", "sl": "Vsebina"},
+    # readings of a plan (issue 10 §2): the courses' words for a reading, a segment and the senses of rotation
+    "readings": {"sr": "очитавања", "ru": "отсчёты", "bg": "отчитания", "sl": "odčitki"},
+    "segment": {"sr": "дуж", "ru": "отрезок", "bg": "отсечка", "sl": "daljica"},
+    "cw": {"sr": "у смеру казаљке", "ru": "по часовой", "bg": "по часовника", "sl": "v smeri ure"},
+    "ccw": {"sr": "супротно казаљци", "ru": "против часовой", "bg": "обратно на часовника", "sl": "proti smeri ure"},
 }
 
 #: domain.md §9, word for word: the headings every handout carries.
