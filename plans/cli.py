@@ -67,6 +67,16 @@ def _language_argument(parser: argparse.ArgumentParser) -> None:
     )
 
 
+def _not_negative(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a positive number of mm, or 0 for exact readings, got {text!r}") from None
+    if not (math.isfinite(value) and value >= 0):
+        raise argparse.ArgumentTypeError(f"expected a positive number of mm, or 0 for exact readings, got {text!r}")
+    return value
+
+
 def _positive(text: str) -> float:
     try:
         value = float(text)
@@ -103,7 +113,9 @@ def _scale_arguments(parser: argparse.ArgumentParser) -> None:
     group.add_argument("--k-l", type=_positive, metavar="K", help="mechanism scale, m per mm of drawing")
     group.add_argument("--k-v", type=_positive, metavar="K", help="velocity plan scale, (m/s) per mm")
     group.add_argument("--k-a", type=_positive, metavar="K", help="acceleration plan scale, (m/s²) per mm")
-    group.add_argument("--precision", type=_positive, metavar="MM", help="drafting precision: round every measured length to this many mm")
+    group.add_argument("--precision", type=_not_negative, metavar="MM",
+                       help="drafting precision: round every measured length to this many mm "
+                            "(default: exact for solve, 0.1 for draw and handout; 0: exact)")
 
 
 #: Where the scene format is described, at the end of every --help.
@@ -313,7 +325,13 @@ def _number(text: str) -> float | str:
 
 
 def _construct(scene: Scene, args):
+    from dataclasses import replace
+
     from .graphical import construct
+
+    if args.precision == 0:  # exact readings, whatever the scene's [scales] say
+        scene = replace(scene, scales=replace(scene.scales, precision=None))
+        args.precision = None
 
     return construct(
         scene, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision, warn_condition=args.warn_condition
@@ -504,9 +522,12 @@ def _draw(args) -> int:
     from .analytic import solve
     from .compare import compare
     from .drawing import write_drawings
+    from .positions import at_page_precision
     from .report import sheet_table
 
     scene = _load(args)
+    scene = at_page_precision(scene, args.precision)  # a sheet prints lengths to 0.1 mm unless told
+    args.precision = None  # the scene's, set just above
     if _several(args):
         from .drawing import write_position_sheets
         from .positions import run_positions
@@ -522,7 +543,7 @@ def _draw(args) -> int:
         analytic = solve(scene, warn_condition=args.warn_condition)
         graphical = _construct(scene, args)
         comparisons = compare(analytic, graphical)
-        sheet_table_rows = sheet_table(comparisons)
+        sheet_table_rows = sheet_table(comparisons, graphical, analytic)
         _warn_solution(analytic, graphical)
         with batch():
             if _is_file(args.output):  # -o page.png: the sheet alone, in the format of the suffix

@@ -111,11 +111,12 @@ def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
     return [line for line in (first, second, third) if line]
 
 
-def _table(comparisons, lang: str) -> list[list[str]]:
+def _table(run, lang: str) -> list[list[str]]:
+    """The results table of a solved position, its slider rows named as the drawn vectors."""
     from .report import sheet_table
     from .drawing.sheet import translate_table
 
-    return translate_table(sheet_table(comparisons), lang)
+    return translate_table(sheet_table(run.comparisons, run.graphical, run.analytic), lang)
 
 
 def _equations(graphical, structure) -> list[str]:
@@ -340,14 +341,15 @@ def handout_pages(
     from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_bands, scale_line
     from .graphical import construct
     from .loops import loop_equations
-    from .positions import run_positions
+    from .positions import at_page_precision, run_positions
 
     check_language(lang)
+    scene = at_page_precision(scene, precision)  # lengths measured and printed to 0.1 mm unless told
     say = progress or (lambda text: None)
     given = {"k_l": k_l if k_l is not None else scene.scales.k_l,
              "k_v": k_v if k_v is not None else scene.scales.k_v,
              "k_a": k_a if k_a is not None else scene.scales.k_a}
-    run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=precision)
+    run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=None)
     multi = positions is not None
     data = scene_data_lines(scene, lang)
     footer = f"plans — {scene.title}"
@@ -406,7 +408,7 @@ def handout_pages(
             record.append((f"position-{r.index}", here))
         pages.append((f"position-{r.index}", fig))
         check_head = ["§" + where(r), formula]
-        checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here.comparisons, lang), footer=footer)
+        checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here, lang), footer=footer)
         for n, page in enumerate(checks):
             pages.append((f"check-{r.index}" + (f"-{n + 1}" if n else ""), page))
         if centres:  # the instant-centre page of the position (plans.drawing.centres_page)
@@ -459,7 +461,10 @@ def write_handout(
         Scale factors; by default the round values that fit every position
         on the page.
     precision : float, optional
-        Drafting precision [mm] of the graphical readings.
+        Drafting precision [mm] of the graphical readings: every length is
+        measured (and printed) to it.  Default: the scene's ``[scales]
+        precision``, else :data:`plans.positions.PAGE_PRECISION` (0.1 mm);
+        0 gives exact readings.
     components : bool
         Cycle diagrams of the x and y components of every point's v and a too.
     progress : callable, optional

@@ -384,6 +384,17 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "скорост на точка от центъра, около който се завърта звеното ѝ",
         "sl": "hitrost točke iz pola, okoli katerega se vrti njen člen",
     },
+    # readings of a plan (issue 10 §2): what a student measures and computes
+    "readings": {
+        "en": "readings",
+        "sr": "очитавања",
+        "ru": "отсчёты",
+        "bg": "отчитания",
+        "sl": "odčitki",
+    },
+    "segment": {"en": "segment", "sr": "дуж", "ru": "отрезок", "bg": "отсечка", "sl": "daljica"},
+    "cw": {"en": "cw", "sr": "у смеру казаљке", "ru": "по часовой", "bg": "по часовника", "sl": "v smeri ure"},
+    "ccw": {"en": "ccw", "sr": "супротно казаљци", "ru": "против часовой", "bg": "обратно на часовника", "sl": "proti smeri ure"},
 }
 
 

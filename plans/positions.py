@@ -54,6 +54,9 @@ __all__ = [
     "PositionRun",
     "PositionsRun",
     "run_positions",
+    "page_precision",
+    "at_page_precision",
+    "PAGE_PRECISION",
     "unsolved_positions",
     "skipped_message",
     "position_text",
@@ -506,6 +509,26 @@ def _hints_at(scene: Scene, analytic, k: int) -> dict:
         else:
             hints[name] = hint
     return hints
+
+
+#: Drafting precision [mm] of the readings on sheets and handouts (``plans draw``, ``plans handout``):
+#: a length as a student measures and prints it, so the graphical value and its error are those of the method.
+PAGE_PRECISION = 0.1
+
+
+def page_precision(given: float | None, scene) -> float | None:
+    """The drafting precision [mm] of a sheet or handout: *given*, else the scene's ``[scales] precision``,
+    else :data:`PAGE_PRECISION`; a given 0 means exact readings (None, no rounding)."""
+    if given is not None:
+        return None if given == 0 else given
+    if scene.scales.precision is not None:
+        return scene.scales.precision
+    return PAGE_PRECISION
+
+
+def at_page_precision(scene, given: float | None = None):
+    """*scene* with its ``[scales] precision`` set to :func:`page_precision` (None: exact), for a sheet or handout."""
+    return replace(scene, scales=replace(scene.scales, precision=page_precision(given, scene)))
 
 
 def run_positions(

@@ -20,7 +20,8 @@ from .scene import Crank, Scene
 from .sweep import sweep_csv
 from .structure import branches
 
-__all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table"]
+__all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table", "guide_direction",
+           "drawn_rows", "table_number"]
 
 SCHEMA_VERSION = 1
 
@@ -250,6 +251,12 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
             entry["analytic"]["coriolis"] = _vec(motion.coriolis[k], sc["acceleration"])
         if graphical is not None and name in graphical.sliders:
             entry["graphical"] = _graphical_entry(rows, "sliders", name, acc, sc)
+        entry["motion"] = {"body": prismatic.slider, "relative_to": prismatic.guide,
+                           "guide_deg": _deg(cmath.phase(guide_direction(analytic, prismatic, k)))}
+        drawn = getattr(graphical, "relative", {}).get(name) if graphical is not None else None
+        if drawn is not None:
+            entry["drawn"] = {"body": drawn["moving"], "relative_to": drawn["reference"], "sign": drawn["sign"],
+                              **{q: drawn[q] for q in ("v_rel", "a_rel", "coriolis") if q in drawn}}
         doc["sliders"][name] = entry
     branch_of = {b.group: b for b in branches(analytic, k)}
     for group in analytic.structure.groups:
@@ -276,6 +283,16 @@ def solution_json(analytic, graphical=None, comparisons: list[Comparison] | None
         if graphical.precision is not None:
             doc["scales"]["precision_mm"] = _clean(graphical.precision)
     return doc
+
+
+def guide_direction(analytic, prismatic, position: int = 0) -> complex:
+    """The unit direction u_g of a prismatic joint's guide line at a position, from the analytic body angle.
+
+    The JSON's ``v_rel``, ``a_rel`` are along it: the relative velocity vector is ``v_rel·u_g``.
+    """
+    line = analytic.scene.bodies[prismatic.guide].lines[prismatic.guide_line]
+    phi = 0.0 if prismatic.guide not in analytic.links else float(analytic.links[prismatic.guide].phi[position])
+    return cmath.exp(1j * (phi + line.angle))
 
 
 def format_json(doc: dict) -> str:
@@ -415,7 +432,7 @@ _SYMBOL = {"v": "v", "a": "a", "omega": r"\omega", "epsilon": r"\varepsilon", "v
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
-def _number(value: float, digits: int = 4) -> str:
+def table_number(value: float, digits: int = 4) -> str:
     """*value* to *digits* significant digits as printed in a table: true minus sign, no ``e`` notation.
 
     Ordinary magnitudes (1e-3 … 1e6) in positional notation (``12160``,
@@ -435,8 +452,8 @@ def _number(value: float, digits: int = 4) -> str:
 
 def _magnitude(value) -> str:
     if isinstance(value, complex):
-        return f"{_number(abs(value))} ∠ {_deg(cmath.phase(value)):.1f}°".replace("-", "−") if value != 0 else "0"
-    return _number(value)
+        return f"{table_number(abs(value))} ∠ {_deg(cmath.phase(value)):.1f}°".replace("-", "−") if value != 0 else "0"
+    return table_number(value)
 
 
 def _error(value: float) -> str:
@@ -447,28 +464,87 @@ def _error(value: float) -> str:
     return f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}".replace("-", "−")
 
 
-def sheet_table(comparisons: list[Comparison]) -> list[list[str]]:
+def _drawn_value(plan, label: str) -> complex:
+    """The plan vector *label* as measured: its measured magnitude [SI] along its drawn direction (0 when not drawn)."""
+    for v in plan.vectors if plan is not None else ():
+        if v.label == label:
+            d = v.tip - v.tail
+            return v.value * d / abs(d) if d else 0j
+    return 0j
+
+
+def drawn_rows(comparisons: list[Comparison], graphical=None, analytic=None, position: int = 0) -> list[tuple[str, Comparison]]:
+    """The compared quantities as the plans draw them: ``(vector label, comparison)``.
+
+    A point's v, a keep their rows (``"v_A"``).  A slider's v_rel, a_rel and
+    Coriolis become the vectors drawn in its equation, for the body that moves
+    relative to the other in that equation (``graphical.relative``):
+    ``v_E5E6``, ``a^r_E5E6``, ``a^k_E5E6``, as vectors: graphical the plan
+    vector as measured, analytic ``sign·v_rel·u_g`` (u_g from the analytic
+    guide angle), errors of the vector.  ω, ε keep their rows
+    (``"omega_3"``).  Without *graphical* and *analytic* the sliders keep the
+    JSON's scalars (``"v^r_E"``).
+    """
+    out: list[tuple[str, Comparison]] = []
+    prismatics = {p.name: p for p in analytic.scene.prismatics} if analytic is not None else {}
+    for row in comparisons:
+        if row.section == "points":
+            out.append((f"{row.quantity}_{row.name}", row))
+            continue
+        if row.section == "links":
+            out.append((f"{row.quantity}_{row.name}", row))
+            continue
+        drawn = graphical.relative.get(row.name) if graphical is not None else None
+        if drawn is None or row.quantity not in drawn or row.name not in prismatics:
+            out.append((f"{row.quantity}_{row.name}", row))
+            continue
+        sign = drawn["sign"]
+        plan = graphical.velocity_plan if row.quantity == "v_rel" else graphical.acceleration_plan
+        label = drawn[row.quantity]
+        g = _drawn_value(plan, label)
+        if row.quantity == "coriolis":
+            a = sign * complex(row.analytic)
+        else:
+            a = sign * float(row.analytic) * guide_direction(analytic, prismatics[row.name], position)
+        error = abs(g - a)
+        reference = row.abs_error / row.rel_error if row.rel_error > 0 and row.abs_error > 0 else abs(a)
+        out.append((label, Comparison(row.section, row.name, row.quantity, a, g, error, error / reference if reference > 0 else 0.0)))
+    return out
+
+
+def _symbol(label: str) -> str:
+    """A vector label typeset as the page layer sets equations: ``a^k_E5E6`` → ``$a^{k}_{E5E6}$``, ``omega_3`` → ``$\\omega_{3}$``."""
+    head, _, sub = label.partition("_")
+    base, _, sup = head.partition("^")
+    base = {"omega": r"\omega", "epsilon": r"\varepsilon"}.get(base, base)
+    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{sub}}}" if sub else "") + "$"
+
+
+def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, position: int = 0) -> list[list[str]]:
     """Rows of preformatted text for a sheet: header, then one row per quantity.
 
-    Vectors are written as magnitude ∠ direction; signed scalars keep their
-    sign (counter-clockwise positive for ω, ε; along the guide for vʳ, aʳ).
-    Symbols are typeset (``$v_{A}$``, ``$\\omega_{3}$``, ``$a^{k}$`` for the
-    Coriolis component); numbers have true minus signs and no ``e`` notation.
+    Vectors are written as magnitude ∠ direction; ω, ε keep their sign
+    (counter-clockwise positive).  With *graphical* and *analytic* (the
+    solutions the comparisons came from; *position* into the analytic one)
+    every slider row is the vector drawn in its equation, named as drawn
+    (``$v_{E5E6}$``, ``$a^{k}_{E5E6}$``, ``$a^{r}_{E5E6}$``, see
+    :func:`drawn_rows`), with that vector's magnitude and direction.
+    Symbols are typeset; numbers have true minus signs and no ``e`` notation.
     Quantities that both methods give as exactly zero (the Coriolis term of a
     guide that does not turn, ω of a link that only translates, a point at
     rest) are left out, as they are left off the plans.
     """
     rows = [["quantity", "graphical", "analytic", "rel. error"]]
-    for row in comparisons:
+    for label, row in drawn_rows(comparisons, graphical, analytic, position):
         if row.quantity not in PLAN_QUANTITIES:  # a sheet tabulates what is read off its plans
             continue
         if row.analytic == 0 and row.graphical == 0:
             continue
-        if row.section == "sliders":
-            label = f"${_SYMBOL[row.quantity]}$ slider {row.name} [{_UNITS[row.quantity]}]"
+        if row.section == "sliders" and label == f"{row.quantity}_{row.name}":  # without the plans: the JSON's scalar
+            text = f"${_SYMBOL[row.quantity]}$ slider {row.name} [{_UNITS[row.quantity]}]"
         else:
-            label = f"${_SYMBOL[row.quantity]}_{{{row.name}}}$ [{_UNITS[row.quantity]}]"
-        rows.append([label, _magnitude(row.graphical), _magnitude(row.analytic), _error(row.rel_error)])
+            text = f"{_symbol(label)} [{_UNITS[row.quantity]}]"
+        rows.append([text, _magnitude(row.graphical), _magnitude(row.analytic), _error(row.rel_error)])
     return rows
 
 

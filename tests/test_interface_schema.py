@@ -26,6 +26,8 @@ LINK_GRAPHICAL = ["omega", "omega_abs_error", "omega_rel_error", "epsilon", "eps
 SLIDER_ANALYTIC = ["s", "v_rel", "a_rel", "coriolis"]
 SLIDER_GRAPHICAL = ["s", "s_abs_error", "s_rel_error", "v_rel", "v_rel_abs_error", "v_rel_rel_error",
                     "a_rel", "a_rel_abs_error", "a_rel_rel_error", "coriolis", "coriolis_abs_error", "coriolis_rel_error"]
+SLIDER_MOTION = ["body", "relative_to", "guide_deg"]
+SLIDER_DRAWN = ["body", "relative_to", "sign", "v_rel", "a_rel", "coriolis"]
 GROUP = ["kind", "links", "joint", "condition", "expected_rel_error", "analytic_sine", "sine", "graphical_condition", "branch"]
 BRANCH = ["sign", "words", "other_assembly", "chosen_by"]
 WARNING = ["group", "joint", "where", "condition", "sine", "expected_rel_error", "method", "message"]
@@ -57,7 +59,9 @@ def test_the_whole_schema_has_exactly_the_golden_keys(capsys):
     assert list(doc["centres"]) == CENTRES
     assert all(list(c) == CENTRE for c in doc["centres"]["list"])
     for entry in doc["sliders"].values():
+        assert list(entry) == ["analytic", "graphical", "motion", "drawn"]
         assert list(entry["analytic"]) == SLIDER_ANALYTIC and list(entry["graphical"]) == SLIDER_GRAPHICAL
+        assert list(entry["motion"]) == SLIDER_MOTION and list(entry["drawn"]) == SLIDER_DRAWN
     for entry in doc["groups"].values():
         assert list(entry) == GROUP and list(entry["branch"]) == BRANCH
     assert list(doc["scales"]) == SCALES
@@ -89,7 +93,7 @@ def test_every_golden_key_is_documented_in_the_readme():
     schema = schema[: schema.index("The sweep CSV")]
     documented = set(re.findall(r'"([a-z_]+)"', schema))
     golden = set(TOP + CRANK + LINEAR + GROUP + BRANCH + WARNING + SCALES + ["analytic", "graphical", "precision_mm"]
-                 + POINT_ANALYTIC + LINK_ANALYTIC + SLIDER_ANALYTIC)
+                 + POINT_ANALYTIC + LINK_ANALYTIC + SLIDER_ANALYTIC + ["motion", "drawn"] + SLIDER_MOTION + SLIDER_DRAWN)
     assert golden - documented == set()
     for suffix in ("_abs_error", "_rel_error"):
         assert suffix in schema

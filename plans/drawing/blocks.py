@@ -9,19 +9,23 @@ Data flows one way: solved results → blocks (this module) → page layout
 * :func:`rows_block` — a stack of text lines (headings, equations);
 * :func:`table_block` — a table with a heading and rules;
 * :func:`legend_block` — one legend for both plans;
+* :func:`plan_readings`, :func:`readings_block` — what a student measures on each plan and
+  computes from it: segment, length as printed, × scale factor (÷ link length) = value;
 * :func:`pretty_equation`, :func:`break_math`, :func:`text_rows` — the lines of
   vector and loop equations, typeset and broken to a width.
 """
 
 from __future__ import annotations
 
+import math
 import re
 
 from ..graphical.plan import KINDS
-from .._text import user_text
+from ..i18n import term
+from .._text import decimal_comma, user_text
 from ._canvas import Sketch, text_size
 from .mechanism import draw_mechanism
-from .plan_drawing import draw_plan, legend_row, legend_words, vectors_drawn
+from .plan_drawing import SAME_MM, draw_plan, end_letters, image_text, legend_row, legend_words, vectors_drawn
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 from .typeset import draw_text, measure
 
@@ -31,6 +35,10 @@ __all__ = [
     "rows_block",
     "table_block",
     "legend_block",
+    "plan_readings",
+    "readings_block",
+    "printed_length",
+    "READINGS_PT",
     "pretty_equation",
     "break_math",
     "text_rows",
@@ -39,6 +47,10 @@ __all__ = [
 ]
 
 TABLE_PT = SMALL_PT + 0.5
+#: text size [pt] of the readings tables
+READINGS_PT = SMALL_PT
+#: the smallest size a readings table is set at to stand beside the other one
+READINGS_MIN_PT = 6.0
 #: a line of an equation is set at most this much smaller before it is wrapped inside a term
 MIN_SHRINK = 0.8
 CONTINUED = "…"
@@ -111,15 +123,16 @@ def _numeric(cell: str) -> bool:
     return bool(re.match(r"^\s*[+\-−]?[0-9.]", cell))
 
 
-def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT) -> Block:
+def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT, heading_size: float = HEADING_PT, pad: float = 2.0,
+                row_gap: float | None = None) -> Block:
     """A table: *heading*, a rule, the header row (bold), a rule, the rows, a rule; numbers right-aligned."""
     columns = max(len(r) for r in table)
     rows = [list(r) + [""] * (columns - len(r)) for r in table]
-    pad = 2.0
     widths = [max(measure(r[c], size, "bold" if i == 0 else "normal")[0] for i, r in enumerate(rows)) + 2 * pad for c in range(columns)]
-    row_h = text_size("lp", size)[1] * 1.1 + 1.6 * size / TABLE_PT  # a subscript (v_A) drops into the padding
-    heading_h = text_size("lp", HEADING_PT)[1] + 2.0
-    width = max(sum(widths), text_size(heading, HEADING_PT, "bold")[0])
+    # a subscript (v_A) drops into the padding: *row_gap* [mm] (by default 1.6 mm at TABLE_PT, in proportion)
+    row_h = text_size("lp", size)[1] * 1.1 + (1.6 * size / TABLE_PT if row_gap is None else row_gap)
+    heading_h = text_size("lp", heading_size)[1] + (2.0 if row_gap is None else 1.2)
+    width = max(sum(widths), measure(heading, heading_size, "bold")[0])
     height = heading_h + row_h * len(rows) + 1.0
 
     # a column of numbers is right-aligned, its header too
@@ -131,7 +144,7 @@ def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT) ->
 
     def place(sketch: Sketch, x: float, y: float, page) -> None:
         top = y + height
-        draw_text(sketch, complex(x, top - heading_h / 2), heading, size=HEADING_PT, weight="bold", gid="table-heading")
+        draw_text(sketch, complex(x, top - heading_h / 2), heading, size=heading_size, weight="bold", gid="table-heading")
         top -= heading_h
         sketch.line([complex(x, top), complex(x + width, top)], lw=0.9, gid="table-rule", obstacle=False)
         for i, row in enumerate(rows):
@@ -178,6 +191,151 @@ def legend_block(graphical, lang: str, columns: int = 1) -> Block:
             legend_row(sketch, kind, text, x + c * column_w, y + height - row_h * (r + 0.5), text_gid="legend-text")
 
     return Block(width, height, place, kind="legend")
+
+
+# --- readings: what is measured on a plan and what it gives ------------------------------------
+
+_UNIT = {"velocity": "m/s", "acceleration": "m/s²"}
+_RATE = {"velocity": ("omega", r"\omega", "rad/s"), "acceleration": ("epsilon", r"\varepsilon", "rad/s²")}
+
+
+def printed_length(length: float, precision: float | None) -> str:
+    """A measured length [mm] as a sheet prints it: to the drafting precision's decimals (0.1 mm: ``"59.2"``),
+    to 0.001 mm when readings are exact (no precision)."""
+    decimals = 3 if precision is None else max(0, math.ceil(-math.log10(precision) - 1e-9))
+    return f"{abs(length):.{decimals}f}"
+
+
+def _vector_symbol(label: str) -> str:
+    head, _, sub = label.partition("_")
+    base, _, sup = head.partition("^")
+    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{sub}}}" if sub else "") + "$"
+
+
+def _segment(plan, v, ends: dict) -> str:
+    """The segment a vector is measured as, from the letters of its ends: ``pa``, ``π a′``, ``n₁ c′``, ``e₆ e₅``."""
+    sub = v.label.partition("_")[2]
+
+    def letter(z: complex, tail: bool) -> str:
+        here = [name for name, w in plan.images.items() if abs(w - z) <= SAME_MM]
+        named = [name for name in here if name.rstrip("′").upper() in sub]
+        if named:
+            return max(named, key=len)
+        for label, (at, text) in ends.items():
+            if abs(at - z) <= SAME_MM:
+                return text
+        if abs(z) <= SAME_MM:
+            return plan.pole
+        return here[0] if here else "?"
+
+    a, b = image_text(letter(complex(v.tail), True)), image_text(letter(complex(v.tip), False))
+    return a + b if (a + b).isascii() and len(a) == 1 and len(b) == 1 else f"{a} {b}"
+
+
+def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
+    """The readings table of one plan (*kind* ``"velocity"`` or ``"acceleration"``): header, then one row per value.
+
+    Columns: the quantity, the segment measured (``pa``, ``n₁ c′``), its
+    length [mm] as printed (to the drafting precision), × the scale factor,
+    ÷ the link length [m] (ω, ε only), and = the value, which is exactly
+    what the results table calls graphical: point velocities
+    (accelerations), the drawn relative vectors of sliders, then ω (ε) of the
+    links with the sense.  Values to 4 significant digits.
+    """
+    from ..report import table_number
+
+    plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
+    if plan is None:
+        return []
+    k = plan.scale
+    key = "k_v" if kind == "velocity" else "k_a"
+    drawn = vectors_drawn(plan)
+    ends = {label: (complex(next(v.tip for v in drawn if v.label == label)), text) for label, text in end_letters(drawn).items()}
+    by_label = {v.label: v for v in plan.vectors}
+    precision = graphical.precision
+    unit = _UNIT[kind]
+    rows = [["", term("segment", lang), "mm", f"× ${key[0]}_{{{key[2]}}}$  (÷ l [m])", "="]]
+
+    def row(symbol: str, v, divide: float | None = None, sense: float | None = None) -> list[str]:
+        length = v.value / k if v is not None else 0.0
+        segment = _segment(plan, v, ends) if v is not None else "—"
+        value = (v.value if v is not None else 0.0) / (divide or 1.0)
+        if sense is not None:  # ω, ε: the magnitude measured, the sense seen on the plan
+            value = math.copysign(value, sense)
+            rate_unit = _RATE[kind][2]
+            words = "" if value == 0 else " " + term("ccw" if value > 0 else "cw", lang)
+            text = f"{table_number(abs(value))} {rate_unit}{words}"
+        else:
+            text = f"{table_number(value)} {unit}"
+        factor = f"× {fmt(k)}" + ("" if divide is None else f"  ÷ {table_number(divide)}")
+        return [symbol, segment, printed_length(length, precision), factor, text]
+
+    from ._canvas import fmt_number as fmt
+
+    symbol = "v" if kind == "velocity" else "a"
+    for name in graphical.scene.report:
+        label = f"{symbol}_{name}"
+        v = by_label.get(label)
+        if v is not None:
+            rows.append(row(_vector_symbol(label), v))
+    for name, entry in getattr(graphical, "relative", {}).items():
+        for q in (("v_rel",) if kind == "velocity" else ("coriolis", "a_rel")):
+            label = entry.get(q)
+            v = by_label.get(label) if label else None
+            if v is not None:
+                rows.append(row(_vector_symbol(label), v))
+    rate, tex, _ = _RATE[kind]
+    shared: dict[tuple, list[str]] = {}
+    for link, entry in getattr(graphical, "rotations", {}).items():
+        if rate in entry:
+            shared.setdefault(entry[rate], []).append(link)
+    for (label, segment, length), links in shared.items():
+        v = by_label.get(label)
+        symbol_text = "$" + " = ".join(f"{tex}_{{{link}}}" for link in links) + "$"
+        r = row(symbol_text, v, divide=length, sense=graphical.links[links[0]][rate])
+        r[3] += f" ({segment})"
+        rows.append(r)
+    if len(rows) == 1:
+        return []
+    return [[decimal_comma(cell, lang) for cell in r] for r in rows]
+
+
+def readings_block(graphical, lang: str = "en", *, size: float = READINGS_PT, width: float | None = None) -> Block | None:
+    """The readings tables of both plans (:func:`plan_readings`), side by side, or one above the other
+    when side by side they are wider than *width* [mm]; None when there is nothing to read."""
+    from ..i18n import term as words
+
+    contents = []
+    for kind in ("velocity", "acceleration"):
+        rows = plan_readings(graphical, kind, lang)
+        if rows:
+            heading = f"{words('velocity_plan' if kind == 'velocity' else 'acceleration_plan', lang)}: {words('readings', lang)}"
+            contents.append((rows, heading))
+    if not contents:
+        return None
+    gap = 5.0
+    # the given size, or smaller down to READINGS_MIN_PT, so that the two tables stand side by side in *width*
+    for pt in [size] + [p for p in (size - 0.5, size - 1.0, size - 1.5) if p >= READINGS_MIN_PT]:
+        tables = [table_block(rows, heading, size=pt, heading_size=pt + 1.0, pad=1.4, row_gap=0.9) for rows, heading in contents]
+        side = sum(t.width for t in tables) + gap * (len(tables) - 1)
+        across = width is None or side <= width
+        if across:
+            break
+    w = side if across else max(t.width for t in tables)
+    h = max(t.height for t in tables) if across else sum(t.height for t in tables) + gap * (len(tables) - 1)
+
+    def place(sketch: Sketch, x: float, y: float, page) -> None:
+        if across:
+            for t in tables:
+                t.place(sketch, x, y + h - t.height, page)
+                x += t.width + gap
+        else:
+            top = y + h
+            for t in tables:
+                t.place(sketch, x, top - t.height, page)
+                top -= t.height + gap
+
+    return Block(w, h, place, kind="readings")
 
 
 # --- equations as text ------------------------------------------------------------------

@@ -15,7 +15,7 @@ from .._files import replace_all
 from .._text import decimal_comma, user_text
 from ..i18n import term
 from ._canvas import Sketch
-from .blocks import drawing_block, pretty_equation, rows_block, table_block
+from .blocks import drawing_block, pretty_equation, readings_block, rows_block, table_block
 from .layout import choose_page
 from .style import HEADING_PT, TITLE_PT
 from .svg import drawing_rc, new_figure, render_svg
@@ -121,7 +121,8 @@ def draw_sheet(
         arrangements = [[drawings]]
         if len(drawings) > 1:
             arrangements.append([[drawings[0]], drawings[1:]])
-        texts = [b for b in (eq_block, table_block_) if b is not None]
+        readings = readings_block(solution, lang)  # what is measured on each plan and what it gives (issue 10 §2)
+        texts = [b for b in (eq_block, readings, table_block_) if b is not None]
         best = None
         for rows in arrangements:
             row_w = max(sum(b.width for b in row) + GAP * (len(row) - 1) for row in rows)

@@ -24,7 +24,7 @@ from .._files import replace_all
 from .._text import decimal_comma, user_text
 from ..i18n import term
 from ._canvas import Sketch, fit_axes, fmt_number
-from .blocks import Block, drawing_block, legend_block, pretty_equation, rows_block, table_block, text_rows
+from .blocks import Block, drawing_block, legend_block, pretty_equation, readings_block, rows_block, table_block, text_rows
 from .layout import A4, GAP, PAGE_MARGIN, header, header_height, new_page, place_in_box
 from .sheet import draw_sheet, sheet_equations
 from .style import HEADING_PT, MARGIN_MM, SMALL_PT
@@ -48,6 +48,8 @@ TEXT_PT = 8.0  # equations on a handout page (their exponents ≥ 6 pt, see plan
 LINE_GAP = 0.7  # mm between the lines of a text block on a page
 #: a drawing may run this far [mm] past its box (into the gap between boxes) before it is drawn again smaller
 BOX_TOLERANCE = 2.5
+#: text size [pt] of the readings tables on a check page
+READINGS_PAGE_PT = 7.0
 #: text sizes [pt] tried on a check page, largest first, so that the table and the loop equations share one page
 CHECK_PT = (8.0, 7.6, 7.2, 6.8)
 
@@ -66,7 +68,7 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
     return draw_sheet(
         run.graphical,
         formula=run.analytic.structure.formula,
-        table=sheet_table(run.comparisons),
+        table=sheet_table(run.comparisons, run.graphical, run.analytic),
         lang=lang,
         title=_position_title(run, total or run.index + 1, lang),
     )
@@ -205,7 +207,11 @@ def draw_check_pages(
     table: list[list[str]] | None = None,
     footer: str = "",
 ) -> list:
-    """The analytic pages of a position, A4 portrait: the results table, then the loop equations.
+    """The analytic pages of a position, A4 portrait: the readings of both plans, the results table, then the loop equations.
+
+    The readings (:func:`plans.drawing.blocks.readings_block`) say what is
+    measured on each plan of the position page before and what it gives: the
+    graphical column of the results table, recomputable from them.
 
     Usually one page; the equations of a long chain of groups continue on
     further pages (never a group's heading alone at the foot of a page).
@@ -233,9 +239,12 @@ def draw_check_pages(
         loop_lines.extend(decimal_comma(line, lang) for line in block.lines)
     cells = [[decimal_comma(cell, lang) for cell in row] for row in table] if table else None
     with drawing_rc():
+        readings = readings_block(run.graphical, lang, size=READINGS_PAGE_PT, width=width) if run.graphical is not None else None
         # the smallest text that puts everything on one page, down to CHECK_MIN_PT; else continued pages at TEXT_PT
         rows = text_rows(heading, loop_lines, width, TEXT_PT) if loop_lines else []
         room = size[1] - header_height([decimal_comma(line, lang) for line in header_lines]) - (PAGE_MARGIN + 4.0)
+        if readings is not None:
+            room -= readings.height + GAP
         for pt in CHECK_PT:
             table_h = table_block(cells, term("results", lang), size=pt - 0.4).height + GAP if cells else 0.0
             trial = text_rows(heading, loop_lines, width, pt) if loop_lines else []
@@ -250,6 +259,9 @@ def draw_check_pages(
             fig, sketch = new_page(size)
             top = header(sketch, size, title or run.scene.title, [decimal_comma(line, lang) for line in header_lines])
             bottom = PAGE_MARGIN + 4.0
+            if first and readings is not None:
+                readings.place(sketch, PAGE_MARGIN, top - readings.height, size)
+                top -= readings.height + GAP
             if first and table:
                 block = table_block(cells, term("results", lang), size=table_pt)
                 block.place(sketch, PAGE_MARGIN, top - block.height, size)

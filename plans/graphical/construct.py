@@ -183,6 +183,7 @@ def construct(
             entry["a"] = _read(acceleration_plan.images.get(a_label.get(name), 0j), k_a, precision)
         points[name] = entry
     links, sliders = ctx.readings(k_l, k_v, k_a, precision)
+    relative, rotations = ctx.read_from()
     crank = isinstance(scene.driver, Crank)
     position = scene.driver.phi if crank else scene.driver.s
     warnings = tuple(
@@ -207,6 +208,8 @@ def construct(
         sines=dict(ctx.sines),
         conditions=dict(ctx.conditions),
         warnings=warnings,
+        relative=relative,
+        rotations=rotations,
     )
     if check_scales and given:
         sizes = figure_sizes(solution)

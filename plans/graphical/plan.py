@@ -192,6 +192,20 @@ class GraphicalSolution(_Drawable):
         intersections of construction lines (see :mod:`plans.limits`).
     warnings : tuple[plans.limits.NearDeadCentre, ...]
         Groups whose condition exceeds the construction's ``warn_condition``.
+    relative : dict[str, dict]
+        Prismatic joint name -> how its relative motion is drawn:
+        ``{"moving": body, "reference": body, "sign": ±1, "v_rel": "v_E5E6",
+        "a_rel": "a^r_E5E6", "coriolis": "a^k_E5E6"}``: the plan vectors
+        (labels) are the motion of ``moving`` relative to ``reference``;
+        ``sign`` is +1 when that is the slider relative to its guide (the
+        convention of :attr:`sliders`), −1 when it is the guide relative to
+        the slider (each drawn vector is then −1 × the slider's).
+    rotations : dict[str, dict[str, tuple[str, str, float]]]
+        Link name -> ``{"omega": (vector label, segment, length [m]),
+        "epsilon": …}``: the plan vector whose length gives ω (ε) of the link,
+        ω = |vector| × k_v / length, and the segment of the mechanism it is
+        perpendicular to (``"BC"``).  Links that turn with another share its
+        entry; a driver's given ω has none.
     """
 
     scene: object
@@ -207,6 +221,8 @@ class GraphicalSolution(_Drawable):
     sines: dict[str, float] = field(default_factory=dict)
     conditions: dict[str, float] = field(default_factory=dict)
     warnings: tuple = ()
+    relative: dict[str, dict] = field(default_factory=dict)
+    rotations: dict[str, dict[str, tuple[str, str, float]]] = field(default_factory=dict)
 
     def sheet(self, *, lang: str = "en"):
         """The one-page sheet (mechanism, both plans, vector equations) as a matplotlib Figure."""

@@ -348,6 +348,38 @@ class Construction:
             sliders[name] = entry
         return links, sliders
 
+    def read_from(self) -> tuple[dict[str, dict], dict[str, dict[str, tuple[str, str, float]]]]:
+        """How each prismatic joint's relative motion is drawn, and which plan vector gives each link's ω, ε.
+
+        Returns ``(relative, rotations)`` as :class:`~plans.graphical.plan.GraphicalSolution` documents them.
+        """
+        relative: dict[str, dict] = {}
+        for name, sl in self.sliding.items():
+            p = sl.prismatic
+            moving, reference = (p.slider, p.guide) if sl.sign > 0 else (p.guide, p.slider)
+            entry: dict = {"moving": moving, "reference": reference, "sign": sl.sign}
+            if sl.v_rel is not None:
+                relative_name = sl.v_rel.label.partition("_")[2]
+                entry["v_rel"] = sl.v_rel.label
+                if self.acceleration is not None:
+                    entry["a_rel"] = f"a^r_{relative_name}"
+                    entry["coriolis"] = f"a^k_{relative_name}"
+            relative[name] = entry
+        rotations: dict[str, dict[str, tuple[str, str, float]]] = {}
+        for body in self.scene.links:
+            root = body
+            while root in self.turns_with:
+                root = self.turns_with[root]
+            if root in self.given:
+                continue
+            entry = {}
+            for quantity, source in (("omega", self.omega_from.get(root)), ("epsilon", self.epsilon_from.get(root))):
+                if source is not None and (quantity == "omega" or self.acceleration is not None):
+                    entry[quantity] = (source.vec.label, source.vec.label.partition("_")[2], abs(source.tip - source.tail))
+            if entry:
+                rotations[body] = entry
+        return relative, rotations
+
     def travel(self, prismatic: Prismatic, k_l: float, precision: float | None) -> float:
         """Relative travel s = (Q_s − Q_g)·u_g [m], measured on the mechanism drawing at *k_l*."""
         q_s, _ = self.line(self.scene.line(f"{prismatic.slider}.{prismatic.slider_line}"))
