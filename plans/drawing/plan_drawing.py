@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 
 from shapely.geometry import MultiPoint
+from shapely.geometry import Polygon as ShapelyPolygon
 
 from .._text import SUBSCRIPT
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
@@ -56,6 +57,10 @@ SHORT_MM = 1.0
 #: A component lying along an absolute vector is drawn this far beside it [mm],
 #: with thin ticks to its true ends, so that it can be seen.
 BESIDE_MM = 1.2
+#: A vector from the pole along a longer absolute vector from the pole (six-bar
+#: π→m′ on π→a′, quick-return v_A4C = p→a₄ on p→d) is drawn on it, as the
+#: textbook draws it: its head stands on that shaft with a white rim this wide [pt].
+HALO_PT = 1.2
 #: A label set further than this from its point [mm] gets a leader line.
 LEADER_FROM_MM = 2.0
 #: Label gaps [mm] tried in turn on a plan (the far ones with a leader line).
@@ -217,6 +222,16 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             color, lw, dashes, head = VECTOR_STYLE[kind]
             z = 3.0 if kind == "absolute" else 2.5
             tail, tip = complex(v.tail), complex(v.tip)
+            along = _along(v, absolute)
+            if along is not None:
+                # its shaft lies under the longer vector's; its head, full size, stands
+                # out on that shaft within a white rim
+                size = _head(max(head, VECTOR_STYLE["absolute"][3]), lw, v.length)
+                _, head_artist = sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=size, gid=f"{kind}-{v.label}", zorder=2.4)
+                head_artist.set_zorder(3.6)
+                rim = ShapelyPolygon(head_artist.get_xy()[:3]).buffer(HALO_PT * MM_PER_PT, join_style=2)
+                sketch.polygon([complex(x, y) for x, y in list(rim.exterior.coords)[:-1]], fc="white", ec="none", lw=0, gid=f"{kind}-{v.label}-rim", zorder=3.5, obstacle=False)
+                continue
             if kind != "absolute":
                 shift = _beside(tail, tip, absolute)
                 if shift:
@@ -293,6 +308,20 @@ def _beside(tail: complex, tip: complex, absolute) -> complex:
                 worst = min(o.imag * side for o in off)
                 return u * 1j * side * (BESIDE_MM - worst)
     return 0j
+
+
+def _along(v, absolute):
+    """The longer absolute vector from the pole that *v* (also from the pole) lies on, or None."""
+    if abs(v.tail) > SAME_MM:
+        return None
+    for w in absolute:
+        if w is v or abs(w.tail) > SAME_MM or w.length <= v.length + SAME_MM:
+            continue
+        u = unit(w.tip - w.tail)
+        off = (v.tip - w.tail) * u.conjugate()
+        if off.real > 0 and abs(off.imag) < BESIDE_MM:
+            return w
+    return None
 
 
 def _at(z: complex, w: complex) -> bool:
