@@ -73,3 +73,19 @@ def test_quick_return_relative_along_pd_is_drawn_on_it_not_beside(quick_return):
         assert _off_line(complex(x, y), d.tail, d.tip) <= half  # under the thick shaft, not a line beside it
     assert not [a for a in artists if a.get_gid() == "vel-relative-v_A4C-tick"]
     _head_stands_out(artists, "vel-relative-v_A4C-head", "vel-absolute-v_D")
+
+
+def test_linear_arm_short_normal_components_are_points_with_notes():
+    # finding 13: aⁿ_F4D (2.6 mm) and aⁿ_HQ (2.3 mm) were drawn as arrows with heads under 1 mm
+    # and no note, while the six-bar's 0.19 mm aⁿ_CA had one: the same rule applies to both
+    plan = construct(load(example_path("linear-arm"))).acceleration_plan
+    short = [v for v in plan.vectors if v.kind == "normal" and 0 < v.length < 3.0]
+    assert {v.label for v in short} == {"a^n_F4D", "a^n_HQ"}
+    artists = draw_plan(plan)
+    gids = {a.get_gid() for a in artists}
+    for v in short:
+        gid = v.label.replace("^", "_")
+        assert f"acc-normal-{gid}" not in gids and f"acc-normal-{gid}-head" not in gids
+        note = _by_gid(artists, f"acc-short-{gid}").get_text()
+        assert f"{v.length:.2f} mm" in note
+        assert f"acc-end-{gid}" in gids  # its end is still lettered (n₁, n₂)

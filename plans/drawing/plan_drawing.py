@@ -51,9 +51,12 @@ __all__ = [
 
 #: A vector shorter than this [mm] is not drawn (it has no direction to show).
 ZERO_MM = 1e-6
-#: A vector shorter than this [mm] is too short for an arrow: its end is marked
-#: as a labelled point and a note under the plan gives its length.
-SHORT_MM = 1.0
+#: A vector shorter than this [mm] is too short for an arrow (its head, at most
+#: a third of it, would be under 1 mm: linear-arm aⁿ of 2.3 and 2.6 mm): its end
+#: is marked as a labelled point and a note under the plan gives its length.
+SHORT_MM = 3.0
+#: The end of a short vector this close [mm] to an image shares its label ("a′, n₁").
+JOIN_MM = 1.0
 #: A component lying along an absolute vector is drawn this far beside it [mm],
 #: with thin ticks to its true ends, so that it can be seen.
 BESIDE_MM = 1.2
@@ -271,7 +274,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
         join(z, (image_text(name), f"image-{name}"), SAME_MM)
     for z, letter, label in ends:
         # an end a short component away from an image shares its label ("a′, n₁")
-        join(z, (letter, f"end-{label}"), SHORT_MM if any(v.label == label for v in shorts) else SAME_MM)
+        join(z, (letter, f"end-{label}"), JOIN_MM if any(v.label == label for v in shorts) else SAME_MM)
     for at, pieces in groups:
         away = 0j
         for v in vectors:
