@@ -89,3 +89,44 @@ def test_linear_arm_short_normal_components_are_points_with_notes():
         note = _by_gid(artists, f"acc-short-{gid}").get_text()
         assert f"{v.length:.2f} mm" in note
         assert f"acc-end-{gid}" in gids  # its end is still lettered (n₁, n₂)
+
+
+def test_six_bar_crowded_abc_is_drawn_again_enlarged_in_a_detail(six_bar):
+    # finding 11: a, b, c within ~8 mm; the heads of p→b and p→c overlap on the plan
+    plan = six_bar.velocity_plan
+    im = plan.images
+    assert abs(im["b"] - im["c"]) < 3.0 and max(abs(im[x] - im[y]) for x, y in ("ab", "ac", "bc")) < 8.0
+    artists = draw_plan(plan)
+    dots = {n: complex(*_by_gid(artists, f"vel-detail-dot-{n}").center) for n in "abc"}
+    # the detail is similar to the plan's a b c, enlarged by a drafting ratio
+    ratio = abs(dots["a"] - dots["c"]) / abs(im["a"] - im["c"])
+    assert ratio in [pytest.approx(k) for k in (2, 2.5, 4, 5, 10)]
+    for x, y in ("ab", "bc"):
+        assert (dots[y] - dots[x]) == pytest.approx((im[y] - im[x]) * ratio, abs=1e-6)
+    assert abs(dots["b"] - dots["c"]) >= 7.0
+    name = _by_gid(artists, "vel-detail-name").get_text()
+    assert f"{ratio:g} : 1" in name
+    # the heads of p→b and p→c in the detail stand apart, each at its image
+    heads = {n: Polygon(_by_gid(artists, f"vel-detail-v_{n.upper()}-head").get_xy()[:3]) for n in "bc"}
+    assert heads["b"].distance(heads["c"]) > 0.5
+    for n in "bc":
+        tip = complex(*_by_gid(artists, f"vel-detail-v_{n.upper()}-head").get_xy()[0])
+        assert tip == pytest.approx(dots[n], abs=1e-6)
+    # every image in the detail carries its letter
+    for n in "abc":
+        assert _by_gid(artists, f"vel-detail-image-{n}").get_text() == n
+
+
+def test_heads_in_the_detail_are_slender_and_a_third_of_their_drawn_shaft_at_most(six_bar):
+    artists = draw_plan(six_bar.velocity_plan)
+    heads = [a for a in artists if (a.get_gid() or "").startswith("vel-detail-v_") and a.get_gid().endswith("-head")]
+    assert heads
+    for head in heads:
+        shaft = _by_gid(artists, head.get_gid().removesuffix("-head"))
+        tip, p1, p2 = (complex(*xy) for xy in head.get_xy()[:3])
+        (x0, x1), (y0, y1) = shaft.get_data()[0][:2], shaft.get_data()[1][:2]
+        drawn = abs(tip - complex(x0, y0))
+        length = abs(tip - (p1 + p2) / 2)
+        assert length <= drawn / 3 + 1e-9
+        if drawn >= 10.0:
+            assert length / abs(p1 - p2) == pytest.approx(3.0, rel=0.05)

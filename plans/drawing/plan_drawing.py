@@ -14,9 +14,10 @@ first vertex is the tip), ``relative-…``, ``normal-…``, ``tangential-…``,
 
 from __future__ import annotations
 
+import cmath
 import math
 
-from shapely.geometry import MultiPoint
+from shapely.geometry import MultiPoint, Point
 from shapely.geometry import Polygon as ShapelyPolygon
 
 from .._text import SUBSCRIPT
@@ -73,6 +74,19 @@ SAME_MM = 1e-3
 #: How far a construction line runs past the intersection and behind its start [mm].
 PAST_MM = 7.0
 BEHIND_MM = 3.0
+
+#: A link whose images all lie within this span [mm] crowds: its arrowheads
+#: overlap and its figure cannot be read (six-bar a b c), so it is drawn again,
+#: enlarged, in a detail beside the plan.
+CROWD_MM = 8.0
+#: The detail enlarges the crowd to about this span [mm]...
+DETAIL_SPAN_MM = 28.0
+#: ...and its two closest images to at least this distance [mm] (two full heads apart)...
+DETAIL_APART_MM = 7.0
+#: ...by the first of these drafting ratios (n : 1) that does both.
+DETAIL_RATIOS = (2, 2.5, 4, 5, 10)
+#: The detail's name on the plan and over the detail (a drafting detail numeral).
+DETAIL_NAME = "I"
 
 _UNITS = {"velocity": ("k_v", "(m/s)/mm"), "acceleration": ("k_a", "(m/s²)/mm")}
 
@@ -283,8 +297,102 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
                     away -= unit(other - end)
         place_label(sketch, at, pieces, size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
 
+    for index, crowd in enumerate(_crowds(plan, images)):
+        _detail(sketch, plan, vectors, images, crowd, index)
+
     if caption:
         _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label)) for v in shorts])
+
+
+def _crowds(plan, images: dict) -> list[list[str]]:
+    """The images of each link that crowd (3 or more distinct images within :data:`CROWD_MM`)."""
+    out = []
+    for link, labels in getattr(plan, "links", {}).items():
+        names: list[str] = []
+        for label in labels:
+            z = images.get(label)
+            if z is not None and all(abs(z - images[n]) > SAME_MM for n in names):
+                names.append(label)
+        pts = [images[n] for n in names]
+        if len(pts) >= 3:
+            span = max(abs(q - r) for q in pts for r in pts)
+            if 0.5 < span < CROWD_MM and not any(set(names) <= set(c) for c in out):
+                out.append(names)
+    return out
+
+
+def _clip(a: complex, b: complex, centre: complex, r: float):
+    """The part of segment a–b inside the circle (centre, r), as (a′, b′), or None."""
+    d = b - a
+    f = a - centre
+    qa = (d * d.conjugate()).real
+    if qa <= 0:
+        return None
+    qb = 2 * (f * d.conjugate()).real
+    qc = (f * f.conjugate()).real - r * r
+    disc = qb * qb - 4 * qa * qc
+    if disc <= 0:
+        return None
+    root = math.sqrt(disc)
+    t0, t1 = max(0.0, (-qb - root) / (2 * qa)), min(1.0, (-qb + root) / (2 * qa))
+    if t1 - t0 <= 1e-9:
+        return None
+    return a + d * t0, a + d * t1
+
+
+def _detail(sketch: Sketch, plan, vectors, images: dict, names: list[str], index: int) -> None:
+    """Crowded images drawn again, enlarged n : 1, in a circle beside the plan (a drafting detail).
+
+    The crowd is ringed on the plan and named; the detail repeats every vector
+    (the part inside the ring), the link's figure, the image points and their
+    labels, so that the figure (a b c) and the heads can be read.  Gids:
+    ``detail-ring``, ``detail``, ``detail-<vector>`` (shaft, ``-head``),
+    ``detail-figure``, ``detail-image-<name>``, ``detail-name``.
+    """
+    pts = [images[n] for n in names]
+    centre = sum(pts) / len(pts)
+    r = max(abs(q - centre) for q in pts) + 1.6
+    closest = min(abs(q - w) for i, q in enumerate(pts) for w in pts[:i])
+    ratio = next((k for k in DETAIL_RATIOS if 2 * r * k >= DETAIL_SPAN_MM and closest * k >= DETAIL_APART_MM), DETAIL_RATIOS[-1])
+    big = r * ratio
+    name = DETAIL_NAME + ("I" * index)
+    edge, lw, fill = FIGURE_STYLE
+    sketch.circle(centre, r, fc="none", ec=edge, lw=0.5, gid="detail-ring", zorder=1.2, obstacle=False)
+    sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
+    place_label(sketch, centre + r * cmath.exp(1j * math.pi / 4), [(name, "detail-mark")], size=LABEL_PT, gaps=(0.4, 1.2, 2.4, 4.0), leader_from=3.0)
+
+    # where: beside the plan, to the right of it (or below), level with the crowd
+    b = sketch.bounds
+    spots = [complex(b.xmax + 6.0 + big, centre.imag), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
+    inside = [o for o in sketch.obstacles]
+    at = next((c for c in spots if not any(Point(c.real, c.imag).buffer(big + 2.0).intersects(o) for o in inside)), spots[0])
+
+    def f(z: complex) -> complex:
+        return at + (z - centre) * ratio
+
+    sketch.circle(at, big, fc="none", ec=edge, lw=0.6, gid="detail", zorder=1.2, obstacle=False)
+    sketch.bounds.add_box(at.real - big, at.imag - big, at.real + big, at.imag + big)
+    sketch.obstacles.append(Point(at.real, at.imag).buffer(big).exterior.buffer(0.3))
+    figure = [f(images[n]) for n in names]
+    hull = MultiPoint([(q.real, q.imag) for q in figure]).convex_hull
+    if hull.geom_type == "Polygon":
+        sketch.polygon([complex(x, y) for x, y in list(hull.exterior.coords)[:-1]], fc=fill, ec=edge, lw=lw, gid="detail-figure", zorder=0.8)
+    for v in vectors:
+        part = _clip(complex(v.tail), complex(v.tip), centre, r)
+        if part is None or v.length < SHORT_MM:
+            continue
+        color, vlw, dashes, head = VECTOR_STYLE[v.kind]
+        a, c = f(part[0]), f(part[1])
+        if abs(part[1] - complex(v.tip)) <= SAME_MM and abs(c - a) > 1.0:
+            sketch.arrow(a, c, color=color, lw=vlw, dashes=dashes, head=_head(head, vlw, abs(c - a)), gid=f"detail-{v.label}", zorder=3.0 if v.kind == "absolute" else 2.5)
+        else:
+            sketch.line([a, c], color=color, lw=vlw, dashes=dashes, gid=f"detail-{v.label}", zorder=3.0 if v.kind == "absolute" else 2.5)
+    for n in names:
+        sketch.circle(f(images[n]), 0.45, fc=INK, lw=0, gid=f"detail-dot-{n}", zorder=4.0)
+    for n in names:
+        away = f(images[n]) - at
+        place_label(sketch, f(images[n]), [(image_text(n), f"detail-image-{n}")], size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
+    sketch.text(at + 1j * (big + 3.2), f"{name} ({fmt_number(ratio)} : 1)", size=LABEL_PT, gid="detail-name")
 
 
 def _head(head: float, lw: float, length: float) -> float:
