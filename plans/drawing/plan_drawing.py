@@ -137,7 +137,7 @@ def end_letters(vectors) -> dict[str, str]:
     return out
 
 
-def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True) -> list:
+def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, detail: bool | None = None) -> list:
     """Draw a velocity or acceleration plan (``plan.kind`` says which).
 
     Parameters
@@ -151,6 +151,11 @@ def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True) -> list:
         Language of the heading and the legend (see :mod:`plans.i18n`).
     legend : bool
         False leaves the legend out (a page that shows one legend for all).
+    detail : bool, optional
+        Draw crowded images again, enlarged, in a detail beside the plan (see
+        :data:`CROWD_MM`).  By default as *legend*: a handout's position page
+        (one legend for all) chooses each plan's scale to fill its box, and a
+        detail, which does not scale with the plan, would make it choose a coarser one.
 
     Returns
     -------
@@ -160,7 +165,8 @@ def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True) -> list:
     if plan.kind not in _UNITS:
         raise ValueError(f"a plan is 'velocity' or 'acceleration', got {plan.kind!r}")
     tag = "vel" if plan.kind == "velocity" else "acc"
-    return sketch_on(ax, tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=legend))
+    detail = legend if detail is None else detail
+    return sketch_on(ax, tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=legend, detail=detail))
 
 
 def draw_velocity_plan(plan, ax=None, *, lang: str = "en") -> list:
@@ -201,10 +207,11 @@ def _check(z: complex, what: str) -> complex:
     return z
 
 
-def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True) -> None:
+def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True, detail: bool = True) -> None:
     """Draw *plan* into *sketch* (one data unit = 1 mm): what :func:`draw_plan` does on a page's own Sketch.
 
-    *caption* False leaves out the heading, scale and legend; *legend* False only the legend.
+    *caption* False leaves out the heading, scale and legend; *legend* False only the legend;
+    *detail* False the enlarged detail of crowded images.
     """
     images = {name: _check(z, f"image {name}") for name, z in plan.images.items()}
     vectors = vectors_drawn(plan)
@@ -297,7 +304,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
                     away -= unit(other - end)
         place_label(sketch, at, pieces, size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
 
-    for index, crowd in enumerate(_crowds(plan, images)):
+    for index, crowd in enumerate(_crowds(plan, images) if detail else []):
         _detail(sketch, plan, vectors, images, crowd, index)
 
     if caption:
@@ -361,11 +368,25 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, names: list[str], index
     sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
     place_label(sketch, centre + r * cmath.exp(1j * math.pi / 4), [(name, "detail-mark")], size=LABEL_PT, gaps=(0.4, 1.2, 2.4, 4.0), leader_from=3.0)
 
-    # where: beside the plan, to the right of it (or below), level with the crowd
+    # where: in a free part of the plan (the page's room for it is not widened),
+    # nearest the crowd; else beside it, to the right, level with the crowd
     b = sketch.bounds
-    spots = [complex(b.xmax + 6.0 + big, centre.imag), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
-    inside = [o for o in sketch.obstacles]
-    at = next((c for c in spots if not any(Point(c.real, c.imag).buffer(big + 2.0).intersects(o) for o in inside)), spots[0])
+    at = None
+    free = big + 1.5
+    step = 2.0
+    spots = [
+        complex(b.xmin + free + i * step, b.ymin + free + j * step)
+        for i in range(int(max(0.0, b.width - 2 * free) / step) + 1)
+        for j in range(int(max(0.0, b.height - 2 * free) / step) + 1)
+    ]
+    for c in sorted(spots, key=lambda c: (abs(c - centre), c.real, c.imag)):
+        disk = Point(c.real, c.imag).buffer(free)
+        if not any(disk.intersects(o) for o in sketch.obstacles.near(c.real - free, c.imag - free, c.real + free, c.imag + free)):
+            at = c
+            break
+    if at is None:
+        outside = [complex(b.xmax + 6.0 + big, centre.imag), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
+        at = next((c for c in outside if not any(Point(c.real, c.imag).buffer(big + 2.0).intersects(o) for o in sketch.obstacles)), outside[0])
 
     def f(z: complex) -> complex:
         return at + (z - centre) * ratio
@@ -499,11 +520,20 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     sketch.text(complex(x, y), heading, size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
     sketch.text(complex(x, y), f"{symbol} = {fmt_number(plan.scale)} {units}", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)
+    # notes on vectors too short to draw, side by side as far as the plan is wide
+    # (a plan with many of them grows by a line, not by a line each)
+    width = max(b.width, 60.0)
+    cursor = None
     for v, letter in notes:
         # language-neutral: the vector, its drawn length, and the point that stands for it
-        y -= 4.6
         where = f"  ({letter})" if letter else ""
-        sketch.text(complex(x, y), f"|{vector_math(v.label)}| = {v.length:.2f} mm{where}", size=CAPTION_PT, ha="left", va="top", gid=f"short-{v.label}", obstacle=False, math=True)
+        note = f"|{vector_math(v.label)}| = {v.length:.2f} mm{where}"
+        w = text_size(note, CAPTION_PT, math=True)[0]
+        if cursor is None or cursor + w > x + width:
+            y -= 4.6
+            cursor = x
+        sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=f"short-{v.label}", obstacle=False, math=True)
+        cursor += w + 4.0
     if not legend:
         return
     kinds = [k for k in KINDS if any(v.kind == k for v in vectors)]
