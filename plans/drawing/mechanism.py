@@ -363,7 +363,9 @@ class MechanismDrawing:
                 ts = own + [t - reach for t in rides] + [t + reach for t in rides] + [0.0]
                 a = origin + u * min(ts)
                 c = origin + u * max(ts)
-                # a block on a moving pin slides in a slot of this link; a block pivoted on the
+                # a block on a moving pin slides in a slot of this link when the scene names
+                # the line a slot (quick-return "4.slot", the scotch yoke's "4.slot"); on a
+                # rod ("3.rod") it is a block threaded on the rod; a block pivoted on the
                 # frame is a swinging sleeve the link slides through (no slot)
                 pivots = set(_frame_pivots(self.scene))
                 blocks = [
@@ -372,7 +374,7 @@ class MechanismDrawing:
                     if pr.guide == body and pr.guide_line == name and self.is_block(pr.slider)
                     and not (set(self.scene.bodies[pr.slider].points) & pivots)
                 ]
-                if blocks and not self._is_plate(body):
+                if blocks and not self._is_plate(body) and "slot" in name.lower():
                     pins = [((q - origin) * u.conjugate()).real for b in blocks for q in self.body_points(b)]
                     lo, hi = self._slot(body, name, origin, u, pins)
                     self.slotted.update(f"slot-{body}-{name}/{b}" for b in blocks)
@@ -578,6 +580,13 @@ class MechanismDrawing:
             placed.append(rect)
             self.block_centres[body] = centre
             pins[body] = pin
+        # a bar pinned to a block reaches the pin over the block (linear-arm link 6 to H),
+        # rather than stopping at the block's edge
+        reach = math.hypot(*self.block) / 2 + 0.3
+        for bar, (a, c) in getattr(self, "bars", {}).items():
+            for end, other in ((a, c), (c, a)):
+                if any(abs(end - q) < 1e-9 for b, q in pins.items() if b != bar and not self._in_slot(b)) and abs(other - end) > reach:
+                    self.s.line([end, end + unit(other - end) * reach], lw=BAR_PT, gid=f"link-{bar}-to-pin", zorder=3.05, capstyle="butt", obstacle=False)
         # a linear driver that carries an arm still slides on its guide in a block
         driver = self.scene.driver
         if hasattr(driver, "guide") and not self.is_block(driver.link):
@@ -699,7 +708,14 @@ class MechanismDrawing:
                 a, c = self.bars[body]
                 mid = (a + c) / 2
                 n = unit(c - a) * 1j
-                self._label(mid, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=n, gaps=(1.2, 2.5, 4.0, 7.0))
+                # beside its own bar, on the stretch furthest from every other link and
+                # block (linear-arm: "3" on rod F–G, not by rocker D–K where the bar's middle is)
+                others = [LineString([(p0.real, p0.imag), (p1.real, p1.imag)]) for b, (p0, p1) in self.bars.items() if b != body]
+                others += [Point(q.real, q.imag) for b, q in getattr(self, "block_centres", {}).items()]
+                spots = [a + (c - a) * t + n * side * 2.8 for t in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8) for side in (1, -1)]
+                if others:
+                    spots.sort(key=lambda z: -min(Point(z.real, z.imag).distance(o) for o in others))
+                self._label(mid, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=n, first=tuple(spots[:4]), gaps=(1.2, 2.5, 4.0, 7.0))
             elif body in self.block_centres:
                 centre = self.block_centres[body]
                 r = math.hypot(*self.block) / 2
@@ -713,9 +729,12 @@ class MechanismDrawing:
                     along = -u if (prefer * u.conjugate()).real < 0 else u
                     first = (centre + along * (self.block[0] / 2 + 2.5),) + first
                 if self._in_slot(body):
-                    # in a slot: beside the block, inside the slot
+                    # in a slot: outside the slotted link, across from the block, joined to it by a
+                    # leader (inside the slot it would read as the slotted link's number: scotch yoke)
                     u = cmath.exp(1j * self.block_angle(body))
-                    first += (centre + u * (self.block[0] / 2 + 2.0), centre - u * (self.block[0] / 2 + 2.0))
+                    across = self.block[1] / 2 + 0.5 + 3.8
+                    self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=u * 1j, gaps=(across, across + 2.0, across + 4.0))
+                    continue
                 self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=prefer, first=first, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
 
     def caption(self) -> None:

@@ -1,0 +1,78 @@
+"""Review findings 14–16, 23–25 on the kinematic scheme (review.md).  Expected places come
+from the pins drawn at the solved positions (gid ``mech-pin-X``) and the scene's data."""
+
+from __future__ import annotations
+
+import pytest
+from matplotlib.text import Text
+from shapely.geometry import LineString, Point, Polygon
+
+from plans.drawing import draw_mechanism
+from plans.graphical import construct
+from plans.scene import example_path, load
+
+
+def _draw(name):
+    return draw_mechanism(construct(load(example_path(name))))
+
+
+def _gid(artists, gid):
+    return next(a for a in artists if a.get_gid() == gid)
+
+
+def _pin(artists, name):
+    return complex(*_gid(artists, f"mech-pin-{name}").center)
+
+
+def _text_centre(artists, gid):
+    t = _gid(artists, gid)
+    return complex(*t.get_position())
+
+
+def _segment(a, b):
+    return LineString([(a.real, a.imag), (b.real, b.imag)])
+
+
+def test_linear_arm_block_5_is_one_block_on_the_rod_and_link_6_reaches_pin_h():
+    # finding 15: block 5 (on "3.rod") was drawn in a slot: a double rectangle, link 6 ending on its edge
+    artists = _draw("linear-arm")
+    gids = {a.get_gid() for a in artists}
+    assert not any((g or "").startswith("mech-slot-") for g in gids)
+    h = _pin(artists, "H")
+    block = _gid(artists, "mech-block-5")
+    assert Polygon(block.get_xy()).contains(Point(h.real, h.imag))
+    reach = _gid(artists, "mech-link-6-to-pin")
+    xs, ys = reach.get_data()
+    ends = [complex(x, y) for x, y in zip(xs, ys)]
+    assert min(abs(e - h) for e in ends) < 1e-6  # it ends at the pin
+    assert reach.get_zorder() > block.get_zorder()  # drawn over the block
+    q = _pin(artists, "Q")
+    other = max(ends, key=lambda e: abs(e - h))
+    assert abs(((other - h) / (q - h)).imag) < 1e-6 * abs(other - h)  # along link 6, towards Q
+
+
+def test_linear_arm_number_3_stands_by_rod_fg_not_by_rocker_dk():
+    solution = construct(load(example_path("linear-arm")))
+    artists = draw_mechanism(solution)
+    f, g, d, k = (complex(solution.positions[n] / solution.scales["k_l"]) for n in "FGDK")
+    three = _text_centre(artists, "mech-number-3")
+    p = Point(three.real, three.imag)
+    to_rod = p.distance(_segment(f, g))
+    assert to_rod < 4.0
+    assert p.distance(_segment(d, k)) > 2 * to_rod
+    # and not between the rocker's number and K
+    four = _text_centre(artists, "mech-number-4")
+    assert abs(three - four) > 8.0
+
+
+def test_scotch_yoke_block_number_is_outside_the_yoke_with_a_leader():
+    # finding 25: "3" stood inside the yoke (link 4), above the block
+    artists = _draw("scotch-yoke")
+    slot = Polygon(_gid(artists, "mech-slot-4-slot").get_xy())
+    three = _gid(artists, "mech-number-3")
+    c = complex(*three.get_position())
+    assert not slot.contains(Point(c.real, c.imag))
+    a = _pin(artists, "A")
+    leaders = [x for x in artists if x.get_gid() == "mech-leader"]
+    near = [ln for ln in leaders if min(abs(complex(x, y) - a) for x, y in zip(*ln.get_data())) < 1.0]
+    assert near, "no leader from block 3 to its number"
