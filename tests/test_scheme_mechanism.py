@@ -76,3 +76,21 @@ def test_scotch_yoke_block_number_is_outside_the_yoke_with_a_leader():
     leaders = [x for x in artists if x.get_gid() == "mech-leader"]
     near = [ln for ln in leaders if min(abs(complex(x, y) - a) for x, y in zip(*ln.get_data())) < 1.0]
     assert near, "no leader from block 3 to its number"
+
+
+def test_quick_return_ram_guide_is_a_guideway_over_the_rod_and_past_the_block():
+    # finding 16: the ram guide was a short hatched stub to the right of E
+    solution = construct(load(example_path("quick-return")))
+    artists = draw_mechanism(solution)
+    d, e = (complex(solution.positions[n] / solution.scales["k_l"]) for n in "DE")
+    lines = [a for a in artists if (a.get_gid() or "").split("-")[:3] == ["mech", "guide", "ram"] and hasattr(a, "get_data")]
+    assert len(lines) >= 2
+    xs = [x for ln in lines for x in ln.get_data()[0]]
+    assert min(xs) < min(d.real, e.real) - 2.0 and max(xs) > max(d.real, e.real) + 5.0
+    rod = LineString([(d.real, d.imag), (e.real, e.imag)])
+    ys = set()
+    for ln in lines:
+        pts = list(zip(*ln.get_data()))
+        assert not LineString(pts).intersects(rod)  # the rod runs between the lines, on no hatching
+        ys.add(round(pts[0][1] - e.imag, 6))
+    assert any(y > 0 for y in ys) and any(y < 0 for y in ys)  # either side of the ram's line

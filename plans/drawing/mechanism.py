@@ -276,7 +276,10 @@ class MechanismDrawing:
                         lo, hi = max(lo, min(ts)), hi + stack
                     elif side < 0:
                         lo, hi = lo - stack, min(hi, max(ts))
-            # a rod lying along the guide (a ram's connecting link) keeps the guide off its length
+            # a rod lying along the guide (a ram's connecting link): the guide is a guideway,
+            # two lines either side of the ram, hatched outward, over the rod's length and
+            # past the block (the stroke it travels), so the rod runs between them, on no hatching
+            channel = False
             for body in self.moving:
                 if self.is_block(body):
                     continue
@@ -284,16 +287,38 @@ class MechanismDrawing:
                 if len(along) < 2 or any(abs(z.imag) > 1.0 for z in along):
                     continue
                 r0, r1 = min(z.real for z in along), max(z.real for z in along)
-                inside = [t for t in ts if not (r0 < t < r1)]
-                if not inside:
+                if not [t for t in ts if not (r0 < t < r1)]:
                     continue
-                if r1 <= min(inside):
-                    lo = max(lo, r1 + self.pin_r + 1.0)
-                elif r0 >= max(inside):
-                    hi = min(hi, r0 - self.pin_r - 1.0)
+                channel = True
+                lo, hi = min(lo, r0 - reach), max(hi, r1 + reach)
+            n = u * 1j
+            if channel:
+                gap = self.block[1] / 2 + 0.35
+                # (a link crossing a guideway line, the lever up to D, passes through a gap in it)
+                crossing = []
+                for body in self.moving:
+                    pts = self.body_points(body)
+                    if self.is_block(body) or len(pts) < 2:
+                        continue
+                    crossing.append(max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1])))
+                for side in (1.0, -1.0):
+                    a = origin + u * lo + n * side * gap
+                    b = origin + u * hi + n * side * gap
+                    spans = []
+                    for q, r in crossing:
+                        hit = LineString([(a.real, a.imag), (b.real, b.imag)]).intersection(LineString([(q.real, q.imag), (r.real, r.imag)]))
+                        if hit.geom_type == "Point":
+                            t = ((complex(hit.x, hit.y) - a) * u.conjugate()).real
+                            spans.append((a + u * (t - 2.0), a + u * (t + 2.0)))
+                    for p0, p1 in _outside(a, b, spans):
+                        if abs(p1 - p0) < 1.0:
+                            continue
+                        self.s.line([p0, p1], lw=1.1, gid=f"guide-{name}", zorder=1.2)
+                        self._hatch(p0, p1, n * side) if side > 0 else self._hatch(p1, p0, n * side)
+                self.guides.append((origin + u * lo, origin + u * hi))
+                continue
             a = origin + u * lo
             b = origin + u * hi
-            n = u * 1j
             side = -1.0 if self._mechanism_side(FRAME, name, origin, n) > 0 else 1.0
             self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=1.2)
             self._hatch(a, b, n * side)
