@@ -94,3 +94,31 @@ def test_quick_return_ram_guide_is_a_guideway_over_the_rod_and_past_the_block():
         assert not LineString(pts).intersects(rod)  # the rod runs between the lines, on no hatching
         ys.add(round(pts[0][1] - e.imag, 6))
     assert any(y > 0 for y in ys) and any(y < 0 for y in ys)  # either side of the ram's line
+
+
+def test_six_bar_sleeve_support_reaches_pin_e_over_the_block():
+    # finding 24: the support triangle, drawn under block 6, seemed to lean on the block's edge
+    solution = construct(load(example_path("six-bar")))
+    artists = draw_mechanism(solution)
+    e = complex(solution.positions["E"] / solution.scales["k_l"])
+    block = _gid(artists, "mech-block-6")
+    sides = _gid(artists, "mech-ground-E-sides")
+    pts = [complex(x, y) for x, y in zip(*sides.get_data())]
+    assert pts[1] == pytest.approx(e, abs=1e-6)  # the apex is the pin
+    assert sides.get_zorder() > block.get_zorder()
+    # both sides run from the pin out past the block to the support's base
+    outline = Polygon(block.get_xy())
+    for end in (pts[0], pts[2]):
+        assert not outline.contains(Point(end.real, end.imag))
+
+
+def test_ladder_guides_pass_through_their_pins():
+    # finding 23 (checked: already so on this branch's base): floor through A, wall through B
+    solution = construct(load(example_path("ladder")))
+    artists = draw_mechanism(solution)
+    a, b = (complex(solution.positions[n] / solution.scales["k_l"]) for n in "AB")
+    floor = _gid(artists, "mech-guide-floor").get_data()
+    wall = _gid(artists, "mech-guide-wall").get_data()
+    assert all(abs(y - a.imag) < 1e-6 for y in floor[1])
+    assert all(abs(x - b.real) < 1e-6 for x in wall[0])
+    assert min(wall[1]) < b.imag < max(wall[1])

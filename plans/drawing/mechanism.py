@@ -502,6 +502,10 @@ class MechanismDrawing:
             base = q + d * height
             left, right = base + n * half, base - n * half
             self.s.polygon([q, left, right], fc="white", lw=0.8, gid=f"ground-{name}", zorder=2.5)
+            if under_block:
+                # the support's sides reach the pin over the swinging block (the sleeve turns
+                # about E): drawn under it, the triangle would seem to lean on the block's edge
+                self.s.line([left, q, right], lw=0.8, gid=f"ground-{name}-sides", zorder=3.2, obstacle=False)
             if on_guide is not None:
                 continue  # the guide's own hatching is its ground: not drawn twice
             a, b = base + n * (half + 2.0), base - n * (half + 2.0)
