@@ -122,3 +122,18 @@ def test_ladder_guides_pass_through_their_pins():
     assert all(abs(y - a.imag) < 1e-6 for y in floor[1])
     assert all(abs(x - b.real) < 1e-6 for x in wall[0])
     assert min(wall[1]) < b.imag < max(wall[1])
+
+
+def test_wedge_follower_joins_block_3_at_pin_c_over_the_block():
+    # finding 14: follower 4 joined block 3's top through a stub (its stem ran under block 3),
+    # so pin C seemed to join block 3 to the incline (a sliding pair)
+    solution = construct(load(example_path("wedge")))
+    artists = draw_mechanism(solution)
+    c = complex(solution.positions["C"] / solution.scales["k_l"])
+    stem = _gid(artists, "mech-stem-4")
+    ends = [complex(x, y) for x, y in zip(*stem.get_data())]
+    assert min(abs(e - c) for e in ends) < 1e-6  # the stem reaches the pin
+    assert stem.get_zorder() > _gid(artists, "mech-block-3").get_zorder()  # over block 3
+    far = max(ends, key=lambda e: abs(e - c))
+    block4 = Polygon(_gid(artists, "mech-block-4").get_xy())
+    assert block4.exterior.distance(Point(far.real, far.imag)) < 1e-6  # up to block 4's edge

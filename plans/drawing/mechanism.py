@@ -599,8 +599,9 @@ class MechanismDrawing:
                         t += 0.25
                     centre = pin + sense * (1 + t / L)
                     if t > 0:
-                        # the follower's stem down to its pin
-                        self.s.line([pin, centre], lw=BAR_PT, gid=f"stem-{body}", zorder=2.9, capstyle="round")
+                        # the follower's stem from its block down to its pin, over the block under it,
+                        # so that the pin reads as the joint of the two blocks (not of block and incline)
+                        self.s.line([pin, centre - unit(centre - pin) * L], lw=BAR_PT, gid=f"stem-{body}", zorder=3.05, capstyle="butt")
                 else:
                     centre = min(options, key=lambda c: sum(self._rect(c, u).intersection(q).area for q in placed))
             rect = self._rect(centre, u)
