@@ -130,3 +130,21 @@ def test_heads_in_the_detail_are_slender_and_a_third_of_their_drawn_shaft_at_mos
         assert length <= drawn / 3 + 1e-9
         if drawn >= 10.0:
             assert length / abs(p1 - p2) == pytest.approx(3.0, rel=0.05)
+
+
+def test_six_bar_m_and_e5_labels_stand_apart_and_clear_of_the_heads(six_bar):
+    # finding 10 (labels): measured with matplotlib's renderer, as tests/plandraw_overlaps does
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from plandraw_overlaps import arrowheads, label_boxes
+
+    fig = draw_plan(six_bar.acceleration_plan)[0].figure
+    labels = dict(label_boxes(fig))
+    heads = dict(arrowheads(fig))
+    m = next(b for k, b in labels.items() if k.startswith("acc-image-m:"))
+    e5 = next(b for k, b in labels.items() if k.startswith("acc-image-e5:"))
+    assert m.distance(e5) >= 2.0
+    assert e5.distance(heads["acc-relative-a_r_E5E6-head"]) >= 0.8
+    assert m.distance(heads["acc-absolute-a_M-head"]) >= 0.8
