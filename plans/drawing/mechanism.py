@@ -276,7 +276,10 @@ class MechanismDrawing:
                         lo, hi = max(lo, min(ts)), hi + stack
                     elif side < 0:
                         lo, hi = lo - stack, min(hi, max(ts))
-            # a rod lying along the guide (a ram's connecting link) keeps the guide off its length
+            # a rod lying along the guide (a ram's connecting link): the guide is a guideway,
+            # two lines either side of the ram, hatched outward, over the rod's length and
+            # past the block (the stroke it travels), so the rod runs between them, on no hatching
+            channel = False
             for body in self.moving:
                 if self.is_block(body):
                     continue
@@ -284,16 +287,38 @@ class MechanismDrawing:
                 if len(along) < 2 or any(abs(z.imag) > 1.0 for z in along):
                     continue
                 r0, r1 = min(z.real for z in along), max(z.real for z in along)
-                inside = [t for t in ts if not (r0 < t < r1)]
-                if not inside:
+                if not [t for t in ts if not (r0 < t < r1)]:
                     continue
-                if r1 <= min(inside):
-                    lo = max(lo, r1 + self.pin_r + 1.0)
-                elif r0 >= max(inside):
-                    hi = min(hi, r0 - self.pin_r - 1.0)
+                channel = True
+                lo, hi = min(lo, r0 - reach), max(hi, r1 + reach)
+            n = u * 1j
+            if channel:
+                gap = self.block[1] / 2 + 0.35
+                # (a link crossing a guideway line, the lever up to D, passes through a gap in it)
+                crossing = []
+                for body in self.moving:
+                    pts = self.body_points(body)
+                    if self.is_block(body) or len(pts) < 2:
+                        continue
+                    crossing.append(max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1])))
+                for side in (1.0, -1.0):
+                    a = origin + u * lo + n * side * gap
+                    b = origin + u * hi + n * side * gap
+                    spans = []
+                    for q, r in crossing:
+                        hit = LineString([(a.real, a.imag), (b.real, b.imag)]).intersection(LineString([(q.real, q.imag), (r.real, r.imag)]))
+                        if hit.geom_type == "Point":
+                            t = ((complex(hit.x, hit.y) - a) * u.conjugate()).real
+                            spans.append((a + u * (t - 2.0), a + u * (t + 2.0)))
+                    for p0, p1 in _outside(a, b, spans):
+                        if abs(p1 - p0) < 1.0:
+                            continue
+                        self.s.line([p0, p1], lw=1.1, gid=f"guide-{name}", zorder=1.2)
+                        self._hatch(p0, p1, n * side) if side > 0 else self._hatch(p1, p0, n * side)
+                self.guides.append((origin + u * lo, origin + u * hi))
+                continue
             a = origin + u * lo
             b = origin + u * hi
-            n = u * 1j
             side = -1.0 if self._mechanism_side(FRAME, name, origin, n) > 0 else 1.0
             self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=1.2)
             self._hatch(a, b, n * side)
@@ -363,7 +388,9 @@ class MechanismDrawing:
                 ts = own + [t - reach for t in rides] + [t + reach for t in rides] + [0.0]
                 a = origin + u * min(ts)
                 c = origin + u * max(ts)
-                # a block on a moving pin slides in a slot of this link; a block pivoted on the
+                # a block on a moving pin slides in a slot of this link when the scene names
+                # the line a slot (quick-return "4.slot", the scotch yoke's "4.slot"); on a
+                # rod ("3.rod") it is a block threaded on the rod; a block pivoted on the
                 # frame is a swinging sleeve the link slides through (no slot)
                 pivots = set(_frame_pivots(self.scene))
                 blocks = [
@@ -372,7 +399,7 @@ class MechanismDrawing:
                     if pr.guide == body and pr.guide_line == name and self.is_block(pr.slider)
                     and not (set(self.scene.bodies[pr.slider].points) & pivots)
                 ]
-                if blocks and not self._is_plate(body):
+                if blocks and not self._is_plate(body) and "slot" in name.lower():
                     pins = [((q - origin) * u.conjugate()).real for b in blocks for q in self.body_points(b)]
                     lo, hi = self._slot(body, name, origin, u, pins)
                     self.slotted.update(f"slot-{body}-{name}/{b}" for b in blocks)
@@ -475,6 +502,10 @@ class MechanismDrawing:
             base = q + d * height
             left, right = base + n * half, base - n * half
             self.s.polygon([q, left, right], fc="white", lw=0.8, gid=f"ground-{name}", zorder=2.5)
+            if under_block:
+                # the support's sides reach the pin over the swinging block (the sleeve turns
+                # about E): drawn under it, the triangle would seem to lean on the block's edge
+                self.s.line([left, q, right], lw=0.8, gid=f"ground-{name}-sides", zorder=3.2, obstacle=False)
             if on_guide is not None:
                 continue  # the guide's own hatching is its ground: not drawn twice
             a, b = base + n * (half + 2.0), base - n * (half + 2.0)
@@ -568,8 +599,9 @@ class MechanismDrawing:
                         t += 0.25
                     centre = pin + sense * (1 + t / L)
                     if t > 0:
-                        # the follower's stem down to its pin
-                        self.s.line([pin, centre], lw=BAR_PT, gid=f"stem-{body}", zorder=2.9, capstyle="round")
+                        # the follower's stem from its block down to its pin, over the block under it,
+                        # so that the pin reads as the joint of the two blocks (not of block and incline)
+                        self.s.line([pin, centre - unit(centre - pin) * L], lw=BAR_PT, gid=f"stem-{body}", zorder=3.05, capstyle="butt")
                 else:
                     centre = min(options, key=lambda c: sum(self._rect(c, u).intersection(q).area for q in placed))
             rect = self._rect(centre, u)
@@ -578,6 +610,13 @@ class MechanismDrawing:
             placed.append(rect)
             self.block_centres[body] = centre
             pins[body] = pin
+        # a bar pinned to a block reaches the pin over the block (linear-arm link 6 to H),
+        # rather than stopping at the block's edge
+        reach = math.hypot(*self.block) / 2 + 0.3
+        for bar, (a, c) in getattr(self, "bars", {}).items():
+            for end, other in ((a, c), (c, a)):
+                if any(abs(end - q) < 1e-9 for b, q in pins.items() if b != bar and not self._in_slot(b)) and abs(other - end) > reach:
+                    self.s.line([end, end + unit(other - end) * reach], lw=BAR_PT, gid=f"link-{bar}-to-pin", zorder=3.05, capstyle="butt", obstacle=False)
         # a linear driver that carries an arm still slides on its guide in a block
         driver = self.scene.driver
         if hasattr(driver, "guide") and not self.is_block(driver.link):
@@ -699,7 +738,14 @@ class MechanismDrawing:
                 a, c = self.bars[body]
                 mid = (a + c) / 2
                 n = unit(c - a) * 1j
-                self._label(mid, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=n, gaps=(1.2, 2.5, 4.0, 7.0))
+                # beside its own bar, on the stretch furthest from every other link and
+                # block (linear-arm: "3" on rod F–G, not by rocker D–K where the bar's middle is)
+                others = [LineString([(p0.real, p0.imag), (p1.real, p1.imag)]) for b, (p0, p1) in self.bars.items() if b != body]
+                others += [Point(q.real, q.imag) for b, q in getattr(self, "block_centres", {}).items()]
+                spots = [a + (c - a) * t + n * side * 2.8 for t in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8) for side in (1, -1)]
+                if others:
+                    spots.sort(key=lambda z: -min(Point(z.real, z.imag).distance(o) for o in others))
+                self._label(mid, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=n, first=tuple(spots[:4]), gaps=(1.2, 2.5, 4.0, 7.0))
             elif body in self.block_centres:
                 centre = self.block_centres[body]
                 r = math.hypot(*self.block) / 2
@@ -713,9 +759,12 @@ class MechanismDrawing:
                     along = -u if (prefer * u.conjugate()).real < 0 else u
                     first = (centre + along * (self.block[0] / 2 + 2.5),) + first
                 if self._in_slot(body):
-                    # in a slot: beside the block, inside the slot
+                    # in a slot: outside the slotted link, across from the block, joined to it by a
+                    # leader (inside the slot it would read as the slotted link's number: scotch yoke)
                     u = cmath.exp(1j * self.block_angle(body))
-                    first += (centre + u * (self.block[0] / 2 + 2.0), centre - u * (self.block[0] / 2 + 2.0))
+                    across = self.block[1] / 2 + 0.5 + 3.8
+                    self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=u * 1j, gaps=(across, across + 2.0, across + 4.0))
+                    continue
                 self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=prefer, first=first, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
 
     def caption(self) -> None:

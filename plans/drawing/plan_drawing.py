@@ -14,9 +14,11 @@ first vertex is the tip), ``relative-…``, ``normal-…``, ``tangential-…``,
 
 from __future__ import annotations
 
+import cmath
 import math
 
-from shapely.geometry import MultiPoint
+from shapely.geometry import MultiPoint, Point
+from shapely.geometry import Polygon as ShapelyPolygon
 
 from .._text import SUBSCRIPT
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
@@ -50,12 +52,19 @@ __all__ = [
 
 #: A vector shorter than this [mm] is not drawn (it has no direction to show).
 ZERO_MM = 1e-6
-#: A vector shorter than this [mm] is too short for an arrow: its end is marked
-#: as a labelled point and a note under the plan gives its length.
-SHORT_MM = 1.0
+#: A vector shorter than this [mm] is too short for an arrow (its head, at most
+#: a third of it, would be under 1 mm: linear-arm aⁿ of 2.3 and 2.6 mm): its end
+#: is marked as a labelled point and a note under the plan gives its length.
+SHORT_MM = 3.0
+#: The end of a short vector this close [mm] to an image shares its label ("a′, n₁").
+JOIN_MM = 1.0
 #: A component lying along an absolute vector is drawn this far beside it [mm],
 #: with thin ticks to its true ends, so that it can be seen.
 BESIDE_MM = 1.2
+#: A vector from the pole along a longer absolute vector from the pole (six-bar
+#: π→m′ on π→a′, quick-return v_A4C = p→a₄ on p→d) is drawn on it, as the
+#: textbook draws it: its head stands on that shaft with a white rim this wide [pt].
+HALO_PT = 1.2
 #: A label set further than this from its point [mm] gets a leader line.
 LEADER_FROM_MM = 2.0
 #: Label gaps [mm] tried in turn on a plan (the far ones with a leader line).
@@ -65,6 +74,19 @@ SAME_MM = 1e-3
 #: How far a construction line runs past the intersection and behind its start [mm].
 PAST_MM = 7.0
 BEHIND_MM = 3.0
+
+#: A link whose images all lie within this span [mm] crowds: its arrowheads
+#: overlap and its figure cannot be read (six-bar a b c), so it is drawn again,
+#: enlarged, in a detail beside the plan.
+CROWD_MM = 8.0
+#: The detail enlarges the crowd to about this span [mm]...
+DETAIL_SPAN_MM = 28.0
+#: ...and its two closest images to at least this distance [mm] (two full heads apart)...
+DETAIL_APART_MM = 7.0
+#: ...by the first of these drafting ratios (n : 1) that does both.
+DETAIL_RATIOS = (2, 2.5, 4, 5, 10)
+#: The detail's name on the plan and over the detail (a drafting detail numeral).
+DETAIL_NAME = "I"
 
 _UNITS = {"velocity": ("k_v", "(m/s)/mm"), "acceleration": ("k_a", "(m/s²)/mm")}
 
@@ -115,7 +137,7 @@ def end_letters(vectors) -> dict[str, str]:
     return out
 
 
-def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True) -> list:
+def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, detail: bool | None = None) -> list:
     """Draw a velocity or acceleration plan (``plan.kind`` says which).
 
     Parameters
@@ -129,6 +151,11 @@ def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True) -> list:
         Language of the heading and the legend (see :mod:`plans.i18n`).
     legend : bool
         False leaves the legend out (a page that shows one legend for all).
+    detail : bool, optional
+        Draw crowded images again, enlarged, in a detail beside the plan (see
+        :data:`CROWD_MM`).  By default as *legend*: a handout's position page
+        (one legend for all) chooses each plan's scale to fill its box, and a
+        detail, which does not scale with the plan, would make it choose a coarser one.
 
     Returns
     -------
@@ -138,7 +165,8 @@ def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True) -> list:
     if plan.kind not in _UNITS:
         raise ValueError(f"a plan is 'velocity' or 'acceleration', got {plan.kind!r}")
     tag = "vel" if plan.kind == "velocity" else "acc"
-    return sketch_on(ax, tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=legend))
+    detail = legend if detail is None else detail
+    return sketch_on(ax, tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=legend, detail=detail))
 
 
 def draw_velocity_plan(plan, ax=None, *, lang: str = "en") -> list:
@@ -179,10 +207,11 @@ def _check(z: complex, what: str) -> complex:
     return z
 
 
-def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True) -> None:
+def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True, detail: bool = True) -> None:
     """Draw *plan* into *sketch* (one data unit = 1 mm): what :func:`draw_plan` does on a page's own Sketch.
 
-    *caption* False leaves out the heading, scale and legend; *legend* False only the legend.
+    *caption* False leaves out the heading, scale and legend; *legend* False only the legend;
+    *detail* False the enlarged detail of crowded images.
     """
     images = {name: _check(z, f"image {name}") for name, z in plan.images.items()}
     vectors = vectors_drawn(plan)
@@ -217,6 +246,16 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             color, lw, dashes, head = VECTOR_STYLE[kind]
             z = 3.0 if kind == "absolute" else 2.5
             tail, tip = complex(v.tail), complex(v.tip)
+            along = _along(v, absolute)
+            if along is not None:
+                # its shaft lies under the longer vector's; its head, full size, stands
+                # out on that shaft within a white rim
+                size = _head(max(head, VECTOR_STYLE["absolute"][3]), lw, v.length)
+                _, head_artist = sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=size, gid=f"{kind}-{v.label}", zorder=2.4)
+                head_artist.set_zorder(3.6)
+                rim = ShapelyPolygon(head_artist.get_xy()[:3]).buffer(HALO_PT * MM_PER_PT, join_style=2)
+                sketch.polygon([complex(x, y) for x, y in list(rim.exterior.coords)[:-1]], fc="white", ec="none", lw=0, gid=f"{kind}-{v.label}-rim", zorder=3.5, obstacle=False)
+                continue
             if kind != "absolute":
                 shift = _beside(tail, tip, absolute)
                 if shift:
@@ -256,7 +295,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
         join(z, (image_text(name), f"image-{name}"), SAME_MM)
     for z, letter, label in ends:
         # an end a short component away from an image shares its label ("a′, n₁")
-        join(z, (letter, f"end-{label}"), SHORT_MM if any(v.label == label for v in shorts) else SAME_MM)
+        join(z, (letter, f"end-{label}"), JOIN_MM if any(v.label == label for v in shorts) else SAME_MM)
     for at, pieces in groups:
         away = 0j
         for v in vectors:
@@ -265,8 +304,116 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
                     away -= unit(other - end)
         place_label(sketch, at, pieces, size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
 
+    for index, crowd in enumerate(_crowds(plan, images) if detail else []):
+        _detail(sketch, plan, vectors, images, crowd, index)
+
     if caption:
         _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label)) for v in shorts])
+
+
+def _crowds(plan, images: dict) -> list[list[str]]:
+    """The images of each link that crowd (3 or more distinct images within :data:`CROWD_MM`)."""
+    out = []
+    for link, labels in getattr(plan, "links", {}).items():
+        names: list[str] = []
+        for label in labels:
+            z = images.get(label)
+            if z is not None and all(abs(z - images[n]) > SAME_MM for n in names):
+                names.append(label)
+        pts = [images[n] for n in names]
+        if len(pts) >= 3:
+            span = max(abs(q - r) for q in pts for r in pts)
+            if 0.5 < span < CROWD_MM and not any(set(names) <= set(c) for c in out):
+                out.append(names)
+    return out
+
+
+def _clip(a: complex, b: complex, centre: complex, r: float):
+    """The part of segment a–b inside the circle (centre, r), as (a′, b′), or None."""
+    d = b - a
+    f = a - centre
+    qa = (d * d.conjugate()).real
+    if qa <= 0:
+        return None
+    qb = 2 * (f * d.conjugate()).real
+    qc = (f * f.conjugate()).real - r * r
+    disc = qb * qb - 4 * qa * qc
+    if disc <= 0:
+        return None
+    root = math.sqrt(disc)
+    t0, t1 = max(0.0, (-qb - root) / (2 * qa)), min(1.0, (-qb + root) / (2 * qa))
+    if t1 - t0 <= 1e-9:
+        return None
+    return a + d * t0, a + d * t1
+
+
+def _detail(sketch: Sketch, plan, vectors, images: dict, names: list[str], index: int) -> None:
+    """Crowded images drawn again, enlarged n : 1, in a circle beside the plan (a drafting detail).
+
+    The crowd is ringed on the plan and named; the detail repeats every vector
+    (the part inside the ring), the link's figure, the image points and their
+    labels, so that the figure (a b c) and the heads can be read.  Gids:
+    ``detail-ring``, ``detail``, ``detail-<vector>`` (shaft, ``-head``),
+    ``detail-figure``, ``detail-image-<name>``, ``detail-name``.
+    """
+    pts = [images[n] for n in names]
+    centre = sum(pts) / len(pts)
+    r = max(abs(q - centre) for q in pts) + 1.6
+    closest = min(abs(q - w) for i, q in enumerate(pts) for w in pts[:i])
+    ratio = next((k for k in DETAIL_RATIOS if 2 * r * k >= DETAIL_SPAN_MM and closest * k >= DETAIL_APART_MM), DETAIL_RATIOS[-1])
+    big = r * ratio
+    name = DETAIL_NAME + ("I" * index)
+    edge, lw, fill = FIGURE_STYLE
+    sketch.circle(centre, r, fc="none", ec=edge, lw=0.5, gid="detail-ring", zorder=1.2, obstacle=False)
+    sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
+    place_label(sketch, centre + r * cmath.exp(1j * math.pi / 4), [(name, "detail-mark")], size=LABEL_PT, gaps=(0.4, 1.2, 2.4, 4.0), leader_from=3.0)
+
+    # where: in a free part of the plan (the page's room for it is not widened),
+    # nearest the crowd; else beside it, to the right, level with the crowd
+    b = sketch.bounds
+    at = None
+    free = big + 1.5
+    step = 2.0
+    spots = [
+        complex(b.xmin + free + i * step, b.ymin + free + j * step)
+        for i in range(int(max(0.0, b.width - 2 * free) / step) + 1)
+        for j in range(int(max(0.0, b.height - 2 * free) / step) + 1)
+    ]
+    for c in sorted(spots, key=lambda c: (abs(c - centre), c.real, c.imag)):
+        disk = Point(c.real, c.imag).buffer(free)
+        if not any(disk.intersects(o) for o in sketch.obstacles.near(c.real - free, c.imag - free, c.real + free, c.imag + free)):
+            at = c
+            break
+    if at is None:
+        outside = [complex(b.xmax + 6.0 + big, centre.imag), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
+        at = next((c for c in outside if not any(Point(c.real, c.imag).buffer(big + 2.0).intersects(o) for o in sketch.obstacles)), outside[0])
+
+    def f(z: complex) -> complex:
+        return at + (z - centre) * ratio
+
+    sketch.circle(at, big, fc="none", ec=edge, lw=0.6, gid="detail", zorder=1.2, obstacle=False)
+    sketch.bounds.add_box(at.real - big, at.imag - big, at.real + big, at.imag + big)
+    sketch.obstacles.append(Point(at.real, at.imag).buffer(big).exterior.buffer(0.3))
+    figure = [f(images[n]) for n in names]
+    hull = MultiPoint([(q.real, q.imag) for q in figure]).convex_hull
+    if hull.geom_type == "Polygon":
+        sketch.polygon([complex(x, y) for x, y in list(hull.exterior.coords)[:-1]], fc=fill, ec=edge, lw=lw, gid="detail-figure", zorder=0.8)
+    for v in vectors:
+        part = _clip(complex(v.tail), complex(v.tip), centre, r)
+        if part is None or v.length < SHORT_MM:
+            continue
+        color, vlw, dashes, head = VECTOR_STYLE[v.kind]
+        a, c = f(part[0]), f(part[1])
+        if abs(part[1] - complex(v.tip)) <= SAME_MM and abs(c - a) > 1.0:
+            sketch.arrow(a, c, color=color, lw=vlw, dashes=dashes, head=_head(head, vlw, abs(c - a)), gid=f"detail-{v.label}", zorder=3.0 if v.kind == "absolute" else 2.5)
+        else:
+            sketch.line([a, c], color=color, lw=vlw, dashes=dashes, gid=f"detail-{v.label}", zorder=3.0 if v.kind == "absolute" else 2.5)
+    for n in names:
+        sketch.circle(f(images[n]), 0.45, fc=INK, lw=0, gid=f"detail-dot-{n}", zorder=4.0)
+    for n in names:
+        away = f(images[n]) - at
+        place_label(sketch, f(images[n]), [(image_text(n), f"detail-image-{n}")], size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
+    sketch.text(at + 1j * (big + 3.2), f"{name} ({fmt_number(ratio)} : 1)", size=LABEL_PT, gid="detail-name")
 
 
 def _head(head: float, lw: float, length: float) -> float:
@@ -293,6 +440,20 @@ def _beside(tail: complex, tip: complex, absolute) -> complex:
                 worst = min(o.imag * side for o in off)
                 return u * 1j * side * (BESIDE_MM - worst)
     return 0j
+
+
+def _along(v, absolute):
+    """The longer absolute vector from the pole that *v* (also from the pole) lies on, or None."""
+    if abs(v.tail) > SAME_MM:
+        return None
+    for w in absolute:
+        if w is v or abs(w.tail) > SAME_MM or w.length <= v.length + SAME_MM:
+            continue
+        u = unit(w.tip - w.tail)
+        off = (v.tip - w.tail) * u.conjugate()
+        if off.real > 0 and abs(off.imag) < BESIDE_MM:
+            return w
+    return None
 
 
 def _at(z: complex, w: complex) -> bool:
@@ -359,11 +520,20 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     sketch.text(complex(x, y), heading, size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
     sketch.text(complex(x, y), f"{symbol} = {fmt_number(plan.scale)} {units}", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)
+    # notes on vectors too short to draw, side by side as far as the plan is wide
+    # (a plan with many of them grows by a line, not by a line each)
+    width = max(b.width, 60.0)
+    cursor = None
     for v, letter in notes:
         # language-neutral: the vector, its drawn length, and the point that stands for it
-        y -= 4.6
         where = f"  ({letter})" if letter else ""
-        sketch.text(complex(x, y), f"|{vector_math(v.label)}| = {v.length:.2f} mm{where}", size=CAPTION_PT, ha="left", va="top", gid=f"short-{v.label}", obstacle=False, math=True)
+        note = f"|{vector_math(v.label)}| = {v.length:.2f} mm{where}"
+        w = text_size(note, CAPTION_PT, math=True)[0]
+        if cursor is None or cursor + w > x + width:
+            y -= 4.6
+            cursor = x
+        sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=f"short-{v.label}", obstacle=False, math=True)
+        cursor += w + 4.0
     if not legend:
         return
     kinds = [k for k in KINDS if any(v.kind == k for v in vectors)]
