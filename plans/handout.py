@@ -118,10 +118,11 @@ def _table(comparisons, lang: str) -> list[list[str]]:
     return translate_table(sheet_table(comparisons), lang)
 
 
-def _equations(graphical, structure) -> list[str]:
+def _equations(graphical, structure) -> dict[str, list[str]]:
+    """Page (``"velocity"``, ``"acceleration"``) -> the vector equations of its plan."""
     from .drawing.sheet import sheet_equations
 
-    return sheet_equations(graphical, driver_label=f"I(0,{structure.driver})")
+    return {page: sheet_equations(graphical, driver_label=f"I(0,{structure.driver})", plans=(page,)) for page in ("velocity", "acceleration")}
 
 
 # --- scales ------------------------------------------------------------------------------
@@ -356,11 +357,15 @@ def handout_pages(
     def where(r) -> str:
         return f"{term('position', lang)} {r.index}:  {r.label}" if multi else r.label
 
-    def head(r, scales):
+    #: the scale factors a page states: those of its drawings
+    stated = {"velocity": ("k_l", "k_v"), "acceleration": ("k_a",)}
+
+    def head(r, scales, page="velocity"):
+        scales = {k: v for k, v in scales.items() if k in stated[page]}
         # the scene's data are on the cover of a multi-position handout: its position pages give the room to the drawings
         if multi:
             return ["§" + where(r), "§" + formula, scale_line(scales, lang), term("scales_per_position", lang)]
-        return ["§" + where(r)] + data + ["§" + formula, scale_line(scales, lang)]
+        return ["§" + where(r)] + (data if page == "velocity" else []) + ["§" + formula, scale_line(scales, lang)]
 
     def at_scales(r, scales):
         g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
@@ -370,8 +375,8 @@ def handout_pages(
     pages_runs = {}
     if solved:
         sample = solved[0]
-        top, bottom = position_page_bands(sample.graphical, lang=lang, header_lines=head(sample, sample.graphical.scales), equations=_equations(sample.graphical, run.structure))
-        frames = position_frames(top, bottom, sample.graphical.acceleration_plan is not None)
+        bands = position_page_bands(sample.graphical, lang=lang, header_lines=lambda page: head(sample, sample.graphical.scales, page), equations=_equations(sample.graphical, run.structure))
+        frames = position_frames(bands)
         frame = max(frames, key=lambda f: _frame_score(run.runs, f, given))
         k_l_common, per_run = handout_scales(run.runs, frame, given)
         if given.get("k_l") is None and len(solved) > 1:  # one position: its page makes room itself
@@ -399,11 +404,21 @@ def handout_pages(
             wider = _make_room(g, frame, {kind: size}, g.scales, fixed)
             return None if wider[key] == g.scales[key] else at_scales(r, {**g.scales, key: wider[key]}).graphical
 
-        fig, g = draw_position_page(at_scales(r, scales), frame=frame, lang=lang, header_lines=lambda g, r=r: head(r, g.scales), equations=_equations(r.graphical, run.structure), footer=footer, rescale=rescale)
-        here = replace(r, graphical=g, comparisons=compare(r.analytic, g))
-        if record is not None:
-            record.append((f"position-{r.index}", here))
-        pages.append((f"position-{r.index}", fig))
+        equations = _equations(r.graphical, run.structure)
+        here = at_scales(r, scales)
+        drawn = []
+        for page, name in (("velocity", "position"), ("acceleration", "acceleration")):
+            if page == "acceleration" and here.graphical.acceleration_plan is None:
+                continue
+            fig, g = draw_position_page(here, frame=frame, page=page, lang=lang, header_lines=lambda g, r=r, page=page: head(r, g.scales, page), equations=equations[page], footer=footer, rescale=rescale)
+            if g is not here.graphical:
+                here = replace(r, graphical=g)
+            drawn.append((f"{name}-{r.index}", fig))
+        here = replace(r, graphical=here.graphical, comparisons=compare(r.analytic, here.graphical))
+        for name, fig in drawn:
+            if record is not None:
+                record.append((name, here))
+            pages.append((name, fig))
         check_head = ["§" + where(r), formula]
         checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here.comparisons, lang), footer=footer)
         for n, page in enumerate(checks):

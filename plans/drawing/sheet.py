@@ -28,15 +28,16 @@ EQ_PT = 8.5
 SHEET_LINE_GAP = 1.5  # mm between the lines of the title and of the equations
 
 
-def sheet_equations(solution, driver_label: str | None = None) -> list[str]:
+def sheet_equations(solution, driver_label: str | None = None, plans=("velocity", "acceleration")) -> list[str]:
     """One line per construction step: ``"RRP(3,4):  v_B = v_A + v_BA;  v_B = …"``, velocity plan first.
 
     With *driver_label* (such as ``"I(0,2)"``) the driver's steps are headed
-    with it instead of the English word ``driver`` (see :func:`label_driver`).
+    with it instead of the English word ``driver`` (see :func:`label_driver`);
+    *plans* says of which plans (both by default).
     """
     lines = []
     for plan in (solution.velocity_plan, solution.acceleration_plan):
-        if plan is None:
+        if plan is None or plan.kind not in plans:
             continue
         for step in plan.steps:
             if step.equations:
