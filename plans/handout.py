@@ -243,23 +243,25 @@ def _frame_score(runs, frame, given) -> float:
                 ratios.append(largest / scales[key] / LARGEST_VECTOR_MM)
                 ratios.append(max(w, h) / scales[key] / PLAN_ACROSS_MM)
     capped = [min(x, 1.5) for x in ratios] or [0.0]
-    return 0.5 * (sum(capped) / len(capped) + min(capped))
+    return 0.2 * sum(capped) / len(capped) + 0.8 * min(capped)
 
 
 def _common_k_l(solved, per_run, frame, given, solution_at, lang: str) -> float:
-    """The k_l of every position page: that of :func:`handout_scales`, enlarged until the largest mechanism, drawn, fits its box."""
+    """The k_l of every position page: that of :func:`handout_scales`, enlarged until every mechanism, drawn, fits its box."""
     from .drawing.blocks import drawing_block
     from .drawing.svg import drawing_rc, new_figure
 
-    def area(pair):
-        w, h, _ = _extents(pair[0].graphical)["k_l"]
-        return w * h
-
-    r, scales = max(zip(solved, per_run), key=area)
-    g = solution_at(r, scales)
-    with drawing_rc():
-        block = drawing_block(new_figure(), "mechanism", g, lang, legend=False)
-    return _make_room(g, frame, {"mechanism": (block.width, block.height)}, scales, {**given, "k_v": 1.0, "k_a": 1.0})["k_l"]
+    k_l = per_run[0]["k_l"]
+    for r, scales in zip(solved, per_run):
+        for _ in range(3):
+            g = solution_at(r, {**scales, "k_l": k_l})
+            with drawing_rc():
+                block = drawing_block(new_figure(), "mechanism", g, lang, legend=False)
+            wider = _make_room(g, frame, {"mechanism": (block.width, block.height)}, g.scales, {**given, "k_v": 1.0, "k_a": 1.0})["k_l"]
+            if wider == k_l:
+                break
+            k_l = wider
+    return k_l
 
 
 def _make_room(g, frame, sizes, scales, given) -> dict[str, float]:
