@@ -177,18 +177,40 @@ def _extents(g) -> dict[str, tuple[float, float, float]]:
     return out
 
 
-def _geometry_box(box) -> tuple[float, float]:
+def _geometry_box(box, fixed=None) -> tuple[float, float]:
+    """What *box* leaves a drawing's geometry [mm]: the box less *fixed* (what does not scale), by default the label and caption room."""
     _, _, w, h = box
-    return max(w - 2 * LABEL_ROOM, 5.0), max(h - 2 * LABEL_ROOM - CAPTION_ROOM, 5.0)
+    fw, fh = fixed if fixed is not None else (2 * LABEL_ROOM, 2 * LABEL_ROOM + CAPTION_ROOM)
+    return max(w - fw, 5.0), max(h - fh, 5.0)
 
 
-def _fit(extent, box, fallback: float) -> float:
-    gw, gh = _geometry_box(box)
+def _fixed_parts(g, lang: str) -> dict[str, tuple[float, float]]:
+    """Kind -> what a drawing of *g* takes beyond its geometry [mm] (margin, labels, supports, driver arcs,
+    caption), measured by drawing it once (never less than the default label and caption room)."""
+    from .drawing.blocks import drawing_block
+    from .drawing.svg import drawing_rc, new_figure
+
+    e = _extents(g)
+    out = {}
+    objects = {"k_l": ("mechanism", g), "k_v": ("velocity", g.velocity_plan), "k_a": ("acceleration", g.acceleration_plan)}
+    with drawing_rc():
+        fig = new_figure()
+        for key, (kind, obj) in objects.items():
+            if obj is None or key not in e:
+                continue
+            block = drawing_block(fig, kind, obj, lang, legend=False)
+            k = g.scales[key]
+            out[kind] = (max(block.width - e[key][0] / k, 2 * LABEL_ROOM), max(block.height - e[key][1] / k, 2 * LABEL_ROOM + CAPTION_ROOM))
+    return out
+
+
+def _fit(extent, box, fallback: float, fixed=None) -> float:
+    gw, gh = _geometry_box(box, fixed)
     need = max(extent[0] / gw, extent[1] / gh)
     return round_up(need) if need > 0 and math.isfinite(need) else fallback
 
 
-def handout_scales(runs, frame, given: dict | None = None) -> tuple[float, list[dict[str, float]]]:
+def handout_scales(runs, frame, given: dict | None = None, fixed: dict | None = None) -> tuple[float, list[dict[str, float]]]:
     """The scale factors of a handout's position pages for the drawing boxes of *frame*.
 
     k_l is common to every position (the mechanism at the same scale on
@@ -197,6 +219,8 @@ def handout_scales(runs, frame, given: dict | None = None) -> tuple[float, list[
     position, each the smallest round factor (:data:`HANDOUT_MANTISSAS`)
     with which that position's plan fits its box, so that every plan fills
     its box.  Each page states its own.  Factors in *given* are kept.
+    *fixed* (kind -> (width, height) [mm], see :func:`_fixed_parts`) is what
+    a drawing takes beyond its geometry; by default a label and caption room.
 
     Returns
     -------
@@ -210,19 +234,19 @@ def handout_scales(runs, frame, given: dict | None = None) -> tuple[float, list[
     else:
         w = max((e["k_l"][0] for e in extents), default=0.0)
         h = max((e["k_l"][1] for e in extents), default=0.0)
-        k_l = _fit((w, h), frame.boxes["mechanism"], solved[0].graphical.scales["k_l"] if solved else 1.0)
+        k_l = _fit((w, h), frame.boxes["mechanism"], solved[0].graphical.scales["k_l"] if solved else 1.0, (fixed or {}).get("mechanism"))
     per_run = []
     for r, e in zip(solved, extents):
         scales = {"k_l": k_l}
         for key, kind in (("k_v", "velocity"), ("k_a", "acceleration")):
             if key not in e:
                 continue
-            scales[key] = given[key] if key in given else _fit(e[key], frame.boxes[kind], r.graphical.scales[key])
+            scales[key] = given[key] if key in given else _fit(e[key], frame.boxes[kind], r.graphical.scales[key], (fixed or {}).get(kind))
         per_run.append(scales)
     return k_l, per_run
 
 
-def _frame_score(runs, frame, given) -> float:
+def _frame_score(runs, frame, given, fixed=None) -> float:
     """How well *frame* serves the drawings: the mean and the worst ratio of drawn size to what a page must give.
 
     Ratios (each capped at 1.5: beyond that a drawing is big enough) of the
@@ -232,7 +256,7 @@ def _frame_score(runs, frame, given) -> float:
     their mean and their minimum, so that a frame is chosen that makes the
     drawings large without leaving one of them small.
     """
-    k_l, per_run = handout_scales(runs, frame, given)
+    k_l, per_run = handout_scales(runs, frame, given, fixed)
     ratios = []
     for r, scales in zip([r for r in runs if r.ok], per_run):
         e = _extents(r.graphical)
@@ -379,8 +403,9 @@ def handout_pages(
         sample = solved[0]
         bands = position_page_bands(sample.graphical, lang=lang, header_lines=lambda page: head(sample, sample.graphical.scales, page), equations=_equations(sample.graphical, run.structure))
         frames = position_frames(bands)
-        frame = max(frames, key=lambda f: _frame_score(run.runs, f, given))
-        k_l_common, per_run = handout_scales(run.runs, frame, given)
+        unscaled = _fixed_parts(sample.graphical, lang)  # what the drawings take beyond their geometry
+        frame = max(frames, key=lambda f: _frame_score(run.runs, f, given, unscaled))
+        k_l_common, per_run = handout_scales(run.runs, frame, given, unscaled)
         if given.get("k_l") is None and len(solved) > 1:  # one position: its page makes room itself
             k_l_common = _common_k_l(solved, per_run, frame, given, lambda r, sc: at_scales(r, sc).graphical, lang)
         for r, scales in zip(solved, per_run):

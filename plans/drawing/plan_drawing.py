@@ -21,6 +21,7 @@ from shapely.geometry import MultiPoint
 from .._text import SUBSCRIPT
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
+from .numerals import localised, scale_caption
 
 from .style import (
     CAPTION_PT,
@@ -358,12 +359,12 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     x, y = b.xmin, b.ymin - 3.0
     sketch.text(complex(x, y), heading, size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
-    sketch.text(complex(x, y), f"{symbol} = {fmt_number(plan.scale)} {units}", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)
+    sketch.text(complex(x, y), scale_caption(symbol, fmt_number(plan.scale), units, lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     for v, letter in notes:
         # language-neutral: the vector, its drawn length, and the point that stands for it
         y -= 4.6
         where = f"  ({letter})" if letter else ""
-        sketch.text(complex(x, y), f"|{vector_math(v.label)}| = {v.length:.2f} mm{where}", size=CAPTION_PT, ha="left", va="top", gid=f"short-{v.label}", obstacle=False, math=True)
+        sketch.text(complex(x, y), f"|{vector_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm{where}", size=CAPTION_PT, ha="left", va="top", gid=f"short-{v.label}", obstacle=False, math=True)
     if not legend:
         return
     kinds = [k for k in KINDS if any(v.kind == k for v in vectors)]

@@ -9,6 +9,7 @@ portrait) that holds them, or a larger custom page when even A0 does not.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 from .._files import replace_all
@@ -20,12 +21,25 @@ from .layout import choose_page
 from .style import HEADING_PT, TITLE_PT
 from .svg import drawing_rc, new_figure, render_svg
 
-__all__ = ["draw_sheet", "write_drawings", "sheet_equations", "translate_table", "label_driver"]
+__all__ = ["draw_sheet", "write_drawings", "sheet_equations", "guide_names", "translate_table", "label_driver"]
 
 PAGE_MARGIN = 12.0  # mm
 GAP = 8.0  # mm between blocks
 EQ_PT = 8.5
 SHEET_LINE_GAP = 1.5  # mm between the lines of the title and of the equations
+
+
+#: a guide as the construction names it, ``frame.ram`` or ``4.slot``: the body's key before the scene's name
+_GUIDE_KEY = re.compile(r"(?<![\w.])(?:frame|\d+)\.([^\W\d]\w*)")
+
+
+def guide_names(line: str) -> str:
+    """*line* with each guide named as the scene names it: ``∥ frame.ram`` → ``∥ ram``, ``∥ 4.slot`` → ``∥ slot``.
+
+    >>> guide_names("v_E = v_E4 + v_EE4  (v_EE4 ∥ 4.slot);  a = 0.5 m")
+    'v_E = v_E4 + v_EE4  (v_EE4 ∥ slot);  a = 0.5 m'
+    """
+    return _GUIDE_KEY.sub(r"\1", line)
 
 
 def sheet_equations(solution, driver_label: str | None = None, plans=("velocity", "acceleration")) -> list[str]:
@@ -41,7 +55,7 @@ def sheet_equations(solution, driver_label: str | None = None, plans=("velocity"
             continue
         for step in plan.steps:
             if step.equations:
-                lines.append(f"{step.group}:  " + ";   ".join(step.equations))
+                lines.append(guide_names(f"{step.group}:  " + ";   ".join(step.equations)))
     return lines if driver_label is None else label_driver(lines, driver_label)
 
 
