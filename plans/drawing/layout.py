@@ -23,6 +23,10 @@ __all__ = [
     "A4",
     "PAGES",
     "PAGE_MARGIN",
+    "SHEET_FORMATS",
+    "FRAME_LEFT",
+    "FRAME_OTHER",
+    "TITLE_BLOCK_W",
     "GAP",
     "DATA_PT",
     "FOOTER_PT",
@@ -41,6 +45,13 @@ __all__ = [
 A4 = (210.0, 297.0)  # mm, portrait
 #: ISO 216 pages [mm], landscape; portrait is tried as well.
 PAGES = {"A4": (297.0, 210.0), "A3": (420.0, 297.0), "A2": (594.0, 420.0), "A1": (841.0, 594.0), "A0": (1189.0, 841.0)}
+#: Sheet formats, landscape, smallest first: A4 or A3 as a rule; the larger ones only for what A3 cannot hold.
+SHEET_FORMATS = (("A4", (297.0, 210.0)), ("A3", (420.0, 297.0)), ("A2", (594.0, 420.0)), ("A1", (841.0, 594.0)), ("A0", (1189.0, 841.0)))
+#: The drawing frame [mm] (ISO 5457): 20 mm on the left (binding), 10 mm elsewhere.
+FRAME_LEFT = 20.0
+FRAME_OTHER = 10.0
+#: The title block [mm] (ISO 7200): in the lower right corner of the frame, 180 mm wide.
+TITLE_BLOCK_W = 180.0
 PAGE_MARGIN = 11.0  # mm
 GAP = 5.0  # mm between blocks
 DATA_PT = 8.0

@@ -27,7 +27,7 @@ from ..i18n import term
 from ._canvas import Sketch, fit_axes, fmt_number
 from .blocks import Block, drawing_block, legend_block, pretty_equation, rows_block, table_block, text_rows
 from .layout import A4, GAP, PAGE_MARGIN, header, header_height, new_page, place_in_box
-from .sheet import draw_sheet, sheet_equations
+from .sheet import branch_lines, draw_sheet, sheet_equations
 from .style import HEADING_PT, MARGIN_MM, SMALL_PT
 from .svg import drawing_rc
 from .layout import DATA_PT
@@ -71,6 +71,7 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
         table=sheet_table(run.comparisons),
         lang=lang,
         title=_position_title(run, total or run.index + 1, lang),
+        branches=branch_lines(run.analytic.branches, lang),
     )
 
 
