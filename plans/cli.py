@@ -550,7 +550,9 @@ def _draw(args) -> int:
                 from .drawing import draw_sheet
                 from .drawing.formats import save_figure
 
-                figure = draw_sheet(graphical, formula=analytic.structure.formula, table=sheet_table_rows, lang=args.lang)
+                from .drawing.sheet import branch_lines
+
+                figure = draw_sheet(graphical, formula=analytic.structure.formula, table=sheet_table_rows, lang=args.lang, branches=branch_lines(analytic.branches, args.lang))
                 paths = [save_figure(figure, args.output)]
             else:
                 paths = write_drawings(
@@ -560,6 +562,7 @@ def _draw(args) -> int:
                     table=sheet_table_rows,
                     lang=args.lang,
                     format=args.format,
+                    branches=_branch_lines(analytic, args.lang),
                 )
     for path in paths:
         print(path)
@@ -655,6 +658,12 @@ def _error_text(exc: PlansError, scene: Scene | None) -> str:
     if isinstance(exc, (AssemblyError, SingularPositionError)) and scene.notes:
         text += "; note: " + "; ".join(scene.notes)
     return text
+
+
+def _branch_lines(analytic, lang: str) -> list[str]:
+    from .drawing.sheet import branch_lines
+
+    return branch_lines(analytic.branches, lang)
 
 
 def main(argv: list[str] | None = None) -> int:

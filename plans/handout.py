@@ -119,10 +119,11 @@ def _table(run, lang: str) -> list[list[str]]:
     return translate_table(sheet_table(run.comparisons, run.graphical, run.analytic), lang)
 
 
-def _equations(graphical, structure) -> list[str]:
+def _equations(graphical, structure) -> dict[str, list[str]]:
+    """Page (``"velocity"``, ``"acceleration"``) -> the vector equations of its plan."""
     from .drawing.sheet import sheet_equations
 
-    return sheet_equations(graphical, driver_label=f"I(0,{structure.driver})")
+    return {page: sheet_equations(graphical, driver_label=f"I(0,{structure.driver})", plans=(page,)) for page in ("velocity", "acceleration")}
 
 
 # --- scales ------------------------------------------------------------------------------
@@ -177,18 +178,40 @@ def _extents(g) -> dict[str, tuple[float, float, float]]:
     return out
 
 
-def _geometry_box(box) -> tuple[float, float]:
+def _geometry_box(box, fixed=None) -> tuple[float, float]:
+    """What *box* leaves a drawing's geometry [mm]: the box less *fixed* (what does not scale), by default the label and caption room."""
     _, _, w, h = box
-    return max(w - 2 * LABEL_ROOM, 5.0), max(h - 2 * LABEL_ROOM - CAPTION_ROOM, 5.0)
+    fw, fh = fixed if fixed is not None else (2 * LABEL_ROOM, 2 * LABEL_ROOM + CAPTION_ROOM)
+    return max(w - fw, 5.0), max(h - fh, 5.0)
 
 
-def _fit(extent, box, fallback: float) -> float:
-    gw, gh = _geometry_box(box)
+def _fixed_parts(g, lang: str) -> dict[str, tuple[float, float]]:
+    """Kind -> what a drawing of *g* takes beyond its geometry [mm] (margin, labels, supports, driver arcs,
+    caption), measured by drawing it once (never less than the default label and caption room)."""
+    from .drawing.blocks import drawing_block
+    from .drawing.svg import drawing_rc, new_figure
+
+    e = _extents(g)
+    out = {}
+    objects = {"k_l": ("mechanism", g), "k_v": ("velocity", g.velocity_plan), "k_a": ("acceleration", g.acceleration_plan)}
+    with drawing_rc():
+        fig = new_figure()
+        for key, (kind, obj) in objects.items():
+            if obj is None or key not in e:
+                continue
+            block = drawing_block(fig, kind, obj, lang, legend=False)
+            k = g.scales[key]
+            out[kind] = (max(block.width - e[key][0] / k, 2 * LABEL_ROOM), max(block.height - e[key][1] / k, 2 * LABEL_ROOM + CAPTION_ROOM))
+    return out
+
+
+def _fit(extent, box, fallback: float, fixed=None) -> float:
+    gw, gh = _geometry_box(box, fixed)
     need = max(extent[0] / gw, extent[1] / gh)
     return round_up(need) if need > 0 and math.isfinite(need) else fallback
 
 
-def handout_scales(runs, frame, given: dict | None = None) -> tuple[float, list[dict[str, float]]]:
+def handout_scales(runs, frame, given: dict | None = None, fixed: dict | None = None) -> tuple[float, list[dict[str, float]]]:
     """The scale factors of a handout's position pages for the drawing boxes of *frame*.
 
     k_l is common to every position (the mechanism at the same scale on
@@ -197,6 +220,8 @@ def handout_scales(runs, frame, given: dict | None = None) -> tuple[float, list[
     position, each the smallest round factor (:data:`HANDOUT_MANTISSAS`)
     with which that position's plan fits its box, so that every plan fills
     its box.  Each page states its own.  Factors in *given* are kept.
+    *fixed* (kind -> (width, height) [mm], see :func:`_fixed_parts`) is what
+    a drawing takes beyond its geometry; by default a label and caption room.
 
     Returns
     -------
@@ -210,19 +235,19 @@ def handout_scales(runs, frame, given: dict | None = None) -> tuple[float, list[
     else:
         w = max((e["k_l"][0] for e in extents), default=0.0)
         h = max((e["k_l"][1] for e in extents), default=0.0)
-        k_l = _fit((w, h), frame.boxes["mechanism"], solved[0].graphical.scales["k_l"] if solved else 1.0)
+        k_l = _fit((w, h), frame.boxes["mechanism"], solved[0].graphical.scales["k_l"] if solved else 1.0, (fixed or {}).get("mechanism"))
     per_run = []
     for r, e in zip(solved, extents):
         scales = {"k_l": k_l}
         for key, kind in (("k_v", "velocity"), ("k_a", "acceleration")):
             if key not in e:
                 continue
-            scales[key] = given[key] if key in given else _fit(e[key], frame.boxes[kind], r.graphical.scales[key])
+            scales[key] = given[key] if key in given else _fit(e[key], frame.boxes[kind], r.graphical.scales[key], (fixed or {}).get(kind))
         per_run.append(scales)
     return k_l, per_run
 
 
-def _frame_score(runs, frame, given) -> float:
+def _frame_score(runs, frame, given, fixed=None) -> float:
     """How well *frame* serves the drawings: the mean and the worst ratio of drawn size to what a page must give.
 
     Ratios (each capped at 1.5: beyond that a drawing is big enough) of the
@@ -232,7 +257,7 @@ def _frame_score(runs, frame, given) -> float:
     their mean and their minimum, so that a frame is chosen that makes the
     drawings large without leaving one of them small.
     """
-    k_l, per_run = handout_scales(runs, frame, given)
+    k_l, per_run = handout_scales(runs, frame, given, fixed)
     ratios = []
     for r, scales in zip([r for r in runs if r.ok], per_run):
         e = _extents(r.graphical)
@@ -243,23 +268,25 @@ def _frame_score(runs, frame, given) -> float:
                 ratios.append(largest / scales[key] / LARGEST_VECTOR_MM)
                 ratios.append(max(w, h) / scales[key] / PLAN_ACROSS_MM)
     capped = [min(x, 1.5) for x in ratios] or [0.0]
-    return 0.5 * (sum(capped) / len(capped) + min(capped))
+    return 0.2 * sum(capped) / len(capped) + 0.8 * min(capped)
 
 
 def _common_k_l(solved, per_run, frame, given, solution_at, lang: str) -> float:
-    """The k_l of every position page: that of :func:`handout_scales`, enlarged until the largest mechanism, drawn, fits its box."""
+    """The k_l of every position page: that of :func:`handout_scales`, enlarged until every mechanism, drawn, fits its box."""
     from .drawing.blocks import drawing_block
     from .drawing.svg import drawing_rc, new_figure
 
-    def area(pair):
-        w, h, _ = _extents(pair[0].graphical)["k_l"]
-        return w * h
-
-    r, scales = max(zip(solved, per_run), key=area)
-    g = solution_at(r, scales)
-    with drawing_rc():
-        block = drawing_block(new_figure(), "mechanism", g, lang, legend=False)
-    return _make_room(g, frame, {"mechanism": (block.width, block.height)}, scales, {**given, "k_v": 1.0, "k_a": 1.0})["k_l"]
+    k_l = per_run[0]["k_l"]
+    for r, scales in zip(solved, per_run):
+        for _ in range(3):
+            g = solution_at(r, {**scales, "k_l": k_l})
+            with drawing_rc():
+                block = drawing_block(new_figure(), "mechanism", g, lang, legend=False)
+            wider = _make_room(g, frame, {"mechanism": (block.width, block.height)}, g.scales, {**given, "k_v": 1.0, "k_a": 1.0})["k_l"]
+            if wider == k_l:
+                break
+            k_l = wider
+    return k_l
 
 
 def _make_room(g, frame, sizes, scales, given) -> dict[str, float]:
@@ -359,11 +386,15 @@ def handout_pages(
     def where(r) -> str:
         return f"{term('position', lang)} {r.index}:  {r.label}" if multi else r.label
 
-    def head(r, scales):
+    #: the scale factors a page states: those of its drawings
+    stated = {"velocity": ("k_l", "k_v"), "acceleration": ("k_a",)}
+
+    def head(r, scales, page="velocity"):
+        scales = {k: v for k, v in scales.items() if k in stated[page]}
         # the scene's data are on the cover of a multi-position handout: its position pages give the room to the drawings
         if multi:
             return ["§" + where(r), "§" + formula, scale_line(scales, lang), term("scales_per_position", lang)]
-        return ["§" + where(r)] + data + ["§" + formula, scale_line(scales, lang)]
+        return ["§" + where(r)] + (data if page == "velocity" else []) + ["§" + formula, scale_line(scales, lang)]
 
     def at_scales(r, scales):
         g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
@@ -373,10 +404,11 @@ def handout_pages(
     pages_runs = {}
     if solved:
         sample = solved[0]
-        top, bottom = position_page_bands(sample.graphical, lang=lang, header_lines=head(sample, sample.graphical.scales), equations=_equations(sample.graphical, run.structure))
-        frames = position_frames(top, bottom, sample.graphical.acceleration_plan is not None)
-        frame = max(frames, key=lambda f: _frame_score(run.runs, f, given))
-        k_l_common, per_run = handout_scales(run.runs, frame, given)
+        bands = position_page_bands(sample.graphical, lang=lang, header_lines=lambda page: head(sample, sample.graphical.scales, page), equations=_equations(sample.graphical, run.structure))
+        frames = position_frames(bands)
+        unscaled = _fixed_parts(sample.graphical, lang)  # what the drawings take beyond their geometry
+        frame = max(frames, key=lambda f: _frame_score(run.runs, f, given, unscaled))
+        k_l_common, per_run = handout_scales(run.runs, frame, given, unscaled)
         if given.get("k_l") is None and len(solved) > 1:  # one position: its page makes room itself
             k_l_common = _common_k_l(solved, per_run, frame, given, lambda r, sc: at_scales(r, sc).graphical, lang)
         for r, scales in zip(solved, per_run):
@@ -402,11 +434,21 @@ def handout_pages(
             wider = _make_room(g, frame, {kind: size}, g.scales, fixed)
             return None if wider[key] == g.scales[key] else at_scales(r, {**g.scales, key: wider[key]}).graphical
 
-        fig, g = draw_position_page(at_scales(r, scales), frame=frame, lang=lang, header_lines=lambda g, r=r: head(r, g.scales), equations=_equations(r.graphical, run.structure), footer=footer, rescale=rescale)
-        here = replace(r, graphical=g, comparisons=compare(r.analytic, g))
-        if record is not None:
-            record.append((f"position-{r.index}", here))
-        pages.append((f"position-{r.index}", fig))
+        equations = _equations(r.graphical, run.structure)
+        here = at_scales(r, scales)
+        drawn = []
+        for page, name in (("velocity", "position"), ("acceleration", "acceleration")):
+            if page == "acceleration" and here.graphical.acceleration_plan is None:
+                continue
+            fig, g = draw_position_page(here, frame=frame, page=page, lang=lang, header_lines=lambda g, r=r, page=page: head(r, g.scales, page), equations=equations[page], footer=footer, rescale=rescale)
+            if g is not here.graphical:
+                here = replace(r, graphical=g)
+            drawn.append((f"{name}-{r.index}", fig))
+        here = replace(r, graphical=here.graphical, comparisons=compare(r.analytic, here.graphical))
+        for name, fig in drawn:
+            if record is not None:
+                record.append((name, here))
+            pages.append((name, fig))
         check_head = ["§" + where(r), formula]
         checks = draw_check_pages(here, lang=lang, header_lines=check_head, loops=loop_equations(here.analytic), table=_table(here, lang), footer=footer)
         for n, page in enumerate(checks):

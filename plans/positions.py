@@ -176,7 +176,7 @@ def cycle_positions(scene: Scene, count: int, *, closed: bool = False) -> list[f
 
 
 def position_text(scene: Scene, position: float, digits: int = 1) -> str:
-    """``"φ₂ = 145.0°"`` (angle in [0, 360)) or ``"s = 120.0 mm"``."""
+    """``"φ₂ = 145.0°"`` (angle in [0, 360)) or ``"s₂ = −120.0 mm"`` (a true minus sign)."""
     driver = scene.driver
     sub = subscript(driver.link)
     if isinstance(driver, Crank):
@@ -184,7 +184,7 @@ def position_text(scene: Scene, position: float, digits: int = 1) -> str:
         if round(degrees, digits) >= 360.0:
             degrees = 0.0
         return f"φ{sub} = {degrees:.{digits}f}°"
-    return f"s{sub} = {position * 1e3:.{digits}f} mm"
+    return f"s{sub} = {position * 1e3:.{digits}f} mm".replace("-", "\u2212")  # a true minus sign
 
 
 # --- scales ---------------------------------------------------------------------------

@@ -48,27 +48,30 @@ def single(tmp_path_factory):
 
 
 def test_the_pages_of_a_multi_position_handout(russian):
-    assert len(russian.pages) == 7
+    assert len(russian.pages) == 9
     for page in russian.pages:
         assert (float(page.mediabox.width), float(page.mediabox.height)) == pytest.approx(A4_PT, abs=0.01)
     texts = [page.extract_text() for page in russian.pages]
     assert "План положений механизма" in texts[0]  # the plan of positions
     assert "Положения" in texts[0] and "0:  φ₂ = 60,0°" in texts[0] and "1:  φ₂ = 240,0°" in texts[0]  # decimal comma in Russian
-    for k, (graphical, check) in enumerate(((1, 2), (3, 4))):
-        assert f"Положение {k}:" in texts[graphical]
-        assert "План скоростей" in texts[graphical] and "План ускорений" in texts[graphical]
-        assert "Векторные уравнения планов" in texts[graphical]
-        assert "Масштабы:" in texts[graphical]
+    # each position: the mechanism and the velocity plan, the acceleration plan, the check
+    for k, (velocity, acceleration, check) in enumerate(((1, 2, 3), (4, 5, 6))):
+        for graphical in (velocity, acceleration):
+            assert f"Положение {k}:" in texts[graphical]
+            assert "Векторные уравнения планов" in texts[graphical]
+            assert "Масштабы:" in texts[graphical]
+        assert "План скоростей" in texts[velocity] and "План ускорений" not in texts[velocity]
+        assert "План ускорений" in texts[acceleration] and "План скоростей" not in texts[acceleration]
         assert "Аналитическая проверка: метод комплексных чисел" in texts[check]
         assert "RRR(3,4)" in texts[check] and "величина" in texts[check]
-    assert "Кинематические диаграммы за цикл" in texts[5] and "Звенья" in texts[5]
-    assert "Точки: скорость и ускорение" in texts[6]
+    assert "Кинематические диаграммы за цикл" in texts[7] and "Звенья" in texts[7]
+    assert "Точки: скорость и ускорение" in texts[8]
     for number, text in enumerate(texts, start=1):
-        assert f"стр. {number}/7" in text
+        assert f"стр. {number}/9" in text
 
 
 def test_one_k_l_on_every_position_page_and_the_page_says_k_v_k_a_are_its_own(russian):
-    pages = [russian.pages[1].extract_text(), russian.pages[3].extract_text()]
+    pages = [russian.pages[1].extract_text(), russian.pages[4].extract_text()]
     k_l = {re.search(r"k\s*l\s*= ([0-9,]+) m/mm", text).group(1) for text in pages}
     assert all("," in value for value in k_l)  # decimal comma in Russian
     assert len(k_l) == 1
@@ -106,14 +109,14 @@ def test_cyrillic_is_drawn_with_real_glyphs_not_missing_glyph_boxes(russian):
     assert len(CYRILLIC.findall(text)) > 500
 
 
-def test_a_one_position_handout_is_two_pages_the_plans_and_the_check(single):
+def test_a_one_position_handout_is_three_pages_the_plans_and_the_check(single):
     reader = pypdf.PdfReader(single)
-    assert len(reader.pages) == 2
-    first, second = (page.extract_text() for page in reader.pages)
+    assert len(reader.pages) == 3
+    first, accel, second = (page.extract_text() for page in reader.pages)
     assert "Offset slider-crank (E2)" in first and "φ₂ = 45.0°" in first
-    assert "Mechanism" in first and "Velocity plan" in first and "Acceleration plan" in first
+    assert "Mechanism" in first and "Velocity plan" in first and "Acceleration plan" in accel
     assert "Structural formula:  I(0,2) → RRP(3,4)" in first
-    assert "Vector equations of the plans" in first
+    assert "Vector equations of the plans" in first and "Vector equations of the plans" in accel
     assert "Graphical against analytic" in second and "rel. error" in second
     assert "Analytic check: complex-number method" in second
     assert "−16.04" in second  # v_B of E2 on the loop line, with a true minus sign
@@ -128,11 +131,12 @@ def test_the_pdf_is_the_same_bytes_every_time(single, tmp_path):
 
 def test_svg_pages(tmp_path):
     paths = write_handout(plans.load(plans.example_path("slider-crank")), tmp_path / "page.svg", lang="sl")
-    assert [p.name for p in paths] == ["page-01.svg", "page-02.svg"]  # zero-padded: they sort in page order
+    assert [p.name for p in paths] == ["page-01.svg", "page-02.svg", "page-03.svg"]  # zero-padded: they sort in page order
     root = ET.parse(paths[0]).getroot()
     assert (root.get("width"), root.get("height")) == ("210mm", "297mm")
     text = " ".join("".join(t.itertext()) for t in root.iter(f"{SVG}text"))
-    assert "Načrt hitrosti" in text and "Načrt pospeškov" in text and "Kinematska shema" in text
+    second = " ".join("".join(t.itertext()) for t in ET.parse(paths[1]).getroot().iter(f"{SVG}text"))
+    assert "Načrt hitrosti" in text and "Načrt pospeškov" in second and "Kinematska shema" in text
 
 
 @pytest.mark.parametrize(
@@ -164,8 +168,8 @@ def test_a_single_position_that_cannot_assemble_is_the_solvers_error(tmp_path):
 def test_a_position_that_cannot_assemble_gets_a_page_that_says_so():
     pages = handout_pages(plans.loads(STUCK), positions="10, 180 deg")
     names = [name for name, _ in pages]
-    assert names == ["cover", "position-0", "check-0", "unsolved-1", "diagram-links", "diagram-points"]
-    words = [t.get_text() for t in pages[3][1].findobj(lambda a: hasattr(a, "get_text"))]
+    assert names == ["cover", "position-0", "acceleration-0", "check-0", "unsolved-1", "diagram-links", "diagram-points"]
+    words = [t.get_text() for t in pages[4][1].findobj(lambda a: hasattr(a, "get_text"))]
     assert any("cannot assemble" in w for w in words)
 
 

@@ -20,7 +20,7 @@ def test_progress_shows_on_a_terminal_and_not_with_quiet(tmp_path, monkeypatch, 
     monkeypatch.setattr("sys.stderr", terminal)
     assert main(["handout", "--example", "slider-crank", "-o", str(tmp_path / "h.pdf")]) == 0
     shown = terminal.getvalue()
-    assert "page 1/2" in shown and "page 2/2" in shown and "\r" in shown
+    assert "page 1/3" in shown and "page 3/3" in shown and "\r" in shown
     quiet = _Terminal()
     monkeypatch.setattr("sys.stderr", quiet)
     assert main(["handout", "--example", "slider-crank", "-o", str(tmp_path / "q.pdf"), "--quiet"]) == 0
@@ -31,7 +31,7 @@ def test_no_progress_when_stderr_is_not_a_terminal(tmp_path, capsys):
     assert main(["handout", "--example", "slider-crank", "-o", str(tmp_path / "h.svg")]) == 0
     captured = capsys.readouterr()
     assert captured.err == ""
-    assert captured.out.split() == [str(tmp_path / "h-01.svg"), str(tmp_path / "h-02.svg")]
+    assert captured.out.split() == [str(tmp_path / "h-01.svg"), str(tmp_path / "h-02.svg"), str(tmp_path / "h-03.svg")]
 
 
 def test_ctrl_c_is_one_line_exit_130_and_no_file(tmp_path, monkeypatch, capsys):

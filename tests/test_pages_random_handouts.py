@@ -197,7 +197,7 @@ def test_random_mechanisms_give_a_handout_or_one_clear_line(tmp_path):
         if suffix:
             assert paths and all(p.stat().st_size > 1000 for p in paths), (n, text)
         else:
-            assert len(pages) == 2, n
+            assert len(pages) == 3, n  # mechanism and velocity plan, acceleration plan, check
         written += 1
     assert kinds == set(KINDS)
     assert written + refused == COUNT

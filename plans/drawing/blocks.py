@@ -163,11 +163,11 @@ def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT, he
     return Block(width, height, place, kind="table")
 
 
-def legend_block(graphical, lang: str, columns: int = 1) -> Block:
-    """One legend for both plans: each kind of vector drawn, and construction lines (in *columns*, filled down)."""
+def legend_block(graphical, lang: str, columns: int = 1, plans=("velocity", "acceleration")) -> Block:
+    """One legend for the *plans* (both by default): each kind of vector drawn, and construction lines (in *columns*, filled down)."""
     words: dict[str, list[str]] = {}
     for plan in (graphical.velocity_plan, graphical.acceleration_plan):
-        if plan is None:
+        if plan is None or plan.kind not in plans:
             continue
         kinds = {v.kind for v in vectors_drawn(plan)}
         for kind in KINDS:

@@ -3,7 +3,8 @@
 * :func:`new_page` — an empty page of a given size [mm] with a paper axes in mm;
 * :func:`header`, :func:`header_height`, :func:`footer`, :func:`stamp_page_number`;
 * :func:`position_frames`, :func:`place_in_box` — the arrangements of a
-  position page's drawings (boxes), and a block placed in its box;
+  position's drawings (boxes on its velocity and acceleration pages), and a
+  block placed in its box;
 * :func:`choose_page` — the smallest ISO page that holds a content box.
 
 User text (the title) is drawn as plain text (:func:`plans._text.user_text`).
@@ -22,6 +23,10 @@ __all__ = [
     "A4",
     "PAGES",
     "PAGE_MARGIN",
+    "SHEET_FORMATS",
+    "FRAME_LEFT",
+    "FRAME_OTHER",
+    "TITLE_BLOCK_W",
     "GAP",
     "DATA_PT",
     "FOOTER_PT",
@@ -40,6 +45,13 @@ __all__ = [
 A4 = (210.0, 297.0)  # mm, portrait
 #: ISO 216 pages [mm], landscape; portrait is tried as well.
 PAGES = {"A4": (297.0, 210.0), "A3": (420.0, 297.0), "A2": (594.0, 420.0), "A1": (841.0, 594.0), "A0": (1189.0, 841.0)}
+#: Sheet formats, landscape, smallest first: A4 or A3 as a rule; the larger ones only for what A3 cannot hold.
+SHEET_FORMATS = (("A4", (297.0, 210.0)), ("A3", (420.0, 297.0)), ("A2", (594.0, 420.0)), ("A1", (841.0, 594.0)), ("A0", (1189.0, 841.0)))
+#: The drawing frame [mm] (ISO 5457): 20 mm on the left (binding), 10 mm elsewhere.
+FRAME_LEFT = 20.0
+FRAME_OTHER = 10.0
+#: The title block [mm] (ISO 7200): in the lower right corner of the frame, 180 mm wide.
+TITLE_BLOCK_W = 180.0
 PAGE_MARGIN = 11.0  # mm
 GAP = 5.0  # mm between blocks
 DATA_PT = 8.0
@@ -111,54 +123,59 @@ def choose_page(width: float, height: float, margin: float) -> tuple[str, tuple[
 
 
 class Frame:
-    """Boxes [mm] (x, y of the lower-left corner, width, height) for the drawings of a position page.
+    """Boxes [mm] (x, y of the lower-left corner, width, height) for the drawings of a position's pages.
 
     ``boxes`` has ``"mechanism"``, ``"velocity"`` and (when there is one)
-    ``"acceleration"``; *name* says which arrangement it is.
+    ``"acceleration"``; ``pages`` says on which page each is drawn
+    (``"velocity"``: the mechanism and the velocity plan;
+    ``"acceleration"``: the acceleration plan alone); *name* says which
+    arrangement it is.
     """
 
-    def __init__(self, name: str, boxes: dict[str, tuple[float, float, float, float]]):
+    def __init__(self, name: str, boxes: dict[str, tuple[float, float, float, float]], pages: dict[str, str] | None = None):
         self.name = name
         self.boxes = boxes
+        self.pages = pages or {kind: "velocity" for kind in boxes}
+
+    def on(self, page: str) -> dict[str, tuple[float, float, float, float]]:
+        """The boxes drawn on *page* (``"velocity"`` or ``"acceleration"``)."""
+        return {kind: box for kind, box in self.boxes.items() if self.pages[kind] == page}
 
     def __repr__(self) -> str:
         return f"Frame({self.name!r}, {self.boxes!r})"
 
 
-def position_frames(top: float, bottom: float, has_acceleration: bool, size=A4) -> list[Frame]:
-    """The arrangements of a position page's drawings between *bottom* and *top* [mm] to choose from.
+def position_frames(bands: dict[str, tuple[float, float]], size=A4) -> list[Frame]:
+    """The arrangements of a position's drawings to choose from, on two A4 portrait pages.
 
-    * ``top-N``: the mechanism across the page (N % of the height), the plans
-      side by side under it;
+    *bands* gives (top, bottom) [mm] of the room each page leaves its
+    drawings: ``"velocity"`` (the mechanism and the velocity plan) and, when
+    there is an acceleration plan, ``"acceleration"`` (that plan alone, the
+    whole room).  On the velocity page:
+
+    * ``top-N``: the mechanism across the page (N % of the height), the
+      velocity plan under it;
     * ``left-N``: the mechanism in a column on the left (N % of the width),
-      the plans one above the other on the right;
-    * ``rows``: mechanism, velocity plan, acceleration plan one above the other.
+      the velocity plan on the right.
     """
     x0 = PAGE_MARGIN
     width = size[0] - 2 * PAGE_MARGIN
+    top, bottom = bands["velocity"]
     height = top - bottom
+    extra: dict[str, tuple[float, float, float, float]] = {}
+    if "acceleration" in bands:
+        a_top, a_bottom = bands["acceleration"]
+        extra["acceleration"] = (x0, a_bottom, width, a_top - a_bottom)
+    pages = {"mechanism": "velocity", "velocity": "velocity", "acceleration": "acceleration"}
     frames = []
-    for share in (0.35, 0.45, 0.55):
-        hm = height * share
-        hp = height - hm - GAP
-        if has_acceleration:
-            wp = (width - GAP) / 2
-            boxes = {"mechanism": (x0, top - hm, width, hm), "velocity": (x0, bottom, wp, hp), "acceleration": (x0 + wp + GAP, bottom, wp, hp)}
-        else:
-            boxes = {"mechanism": (x0, top - hm, width, hm), "velocity": (x0, bottom, width, hp)}
-        frames.append(Frame(f"top-{round(share * 100)}", boxes))
     for share in (0.4, 0.5, 0.6):
+        hm = height * share
+        boxes = {"mechanism": (x0, top - hm, width, hm), "velocity": (x0, bottom, width, height - hm - GAP), **extra}
+        frames.append(Frame(f"top-{round(share * 100)}", boxes, pages))
+    for share in (0.5, 0.6):
         wm = width * share
-        wp = width - wm - GAP
-        if has_acceleration:
-            hp = (height - GAP) / 2
-            boxes = {"mechanism": (x0, bottom, wm, height), "velocity": (x0 + wm + GAP, bottom + hp + GAP, wp, hp), "acceleration": (x0 + wm + GAP, bottom, wp, hp)}
-        else:
-            boxes = {"mechanism": (x0, bottom, wm, height), "velocity": (x0 + wm + GAP, bottom, wp, height)}
-        frames.append(Frame(f"left-{round(share * 100)}", boxes))
-    if has_acceleration:
-        h = (height - 2 * GAP) / 3
-        frames.append(Frame("rows", {"mechanism": (x0, bottom + 2 * (h + GAP), width, h), "velocity": (x0, bottom + h + GAP, width, h), "acceleration": (x0, bottom, width, h)}))
+        boxes = {"mechanism": (x0, bottom, wm, height), "velocity": (x0 + wm + GAP, bottom, width - wm - GAP, height), **extra}
+        frames.append(Frame(f"left-{round(share * 100)}", boxes, pages))
     return frames
 
 

@@ -30,6 +30,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 
 from .._text import SUBSCRIPT
 from ._canvas import Sketch, fmt_number, sketch_on, unit
+from .numerals import scale_caption
 from .labels import place_label
 from ..i18n import term
 from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, MM_PER_PT, PLATE_FILL, SMALL_PT
@@ -774,4 +775,4 @@ class MechanismDrawing:
         x, y = b.xmin, b.ymin - 2.5
         self.s.text(complex(x, y), term("mechanism", self.lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
         y -= 5.0
-        self.s.text(complex(x, y), f"k_l = {fmt_number(self.k_l)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)
+        self.s.text(complex(x, y), scale_caption("k_l", fmt_number(self.k_l), "m/mm", self.lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)

@@ -2,7 +2,9 @@
 
 * :data:`DECIMAL_COMMA` — the languages written with a decimal comma (sr, ru, bg, sl);
 * :func:`localised` — a number already formatted as text, with the language's
-  decimal mark and a true minus sign (U+2212).
+  decimal mark and a true minus sign (U+2212);
+* :func:`scale_caption` — a drawing's scale statement, the symbol typeset
+  (``$k_{v}$ = 0,025 (m/s)/mm``).
 
 >>> localised("-0.25", "sr"), localised("-0.25", "en")
 ('−0,25', '−0.25')
@@ -10,7 +12,7 @@
 
 from __future__ import annotations
 
-__all__ = ["DECIMAL_COMMA", "MINUS", "localised"]
+__all__ = ["DECIMAL_COMMA", "MINUS", "localised", "scale_caption"]
 
 #: Languages written with a decimal comma.
 DECIMAL_COMMA = ("sr", "ru", "bg", "sl")
@@ -22,3 +24,13 @@ def localised(text: str, lang: str) -> str:
     """*text* (a formatted number, or a line of them) with a true minus sign and, in sr, ru, bg, sl, a decimal comma."""
     text = text.replace("-", MINUS)
     return text.replace(".", ",") if lang in DECIMAL_COMMA else text
+
+
+def scale_caption(key: str, value: str, units: str, lang: str) -> str:
+    """A drawing's scale statement: *key* ``"k_v"`` typeset as k with subscript v, *value* (formatted) localised.
+
+    >>> scale_caption("k_v", "0.025", "(m/s)/mm", "sr")
+    '$k_{v}$ = 0,025 (m/s)/mm'
+    """
+    symbol, _, sub = key.partition("_")
+    return f"${symbol}_{{{sub}}}$ = {localised(value, lang)} {units}"

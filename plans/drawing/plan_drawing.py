@@ -23,6 +23,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 from .._text import SUBSCRIPT
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
+from .numerals import localised, scale_caption
 
 from .style import (
     CAPTION_PT,
@@ -519,7 +520,7 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     x, y = b.xmin, b.ymin - 3.0
     sketch.text(complex(x, y), heading, size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
-    sketch.text(complex(x, y), f"{symbol} = {fmt_number(plan.scale)} {units}", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False)
+    sketch.text(complex(x, y), scale_caption(symbol, fmt_number(plan.scale), units, lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     # notes on vectors too short to draw, side by side as far as the plan is wide
     # (a plan with many of them grows by a line, not by a line each)
     width = max(b.width, 60.0)
@@ -527,7 +528,7 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     for v, letter in notes:
         # language-neutral: the vector, its drawn length, and the point that stands for it
         where = f"  ({letter})" if letter else ""
-        note = f"|{vector_math(v.label)}| = {v.length:.2f} mm{where}"
+        note = f"|{vector_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm{where}"
         w = text_size(note, CAPTION_PT, math=True)[0]
         if cursor is None or cursor + w > x + width:
             y -= 4.6

@@ -1,46 +1,65 @@
 """The one-page sheet and :func:`write_drawings`.
 
-The sheet puts the title, the structural formula, the mechanism and both
-plans (each at its own scale, 1:1 on the page, so the stated scale factors
-hold on the printed sheet too), the vector equations each group solved and
-the results table on one ISO page: the smallest of A4 … A0 (landscape or
-portrait) that holds them, or a larger custom page when even A0 does not.
+The sheet puts the mechanism and both plans (each at its own scale, 1:1 on
+the page, so the stated scale factors hold on the printed sheet too), the
+vector equations each group solved and the results table in a drawing frame
+on A4 landscape, or A3 landscape when A4 cannot hold them (a larger ISO
+sheet only when A3 cannot either), with a title block in the lower right
+corner: title, structural formula, scale factors and assembly branches.
 """
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 from .._files import replace_all
 from .._text import decimal_comma, user_text
 from ..i18n import term
-from ._canvas import Sketch
-from .blocks import drawing_block, pretty_equation, readings_block, rows_block, table_block
-from .layout import choose_page
-from .style import HEADING_PT, TITLE_PT
+from ._canvas import Sketch, fmt_number
+from .blocks import drawing_block, pretty_equation, readings_block, rows_block, table_block, text_rows
+from .layout import FRAME_LEFT, FRAME_OTHER, SHEET_FORMATS, TITLE_BLOCK_W
+from .numerals import scale_caption
+from .style import HEADING_PT
 from .svg import drawing_rc, new_figure, render_svg
+from .typeset import draw_text, measure
 
-__all__ = ["draw_sheet", "write_drawings", "sheet_equations", "translate_table", "label_driver"]
+__all__ = ["draw_sheet", "branch_lines", "write_drawings", "sheet_equations", "guide_names", "translate_table", "label_driver"]
 
-PAGE_MARGIN = 12.0  # mm
-GAP = 8.0  # mm between blocks
+SHEET_PAD = 4.0  # mm between the frame and the content
+GAP = 6.0  # mm between blocks
 EQ_PT = 8.5
+EQ_WIDTH = 105.0  # mm: the vector equations are broken to this width
 SHEET_LINE_GAP = 1.5  # mm between the lines of the title and of the equations
 
 
-def sheet_equations(solution, driver_label: str | None = None) -> list[str]:
+#: a guide as the construction names it, ``frame.ram`` or ``4.slot``: the body's key before the scene's name
+_GUIDE_KEY = re.compile(r"(?<![\w.])(?:frame|\d+)\.([^\W\d]\w*)")
+
+
+def guide_names(line: str) -> str:
+    """*line* with each guide named as the scene names it: ``∥ frame.ram`` → ``∥ ram``, ``∥ 4.slot`` → ``∥ slot``.
+
+    >>> guide_names("v_E = v_E4 + v_EE4  (v_EE4 ∥ 4.slot);  a = 0.5 m")
+    'v_E = v_E4 + v_EE4  (v_EE4 ∥ slot);  a = 0.5 m'
+    """
+    return _GUIDE_KEY.sub(r"\1", line)
+
+
+def sheet_equations(solution, driver_label: str | None = None, plans=("velocity", "acceleration")) -> list[str]:
     """One line per construction step: ``"RRP(3,4):  v_B = v_A + v_BA;  v_B = …"``, velocity plan first.
 
     With *driver_label* (such as ``"I(0,2)"``) the driver's steps are headed
-    with it instead of the English word ``driver`` (see :func:`label_driver`).
+    with it instead of the English word ``driver`` (see :func:`label_driver`);
+    *plans* says of which plans (both by default).
     """
     lines = []
     for plan in (solution.velocity_plan, solution.acceleration_plan):
-        if plan is None:
+        if plan is None or plan.kind not in plans:
             continue
         for step in plan.steps:
             if step.equations:
-                lines.append(f"{step.group}:  " + ";   ".join(step.equations))
+                lines.append(guide_names(f"{step.group}:  " + ";   ".join(step.equations)))
     return lines if driver_label is None else label_driver(lines, driver_label)
 
 
@@ -67,6 +86,74 @@ def translate_table(table: list[list[str]], lang: str) -> list[list[str]]:
     return rows
 
 
+TITLE_BLOCK_PAD = 2.0
+TITLE_BLOCK_PT = 8.0
+
+
+def branch_lines(branches, lang: str = "en") -> list[str]:
+    """The assembly branch of each group with two, one line each, from :class:`plans.structure.Branch` records.
+
+    ``"RRR(3,4): C to the left of B→D (+1)"`` in English; in the other
+    languages the group and its sign (the words are English).
+    """
+    out = []
+    for b in branches or ():
+        if not b.sign:
+            continue
+        sign = f"{b.sign:+d}".replace("-", "\u2212")
+        out.append(f"{b.group}: {guide_names(b.words)} ({sign})" if lang == "en" else f"{b.group}: {sign}")
+    return out
+
+
+def _title_block_rows(title: str, formula: str, scales: dict, branches, lang: str) -> list[tuple[str, float, str]]:
+    rows = [(title or "—", HEADING_PT + 1.0, "bold")]
+    if formula:
+        rows.append((f"{term('structural_formula', lang)}:  {formula}", TITLE_BLOCK_PT, "normal"))
+    units = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}
+    parts = [scale_caption(key, fmt_number(scales[key]), unit, lang) for key, unit in units.items() if scales.get(key)]
+    if parts:
+        rows.append((f"{term('scale_factors', lang)}:  " + ",  ".join(parts), TITLE_BLOCK_PT, "normal"))
+    for line in branches or ():
+        rows.append((line, TITLE_BLOCK_PT, "normal"))
+    return rows
+
+
+def _layouts(drawings, texts):
+    """The arrangements tried on a sheet, as lists of columns, each a list of rows of blocks (left to right, top down)."""
+    mech, plans = drawings[0], drawings[1:]
+    text_options = [[[t] for t in texts]] + ([[texts]] if len(texts) > 1 else []) if texts else [[]]
+    out = []
+    for rows in ([drawings], [[mech], plans]) if plans else ([drawings],):
+        for text_rows in text_options:
+            out.append([rows + text_rows])  # the texts under the drawings (stacked, or side by side)
+            if texts:
+                out.append([rows, [[t] for t in texts]])  # the texts in a column to the right
+    if len(plans) == 2 and texts:
+        # the mechanism over the velocity plan, the acceleration plan beside them, the texts in a third column
+        out.append([[[mech], [plans[0]]], [[plans[1]]], [[t] for t in texts]])
+    return out
+
+
+def _arrange(columns):
+    """(width, height, [(block, x, y from the top)]) of columns of rows of blocks, GAP apart, tops aligned."""
+    placed = []
+    x = 0.0
+    height = 0.0
+    for column in columns:
+        y = 0.0
+        width = 0.0
+        for row in column:
+            bx = x
+            for b in row:
+                placed.append((b, bx, y))
+                bx += b.width + GAP
+            width = max(width, bx - GAP - x)
+            y += max(b.height for b in row) + GAP
+        height = max(height, y - GAP)
+        x += width + GAP
+    return x - GAP, height, placed
+
+
 def draw_sheet(
     solution,
     *,
@@ -75,14 +162,24 @@ def draw_sheet(
     equations: list[str] | None = None,
     lang: str = "en",
     title: str | None = None,
+    branches: list[str] | None = None,
 ):
-    """The one-page sheet as a matplotlib Figure (SVG canvas), sized in mm to an ISO page.
+    """The one-page sheet as a matplotlib Figure (SVG canvas): A4 or A3 landscape, a frame and a title block.
+
+    The drawings (mechanism, velocity and acceleration plans, each true to
+    its scale factor), the vector equations and the results table are
+    arranged inside the drawing frame, above the title block; the sheet is
+    A4 landscape when they fit, else A3 landscape (a larger ISO sheet only
+    when even A3 cannot hold them).  The title block (lower right, ISO 7200
+    style) gives the title, the structural formula, the scale factors and,
+    when given, the assembly branches.  Drawing solves nothing: everything
+    printed is passed in.
 
     Parameters
     ----------
     solution : plans.graphical.GraphicalSolution
     formula : str
-        The structural formula, printed under the title.
+        The structural formula, for the title block.
     table : list of list of str, optional
         Results, first row the header.
     equations : list of str, optional
@@ -93,6 +190,9 @@ def draw_sheet(
         :func:`plans.report.sheet_table`.
     title : str, optional
         Instead of the scene's title.
+    branches : list of str, optional
+        The assembly branch of each group, one line each
+        (``"RRR(3,4): C to the left of B→D"``), for the title block.
     """
     table = [[decimal_comma(cell, lang) for cell in row] for row in translate_table(table, lang)] if table else table
     with drawing_rc():
@@ -102,48 +202,42 @@ def draw_sheet(
             drawings.append(drawing_block(fig, "acceleration", solution.acceleration_plan, lang))
 
         title = user_text(title if title is not None else (getattr(solution.scene, "title", "") or ""))
-        head_rows = [(title, TITLE_PT, "bold")] if title else []
-        if formula:
-            head_rows.append((f"{term('structural_formula', lang)}:  {formula}", HEADING_PT, "normal"))
-        head = rows_block(head_rows, "title", line_gap=SHEET_LINE_GAP) if head_rows else None
+        tb_rows = [(decimal_comma(t, lang) if k else t, size, weight) for k, (t, size, weight) in enumerate(_title_block_rows(title, formula, solution.scales, branches, lang))]
+        tb_heights = [measure(t, size, weight)[1] + 2 * TITLE_BLOCK_PAD for t, size, weight in tb_rows]
+        tb_h = sum(tb_heights)
 
         eq_lines = sheet_equations(solution) if equations is None else list(equations)
         if lang != "en":  # "driver:" is the one English word of the steps: the structural notation instead
             eq_lines = label_driver(eq_lines, f"I(0,{getattr(getattr(solution.scene, 'driver', None), 'link', '')})")
         eq_block = None
         if eq_lines:
-            rows = [(term("vector_equations", lang) if lang != "en" else "Vector equations", HEADING_PT, "bold")]
-            rows += [(pretty_equation(line), EQ_PT, "normal") for line in eq_lines]
+            heading = term("vector_equations", lang) if lang != "en" else "Vector equations"
+            rows = text_rows(heading, [pretty_equation(decimal_comma(line, lang)) for line in eq_lines], EQ_WIDTH, EQ_PT)
             eq_block = rows_block(rows, "equation", line_gap=SHEET_LINE_GAP)
         table_block_ = table_block(table, "Results" if lang == "en" else term("results", lang)) if table else None
 
-        # arrangements of the drawings: one row, or the mechanism above the plans
-        arrangements = [[drawings]]
-        if len(drawings) > 1:
-            arrangements.append([[drawings[0]], drawings[1:]])
+        # arrangements: each a list of (block, x, y from the top) [mm] and its width and height
         readings = readings_block(solution, lang)  # what is measured on each plan and what it gives (issue 10 §2)
         texts = [b for b in (eq_block, readings, table_block_) if b is not None]
+        options = [_arrange(layout) for layout in _layouts(drawings, texts)]
         best = None
-        for rows in arrangements:
-            row_w = max(sum(b.width for b in row) + GAP * (len(row) - 1) for row in rows)
-            row_h = sum(max(b.height for b in row) for row in rows) + GAP * (len(rows) - 1)
-            for side_by_side in (True, False) if len(texts) > 1 else (True,):
-                if not texts:
-                    bottom_w = bottom_h = 0.0
-                elif side_by_side:
-                    bottom_w = sum(b.width for b in texts) + GAP * (len(texts) - 1)
-                    bottom_h = max(b.height for b in texts)
-                else:
-                    bottom_w = max(b.width for b in texts)
-                    bottom_h = sum(b.height for b in texts) + GAP * (len(texts) - 1)
-                width = max(row_w, bottom_w, head.width if head else 0.0)
-                height = (head.height + GAP if head else 0.0) + row_h + (GAP + bottom_h if texts else 0.0)
-                _, page = choose_page(width, height, PAGE_MARGIN)
-                area = page[0] * page[1]
-                if best is None or area < best[0] - 1e-6:
-                    best = (area, rows, page, side_by_side, width, height)
-        _, rows, page, side_by_side, content_w, content_h = best
-
+        for name, page in SHEET_FORMATS:
+            inner_w = page[0] - FRAME_LEFT - FRAME_OTHER - 2 * SHEET_PAD
+            full_h = page[1] - 2 * FRAME_OTHER - 2 * SHEET_PAD
+            inner_h = full_h - tb_h - GAP
+            tb_left = inner_w - min(TITLE_BLOCK_W, inner_w + 2 * SHEET_PAD) + SHEET_PAD - GAP  # the title block's left edge, from the content's
+            fitting = [(o, True) for o in options if o[0] <= inner_w + 1e-9 and o[1] <= inner_h + 1e-9]
+            # else beside the title block: top left, no block over the title block
+            fitting += [(o, False) for o in options if o[0] <= inner_w + 1e-9 and o[1] <= full_h + 1e-9
+                        and all(dy + b.height <= inner_h + 1e-9 or dx + b.width <= tb_left + 1e-9 for b, dx, dy in o[2])]
+            if fitting:
+                best = (name, page, min(fitting, key=lambda f: (not f[1], f[0][0] * f[0][1])))
+                break
+        if best is None:  # larger than A0: a sheet of its own size
+            o = min(options, key=lambda o: o[0] * o[1])
+            page = (o[0] + FRAME_LEFT + FRAME_OTHER + 2 * SHEET_PAD, o[1] + 2 * FRAME_OTHER + 2 * SHEET_PAD + tb_h + GAP)
+            best = ("custom", page, (o, True))
+        _, page, ((content_w, content_h, placed), centred) = best
         pw, ph = page
         fig.set_size_inches(pw / 25.4, ph / 25.4)
         paper = fig.add_axes([0, 0, 1, 1], zorder=-1)
@@ -152,30 +246,26 @@ def draw_sheet(
         paper.set_axis_off()
         sheet = Sketch(paper, "sheet")
 
-        # the content block centred on the page
-        x0 = max(PAGE_MARGIN, (pw - content_w) / 2)
-        y = ph - max(PAGE_MARGIN, (ph - content_h) / 2)
-        if head:
-            y -= head.height
-            head.place(sheet, x0, y, page)
-            y -= GAP
-        for row in rows:
-            h = max(b.height for b in row)
-            x = x0
-            for b in row:
-                b.place(sheet, x, y - b.height, page)  # tops aligned
-                x += b.width + GAP
-            y -= h + GAP
-        if texts:
-            if side_by_side:
-                x = x0
-                for b in texts:
-                    b.place(sheet, x, y - b.height, page)
-                    x += b.width + GAP
-            else:
-                for b in texts:
-                    b.place(sheet, x0, y - b.height, page)
-                    y -= b.height + GAP
+        # the drawing frame and the title block in its lower right corner
+        left, right, bottom, top = FRAME_LEFT, pw - FRAME_OTHER, FRAME_OTHER, ph - FRAME_OTHER
+        sheet.polygon([complex(left, bottom), complex(right, bottom), complex(right, top), complex(left, top)], lw=1.4, gid="sheet-frame", obstacle=False)
+        tb_w = min(TITLE_BLOCK_W, right - left)
+        tb_x = right - tb_w
+        sheet.polygon([complex(tb_x, bottom), complex(right, bottom), complex(right, bottom + tb_h), complex(tb_x, bottom + tb_h)], lw=1.0, gid="title-block", obstacle=False)
+        y = bottom + tb_h
+        for k, ((text, size, weight), h) in enumerate(zip(tb_rows, tb_heights)):
+            if k:
+                sheet.line([complex(tb_x, y), complex(right, y)], lw=0.5, gid="title-block-rule", obstacle=False)
+            draw_text(sheet, complex(tb_x + TITLE_BLOCK_PAD + 1.0, y - h / 2), text, size=size, weight=weight, gid="title-block-title" if k == 0 else f"title-block-row{k}")
+            y -= h
+
+        # the content centred in the frame above the title block
+        area_w = right - left - 2 * SHEET_PAD
+        area_h = top - (bottom + tb_h + GAP) - 2 * SHEET_PAD
+        x0 = left + SHEET_PAD + (max(0.0, (area_w - content_w) / 2) if centred else 0.0)
+        y = top - SHEET_PAD - (max(0.0, (area_h - content_h) / 2) if centred else 0.0)
+        for block, dx, dy in placed:
+            block.place(sheet, x0 + dx, y - dy - block.height, page)
     return fig
 
 
@@ -188,6 +278,7 @@ def write_drawings(
     equations: list[str] | None = None,
     lang: str = "en",
     format: str = "svg",
+    branches: list[str] | None = None,
 ) -> list[Path]:
     """Write ``mechanism.svg``, ``velocity.svg``, ``acceleration.svg`` and ``sheet.svg`` (or ``.pdf``, ``.png``: *format*).
 
@@ -211,6 +302,8 @@ def write_drawings(
         Vector equations for the sheet; by default from the plans' steps.
     lang : str
         Language of headings and legends (:data:`plans.i18n.LANGUAGES`).
+    branches : list of str, optional
+        The assembly branches for the sheet's title block (:func:`branch_lines`).
 
     Returns
     -------
@@ -229,7 +322,7 @@ def write_drawings(
     if solution.acceleration_plan is not None:
         contents[directory / f"acceleration.{format}"] = render(draw_plan(solution.acceleration_plan, lang=lang)[0].figure, format)
     contents[directory / f"sheet.{format}"] = render(
-        draw_sheet(solution, formula=formula, table=table, equations=equations, lang=lang), format
+        draw_sheet(solution, formula=formula, table=table, equations=equations, lang=lang, branches=branches), format
     )
     if format != "svg":  # the record of what plans wrote is an SVG comment: other formats remove nothing
         return replace_all(contents)

@@ -3,10 +3,11 @@
 * :func:`write_position_sheets` — ``plans draw --positions``: one sheet per
   position (:func:`plans.drawing.draw_sheet`, titled with the position) and
   the plan of positions, all at the run's common scale factors.
-* :func:`draw_position_page` — one A4 portrait handout page of a position:
-  title, data, structural formula, the mechanism and both plans true to
-  scale, one legend, the results table, the vector equations of the plans and
-  the complex-number loop equations with their numbers.
+* :func:`draw_position_page` — the two A4 portrait graphical pages of a
+  position: the mechanism and the velocity plan on one, the acceleration plan
+  on the other, each true to scale with its legend and vector equations;
+* :func:`draw_check_pages` — the results table and the complex-number loop
+  equations with their numbers.
 * :func:`draw_cover_page` — the first page of a multi-position handout: the
   data and the plan of positions.
 * :func:`plans.drawing.formats.render_pdf` — figures as the pages of one PDF: TrueType (Type 42)
@@ -26,7 +27,7 @@ from ..i18n import term
 from ._canvas import Sketch, fit_axes, fmt_number
 from .blocks import Block, drawing_block, legend_block, pretty_equation, readings_block, rows_block, table_block, text_rows
 from .layout import A4, GAP, PAGE_MARGIN, header, header_height, new_page, place_in_box
-from .sheet import draw_sheet, sheet_equations
+from .sheet import branch_lines, draw_sheet, sheet_equations
 from .style import HEADING_PT, MARGIN_MM, SMALL_PT
 from .svg import drawing_rc
 from .layout import DATA_PT
@@ -37,6 +38,7 @@ __all__ = [
     "write_position_sheets",
     "draw_position_sheet",
     "draw_position_page",
+    "POSITION_PAGES",
     "position_page_bands",
     "draw_check_pages",
     "draw_cover_page",
@@ -71,6 +73,7 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
         table=sheet_table(run.comparisons, run.graphical, run.analytic),
         lang=lang,
         title=_position_title(run, total or run.index + 1, lang),
+        branches=branch_lines(run.analytic.branches, lang),
     )
 
 
@@ -117,21 +120,36 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
 # --- handout pages ------------------------------------------------------------------------
 
 
-def position_page_bands(graphical, *, lang: str = "en", header_lines=(), equations=None) -> tuple[float, float]:
-    """(top, bottom) [mm] of the room a position page leaves for its drawings: under the header, above legend and equations."""
+#: the pages of a position's drawings: page -> the drawings on it
+POSITION_PAGES = {"velocity": ("mechanism", "velocity"), "acceleration": ("acceleration",)}
+
+
+def position_page_bands(graphical, *, lang: str = "en", header_lines=(), equations=None) -> dict[str, tuple[float, float]]:
+    """Page (``"velocity"``, ``"acceleration"``) -> (top, bottom) [mm] of the room it leaves for its drawings.
+
+    Under the header (*header_lines*: a list, or a callable given the page),
+    above the page's legend and vector equations (*equations*: page -> lines).
+    """
     width = A4[0] - 2 * PAGE_MARGIN
-    with drawing_rc():
-        legend = legend_block(graphical, lang, columns=2)
-        eq_block = _equations_block(graphical, equations, lang, width)
-    top = A4[1] - header_height(list(header_lines))
-    bottom = PAGE_MARGIN + 4.0 + eq_block.height + GAP + legend.height + GAP
-    return top, bottom
+    out = {}
+    for page in POSITION_PAGES:
+        if page == "acceleration" and graphical.acceleration_plan is None:
+            continue
+        lines = header_lines(page) if callable(header_lines) else header_lines
+        with drawing_rc():
+            legend = legend_block(graphical, lang, columns=2, plans=(page,))
+            eq_block = _equations_block(graphical, None if equations is None else equations[page], lang, width, page)
+        top = A4[1] - header_height(list(lines))
+        bottom = PAGE_MARGIN + 4.0 + eq_block.height + GAP + legend.height + GAP
+        out[page] = (top, bottom)
+    return out
 
 
 def draw_position_page(
     run,
     *,
     frame,
+    page: str = "velocity",
     lang: str = "en",
     header_lines=(),
     title: str | None = None,
@@ -139,12 +157,14 @@ def draw_position_page(
     footer: str = "",
     rescale=None,
 ):
-    """The graphical page of a position, A4 portrait: returns (Figure, the GraphicalSolution drawn).
+    """A graphical page of a position, A4 portrait: returns (Figure, the GraphicalSolution drawn).
 
-    The title and data; the mechanism and both plans true to scale, each at
-    the top of its box of *frame* (a :class:`plans.drawing.layout.Frame`,
-    the same on every position page of a handout); one legend for the plans
-    and the vector equations each group's construction solved, at the foot.
+    *page* ``"velocity"``: the mechanism and the velocity plan;
+    ``"acceleration"``: the acceleration plan, alone on its page.  The title
+    and data at the top; the drawings true to scale, each at the top of its
+    box of *frame* (a :class:`plans.drawing.layout.Frame`, the same on every
+    position of a handout); the legend of the page's plan and the vector
+    equations its construction solved, at the foot.
 
     Parameters
     ----------
@@ -155,7 +175,7 @@ def draw_position_page(
         one bold); a callable is given the solution drawn (its scale factors
         are those the page states).
     equations : list of str, optional
-        Vector equations, by default from the plans' steps.
+        Vector equations of the page's plan, by default from its steps.
     rescale : callable, optional
         ``rescale(solution, kind, (width, height))`` is called when a drawing
         (kind ``"mechanism"``, ``"velocity"``, ``"acceleration"``) runs out
@@ -168,7 +188,7 @@ def draw_position_page(
     objects = {"mechanism": lambda s: s, "velocity": lambda s: s.velocity_plan, "acceleration": lambda s: s.acceleration_plan}
     with drawing_rc():
         fig, sketch = new_page(size)
-        for kind, box in frame.boxes.items():
+        for kind, box in frame.on(page).items():
             if objects[kind](g) is None:
                 continue
             for attempt in range(3):
@@ -182,8 +202,8 @@ def draw_position_page(
             place_in_box(block, sketch, box, size)
         lines = header_lines(g) if callable(header_lines) else header_lines
         header(sketch, size, title or run.scene.title, [decimal_comma(line, lang) for line in lines])
-        eq_block = _equations_block(g, equations, lang, width)
-        legend = legend_block(g, lang, columns=2)
+        eq_block = _equations_block(g, equations, lang, width, page)
+        legend = legend_block(g, lang, columns=2, plans=(page,))
         y = PAGE_MARGIN + 4.0
         eq_block.place(sketch, PAGE_MARGIN, y, size)
         y += eq_block.height + GAP
@@ -192,8 +212,8 @@ def draw_position_page(
     return fig, g
 
 
-def _equations_block(g, equations, lang: str, width: float) -> Block:
-    lines = [pretty_equation(line) for line in (sheet_equations(g) if equations is None else equations)]
+def _equations_block(g, equations, lang: str, width: float, page: str) -> Block:
+    lines = [pretty_equation(line) for line in (sheet_equations(g, plans=(page,)) if equations is None else equations)]
     return rows_block(text_rows(term("vector_equations", lang), lines, width, TEXT_PT), "equation", line_gap=LINE_GAP)
 
 
