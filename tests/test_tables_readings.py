@@ -87,10 +87,12 @@ def readings(texts: list[str], heading: str) -> list[dict]:
     return rows
 
 
-def _scale(texts: list[str], key: str) -> float:
-    """k_v or k_a as the plan's caption prints it."""
-    caption = next(t for t in texts if t.startswith(f"{key} = "))
-    return float(caption.split("=")[1].split()[0])
+def _scale(path, key: str) -> float:
+    """k_v or k_a as the plan's caption (gid ``…-scale``, k typeset with its subscript) prints it."""
+    group = next(g for g in ET.parse(path).getroot().iter(f"{SVG}g") if (g.get("id") or "").endswith("-scale"))
+    caption = "".join("".join("".join(t.itertext()) for t in group.iter(f"{SVG}text")).split())
+    assert caption.startswith(key.replace("_", "")), caption
+    return float(caption.split("=")[1].split("(")[0].replace(",", "."))
 
 
 def svg_vectors(path) -> dict[str, complex]:
@@ -150,7 +152,7 @@ def test_every_table_row_naming_a_drawn_vector_is_that_vector(drawn):
         if drawn[kind] is None:
             continue
         path, texts = drawn[kind]
-        k = _scale(texts, "k_v" if kind == "velocity" else "k_a")
+        k = _scale(path, "k_v" if kind == "velocity" else "k_a")
         arrows = svg_vectors(path)
         plan = g.velocity_plan if kind == "velocity" else g.acceleration_plan
         for vector in plan.vectors:
@@ -204,7 +206,7 @@ def test_readings_recompute_every_graphical_value_and_its_error(drawn):
     for kind, heading in (("velocity", "Velocity plan: readings"), ("acceleration", "Acceleration plan: readings")):
         if drawn[kind] is None:
             continue
-        k = _scale(drawn[kind][1], "k_v" if kind == "velocity" else "k_a")
+        k = _scale(drawn[kind][0], "k_v" if kind == "velocity" else "k_a")
         rows = readings(sheet, heading)
         assert rows, (drawn["name"], kind)
         for r in rows:
