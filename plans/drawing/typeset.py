@@ -27,12 +27,14 @@ import unicodedata
 
 from matplotlib.font_manager import FontProperties, findfont, get_font
 from matplotlib.ft2font import LoadFlags
-from matplotlib.text import Text
+from matplotlib import colors as mcolors
+from matplotlib.artist import Artist, allow_rasterization
+from matplotlib.transforms import Bbox
 
 from ._canvas import Sketch, text_size
 from .style import FONT_FAMILY, INK, MM_PER_PT
 
-__all__ = ["measure", "draw_text", "text_width", "runs", "plain_runs", "SCRIPT_SCALE", "MIN_SCRIPT_PT", "MATH_LINE"]
+__all__ = ["measure", "draw_text", "TypesetText", "text_width", "runs", "plain_runs", "SCRIPT_SCALE", "MIN_SCRIPT_PT", "MATH_LINE"]
 
 SCRIPT_SCALE = 0.75
 MIN_SCRIPT_PT = 6.0
@@ -282,27 +284,95 @@ def measure(text: str, size: float, weight: str = "normal") -> tuple[float, floa
     return width, height
 
 
+class TypesetText(Artist):
+    """One line of typeset text: its runs drawn by the renderer, one ``draw_text`` call each.
+
+    A matplotlib ``Text`` per run cost most of a handout's time (each one
+    builds font properties and lays itself out again at every draw); the runs
+    here are laid out once, by :func:`runs`, and drawn at their places.
+    ``get_text()`` gives the characters shown, ``get_window_extent()`` the
+    box matplotlib's text layout gives the runs.
+    """
+
+    def __init__(self, x: float, baseline: float, items, size: float, weight: str, color, transform):
+        super().__init__()
+        self._x = x
+        self._baseline = baseline
+        self._items = items
+        self._size = size
+        self._weight = weight
+        self._color = mcolors.to_rgba(color)
+        self.set_transform(transform)
+        self.set_zorder(6.0)
+        self.set_clip_on(False)
+
+    def get_text(self) -> str:
+        return "".join(t for t, *_ in self._items)
+
+    def get_fontsize(self) -> float:
+        return self._size
+
+    def get_color(self):
+        return self._color
+
+    def runs(self):
+        """``(text, x, baseline [data units], size [pt], font properties)`` of each run."""
+        return [(t, self._x + x, self._baseline + rise, s, _font_properties(s, self._weight, italic)) for t, x, rise, s, italic in self._items]
+
+    def _points(self, renderer):
+        placed = self.runs()
+        xy = self.get_transform().transform([(x, y) for _, x, y, _, _ in placed]) if placed else []
+        return placed, xy
+
+    def get_window_extent(self, renderer=None):
+        """The union of the runs' boxes [display units], measured by matplotlib's text layout."""
+        if renderer is None:
+            renderer = self.figure._get_renderer()
+        placed, xy = self._points(renderer)
+        boxes = []
+        for (t, _, _, _, prop), (x, y) in zip(placed, xy):
+            w, h, d = renderer.get_text_width_height_descent(t, prop, ismath=False)
+            boxes.append(Bbox.from_extents(x, y - d, x + w, y - d + h))
+        return Bbox.union(boxes) if boxes else Bbox.from_bounds(0, 0, 0, 0)
+
+    @allow_rasterization
+    def draw(self, renderer):
+        if not self.get_visible() or not self._items:
+            return
+        renderer.open_group("text", self.get_gid())
+        placed, xy = self._points(renderer)
+        canvas_h = renderer.get_canvas_width_height()[1]
+        flip = renderer.flipy()
+        gc = renderer.new_gc()
+        gc.set_foreground(self._color, isRGBA=True)
+        gc.set_alpha(self.get_alpha())
+        gc.set_antialiased(True)
+        self._set_gc_clip(gc)
+        for (t, _, _, _, prop), (x, y) in zip(placed, xy):
+            renderer.draw_text(gc, x, canvas_h - y if flip else y, t, prop, 0.0, ismath=False, mtext=None)
+        gc.restore()
+        renderer.close_group("text")
+        self.stale = False
+
+
+@functools.lru_cache(maxsize=256)
+def _font_properties(size: float, weight: str, italic: bool) -> FontProperties:
+    return FontProperties(family=FONT_FAMILY, size=size, weight=weight, style="italic" if italic else "normal")
+
+
 def draw_text(sketch: Sketch, at: complex, text: str, *, size: float, weight: str = "normal", ha: str = "left", gid: str | None = None, color=None) -> None:
     """*text* with its box's left (or right, or centre) edge and vertical centre at *at* [mm].
 
-    Every run is a plain text artist: nothing reaches matplotlib's math
-    parser (dollar signs are drawn as dollar signs).
+    The line is one :class:`TypesetText` artist on the figure, placed in the
+    axes' millimetres (an axes would give it a clip path); nothing reaches
+    matplotlib's math parser (dollar signs are drawn as dollar signs).
     """
     items, width, _ = runs(text, size, weight)
     x0 = {"left": at.real, "right": at.real - width, "center": at.real - width / 2}[ha]
     line_h = text_size("lp", size)[1]
     baseline = at.imag - 0.28 * line_h
-    transform = sketch.ax.transData
-    figure = sketch.ax.figure
-    for t, x, rise, s, italic in items:
-        # escaped dollars are shown as "$" and never start math; the text belongs to the
-        # figure, placed in the axes' millimetres (an axes would give each one a clip path)
-        artist = Text(
-            x0 + x, baseline + rise, t.replace("$", r"\$"), fontsize=s, ha="left", va="baseline", color=color or INK,
-            fontweight=weight, fontstyle="italic" if italic else "normal", family=FONT_FAMILY, zorder=6.0,
-            transform=transform, clip_on=False,
-        )
-        if gid is not None:
-            artist.set_gid(sketch.gid(gid))
-        figure.add_artist(artist)
-        sketch.artists.append(artist)
+    artist = TypesetText(x0, baseline, items, size, weight, color or INK, sketch.ax.transData)
+    if gid is not None:
+        artist.set_gid(sketch.gid(gid))
+    sketch.ax.figure.add_artist(artist)
+    sketch.artists.append(artist)
