@@ -348,8 +348,13 @@ class TypesetText(Artist):
         gc.set_alpha(self.get_alpha())
         gc.set_antialiased(True)
         self._set_gc_clip(gc)
-        for (t, _, _, _, prop), (x, y) in zip(placed, xy):
-            renderer.draw_text(gc, x, canvas_h - y if flip else y, t, prop, 0.0, ismath=False, mtext=None)
+        points = [(t, prop, x, canvas_h - y if flip else y) for (t, _, _, _, prop), (x, y) in zip(placed, xy)]
+        pdf = _pdf_renderer(renderer)
+        if pdf is not None:
+            _draw_pdf_line(pdf, gc, points)
+        else:
+            for t, prop, x, y in points:
+                renderer.draw_text(gc, x, y, t, prop, 0.0, ismath=False, mtext=None)
         gc.restore()
         renderer.close_group("text")
         self.stale = False
@@ -376,3 +381,91 @@ def draw_text(sketch: Sketch, at: complex, text: str, *, size: float, weight: st
         artist.set_gid(sketch.gid(gid))
     sketch.ax.figure.add_artist(artist)
     sketch.artists.append(artist)
+
+
+# --- PDF: a line in one text object ----------------------------------------------------------
+#
+# matplotlib's PDF ``draw_text`` lays every string out again (libraqm) and
+# wraps it in its own graphics state and text object; a check page has some
+# 500 runs.  For TrueType (Type 42) output the runs of a line are written
+# here into one text object, with each run's glyph layout computed once per
+# (string, font, size): the same operators draw_text writes for each run
+# (select font, move, show glyphs with kerning), so the page looks the same.
+# This leans on the PDF backend's glyph tracker (for font subsetting); when
+# that is not there (another matplotlib), every run goes through draw_text.
+
+
+def _pdf_renderer(renderer):
+    """The PDF renderer behind *renderer* when runs can be written directly, else None."""
+    import matplotlib
+
+    vector = getattr(renderer, "_vector_renderer", renderer)
+    if getattr(renderer, "_renderer", vector) is not vector:  # rasterizing
+        return None
+    if type(vector).__name__ != "RendererPdf" or matplotlib.rcParams["pdf.fonttype"] != 42 or matplotlib.rcParams["pdf.use14corefonts"]:
+        return None
+    file = getattr(vector, "file", None)
+    if not hasattr(file, "_character_tracker") or not hasattr(vector, "_encode_glyphs") or not hasattr(vector, "_get_font_ttf"):
+        return None
+    return vector
+
+
+_PDF_LAYOUTS: dict = {}
+
+
+def _pdf_layout(renderer, text: str, prop) -> tuple:
+    """(font, char, glyph, x, y, kern) of each glyph of *text*, as the PDF backend lays it out."""
+    key = (text, prop)
+    items = _PDF_LAYOUTS.get(key)
+    if items is None:
+        from matplotlib import _text_helpers
+
+        font = renderer._get_font_ttf(prop)
+        items = tuple((i.ft_object, i.char, i.glyph_index, i.x, i.y, i.prev_kern) for i in _text_helpers.layout(text, font))
+        _PDF_LAYOUTS[key] = items
+    return items
+
+
+def _draw_pdf_line(renderer, gc, points) -> None:
+    import itertools
+
+    from matplotlib.backends.backend_pdf import Op
+    from matplotlib.font_manager import FontPath
+
+    file = renderer.file
+    tracker = file._character_tracker
+    renderer.check_gc(gc, gc._rgb)
+
+    def flush(chunk: list, size: float) -> None:
+        if chunk:
+            file.output(
+                [(-1000 * next(group) / size) if kind is float else renderer._encode_glyphs(group, 42) for kind, group in itertools.groupby(chunk, type)],
+                Op.showkern,
+            )
+            chunk.clear()
+
+    file.output(Op.begin_text)
+    for text, prop, x, y in points:
+        size = prop.get_size_in_points()
+        file.output(1, 0, 0, 1, x, y, Op.textmatrix)
+        chunk: list = []
+        previous = None
+        start = 0.0
+        for font, char, glyph, gx, gy, kern in _pdf_layout(renderer, text, prop):
+            subset, code = tracker.track_glyph(font, char, glyph)
+            if (font, subset) != previous:
+                flush(chunk, size)
+                file.output(file.fontName(FontPath(font.fname, font.face_index), subset), size, Op.selectfont)
+                file.output(gx - start, 0, Op.textpos)
+                previous, start = (font, subset), gx
+            if gy:
+                flush(chunk, size)
+                file.output(gy, Op.textrise)
+            if kern:
+                chunk.append(kern)
+            chunk.append(code)
+            if gy:
+                flush(chunk, size)
+                file.output(0, Op.textrise)
+        flush(chunk, size)
+    file.output(Op.end_text)
