@@ -171,12 +171,9 @@ class Sketch:
         if gid is not None:
             artist.set_gid(self.gid(gid))
         artist.set_clip_on(False)
-        if isinstance(artist, Line2D):
-            self.ax.add_line(artist)
-        elif isinstance(artist, LineCollection):
-            self.ax.add_collection(artist, autolim=False)
-        else:
-            self.ax.add_patch(artist)
+        # add_artist, not add_line/add_patch: those grow the data limits, a third of the cost of
+        # drawing a sketch, and every sketch sets its limits from its own bounds
+        self.ax.add_artist(artist)
         self.artists.append(artist)
         return artist
 
