@@ -418,10 +418,16 @@ def _pdf_layout(renderer, text: str, prop) -> tuple:
     key = (text, prop)
     items = _PDF_LAYOUTS.get(key)
     if items is None:
-        from matplotlib import _text_helpers
-
         font = renderer._get_font_ttf(prop)
-        items = tuple((i.ft_object, i.char, i.glyph_index, i.x, i.y, i.prev_kern) for i in _text_helpers.layout(text, font))
+        if hasattr(font, "_layout"):
+            # what matplotlib's _text_helpers.layout gives, without loading each glyph's outline
+            # (the PDF needs only the glyph indices and places)
+            placed = font._layout(text, LoadFlags.NO_HINTING)
+        else:
+            from matplotlib import _text_helpers
+
+            placed = _text_helpers.layout(text, font)
+        items = tuple((i.ft_object, i.char, i.glyph_index, i.x, i.y, i.prev_kern) for i in placed)
         _PDF_LAYOUTS[key] = items
     return items
 
