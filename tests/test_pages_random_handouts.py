@@ -7,7 +7,9 @@ signs).  The languages cycle through en, sr, ru, bg, sl.  Every tenth handout is
 and every 25th as a PDF (write_handout, files checked); the others are made page by page
 (handout_pages) and every page is laid out by matplotlib without writing a file
 (``Figure.draw_without_rendering``: every text artist goes through matplotlib's text layout,
-which is where a math parser would fail).  The mechanisms are drawn from a seeded generator:
+which is where a math parser would fail; on every seventh, every run of each typeset line is
+also measured by the renderer, ``TypesetText.get_window_extent``: the written ones lay out
+every run too).  The mechanisms are drawn from a seeded generator:
 every run tries the same ones.
 """
 
@@ -21,6 +23,7 @@ import pytest
 
 from plans.errors import PlansError
 from plans.drawing.svg import drawing_rc
+from plans.drawing.typeset import TypesetText
 from plans.handout import handout_pages, write_handout
 from plans.scene import loads
 
@@ -188,6 +191,10 @@ def test_random_mechanisms_give_a_handout_or_one_clear_line(tmp_path):
                 with drawing_rc():
                     for _, fig in pages:
                         fig.draw_without_rendering()
+                        if n % 7 == 3:  # every language and kind in turn (a PDF or SVG lays out every run anyway)
+                            # typeset lines are drawn run by run by the renderer: measure every run as matplotlib lays it out
+                            for line in fig.findobj(TypesetText):
+                                assert line.get_window_extent().width >= 0, n
         except PlansError as exc:  # refused: one line a student can read, nothing written
             message = str(exc)
             assert message and "\n" not in message and "Traceback" not in message, (n, message)

@@ -16,6 +16,8 @@ import re
 from matplotlib.collections import LineCollection
 from matplotlib.font_manager import FontProperties
 from matplotlib.lines import Line2D
+from matplotlib.text import Text
+from matplotlib.transforms import TransformedPatchPath
 from matplotlib.patches import Circle, Polygon
 from matplotlib.textpath import TextToPath
 from shapely.geometry import LineString, Point, box
@@ -158,6 +160,7 @@ class Sketch:
         self.bounds = Bounds()
         self.obstacles = Obstacles()  # shapely geometries, for label placement
         self._gids: dict[str, int] = {}
+        self._clip = None
 
     # -- bookkeeping ---------------------------------------------------------
 
@@ -171,14 +174,22 @@ class Sketch:
         if gid is not None:
             artist.set_gid(self.gid(gid))
         artist.set_clip_on(False)
-        if isinstance(artist, Line2D):
-            self.ax.add_line(artist)
-        elif isinstance(artist, LineCollection):
-            self.ax.add_collection(artist, autolim=False)
-        else:
-            self.ax.add_patch(artist)
+        # add_artist, not add_line/add_patch: those grow the data limits, a third of the cost of
+        # drawing a sketch, and every sketch sets its limits from its own bounds
+        self._unclipped(artist)
+        self.ax.add_artist(artist)
         self.artists.append(artist)
         return artist
+
+    def _unclipped(self, artist) -> None:
+        """Give *artist* the axes' clip path, made once per sketch (not clipped: clip_on is False).
+
+        Adding an artist without a clip path makes matplotlib derive one from
+        the axes' patch, which cost as much as drawing the artist.
+        """
+        if self._clip is None:
+            self._clip = TransformedPatchPath(self.ax.patch)
+        artist.set_clip_path(self._clip)
 
     # -- primitives ----------------------------------------------------------
 
@@ -272,11 +283,12 @@ class Sketch:
         self.bounds.add_box(x0, top - h, x0 + w, top)
         if obstacle:
             self.obstacles.append(box(x0, top - h, x0 + w, top))
-        artist = self.ax.text(
+        artist = Text(
             at.real, at.imag, s, fontsize=size, ha=ha, va=va, color=color, fontweight=weight,
-            fontstyle=style, zorder=zorder, family=FONT_FAMILY,
+            fontstyle=style, zorder=zorder, family=FONT_FAMILY, transform=self.ax.transData, clip_on=False,
         )
-        artist.set_clip_on(False)
+        self._unclipped(artist)
+        self.ax.add_artist(artist)
         if gid is not None:
             artist.set_gid(self.gid(gid))
         self.artists.append(artist)

@@ -147,6 +147,11 @@ def place_label(
             )
             i, j = np.nonzero(hit)
             if len(i):
+                # a clearance beyond CLEAR_MM scores as CLEAR_MM: measure only the pairs within it
+                # (dwithin stops early; distance is far dearer, most of the time of placing labels)
+                within = shapely.dwithin(boxes[i], shapes[j], CLEAR_MM)
+                i, j = i[within], j[within]
+            if len(i):
                 np.minimum.at(clear, i, shapely.distance(boxes[i], shapes[j]))
         for (center, gap, turn), c in zip(ring, clear):
             c = float(c)

@@ -27,12 +27,14 @@ import unicodedata
 
 from matplotlib.font_manager import FontProperties, findfont, get_font
 from matplotlib.ft2font import LoadFlags
-from matplotlib.text import Text
+from matplotlib import colors as mcolors
+from matplotlib.artist import Artist, allow_rasterization
+from matplotlib.transforms import Bbox
 
 from ._canvas import Sketch, text_size
 from .style import FONT_FAMILY, INK, MM_PER_PT
 
-__all__ = ["measure", "draw_text", "text_width", "runs", "plain_runs", "SCRIPT_SCALE", "MIN_SCRIPT_PT", "MATH_LINE"]
+__all__ = ["measure", "draw_text", "TypesetText", "text_width", "runs", "plain_runs", "SCRIPT_SCALE", "MIN_SCRIPT_PT", "MATH_LINE"]
 
 SCRIPT_SCALE = 0.75
 MIN_SCRIPT_PT = 6.0
@@ -282,27 +284,194 @@ def measure(text: str, size: float, weight: str = "normal") -> tuple[float, floa
     return width, height
 
 
+class TypesetText(Artist):
+    """One line of typeset text: its runs drawn by the renderer, one ``draw_text`` call each.
+
+    A matplotlib ``Text`` per run cost most of a handout's time (each one
+    builds font properties and lays itself out again at every draw); the runs
+    here are laid out once, by :func:`runs`, and drawn at their places.
+    ``get_text()`` gives the characters shown, ``get_window_extent()`` the
+    box matplotlib's text layout gives the runs.
+    """
+
+    def __init__(self, x: float, baseline: float, items, size: float, weight: str, color, transform):
+        super().__init__()
+        self._x = x
+        self._baseline = baseline
+        self._items = items
+        self._size = size
+        self._weight = weight
+        self._color = mcolors.to_rgba(color)
+        self.set_transform(transform)
+        self.set_zorder(6.0)
+        self.set_clip_on(False)
+
+    def get_text(self) -> str:
+        return "".join(t for t, *_ in self._items)
+
+    def get_fontsize(self) -> float:
+        return self._size
+
+    def get_color(self):
+        return self._color
+
+    def runs(self):
+        """``(text, x, baseline [data units], size [pt], font properties)`` of each run."""
+        return [(t, self._x + x, self._baseline + rise, s, _font_properties(s, self._weight, italic)) for t, x, rise, s, italic in self._items]
+
+    def _points(self, renderer):
+        placed = self.runs()
+        xy = self.get_transform().transform([(x, y) for _, x, y, _, _ in placed]) if placed else []
+        return placed, xy
+
+    def get_window_extent(self, renderer=None):
+        """The union of the runs' boxes [display units], measured by matplotlib's text layout."""
+        if renderer is None:
+            renderer = self.figure._get_renderer()
+        placed, xy = self._points(renderer)
+        boxes = []
+        for (t, _, _, _, prop), (x, y) in zip(placed, xy):
+            w, h, d = renderer.get_text_width_height_descent(t, prop, ismath=False)
+            boxes.append(Bbox.from_extents(x, y - d, x + w, y - d + h))
+        return Bbox.union(boxes) if boxes else Bbox.from_bounds(0, 0, 0, 0)
+
+    @allow_rasterization
+    def draw(self, renderer):
+        if not self.get_visible() or not self._items:
+            return
+        renderer.open_group("text", self.get_gid())
+        placed, xy = self._points(renderer)
+        canvas_h = renderer.get_canvas_width_height()[1]
+        flip = renderer.flipy()
+        gc = renderer.new_gc()
+        gc.set_foreground(self._color, isRGBA=True)
+        gc.set_alpha(self.get_alpha())
+        gc.set_antialiased(True)
+        self._set_gc_clip(gc)
+        points = [(t, prop, x, canvas_h - y if flip else y) for (t, _, _, _, prop), (x, y) in zip(placed, xy)]
+        pdf = _pdf_renderer(renderer)
+        if pdf is not None:
+            _draw_pdf_line(pdf, gc, points)
+        else:
+            for t, prop, x, y in points:
+                renderer.draw_text(gc, x, y, t, prop, 0.0, ismath=False, mtext=None)
+        gc.restore()
+        renderer.close_group("text")
+        self.stale = False
+
+
+@functools.lru_cache(maxsize=256)
+def _font_properties(size: float, weight: str, italic: bool) -> FontProperties:
+    return FontProperties(family=FONT_FAMILY, size=size, weight=weight, style="italic" if italic else "normal")
+
+
 def draw_text(sketch: Sketch, at: complex, text: str, *, size: float, weight: str = "normal", ha: str = "left", gid: str | None = None, color=None) -> None:
     """*text* with its box's left (or right, or centre) edge and vertical centre at *at* [mm].
 
-    Every run is a plain text artist: nothing reaches matplotlib's math
-    parser (dollar signs are drawn as dollar signs).
+    The line is one :class:`TypesetText` artist on the figure, placed in the
+    axes' millimetres (an axes would give it a clip path); nothing reaches
+    matplotlib's math parser (dollar signs are drawn as dollar signs).
     """
     items, width, _ = runs(text, size, weight)
     x0 = {"left": at.real, "right": at.real - width, "center": at.real - width / 2}[ha]
     line_h = text_size("lp", size)[1]
     baseline = at.imag - 0.28 * line_h
-    transform = sketch.ax.transData
-    figure = sketch.ax.figure
-    for t, x, rise, s, italic in items:
-        # escaped dollars are shown as "$" and never start math; the text belongs to the
-        # figure, placed in the axes' millimetres (an axes would give each one a clip path)
-        artist = Text(
-            x0 + x, baseline + rise, t.replace("$", r"\$"), fontsize=s, ha="left", va="baseline", color=color or INK,
-            fontweight=weight, fontstyle="italic" if italic else "normal", family=FONT_FAMILY, zorder=6.0,
-            transform=transform, clip_on=False,
-        )
-        if gid is not None:
-            artist.set_gid(sketch.gid(gid))
-        figure.add_artist(artist)
-        sketch.artists.append(artist)
+    artist = TypesetText(x0, baseline, items, size, weight, color or INK, sketch.ax.transData)
+    if gid is not None:
+        artist.set_gid(sketch.gid(gid))
+    sketch.ax.figure.add_artist(artist)
+    sketch.artists.append(artist)
+
+
+# --- PDF: a line in one text object ----------------------------------------------------------
+#
+# matplotlib's PDF ``draw_text`` lays every string out again (libraqm) and
+# wraps it in its own graphics state and text object; a check page has some
+# 500 runs.  For TrueType (Type 42) output the runs of a line are written
+# here into one text object, with each run's glyph layout computed once per
+# (string, font, size): the same operators draw_text writes for each run
+# (select font, move, show glyphs with kerning), so the page looks the same.
+# This leans on the PDF backend's glyph tracker (for font subsetting); when
+# that is not there (another matplotlib), every run goes through draw_text.
+
+
+def _pdf_renderer(renderer):
+    """The PDF renderer behind *renderer* when runs can be written directly, else None."""
+    import matplotlib
+
+    vector = getattr(renderer, "_vector_renderer", renderer)
+    if getattr(renderer, "_renderer", vector) is not vector:  # rasterizing
+        return None
+    if type(vector).__name__ != "RendererPdf" or matplotlib.rcParams["pdf.fonttype"] != 42 or matplotlib.rcParams["pdf.use14corefonts"]:
+        return None
+    file = getattr(vector, "file", None)
+    if not hasattr(file, "_character_tracker") or not hasattr(vector, "_encode_glyphs") or not hasattr(vector, "_get_font_ttf"):
+        return None
+    return vector
+
+
+_PDF_LAYOUTS: dict = {}
+
+
+def _pdf_layout(renderer, text: str, prop) -> tuple:
+    """(font, char, glyph, x, y, kern) of each glyph of *text*, as the PDF backend lays it out."""
+    key = (text, prop)
+    items = _PDF_LAYOUTS.get(key)
+    if items is None:
+        font = renderer._get_font_ttf(prop)
+        if hasattr(font, "_layout"):
+            # what matplotlib's _text_helpers.layout gives, without loading each glyph's outline
+            # (the PDF needs only the glyph indices and places)
+            placed = font._layout(text, LoadFlags.NO_HINTING)
+        else:
+            from matplotlib import _text_helpers
+
+            placed = _text_helpers.layout(text, font)
+        items = tuple((i.ft_object, i.char, i.glyph_index, i.x, i.y, i.prev_kern) for i in placed)
+        _PDF_LAYOUTS[key] = items
+    return items
+
+
+def _draw_pdf_line(renderer, gc, points) -> None:
+    import itertools
+
+    from matplotlib.backends.backend_pdf import Op
+    from matplotlib.font_manager import FontPath
+
+    file = renderer.file
+    tracker = file._character_tracker
+    renderer.check_gc(gc, gc._rgb)
+
+    def flush(chunk: list, size: float) -> None:
+        if chunk:
+            file.output(
+                [(-1000 * next(group) / size) if kind is float else renderer._encode_glyphs(group, 42) for kind, group in itertools.groupby(chunk, type)],
+                Op.showkern,
+            )
+            chunk.clear()
+
+    file.output(Op.begin_text)
+    for text, prop, x, y in points:
+        size = prop.get_size_in_points()
+        file.output(1, 0, 0, 1, x, y, Op.textmatrix)
+        chunk: list = []
+        previous = None
+        start = 0.0
+        for font, char, glyph, gx, gy, kern in _pdf_layout(renderer, text, prop):
+            subset, code = tracker.track_glyph(font, char, glyph)
+            if (font, subset) != previous:
+                flush(chunk, size)
+                file.output(file.fontName(FontPath(font.fname, font.face_index), subset), size, Op.selectfont)
+                file.output(gx - start, 0, Op.textpos)
+                previous, start = (font, subset), gx
+            if gy:
+                flush(chunk, size)
+                file.output(gy, Op.textrise)
+            if kern:
+                chunk.append(kern)
+            chunk.append(code)
+            if gy:
+                flush(chunk, size)
+                file.output(0, Op.textrise)
+        flush(chunk, size)
+    file.output(Op.end_text)
