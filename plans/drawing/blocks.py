@@ -321,6 +321,8 @@ def readings_block(graphical, lang: str = "en", *, size: float = READINGS_PT, wi
         across = width is None or side <= width
         if across:
             break
+    if not across:  # one above the other: at the given size again
+        tables = [table_block(rows, heading, size=size, heading_size=size + 1.0, pad=1.4, row_gap=0.9) for rows, heading in contents]
     w = side if across else max(t.width for t in tables)
     h = max(t.height for t in tables) if across else sum(t.height for t in tables) + gap * (len(tables) - 1)
 

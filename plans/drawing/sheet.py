@@ -217,9 +217,12 @@ def draw_sheet(
         table_block_ = table_block(table, "Results" if lang == "en" else term("results", lang)) if table else None
 
         # arrangements: each a list of (block, x, y from the top) [mm] and its width and height
-        readings = readings_block(solution, lang)  # what is measured on each plan and what it gives (issue 10 §2)
-        texts = [b for b in (eq_block, readings, table_block_) if b is not None]
-        options = [_arrange(layout) for layout in _layouts(drawings, texts)]
+        # what is measured on each plan and what it gives (issue 10 §2): the two plans' readings side by side, or stacked
+        options = []
+        for readings in (readings_block(solution, lang), readings_block(solution, lang, width=0.0)):
+            texts = [b for b in (eq_block, readings, table_block_) if b is not None]
+            for order in (texts, texts[::-1]):  # reversed: the tallest (the table) left, clear of the title block
+                options += [_arrange(layout) for layout in _layouts(drawings, order)]
         best = None
         for name, page in SHEET_FORMATS:
             inner_w = page[0] - FRAME_LEFT - FRAME_OTHER - 2 * SHEET_PAD
