@@ -8,7 +8,6 @@ the README ("JSON schema") and kept stable: keys are only ever added.
 from __future__ import annotations
 
 import cmath
-import csv
 import io
 import json
 import math

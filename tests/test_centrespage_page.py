@@ -9,7 +9,6 @@ import sys
 from pathlib import Path
 
 import pytest
-from matplotlib.text import Text
 
 import plans
 from plans.analytic import solve
@@ -42,8 +41,8 @@ def _texts(fig) -> list:
             x, y = t.get_position()
             out.append((t.get_text(), x, y, t.get_gid() or ""))
     out += [(t.get_text(), 0.0, 0.0, t.get_gid() or "") for t in fig.texts]
-    for t in fig.artists:  # page text is typeset as runs that belong to the figure, placed in the page's mm
-        if isinstance(t, Text):
+    for t in fig.artists:  # page text is typeset (a Text, or a line of runs) on the figure, placed in the page's mm
+        if hasattr(t, "get_text") and hasattr(t, "get_position"):
             x, y = t.get_position()
             out.append((t.get_text(), x, y, t.get_gid() or ""))
     return out

@@ -21,7 +21,7 @@ from .blocks import drawing_block, pretty_equation, readings_block, rows_block, 
 from .layout import FRAME_LEFT, FRAME_OTHER, SHEET_FORMATS, TITLE_BLOCK_W
 from .numerals import scale_caption
 from .style import HEADING_PT
-from .svg import drawing_rc, new_figure, render_svg
+from .svg import drawing_rc, new_figure
 from .typeset import draw_text, measure
 
 __all__ = ["draw_sheet", "branch_lines", "write_drawings", "sheet_equations", "guide_names", "translate_table", "label_driver"]
@@ -124,8 +124,8 @@ def _layouts(drawings, texts):
     text_options = [[[t] for t in texts]] + ([[texts]] if len(texts) > 1 else []) if texts else [[]]
     out = []
     for rows in ([drawings], [[mech], plans]) if plans else ([drawings],):
-        for text_rows in text_options:
-            out.append([rows + text_rows])  # the texts under the drawings (stacked, or side by side)
+        for under in text_options:
+            out.append([rows + under])  # the texts under the drawings (stacked, or side by side)
             if texts:
                 out.append([rows, [[t] for t in texts]])  # the texts in a column to the right
     if len(plans) == 2 and texts:

@@ -309,6 +309,10 @@ class TypesetText(Artist):
     def get_text(self) -> str:
         return "".join(t for t, *_ in self._items)
 
+    def get_position(self) -> tuple[float, float]:
+        """Where the line starts: x and its baseline [data units], as :meth:`matplotlib.text.Text.get_position`."""
+        return self._x, self._baseline
+
     def get_fontsize(self) -> float:
         return self._size
 
