@@ -20,7 +20,7 @@ from .sweep import sweep_csv
 from .structure import branches
 
 __all__ = ["driver_summary", "solution_json", "solution_table", "sweep_csv", "format_json", "sheet_table", "guide_direction",
-           "drawn_rows", "table_number"]
+           "drawn_rows", "table_number", "table_error"]
 
 SCHEMA_VERSION = 1
 
@@ -455,7 +455,7 @@ def _magnitude(value) -> str:
     return table_number(value)
 
 
-def _error(value: float) -> str:
+def table_error(value: float) -> str:
     """A relative error as ``1.0·10⁻⁴`` (``0`` for none)."""
     if value == 0:
         return "0"
@@ -543,7 +543,7 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
             text = f"${_SYMBOL[row.quantity]}$ slider {row.name} [{_UNITS[row.quantity]}]"
         else:
             text = f"{_symbol(label)} [{_UNITS[row.quantity]}]"
-        rows.append([text, _magnitude(row.graphical), _magnitude(row.analytic), _error(row.rel_error)])
+        rows.append([text, _magnitude(row.graphical), _magnitude(row.analytic), table_error(row.rel_error)])
     return rows
 
 

@@ -22,6 +22,7 @@ import math
 
 from .._text import decimal_comma
 from ..i18n import term
+from ..report import table_error, table_number
 from .blocks import Block, rows_block, table_block, text_rows
 from .centres import centre_text, draw_centres_into, draw_circle_diagram_into
 from .layout import A4, GAP, PAGE_MARGIN, footer as page_footer, header, new_page
@@ -36,7 +37,6 @@ LEGEND_PT = 7.5
 #: the least room [mm] around the mechanism on the page (its near centres widen it; far ones are arrows outside)
 ROOM_MIN = 12.0
 LINE_GAP = 0.7
-_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
 def _round_up(need: float) -> float:
@@ -61,31 +61,15 @@ def _round_down(below: float) -> float:
         n -= 1
 
 
-def _number(value: float, digits: int = 6) -> str:
-    """*value* to *digits* significant digits: true minus, ``·10ⁿ`` outside 1e-3 … 1e6."""
-    if value == 0 or not math.isfinite(value):
-        return "0" if value == 0 else str(value)
-    text = f"{value:.{digits}g}"
-    if "e" in text:
-        if 1e-3 <= abs(value) < 1e6:
-            text = f"{float(text):.0f}"
-        else:
-            mantissa, exponent = text.split("e")
-            text = f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}"
-    return text.replace("-", "−")
+def _number(value: float) -> str:
+    """*value* to 6 significant digits as tables print numbers (:func:`plans.report.table_number`)."""
+    return table_number(value, 6)
 
 
 def _vector(z: complex) -> str:
     if z == 0:
         return "0"
     return f"{_number(abs(z))} ∠ {math.degrees(cmath.phase(z)):.1f}°".replace("-", "−")
-
-
-def _error(value: float) -> str:
-    if value == 0:
-        return "0"
-    mantissa, exponent = f"{value:.1e}".split("e")
-    return f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}".replace("-", "−")
 
 
 def _about(result, body: str) -> str:
@@ -108,12 +92,12 @@ def centres_page_table(result, comparisons, lang: str = "en") -> list[list[str]]
     for name in result.scene.links:
         row = by.get(("links", name))
         if row is not None:
-            rows.append([f"$\\omega_{{{name}}}$ [rad/s]", _about(result, name), _number(row.graphical), _number(row.analytic), _error(row.rel_error)])
+            rows.append([f"$\\omega_{{{name}}}$ [rad/s]", _about(result, name), _number(row.graphical), _number(row.analytic), table_error(row.rel_error)])
     for name in result.scene.report:
         row = by.get(("points", name))
         if row is not None:
             rows.append([f"$v_{{{name}}}$ [m/s]", _about(result, result.scene.home_of(name)), _vector(complex(row.graphical)),
-                         _vector(complex(row.analytic)), _error(row.rel_error)])
+                         _vector(complex(row.analytic)), table_error(row.rel_error)])
     return [[decimal_comma(cell, lang) for cell in row] for row in rows]
 
 
