@@ -227,7 +227,8 @@ def draw_check_pages(
     table: list[list[str]] | None = None,
     footer: str = "",
 ) -> list:
-    """The analytic pages of a position, A4 portrait: the readings of both plans, the results table, then the loop equations.
+    """The analytic pages of a position, A4 portrait: the results table with the readings of both plans
+    beside it (or above it when the page is too narrow), then the loop equations.
 
     The readings (:func:`plans.drawing.blocks.readings_block`) say what is
     measured on each plan of the position page before and what it gives: the
@@ -260,15 +261,23 @@ def draw_check_pages(
     cells = [[decimal_comma(cell, lang) for cell in row] for row in table] if table else None
     with drawing_rc():
         readings = readings_block(run.graphical, lang, size=READINGS_PAGE_PT, width=width) if run.graphical is not None else None
+        # the two readings tables one above the other, to stand beside the results table when the page is wide enough
+        stacked = readings_block(run.graphical, lang, size=READINGS_PAGE_PT, width=0.0) if run.graphical is not None else None
+
+        def top_blocks(pt: float):
+            """The results table at *pt*, whether the stacked readings stand beside it, and the height both take."""
+            table_ = table_block(cells, term("results", lang), size=pt) if cells else None
+            beside = table_ is not None and stacked is not None and table_.width + GAP + stacked.width <= width
+            if beside:
+                return table_, True, max(table_.height, stacked.height) + GAP
+            return table_, False, (table_.height + GAP if table_ else 0.0) + (readings.height + GAP if readings is not None else 0.0)
+
         # the smallest text that puts everything on one page, down to CHECK_MIN_PT; else continued pages at TEXT_PT
         rows = text_rows(heading, loop_lines, width, TEXT_PT) if loop_lines else []
         room = size[1] - header_height([decimal_comma(line, lang) for line in header_lines]) - (PAGE_MARGIN + 4.0)
-        if readings is not None:
-            room -= readings.height + GAP
         for pt in CHECK_PT:
-            table_h = table_block(cells, term("results", lang), size=pt - 0.4).height + GAP if cells else 0.0
             trial = text_rows(heading, loop_lines, width, pt) if loop_lines else []
-            if _rows_that_fit(trial, room - table_h) == len(trial):
+            if _rows_that_fit(trial, room - top_blocks(pt - 0.4)[2]) == len(trial):
                 rows, table_pt = trial, pt - 0.4
                 break
         else:
@@ -279,13 +288,20 @@ def draw_check_pages(
             fig, sketch = new_page(size)
             top = header(sketch, size, title or run.scene.title, [decimal_comma(line, lang) for line in header_lines])
             bottom = PAGE_MARGIN + 4.0
-            if first and readings is not None:
-                readings.place(sketch, PAGE_MARGIN, top - readings.height, size)
-                top -= readings.height + GAP
-            if first and table:
-                block = table_block(cells, term("results", lang), size=table_pt)
-                block.place(sketch, PAGE_MARGIN, top - block.height, size)
-                top -= block.height + GAP
+            if first:
+                block, beside, used = top_blocks(table_pt)
+                if beside:  # the results table, and beside it the readings that recompute its graphical column
+                    block.place(sketch, PAGE_MARGIN, top - block.height, size)
+                    stacked.place(sketch, PAGE_MARGIN + block.width + GAP, top - stacked.height, size)
+                else:
+                    if readings is not None:
+                        readings.place(sketch, PAGE_MARGIN, top - readings.height, size)
+                        top -= readings.height + GAP
+                    if block is not None:
+                        block.place(sketch, PAGE_MARGIN, top - block.height, size)
+                        top -= block.height + GAP
+                    used = 0.0
+                top -= used
             if rows:
                 take = _rows_that_fit(rows, top - bottom)
                 block = rows_block(rows[:take], "loop", line_gap=LINE_GAP)
