@@ -3,7 +3,6 @@ errors against errors computed here from perturbed inputs (issue 9 §4)."""
 
 import dataclasses
 import json
-import math
 import re
 from pathlib import Path
 

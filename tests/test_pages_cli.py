@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import io
 
-import pytest
 
 import plans.handout
 from plans.cli import main

@@ -19,7 +19,6 @@ import cmath
 import math
 
 import numpy as np
-import pytest
 
 from plans.errors import PlansError
 from plans.drawing.svg import drawing_rc

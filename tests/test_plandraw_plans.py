@@ -9,7 +9,6 @@ construction produced and the tests read independently of the drawing code.
 
 from __future__ import annotations
 
-import cmath
 
 import pytest
 from matplotlib.colors import to_rgb

@@ -4,7 +4,6 @@ from the pins drawn at the solved positions (gid ``mech-pin-X``) and the scene's
 from __future__ import annotations
 
 import pytest
-from matplotlib.text import Text
 from shapely.geometry import LineString, Point, Polygon
 
 from plans.drawing import draw_mechanism

@@ -5,7 +5,7 @@ shaft, not a doubled line beside it).  Expected geometry comes from the plan dat
 from __future__ import annotations
 
 import pytest
-from shapely.geometry import LineString, Polygon
+from shapely.geometry import Polygon
 
 from plans.drawing import draw_plan
 from plans.drawing.style import MM_PER_PT, VECTOR_STYLE

@@ -16,7 +16,6 @@ from __future__ import annotations
 import math
 
 import mpmath
-import numpy as np
 import pytest
 
 from plans.analytic import solve
