@@ -38,6 +38,7 @@ from pathlib import Path
 
 from ._text import subscript
 from .errors import PlansError
+from .graphical.scales import PAGE_MANTISSAS, round_up
 from .i18n import check_language, term
 from .scene import FRAME, Crank, Scene
 
@@ -130,7 +131,7 @@ def _equations(graphical, structure) -> dict[str, list[str]]:
 
 #: The round mantissas of a handout's scale factors: finer than the textbook's
 #: 1, 2, 2.5, 5 so that a drawing fills its box to within a factor of 4/3.
-HANDOUT_MANTISSAS = (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)
+HANDOUT_MANTISSAS = PAGE_MANTISSAS
 #: Room [mm] kept around a drawing's geometry in its box: the drawing's margin and labels, each side.
 LABEL_ROOM = 6.0
 #: Room [mm] under a drawing for its heading and scale factor.
@@ -139,17 +140,6 @@ CAPTION_ROOM = 13.0
 LARGEST_VECTOR_MM = 60.0
 PLAN_ACROSS_MM = 40.0
 MECHANISM_ACROSS_MM = 100.0
-
-
-def round_up(need: float, mantissas=HANDOUT_MANTISSAS) -> float:
-    """The smallest m·10ⁿ (m in *mantissas*) not below *need* (as the nearest float to that decimal)."""
-    n = math.floor(math.log10(need)) - 1
-    while True:
-        for m in mantissas:
-            value = float(f"{m}e{n}")
-            if value >= need * (1 - 1e-12):
-                return value
-        n += 1
 
 
 def _larger(k: float) -> float:

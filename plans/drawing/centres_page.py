@@ -22,6 +22,7 @@ import math
 
 from .._text import decimal_comma
 from ..i18n import term
+from ..graphical.scales import PAGE_MANTISSAS, round_down, round_up
 from ..report import table_error, table_number
 from .blocks import Block, rows_block, table_block, text_rows
 from .centres import centre_text, draw_centres_into, draw_circle_diagram_into
@@ -31,34 +32,12 @@ from .svg import drawing_rc
 __all__ = ["draw_centres_page", "centres_page_table", "centres_page_k_l", "CENTRES_PAGE_MANTISSAS"]
 
 #: the round mantissas of the page's k_l
-CENTRES_PAGE_MANTISSAS = (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)
+CENTRES_PAGE_MANTISSAS = PAGE_MANTISSAS
 TEXT_PT = 8.0
 LEGEND_PT = 7.5
 #: the least room [mm] around the mechanism on the page (its near centres widen it; far ones are arrows outside)
 ROOM_MIN = 12.0
 LINE_GAP = 0.7
-
-
-def _round_up(need: float) -> float:
-    """The smallest m·10ⁿ (m in :data:`CENTRES_PAGE_MANTISSAS`) not below *need*."""
-    n = math.floor(math.log10(need)) - 1
-    while True:
-        for m in CENTRES_PAGE_MANTISSAS:
-            value = float(f"{m}e{n}")
-            if value >= need * (1 - 1e-12):
-                return value
-        n += 1
-
-
-def _round_down(below: float) -> float:
-    """The largest m·10ⁿ (m in :data:`CENTRES_PAGE_MANTISSAS`) not above *below*."""
-    n = math.floor(math.log10(below)) + 1
-    while True:
-        for m in reversed(CENTRES_PAGE_MANTISSAS):
-            value = float(f"{m}e{n}")
-            if value <= below * (1 + 1e-12):
-                return value
-        n -= 1
 
 
 def _number(value: float) -> str:
@@ -174,16 +153,16 @@ def centres_page_k_l(sizes: _Sizes, box: tuple[float, float], guess: float) -> f
     arrows do not scale, and which centres are drawn where they are depends
     on the size, so the size is measured, never extrapolated).
     """
-    k = _round_up(guess)
+    k = round_up(guess)
     if sizes.fits(k, box):
         for _ in range(12):
-            smaller = _round_down(k * 0.999)
+            smaller = round_down(k * 0.999)
             if not sizes.fits(smaller, box):
                 break
             k = smaller
         return k
     for _ in range(12):
-        k = _round_up(k * 1.001)
+        k = round_up(k * 1.001)
         if sizes.fits(k, box):
             break
     return k

@@ -28,6 +28,9 @@ import math
 
 __all__ = [
     "MANTISSAS",
+    "PAGE_MANTISSAS",
+    "round_up",
+    "round_down",
     "DRAWN_MIN",
     "DRAWN_MAX",
     "DRAWN_LEAST",
@@ -41,6 +44,8 @@ __all__ = [
 
 #: The round mantissas of a scale factor.
 MANTISSAS = (1, 2, 2.5, 5)
+#: The finer mantissas with which a page's drawings fill their boxes (handouts, the centres page).
+PAGE_MANTISSAS = (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)
 #: The range [mm] the largest drawn length falls into.
 DRAWN_MIN = 60.0
 DRAWN_MAX = 120.0
@@ -50,6 +55,28 @@ DRAWN_LEAST = 1.0
 DRAWN_LARGEST = 1165.0
 
 _UNITS = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}
+
+
+def round_up(need: float, mantissas=PAGE_MANTISSAS) -> float:
+    """The smallest m·10ⁿ (m in *mantissas*) not below *need* (as the nearest float to that decimal)."""
+    n = math.floor(math.log10(need)) - 1
+    while True:
+        for m in mantissas:
+            value = float(f"{m}e{n}")
+            if value >= need * (1 - 1e-12):
+                return value
+        n += 1
+
+
+def round_down(below: float, mantissas=PAGE_MANTISSAS) -> float:
+    """The largest m·10ⁿ (m in *mantissas*) not above *below* (as the nearest float to that decimal)."""
+    n = math.floor(math.log10(below)) + 1
+    while True:
+        for m in reversed(mantissas):
+            value = float(f"{m}e{n}")
+            if value <= below * (1 + 1e-12):
+                return value
+        n -= 1
 
 
 def round_scale(largest: float, fallback: float = 1.0) -> float:
