@@ -435,10 +435,10 @@ class _SceneReader:
             return ()
         median = sizes[len(sizes) // 2]
         notes = []
-        for field, written, metres in self.lengths:
+        for key, written, metres in self.lengths:
             if isinstance(written, (int, float)) and not isinstance(written, bool) and abs(metres) >= 1 and abs(metres) >= self.IMPLAUSIBLE * median:
-                line = self._line_of(field)
-                where = f"{field} (line {line})" if line else field
+                line = self._line_of(key)
+                where = f"{key} (line {line})" if line else key
                 notes.append(
                     f"bare lengths are metres: {where} = {written:g} is {abs(metres):g} m, next to lengths of about "
                     f"{median:.3g} m in the rest of the scene; write \"{written:g} mm\" if millimetres were meant"

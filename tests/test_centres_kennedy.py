@@ -29,6 +29,8 @@ from plans.centres import CentreError, instant_centres
 from plans.errors import PlansError
 from plans.scene import FRAME, example_names, example_path, load, loads
 
+from dyad_scenes import crank, prp, rpp, rpr, rrp, rrr, sine, unit, xy
+
 #: agreement of centres (unit homogeneous vectors in units of the mechanism's size)
 CENTRE_TOL = 1e-9
 #: agreement of velocities from the centres with the analytic ones, relative
@@ -287,130 +289,54 @@ def test_centres_import_neither_analytic_nor_graphical_nor_matplotlib():
 # --- Kennedy's theorem over seeded random mechanisms of every dyad kind -------------------
 
 
-def _xy(z):
-    return f"[{z.real!r}, {z.imag!r}]"
-
-
-def _sine(u, w):
-    return abs((u.conjugate() * w).imag) / (abs(u) * abs(w))
-
-
-def _crank(r, phi, omega, lines=""):
-    return f"""
-[link.2]
-points = {{ O = [0, 0], A = [{r!r}, 0] }}
-{lines}
-[driver]
-crank = "2"
-angle = "{math.degrees(phi)!r} deg"
-omega = {omega!r}
-"""
-
-
 def _random_rrr(rng):
     r, phi = rng.uniform(0.05, 1), rng.uniform(-math.pi, math.pi)
-    a = r * cmath.exp(1j * phi)
+    a = r * unit(phi)
     c, d = complex(*rng.uniform(-1, 1, 2)), complex(*rng.uniform(-1, 1, 2))
-    if min(abs(c - a), abs(c - d), abs(d)) < 0.05 or _sine(c - a, c - d) < MIN_SINE:
+    if min(abs(c - a), abs(c - d), abs(d)) < 0.05 or sine(c - a, c - d) < MIN_SINE:
         return None
-    return f"""
-[frame]
-points = {{ O = [0, 0], D = {_xy(d)} }}
-[link.3]
-points = {{ A = [0, 0], C = [{abs(c - a)!r}, 0], M = [{0.3 * abs(c - a)!r}, 0.1] }}
-[link.4]
-points = {{ D = [0, 0], C = [{abs(c - d)!r}, 0] }}
-[assembly]
-C = {_xy(c)}
-""" + _crank(r, phi, rng.uniform(0.5, 50))
+    return rrr(a, c, d) + crank(r, phi, rng.uniform(0.5, 50))
 
 
 def _random_rrp(rng):
     r, phi, alpha = rng.uniform(0.05, 1), rng.uniform(-math.pi, math.pi), rng.uniform(-math.pi, math.pi)
     slot_origin = 0.3 * rng.uniform(-1, 1) * 1j
-    u = cmath.exp(1j * (phi + alpha))
-    c = cmath.exp(1j * phi) * slot_origin + rng.uniform(-1, 1) * u
+    u = unit(phi + alpha)
+    c = unit(phi) * slot_origin + rng.uniform(-1, 1) * u
     b = complex(*rng.uniform(-1, 1, 2))
-    if abs(c - b) < 0.05 or abs(b) < 0.05 or _sine(1j * (c - b), u) < MIN_SINE:
+    if abs(c - b) < 0.05 or abs(b) < 0.05 or sine(1j * (c - b), u) < MIN_SINE:
         return None
-    return f"""
-[frame]
-points = {{ O = [0, 0], B = {_xy(b)} }}
-[link.3]
-points = {{ B = [0, 0], C = [{abs(c - b)!r}, 0] }}
-[[slider]]
-pin = "C"
-on = "2.slot"
-[assembly]
-C = {_xy(c)}
-""" + _crank(r, phi, -rng.uniform(0.5, 50), f"lines = {{ slot = {{ through = {_xy(slot_origin)}, angle = \"{math.degrees(alpha)!r} deg\" }} }}")
+    return rrp(b, c, slot_origin, alpha, r, phi, -rng.uniform(0.5, 50))
 
 
 def _random_rpr(rng):
     r, phi, theta = rng.uniform(0.05, 1), rng.uniform(-math.pi, math.pi), rng.uniform(-math.pi, math.pi)
-    a, u = r * cmath.exp(1j * phi), cmath.exp(1j * theta)
+    a, u = r * unit(phi), unit(theta)
     d = 0.2 * rng.uniform(-1, 1)
     e = a + d * 1j * u + (0.3 + rng.uniform(0, 1)) * u
-    if abs(e) < 0.05 or _sine(1j * (e - a), u) < MIN_SINE:
+    if abs(e) < 0.05 or sine(1j * (e - a), u) < MIN_SINE:
         return None
-    return f"""
-[frame]
-points = {{ O = [0, 0], E = {_xy(e)} }}
-[link.3]
-points = {{ A = [0, 0], M = [1.2, 0] }}
-lines = {{ rod = {{ through = [0, {d!r}], angle = 0 }} }}
-[[slider]]
-pin = "E"
-on = "3.rod"
-[assembly]
-M = {_xy(a + 1.2 * u)}
-""" + _crank(r, phi, rng.uniform(0.5, 50))
+    return rpr(a, e, u, d) + crank(r, phi, rng.uniform(0.5, 50))
 
 
 def _random_prp(rng):
     r, phi, alpha, gamma = rng.uniform(0.05, 1), *rng.uniform(-math.pi, math.pi, 3)
-    u, w = cmath.exp(1j * (phi + alpha)), cmath.exp(1j * gamma)
-    if _sine(u, w) < MIN_SINE:
+    u, w = unit(phi + alpha), unit(gamma)
+    if sine(u, w) < MIN_SINE:
         return None
     c = 0.5 * rng.uniform(-1, 1) * u
     g = c - rng.uniform(-1, 1) * w
-    return f"""
-[frame]
-points = {{ O = [0, 0] }}
-lines = {{ guide = {{ through = {_xy(g)}, angle = "{math.degrees(gamma)!r} deg" }} }}
-[[slider]]
-pin = "C"
-on = "2.slot"
-name = "3"
-[[slider]]
-pin = "C"
-on = "frame.guide"
-name = "4"
-""" + _crank(r, phi, rng.uniform(0.5, 50), f"lines = {{ slot = {{ through = \"O\", angle = \"{math.degrees(alpha)!r} deg\" }} }}")
+    return prp(g, gamma, alpha, r, phi, rng.uniform(0.5, 50))
 
 
 def _random_rpp(rng):
     r, phi, alpha, beta, gamma = rng.uniform(0.05, 1), *rng.uniform(-math.pi, math.pi, 4)
-    a = r * cmath.exp(1j * phi)
-    slot = cmath.exp(1j * (gamma - beta + alpha))
-    if _sine(slot, cmath.exp(1j * gamma)) < MIN_SINE:
+    a = r * unit(phi)
+    slot = unit(gamma - beta + alpha)
+    if sine(slot, unit(gamma)) < MIN_SINE:
         return None
     y = a - 0.5 * rng.uniform(-1, 1) * slot
-    return f"""
-[frame]
-points = {{ O = [0, 0] }}
-lines = {{ rail = {{ through = {_xy(y)}, angle = "{math.degrees(gamma)!r} deg" }} }}
-[link.4]
-points = {{ Y = [0, 0], R = [0.3, 0.1] }}
-lines = {{ slot = {{ through = "Y", angle = "{math.degrees(alpha)!r} deg" }}, rail = {{ through = "Y", angle = "{math.degrees(beta)!r} deg" }} }}
-[[slider]]
-pin = "A"
-on = "4.slot"
-name = "3"
-[[prismatic]]
-line = "4.rail"
-on = "frame.rail"
-""" + _crank(r, phi, rng.uniform(0.5, 50))
+    return rpp(y, gamma, alpha, beta) + crank(r, phi, rng.uniform(0.5, 50))
 
 
 def _random_six_bar(rng):
@@ -419,13 +345,13 @@ def _random_six_bar(rng):
     if base is None:
         return None
     e = complex(*rng.uniform(-1, 1, 2))
-    return base.replace("[link.4]", f"""[link.5]
-points = {{ M = [0, 0], N = [0.7, 0] }}
-lines = {{ rod = {{ through = "M", angle = 0 }} }}
+    return base.replace("[link.4]", """[link.5]
+points = { M = [0, 0], N = [0.7, 0] }
+lines = { rod = { through = "M", angle = 0 } }
 [[slider]]
 pin = "E"
 on = "5.rod"
-[link.4]""").replace("points = { O = [0, 0], D", f"points = {{ O = [0, 0], E = {_xy(e)}, D")
+[link.4]""").replace("points = { O = [0, 0], D", f"points = {{ O = [0, 0], E = {xy(e)}, D")
 
 
 @pytest.mark.parametrize("kind, make", [("RRR", _random_rrr), ("RRP", _random_rrp), ("RPR", _random_rpr),

@@ -15,7 +15,6 @@ every run tries the same ones.
 
 from __future__ import annotations
 
-import cmath
 import math
 
 import numpy as np
@@ -25,6 +24,8 @@ from plans.drawing.svg import drawing_rc
 from plans.drawing.typeset import TypesetText
 from plans.handout import handout_pages, write_handout
 from plans.scene import loads
+
+from dyad_scenes import crank, prp, rpp, rpr, rrp, rrr, sine, unit
 
 #: how many mechanisms (the issue asks for at least 200)
 COUNT = 200
@@ -40,14 +41,6 @@ TITLES = (
 )
 
 
-def _xy(z: complex) -> str:
-    return f"[{z.real!r}, {z.imag!r}]"
-
-
-def _sine(u: complex, w: complex) -> float:
-    return abs((u.conjugate() * w).imag) / (abs(u) * abs(w))
-
-
 def _scene(rng: np.random.Generator, n: int) -> str:
     """A valid scene of dyad kind KINDS[n % 5], scaled by 10^U(-6, 3), its crank at ω = ±10^U(-3, 5)."""
     kind = KINDS[n % len(KINDS)]
@@ -59,112 +52,43 @@ def _scene(rng: np.random.Generator, n: int) -> str:
     while True:
         r = rng.uniform(0.05, 1.0)
         phi = rng.uniform(-math.pi, math.pi)
-        a = r * cmath.exp(1j * phi)
+        a = r * unit(phi)
+        driver = crank(r, phi, omega, epsilon, scale=scale)
         if kind == "RRR":
             c, d = complex(*rng.uniform(-1, 1, 2)), complex(*rng.uniform(-1, 1, 2))
-            if abs(c - a) < 0.05 or abs(c - d) < 0.05 or abs(d) < 0.05 or _sine(c - a, c - d) < 0.2:
+            if abs(c - a) < 0.05 or abs(c - d) < 0.05 or abs(d) < 0.05 or sine(c - a, c - d) < 0.2:
                 continue
-            body = f"""
-[frame]
-points = {{ O = [0, 0], D = {_xy(d * scale)} }}
-[link.3]
-points = {{ A = [0, 0], C = [{abs(c - a) * scale!r}, 0], {long} = [{0.3 * abs(c - a) * scale!r}, {0.1 * scale!r}] }}
-[link.4]
-points = {{ D = [0, 0], C = [{abs(c - d) * scale!r}, 0] }}
-[assembly]
-C = {_xy(c * scale)}
-"""
+            body = rrr(a, c, d, long, scale) + driver
         elif kind == "RRP":
             alpha, b = rng.uniform(-math.pi, math.pi), complex(*rng.uniform(-1, 1, 2))
-            u = cmath.exp(1j * (phi + alpha))
+            u = unit(phi + alpha)
             c = rng.uniform(-1, 1) * u
-            if abs(c - b) < 0.05 or abs(b) < 0.05 or _sine(1j * (c - b), u) < 0.2:
+            if abs(c - b) < 0.05 or abs(b) < 0.05 or sine(1j * (c - b), u) < 0.2:
                 continue
-            body = f"""
-[frame]
-points = {{ O = [0, 0], B = {_xy(b * scale)} }}
-[link.3]
-points = {{ B = [0, 0], C = [{abs(c - b) * scale!r}, 0] }}
-[[slider]]
-pin = "C"
-on = "2.slot"
-[assembly]
-C = {_xy(c * scale)}
-"""
-            extra = f'lines = {{ slot = {{ through = "O", angle = "{math.degrees(alpha)!r} deg" }} }}'
+            body = rrp(b, c, 0j, alpha, r, phi, omega, epsilon, scale)
         elif kind == "RPR":
             theta = rng.uniform(-math.pi, math.pi)
-            u = cmath.exp(1j * theta)
+            u = unit(theta)
             e = a + (0.3 + abs(rng.uniform(-1, 1))) * u
-            if abs(e) < 0.05 or _sine(1j * (e - a), u) < 0.2:
+            if abs(e) < 0.05 or sine(1j * (e - a), u) < 0.2:
                 continue
-            body = f"""
-[frame]
-points = {{ O = [0, 0], E = {_xy(e * scale)} }}
-[link.3]
-points = {{ A = [0, 0], {long} = [{1.2 * scale!r}, 0] }}
-lines = {{ rod = {{ through = "A", angle = 0 }} }}
-[[slider]]
-pin = "E"
-on = "3.rod"
-[assembly]
-{long} = {_xy((a + 1.2 * u) * scale)}
-"""
+            body = rpr(a, e, u, 0.0, long, scale) + driver
         elif kind == "PRP":
             alpha, gamma = rng.uniform(-math.pi, math.pi, 2)
-            u, w = cmath.exp(1j * (phi + alpha)), cmath.exp(1j * gamma)
-            if _sine(u, w) < 0.2:
+            u, w = unit(phi + alpha), unit(gamma)
+            if sine(u, w) < 0.2:
                 continue
             c = 0.5 * rng.uniform(-1, 1) * u
             g = c - rng.uniform(-1, 1) * w
-            body = f"""
-[frame]
-points = {{ O = [0, 0] }}
-lines = {{ guide = {{ through = {_xy(g * scale)}, angle = "{math.degrees(gamma)!r} deg" }} }}
-[[slider]]
-pin = "C"
-on = "2.slot"
-name = "3"
-[[slider]]
-pin = "C"
-on = "frame.guide"
-name = "4"
-"""
-            extra = f'lines = {{ slot = {{ through = "O", angle = "{math.degrees(alpha)!r} deg" }} }}'
+            body = prp(g, gamma, alpha, r, phi, omega, epsilon, scale)
         else:  # RPP
             alpha, beta, gamma = rng.uniform(-math.pi, math.pi, 3)
-            slot = cmath.exp(1j * (gamma - beta + alpha))
-            if _sine(slot, cmath.exp(1j * gamma)) < 0.2:
+            slot = unit(gamma - beta + alpha)
+            if sine(slot, unit(gamma)) < 0.2:
                 continue
             y = a - 0.5 * rng.uniform(-1, 1) * slot
-            body = f"""
-[frame]
-points = {{ O = [0, 0] }}
-lines = {{ rail = {{ through = {_xy(y * scale)}, angle = "{math.degrees(gamma)!r} deg" }} }}
-[link.4]
-points = {{ Y = [0, 0], R = [{0.3 * scale!r}, {0.1 * scale!r}] }}
-lines = {{ slot = {{ through = "Y", angle = "{math.degrees(alpha)!r} deg" }}, rail = {{ through = "Y", angle = "{math.degrees(beta)!r} deg" }} }}
-[[slider]]
-pin = "A"
-on = "4.slot"
-name = "3"
-[[prismatic]]
-line = "4.rail"
-on = "frame.rail"
-"""
-        extra = locals().get("extra", "")
-        break
-    return f"""title = {_toml_string(title)}
-{body}
-[link.2]
-points = {{ O = [0, 0], A = [{r * scale!r}, 0] }}
-{extra}
-[driver]
-crank = "2"
-angle = "{math.degrees(phi)!r} deg"
-omega = {omega!r}
-epsilon = {epsilon!r}
-"""
+            body = rpp(y, gamma, alpha, beta, scale) + driver
+        return f"title = {_toml_string(title)}\n{body}"
 
 
 def _toml_string(text: str) -> str:

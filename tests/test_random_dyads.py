@@ -8,7 +8,6 @@ check; configurations near a dead centre (|sin| between the construction
 lines below 0.2, computed here from the chosen geometry) are skipped.
 """
 
-import cmath
 import math
 
 from hypothesis import assume, given, settings
@@ -18,6 +17,8 @@ from plans.analytic import solve
 from plans.graphical import construct
 from plans.scene import loads
 from plans.structure import find_structure
+
+from dyad_scenes import crank, prp, rpp, rpr, rrp, rrr, sine, unit
 
 #: agreement of the two methods, relative to the largest value of each kind
 REL = 1e-9
@@ -29,27 +30,6 @@ angles = st.floats(-math.pi, math.pi)
 params = st.floats(-1.0, 1.0)
 omegas = st.floats(0.5, 50.0) | st.floats(-50.0, -0.5)
 epsilons = st.floats(-100.0, 100.0)
-
-
-def _xy(z: complex) -> str:
-    return f"[{z.real!r}, {z.imag!r}]"
-
-
-def _crank(r: float, phi: float, omega: float, epsilon: float, extra_lines: str = "") -> str:
-    return f"""
-[link.2]
-points = {{ O = [0, 0], A = [{r!r}, 0] }}
-{extra_lines}
-[driver]
-crank = "2"
-angle = "{math.degrees(phi)!r} deg"
-omega = {omega!r}
-epsilon = {epsilon!r}
-"""
-
-
-def _sine(u: complex, w: complex) -> float:
-    return abs((u.conjugate() * w).imag) / (abs(u) * abs(w))
 
 
 def _agree(text: str, kind: str) -> None:
@@ -82,19 +62,10 @@ def _agree(text: str, kind: str) -> None:
 @given(r=lengths, phi=angles, c=st.complex_numbers(max_magnitude=1.0), d=st.complex_numbers(max_magnitude=1.0),
        omega=omegas, epsilon=epsilons)
 def test_rrr(r, phi, c, d, omega, epsilon):
-    a = r * cmath.exp(1j * phi)
+    a = r * unit(phi)
     assume(abs(c - a) > 0.05 and abs(c - d) > 0.05 and abs(d) > 0.05)
-    assume(_sine(c - a, c - d) > MIN_SINE)
-    text = f"""
-[frame]
-points = {{ O = [0, 0], D = {_xy(d)} }}
-[link.3]
-points = {{ A = [0, 0], C = [{abs(c - a)!r}, 0], M = [{0.3 * abs(c - a)!r}, 0.1] }}
-[link.4]
-points = {{ D = [0, 0], C = [{abs(c - d)!r}, 0] }}
-[assembly]
-C = {_xy(c)}
-""" + _crank(r, phi, omega, epsilon)
+    assume(sine(c - a, c - d) > MIN_SINE)
+    text = rrr(a, c, d) + crank(r, phi, omega, epsilon)
     _agree(text, "RRR")
 
 
@@ -104,21 +75,11 @@ C = {_xy(c)}
 def test_rrp_on_a_turning_offset_guide(r, phi, alpha, offset, s, b, omega, epsilon):
     # crank 2 carries a slot at angle alpha, offset from the pivot; block 4 on it pinned at C to link 3 about frame B
     slot_origin = 0.3 * offset * 1j  # own coordinates of the slot's through point
-    u = cmath.exp(1j * (phi + alpha))
-    c = cmath.exp(1j * phi) * slot_origin + s * u
+    u = unit(phi + alpha)
+    c = unit(phi) * slot_origin + s * u
     assume(abs(c - b) > 0.05 and abs(b) > 0.05)
-    assume(_sine(1j * (c - b), u) > MIN_SINE)
-    text = f"""
-[frame]
-points = {{ O = [0, 0], B = {_xy(b)} }}
-[link.3]
-points = {{ B = [0, 0], C = [{abs(c - b)!r}, 0] }}
-[[slider]]
-pin = "C"
-on = "2.slot"
-[assembly]
-C = {_xy(c)}
-""" + _crank(r, phi, omega, epsilon, f"lines = {{ slot = {{ through = {_xy(slot_origin)}, angle = \"{math.degrees(alpha)!r} deg\" }} }}")
+    assume(sine(1j * (c - b), u) > MIN_SINE)
+    text = rrp(b, c, slot_origin, alpha, r, phi, omega, epsilon)
     _agree(text, "RRP")
 
 
@@ -126,25 +87,14 @@ C = {_xy(c)}
 @given(r=lengths, phi=angles, theta=angles, offset=params, t=params, omega=omegas, epsilon=epsilons)
 def test_rpr_with_an_offset_rod(r, phi, theta, offset, t, omega, epsilon):
     # rod 3 pinned at A, its line 0.2·offset from A; it slides through a sleeve pivoting at frame point E
-    a = r * cmath.exp(1j * phi)
-    u = cmath.exp(1j * theta)
+    a = r * unit(phi)
+    u = unit(theta)
     d = 0.2 * offset
     e = a + d * 1j * u + (0.3 + abs(t)) * u
     assume(abs(e) > 0.05)
     # construction lines: ⊥ AE (rotation about A) and ∥ rod
-    assume(_sine(1j * (e - a), u) > MIN_SINE)
-    text = f"""
-[frame]
-points = {{ O = [0, 0], E = {_xy(e)} }}
-[link.3]
-points = {{ A = [0, 0], M = [1.2, 0] }}
-lines = {{ rod = {{ through = [0, {d!r}], angle = 0 }} }}
-[[slider]]
-pin = "E"
-on = "3.rod"
-[assembly]
-M = {_xy(a + 1.2 * u)}
-""" + _crank(r, phi, omega, epsilon)
+    assume(sine(1j * (e - a), u) > MIN_SINE)
+    text = rpr(a, e, u, d) + crank(r, phi, omega, epsilon)
     _agree(text, "RPR")
 
 
@@ -152,24 +102,12 @@ M = {_xy(a + 1.2 * u)}
 @given(r=lengths, phi=angles, alpha=angles, gamma=angles, s=params, t=params, omega=omegas, epsilon=epsilons)
 def test_prp_with_one_turning_guide(r, phi, alpha, gamma, s, t, omega, epsilon):
     # block 3 on the crank's slot, block 4 on a frame guide at angle gamma, pinned together at C
-    u = cmath.exp(1j * (phi + alpha))
-    w = cmath.exp(1j * gamma)
-    assume(_sine(u, w) > MIN_SINE)
+    u = unit(phi + alpha)
+    w = unit(gamma)
+    assume(sine(u, w) > MIN_SINE)
     c = 0.5 * s * u
     g = c - t * w
-    text = f"""
-[frame]
-points = {{ O = [0, 0] }}
-lines = {{ guide = {{ through = {_xy(g)}, angle = "{math.degrees(gamma)!r} deg" }} }}
-[[slider]]
-pin = "C"
-on = "2.slot"
-name = "3"
-[[slider]]
-pin = "C"
-on = "frame.guide"
-name = "4"
-""" + _crank(r, phi, omega, epsilon, f"lines = {{ slot = {{ through = \"O\", angle = \"{math.degrees(alpha)!r} deg\" }} }}")
+    text = prp(g, gamma, alpha, r, phi, omega, epsilon)
     _agree(text, "PRP")
 
 
@@ -177,24 +115,10 @@ name = "4"
 @given(r=lengths, phi=angles, alpha=angles, beta=angles, gamma=angles, t=params, omega=omegas, epsilon=epsilons)
 def test_rpp_yoke_at_any_angles(r, phi, alpha, beta, gamma, t, omega, epsilon):
     # block 3 on crank pin A slides in yoke 4's slot (angle alpha); the yoke's rail (angle beta) slides on a frame line
-    a = r * cmath.exp(1j * phi)
+    a = r * unit(phi)
     yoke = gamma - beta
-    slot = cmath.exp(1j * (yoke + alpha))
-    assume(_sine(slot, cmath.exp(1j * gamma)) > MIN_SINE)
+    slot = unit(yoke + alpha)
+    assume(sine(slot, unit(gamma)) > MIN_SINE)
     y = a - 0.5 * t * slot
-    text = f"""
-[frame]
-points = {{ O = [0, 0] }}
-lines = {{ rail = {{ through = {_xy(y)}, angle = "{math.degrees(gamma)!r} deg" }} }}
-[link.4]
-points = {{ Y = [0, 0], R = [0.3, 0.1] }}
-lines = {{ slot = {{ through = "Y", angle = "{math.degrees(alpha)!r} deg" }}, rail = {{ through = "Y", angle = "{math.degrees(beta)!r} deg" }} }}
-[[slider]]
-pin = "A"
-on = "4.slot"
-name = "3"
-[[prismatic]]
-line = "4.rail"
-on = "frame.rail"
-""" + _crank(r, phi, omega, epsilon)
+    text = rpp(y, gamma, alpha, beta) + crank(r, phi, omega, epsilon)
     _agree(text, "RPP")
