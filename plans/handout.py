@@ -175,9 +175,14 @@ def _geometry_box(box, fixed=None) -> tuple[float, float]:
     return max(w - fw, 5.0), max(h - fh, 5.0)
 
 
-def _fixed_parts(g, lang: str) -> dict[str, tuple[float, float]]:
-    """Kind -> what a drawing of *g* takes beyond its geometry [mm] (margin, labels, supports, driver arcs,
-    caption), measured by drawing it once (never less than the default label and caption room)."""
+def _fixed_parts(g, lang: str, kinds=("mechanism", "velocity", "acceleration")) -> dict[str, tuple[float, float]]:
+    """Kind -> what a drawing of *g* takes beyond its geometry [mm] (margin, labels, supports, blocks, driver arcs,
+    caption), measured by drawing it once (never less than the default label and caption room).
+
+    What does not scale with the drawing stays the same at any scale factor
+    (a mechanism's blocks and supports, the labels, the caption): the size of
+    a drawing at any k is its geometry / k plus this.
+    """
     from .drawing.blocks import drawing_block
     from .drawing.svg import drawing_rc, new_figure
 
@@ -187,7 +192,7 @@ def _fixed_parts(g, lang: str) -> dict[str, tuple[float, float]]:
     with drawing_rc():
         fig = new_figure()
         for key, (kind, obj) in objects.items():
-            if obj is None or key not in e:
+            if obj is None or key not in e or kind not in kinds:
                 continue
             block = drawing_block(fig, kind, obj, lang, legend=False)
             k = g.scales[key]
@@ -205,34 +210,39 @@ def handout_scales(runs, frame, given: dict | None = None, fixed: dict | None = 
     """The scale factors of a handout's position pages for the drawing boxes of *frame*.
 
     k_l is common to every position (the mechanism at the same scale on
-    every page and on the plan of positions: its largest width and height
-    over the positions fit the mechanism's box); k_v and k_a are chosen per
+    every page and on the plan of positions: every position's mechanism, drawn,
+    fits the mechanism's box); k_v and k_a are chosen per
     position, each the smallest round factor (:data:`HANDOUT_MANTISSAS`)
     with which that position's plan fits its box, so that every plan fills
     its box.  Each page states its own.  Factors in *given* are kept.
     *fixed* (kind -> (width, height) [mm], see :func:`_fixed_parts`) is what
-    a drawing takes beyond its geometry; by default a label and caption room.
+    a drawing takes beyond its geometry; by default a label and caption room;
+    ``fixed["mechanisms"]``, when given, is that of each solved position's mechanism.
 
     Returns
     -------
     (k_l, [ {"k_l", "k_v", "k_a"} per run ])
     """
     given = {k: v for k, v in (given or {}).items() if v is not None}
+    fixed = fixed or {}
     solved = [r for r in runs if r.ok]
     extents = [_extents(r.graphical) for r in solved]
     if "k_l" in given:
         k_l = given["k_l"]
     else:
-        w = max((e["k_l"][0] for e in extents), default=0.0)
-        h = max((e["k_l"][1] for e in extents), default=0.0)
-        k_l = _fit((w, h), frame.boxes["mechanism"], solved[0].graphical.scales["k_l"] if solved else 1.0, (fixed or {}).get("mechanism"))
+        each = fixed.get("mechanisms") or [fixed.get("mechanism")] * len(solved)
+        need = 0.0
+        for e, parts in zip(extents, each):
+            gw, gh = _geometry_box(frame.boxes["mechanism"], parts)
+            need = max(need, e["k_l"][0] / gw, e["k_l"][1] / gh)
+        k_l = round_up(need) if need > 0 and math.isfinite(need) else (solved[0].graphical.scales["k_l"] if solved else 1.0)
     per_run = []
     for r, e in zip(solved, extents):
         scales = {"k_l": k_l}
         for key, kind in (("k_v", "velocity"), ("k_a", "acceleration")):
             if key not in e:
                 continue
-            scales[key] = given[key] if key in given else _fit(e[key], frame.boxes[kind], r.graphical.scales[key], (fixed or {}).get(kind))
+            scales[key] = given[key] if key in given else _fit(e[key], frame.boxes[kind], r.graphical.scales[key], fixed.get(kind))
         per_run.append(scales)
     return k_l, per_run
 
@@ -259,24 +269,6 @@ def _frame_score(runs, frame, given, fixed=None) -> float:
                 ratios.append(max(w, h) / scales[key] / PLAN_ACROSS_MM)
     capped = [min(x, 1.5) for x in ratios] or [0.0]
     return 0.2 * sum(capped) / len(capped) + 0.8 * min(capped)
-
-
-def _common_k_l(solved, per_run, frame, given, solution_at, lang: str) -> float:
-    """The k_l of every position page: that of :func:`handout_scales`, enlarged until every mechanism, drawn, fits its box."""
-    from .drawing.blocks import drawing_block
-    from .drawing.svg import drawing_rc, new_figure
-
-    k_l = per_run[0]["k_l"]
-    for r, scales in zip(solved, per_run):
-        for _ in range(3):
-            g = solution_at(r, {**scales, "k_l": k_l})
-            with drawing_rc():
-                block = drawing_block(new_figure(), "mechanism", g, lang, legend=False)
-            wider = _make_room(g, frame, {"mechanism": (block.width, block.height)}, g.scales, {**given, "k_v": 1.0, "k_a": 1.0})["k_l"]
-            if wider == k_l:
-                break
-            k_l = wider
-    return k_l
 
 
 def _make_room(g, frame, sizes, scales, given) -> dict[str, float]:
@@ -354,8 +346,8 @@ def handout_pages(
     """
     from .compare import compare
     from .drawing.diagrams import draw_cycle_diagrams
-    from .drawing.layout import position_frames, stamp_page_number
-    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_bands, scale_line
+    from .drawing.layout import stamp_page_number
+    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_frames, scale_line
     from .graphical import construct
     from .loops import loop_equations
     from .positions import at_page_precision, run_positions
@@ -394,13 +386,13 @@ def handout_pages(
     pages_runs = {}
     if solved:
         sample = solved[0]
-        bands = position_page_bands(sample.graphical, lang=lang, header_lines=lambda page: head(sample, sample.graphical.scales, page), equations=_equations(sample.graphical, run.structure))
-        frames = position_frames(bands)
-        unscaled = _fixed_parts(sample.graphical, lang)  # what the drawings take beyond their geometry
+        frames = position_page_frames(sample.graphical, lang=lang, header_lines=lambda page: head(sample, sample.graphical.scales, page), equations=_equations(sample.graphical, run.structure))
+        # what the drawings take beyond their geometry: the plans' as the first position's, each mechanism's its own
+        unscaled = _fixed_parts(sample.graphical, lang)
+        if given.get("k_l") is None and len(solved) > 1:
+            unscaled["mechanisms"] = [unscaled["mechanism"]] + [_fixed_parts(r.graphical, lang, ("mechanism",))["mechanism"] for r in solved[1:]]
         frame = max(frames, key=lambda f: _frame_score(run.runs, f, given, unscaled))
         k_l_common, per_run = handout_scales(run.runs, frame, given, unscaled)
-        if given.get("k_l") is None and len(solved) > 1:  # one position: its page makes room itself
-            k_l_common = _common_k_l(solved, per_run, frame, given, lambda r, sc: at_scales(r, sc).graphical, lang)
         for r, scales in zip(solved, per_run):
             pages_runs[r.index] = (r, {**scales, "k_l": k_l_common})
         # the same k_l on every page: only k_v, k_a make room page by page

@@ -129,13 +129,16 @@ class Frame:
     ``"acceleration"``; ``pages`` says on which page each is drawn
     (``"velocity"``: the mechanism and the velocity plan;
     ``"acceleration"``: the acceleration plan alone); *name* says which
-    arrangement it is.
+    arrangement it is; ``text`` (page -> box), where a page's legend and
+    vector equations go when not in a band at its foot.
     """
 
-    def __init__(self, name: str, boxes: dict[str, tuple[float, float, float, float]], pages: dict[str, str] | None = None):
+    def __init__(self, name: str, boxes: dict[str, tuple[float, float, float, float]], pages: dict[str, str] | None = None,
+                 text: dict[str, tuple[float, float, float, float]] | None = None):
         self.name = name
         self.boxes = boxes
         self.pages = pages or {kind: "velocity" for kind in boxes}
+        self.text = text or {}
 
     def on(self, page: str) -> dict[str, tuple[float, float, float, float]]:
         """The boxes drawn on *page* (``"velocity"`` or ``"acceleration"``)."""

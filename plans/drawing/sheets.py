@@ -26,7 +26,7 @@ from .._text import decimal_comma, user_text
 from ..i18n import term
 from ._canvas import Sketch, fit_axes, fmt_number
 from .blocks import Block, drawing_block, legend_block, pretty_equation, readings_block, rows_block, table_block, text_rows
-from .layout import A4, GAP, PAGE_MARGIN, header, header_height, new_page, place_in_box
+from .layout import A4, GAP, PAGE_MARGIN, Frame, header, header_height, new_page, place_in_box, position_frames
 from .sheet import branch_lines, draw_sheet, sheet_equations
 from .style import HEADING_PT, MARGIN_MM, SMALL_PT
 from .svg import drawing_rc
@@ -40,6 +40,7 @@ __all__ = [
     "draw_position_page",
     "POSITION_PAGES",
     "position_page_bands",
+    "position_page_frames",
     "draw_check_pages",
     "draw_cover_page",
     "draw_unsolved_page",
@@ -128,7 +129,8 @@ def position_page_bands(graphical, *, lang: str = "en", header_lines=(), equatio
     """Page (``"velocity"``, ``"acceleration"``) -> (top, bottom) [mm] of the room it leaves for its drawings.
 
     Under the header (*header_lines*: a list, or a callable given the page),
-    above the page's legend and vector equations (*equations*: page -> lines).
+    above the page's legend and vector equations (*equations*: page -> lines)
+    in a band at its foot.
     """
     width = A4[0] - 2 * PAGE_MARGIN
     out = {}
@@ -137,12 +139,81 @@ def position_page_bands(graphical, *, lang: str = "en", header_lines=(), equatio
             continue
         lines = header_lines(page) if callable(header_lines) else header_lines
         with drawing_rc():
-            legend = legend_block(graphical, lang, columns=2, plans=(page,))
-            eq_block = _equations_block(graphical, None if equations is None else equations[page], lang, width, page)
+            legend, eq_block = _page_text(graphical, None if equations is None else equations[page], lang, width, page)
         top = A4[1] - header_height(list(lines))
-        bottom = PAGE_MARGIN + 4.0 + eq_block.height + GAP + legend.height + GAP
+        bottom = FOOT + eq_block.height + GAP + legend.height + GAP
         out[page] = (top, bottom)
     return out
+
+
+#: where the blocks of a page end [mm from the foot]: above the footer and page number
+FOOT = PAGE_MARGIN + 4.0
+#: the widths [fraction of the page's width] tried for a column of legend and equations beside the velocity plan
+TEXT_COLUMNS = (0.3, 0.36, 0.42, 0.5)
+#: the shares [fraction of the room's height] tried for the mechanism above the velocity plan
+MECHANISM_SHARES = (0.45, 0.5, 0.55, 0.6, 0.65, 0.7)
+#: the shares [fraction of the page's width] tried for the mechanism beside the velocity plan
+MECHANISM_COLUMNS = (0.45, 0.5, 0.55, 0.6, 0.65)
+
+
+def position_page_frames(graphical, *, lang: str = "en", header_lines=(), equations=None) -> list[Frame]:
+    """The arrangements of a position's pages to choose from (:class:`plans.drawing.layout.Frame`).
+
+    Those of :func:`plans.drawing.layout.position_frames` (the legend and the
+    equations in a band at the foot of the page), and on the velocity page:
+
+    * ``top-S-text-C``: the mechanism across the page (S % of the room's
+      height), under it the velocity plan and, beside it on the right, a
+      column (C % of the width) of the legend and the equations;
+    * ``left-S-text``: the mechanism in a column on the left (S % of the
+      width); on the right the velocity plan over the legend and equations.
+
+    Every drawing and text box lies between the header and the foot of the
+    page; the text columns are measured, so they hold their text.
+    """
+    bands = position_page_bands(graphical, lang=lang, header_lines=header_lines, equations=equations)
+    frames = position_frames(bands)
+    x0 = PAGE_MARGIN
+    width = A4[0] - 2 * PAGE_MARGIN
+    top = bands["velocity"][0]
+    room = top - FOOT
+    lines = None if equations is None else equations["velocity"]
+    extra = {"acceleration": frames[0].boxes["acceleration"]} if "acceleration" in frames[0].boxes else {}
+    pages = frames[0].pages
+    with drawing_rc():
+        heights = {}
+        for cw in [round(width * c, 3) for c in TEXT_COLUMNS] + [round(width * (1.0 - s) - GAP, 3) for s in MECHANISM_COLUMNS]:
+            legend, eq_block = _page_text(graphical, lines, lang, cw, "velocity")
+            heights[cw] = (max(legend.width, eq_block.width), legend.height + GAP + eq_block.height)
+    for share in MECHANISM_SHARES:
+        hm = room * share
+        below = room - hm - GAP
+        for c in TEXT_COLUMNS:
+            cw = round(width * c, 3)
+            tw, th = heights[cw]
+            if th > below or tw > cw + 0.5:
+                continue
+            boxes = {"mechanism": (x0, top - hm, width, hm), "velocity": (x0, FOOT, width - cw - GAP, below), **extra}
+            text = {"velocity": (x0 + width - cw, FOOT, cw, below)}
+            frames.append(Frame(f"top-{round(share * 100)}-text-{round(c * 100)}", boxes, pages, text))
+    for share in MECHANISM_COLUMNS:
+        wm = width * share
+        cw = round(width * (1.0 - share) - GAP, 3)
+        tw, th = heights[cw]
+        if tw > cw + 0.5 or room - th - GAP < 40.0:
+            continue
+        boxes = {"mechanism": (x0, FOOT, wm, room), "velocity": (x0 + wm + GAP, FOOT + th + GAP, cw, room - th - GAP), **extra}
+        text = {"velocity": (x0 + wm + GAP, FOOT, cw, th)}
+        frames.append(Frame(f"left-{round(share * 100)}-text", boxes, pages, text))
+    return frames
+
+
+def _page_text(g, equations, lang: str, width: float, page: str) -> tuple[Block, Block]:
+    """The legend (two columns when they fit *width* [mm], else one) and the vector equations broken to *width*."""
+    legend = legend_block(g, lang, columns=2, plans=(page,))
+    if legend.width > width:
+        legend = legend_block(g, lang, columns=1, plans=(page,))
+    return legend, _equations_block(g, equations, lang, width, page)
 
 
 def draw_position_page(
@@ -202,12 +273,16 @@ def draw_position_page(
             place_in_box(block, sketch, box, size)
         lines = header_lines(g) if callable(header_lines) else header_lines
         header(sketch, size, title or run.scene.title, [decimal_comma(line, lang) for line in lines])
-        eq_block = _equations_block(g, equations, lang, width, page)
-        legend = legend_block(g, lang, columns=2, plans=(page,))
-        y = PAGE_MARGIN + 4.0
-        eq_block.place(sketch, PAGE_MARGIN, y, size)
-        y += eq_block.height + GAP
-        legend.place(sketch, PAGE_MARGIN, y, size)
+        text = frame.text.get(page)
+        if text is not None:  # a column: the legend at its top, the equations under it
+            tx, ty, tw, th = text
+            legend, eq_block = _page_text(g, equations, lang, tw, page)
+            legend.place(sketch, tx, ty + th - legend.height, size)
+            eq_block.place(sketch, tx, ty + th - legend.height - GAP - eq_block.height, size)
+        else:  # a band at the foot of the page: the equations at the foot, the legend above them
+            legend, eq_block = _page_text(g, equations, lang, width, page)
+            eq_block.place(sketch, PAGE_MARGIN, FOOT, size)
+            legend.place(sketch, PAGE_MARGIN, FOOT + eq_block.height + GAP, size)
         page_footer(sketch, footer)
     return fig, g
 
