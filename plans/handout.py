@@ -217,7 +217,9 @@ def handout_scales(runs, frame, given: dict | None = None, fixed: dict | None = 
     its box.  Each page states its own.  Factors in *given* are kept.
     *fixed* (kind -> (width, height) [mm], see :func:`_fixed_parts`) is what
     a drawing takes beyond its geometry; by default a label and caption room;
-    ``fixed["mechanisms"]``, when given, is that of each solved position's mechanism.
+    ``fixed["mechanisms"]``, when given, is each solved position's mechanism
+    drawn: (a_w, b_w, a_h, b_h), its width a_w / k + b_w [mm] and its height
+    a_h / k + b_h at any k_l (see :func:`_mechanism_sizes`).
 
     Returns
     -------
@@ -230,11 +232,12 @@ def handout_scales(runs, frame, given: dict | None = None, fixed: dict | None = 
     if "k_l" in given:
         k_l = given["k_l"]
     else:
-        each = fixed.get("mechanisms") or [fixed.get("mechanism")] * len(solved)
+        parts = fixed.get("mechanism") or (2 * LABEL_ROOM, 2 * LABEL_ROOM + CAPTION_ROOM)
+        each = fixed.get("mechanisms") or [(e["k_l"][0], parts[0], e["k_l"][1], parts[1]) for e in extents]
         need = 0.0
-        for e, parts in zip(extents, each):
-            gw, gh = _geometry_box(frame.boxes["mechanism"], parts)
-            need = max(need, e["k_l"][0] / gw, e["k_l"][1] / gh)
+        for a_w, b_w, a_h, b_h in each:
+            gw, gh = _geometry_box(frame.boxes["mechanism"], (b_w, b_h))
+            need = max(need, a_w / gw, a_h / gh)
         k_l = round_up(need) if need > 0 and math.isfinite(need) else (solved[0].graphical.scales["k_l"] if solved else 1.0)
     per_run = []
     for r, e in zip(solved, extents):
@@ -269,6 +272,49 @@ def _frame_score(runs, frame, given, fixed=None) -> float:
                 ratios.append(max(w, h) / scales[key] / PLAN_ACROSS_MM)
     capped = [min(x, 1.5) for x in ratios] or [0.0]
     return 0.2 * sum(capped) / len(capped) + 0.8 * min(capped)
+
+
+def _mechanism_sizes(solved, lang: str, first) -> list[tuple[float, float, float, float]]:
+    """Each solved position's mechanism drawn, as (a_w, b_w, a_h, b_h): width a_w / k_l + b_w [mm], height a_h / k_l + b_h.
+
+    Drawn once at its own k_l (*first*: what the first position's drawing
+    takes beyond its geometry, measured already), the geometry (a = the
+    extent of its points [m]) taken to scale and the rest not; a drawing
+    whose guides or slots reach past its points has more that scales:
+    :func:`_refine_mechanism_sizes` measures those again at the page's k_l.
+    """
+    out = []
+    for n, r in enumerate(solved):
+        w, h, _ = _extents(r.graphical)["k_l"]
+        b_w, b_h = first if n == 0 else _fixed_parts(r.graphical, lang, ("mechanism",))["mechanism"]
+        out.append((w, b_w, h, b_h, r.graphical.scales["k_l"]))
+    return out
+
+
+def _refine_mechanism_sizes(solved, sizes, k_l: float, box, lang: str, construct_at) -> bool:
+    """Draw again at *k_l* the mechanisms that might not fit *box* at it, and make their (a, b) exact (two sizes, two k).
+
+    A mechanism drawn at k₁ as D₁ mm is at most D₁·k₁/k_l at k_l (were all
+    of it to scale): only those that could then run out of the box are drawn
+    again.  Changes *sizes* in place; returns whether any changed.
+    """
+    from .drawing.blocks import drawing_block
+    from .drawing.svg import drawing_rc, new_figure
+
+    changed = False
+    _, _, bw, bh = box
+    for n, (r, size) in enumerate(zip(solved, sizes)):
+        a_w, b_w, a_h, b_h, k1 = size
+        if k1 == k_l or ((a_w / k1 + b_w) * k1 / k_l <= bw and (a_h / k1 + b_h) * k1 / k_l <= bh):
+            continue
+        with drawing_rc():
+            block = drawing_block(new_figure(), "mechanism", construct_at(r, k_l), lang, legend=False)
+        d1w, d1h = a_w / k1 + b_w, a_h / k1 + b_h
+        inv = 1 / k_l - 1 / k1
+        a_w2, a_h2 = max(a_w, (block.width - d1w) / inv), max(a_h, (block.height - d1h) / inv)
+        sizes[n] = (a_w2, block.width - a_w2 / k_l, a_h2, block.height - a_h2 / k_l, k_l)
+        changed = True
+    return changed
 
 
 def _make_room(g, frame, sizes, scales, given) -> dict[str, float]:
@@ -389,10 +435,19 @@ def handout_pages(
         frames = position_page_frames(sample.graphical, lang=lang, header_lines=lambda page: head(sample, sample.graphical.scales, page), equations=_equations(sample.graphical, run.structure))
         # what the drawings take beyond their geometry: the plans' as the first position's, each mechanism's its own
         unscaled = _fixed_parts(sample.graphical, lang)
-        if given.get("k_l") is None and len(solved) > 1:
-            unscaled["mechanisms"] = [unscaled["mechanism"]] + [_fixed_parts(r.graphical, lang, ("mechanism",))["mechanism"] for r in solved[1:]]
+        sizes = None
+        if given.get("k_l") is None:
+            sizes = _mechanism_sizes(solved, lang, unscaled["mechanism"])
+            unscaled["mechanisms"] = [size[:4] for size in sizes]
         frame = max(frames, key=lambda f: _frame_score(run.runs, f, given, unscaled))
         k_l_common, per_run = handout_scales(run.runs, frame, given, unscaled)
+        # mechanisms whose guides or slots scale too: drawn again at that k_l, measured, and k_l fitted to them
+        for _ in range(2):
+            if sizes is None or not _refine_mechanism_sizes(solved, sizes, k_l_common, frame.boxes["mechanism"], lang,
+                                                            lambda r, k: construct(r.scene, run.structure, k_l=k, k_v=r.graphical.scales["k_v"], k_a=r.graphical.scales.get("k_a"), precision=run.precision, check_scales=False)):
+                break
+            unscaled["mechanisms"] = [size[:4] for size in sizes]
+            k_l_common, per_run = handout_scales(run.runs, frame, given, unscaled)
         for r, scales in zip(solved, per_run):
             pages_runs[r.index] = (r, {**scales, "k_l": k_l_common})
         # the same k_l on every page: only k_v, k_a make room page by page

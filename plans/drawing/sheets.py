@@ -125,14 +125,14 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
 POSITION_PAGES = {"velocity": ("mechanism", "velocity"), "acceleration": ("acceleration",)}
 
 
-def position_page_bands(graphical, *, lang: str = "en", header_lines=(), equations=None) -> dict[str, tuple[float, float]]:
+def position_page_bands(graphical, *, lang: str = "en", header_lines=(), equations=None, size=A4) -> dict[str, tuple[float, float]]:
     """Page (``"velocity"``, ``"acceleration"``) -> (top, bottom) [mm] of the room it leaves for its drawings.
 
     Under the header (*header_lines*: a list, or a callable given the page),
     above the page's legend and vector equations (*equations*: page -> lines)
-    in a band at its foot.
+    in a band at its foot; on a page of *size* [mm].
     """
-    width = A4[0] - 2 * PAGE_MARGIN
+    width = size[0] - 2 * PAGE_MARGIN
     out = {}
     for page in POSITION_PAGES:
         if page == "acceleration" and graphical.acceleration_plan is None:
@@ -140,7 +140,7 @@ def position_page_bands(graphical, *, lang: str = "en", header_lines=(), equatio
         lines = header_lines(page) if callable(header_lines) else header_lines
         with drawing_rc():
             legend, eq_block = _page_text(graphical, None if equations is None else equations[page], lang, width, page)
-        top = A4[1] - header_height(list(lines))
+        top = size[1] - header_height(list(lines))
         bottom = FOOT + eq_block.height + GAP + legend.height + GAP
         out[page] = (top, bottom)
     return out
@@ -205,6 +205,41 @@ def position_page_frames(graphical, *, lang: str = "en", header_lines=(), equati
         boxes = {"mechanism": (x0, FOOT, wm, room), "velocity": (x0 + wm + GAP, FOOT + th + GAP, cw, room - th - GAP), **extra}
         text = {"velocity": (x0 + wm + GAP, FOOT, cw, th)}
         frames.append(Frame(f"left-{round(share * 100)}-text", boxes, pages, text))
+    frames.extend(_landscape_frames(graphical, lang, header_lines, equations, extra))
+    return frames
+
+
+#: the velocity page of a position turned (A4 landscape): for mechanisms too wide for a portrait page beside their plan
+LANDSCAPE = (A4[1], A4[0])
+#: the shares [fraction of the width] tried for the mechanism on a landscape velocity page
+LANDSCAPE_COLUMNS = (0.5, 0.55, 0.6, 0.65, 0.7)
+
+
+def _landscape_frames(graphical, lang, header_lines, equations, extra) -> list[Frame]:
+    """``land-S-text`` and ``land-S``: the velocity page A4 landscape, the mechanism in a column on the left
+    (S % of the width); on the right the velocity plan over its legend and equations (``-text``), or the
+    legend and equations in a band at the foot of the page."""
+    size = LANDSCAPE
+    bands = position_page_bands(graphical, lang=lang, header_lines=header_lines, equations=equations, size=size)
+    top, bottom = bands["velocity"]
+    x0 = PAGE_MARGIN
+    width = size[0] - 2 * PAGE_MARGIN
+    room = top - FOOT
+    lines = None if equations is None else equations["velocity"]
+    pages = {"mechanism": "velocity", "velocity": "velocity", "acceleration": "acceleration"}
+    sizes = {"velocity": size}
+    frames = []
+    for share in LANDSCAPE_COLUMNS:
+        wm = width * share
+        cw = width - wm - GAP
+        with drawing_rc():
+            legend, eq_block = _page_text(graphical, lines, lang, cw, "velocity")
+        tw, th = max(legend.width, eq_block.width), legend.height + GAP + eq_block.height
+        if tw <= cw + 0.5 and room - th - GAP >= 40.0:
+            boxes = {"mechanism": (x0, FOOT, wm, room), "velocity": (x0 + wm + GAP, FOOT + th + GAP, cw, room - th - GAP), **extra}
+            frames.append(Frame(f"land-{round(share * 100)}-text", boxes, pages, {"velocity": (x0 + wm + GAP, FOOT, cw, th)}, sizes))
+        boxes = {"mechanism": (x0, bottom, wm, top - bottom), "velocity": (x0 + wm + GAP, bottom, cw, top - bottom), **extra}
+        frames.append(Frame(f"land-{round(share * 100)}", boxes, pages, None, sizes))
     return frames
 
 
@@ -254,7 +289,7 @@ def draw_position_page(
         again (at most twice), or None to keep the drawing.
     """
     g = run.graphical
-    size = A4
+    size = frame.size(page)
     width = size[0] - 2 * PAGE_MARGIN
     objects = {"mechanism": lambda s: s, "velocity": lambda s: s.velocity_plan, "acceleration": lambda s: s.acceleration_plan}
     with drawing_rc():
@@ -274,11 +309,11 @@ def draw_position_page(
         lines = header_lines(g) if callable(header_lines) else header_lines
         header(sketch, size, title or run.scene.title, [decimal_comma(line, lang) for line in lines])
         text = frame.text.get(page)
-        if text is not None:  # a column: the legend at its top, the equations under it
+        if text is not None:  # a column, down to the foot of the page: the equations at its foot, the legend above them
             tx, ty, tw, th = text
             legend, eq_block = _page_text(g, equations, lang, tw, page)
-            legend.place(sketch, tx, ty + th - legend.height, size)
-            eq_block.place(sketch, tx, ty + th - legend.height - GAP - eq_block.height, size)
+            eq_block.place(sketch, tx, ty, size)
+            legend.place(sketch, tx, ty + eq_block.height + GAP, size)
         else:  # a band at the foot of the page: the equations at the foot, the legend above them
             legend, eq_block = _page_text(g, equations, lang, width, page)
             eq_block.place(sketch, PAGE_MARGIN, FOOT, size)
