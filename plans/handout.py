@@ -251,14 +251,14 @@ def handout_scales(runs, frame, given: dict | None = None, fixed: dict | None = 
 
 
 def _frame_score(runs, frame, given, fixed=None) -> float:
-    """How well *frame* serves the drawings: the mean and the worst ratio of drawn size to what a page must give.
+    """How well *frame* serves the drawings, and the worst ratio of drawn size to what a page must give.
 
     Ratios (each capped at 1.5: beyond that a drawing is big enough) of the
     mechanism across to :data:`MECHANISM_ACROSS_MM`, each plan's largest
     vector to :data:`LARGEST_VECTOR_MM` and its size across to
-    :data:`PLAN_ACROSS_MM`, over every position; the score is the average of
-    their mean and their minimum, so that a frame is chosen that makes the
-    drawings large without leaving one of them small.
+    :data:`PLAN_ACROSS_MM`, over every position; the score is 0.2 × their
+    mean + 0.8 × their minimum, so that a frame is chosen that makes the
+    drawings large without leaving one of them small.  Returns (score, worst ratio).
     """
     k_l, per_run = handout_scales(runs, frame, given, fixed)
     ratios = []
@@ -271,7 +271,17 @@ def _frame_score(runs, frame, given, fixed=None) -> float:
                 ratios.append(largest / scales[key] / LARGEST_VECTOR_MM)
                 ratios.append(max(w, h) / scales[key] / PLAN_ACROSS_MM)
     capped = [min(x, 1.5) for x in ratios] or [0.0]
-    return 0.2 * sum(capped) / len(capped) + 0.8 * min(capped)
+    return 0.2 * sum(capped) / len(capped) + 0.8 * min(capped), min(capped)
+
+
+def _choose_frame(frames, runs, given, fixed):
+    """The frame whose drawings are largest (:func:`_frame_score`), the mechanism and the velocity plan on one page
+    when some such frame gives every drawing what a page must (a frame that parts them only when none does)."""
+    scored = [(frame, *_frame_score(runs, frame, given, fixed)) for frame in frames]
+    together = [item for item in scored if item[0].pages.get("velocity") == item[0].pages.get("mechanism")]
+    if any(least >= 1.0 for _, _, least in together):
+        scored = together
+    return max(scored, key=lambda item: item[1])[0]
 
 
 def _mechanism_sizes(solved, lang: str, first) -> list[tuple[float, float, float, float]]:
@@ -439,7 +449,9 @@ def handout_pages(
         if given.get("k_l") is None:
             sizes = _mechanism_sizes(solved, lang, unscaled["mechanism"])
             unscaled["mechanisms"] = [size[:4] for size in sizes]
-        frame = max(frames, key=lambda f: _frame_score(run.runs, f, given, unscaled))
+        frame = _choose_frame(frames, run.runs, given, unscaled)
+        # each page states the scale factors of the drawings on it
+        stated.update({page: tuple(key for kind, key in (("mechanism", "k_l"), ("velocity", "k_v"), ("acceleration", "k_a")) if frame.pages.get(kind) == page) for page in stated})
         k_l_common, per_run = handout_scales(run.runs, frame, given, unscaled)
         # mechanisms whose guides or slots scale too: drawn again at that k_l, measured, and k_l fitted to them
         for _ in range(2):
@@ -477,7 +489,7 @@ def handout_pages(
         for page, name in (("velocity", "position"), ("acceleration", "acceleration")):
             if page == "acceleration" and here.graphical.acceleration_plan is None:
                 continue
-            fig, g = draw_position_page(here, frame=frame, page=page, lang=lang, header_lines=lambda g, r=r, page=page: head(r, g.scales, page), equations=equations[page], footer=footer, rescale=rescale)
+            fig, g = draw_position_page(here, frame=frame, page=page, lang=lang, header_lines=lambda g, r=r, page=page: head(r, g.scales, page), equations=equations, footer=footer, rescale=rescale)
             if g is not here.graphical:
                 here = replace(r, graphical=g)
             drawn.append((f"{name}-{r.index}", fig))

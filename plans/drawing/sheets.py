@@ -206,6 +206,42 @@ def position_page_frames(graphical, *, lang: str = "en", header_lines=(), equati
         text = {"velocity": (x0 + wm + GAP, FOOT, cw, th)}
         frames.append(Frame(f"left-{round(share * 100)}-text", boxes, pages, text))
     frames.extend(_landscape_frames(graphical, lang, header_lines, equations, extra))
+    if graphical.acceleration_plan is not None:
+        frames.extend(_apart_frames(graphical, lang, header_lines, equations))
+    return frames
+
+
+#: the shares [fraction of the room's height] tried for the velocity plan above the acceleration plan on one page
+PLANS_SHARES = (0.4, 0.45, 0.5, 0.55, 0.6)
+
+
+def _apart_frames(graphical, lang, header_lines, equations) -> list[Frame]:
+    """``apart-P-S``, ``apart-L-S``: the mechanism on the first page (A4 portrait P or landscape L) over the
+    vector equations of both plans; both plans on the second, the velocity plan over the acceleration plan
+    (S % of the room), their legend at the foot: for a mechanism too wide to share a page with a plan."""
+    x0 = PAGE_MARGIN
+    width = A4[0] - 2 * PAGE_MARGIN
+    both = ("velocity", "acceleration")
+    lines = None if equations is None else [line for kind in both for line in equations[kind]]
+    with drawing_rc():
+        legend = _page_text(graphical, None, lang, width, both)[0]
+    head = list(header_lines("acceleration") if callable(header_lines) else header_lines)
+    top = A4[1] - header_height(head)
+    bottom = FOOT + legend.height + GAP
+    room = top - bottom
+    pages = {"mechanism": "velocity", "velocity": "acceleration", "acceleration": "acceleration"}
+    frames = []
+    for name, size in (("P", A4), ("L", LANDSCAPE)):
+        with drawing_rc():
+            eq_block = _equations_block(graphical, lines, lang, size[0] - 2 * PAGE_MARGIN, both)
+        first = list(header_lines("velocity") if callable(header_lines) else header_lines)
+        m_top = size[1] - header_height(first)
+        m_bottom = FOOT + eq_block.height + GAP
+        mechanism = (x0, m_bottom, size[0] - 2 * PAGE_MARGIN, m_top - m_bottom)
+        for share in PLANS_SHARES:
+            hv = room * share
+            boxes = {"mechanism": mechanism, "velocity": (x0, top - hv, width, hv), "acceleration": (x0, bottom, width, room - hv - GAP)}
+            frames.append(Frame(f"apart-{name}-{round(share * 100)}", boxes, pages, None, {"velocity": size}, {"velocity": both, "acceleration": ()}))
     return frames
 
 
@@ -243,12 +279,14 @@ def _landscape_frames(graphical, lang, header_lines, equations, extra) -> list[F
     return frames
 
 
-def _page_text(g, equations, lang: str, width: float, page: str) -> tuple[Block, Block]:
-    """The legend (two columns when they fit *width* [mm], else one) and the vector equations broken to *width*."""
-    legend = legend_block(g, lang, columns=2, plans=(page,))
+def _page_text(g, equations, lang: str, width: float, plans) -> tuple[Block, Block]:
+    """The legend of *plans* (a kind or a tuple of kinds; two columns when they fit *width* [mm], else one) and
+    the vector equations (*equations*, by default those of *plans*) broken to *width*."""
+    plans = (plans,) if isinstance(plans, str) else tuple(plans)
+    legend = legend_block(g, lang, columns=2, plans=plans)
     if legend.width > width:
-        legend = legend_block(g, lang, columns=1, plans=(page,))
-    return legend, _equations_block(g, equations, lang, width, page)
+        legend = legend_block(g, lang, columns=1, plans=plans)
+    return legend, _equations_block(g, equations, lang, width, plans)
 
 
 def draw_position_page(
@@ -263,10 +301,12 @@ def draw_position_page(
     footer: str = "",
     rescale=None,
 ):
-    """A graphical page of a position, A4 portrait: returns (Figure, the GraphicalSolution drawn).
+    """A graphical page of a position, A4: returns (Figure, the GraphicalSolution drawn).
 
-    *page* ``"velocity"``: the mechanism and the velocity plan;
-    ``"acceleration"``: the acceleration plan, alone on its page.  The title
+    *page* ``"velocity"`` (the first page) and ``"acceleration"`` (the second)
+    hold the drawings *frame* puts on them: as a rule the mechanism and the
+    velocity plan, then the acceleration plan alone; the page is the
+    frame's size for it (portrait, or landscape).  The title
     and data at the top; the drawings true to scale, each at the top of its
     box of *frame* (a :class:`plans.drawing.layout.Frame`, the same on every
     position of a handout); the legend of the page's plan and the vector
@@ -280,8 +320,9 @@ def draw_position_page(
         Data lines under the title (``$…$`` typeset; a leading ``§`` makes
         one bold); a callable is given the solution drawn (its scale factors
         are those the page states).
-    equations : list of str, optional
-        Vector equations of the page's plan, by default from its steps.
+    equations : list of str, or dict, optional
+        Vector equations of the page's plans (a dict: plan kind -> its
+        equations), by default from their steps.
     rescale : callable, optional
         ``rescale(solution, kind, (width, height))`` is called when a drawing
         (kind ``"mechanism"``, ``"velocity"``, ``"acceleration"``) runs out
@@ -308,22 +349,25 @@ def draw_position_page(
             place_in_box(block, sketch, box, size)
         lines = header_lines(g) if callable(header_lines) else header_lines
         header(sketch, size, title or run.scene.title, [decimal_comma(line, lang) for line in lines])
-        text = frame.text.get(page)
-        if text is not None:  # a column, down to the foot of the page: the equations at its foot, the legend above them
-            tx, ty, tw, th = text
-            legend, eq_block = _page_text(g, equations, lang, tw, page)
-            eq_block.place(sketch, tx, ty, size)
-            legend.place(sketch, tx, ty + eq_block.height + GAP, size)
-        else:  # a band at the foot of the page: the equations at the foot, the legend above them
-            legend, eq_block = _page_text(g, equations, lang, width, page)
-            eq_block.place(sketch, PAGE_MARGIN, FOOT, size)
-            legend.place(sketch, PAGE_MARGIN, FOOT + eq_block.height + GAP, size)
+        shown = tuple(kind for kind in ("velocity", "acceleration") if kind in frame.on(page) and objects[kind](g) is not None)
+        solved = tuple(kind for kind in frame.equations_on(page) if objects[kind](g) is not None)
+        if isinstance(equations, dict):
+            equations = [line for kind in solved for line in equations.get(kind, ())]
+        tx, ty, tw, _ = frame.text.get(page, (PAGE_MARGIN, FOOT, width, 0.0))
+        # in a column or a band, down to the foot of the page: the equations at the foot, the legend of the plans drawn above them
+        y = ty
+        if solved:
+            eq_block = _equations_block(g, equations, lang, tw, solved)
+            eq_block.place(sketch, tx, y, size)
+            y += eq_block.height + GAP
+        if shown:
+            _page_text(g, None, lang, tw, shown)[0].place(sketch, tx, y, size)
         page_footer(sketch, footer)
     return fig, g
 
 
-def _equations_block(g, equations, lang: str, width: float, page: str) -> Block:
-    lines = [pretty_equation(line) for line in (sheet_equations(g, plans=(page,)) if equations is None else equations)]
+def _equations_block(g, equations, lang: str, width: float, plans: tuple) -> Block:
+    lines = [pretty_equation(line) for line in (sheet_equations(g, plans=plans) if equations is None else equations)]
     return rows_block(text_rows(term("vector_equations", lang), lines, width, TEXT_PT), "equation", line_gap=LINE_GAP)
 
 
