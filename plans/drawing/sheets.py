@@ -248,7 +248,7 @@ def _apart_frames(graphical, lang, header_lines, equations) -> list[Frame]:
 #: the velocity page of a position turned (A4 landscape): for mechanisms too wide for a portrait page beside their plan
 LANDSCAPE = (A4[1], A4[0])
 #: the shares [fraction of the width] tried for the mechanism on a landscape velocity page
-LANDSCAPE_COLUMNS = (0.5, 0.55, 0.6, 0.65, 0.7)
+LANDSCAPE_COLUMNS = (0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7)
 
 
 def _landscape_frames(graphical, lang, header_lines, equations, extra) -> list[Frame]:
@@ -338,9 +338,15 @@ def draw_position_page(
         for kind, box in frame.on(page).items():
             if objects[kind](g) is None:
                 continue
+            detail = kind != "mechanism"  # crowded images of a plan enlarged in a detail, when the box has room for it
             for attempt in range(3):
-                block = drawing_block(fig, kind, objects[kind](g), lang, legend=False)
+                block = drawing_block(fig, kind, objects[kind](g), lang, legend=False, detail=detail)
                 inside = block.width <= box[2] + BOX_TOLERANCE and block.height <= box[3] + BOX_TOLERANCE
+                if not inside and detail and _has_detail(block):  # no room for the detail: the plan without it
+                    block.axes.remove()
+                    detail = False
+                    block = drawing_block(fig, kind, objects[kind](g), lang, legend=False, detail=False)
+                    inside = block.width <= box[2] + BOX_TOLERANCE and block.height <= box[3] + BOX_TOLERANCE
                 other = None if inside or rescale is None or attempt == 2 else rescale(g, kind, (block.width, block.height))
                 if other is None:
                     break
@@ -364,6 +370,11 @@ def draw_position_page(
             _page_text(g, None, lang, tw, shown)[0].place(sketch, tx, y, size)
         page_footer(sketch, footer)
     return fig, g
+
+
+def _has_detail(block: Block) -> bool:
+    """Whether a plan's drawing has an enlarged detail of crowded images (its circle, gid ``detail``)."""
+    return any((artist.get_gid() or "").endswith("-detail") for artist in block.axes.get_children())
 
 
 def _equations_block(g, equations, lang: str, width: float, plans: tuple) -> Block:
