@@ -205,3 +205,37 @@ def test_a_squared_number_in_powers_of_ten_is_bracketed():
     assert any(r"(5\cdot10^{4})^2" in line for line in lines)
     # a power of a power (``10^{4}^2``) is what mathtext refused as a "Double superscript"
     assert not any(re.search(r"\^\{[^{}]*\}\^", line) for line in lines)
+
+
+def _crowded_links(plan) -> list[str]:
+    """Links with 3 or more distinct images within 8 mm of each other on *plan* (the crowd a detail enlarges)."""
+    out = []
+    for link, labels in plan.links.items():
+        pts = []
+        for z in (plan.images[n] for n in labels if n in plan.images):
+            if all(abs(z - q) > 0.3 for q in pts):
+                pts.append(z)
+        if len(pts) >= 3 and 0.5 < max(abs(q - r) for q in pts for r in pts) < 8.0:
+            out.append(link)
+    return out
+
+
+def test_a_crowded_plan_has_its_enlarged_detail_on_the_page(handout):
+    """The six-bar's velocity plan at position 7 of 12 (a b c within 8 mm) gets its detail "I (n : 1)" on the
+    handout page; a page whose plans have no crowd has none."""
+    pages, record = handout
+    crowded = 0
+    for name, run in record:
+        fig = pages[name]
+        gids = {a.get_gid() for ax in fig.axes[1:] for a in ax.get_children() if a.get_gid()}
+        for plan, tag in ((run.graphical.velocity_plan, "vel"), (run.graphical.acceleration_plan, "acc")):
+            if plan is None or not any(tag + "-" in gid for gid in gids):
+                continue  # the plan is not on this page
+            if not _crowded_links(plan):
+                assert f"{tag}-detail" not in gids, (name, tag)
+            elif run.scene.title.startswith("Six-bar"):
+                crowded += 1
+                assert f"{tag}-detail" in gids, (name, tag)
+                assert any(t.get_text().startswith("I (") for ax in fig.axes[1:] for t in ax.texts), name
+    if record[0][1].scene.title.startswith("Six-bar"):
+        assert crowded >= 1
