@@ -469,10 +469,13 @@ def draw_check_pages(
                 top -= used
             if rows:
                 take = _rows_that_fit(rows, top - bottom)
-                block = rows_block(rows[:take], "loop", line_gap=LINE_GAP)
-                block.place(sketch, PAGE_MARGIN, top - block.height, size)
-                rest = rows[take:]
-                rows = [(f"{heading} {term('continued', lang)}", HEADING_PT, "bold")] + rest if rest else []
+                if first and take < len(rows) and all(row[2] == "bold" for row in rows[:take]):
+                    take = 0  # headings alone at the foot of the first page: they begin the next page
+                if take:
+                    block = rows_block(rows[:take], "loop", line_gap=LINE_GAP)
+                    block.place(sketch, PAGE_MARGIN, top - block.height, size)
+                    rest = rows[take:]
+                    rows = [(f"{heading} {term('continued', lang)}", HEADING_PT, "bold")] + rest if rest else []
             page_footer(sketch, footer)
             figures.append(fig)
             first = False
