@@ -53,8 +53,9 @@ LINE_GAP = 0.7  # mm between the lines of a text block on a page
 BOX_TOLERANCE = 2.5
 #: text size [pt] of the readings tables on a check page
 READINGS_PAGE_PT = 7.0
-#: text sizes [pt] tried on a check page, largest first, so that the table and the loop equations share one page
-CHECK_PT = (8.0, 7.6, 7.2, 6.8)
+#: text sizes [pt] tried on a check page, largest first: the largest with which the table and the loop equations
+#: share one page (a short chain of groups gets larger type rather than an empty half page)
+CHECK_PT = (9.5, 9.0, 8.5, 8.0, 7.6, 7.2, 6.8)
 
 #: rcParams of PDF output: TrueType fonts embedded (DejaVu Sans covers Cyrillic and Greek).
 # --- plans draw --positions -----------------------------------------------------------
@@ -437,7 +438,7 @@ def draw_check_pages(
                 return table_, True, max(table_.height, stacked.height) + GAP
             return table_, False, (table_.height + GAP if table_ else 0.0) + (readings.height + GAP if readings is not None else 0.0)
 
-        # the smallest text that puts everything on one page, down to CHECK_MIN_PT; else continued pages at TEXT_PT
+        # the largest text that puts everything on one page, down to CHECK_PT[-1]; else continued pages at TEXT_PT
         rows = text_rows(heading, loop_lines, width, TEXT_PT) if loop_lines else []
         room = size[1] - header_height([decimal_comma(line, lang) for line in header_lines]) - (PAGE_MARGIN + 4.0)
         for pt in CHECK_PT:
