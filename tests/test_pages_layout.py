@@ -239,3 +239,21 @@ def test_a_crowded_plan_has_its_enlarged_detail_on_the_page(handout):
                 assert any(t.get_text().startswith("I (") for ax in fig.axes[1:] for t in ax.texts), name
     if record[0][1].scene.title.startswith("Six-bar"):
         assert crowded >= 1
+
+
+def test_a_check_page_with_room_sets_its_loop_equations_larger(handout):
+    """A position whose checks fit one page with room to spare gets loop equations larger than the 8 pt of a
+    full page (the four-bar at 12 positions: its check pages used to end their ink at 60 % of the page)."""
+    pages, record = handout
+    if not record[0][1].scene.title.startswith("Crank-rocker four-bar"):
+        return
+    # lines of 8 pt type with their 0.7 mm gap are 4.1 mm apart (measured on the check pages of 0f47777, which set
+    # them at 8 pt); 8.5 pt or more is over 4.3 mm
+    pitch_8pt = 4.1
+    for name, fig in pages.items():
+        if not name.startswith("check-"):
+            continue
+        assert not name.count("-") > 1, name  # one page per position
+        ys = sorted({round(a.get_position()[1], 3) for a in fig.artists if (a.get_gid() or "").startswith("page-loop")}, reverse=True)
+        pitches = [a - b for a, b in zip(ys, ys[1:])]
+        assert len(ys) > 10 and min(pitches) > pitch_8pt + 0.2, (name, min(pitches))
