@@ -175,9 +175,14 @@ def _geometry_box(box, fixed=None) -> tuple[float, float]:
     return max(w - fw, 5.0), max(h - fh, 5.0)
 
 
-def _fixed_parts(g, lang: str) -> dict[str, tuple[float, float]]:
-    """Kind -> what a drawing of *g* takes beyond its geometry [mm] (margin, labels, supports, driver arcs,
-    caption), measured by drawing it once (never less than the default label and caption room)."""
+def _fixed_parts(g, lang: str, kinds=("mechanism", "velocity", "acceleration")) -> dict[str, tuple[float, float]]:
+    """Kind -> what a drawing of *g* takes beyond its geometry [mm] (margin, labels, supports, blocks, driver arcs,
+    caption), measured by drawing it once (never less than the default label and caption room).
+
+    What does not scale with the drawing stays the same at any scale factor
+    (a mechanism's blocks and supports, the labels, the caption): the size of
+    a drawing at any k is its geometry / k plus this.
+    """
     from .drawing.blocks import drawing_block
     from .drawing.svg import drawing_rc, new_figure
 
@@ -187,7 +192,7 @@ def _fixed_parts(g, lang: str) -> dict[str, tuple[float, float]]:
     with drawing_rc():
         fig = new_figure()
         for key, (kind, obj) in objects.items():
-            if obj is None or key not in e:
+            if obj is None or key not in e or kind not in kinds:
                 continue
             block = drawing_block(fig, kind, obj, lang, legend=False)
             k = g.scales[key]
@@ -205,47 +210,55 @@ def handout_scales(runs, frame, given: dict | None = None, fixed: dict | None = 
     """The scale factors of a handout's position pages for the drawing boxes of *frame*.
 
     k_l is common to every position (the mechanism at the same scale on
-    every page and on the plan of positions: its largest width and height
-    over the positions fit the mechanism's box); k_v and k_a are chosen per
+    every page and on the plan of positions: every position's mechanism, drawn,
+    fits the mechanism's box); k_v and k_a are chosen per
     position, each the smallest round factor (:data:`HANDOUT_MANTISSAS`)
     with which that position's plan fits its box, so that every plan fills
     its box.  Each page states its own.  Factors in *given* are kept.
     *fixed* (kind -> (width, height) [mm], see :func:`_fixed_parts`) is what
-    a drawing takes beyond its geometry; by default a label and caption room.
+    a drawing takes beyond its geometry; by default a label and caption room;
+    ``fixed["mechanisms"]``, when given, is each solved position's mechanism
+    drawn: (a_w, b_w, a_h, b_h), its width a_w / k + b_w [mm] and its height
+    a_h / k + b_h at any k_l (see :func:`_mechanism_sizes`).
 
     Returns
     -------
     (k_l, [ {"k_l", "k_v", "k_a"} per run ])
     """
     given = {k: v for k, v in (given or {}).items() if v is not None}
+    fixed = fixed or {}
     solved = [r for r in runs if r.ok]
     extents = [_extents(r.graphical) for r in solved]
     if "k_l" in given:
         k_l = given["k_l"]
     else:
-        w = max((e["k_l"][0] for e in extents), default=0.0)
-        h = max((e["k_l"][1] for e in extents), default=0.0)
-        k_l = _fit((w, h), frame.boxes["mechanism"], solved[0].graphical.scales["k_l"] if solved else 1.0, (fixed or {}).get("mechanism"))
+        parts = fixed.get("mechanism") or (2 * LABEL_ROOM, 2 * LABEL_ROOM + CAPTION_ROOM)
+        each = fixed.get("mechanisms") or [(e["k_l"][0], parts[0], e["k_l"][1], parts[1]) for e in extents]
+        need = 0.0
+        for a_w, b_w, a_h, b_h in each:
+            gw, gh = _geometry_box(frame.boxes["mechanism"], (b_w, b_h))
+            need = max(need, a_w / gw, a_h / gh)
+        k_l = round_up(need) if need > 0 and math.isfinite(need) else (solved[0].graphical.scales["k_l"] if solved else 1.0)
     per_run = []
     for r, e in zip(solved, extents):
         scales = {"k_l": k_l}
         for key, kind in (("k_v", "velocity"), ("k_a", "acceleration")):
             if key not in e:
                 continue
-            scales[key] = given[key] if key in given else _fit(e[key], frame.boxes[kind], r.graphical.scales[key], (fixed or {}).get(kind))
+            scales[key] = given[key] if key in given else _fit(e[key], frame.boxes[kind], r.graphical.scales[key], fixed.get(kind))
         per_run.append(scales)
     return k_l, per_run
 
 
 def _frame_score(runs, frame, given, fixed=None) -> float:
-    """How well *frame* serves the drawings: the mean and the worst ratio of drawn size to what a page must give.
+    """How well *frame* serves the drawings, and the worst ratio of drawn size to what a page must give.
 
     Ratios (each capped at 1.5: beyond that a drawing is big enough) of the
     mechanism across to :data:`MECHANISM_ACROSS_MM`, each plan's largest
     vector to :data:`LARGEST_VECTOR_MM` and its size across to
-    :data:`PLAN_ACROSS_MM`, over every position; the score is the average of
-    their mean and their minimum, so that a frame is chosen that makes the
-    drawings large without leaving one of them small.
+    :data:`PLAN_ACROSS_MM`, over every position; the score is 0.2 × their
+    mean + 0.8 × their minimum, so that a frame is chosen that makes the
+    drawings large without leaving one of them small.  Returns (score, worst ratio).
     """
     k_l, per_run = handout_scales(runs, frame, given, fixed)
     ratios = []
@@ -258,25 +271,60 @@ def _frame_score(runs, frame, given, fixed=None) -> float:
                 ratios.append(largest / scales[key] / LARGEST_VECTOR_MM)
                 ratios.append(max(w, h) / scales[key] / PLAN_ACROSS_MM)
     capped = [min(x, 1.5) for x in ratios] or [0.0]
-    return 0.2 * sum(capped) / len(capped) + 0.8 * min(capped)
+    return 0.2 * sum(capped) / len(capped) + 0.8 * min(capped), min(capped)
 
 
-def _common_k_l(solved, per_run, frame, given, solution_at, lang: str) -> float:
-    """The k_l of every position page: that of :func:`handout_scales`, enlarged until every mechanism, drawn, fits its box."""
+def _choose_frame(frames, runs, given, fixed):
+    """The frame whose drawings are largest (:func:`_frame_score`), the mechanism and the velocity plan on one page
+    when some such frame gives every drawing what a page must (a frame that parts them only when none does)."""
+    scored = [(frame, *_frame_score(runs, frame, given, fixed)) for frame in frames]
+    together = [item for item in scored if item[0].pages.get("velocity") == item[0].pages.get("mechanism")]
+    if any(least >= 1.0 for _, _, least in together):
+        scored = together
+    return max(scored, key=lambda item: item[1])[0]
+
+
+def _mechanism_sizes(solved, lang: str, first) -> list[tuple[float, float, float, float]]:
+    """Each solved position's mechanism drawn, as (a_w, b_w, a_h, b_h): width a_w / k_l + b_w [mm], height a_h / k_l + b_h.
+
+    Drawn once at its own k_l (*first*: what the first position's drawing
+    takes beyond its geometry, measured already), the geometry (a = the
+    extent of its points [m]) taken to scale and the rest not; a drawing
+    whose guides or slots reach past its points has more that scales:
+    :func:`_refine_mechanism_sizes` measures those again at the page's k_l.
+    """
+    out = []
+    for n, r in enumerate(solved):
+        w, h, _ = _extents(r.graphical)["k_l"]
+        b_w, b_h = first if n == 0 else _fixed_parts(r.graphical, lang, ("mechanism",))["mechanism"]
+        out.append((w, b_w, h, b_h, r.graphical.scales["k_l"]))
+    return out
+
+
+def _refine_mechanism_sizes(solved, sizes, k_l: float, box, lang: str, construct_at) -> bool:
+    """Draw again at *k_l* the mechanisms that might not fit *box* at it, and make their (a, b) exact (two sizes, two k).
+
+    A mechanism drawn at k₁ as D₁ mm is at most D₁·k₁/k_l at k_l (were all
+    of it to scale): only those that could then run out of the box are drawn
+    again.  Changes *sizes* in place; returns whether any changed.
+    """
     from .drawing.blocks import drawing_block
     from .drawing.svg import drawing_rc, new_figure
 
-    k_l = per_run[0]["k_l"]
-    for r, scales in zip(solved, per_run):
-        for _ in range(3):
-            g = solution_at(r, {**scales, "k_l": k_l})
-            with drawing_rc():
-                block = drawing_block(new_figure(), "mechanism", g, lang, legend=False)
-            wider = _make_room(g, frame, {"mechanism": (block.width, block.height)}, g.scales, {**given, "k_v": 1.0, "k_a": 1.0})["k_l"]
-            if wider == k_l:
-                break
-            k_l = wider
-    return k_l
+    changed = False
+    _, _, bw, bh = box
+    for n, (r, size) in enumerate(zip(solved, sizes)):
+        a_w, b_w, a_h, b_h, k1 = size
+        if k1 == k_l or ((a_w / k1 + b_w) * k1 / k_l <= bw and (a_h / k1 + b_h) * k1 / k_l <= bh):
+            continue
+        with drawing_rc():
+            block = drawing_block(new_figure(), "mechanism", construct_at(r, k_l), lang, legend=False)
+        d1w, d1h = a_w / k1 + b_w, a_h / k1 + b_h
+        inv = 1 / k_l - 1 / k1
+        a_w2, a_h2 = max(a_w, (block.width - d1w) / inv), max(a_h, (block.height - d1h) / inv)
+        sizes[n] = (a_w2, block.width - a_w2 / k_l, a_h2, block.height - a_h2 / k_l, k_l)
+        changed = True
+    return changed
 
 
 def _make_room(g, frame, sizes, scales, given) -> dict[str, float]:
@@ -354,8 +402,8 @@ def handout_pages(
     """
     from .compare import compare
     from .drawing.diagrams import draw_cycle_diagrams
-    from .drawing.layout import position_frames, stamp_page_number
-    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_bands, scale_line
+    from .drawing.layout import stamp_page_number
+    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_frames, scale_line
     from .graphical import construct
     from .loops import loop_equations
     from .positions import at_page_precision, run_positions
@@ -394,13 +442,24 @@ def handout_pages(
     pages_runs = {}
     if solved:
         sample = solved[0]
-        bands = position_page_bands(sample.graphical, lang=lang, header_lines=lambda page: head(sample, sample.graphical.scales, page), equations=_equations(sample.graphical, run.structure))
-        frames = position_frames(bands)
-        unscaled = _fixed_parts(sample.graphical, lang)  # what the drawings take beyond their geometry
-        frame = max(frames, key=lambda f: _frame_score(run.runs, f, given, unscaled))
+        frames = position_page_frames(sample.graphical, lang=lang, header_lines=lambda page: head(sample, sample.graphical.scales, page), equations=_equations(sample.graphical, run.structure))
+        # what the drawings take beyond their geometry: the plans' as the first position's, each mechanism's its own
+        unscaled = _fixed_parts(sample.graphical, lang)
+        sizes = None
+        if given.get("k_l") is None:
+            sizes = _mechanism_sizes(solved, lang, unscaled["mechanism"])
+            unscaled["mechanisms"] = [size[:4] for size in sizes]
+        frame = _choose_frame(frames, run.runs, given, unscaled)
+        # each page states the scale factors of the drawings on it
+        stated.update({page: tuple(key for kind, key in (("mechanism", "k_l"), ("velocity", "k_v"), ("acceleration", "k_a")) if frame.pages.get(kind) == page) for page in stated})
         k_l_common, per_run = handout_scales(run.runs, frame, given, unscaled)
-        if given.get("k_l") is None and len(solved) > 1:  # one position: its page makes room itself
-            k_l_common = _common_k_l(solved, per_run, frame, given, lambda r, sc: at_scales(r, sc).graphical, lang)
+        # mechanisms whose guides or slots scale too: drawn again at that k_l, measured, and k_l fitted to them
+        for _ in range(2):
+            if sizes is None or not _refine_mechanism_sizes(solved, sizes, k_l_common, frame.boxes["mechanism"], lang,
+                                                            lambda r, k: construct(r.scene, run.structure, k_l=k, k_v=r.graphical.scales["k_v"], k_a=r.graphical.scales.get("k_a"), precision=run.precision, check_scales=False)):
+                break
+            unscaled["mechanisms"] = [size[:4] for size in sizes]
+            k_l_common, per_run = handout_scales(run.runs, frame, given, unscaled)
         for r, scales in zip(solved, per_run):
             pages_runs[r.index] = (r, {**scales, "k_l": k_l_common})
         # the same k_l on every page: only k_v, k_a make room page by page
@@ -430,7 +489,7 @@ def handout_pages(
         for page, name in (("velocity", "position"), ("acceleration", "acceleration")):
             if page == "acceleration" and here.graphical.acceleration_plan is None:
                 continue
-            fig, g = draw_position_page(here, frame=frame, page=page, lang=lang, header_lines=lambda g, r=r, page=page: head(r, g.scales, page), equations=equations[page], footer=footer, rescale=rescale)
+            fig, g = draw_position_page(here, frame=frame, page=page, lang=lang, header_lines=lambda g, r=r, page=page: head(r, g.scales, page), equations=equations, footer=footer, rescale=rescale)
             if g is not here.graphical:
                 here = replace(r, graphical=g)
             drawn.append((f"{name}-{r.index}", fig))

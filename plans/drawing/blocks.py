@@ -75,8 +75,10 @@ class Block:
         self._place(sketch, x, y, page)
 
 
-def drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True) -> Block:
-    """The mechanism (*obj* a GraphicalSolution) or a plan (*obj* a Plan) drawn into new axes of *fig*.
+def drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True, detail: bool | None = None) -> Block:
+    """The mechanism (*obj* a GraphicalSolution) or a plan (*obj* a Plan) drawn into new axes of *fig*
+    (a plan with its enlarged detail of crowded images as *detail*, by default as *legend*: see
+    :func:`plans.drawing.plan_drawing.draw_plan`).
 
     The drawing is made now (its size is that of its ink plus the margin);
     placing the block only moves the axes, one data unit staying one
@@ -86,7 +88,7 @@ def drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True) ->
     if kind == "mechanism":
         draw_mechanism(obj, ax, lang=lang)
     else:
-        draw_plan(obj, ax, lang=lang, legend=legend)
+        draw_plan(obj, ax, lang=lang, legend=legend, detail=detail)
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     width, height = x1 - x0, y1 - y0
 

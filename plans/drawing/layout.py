@@ -129,13 +129,29 @@ class Frame:
     ``"acceleration"``; ``pages`` says on which page each is drawn
     (``"velocity"``: the mechanism and the velocity plan;
     ``"acceleration"``: the acceleration plan alone); *name* says which
-    arrangement it is.
+    arrangement it is; ``text`` (page -> box), where a page's legend and
+    vector equations go when not in a band at its foot; ``sizes`` (page -> (width, height) [mm]),
+    a page that is not A4 portrait (A4 landscape); ``equations`` (page -> plan kinds), the plans whose
+    vector equations a page prints when not those drawn on it.
     """
 
-    def __init__(self, name: str, boxes: dict[str, tuple[float, float, float, float]], pages: dict[str, str] | None = None):
+    def __init__(self, name: str, boxes: dict[str, tuple[float, float, float, float]], pages: dict[str, str] | None = None,
+                 text: dict[str, tuple[float, float, float, float]] | None = None, sizes: dict[str, tuple[float, float]] | None = None,
+                 equations: dict[str, tuple[str, ...]] | None = None):
         self.name = name
         self.boxes = boxes
         self.pages = pages or {kind: "velocity" for kind in boxes}
+        self.text = text or {}
+        self.sizes = sizes or {}
+        self.equations = equations or {}
+
+    def equations_on(self, page: str) -> tuple[str, ...]:
+        """The plans whose vector equations *page* prints: those of its plans unless the frame says otherwise."""
+        return self.equations.get(page, tuple(kind for kind in ("velocity", "acceleration") if self.pages.get(kind) == page))
+
+    def size(self, page: str) -> tuple[float, float]:
+        """The size [mm] of *page*: A4 portrait unless the frame says otherwise (``sizes``)."""
+        return self.sizes.get(page, A4)
 
     def on(self, page: str) -> dict[str, tuple[float, float, float, float]]:
         """The boxes drawn on *page* (``"velocity"`` or ``"acceleration"``)."""

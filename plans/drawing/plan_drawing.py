@@ -386,7 +386,9 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, names: list[str], index
             at = c
             break
     if at is None:
-        outside = [complex(b.xmax + 6.0 + big, centre.imag), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
+        # level with the crowd, but within the plan's height when the plan is taller than the detail
+        level = min(max(centre.imag, b.ymin + big), b.ymax - big) if b.height >= 2 * big else centre.imag
+        outside = [complex(b.xmax + 6.0 + big, level), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
         at = next((c for c in outside if not any(Point(c.real, c.imag).buffer(big + 2.0).intersects(o) for o in sketch.obstacles)), outside[0])
 
     def f(z: complex) -> complex:

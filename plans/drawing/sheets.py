@@ -26,7 +26,7 @@ from .._text import decimal_comma, user_text
 from ..i18n import term
 from ._canvas import Sketch, fit_axes, fmt_number
 from .blocks import Block, drawing_block, legend_block, pretty_equation, readings_block, rows_block, table_block, text_rows
-from .layout import A4, GAP, PAGE_MARGIN, header, header_height, new_page, place_in_box
+from .layout import A4, GAP, PAGE_MARGIN, Frame, header, header_height, new_page, place_in_box, position_frames
 from .sheet import branch_lines, draw_sheet, sheet_equations
 from .style import HEADING_PT, MARGIN_MM, SMALL_PT
 from .svg import drawing_rc
@@ -40,6 +40,7 @@ __all__ = [
     "draw_position_page",
     "POSITION_PAGES",
     "position_page_bands",
+    "position_page_frames",
     "draw_check_pages",
     "draw_cover_page",
     "draw_unsolved_page",
@@ -52,8 +53,9 @@ LINE_GAP = 0.7  # mm between the lines of a text block on a page
 BOX_TOLERANCE = 2.5
 #: text size [pt] of the readings tables on a check page
 READINGS_PAGE_PT = 7.0
-#: text sizes [pt] tried on a check page, largest first, so that the table and the loop equations share one page
-CHECK_PT = (8.0, 7.6, 7.2, 6.8)
+#: text sizes [pt] tried on a check page, largest first: the largest with which the table and the loop equations
+#: share one page (a short chain of groups gets larger type rather than an empty half page)
+CHECK_PT = (9.5, 9.0, 8.5, 8.0, 7.6, 7.2, 6.8)
 
 #: rcParams of PDF output: TrueType fonts embedded (DejaVu Sans covers Cyrillic and Greek).
 # --- plans draw --positions -----------------------------------------------------------
@@ -124,25 +126,168 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
 POSITION_PAGES = {"velocity": ("mechanism", "velocity"), "acceleration": ("acceleration",)}
 
 
-def position_page_bands(graphical, *, lang: str = "en", header_lines=(), equations=None) -> dict[str, tuple[float, float]]:
+def position_page_bands(graphical, *, lang: str = "en", header_lines=(), equations=None, size=A4) -> dict[str, tuple[float, float]]:
     """Page (``"velocity"``, ``"acceleration"``) -> (top, bottom) [mm] of the room it leaves for its drawings.
 
     Under the header (*header_lines*: a list, or a callable given the page),
-    above the page's legend and vector equations (*equations*: page -> lines).
+    above the page's legend and vector equations (*equations*: page -> lines)
+    in a band at its foot; on a page of *size* [mm].
     """
-    width = A4[0] - 2 * PAGE_MARGIN
+    width = size[0] - 2 * PAGE_MARGIN
     out = {}
     for page in POSITION_PAGES:
         if page == "acceleration" and graphical.acceleration_plan is None:
             continue
         lines = header_lines(page) if callable(header_lines) else header_lines
         with drawing_rc():
-            legend = legend_block(graphical, lang, columns=2, plans=(page,))
-            eq_block = _equations_block(graphical, None if equations is None else equations[page], lang, width, page)
-        top = A4[1] - header_height(list(lines))
-        bottom = PAGE_MARGIN + 4.0 + eq_block.height + GAP + legend.height + GAP
+            legend, eq_block = _page_text(graphical, None if equations is None else equations[page], lang, width, page)
+        top = size[1] - header_height(list(lines))
+        bottom = FOOT + eq_block.height + GAP + legend.height + GAP
         out[page] = (top, bottom)
     return out
+
+
+#: where the blocks of a page end [mm from the foot]: above the footer and page number
+FOOT = PAGE_MARGIN + 4.0
+#: the widths [fraction of the page's width] tried for a column of legend and equations beside the velocity plan
+TEXT_COLUMNS = (0.3, 0.36, 0.42, 0.5)
+#: the shares [fraction of the room's height] tried for the mechanism above the velocity plan
+MECHANISM_SHARES = (0.45, 0.5, 0.55, 0.6, 0.65, 0.7)
+#: the shares [fraction of the page's width] tried for the mechanism beside the velocity plan
+MECHANISM_COLUMNS = (0.45, 0.5, 0.55, 0.6, 0.65)
+
+
+def position_page_frames(graphical, *, lang: str = "en", header_lines=(), equations=None) -> list[Frame]:
+    """The arrangements of a position's pages to choose from (:class:`plans.drawing.layout.Frame`).
+
+    Those of :func:`plans.drawing.layout.position_frames` (the legend and the
+    equations in a band at the foot of the page), and on the velocity page:
+
+    * ``top-S-text-C``: the mechanism across the page (S % of the room's
+      height), under it the velocity plan and, beside it on the right, a
+      column (C % of the width) of the legend and the equations;
+    * ``left-S-text``: the mechanism in a column on the left (S % of the
+      width); on the right the velocity plan over the legend and equations.
+
+    Every drawing and text box lies between the header and the foot of the
+    page; the text columns are measured, so they hold their text.
+    """
+    bands = position_page_bands(graphical, lang=lang, header_lines=header_lines, equations=equations)
+    frames = position_frames(bands)
+    x0 = PAGE_MARGIN
+    width = A4[0] - 2 * PAGE_MARGIN
+    top = bands["velocity"][0]
+    room = top - FOOT
+    lines = None if equations is None else equations["velocity"]
+    extra = {"acceleration": frames[0].boxes["acceleration"]} if "acceleration" in frames[0].boxes else {}
+    pages = frames[0].pages
+    with drawing_rc():
+        heights = {}
+        for cw in [round(width * c, 3) for c in TEXT_COLUMNS] + [round(width * (1.0 - s) - GAP, 3) for s in MECHANISM_COLUMNS]:
+            legend, eq_block = _page_text(graphical, lines, lang, cw, "velocity")
+            heights[cw] = (max(legend.width, eq_block.width), legend.height + GAP + eq_block.height)
+    for share in MECHANISM_SHARES:
+        hm = room * share
+        below = room - hm - GAP
+        for c in TEXT_COLUMNS:
+            cw = round(width * c, 3)
+            tw, th = heights[cw]
+            if th > below or tw > cw + 0.5:
+                continue
+            boxes = {"mechanism": (x0, top - hm, width, hm), "velocity": (x0, FOOT, width - cw - GAP, below), **extra}
+            text = {"velocity": (x0 + width - cw, FOOT, cw, below)}
+            frames.append(Frame(f"top-{round(share * 100)}-text-{round(c * 100)}", boxes, pages, text))
+    for share in MECHANISM_COLUMNS:
+        wm = width * share
+        cw = round(width * (1.0 - share) - GAP, 3)
+        tw, th = heights[cw]
+        if tw > cw + 0.5 or room - th - GAP < 40.0:
+            continue
+        boxes = {"mechanism": (x0, FOOT, wm, room), "velocity": (x0 + wm + GAP, FOOT + th + GAP, cw, room - th - GAP), **extra}
+        text = {"velocity": (x0 + wm + GAP, FOOT, cw, th)}
+        frames.append(Frame(f"left-{round(share * 100)}-text", boxes, pages, text))
+    frames.extend(_landscape_frames(graphical, lang, header_lines, equations, extra))
+    if graphical.acceleration_plan is not None:
+        frames.extend(_apart_frames(graphical, lang, header_lines, equations))
+    return frames
+
+
+#: the shares [fraction of the room's height] tried for the velocity plan above the acceleration plan on one page
+PLANS_SHARES = (0.4, 0.45, 0.5, 0.55, 0.6)
+
+
+def _apart_frames(graphical, lang, header_lines, equations) -> list[Frame]:
+    """``apart-P-S``, ``apart-L-S``: the mechanism on the first page (A4 portrait P or landscape L) over the
+    vector equations of both plans; both plans on the second, the velocity plan over the acceleration plan
+    (S % of the room), their legend at the foot: for a mechanism too wide to share a page with a plan."""
+    x0 = PAGE_MARGIN
+    width = A4[0] - 2 * PAGE_MARGIN
+    both = ("velocity", "acceleration")
+    lines = None if equations is None else [line for kind in both for line in equations[kind]]
+    with drawing_rc():
+        legend = _page_text(graphical, None, lang, width, both)[0]
+    head = list(header_lines("acceleration") if callable(header_lines) else header_lines)
+    top = A4[1] - header_height(head)
+    bottom = FOOT + legend.height + GAP
+    room = top - bottom
+    pages = {"mechanism": "velocity", "velocity": "acceleration", "acceleration": "acceleration"}
+    frames = []
+    for name, size in (("P", A4), ("L", LANDSCAPE)):
+        with drawing_rc():
+            eq_block = _equations_block(graphical, lines, lang, size[0] - 2 * PAGE_MARGIN, both)
+        first = list(header_lines("velocity") if callable(header_lines) else header_lines)
+        m_top = size[1] - header_height(first)
+        m_bottom = FOOT + eq_block.height + GAP
+        mechanism = (x0, m_bottom, size[0] - 2 * PAGE_MARGIN, m_top - m_bottom)
+        for share in PLANS_SHARES:
+            hv = room * share
+            boxes = {"mechanism": mechanism, "velocity": (x0, top - hv, width, hv), "acceleration": (x0, bottom, width, room - hv - GAP)}
+            frames.append(Frame(f"apart-{name}-{round(share * 100)}", boxes, pages, None, {"velocity": size}, {"velocity": both, "acceleration": ()}))
+    return frames
+
+
+#: the velocity page of a position turned (A4 landscape): for mechanisms too wide for a portrait page beside their plan
+LANDSCAPE = (A4[1], A4[0])
+#: the shares [fraction of the width] tried for the mechanism on a landscape velocity page
+LANDSCAPE_COLUMNS = (0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7)
+
+
+def _landscape_frames(graphical, lang, header_lines, equations, extra) -> list[Frame]:
+    """``land-S-text`` and ``land-S``: the velocity page A4 landscape, the mechanism in a column on the left
+    (S % of the width); on the right the velocity plan over its legend and equations (``-text``), or the
+    legend and equations in a band at the foot of the page."""
+    size = LANDSCAPE
+    bands = position_page_bands(graphical, lang=lang, header_lines=header_lines, equations=equations, size=size)
+    top, bottom = bands["velocity"]
+    x0 = PAGE_MARGIN
+    width = size[0] - 2 * PAGE_MARGIN
+    room = top - FOOT
+    lines = None if equations is None else equations["velocity"]
+    pages = {"mechanism": "velocity", "velocity": "velocity", "acceleration": "acceleration"}
+    sizes = {"velocity": size}
+    frames = []
+    for share in LANDSCAPE_COLUMNS:
+        wm = width * share
+        cw = width - wm - GAP
+        with drawing_rc():
+            legend, eq_block = _page_text(graphical, lines, lang, cw, "velocity")
+        tw, th = max(legend.width, eq_block.width), legend.height + GAP + eq_block.height
+        if tw <= cw + 0.5 and room - th - GAP >= 40.0:
+            boxes = {"mechanism": (x0, FOOT, wm, room), "velocity": (x0 + wm + GAP, FOOT + th + GAP, cw, room - th - GAP), **extra}
+            frames.append(Frame(f"land-{round(share * 100)}-text", boxes, pages, {"velocity": (x0 + wm + GAP, FOOT, cw, th)}, sizes))
+        boxes = {"mechanism": (x0, bottom, wm, top - bottom), "velocity": (x0 + wm + GAP, bottom, cw, top - bottom), **extra}
+        frames.append(Frame(f"land-{round(share * 100)}", boxes, pages, None, sizes))
+    return frames
+
+
+def _page_text(g, equations, lang: str, width: float, plans) -> tuple[Block, Block]:
+    """The legend of *plans* (a kind or a tuple of kinds; two columns when they fit *width* [mm], else one) and
+    the vector equations (*equations*, by default those of *plans*) broken to *width*."""
+    plans = (plans,) if isinstance(plans, str) else tuple(plans)
+    legend = legend_block(g, lang, columns=2, plans=plans)
+    if legend.width > width:
+        legend = legend_block(g, lang, columns=1, plans=plans)
+    return legend, _equations_block(g, equations, lang, width, plans)
 
 
 def draw_position_page(
@@ -157,10 +302,12 @@ def draw_position_page(
     footer: str = "",
     rescale=None,
 ):
-    """A graphical page of a position, A4 portrait: returns (Figure, the GraphicalSolution drawn).
+    """A graphical page of a position, A4: returns (Figure, the GraphicalSolution drawn).
 
-    *page* ``"velocity"``: the mechanism and the velocity plan;
-    ``"acceleration"``: the acceleration plan, alone on its page.  The title
+    *page* ``"velocity"`` (the first page) and ``"acceleration"`` (the second)
+    hold the drawings *frame* puts on them: as a rule the mechanism and the
+    velocity plan, then the acceleration plan alone; the page is the
+    frame's size for it (portrait, or landscape).  The title
     and data at the top; the drawings true to scale, each at the top of its
     box of *frame* (a :class:`plans.drawing.layout.Frame`, the same on every
     position of a handout); the legend of the page's plan and the vector
@@ -174,8 +321,9 @@ def draw_position_page(
         Data lines under the title (``$…$`` typeset; a leading ``§`` makes
         one bold); a callable is given the solution drawn (its scale factors
         are those the page states).
-    equations : list of str, optional
-        Vector equations of the page's plan, by default from its steps.
+    equations : list of str, or dict, optional
+        Vector equations of the page's plans (a dict: plan kind -> its
+        equations), by default from their steps.
     rescale : callable, optional
         ``rescale(solution, kind, (width, height))`` is called when a drawing
         (kind ``"mechanism"``, ``"velocity"``, ``"acceleration"``) runs out
@@ -183,7 +331,7 @@ def draw_position_page(
         again (at most twice), or None to keep the drawing.
     """
     g = run.graphical
-    size = A4
+    size = frame.size(page)
     width = size[0] - 2 * PAGE_MARGIN
     objects = {"mechanism": lambda s: s, "velocity": lambda s: s.velocity_plan, "acceleration": lambda s: s.acceleration_plan}
     with drawing_rc():
@@ -191,9 +339,15 @@ def draw_position_page(
         for kind, box in frame.on(page).items():
             if objects[kind](g) is None:
                 continue
+            detail = kind != "mechanism"  # crowded images of a plan enlarged in a detail, when the box has room for it
             for attempt in range(3):
-                block = drawing_block(fig, kind, objects[kind](g), lang, legend=False)
+                block = drawing_block(fig, kind, objects[kind](g), lang, legend=False, detail=detail)
                 inside = block.width <= box[2] + BOX_TOLERANCE and block.height <= box[3] + BOX_TOLERANCE
+                if not inside and detail and _has_detail(block):  # no room for the detail: the plan without it
+                    block.axes.remove()
+                    detail = False
+                    block = drawing_block(fig, kind, objects[kind](g), lang, legend=False, detail=False)
+                    inside = block.width <= box[2] + BOX_TOLERANCE and block.height <= box[3] + BOX_TOLERANCE
                 other = None if inside or rescale is None or attempt == 2 else rescale(g, kind, (block.width, block.height))
                 if other is None:
                     break
@@ -202,18 +356,30 @@ def draw_position_page(
             place_in_box(block, sketch, box, size)
         lines = header_lines(g) if callable(header_lines) else header_lines
         header(sketch, size, title or run.scene.title, [decimal_comma(line, lang) for line in lines])
-        eq_block = _equations_block(g, equations, lang, width, page)
-        legend = legend_block(g, lang, columns=2, plans=(page,))
-        y = PAGE_MARGIN + 4.0
-        eq_block.place(sketch, PAGE_MARGIN, y, size)
-        y += eq_block.height + GAP
-        legend.place(sketch, PAGE_MARGIN, y, size)
+        shown = tuple(kind for kind in ("velocity", "acceleration") if kind in frame.on(page) and objects[kind](g) is not None)
+        solved = tuple(kind for kind in frame.equations_on(page) if objects[kind](g) is not None)
+        if isinstance(equations, dict):
+            equations = [line for kind in solved for line in equations.get(kind, ())]
+        tx, ty, tw, _ = frame.text.get(page, (PAGE_MARGIN, FOOT, width, 0.0))
+        # in a column or a band, down to the foot of the page: the equations at the foot, the legend of the plans drawn above them
+        y = ty
+        if solved:
+            eq_block = _equations_block(g, equations, lang, tw, solved)
+            eq_block.place(sketch, tx, y, size)
+            y += eq_block.height + GAP
+        if shown:
+            _page_text(g, None, lang, tw, shown)[0].place(sketch, tx, y, size)
         page_footer(sketch, footer)
     return fig, g
 
 
-def _equations_block(g, equations, lang: str, width: float, page: str) -> Block:
-    lines = [pretty_equation(line) for line in (sheet_equations(g, plans=(page,)) if equations is None else equations)]
+def _has_detail(block: Block) -> bool:
+    """Whether a plan's drawing has an enlarged detail of crowded images (its circle, gid ``detail``)."""
+    return any((artist.get_gid() or "").endswith("-detail") for artist in block.axes.get_children())
+
+
+def _equations_block(g, equations, lang: str, width: float, plans: tuple) -> Block:
+    lines = [pretty_equation(line) for line in (sheet_equations(g, plans=plans) if equations is None else equations)]
     return rows_block(text_rows(term("vector_equations", lang), lines, width, TEXT_PT), "equation", line_gap=LINE_GAP)
 
 
@@ -272,7 +438,7 @@ def draw_check_pages(
                 return table_, True, max(table_.height, stacked.height) + GAP
             return table_, False, (table_.height + GAP if table_ else 0.0) + (readings.height + GAP if readings is not None else 0.0)
 
-        # the smallest text that puts everything on one page, down to CHECK_MIN_PT; else continued pages at TEXT_PT
+        # the largest text that puts everything on one page, down to CHECK_PT[-1]; else continued pages at TEXT_PT
         rows = text_rows(heading, loop_lines, width, TEXT_PT) if loop_lines else []
         room = size[1] - header_height([decimal_comma(line, lang) for line in header_lines]) - (PAGE_MARGIN + 4.0)
         for pt in CHECK_PT:
@@ -304,10 +470,13 @@ def draw_check_pages(
                 top -= used
             if rows:
                 take = _rows_that_fit(rows, top - bottom)
-                block = rows_block(rows[:take], "loop", line_gap=LINE_GAP)
-                block.place(sketch, PAGE_MARGIN, top - block.height, size)
-                rest = rows[take:]
-                rows = [(f"{heading} {term('continued', lang)}", HEADING_PT, "bold")] + rest if rest else []
+                if first and take < len(rows) and all(row[2] == "bold" for row in rows[:take]):
+                    take = 0  # headings alone at the foot of the first page: they begin the next page
+                if take:
+                    block = rows_block(rows[:take], "loop", line_gap=LINE_GAP)
+                    block.place(sketch, PAGE_MARGIN, top - block.height, size)
+                    rest = rows[take:]
+                    rows = [(f"{heading} {term('continued', lang)}", HEADING_PT, "bold")] + rest if rest else []
             page_footer(sketch, footer)
             figures.append(fig)
             first = False
