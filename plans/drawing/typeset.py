@@ -22,8 +22,10 @@ own size when that is smaller), so exponents stay legible in print.
 from __future__ import annotations
 
 import functools
+import itertools
 import re
 import unicodedata
+import weakref
 
 from matplotlib.font_manager import FontProperties, findfont, get_font
 from matplotlib.ft2font import LoadFlags
@@ -408,6 +410,10 @@ def _pdf_renderer(renderer):
         return None
     if type(vector).__name__ != "RendererPdf" or matplotlib.rcParams["pdf.fonttype"] != 42 or matplotlib.rcParams["pdf.use14corefonts"]:
         return None
+    from matplotlib.backends import backend_pdf
+
+    if not all(hasattr(backend_pdf, name) for name in ("_fill", "pdfRepr", "Op")):
+        return None
     file = getattr(vector, "file", None)
     if not hasattr(file, "_character_tracker") or not hasattr(vector, "_encode_glyphs") or not hasattr(vector, "_get_font_ttf"):
         return None
@@ -436,46 +442,76 @@ def _pdf_layout(renderer, text: str, prop) -> tuple:
     return items
 
 
-def _draw_pdf_line(renderer, gc, points) -> None:
-    import itertools
+#: per PDF file (weakly held): (text, font properties) -> the bytes that draw that run after its
+#: text matrix; its glyphs are tracked for subsetting the first time the run is made for that file
+_PDF_RUNS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
-    from matplotlib.backends.backend_pdf import Op
+
+def _pdf_run(renderer, text: str, prop) -> bytes:
+    """The operators that draw *text* in *prop* from the current text matrix, as bytes (made once per file)."""
+    file = renderer.file
+    cache = _PDF_RUNS.get(file)
+    if cache is None:
+        cache = _PDF_RUNS[file] = {}
+    key = (text, prop)
+    data = cache.get(key)
+    if data is not None:
+        return data
+
+    from matplotlib.backends.backend_pdf import Op, _fill, pdfRepr
     from matplotlib.font_manager import FontPath
 
-    file = renderer.file
     tracker = file._character_tracker
-    renderer.check_gc(gc, gc._rgb)
+    size = prop.get_size_in_points()
+    out: list[bytes] = []
 
-    def flush(chunk: list, size: float) -> None:
+    def output(*items) -> None:  # what PdfFile.output writes
+        out.append(_fill([pdfRepr(x) for x in items]) + b"\n")
+
+    def flush(chunk: list) -> None:
         if chunk:
-            file.output(
+            output(
                 [(-1000 * next(group) / size) if kind is float else renderer._encode_glyphs(group, 42) for kind, group in itertools.groupby(chunk, type)],
                 Op.showkern,
             )
             chunk.clear()
 
-    file.output(Op.begin_text)
+    chunk: list = []
+    previous = None
+    start = 0.0
+    for font, char, glyph, gx, gy, kern in _pdf_layout(renderer, text, prop):
+        subset, code = tracker.track_glyph(font, char, glyph)
+        if (font, subset) != previous:
+            flush(chunk)
+            output(file.fontName(FontPath(font.fname, font.face_index), subset), size, Op.selectfont)
+            output(gx - start, 0, Op.textpos)
+            previous, start = (font, subset), gx
+        if gy:
+            flush(chunk)
+            output(gy, Op.textrise)
+        if kern:
+            chunk.append(kern)
+        chunk.append(code)
+        if gy:
+            flush(chunk)
+            output(0, Op.textrise)
+    flush(chunk)
+    data = cache[key] = b"".join(out)
+    return data
+
+
+def _draw_pdf_line(renderer, gc, points) -> None:
+    """The runs of a line in one text object: ``BT``, per run its text matrix and its operators, ``ET``.
+
+    Byte for byte what writing each operator with ``PdfFile.output`` gives; a
+    run's operators are made once per file (:func:`_pdf_run`).
+    """
+    from matplotlib.backends.backend_pdf import pdfRepr
+
+    renderer.check_gc(gc, gc._rgb)
+    parts = [b"BT\n"]
     for text, prop, x, y in points:
-        size = prop.get_size_in_points()
-        file.output(1, 0, 0, 1, x, y, Op.textmatrix)
-        chunk: list = []
-        previous = None
-        start = 0.0
-        for font, char, glyph, gx, gy, kern in _pdf_layout(renderer, text, prop):
-            subset, code = tracker.track_glyph(font, char, glyph)
-            if (font, subset) != previous:
-                flush(chunk, size)
-                file.output(file.fontName(FontPath(font.fname, font.face_index), subset), size, Op.selectfont)
-                file.output(gx - start, 0, Op.textpos)
-                previous, start = (font, subset), gx
-            if gy:
-                flush(chunk, size)
-                file.output(gy, Op.textrise)
-            if kern:
-                chunk.append(kern)
-            chunk.append(code)
-            if gy:
-                flush(chunk, size)
-                file.output(0, Op.textrise)
-        flush(chunk, size)
-    file.output(Op.end_text)
+        parts.append(b"1 0 0 1 %s %s Tm\n" % (pdfRepr(x), pdfRepr(y)))
+        parts.append(_pdf_run(renderer, text, prop))
+    parts.append(b"ET\n")
+    renderer.file.write(b"".join(parts))
