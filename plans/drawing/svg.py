@@ -104,9 +104,91 @@ def _shared_math_parses():
             mathtext.MathTextParser._parse_cached = original
 
 
+# --- axes whose ticks are made when they are needed ------------------------------------------
+#
+# Every drawing is an Axes with its axis switched off, and making an Axes made
+# four ticks (each two lines, two texts and a grid line) only to give them
+# the clip path and grid setting: a tenth of a handout's time.  The axes of
+# plans' figures make their ticks when something asks for them, with the same
+# clip path and parameters they would have had.
+
+
+class _LazyTicks:
+    """An Axis (mixin) whose tick lists stay unmade by ``set_clip_path`` and ``set_tick_params``."""
+
+    _pending_clip = None
+
+    def _unmade(self) -> list[str]:
+        return [name for name in ("majorTicks", "minorTicks") if name not in vars(self)]
+
+    def _without_making_ticks(self, method, *args, **kwargs):
+        unmade = self._unmade()
+        placeholders = {name: [] for name in unmade}
+        for name, empty in placeholders.items():
+            setattr(self, name, empty)  # shadows matplotlib's lazy list while *method* runs
+        try:
+            return method(*args, **kwargs)
+        finally:
+            for name, empty in placeholders.items():
+                if vars(self).get(name) is empty and not empty:
+                    delattr(self, name)
+
+    def set_clip_path(self, path, transform=None):
+        self._pending_clip = (path, transform)
+        self._without_making_ticks(super().set_clip_path, path, transform)
+
+    def set_tick_params(self, which="major", reset=False, **kwargs):
+        # a tick made later is made with these parameters (matplotlib keeps them for that)
+        self._without_making_ticks(super().set_tick_params, which, reset, **kwargs)
+
+    def _get_tick(self, major):
+        tick = super()._get_tick(major)
+        made = vars(self).get("majorTicks" if major else "minorTicks")
+        if self._pending_clip is not None and made == []:  # the first tick of a list: clipped as set_clip_path would have
+            tick.set_clip_path(*self._pending_clip)
+        return tick
+
+
+def _axes_class():
+    from matplotlib.axes import Axes
+    from matplotlib.axis import XAxis, YAxis
+
+    class LazyXAxis(_LazyTicks, XAxis):
+        pass
+
+    class LazyYAxis(_LazyTicks, YAxis):
+        pass
+
+    class PaperAxes(Axes):
+        """matplotlib's Axes, its axes' ticks made only when needed."""
+
+        def _init_axis(self):
+            super()._init_axis()
+            if type(self.xaxis) is XAxis and type(self.yaxis) is YAxis and not ({"majorTicks", "minorTicks"} & (vars(self.xaxis).keys() | vars(self.yaxis).keys())):
+                self.xaxis.__class__ = LazyXAxis
+                self.yaxis.__class__ = LazyYAxis
+
+    return PaperAxes
+
+
+_PAPER_AXES = None
+
+
+class _Paper(Figure):
+    """A Figure whose ``add_axes`` makes :func:`_axes_class` axes unless told another class or projection."""
+
+    def add_axes(self, *args, **kwargs):
+        global _PAPER_AXES
+        if not {"axes_class", "projection", "polar"} & kwargs.keys() and args and not hasattr(args[0], "get_figure"):
+            if _PAPER_AXES is None:
+                _PAPER_AXES = _axes_class()
+            kwargs["axes_class"] = _PAPER_AXES
+        return super().add_axes(*args, **kwargs)
+
+
 def new_figure(width_mm: float = 100.0, height_mm: float = 100.0) -> Figure:
     """A Figure with an SVG canvas, *width_mm* × *height_mm*."""
-    fig = Figure(figsize=(width_mm / 25.4, height_mm / 25.4), dpi=72)
+    fig = _Paper(figsize=(width_mm / 25.4, height_mm / 25.4), dpi=72)
     FigureCanvasSVG(fig)
     fig.patch.set_visible(False)
     return fig
