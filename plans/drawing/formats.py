@@ -89,7 +89,9 @@ def render_pdf(figures, progress=None) -> bytes:
 
     from .svg import drawing_rc
 
-    with drawing_rc(), matplotlib.rc_context(PDF_RC), _fonts_without_layout_tables():
+    from .typeset import fast_pdf_text
+
+    with drawing_rc(), matplotlib.rc_context(PDF_RC), _fonts_without_layout_tables(), fast_pdf_text():
         with PdfPages(buffer, metadata={"CreationDate": None, "ModDate": None, "Creator": "plans", "Producer": "plans (matplotlib)"}) as pdf:
             for number, fig in enumerate(figures, start=1):
                 pdf.savefig(fig)

@@ -85,16 +85,58 @@ def _shared_parse(plain):
     return parse
 
 
+# Likewise the size of a plain string: matplotlib measures it once per renderer, and every
+# page has its own renderer.  While drawing, the vector renderers' measurements of plain
+# (not math) text are kept: they depend only on the string, the font properties and, for
+# PDF/PS, whether the core fonts are used (in the key).
+
+_TEXT_SIZES: dict = {}
+_TEXT_SIZES_MAX = 65536
+
+
+def _shared_size(method, tag: str):
+    def size(self, s, prop, ismath):
+        if ismath is not False or not isinstance(s, str):
+            return method(self, s, prop, ismath)
+        afm = getattr(self, "_use_afm_rc_name", None)
+        key = (tag, type(self), s, prop.copy(), afm and matplotlib.rcParams[afm])
+        found = _TEXT_SIZES.get(key)
+        if found is None:
+            if len(_TEXT_SIZES) >= _TEXT_SIZES_MAX:
+                _TEXT_SIZES.clear()
+            found = _TEXT_SIZES[key] = method(self, s, prop, ismath)
+        return found
+
+    size.__wrapped__ = method
+    return size
+
+
+def _size_methods():
+    """(class, name) of the text measurements shared while drawing (those found)."""
+    from matplotlib.backends import _backend_pdf_ps
+    from matplotlib.textpath import TextToPath
+
+    found = []
+    for cls in (TextToPath, getattr(_backend_pdf_ps, "RendererPDFPSBase", None)):
+        method = getattr(cls, "__dict__", {}).get("get_text_width_height_descent")
+        if callable(method):
+            found.append((cls, method))
+    return found
+
+
 @contextmanager
 def _shared_math_parses():
-    """Within: every ``MathTextParser`` parses a math string once (see above); nests."""
+    """Within: every ``MathTextParser`` parses a math string once, and plain text is measured once (see above); nests."""
     global _math_depth
     from matplotlib import mathtext
 
     original = mathtext.MathTextParser.__dict__.get("_parse_cached") if _math_depth == 0 else None
     plain = _math_parse_function() if _math_depth == 0 else None
+    sizes = _size_methods() if _math_depth == 0 else []
     if plain is not None:
         mathtext.MathTextParser._parse_cached = _shared_parse(plain)
+    for cls, method in sizes:
+        cls.get_text_width_height_descent = _shared_size(method, cls.__name__)
     _math_depth += 1
     try:
         yield
@@ -102,6 +144,8 @@ def _shared_math_parses():
         _math_depth -= 1
         if plain is not None:
             mathtext.MathTextParser._parse_cached = original
+        for cls, method in sizes:
+            cls.get_text_width_height_descent = method
 
 
 # --- axes whose ticks are made when they are needed ------------------------------------------

@@ -23,9 +23,11 @@ from __future__ import annotations
 
 import functools
 import itertools
+import math
 import re
 import unicodedata
 import weakref
+from contextlib import contextmanager
 
 from matplotlib.font_manager import FontProperties, findfont, get_font
 from matplotlib.ft2font import LoadFlags
@@ -36,7 +38,7 @@ from matplotlib.transforms import Bbox
 from ._canvas import Sketch, text_size
 from .style import FONT_FAMILY, INK, MM_PER_PT
 
-__all__ = ["measure", "draw_text", "TypesetText", "text_width", "runs", "plain_runs", "SCRIPT_SCALE", "MIN_SCRIPT_PT", "MATH_LINE"]
+__all__ = ["fast_pdf_text", "measure", "draw_text", "TypesetText", "text_width", "runs", "plain_runs", "SCRIPT_SCALE", "MIN_SCRIPT_PT", "MATH_LINE"]
 
 SCRIPT_SCALE = 0.75
 MIN_SCRIPT_PT = 6.0
@@ -515,3 +517,50 @@ def _draw_pdf_line(renderer, gc, points) -> None:
         parts.append(_pdf_run(renderer, text, prop))
     parts.append(b"ET\n")
     renderer.file.write(b"".join(parts))
+
+
+# --- PDF: matplotlib's own text the same way -------------------------------------------------
+#
+# Drawing labels, captions and the diagrams' tick labels are matplotlib ``Text``; the PDF
+# backend lays each string out again at every draw.  While :func:`fast_pdf_text` is on, a
+# plain horizontal string is written from the same cached run as a typeset line, wrapped
+# in exactly what ``RendererPdf.draw_text`` writes around it (save state, move, text
+# object, restore); anything else (math, rotated text, links, font features) goes to
+# matplotlib.
+
+
+def _draw_text_from_runs(original):
+    def draw_text(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
+        plain = not ismath and not angle and isinstance(s, str) and gc.get_url() is None
+        if plain and mtext is not None:
+            plain = not (getattr(mtext, "get_fontfeatures", lambda: None)() or getattr(mtext, "get_language", lambda: None)())
+        if not plain or _pdf_renderer(self) is not self:
+            return original(self, gc, x, y, s, prop, angle, ismath=ismath, mtext=mtext)
+        from matplotlib.backends.backend_pdf import _fill, pdfRepr
+
+        self.check_gc(gc, gc._rgb)
+        a = math.radians(angle)
+        place = _fill([pdfRepr(v) for v in (math.cos(a), math.sin(a), -math.sin(a), math.cos(a), x, y)] + [b"cm"])
+        self.file.write(b"q\n" + place + b"\nBT\n" + _pdf_run(self, s, prop) + b"ET\nQ\n")
+
+    draw_text.__wrapped__ = original
+    return draw_text
+
+
+@contextmanager
+def fast_pdf_text():
+    """Within: the PDF backend draws plain horizontal ``Text`` from cached runs (same bytes); nests."""
+    try:
+        from matplotlib.backends.backend_pdf import RendererPdf
+    except ImportError:  # pragma: no cover
+        yield
+        return
+    original = RendererPdf.__dict__.get("draw_text")
+    if original is None or hasattr(original, "__wrapped__"):
+        yield
+        return
+    RendererPdf.draw_text = _draw_text_from_runs(original)
+    try:
+        yield
+    finally:
+        RendererPdf.draw_text = original
