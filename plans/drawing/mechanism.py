@@ -548,6 +548,8 @@ class MechanismDrawing:
                 angles += [phi, phi + math.pi]
         best = None
         hole = Point(q.real, q.imag).buffer(self.pin_r + 0.3)  # what meets the pivot itself is judged above
+        near = [o for o in getattr(self, "link_shapes", []) if not o.intersects(hole)]
+        near = np.array(near, dtype=object)
         for k in range(24):
             theta = -math.pi / 2 + 2 * math.pi * k / 24
             clear = min((abs(cmath.phase(cmath.exp(1j * (theta - a)))) for a in angles), default=math.pi)
@@ -559,8 +561,7 @@ class MechanismDrawing:
             # and clear of what is drawn near it (another link passing by)
             d = cmath.exp(1j * theta)
             foot = self._support_footprint(q, d, height)
-            near = [o for o in getattr(self, "link_shapes", []) if not o.intersects(hole)]
-            if any(o.intersects(foot) for o in near):
+            if len(near) and shapely.intersects(near, foot).any():
                 score -= 1.0
             if best is None or score > best[0] + 1e-12:
                 best = (score, theta)
