@@ -149,7 +149,7 @@ def place_label(
             if len(i):
                 # a clearance beyond CLEAR_MM scores as CLEAR_MM: measure only the pairs within it
                 # (dwithin stops early; distance is far dearer, most of the time of placing labels)
-                within = shapely.dwithin(boxes[i], shapes[j], CLEAR_MM)
+                within = shapely.dwithin(shapes[j], boxes[i], CLEAR_MM)  # (this order is twice as fast)
                 i, j = i[within], j[within]
             if len(i):
                 np.minimum.at(clear, i, shapely.distance(boxes[i], shapes[j]))

@@ -200,7 +200,7 @@ def _closer_than(geoms, shapes, limit: float):
     )
     i, j = np.nonzero(near)
     if len(i):
-        within = shapely.dwithin(geoms[i], shapes[j], limit)
+        within = shapely.dwithin(shapes[j], geoms[i], limit)  # (this order is the faster)
         i, j = i[within], j[within]
     if len(i):
         close = shapely.distance(geoms[i], shapes[j]) < limit
