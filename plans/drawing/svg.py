@@ -186,9 +186,13 @@ class _LazyTicks:
         self._without_making_ticks(super().set_tick_params, which, reset, **kwargs)
 
     def _get_tick(self, major):
-        tick = super()._get_tick(major)
-        made = vars(self).get("majorTicks" if major else "minorTicks")
-        if self._pending_clip is not None and made == []:  # the first tick of a list: clipped as set_clip_path would have
+        # the first tick of a list (matplotlib's lazy list holds [] while it makes it): clipped as
+        # set_clip_path would have clipped it; later ones copy the first
+        first = vars(self).get("majorTicks" if major else "minorTicks") == []
+        with matplotlib.rc_context():  # made under the rcParams of the axes' making, as it would have been
+            dict.update(matplotlib.rcParams, self._made_under)
+            tick = super()._get_tick(major)
+        if first and self._pending_clip is not None:
             tick.set_clip_path(*self._pending_clip)
         return tick
 
@@ -209,8 +213,10 @@ def _axes_class():
         def _init_axis(self):
             super()._init_axis()
             if type(self.xaxis) is XAxis and type(self.yaxis) is YAxis and not ({"majorTicks", "minorTicks"} & (vars(self.xaxis).keys() | vars(self.yaxis).keys())):
-                self.xaxis.__class__ = LazyXAxis
-                self.yaxis.__class__ = LazyYAxis
+                made_under = dict.copy(matplotlib.rcParams)  # (the values, already checked)
+                for axis, lazy in ((self.xaxis, LazyXAxis), (self.yaxis, LazyYAxis)):
+                    axis.__class__ = lazy
+                    axis._made_under = made_under
 
     return PaperAxes
 
