@@ -51,13 +51,23 @@ _math_depth = 0
 _PARSE_ARGS = ["self", "s", "dpi", "prop", "antialiased", "load_glyph_flags"]
 
 
+_CHECKED: dict = {}
+
+
 def _math_parse_function():
     """matplotlib's uncached ``MathTextParser._parse_cached``, or None if it is not the one expected."""
-    import inspect
-
     from matplotlib import mathtext
 
     cached = mathtext.MathTextParser.__dict__.get("_parse_cached")
+    if id(cached) not in _CHECKED:
+        _CHECKED.clear()
+        _CHECKED[id(cached)] = (cached, _checked_parse_function(cached))
+    return _CHECKED[id(cached)][1]
+
+
+def _checked_parse_function(cached):
+    import inspect
+
     plain = getattr(cached, "__wrapped__", None)
     if plain is None or not hasattr(cached, "cache_clear"):
         return None
@@ -113,11 +123,14 @@ def _shared_size(method, tag: str):
 
 def _size_methods():
     """(class, name) of the text measurements shared while drawing (those found)."""
-    from matplotlib.backends import _backend_pdf_ps
+    import sys
+
     from matplotlib.textpath import TextToPath
 
+    # the PDF/PS renderers' base only if something has loaded it (an SVG drawing need not)
+    pdf_ps = sys.modules.get("matplotlib.backends._backend_pdf_ps")
     found = []
-    for cls in (TextToPath, getattr(_backend_pdf_ps, "RendererPDFPSBase", None)):
+    for cls in (TextToPath, getattr(pdf_ps, "RendererPDFPSBase", None)):
         method = getattr(cls, "__dict__", {}).get("get_text_width_height_descent")
         if callable(method):
             found.append((cls, method))
