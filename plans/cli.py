@@ -670,6 +670,9 @@ def _branch_lines(analytic, lang: str) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; returns the exit status (0, or 2 on an error)."""
+    from ._startup import lighter_matplotlib
+
+    lighter_matplotlib()  # a command does not need matplotlib's generated help texts
     args = build_parser().parse_args(argv)
     try:
         return _COMMANDS[args.command](args)
