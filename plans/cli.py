@@ -207,6 +207,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="directory for the drawings; or, for one position, a file (page.svg, page.pdf, page.png) for the sheet alone",
     )
     draw.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="format of the files written into DIR (default svg)")
+    draw.add_argument("-q", "--quiet", action="store_true", help="with --positions: no progress on stderr (shown only when stderr is a terminal)")
     _language_argument(draw)
     _warn_argument(draw)
     _scale_arguments(draw)
@@ -538,7 +539,8 @@ def _draw(args) -> int:
         for message in run.skipped_messages():
             _warn(message)
         with batch():
-            paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format)
+            paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format, progress=_progress(args))
+        _progress_done(args)
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
         graphical = _construct(scene, args)
@@ -668,6 +670,9 @@ def _branch_lines(analytic, lang: str) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; returns the exit status (0, or 2 on an error)."""
+    from ._startup import lighter_matplotlib
+
+    lighter_matplotlib()  # a command does not need matplotlib's generated help texts
     args = build_parser().parse_args(argv)
     try:
         return _COMMANDS[args.command](args)

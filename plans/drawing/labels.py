@@ -104,14 +104,14 @@ def place_label(
     w, h = text_size(full, size, weight, mathtext)
     base_angle = cmath.phase(prefer) if prefer else math.radians(45)
 
+    directions = []  # (unit vector, its turn from the preferred direction, the box's half extents along it)
+    for k in range(16):
+        theta = base_angle + 2 * math.pi * k / 16
+        u = cmath.exp(1j * theta)
+        directions.append((u, 1 - math.cos(theta - base_angle), abs(u.real) * w / 2, abs(u.imag) * h / 2))
+
     def ring_at(gap: float) -> list[tuple[complex, float, float]]:
-        out = []
-        for k in range(16):
-            theta = base_angle + 2 * math.pi * k / 16
-            u = cmath.exp(1j * theta)
-            reach = gap + abs(u.real) * w / 2 + abs(u.imag) * h / 2
-            out.append((anchor + u * reach, gap, 1 - math.cos(theta - base_angle)))
-        return out
+        return [(anchor + u * (gap + across + up), gap, turn) for u, turn, across, up in directions]
 
     # Rings in turn: a candidate scores at most 4·CLEAR_MM − gap, so once the
     # best so far beats that bound for the next ring, the rest cannot win
@@ -149,7 +149,7 @@ def place_label(
             if len(i):
                 # a clearance beyond CLEAR_MM scores as CLEAR_MM: measure only the pairs within it
                 # (dwithin stops early; distance is far dearer, most of the time of placing labels)
-                within = shapely.dwithin(boxes[i], shapes[j], CLEAR_MM)
+                within = shapely.dwithin(shapes[j], boxes[i], CLEAR_MM)  # (this order is twice as fast)
                 i, j = i[within], j[within]
             if len(i):
                 np.minimum.at(clear, i, shapely.distance(boxes[i], shapes[j]))

@@ -131,6 +131,16 @@ def draw_mechanism(solution, ax=None, *, lang: str = "en", slots: dict | None = 
     return sketch_on(ax, "mech", lambda sketch: MechanismDrawing(sketch, solution, lang=lang, slots=slots).draw())
 
 
+def _box_within(bounds, centre: complex, reach: float) -> bool:
+    """Whether the box ``(x0, y0, x1, y1)`` comes within *reach* [mm] of *centre* (an empty shape's never)."""
+    x0, y0, x1, y1 = bounds
+    if not (x0 <= x1 and y0 <= y1):
+        return False
+    dx = max(x0 - centre.real, 0.0, centre.real - x1)
+    dy = max(y0 - centre.imag, 0.0, centre.imag - y1)
+    return math.hypot(dx, dy) <= reach
+
+
 class MechanismDrawing:
     """The kinematic scheme of a solution drawn into a :class:`Sketch`: ``MechanismDrawing(sketch, solution).draw()``.
 
@@ -538,6 +548,8 @@ class MechanismDrawing:
                 angles += [phi, phi + math.pi]
         best = None
         hole = Point(q.real, q.imag).buffer(self.pin_r + 0.3)  # what meets the pivot itself is judged above
+        near = [o for o in getattr(self, "link_shapes", []) if not o.intersects(hole)]
+        near = np.array(near, dtype=object)
         for k in range(24):
             theta = -math.pi / 2 + 2 * math.pi * k / 24
             clear = min((abs(cmath.phase(cmath.exp(1j * (theta - a)))) for a in angles), default=math.pi)
@@ -549,8 +561,7 @@ class MechanismDrawing:
             # and clear of what is drawn near it (another link passing by)
             d = cmath.exp(1j * theta)
             foot = self._support_footprint(q, d, height)
-            near = [o for o in getattr(self, "link_shapes", []) if not o.intersects(hole)]
-            if any(o.intersects(foot) for o in near):
+            if len(near) and shapely.intersects(near, foot).any():
                 score -= 1.0
             if best is None or score > best[0] + 1e-12:
                 best = (score, theta)
@@ -663,15 +674,24 @@ class MechanismDrawing:
     def _free_arc_start(self, centre: complex, radius: float, sweep: float) -> float:
         # what passes through the pivot (its pin, the crank, the ground symbol) counts only away from it
         hole = Point(centre.real, centre.imag).buffer(radius * 0.6)
-        obstacles = [o.difference(hole) for o in self.s.obstacles]
+        # a clearance counts up to 3 mm: what lies further than that from the arcs' circle cannot
+        # change a score, and of the rest only the pairs within 3 mm are measured (same scores)
+        reach = radius + 3.0
+        nearby = [o for o in self.s.obstacles if _box_within(o.bounds, centre, reach)]
+        obstacles = [o.difference(hole) for o in nearby]
         arr = np.array([o for o in obstacles if not o.is_empty], dtype=object)
+        starts = [2 * math.pi * k / 36 for k in range(36)]
+        arcs = np.array([LineString([(q.real, q.imag) for q in (centre + radius * cmath.exp(1j * (start + sweep * j / 12)) for j in range(13))]) for start in starts], dtype=object)
+        clear = np.full(len(arcs), 3.0)
+        if len(arr):
+            i, j = np.divmod(np.arange(len(arcs) * len(arr)), len(arr))
+            within = shapely.dwithin(arr[j], arcs[i], 3.0)  # (this order is the faster)
+            i, j = i[within], j[within]
+            if len(i):
+                np.minimum.at(clear, i, shapely.distance(arcs[i], arr[j]))
         best = None
-        for k in range(36):
-            start = 2 * math.pi * k / 36
-            pts = [centre + radius * cmath.exp(1j * (start + sweep * j / 12)) for j in range(13)]
-            arc = LineString([(q.real, q.imag) for q in pts])
-            d = float(shapely.distance(arc, arr).min()) if len(arr) else math.inf
-            score = min(d, 3.0)
+        for start, d in zip(starts, clear):
+            score = min(float(d), 3.0)
             if best is None or score > best[0] + 1e-9:
                 best = (score, start)
         return best[1]

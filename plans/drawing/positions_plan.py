@@ -181,6 +181,33 @@ def number_ranges(numbers: list[int]) -> str:
     return ", ".join(out)
 
 
+def _closer_than(geoms, shapes, limit: float):
+    """For each of *geoms*: whether some of *shapes* lies closer than *limit* [mm] (``distance < limit``).
+
+    Only pairs whose bounding boxes come within *limit* can, and of those only
+    the ones ``dwithin`` finds are measured (both far cheaper than measuring
+    every pair).
+    """
+    out = np.zeros(len(geoms), dtype=bool)
+    if not len(geoms) or not len(shapes):
+        return out
+    gb, sb = shapely.bounds(geoms), shapely.bounds(shapes)
+    near = (
+        (sb[None, :, 0] <= (gb[:, 2] + limit)[:, None])
+        & (sb[None, :, 2] >= (gb[:, 0] - limit)[:, None])
+        & (sb[None, :, 1] <= (gb[:, 3] + limit)[:, None])
+        & (sb[None, :, 3] >= (gb[:, 1] - limit)[:, None])
+    )
+    i, j = np.nonzero(near)
+    if len(i):
+        within = shapely.dwithin(shapes[j], geoms[i], limit)  # (this order is the faster)
+        i, j = i[within], j[within]
+    if len(i):
+        close = shapely.distance(geoms[i], shapes[j]) < limit
+        out[i[close]] = True
+    return out
+
+
 def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: float, prefer: complex | None = None):
     """A position number beside its mark where it has room; else at the end of a short leader line; else none.
 
@@ -203,16 +230,16 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         x0, y0, x1, y1 = shapely.bounds(shapes).T
         shapes = shapes[(x0 <= at.real + reach) & (x1 >= at.real - reach) & (y0 <= at.imag + reach) & (y1 >= at.imag - reach)]
     boxes = np.array([box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2) for c, _, _ in candidates], dtype=object)
-    clearance = shapely.distance(boxes[:, None], shapes[None, :]).min(axis=1) if len(shapes) else np.full(len(boxes), np.inf)
+    crowded = _closer_than(boxes, shapes, NUMBER_CLEAR_MM)
 
-    for (centre, u, leader), label, room in zip(candidates, boxes, clearance):
-        if room < NUMBER_CLEAR_MM:
+    for (centre, u, leader), label, no_room in zip(candidates, boxes, crowded):
+        if no_room:
             continue
         if leader:
             start = at + u * (MARK_R + 0.3)
             end = centre - u * (abs(u.real) * w / 2 + abs(u.imag) * h / 2 + 0.3)
             line = LineString([(start.real, start.imag), (end.real, end.imag)])
-            if len(shapes) and float(shapely.distance(line, shapes).min()) < NUMBER_CLEAR_MM:  # the leader crosses nothing either
+            if len(shapes) and _closer_than(np.array([line], dtype=object), shapes, NUMBER_CLEAR_MM)[0]:  # the leader crosses nothing either
                 continue
             sketch.line([start, end], color=GHOST, lw=LEADER_PT, gid=f"{gid}-leader", zorder=4.4, obstacle=True)
         artist = sketch.text(centre, text, size=size, ha="center", va="center", gid=gid, obstacle=False, zorder=6.0)

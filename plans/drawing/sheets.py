@@ -79,7 +79,7 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
     )
 
 
-def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg") -> list[Path]:
+def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg", progress=None) -> list[Path]:
     """Write ``sheet-00.svg``, ``sheet-01.svg``, … and ``positions.svg`` (the plan of positions).
 
     Every sheet uses the run's common scale factors.  A position that cannot
@@ -93,6 +93,8 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
     positions_run : plans.positions.PositionsRun
     directory : str or pathlib.Path
     lang : str
+    progress : callable, optional
+        Called with ``"sheet 3/13"`` as each file is made (the plan of positions last).
 
     Returns
     -------
@@ -107,11 +109,15 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
     total = len(positions_run.runs)
     width = max(2, len(str(total - 1)))
     contents: dict[Path, bytes] = {}
+    say = progress or (lambda text: None)
+    files = sum(1 for run in positions_run.runs if run.ok) + 1
     for run in positions_run.runs:
         if not run.ok:
             continue
+        say(f"sheet {len(contents) + 1}/{files}")
         fig = draw_position_sheet(run, lang=lang, total=total)
         contents[directory / f"sheet-{run.index:0{width}d}.{format}"] = render(fig, format)
+    say(f"sheet {files}/{files}")
     contents[directory / f"positions.{format}"] = render(draw_positions_plan(positions_run, lang=lang)[0].figure, format)
     if format != "svg":  # the record of what plans wrote is an SVG comment: other formats remove nothing
         return replace_all(contents)

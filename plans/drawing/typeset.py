@@ -22,8 +22,12 @@ own size when that is smaller), so exponents stay legible in print.
 from __future__ import annotations
 
 import functools
+import itertools
+import math
 import re
 import unicodedata
+import weakref
+from contextlib import contextmanager
 
 from matplotlib.font_manager import FontProperties, findfont, get_font
 from matplotlib.ft2font import LoadFlags
@@ -34,7 +38,7 @@ from matplotlib.transforms import Bbox
 from ._canvas import Sketch, text_size
 from .style import FONT_FAMILY, INK, MM_PER_PT
 
-__all__ = ["measure", "draw_text", "TypesetText", "text_width", "runs", "plain_runs", "SCRIPT_SCALE", "MIN_SCRIPT_PT", "MATH_LINE"]
+__all__ = ["fast_pdf_text", "measure", "draw_text", "TypesetText", "text_width", "runs", "plain_runs", "SCRIPT_SCALE", "MIN_SCRIPT_PT", "MATH_LINE"]
 
 SCRIPT_SCALE = 0.75
 MIN_SCRIPT_PT = 6.0
@@ -408,6 +412,10 @@ def _pdf_renderer(renderer):
         return None
     if type(vector).__name__ != "RendererPdf" or matplotlib.rcParams["pdf.fonttype"] != 42 or matplotlib.rcParams["pdf.use14corefonts"]:
         return None
+    from matplotlib.backends import backend_pdf
+
+    if not all(hasattr(backend_pdf, name) for name in ("_fill", "pdfRepr", "Op")):
+        return None
     file = getattr(vector, "file", None)
     if not hasattr(file, "_character_tracker") or not hasattr(vector, "_encode_glyphs") or not hasattr(vector, "_get_font_ttf"):
         return None
@@ -436,46 +444,123 @@ def _pdf_layout(renderer, text: str, prop) -> tuple:
     return items
 
 
-def _draw_pdf_line(renderer, gc, points) -> None:
-    import itertools
+#: per PDF file (weakly held): (text, font properties) -> the bytes that draw that run after its
+#: text matrix; its glyphs are tracked for subsetting the first time the run is made for that file
+_PDF_RUNS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
-    from matplotlib.backends.backend_pdf import Op
+
+def _pdf_run(renderer, text: str, prop) -> bytes:
+    """The operators that draw *text* in *prop* from the current text matrix, as bytes (made once per file)."""
+    file = renderer.file
+    cache = _PDF_RUNS.get(file)
+    if cache is None:
+        cache = _PDF_RUNS[file] = {}
+    key = (text, prop)
+    data = cache.get(key)
+    if data is not None:
+        return data
+
+    from matplotlib.backends.backend_pdf import Op, _fill, pdfRepr
     from matplotlib.font_manager import FontPath
 
-    file = renderer.file
     tracker = file._character_tracker
-    renderer.check_gc(gc, gc._rgb)
+    size = prop.get_size_in_points()
+    out: list[bytes] = []
 
-    def flush(chunk: list, size: float) -> None:
+    def output(*items) -> None:  # what PdfFile.output writes
+        out.append(_fill([pdfRepr(x) for x in items]) + b"\n")
+
+    def flush(chunk: list) -> None:
         if chunk:
-            file.output(
+            output(
                 [(-1000 * next(group) / size) if kind is float else renderer._encode_glyphs(group, 42) for kind, group in itertools.groupby(chunk, type)],
                 Op.showkern,
             )
             chunk.clear()
 
-    file.output(Op.begin_text)
+    chunk: list = []
+    previous = None
+    start = 0.0
+    for font, char, glyph, gx, gy, kern in _pdf_layout(renderer, text, prop):
+        subset, code = tracker.track_glyph(font, char, glyph)
+        if (font, subset) != previous:
+            flush(chunk)
+            output(file.fontName(FontPath(font.fname, font.face_index), subset), size, Op.selectfont)
+            output(gx - start, 0, Op.textpos)
+            previous, start = (font, subset), gx
+        if gy:
+            flush(chunk)
+            output(gy, Op.textrise)
+        if kern:
+            chunk.append(kern)
+        chunk.append(code)
+        if gy:
+            flush(chunk)
+            output(0, Op.textrise)
+    flush(chunk)
+    data = cache[key] = b"".join(out)
+    return data
+
+
+def _draw_pdf_line(renderer, gc, points) -> None:
+    """The runs of a line in one text object: ``BT``, per run its text matrix and its operators, ``ET``.
+
+    Byte for byte what writing each operator with ``PdfFile.output`` gives; a
+    run's operators are made once per file (:func:`_pdf_run`).
+    """
+    from matplotlib.backends.backend_pdf import pdfRepr
+
+    renderer.check_gc(gc, gc._rgb)
+    parts = [b"BT\n"]
     for text, prop, x, y in points:
-        size = prop.get_size_in_points()
-        file.output(1, 0, 0, 1, x, y, Op.textmatrix)
-        chunk: list = []
-        previous = None
-        start = 0.0
-        for font, char, glyph, gx, gy, kern in _pdf_layout(renderer, text, prop):
-            subset, code = tracker.track_glyph(font, char, glyph)
-            if (font, subset) != previous:
-                flush(chunk, size)
-                file.output(file.fontName(FontPath(font.fname, font.face_index), subset), size, Op.selectfont)
-                file.output(gx - start, 0, Op.textpos)
-                previous, start = (font, subset), gx
-            if gy:
-                flush(chunk, size)
-                file.output(gy, Op.textrise)
-            if kern:
-                chunk.append(kern)
-            chunk.append(code)
-            if gy:
-                flush(chunk, size)
-                file.output(0, Op.textrise)
-        flush(chunk, size)
-    file.output(Op.end_text)
+        parts.append(b"1 0 0 1 %s %s Tm\n" % (pdfRepr(x), pdfRepr(y)))
+        parts.append(_pdf_run(renderer, text, prop))
+    parts.append(b"ET\n")
+    renderer.file.write(b"".join(parts))
+
+
+# --- PDF: matplotlib's own text the same way -------------------------------------------------
+#
+# Drawing labels, captions and the diagrams' tick labels are matplotlib ``Text``; the PDF
+# backend lays each string out again at every draw.  While :func:`fast_pdf_text` is on, a
+# plain horizontal string is written from the same cached run as a typeset line, wrapped
+# in exactly what ``RendererPdf.draw_text`` writes around it (save state, move, text
+# object, restore); anything else (math, rotated text, links, font features) goes to
+# matplotlib.
+
+
+def _draw_text_from_runs(original):
+    def draw_text(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
+        plain = not ismath and not angle and isinstance(s, str) and gc.get_url() is None
+        if plain and mtext is not None:
+            plain = not (getattr(mtext, "get_fontfeatures", lambda: None)() or getattr(mtext, "get_language", lambda: None)())
+        if not plain or _pdf_renderer(self) is not self:
+            return original(self, gc, x, y, s, prop, angle, ismath=ismath, mtext=mtext)
+        from matplotlib.backends.backend_pdf import _fill, pdfRepr
+
+        self.check_gc(gc, gc._rgb)
+        a = math.radians(angle)
+        place = _fill([pdfRepr(v) for v in (math.cos(a), math.sin(a), -math.sin(a), math.cos(a), x, y)] + [b"cm"])
+        self.file.write(b"q\n" + place + b"\nBT\n" + _pdf_run(self, s, prop) + b"ET\nQ\n")
+
+    draw_text.__wrapped__ = original
+    return draw_text
+
+
+@contextmanager
+def fast_pdf_text():
+    """Within: the PDF backend draws plain horizontal ``Text`` from cached runs (same bytes); nests."""
+    try:
+        from matplotlib.backends.backend_pdf import RendererPdf
+    except ImportError:  # pragma: no cover
+        yield
+        return
+    original = RendererPdf.__dict__.get("draw_text")
+    if original is None or hasattr(original, "__wrapped__"):
+        yield
+        return
+    RendererPdf.draw_text = _draw_text_from_runs(original)
+    try:
+        yield
+    finally:
+        RendererPdf.draw_text = original
