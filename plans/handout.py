@@ -367,6 +367,12 @@ def handout_pages(
              "k_v": k_v if k_v is not None else scene.scales.k_v,
              "k_a": k_a if k_a is not None else scene.scales.k_a}
     run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=None)
+    # slots drawn over the cycle's travel; a frame guide (a ram's guideway) around the block's present place on
+    # a position page: over its whole stroke it would take the velocity plan's room (the cover draws the stroke)
+    run = replace(run, runs=tuple(
+        replace(r, graphical=replace(r.graphical, travel={k: t for k, t in r.graphical.travel.items() if not k.startswith("frame.")}))
+        if r.graphical is not None else r for r in run.runs
+    ))
     multi = positions is not None
     data = scene_data_lines(scene, lang)
     footer = f"plans — {scene.title}"
@@ -388,6 +394,7 @@ def handout_pages(
 
     def at_scales(r, scales):
         g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
+        g = replace(g, travel=r.graphical.travel)  # slots over the cycle's travel (see below)
         return replace(r, graphical=g, comparisons=compare(r.analytic, g))
 
     # one frame of drawing boxes for every position page, chosen for the drawings it must hold

@@ -121,8 +121,10 @@ def draw_mechanism(solution, ax=None, *, lang: str = "en", slots: dict | None = 
     slots : dict, optional
         ``"4.slot"`` -> (s_min, s_max) [m]: the stretch of a moving line that a
         block travels over in the cycle (along the line from its origin), as
-        found by a sweep; the slot is drawn over it.  The drawing solves nothing:
-        without it, a slot is drawn around the block's present place.
+        found by a sweep (:func:`plans.sweep.line_travel`); the slot, a frame
+        guide or a rod is drawn over it.  The drawing solves nothing: when
+        omitted, the solution's own ``travel`` is used (a caller attaches it);
+        without either, a slot is drawn around the block's present place.
 
     Returns
     -------
@@ -138,7 +140,7 @@ class MechanismDrawing:
     """
 
     def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True, slots: dict | None = None):
-        self.slots = dict(slots or {})
+        self.slots = dict(slots if slots is not None else getattr(solution, "travel", None) or {})
         self.lang = lang
         self.show_caption = caption
         self.s = sketch
@@ -277,6 +279,12 @@ class MechanismDrawing:
                         lo, hi = max(lo, min(ts)), hi + stack
                     elif side < 0:
                         lo, hi = lo - stack, min(hi, max(ts))
+            # the stroke over the cycle (a ram's guideway); a follower's stub stays by the follower
+            stacked = any(self._stack_side(pr.slider) for pr in self.scene.prismatics if pr.guide == FRAME and pr.guide_line == name)
+            travel = [t / self.k_l for t in self.slots.get(f"{FRAME}.{name}", ())]
+            if travel and not stacked:
+                end = self.block[0] / 2 + 3.0  # the block at either end of its stroke, and a little more
+                lo, hi = min(lo, min(travel) - end), max(hi, max(travel) + end)
             # a rod lying along the guide (a ram's connecting link): the guide is a guideway,
             # two lines either side of the ram, hatched outward, over the rod's length and
             # past the block (the stroke it travels), so the rod runs between them, on no hatching
@@ -386,6 +394,7 @@ class MechanismDrawing:
                 own = [((q - origin) * u.conjugate()).real for q in self.body_points(body)]
                 reach = self.block[0] / 2 + 3.0
                 rides = [((q - origin) * u.conjugate()).real for q in self.riders(body, name)]
+                rides += [t / self.k_l for t in self.slots.get(f"{body}.{name}", ())]  # the travel over the cycle
                 ts = own + [t - reach for t in rides] + [t + reach for t in rides] + [0.0]
                 a = origin + u * min(ts)
                 c = origin + u * max(ts)

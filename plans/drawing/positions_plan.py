@@ -26,6 +26,7 @@ from shapely.geometry import LineString, box
 
 from .._text import SUBSCRIPT
 from ..i18n import term
+from ..sweep import line_travel
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import LABEL_SPACE_MM
 from .mechanism import FRAME, MechanismDrawing
@@ -134,7 +135,7 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
                 marks.append((run.index, p, at))
 
     # position 0 in full (its labels keep clear of the marks)
-    mech = MechanismDrawing(sketch, base, lang=lang, caption=False)
+    mech = MechanismDrawing(sketch, base, lang=lang, caption=False, slots=line_travel(cycle))  # guides over the stroke
     mech.draw()
 
     # numbers where they have room: beside the mark, else on a short leader line, else left out;
