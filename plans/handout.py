@@ -39,7 +39,7 @@ from pathlib import Path
 from ._text import subscript
 from .errors import PlansError
 from .graphical.scales import PAGE_MANTISSAS, round_up
-from .i18n import check_language, term
+from .i18n import check_language, reason_text, term
 from .scene import FRAME, Crank, Scene
 
 __all__ = ["HandoutError", "write_handout", "handout_pages", "scene_data_lines", "handout_scales", "round_up", "HANDOUT_MANTISSAS"]
@@ -422,7 +422,7 @@ def handout_pages(
     for number, r in enumerate(run.runs, start=1):
         say(f"{term('position', lang)} {number}/{len(run.runs)}")
         if not r.ok:
-            pages.append((f"unsolved-{r.index}", draw_unsolved_page(r, lang=lang, where=where(r), message=str(r.error), footer=footer)))
+            pages.append((f"unsolved-{r.index}", draw_unsolved_page(r, lang=lang, where=where(r), message=reason_text(str(r.error), lang, r.cause), footer=footer)))
             continue
         _, scales = pages_runs[r.index]
 
