@@ -136,3 +136,21 @@ def test_line_travel_reads_the_slot_travel_of_the_sweep():
     assert travel["4.slot"] == pytest.approx((0.13, 0.37), abs=1e-9)  # A passes through both ends on the grid
     lo, hi = _quick_return_ram()
     assert travel["frame.ram"] == pytest.approx((lo, hi), abs=2e-4)  # within the grid's step
+
+
+def test_a_travel_running_off_towards_infinity_is_cut_to_the_mechanism_s_reach():
+    # near parallel guides a pin runs off far: the drawing follows it no further than the mechanism's size
+    import time
+
+    import plans
+    from plans.drawing import draw_mechanism
+    from plans.graphical import construct
+
+    graphical = construct(plans.load(plans.example_path("quick-return")))
+    start = time.process_time()
+    artists = draw_mechanism(graphical, slots={"4.slot": (-1e9, 1e9), "frame.ram": (-1e12, 1e12)})
+    assert time.process_time() - start < 20.0  # (a 1e12 m guide hatched every 2.2 mm would never end)
+    fig = artists[0].figure
+    width, height = fig.get_size_inches() * 25.4
+    size = abs(complex(*np.ptp([[z.real, z.imag] for z in graphical.positions.values()], axis=0))) / graphical.scales["k_l"]
+    assert max(width, height) < 5 * size  # the mechanism's points span `size` mm; slot and guide stay near them
