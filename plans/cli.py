@@ -523,7 +523,9 @@ def _draw(args) -> int:
     from .analytic import solve
     from .compare import compare
     from .drawing import write_drawings
-    from .positions import at_page_precision
+    from dataclasses import replace
+
+    from .positions import at_page_precision, cycle_travel
     from .report import sheet_table
 
     scene = _load(args)
@@ -544,6 +546,7 @@ def _draw(args) -> int:
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
         graphical = _construct(scene, args)
+        graphical = replace(graphical, travel=cycle_travel(scene, analytic.structure))  # slots over the cycle's travel
         comparisons = compare(analytic, graphical)
         sheet_table_rows = sheet_table(comparisons, graphical, analytic)
         _warn_solution(analytic, graphical)

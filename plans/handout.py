@@ -39,7 +39,7 @@ from pathlib import Path
 from ._text import subscript
 from .errors import PlansError
 from .graphical.scales import PAGE_MANTISSAS, round_up
-from .i18n import check_language, term
+from .i18n import check_language, reason_text, term
 from .scene import FRAME, Crank, Scene
 
 __all__ = ["HandoutError", "write_handout", "handout_pages", "scene_data_lines", "handout_scales", "round_up", "HANDOUT_MANTISSAS"]
@@ -415,6 +415,12 @@ def handout_pages(
              "k_v": k_v if k_v is not None else scene.scales.k_v,
              "k_a": k_a if k_a is not None else scene.scales.k_a}
     run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=None)
+    # slots drawn over the cycle's travel; a frame guide (a ram's guideway) around the block's present place on
+    # a position page: over its whole stroke it would take the velocity plan's room (the cover draws the stroke)
+    run = replace(run, runs=tuple(
+        replace(r, graphical=replace(r.graphical, travel={k: t for k, t in r.graphical.travel.items() if not k.startswith("frame.")}))
+        if r.graphical is not None else r for r in run.runs
+    ))
     multi = positions is not None
     data = scene_data_lines(scene, lang)
     footer = f"plans — {scene.title}"
@@ -436,6 +442,7 @@ def handout_pages(
 
     def at_scales(r, scales):
         g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
+        g = replace(g, travel=r.graphical.travel)  # slots over the cycle's travel (see below)
         return replace(r, graphical=g, comparisons=compare(r.analytic, g))
 
     # one frame of drawing boxes for every position page, chosen for the drawings it must hold
@@ -474,7 +481,7 @@ def handout_pages(
     for number, r in enumerate(run.runs, start=1):
         say(f"{term('position', lang)} {number}/{len(run.runs)}")
         if not r.ok:
-            pages.append((f"unsolved-{r.index}", draw_unsolved_page(r, lang=lang, where=where(r), message=str(r.error), footer=footer)))
+            pages.append((f"unsolved-{r.index}", draw_unsolved_page(r, lang=lang, where=where(r), message=reason_text(str(r.error), lang, r.cause), footer=footer)))
             continue
         _, scales = pages_runs[r.index]
 

@@ -13,7 +13,9 @@ Point letters and symbols (v_B, a^k, ω₃, k_v) are never translated.
 
 from __future__ import annotations
 
-__all__ = ["LANGUAGES", "TERMS", "term", "check_language"]
+import re
+
+__all__ = ["LANGUAGES", "TERMS", "term", "check_language", "reason_text", "branch_text"]
 
 #: language code -> its name in that language
 LANGUAGES = {
@@ -409,3 +411,168 @@ def term(key: str, lang: str = "en") -> str:
     """The words for *key* in *lang* (``"en"``, ``"sr"``, ``"ru"``, ``"bg"``, ``"sl"``)."""
     check_language(lang)
     return TERMS[key][lang]
+
+
+# --- the solver's reasons and the assembly branches, in words ------------------------------
+#
+# The solvers and plans.structure write these in English (the CLI's stderr, the JSON); a page in
+# another language says them in its own words.  Each English form is matched as a whole (its
+# names, numbers and the position kept as they are) and written again from the language's
+# template; a form not matched here is said by its group and its cause only, never in English.
+
+_NAME = r"[^\s,:;()]+"
+
+#: (pattern of the English form, language -> template), for the details after "at φ = …: "
+_DETAILS: list[tuple[str, dict[str, str]]] = [  # the first that matches is used: the particular before the general
+    (rf"\|(?P<be>{_NAME})\| = (?P<d>.+?) < the offset (?P<o>.+?) of the line from the pins \(gap (?P<gap>.+)\)$", {
+        "sr": "|{be}| = {d} < одстојање праве од зглобова {o} (недостаје {gap})",
+        "ru": "|{be}| = {d} < смещение прямой от шарниров {o} (не хватает {gap})",
+        "bg": "|{be}| = {d} < отместването на правата от ставите {o} (не достигат {gap})",
+        "sl": "|{be}| = {d} < odmik premice od zglobov {o} (manjka {gap})"}),
+    (rf"(?P<rel>\|{_NAME}\| = .+? [<>] .+?) \(gap (?P<gap>.+)\)$", {
+        "sr": "{rel} (недостаје {gap})", "ru": "{rel} (не хватает {gap})",
+        "bg": "{rel} (не достигат {gap})", "sl": "{rel} (manjka {gap})"}),
+    (rf"(?P<b>{_NAME}) and (?P<d>{_NAME}) coincide, or a point before them is not known$", {
+        "sr": "{b} и {d} се поклапају или тачка пре њих није позната",
+        "ru": "{b} и {d} совпадают, или предшествующая им точка не известна",
+        "bg": "{b} и {d} съвпадат или предхождаща ги точка не е известна",
+        "sl": "{b} in {d} sovpadata ali točka pred njima ni znana"}),
+    (rf"the line (?P<c>{_NAME}) runs on \(parallel to (?P<key>{_NAME})\) passes (?P<y>.+?) from (?P<b>{_NAME}), "
+     rf"farther than (?P<bc>{_NAME}) = (?P<l>.+?) \(gap (?P<gap>.+)\)$", {
+        "sr": "права по којој се креће {c} (паралелна са {key}) пролази на {y} од {b}, даље од {bc} = {l} (недостаје {gap})",
+        "ru": "прямая, по которой движется {c} (параллельная {key}), проходит в {y} от {b}, дальше, чем {bc} = {l} (не хватает {gap})",
+        "bg": "правата, по която се движи {c} (успоредна на {key}), минава на {y} от {b}, по-далеч от {bc} = {l} (не достигат {gap})",
+        "sl": "premica, po kateri se giblje {c} (vzporedna s {key}), poteka {y} od {b}, dlje od {bc} = {l} (manjka {gap})"}),
+    (rf"a point before (?P<b>{_NAME}) or the guide (?P<key>{_NAME}) is not known$", {
+        "sr": "тачка пре {b} или вођица {key} није позната",
+        "ru": "предшествующая {b} точка или направляющая {key} не известна",
+        "bg": "предхождаща {b} точка или водачът {key} не е известен",
+        "sl": "točka pred {b} ali vodilo {key} ni znano"}),
+    (rf"(?P<b>{_NAME}) and (?P<e>{_NAME}) coincide: the line has no direction$", {
+        "sr": "{b} и {e} се поклапају: права нема правац", "ru": "{b} и {e} совпадают: направление прямой не определено",
+        "bg": "{b} и {e} съвпадат: правата няма посока", "sl": "{b} in {e} sovpadata: premica nima smeri"}),
+    (rf"a point before (?P<b>{_NAME}) or (?P<e>{_NAME}) is not known$", {
+        "sr": "тачка пре {b} или {e} није позната", "ru": "предшествующая {b} или {e} точка не известна",
+        "bg": "предхождаща {b} или {e} точка не е известна", "sl": "točka pred {b} ali {e} ni znana"}),
+    # what is in line at a dead centre
+    (rf"(?P<b>{_NAME}), (?P<c>{_NAME}) and (?P<d>{_NAME}) are in line$", {
+        "sr": "{b}, {c} и {d} су на истој правој", "ru": "{b}, {c} и {d} лежат на одной прямой",
+        "bg": "{b}, {c} и {d} лежат на една права", "sl": "{b}, {c} in {d} ležijo na isti premici"}),
+    (rf"(?P<bc>{_NAME}) is perpendicular to the guide (?P<key>{_NAME})$", {
+        "sr": "{bc} је управна на вођицу {key}", "ru": "{bc} перпендикулярна направляющей {key}",
+        "bg": "{bc} е перпендикулярна на водача {key}", "sl": "{bc} je pravokotna na vodilo {key}"}),
+    (rf"the line (?P<key>{_NAME}) is perpendicular to (?P<be>{_NAME})$", {
+        "sr": "права {key} је управна на {be}", "ru": "прямая {key} перпендикулярна {be}",
+        "bg": "правата {key} е перпендикулярна на {be}", "sl": "premica {key} je pravokotna na {be}"}),
+    (rf"the guides (?P<k1>{_NAME}) and (?P<k2>{_NAME}) are parallel: (?P<c>{_NAME}) has no definite position$", {
+        "sr": "вођице {k1} и {k2} су паралелне: {c} нема одређен положај",
+        "ru": "направляющие {k1} и {k2} параллельны: положение {c} не определено",
+        "bg": "водачите {k1} и {k2} са успоредни: {c} няма определено положение",
+        "sl": "vodili {k1} in {k2} sta vzporedni: {c} nima določene lege"}),
+    (rf"the lines (?P<k1>{_NAME}) and (?P<k2>{_NAME}) are parallel: the position is not definite$", {
+        "sr": "праве {k1} и {k2} су паралелне: положај није одређен",
+        "ru": "прямые {k1} и {k2} параллельны: положение не определено",
+        "bg": "правите {k1} и {k2} са успоредни: положението не е определено",
+        "sl": "premici {k1} in {k2} sta vzporedni: lega ni določena"}),
+]
+
+#: (pattern of a whole reason, language -> template); {detail} is said again by _DETAILS
+_REASONS: list[tuple[str, dict[str, str]]] = [
+    (rf"(?P<g>[^:]+?): joint (?P<c>{_NAME}) cannot assemble at (?P<w>[^:]+): (?P<detail>.+)$", {
+        "sr": "{g}: зглоб {c} се не може саставити при {w}: {detail}",
+        "ru": "{g}: шарнир {c} не собирается при {w}: {detail}",
+        "bg": "{g}: ставата {c} не може да се сглоби при {w}: {detail}",
+        "sl": "{g}: zgloba {c} ni mogoče sestaviti pri {w}: {detail}"}),
+    (rf"(?P<g>[^:]+?): the line (?P<key>{_NAME}) cannot pass through (?P<e>{_NAME}) at (?P<w>[^:]+): (?P<detail>.+)$", {
+        "sr": "{g}: права {key} не може проћи кроз {e} при {w}: {detail}",
+        "ru": "{g}: прямая {key} не может пройти через {e} при {w}: {detail}",
+        "bg": "{g}: правата {key} не може да мине през {e} при {w}: {detail}",
+        "sl": "{g}: premica {key} ne more potekati skozi {e} pri {w}: {detail}"}),
+    (rf"(?P<g>[^:]+?): dead centre at (?P<w>[^:]+): (?P<detail>.+?)"
+     r"(?: \(\|sin\| of the angle between the construction lines = (?P<s>\S+), below the dead-centre threshold (?P<t>[^)]+)\))?"
+     rf"; the 2×2 velocity system of links (?P<i>{_NAME}) and (?P<j>{_NAME}) is singular and their velocities do not exist there$", {
+        "sr": "{g}: мртви положај при {w}: {detail}{sine}; систем 2×2 за брзине чланова {i} и {j} је сингуларан и њихове брзине ту не постоје",
+        "ru": "{g}: мёртвое положение при {w}: {detail}{sine}; система 2×2 для скоростей звеньев {i} и {j} вырождена, их скорости здесь не существуют",
+        "bg": "{g}: мъртво положение при {w}: {detail}{sine}; системата 2×2 за скоростите на звената {i} и {j} е сингулярна и скоростите им тук не съществуват",
+        "sl": "{g}: mrtva lega pri {w}: {detail}{sine}; sistem 2×2 za hitrosti členov {i} in {j} je singularen in njune hitrosti tu ne obstajajo"}),
+]
+
+_SINE = {
+    "sr": " (|sin| угла између конструкционих правих = {s}, испод прага мртвог положаја {t})",
+    "ru": " (|sin| угла между прямыми построения = {s}, ниже порога мёртвого положения {t})",
+    "bg": " (|sin| на ъгъла между построителните прави = {s}, под прага на мъртво положение {t})",
+    "sl": " (|sin| kota med konstrukcijskima premicama = {s}, pod pragom mrtve lege {t})",
+}
+
+_MORE = re.compile(r" \(and at \d+ more of the positions asked for; allow_partial=True returns NaN there\)")
+
+
+def _detail(text: str, lang: str) -> str | None:
+    for pattern, words in _DETAILS:
+        m = re.fullmatch(pattern, text)
+        if m:
+            return words[lang].format(**m.groupdict())
+    return None
+
+
+def reason_text(message: str, lang: str = "en", cause: str = "no_assembly") -> str:
+    """Why a position is not solved, in *lang*: the solver's English *message* said again in its words.
+
+    Names, numbers and the position (``φ₂ = 60.0°``) stay as they are.  A
+    message of a form not known here is said by its group and *cause*
+    (``"no_assembly"`` or ``"dead_centre"``, see :data:`TERMS`), never in English.
+
+    >>> reason_text("RRR(3,4): joint B cannot assemble at φ = 60.0°: |AD| = 0.656 m > AB + BD = 0.650 m (gap 0.006 m)", "ru")
+    'RRR(3,4): шарнир B не собирается при φ = 60.0°: |AD| = 0.656 m > AB + BD = 0.650 m (не хватает 0.006 m)'
+    """
+    check_language(lang)
+    if lang == "en":
+        return message
+    text = _MORE.sub("", message.strip())
+    for pattern, words in _REASONS:
+        m = re.fullmatch(pattern, text)
+        if not m:
+            continue
+        fields = m.groupdict()
+        detail = _detail(fields.pop("detail"), lang)
+        if detail is None:
+            break
+        s, t = fields.pop("s", None), fields.pop("t", None)
+        sine = _SINE[lang].format(s=s, t=t) if s is not None else ""
+        return words[lang].format(detail=detail, sine=sine, **fields)
+    group = re.match(r"^\s*([A-Z]{3}\([^)]*\))", text)
+    return (f"{group.group(1)}: " if group else "") + term(cause, lang)
+
+
+#: the three forms of plans.structure.Branch.words, language -> template
+_BRANCHES: list[tuple[str, dict[str, str]]] = [
+    (rf"(?P<c>{_NAME}) to the left of (?P<b>{_NAME})→(?P<d>{_NAME})$", {
+        "sr": "{c} лево од {b}→{d}", "ru": "{c} слева от {b}→{d}", "bg": "{c} вляво от {b}→{d}", "sl": "{c} levo od {b}→{d}"}),
+    (rf"(?P<c>{_NAME}) to the right of (?P<b>{_NAME})→(?P<d>{_NAME})$", {
+        "sr": "{c} десно од {b}→{d}", "ru": "{c} справа от {b}→{d}", "bg": "{c} вдясно от {b}→{d}", "sl": "{c} desno od {b}→{d}"}),
+    (rf"(?P<c>{_NAME}) at the intersection further along (?P<key>{_NAME}) \(of the two the circle about (?P<b>{_NAME}) meets\)$", {
+        "sr": "{c} у пресеку даље дуж {key} (од два у којима је сече круг око {b})",
+        "ru": "{c} в точке пересечения дальше вдоль {key} (из двух, где её пересекает окружность с центром {b})",
+        "bg": "{c} в пресечната точка по-нататък по {key} (от двете, в които я пресича окръжността около {b})",
+        "sl": "{c} v presečišču dlje vzdolž {key} (od dveh, v katerih jo seka krožnica okoli {b})"}),
+    (rf"(?P<c>{_NAME}) at the intersection nearer the start of (?P<key>{_NAME}) \(of the two the circle about (?P<b>{_NAME}) meets\)$", {
+        "sr": "{c} у пресеку ближе почетку {key} (од два у којима је сече круг око {b})",
+        "ru": "{c} в точке пересечения ближе к началу {key} (из двух, где её пересекает окружность с центром {b})",
+        "bg": "{c} в пресечната точка по-близо до началото на {key} (от двете, в които я пресича окръжността около {b})",
+        "sl": "{c} v presečišču bliže začetku {key} (od dveh, v katerih jo seka krožnica okoli {b})"}),
+    (rf"line (?P<key>{_NAME}) pointing from (?P<a>{_NAME}) towards (?P<b>{_NAME})$", {
+        "sr": "права {key} усмерена од {a} ка {b}", "ru": "прямая {key} направлена от {a} к {b}",
+        "bg": "правата {key} е насочена от {a} към {b}", "sl": "premica {key} usmerjena od {a} proti {b}"}),
+]
+
+
+def branch_text(words: str, lang: str = "en") -> str | None:
+    """An assembly branch in *lang*: ``"C to the left of B→D"`` → ``"C слева от B→D"``; None for a form not known here."""
+    check_language(lang)
+    if lang == "en":
+        return words
+    for pattern, templates in _BRANCHES:
+        m = re.fullmatch(pattern, words.strip())
+        if m:
+            return templates[lang].format(**m.groupdict())
+    return None

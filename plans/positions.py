@@ -49,6 +49,7 @@ from .units import UnitError, parse_quantity
 __all__ = [
     "parse_positions",
     "cycle_positions",
+    "cycle_travel",
     "fit_scale",
     "common_scales",
     "PositionRun",
@@ -173,6 +174,26 @@ def cycle_positions(scene: Scene, count: int, *, closed: bool = False) -> list[f
     if count == 1:
         return [a]
     return [a + (b - a) * k / (count - 1) for k in range(count)]
+
+
+def cycle_travel(scene: Scene, structure=None, steps: int = CYCLE_STEPS) -> dict[str, tuple[float, float]]:
+    """The travel along each guide line over the driver's cycle (:func:`plans.sweep.line_travel`), for drawing.
+
+    A crank's full turn, or a linear driver's stroke, in *steps* positions
+    (the scene's own position alone when a linear driver has no stroke).
+    """
+    from .analytic import solve
+    from .sweep import line_travel
+
+    if not scene.prismatics:
+        return {}
+    if _is_crank(scene):
+        at = cycle_positions(scene, steps)
+    elif scene.driver.stroke is not None:
+        at = cycle_positions(scene, steps + 1)
+    else:
+        at = [scene.driver.s]
+    return line_travel(solve(scene, np.asarray(at, dtype=float), structure, allow_partial=True))
 
 
 def position_text(scene: Scene, position: float, digits: int = 1) -> str:
@@ -580,6 +601,7 @@ def run_positions(
     from .compare import compare
     from .graphical import construct
     from .structure import find_structure
+    from .sweep import line_travel
 
     structure = find_structure(scene)
     if positions is None:
@@ -621,6 +643,7 @@ def run_positions(
         drawn_max=drawn_max,
         given={"k_l": k_l, "k_v": k_v, "k_a": k_a},
     )
+    travel = line_travel(cycle)
     runs = []
     for index, value, here, first, error in prepared:
         if error is not None:
@@ -630,6 +653,7 @@ def run_positions(
             here, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision,
             check_scales=False,  # given factors were checked above; common ones are plans' own choice
         )
+        graphical = replace(graphical, travel=travel)  # slots and guides drawn over the cycle's travel
         analytic = sweep.at(index)
         runs.append(PositionRun(index, value, here, analytic, graphical, compare(analytic, graphical)))
     return PositionsRun(scene, structure, tuple(runs), scales, precision, cycle)

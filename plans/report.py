@@ -519,6 +519,22 @@ def _symbol(label: str) -> str:
     return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{sub}}}" if sub else "") + "$"
 
 
+def _link_order(name: str) -> tuple:
+    """Links in the order of their numbers (2, 3, 4, …, 10), named links after them in the scene's order."""
+    return (0, int(name), "") if name.isdigit() else (1, 0, "")
+
+
+def _by_link_number(rows: list) -> list:
+    """The rows with the links' rows (ω, ε) in the order of the link numbers, where the first of them was:
+    a block declared by a ``[[slider]]`` (quick-return 3) comes among the links, not after them."""
+    rows = list(rows)
+    places = [k for k, (_, row) in enumerate(rows) if row.section == "links"]
+    ordered = sorted((rows[k] for k in places), key=lambda lr: _link_order(lr[1].name))  # stable: ω before ε
+    for k, item in zip(places, ordered):
+        rows[k] = item
+    return rows
+
+
 def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, position: int = 0) -> list[list[str]]:
     """Rows of preformatted text for a sheet: header, then one row per quantity.
 
@@ -534,7 +550,7 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
     rest) are left out, as they are left off the plans.
     """
     rows = [["quantity", "graphical", "analytic", "rel. error"]]
-    for label, row in drawn_rows(comparisons, graphical, analytic, position):
+    for label, row in _by_link_number(drawn_rows(comparisons, graphical, analytic, position)):
         if row.quantity not in PLAN_QUANTITIES:  # a sheet tabulates what is read off its plans
             continue
         if row.analytic == 0 and row.graphical == 0:

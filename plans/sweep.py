@@ -42,9 +42,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from .limits import REFUSE_SINE, WARN_CONDITION, expected_rel_error, position_text
-from .scene import Crank
+from .scene import FRAME, Crank
 
-__all__ = ["LostAssembly", "DeadCentreCrossing", "SweepReport", "analyse_sweep", "sweep_csv", "format_column", "DIGITS"]
+__all__ = ["LostAssembly", "DeadCentreCrossing", "SweepReport", "analyse_sweep", "line_travel", "sweep_csv", "format_column", "DIGITS"]
 
 #: Significant digits of a CSV column, at the scale of its largest value.
 DIGITS = 14
@@ -308,6 +308,51 @@ def analyse_sweep(solution, warn_condition: float = WARN_CONDITION) -> SweepRepo
             position = float(x[k] + direction * sine[k] / slope) if slope > 0 else float(x[k])
             crossed.append(DeadCentreCrossing(group.name, group.joint, position, float(x[k]), float(sine[k]), float(condition[k]), crank))
     return SweepReport(tuple(lost), tuple(crossed))
+
+
+# --- travel along the lines ------------------------------------------------------------------
+
+
+def line_travel(solution) -> dict[str, tuple[float, float]]:
+    """The stretch of each guide line that what slides on it uses over a solved sweep.
+
+    For every line of a prismatic pair, ``"body.line"`` (``"4.slot"``,
+    ``"frame.ram"``), the smallest and largest coordinate [m] along the line,
+    from its origin (through point) in its own direction, of the points of the
+    body that slides on it (for the guide's line) or, for a slider that is a
+    link of its own (a rod sliding through a sleeve), of the guide body (for
+    the slider's line), over the positions
+    where the mechanism is solved.  A line with nothing solved is left out.
+    Read from the sweep's positions and poses; nothing is solved here.
+
+    A drawing uses it to draw a slot or a guide over the travel of the cycle
+    (:func:`plans.drawing.draw_mechanism`, ``slots``).
+    """
+    scene = solution.scene
+    valid = np.asarray(solution.valid, dtype=bool)
+    if not valid.any():
+        return {}
+    found: dict[str, list[float]] = {}
+
+    def along(body: str, line_name: str, riders) -> None:
+        line = scene.bodies[body].lines[line_name]
+        phi, origin = solution.poses[body]
+        phi = np.broadcast_to(np.asarray(phi, dtype=float), valid.shape)[valid]
+        origin = np.broadcast_to(np.asarray(origin, dtype=complex), valid.shape)[valid]
+        start = origin + np.exp(1j * phi) * line.origin
+        u = np.exp(1j * (phi + line.angle))
+        for point in riders:
+            r = np.broadcast_to(np.asarray(solution.points[point].r, dtype=complex), valid.shape)[valid]
+            t = ((r - start) * u.conjugate()).real
+            t = t[np.isfinite(t)]
+            if t.size:
+                found.setdefault(f"{body}.{line_name}", []).extend((float(t.min()), float(t.max())))
+
+    for pair in scene.prismatics:
+        along(pair.guide, pair.guide_line, scene.bodies[pair.slider].points)
+        if pair.guide != FRAME and pair.slider != FRAME and len(scene.bodies[pair.slider].points) > 1:  # a rod through a sleeve
+            along(pair.slider, pair.slider_line, scene.bodies[pair.guide].points)
+    return {key: (min(ts), max(ts)) for key, ts in sorted(found.items())}
 
 
 # --- the CSV ---------------------------------------------------------------------------------

@@ -67,6 +67,10 @@ def test_the_positions_with_sheets_are_marked_and_numbered(six_bar):
     assert [t.get_text() for t in top.texts if t.get_text().isdigit()] == ["0", "1", "2", "3"]
 
 
+def _bands(ax, hatched: bool) -> list[tuple[float, float]]:
+    return sorted((p.get_x(), p.get_x() + p.get_width()) for p in ax.patches if (p.get_hatch() == "///") == hatched)
+
+
 def test_where_the_mechanism_cannot_assemble_is_shaded_and_not_plotted(stuck):
     run, figures = stuck
     cycle = run.cycle
@@ -75,26 +79,32 @@ def test_where_the_mechanism_cannot_assemble_is_shaded_and_not_plotted(stuck):
     assert invalid_x.size and 160.0 < np.median(invalid_x) < 180.0  # around φ = 180° (turned 170° from 10°)
     for fig in figures.values():
         for ax in fig.axes:
-            hatched = [p for p in ax.patches if p.get_hatch() == "///"]
-            assert len(hatched) == 1
-            left = hatched[0].get_x()
-            right = left + hatched[0].get_width()
-            assert left <= invalid_x.min() and right >= invalid_x.max()
-            assert left > 0 and right < 360
+            hatched = _bands(ax, True)
+            # the diagram shows the arc where it assembles (Δφ from about −65° to 45°, before position 0
+            # negative) and a margin either side, hatched: the interval without assembly on both sides of the arc
+            assert 1 <= len(hatched) <= 2
+            lo, hi = ax.get_xlim()
+            assert hi - lo < 180.0
             for line in _lines(ax).values():
-                y = np.asarray(line.get_data()[1], dtype=float)
-                assert np.all(np.isnan(y[~np.asarray(cycle.valid)]))
+                xs, ys = (np.asarray(v, dtype=float) for v in line.get_data())
+                inside = np.array([any(a + 0.5 < xv < b - 0.5 for a, b in hatched) for xv in xs])
+                assert not np.any(np.isfinite(ys) & inside)  # nothing plotted where it cannot assemble
+                assert np.all(np.isnan(ys[inside]))
+                covered = np.array([any(a - 0.5 <= xv <= b + 0.5 for a, b in hatched) for xv in xs])
+                assert np.all(covered[np.isnan(ys)])  # and every position without assembly is shaded
 
 
 def test_beside_an_interval_without_assembly_is_near_a_dead_centre(stuck):
     run, figures = stuck
-    x, _, _ = cycle_axis(run.cycle)
-    invalid_x = x[~np.asarray(run.cycle.valid)]
     ax = figures["links"].axes[1]
-    light = sorted((p.get_x(), p.get_x() + p.get_width()) for p in ax.patches if p.get_hatch() != "///")
+    hatched = _bands(ax, True)
+    light = _bands(ax, False)
     assert len(light) == 2  # either side of the interval where it cannot assemble (drawn at least BAND_MIN wide)
-    assert light[0][0] <= invalid_x.min() - 1.5 and light[0][1] >= invalid_x.min() - 0.5
-    assert light[1][0] <= invalid_x.max() + 0.5 and light[1][1] >= invalid_x.max() + 1.5
+    lo, hi = ax.get_xlim()
+    edges = [e for a, b in hatched for e in (a, b) if lo + 0.5 < e < hi - 0.5]  # where assembly is lost or found
+    assert len(edges) == 2
+    for edge in edges:
+        assert any(a <= edge + 0.5 and b >= edge - 0.5 for a, b in light), (edge, light)
 
 
 def test_small_sines_are_near_a_dead_centre(monkeypatch):

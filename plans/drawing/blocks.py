@@ -25,7 +25,7 @@ from ..i18n import term
 from .._text import decimal_comma, user_text
 from ._canvas import Sketch, text_size
 from .mechanism import draw_mechanism
-from .plan_drawing import SAME_MM, draw_plan, end_letters, image_text, legend_row, legend_words, vectors_drawn
+from .plan_drawing import SAME_MM, draw_plan, end_letters, image_text, kinds_drawn, legend_row, legend_words, vectors_drawn
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 from .typeset import draw_text, measure
 
@@ -171,7 +171,7 @@ def legend_block(graphical, lang: str, columns: int = 1, plans=("velocity", "acc
     for plan in (graphical.velocity_plan, graphical.acceleration_plan):
         if plan is None or plan.kind not in plans:
             continue
-        kinds = {v.kind for v in vectors_drawn(plan)}
+        kinds = kinds_drawn(plan)  # a kind drawn only as notes (every vector under 3 mm) is not listed
         for kind in KINDS:
             if kind in kinds:
                 text = legend_words(plan.kind, kind, lang)

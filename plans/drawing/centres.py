@@ -23,13 +23,13 @@ import cmath
 import math
 from dataclasses import dataclass
 
-from shapely.geometry import LineString, box
+from shapely.geometry import LineString, Point, box
 
 from .._text import decimal_comma, user_text
 from ..graphical.scales import round_scale
 from ..i18n import term
-from ._canvas import Sketch, fmt_number, text_size, unit
-from .mechanism import draw_mechanism
+from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
+from .mechanism import MechanismDrawing
 from .style import CAPTION_PT, CONSTRUCTION_STYLE, HEADING_PT, INK, MARGIN_MM, SMALL_PT, TITLE_PT
 from .svg import new_figure, render_svg
 
@@ -48,6 +48,11 @@ EDGE_SPACING = 13.0  # mm between the tails of two edge arrows
 LONE_LINE = 25.0  # mm each side of the one finite centre on a Kennedy line
 DIAGRAM_R = 22.0  # mm
 LABEL_PT = SMALL_PT + 1.5
+#: Gaps tried for a centre's label, in units of its mark's clearance; from LEADER_RING on, with a leader line.
+LABEL_RINGS = (1, 2, 3, 4.5, 6.5)
+LEADER_RING = 2.5
+#: Room [mm] a centre's label keeps from what is drawn (the font's box is an estimate of the ink's).
+LABEL_CLEAR_MM = 0.3
 
 
 def centre_text(label: str) -> str:
@@ -122,18 +127,29 @@ class _CentresDrawing:
         w, h = text_size(text, LABEL_PT)
         start = cmath.phase(away) if abs(away) > 1e-9 else math.pi / 4
         best = None
-        for k in range(48):
+        for k in range(16 * len(LABEL_RINGS)):
             turn = (k % 16 + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
             d = cmath.exp(1j * (start + turn))
-            gap = clear * (1 + k // 16) + 0.6 + 0.5 * (abs(d.real) * w + abs(d.imag) * h)
+            ring = LABEL_RINGS[k // 16]
+            gap = clear * ring + 0.6 + 0.5 * (abs(d.real) * w + abs(d.imag) * h)
             c = at + d * gap
-            shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
+            shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2).buffer(LABEL_CLEAR_MM, join_style=2)
             hits = 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
+            leader = None
+            if ring >= LEADER_RING:  # away from a crowd, a leader line joins the label to its centre
+                a = at + d * clear
+                b = c - d * (0.5 * (abs(d.real) * w + abs(d.imag) * h) + 0.3)
+                leader = (a, b)
+                line = LineString([(a.real, a.imag), (b.real, b.imag)])
+                hits += 10 * sum(1 for o in self.s.obstacles if line.intersects(o))
             if best is None or hits < best[0]:
-                best = (hits, c)
+                best = (hits, c, leader)
             if hits == 0:
                 break
-        self.s.text(best[1], text, size=LABEL_PT, color=CENTRE_COLOUR, gid=gid)
+        _, c, leader = best
+        if leader is not None:
+            self.s.line(list(leader), color=CENTRE_COLOUR, lw=0.4, gid=f"{gid}-leader", zorder=4.9)
+        self.s.text(c, text, size=LABEL_PT, color=CENTRE_COLOUR, gid=gid)
 
     def kennedy_lines(self) -> None:
         """Each Kennedy line that gave a centre, through its three centres, inside the room."""
@@ -283,7 +299,12 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     (width, height) [mm] of the drawing.
     """
     scene = result.scene
-    artists = draw_mechanism(_Drawn(scene, {"k_l": k_l}, result.positions, result.poses), ax, lang=lang)
+    # the centres' marks are there before the mechanism's labels are placed: a link number or a point's
+    # name keeps clear of them (the six-bar's "2" touched P₂₆)
+    marks = [Point(c.point.real / k_l, c.point.imag / k_l).buffer((2.2 if c.found_by.startswith("revolute") else 1.0) + 0.4)
+             for c in result.centres if c.determined and c.point is not None]
+    drawn = _Drawn(scene, {"k_l": k_l}, result.positions, result.poses)
+    artists = sketch_on(ax, "mech", lambda sketch: (sketch.obstacles.extend(marks), MechanismDrawing(sketch, drawn, lang=lang).draw()))
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     lo, hi = complex(x0 + MARGIN_MM, y0 + MARGIN_MM), complex(x1 - MARGIN_MM, y1 - MARGIN_MM)
     room = max(room_min, ROOM_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag))
@@ -303,8 +324,8 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
         _circle_diagram(s, result, complex(max(s.bounds.xmax, x1) + 14.0 + DIAGRAM_R, (lo.imag + hi.imag) / 2 + 6.0), lang)
     top = s.bounds.ymax + 4.0
     if legend:
-        words = decimal_comma(f"k_l = {fmt_number(k_l)} m/mm;  n(n−1)/2 = {len(result.centres)};  ", lang)
-        s.text(complex(lo.real, top + 2.0), words + term("centres_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend", obstacle=False)
+        words = decimal_comma(f"$k_l$ = {fmt_number(k_l)} m/mm;  n(n−1)/2 = {len(result.centres)};  ", lang)
+        s.text(complex(lo.real, top + 2.0), words + term("centres_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend", obstacle=False, math=True)
         s.text(complex(lo.real, top - 2.0), term("centres_edge_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend-edge", obstacle=False)
         top += 5.0
     if title is not None:

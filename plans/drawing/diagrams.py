@@ -142,6 +142,65 @@ def cycle_axis(analytic, marked=None) -> tuple[np.ndarray, str, list[tuple[int, 
     return x, label, marks
 
 
+#: A crank's sweep that assembles over at most this arc [°] is drawn over that arc (and a margin), not the whole turn.
+WINDOW_ARC = 240.0
+
+
+def _window(x: np.ndarray, valid: np.ndarray) -> tuple[np.ndarray, np.ndarray, tuple[float, float]] | None:
+    """Where a crank's full-turn sweep assembles over one arc of at most :data:`WINDOW_ARC`: the order that runs
+    through that arc first, the angles turned in that order (the arc unbroken, negative before position 0),
+    and the axis limits (the arc and a margin either side, hatched as not assembling).  None otherwise."""
+    n = len(x)
+    if n < 3 or not valid.any() or valid.all() or float(x[-1] - x[0]) < 300.0:
+        return None
+    closed = abs(float(x[-1] - x[0]) - 360.0) < 1e-6  # the last position is the first one a turn on
+    m = n - 1 if closed else n
+    ring = np.concatenate([valid[:m], valid[:m]])
+    best, end, run = 0, 0, 0
+    for k, ok in enumerate(ring):  # the longest run of positions that do not assemble, round the turn
+        run = 0 if ok else run + 1
+        if best < run <= m:
+            best, end = run, k
+    covered = m - best
+    step = 360.0 / m
+    if covered * step > WINDOW_ARC or not valid[:m][[(end + 1 + t) % m for t in range(covered)]].all():
+        return None  # the mechanism assembles over more than one arc, or over most of the turn
+    first = (end + 1) % m
+    order = np.array([(first + t) % m for t in range(m)])
+    turned = float(x[first]) + step * np.arange(m)
+    if turned[covered - 1] > 360.0 - 1e-9:  # the arc runs through position 0: before it is negative
+        turned -= 360.0
+    lo, hi = float(turned[0]), float(turned[covered - 1])
+    margin = max(10.0, 0.15 * (hi - lo))
+    return order, turned, (lo - margin, hi + margin)
+
+
+def _cycle_view(analytic, marked):
+    """(solution, x, axis label, marks, x limits, ticks, rolled) of a cycle diagram: a crank's sweep that
+    assembles over one short arc is shown over that arc, its positions taken in the order the arc runs
+    through (*rolled*: its first and last positions are neighbours on the turn)."""
+    x, xlabel, marks = cycle_axis(analytic, marked)
+    crank = hasattr(analytic.scene.driver, "omega")
+    limits, ticks = (float(np.nanmin(x)), float(np.nanmax(x))), None
+    if crank and float(np.nanmax(x) - np.nanmin(x)) >= 300.0:
+        limits = (0.0, 360.0)  # a whole turn: its axis ends at 360°
+    window = _window(x, np.asarray(analytic.valid, dtype=bool)) if crank else None
+    rolled = window is not None
+    if window is not None:
+        order, x, limits = window
+        analytic = analytic.at(order)
+        lo, hi = float(x.min()), float(x.max())
+        # each marked position where the window shows it (a turn before, when it lies there)
+        marks = [(k, min((xm + t for t in (-360.0, 0.0, 360.0) if lo - 1e-9 <= xm + t <= hi + 1e-9),
+                         key=lambda v: abs(v - (limits[0] + limits[1]) / 2), default=xm)) for k, xm in marks]
+        marks = [(k, xm) for k, xm in marks if limits[0] <= xm <= limits[1]]  # (the others lie where it does not assemble)
+    if crank and limits[1] - limits[0] >= 90.0:
+        span = limits[1] - limits[0]
+        every = 30.0 if span > 150.0 else 15.0
+        ticks = np.arange(math.ceil(limits[0] / every) * every, limits[1] + 1e-9, every)
+    return analytic, x, xlabel, marks, limits, ticks, rolled
+
+
 def _spans(x: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]:
     """Intervals of x where mask holds (each sample stands for half the step either side)."""
     spans = []
@@ -161,9 +220,10 @@ def _spans(x: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]:
     return spans
 
 
-def _near_dead(analytic) -> np.ndarray:
+def _near_dead(analytic, ring: bool = False) -> np.ndarray:
     """Positions near a dead centre: a group's |sin| below the threshold, or beside a position that
-    cannot assemble (the assembly is lost through a dead centre, between the two)."""
+    cannot assemble (the assembly is lost through a dead centre, between the two).  *ring*: the first
+    and last positions are neighbours (a turn taken from where the mechanism starts to assemble)."""
     near = np.zeros(len(analytic.driver), dtype=bool)
     for sines in analytic.sines.values():
         s = np.asarray(sines, dtype=float)
@@ -172,13 +232,24 @@ def _near_dead(analytic) -> np.ndarray:
     beside = np.zeros_like(invalid)
     beside[1:] |= invalid[:-1]
     beside[:-1] |= invalid[1:]
+    if ring and len(invalid) > 1:
+        beside[0] |= invalid[-1]
+        beside[-1] |= invalid[0]
     return near | (beside & ~invalid)
 
 
-def _decorate(ax, x, invalid, near, marks, lang, *, numbers: bool) -> None:
-    for a, b in _spans(x, invalid):
+def _decorate(ax, x, invalid, near, marks, lang, *, numbers: bool, limits: tuple[float, float] | None = None) -> None:
+    limits = limits or (float(np.nanmin(x)), float(np.nanmax(x)))
+    spans = _spans(x, invalid)
+    # beyond the sweep's own ends, inside the limits (the margin of an arc, a turn's last step): not assembling
+    # where the sweep's end does not assemble or the margin runs into the turn's gap
+    if len(x) and limits[0] < float(np.nanmin(x)) and invalid.any():
+        spans.append((limits[0], float(np.nanmin(x))))
+    if len(x) and limits[1] > float(np.nanmax(x)) and (invalid[-1] or limits[1] - float(np.nanmax(x)) > 2 * abs(float(x[-1] - x[-2]))):
+        spans.append((float(np.nanmax(x)), limits[1]))
+    for a, b in spans:
         ax.axvspan(a, b, linewidth=0.0, zorder=0.5, **NO_ASSEMBLY)
-    widest = BAND_MIN * float(np.nanmax(x) - np.nanmin(x))
+    widest = BAND_MIN * (limits[1] - limits[0])  # of the axis shown
     for a, b in _spans(x, near & ~invalid):
         grow = max(0.0, widest - (b - a)) / 2
         ax.axvspan(a - grow, b + grow, linewidth=0.0, zorder=0.4, **NEAR)
@@ -193,7 +264,7 @@ def _decorate(ax, x, invalid, near, marks, lang, *, numbers: bool) -> None:
     ax.tick_params(labelsize=7)
     ax.xaxis.set_major_formatter(_Ticks(lang))
     ax.yaxis.set_major_formatter(_Ticks(lang))
-    ax.set_xlim(float(np.nanmin(x)), float(np.nanmax(x)))
+    ax.set_xlim(*limits)
 
 
 def _finite(values, valid) -> np.ndarray:
@@ -375,11 +446,12 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         Also plot the x and y components of every point's v and a.
     """
     scene = analytic.scene
+    start = float(analytic.driver[0])  # position 0's angle, for the note φ₂ = start + Δφ
+    analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked)
     valid = np.asarray(analytic.valid, dtype=bool)
     invalid = ~valid
-    near = _near_dead(analytic)
+    near = _near_dead(analytic, ring=rolled)
     good = _well_conditioned(analytic)
-    x, xlabel, marks = cycle_axis(analytic, marked)
     crank = hasattr(scene.driver, "omega")
     xwords = term("turned_from_0", lang) if crank else term("driver_position", lang)
     title = term("cycle_diagrams", lang)
@@ -390,13 +462,14 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         fig, axes = _page(title, subtitle + "\n" + words, len(panels))
         clipped = False
         for ax, (quantity, ylabel, unit) in zip(axes, panels):
-            panel = _quantity_panel(analytic, quantity, valid, lang, unit)
+            panel = _quantity_panel(analytic, quantity, valid, lang, unit, start=start)
             _plot_panel(ax, x, panel, ylabel, marks)
-            _decorate(ax, x, invalid, near, marks, lang, numbers=ax is axes[0])
+            _decorate(ax, x, invalid, near, marks, lang, numbers=ax is axes[0], limits=limits)
             clipped |= _clip(ax, x, panel, good, lang, unit)
         axes[-1].set_xlabel(f"{xlabel}  —  {xwords}", fontsize=8)
-        if crank and float(np.nanmax(x) - np.nanmin(x)) >= 90:
-            axes[-1].set_xticks(np.arange(0, np.nanmax(x) + 1e-9, 30.0))
+        if ticks is not None:
+            axes[-1].set_xticks(ticks)
+            axes[-1].set_xlim(*limits)
         _legend_note(fig, lang, bool(invalid.any()), bool((near & ~invalid).any()), bool(marks), clipped)
         out.append((name, fig))
 
@@ -471,13 +544,14 @@ QUANTITIES = {
 _UNITS = {"phi": "°", "omega": "rad/s", "epsilon": "rad/s²", "v": "m/s", "a": "m/s²", "s": "mm", "v_rel": "m/s", "a_rel": "m/s²", "coriolis": "m/s²"}
 
 
-def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str) -> _Panel:
+def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start: float | None = None) -> _Panel:
+    """*start*: position 0's driver angle [rad] (the sweep's first, unless its order was changed)."""
     scene = analytic.scene
     extra = []
     series = _series(analytic, quantity, valid)
     if quantity == "phi" and hasattr(scene.driver, "omega"):
         link = scene.driver.link
-        start = _number(math.degrees(float(analytic.driver[0])) % 360.0, lang, 4)
+        start = _number(math.degrees(float(analytic.driver[0] if start is None else start)) % 360.0, lang, 4)
         sign = "−" if _sense(scene) < 0 else "+"
         extra.append(f"φ{subscript(link)} = {start}° {sign} Δφ")
         series = [(n, y) for n, y in series if n != f"φ{subscript(link)}"]
@@ -518,9 +592,10 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
     """
     if quantity not in QUANTITIES:
         raise ValueError(f"no diagram of {quantity!r}; choose one of {', '.join(QUANTITIES)}")
+    start = float(analytic.driver[0])
+    analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked)
     valid = np.asarray(analytic.valid, dtype=bool)
-    near = _near_dead(analytic)
-    x, xlabel, marks = cycle_axis(analytic, marked)
+    near = _near_dead(analytic, ring=rolled)
     with drawing_rc():
         if ax is None:
             fig = Figure(figsize=(160 / 25.4, 90 / 25.4), dpi=72)
@@ -528,9 +603,12 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
 
             FigureCanvasSVG(fig)
             ax = fig.add_axes([0.12, 0.16, 0.72, 0.76])
-        panel = _quantity_panel(analytic, quantity, valid, lang, _UNITS[quantity])
+        panel = _quantity_panel(analytic, quantity, valid, lang, _UNITS[quantity], start=start)
         _plot_panel(ax, x, panel, QUANTITIES[quantity], marks)
-        _decorate(ax, x, ~valid, near, marks, lang, numbers=True)
+        _decorate(ax, x, ~valid, near, marks, lang, numbers=True, limits=limits)
         _clip(ax, x, panel, _well_conditioned(analytic), lang, _UNITS[quantity])
+        if ticks is not None:
+            ax.set_xticks(ticks)
+            ax.set_xlim(*limits)
         ax.set_xlabel(xlabel, fontsize=8)
     return [line for line in ax.get_lines() if not line.get_label().startswith("_")]

@@ -46,6 +46,7 @@ PLATE_EDGE_PT = 1.4
 BLOCK = (9.0, 5.4)  # mm, length along the guide × height
 GROUND = 5.0  # mm, height of the ground triangle
 HATCH_STEP = 2.2  # mm
+HATCH_MAX = 2000  # strokes on one guide at most (4.4 m of paper)
 HATCH_LEN = 2.4  # mm
 OMEGA_R = 8.0  # mm
 LEADER_FROM_MM = 4.5  # a label further than this from its point gets a leader line
@@ -121,8 +122,10 @@ def draw_mechanism(solution, ax=None, *, lang: str = "en", slots: dict | None = 
     slots : dict, optional
         ``"4.slot"`` -> (s_min, s_max) [m]: the stretch of a moving line that a
         block travels over in the cycle (along the line from its origin), as
-        found by a sweep; the slot is drawn over it.  The drawing solves nothing:
-        without it, a slot is drawn around the block's present place.
+        found by a sweep (:func:`plans.sweep.line_travel`); the slot, a frame
+        guide or a rod is drawn over it.  The drawing solves nothing: when
+        omitted, the solution's own ``travel`` is used (a caller attaches it);
+        without either, a slot is drawn around the block's present place.
 
     Returns
     -------
@@ -148,7 +151,7 @@ class MechanismDrawing:
     """
 
     def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True, slots: dict | None = None):
-        self.slots = dict(slots or {})
+        self.slots = dict(slots if slots is not None else getattr(solution, "travel", None) or {})
         self.lang = lang
         self.show_caption = caption
         self.s = sketch
@@ -287,6 +290,12 @@ class MechanismDrawing:
                         lo, hi = max(lo, min(ts)), hi + stack
                     elif side < 0:
                         lo, hi = lo - stack, min(hi, max(ts))
+            # the stroke over the cycle (a ram's guideway); a follower's stub stays by the follower
+            stacked = any(self._stack_side(pr.slider) for pr in self.scene.prismatics if pr.guide == FRAME and pr.guide_line == name)
+            travel = self._travel(f"{FRAME}.{name}", origin, u)
+            if travel and not stacked:
+                end = self.block[0] / 2 + 3.0  # the block at either end of its stroke, and a little more
+                lo, hi = min(lo, min(travel) - end), max(hi, max(travel) + end)
             # a rod lying along the guide (a ram's connecting link): the guide is a guideway,
             # two lines either side of the ram, hatched outward, over the rod's length and
             # past the block (the stroke it travels), so the rod runs between them, on no hatching
@@ -375,7 +384,7 @@ class MechanismDrawing:
     def _hatch(self, a: complex, b: complex, outward: complex) -> None:
         u = unit(b - a)
         length = abs(b - a)
-        count = max(2, int(length / HATCH_STEP))
+        count = min(HATCH_MAX, max(2, int(length / HATCH_STEP)))
         step = length / count
         pairs = []
         for k in range(count + 1):
@@ -396,6 +405,7 @@ class MechanismDrawing:
                 own = [((q - origin) * u.conjugate()).real for q in self.body_points(body)]
                 reach = self.block[0] / 2 + 3.0
                 rides = [((q - origin) * u.conjugate()).real for q in self.riders(body, name)]
+                rides += self._travel(f"{body}.{name}", origin, u)  # the travel over the cycle
                 ts = own + [t - reach for t in rides] + [t + reach for t in rides] + [0.0]
                 a = origin + u * min(ts)
                 c = origin + u * max(ts)
@@ -419,6 +429,19 @@ class MechanismDrawing:
                 for p0, p1 in _outside(a, c, spans):
                     self.s.line([p0, p1], lw=0.8, gid=f"line-{body}-{name}", zorder=1.6)
 
+    def _travel(self, key: str, origin: complex, u: complex) -> list[float]:
+        """The travel given for line *key* [mm along *u* from *origin*], cut to the mechanism's own reach: no
+        further than its size beyond its points (a pin that runs off towards infinity near parallel guides
+        is not followed)."""
+        travel = self.slots.get(key)
+        if not travel:
+            return []
+        pts = [self.p(n) for n in self.sol.positions]
+        along = [((q - origin) * u.conjugate()).real for q in pts] or [0.0]
+        size = abs(complex(max(q.real for q in pts) - min(q.real for q in pts), max(q.imag for q in pts) - min(q.imag for q in pts))) if pts else 0.0
+        lo, hi = min(along) - size, max(along) + size
+        return [min(max(float(t) / self.k_l, lo), hi) for t in travel if math.isfinite(t)]
+
     def _is_plate(self, body: str) -> bool:
         """A link with three or more points not on one line, drawn as a plate."""
         pts = self.body_points(body)
@@ -438,10 +461,10 @@ class MechanismDrawing:
         line from its origin, e.g. from a sweep); without it, the slot covers the
         block's present place and a block length either side.
         """
-        travel = self.slots.get(f"{body}.{name}")
+        travel = self._travel(f"{body}.{name}", origin, u)
         L = self.block[0] / 2
-        if travel is not None:
-            lo, hi = (min(travel) / self.k_l - L - 1.0, max(travel) / self.k_l + L + 1.0)
+        if travel:
+            lo, hi = (min(travel) - L - 1.0, max(travel) + L + 1.0)
             lo, hi = min(lo, min(rides) - L - 1.0), max(hi, max(rides) + L + 1.0)
         else:
             lo, hi = min(rides) - 2.2 * L, max(rides) + 2.2 * L

@@ -44,6 +44,7 @@ __all__ = [
     "draw_velocity_plan",
     "draw_acceleration_plan",
     "vectors_drawn",
+    "kinds_drawn",
     "vector_math",
     "end_letters",
     "legend_words",
@@ -117,6 +118,15 @@ def vectors_drawn(plan) -> list:
             continue
         out.append(v)
     return out
+
+
+def kinds_drawn(plan) -> set[str]:
+    """The kinds of vector a drawing of *plan* shows as arrows (what its legend lists).
+
+    A kind whose every vector is shorter than :data:`SHORT_MM` is drawn only
+    as lettered points with notes (``|aⁿ| = 0.19 mm``): the legend leaves it out.
+    """
+    return {v.kind for v in vectors_drawn(plan) if v.length >= SHORT_MM}
 
 
 def vector_math(label: str) -> str:
@@ -539,7 +549,8 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
         cursor += w + 4.0
     if not legend:
         return
-    kinds = [k for k in KINDS if any(v.kind == k for v in vectors)]
+    drawn = {v.kind for v in vectors if v.length >= SHORT_MM}  # as kinds_drawn: a kind only in notes is not listed
+    kinds = [k for k in KINDS if k in drawn]
     rows = [(k, legend_words(plan.kind, k, lang)) for k in kinds]
     if drawn_lines:
         rows.append(("construction", legend_words(plan.kind, "construction", lang)))

@@ -26,6 +26,7 @@ from shapely.geometry import LineString, box
 
 from .._text import SUBSCRIPT
 from ..i18n import term
+from ..sweep import line_travel
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import LABEL_SPACE_MM
 from .mechanism import FRAME, MechanismDrawing
@@ -48,6 +49,14 @@ NUMBER_CLEAR_MM = 0.25
 NEAR_GAPS = (0.5, 1.1, 1.8)
 LEADER_GAPS = (3.5, 5.0, 7.0, 9.5)
 LEADER_PT = 0.35
+#: The most of a leader line that may run inside what its mark sits in (a pin, a block), as a fraction of its length.
+LEADER_INSIDE = 0.6
+#: A line or pin within this [mm] of a mark's edge is what the mark sits on: its leader may cross it.
+OWN_MM = 0.6
+#: Lines thinner than this [mm] (a guide at 1.1 pt) may be crossed by a leader; a mark (0.45 mm) may not ...
+THIN_MM = 0.42
+#: ... and longer than this [mm] (a driver's arrow, 0.9 pt, is shorter).
+LONG_MM = 30.0
 
 
 def numbered_points(scene) -> list[str]:
@@ -102,7 +111,8 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
         track = np.where(assembled, np.asarray(cycle.points[name].r), np.nan + 0j)
         for seg in _segments(track / k_l):
             pts = [complex(z) for z in seg]
-            sketch.line(pts, color=colour, lw=PATH_PT, dashes=(4.0, 1.5), gid=f"path-{name}", zorder=1.0, obstacle=False)
+            # over the blocks and slots of the scheme (a point's path runs through its block), under pins and labels
+            sketch.line(pts, color=colour, lw=PATH_PT, dashes=(4.0, 1.5), gid=f"path-{name}", zorder=3.1, obstacle=False)
 
     # the other positions, thin
     for run in runs[1:]:
@@ -134,7 +144,7 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
                 marks.append((run.index, p, at))
 
     # position 0 in full (its labels keep clear of the marks)
-    mech = MechanismDrawing(sketch, base, lang=lang, caption=False)
+    mech = MechanismDrawing(sketch, base, lang=lang, caption=False, slots=line_travel(cycle))  # guides over the stroke
     mech.draw()
 
     # numbers where they have room: beside the mark, else on a short leader line, else left out;
@@ -231,6 +241,27 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         shapes = shapes[(x0 <= at.real + reach) & (x1 >= at.real - reach) & (y0 <= at.imag + reach) & (y1 >= at.imag - reach)]
     boxes = np.array([box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2) for c, _, _ in candidates], dtype=object)
     crowded = _closer_than(boxes, shapes, NUMBER_CLEAR_MM)
+    # what the mark sits in (the pin of position 0's scheme, a block, the ring of a slot): a leader starts inside
+    # it and may cross it on its way out, as long as most of the leader is outside (never along a link)
+    mark = shapely.Point(at.real, at.imag)
+    own = np.zeros(len(shapes), dtype=bool)
+    if len(shapes):
+        # (a line it lies on, within OWN_MM: not a label beside it, thicker than any line)
+        width = 2 * shapely.area(shapes) / np.maximum(shapely.length(shapes), 1e-12)
+        own = (shapely.distance(shapes, mark) <= 1e-9) | ((shapely.distance(shapes, mark) <= MARK_R + OWN_MM) & (width < 1.0))
+        rings = shapely.get_exterior_ring(shapes)  # a ring drawn around the mark (a slot's edge, a plate's outline)
+        filled = np.array([r is not None and shapely.contains(shapely.Polygon(r), mark) for r in rings], dtype=bool)
+        own |= filled
+        # never a label (an upright box): a leader goes round the labels
+        label = (shapely.get_num_coordinates(shapes) == 5) & np.isclose(shapely.area(shapes), shapely.area(shapely.envelope(shapes)))
+        own &= ~label
+    others, around = shapes[~own], shapes[own]
+    # a leader may cross the strokes of a hatching (bare segments) and long thin lines (a guide), not a link,
+    # a pin, a mark, an arrow or a label: a line's area is its length times its width (under THIN_MM)
+    if len(others):
+        area, half_round = shapely.area(others), shapely.length(others) / 2
+        guide = (2 * area / np.maximum(2 * half_round, 1e-12) < THIN_MM) & (half_round >= LONG_MM)
+        others = others[(area > 0) & ~guide]
 
     for (centre, u, leader), label, no_room in zip(candidates, boxes, crowded):
         if no_room:
@@ -239,7 +270,9 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
             start = at + u * (MARK_R + 0.3)
             end = centre - u * (abs(u.real) * w / 2 + abs(u.imag) * h / 2 + 0.3)
             line = LineString([(start.real, start.imag), (end.real, end.imag)])
-            if len(shapes) and _closer_than(np.array([line], dtype=object), shapes, NUMBER_CLEAR_MM)[0]:  # the leader crosses nothing either
+            if len(others) and _closer_than(np.array([line], dtype=object), others, NUMBER_CLEAR_MM)[0]:  # the leader crosses nothing either
+                continue
+            if len(around) and float(shapely.intersection(line, shapely.union_all(around)).length) > LEADER_INSIDE * line.length:
                 continue
             sketch.line([start, end], color=GHOST, lw=LEADER_PT, gid=f"{gid}-leader", zorder=4.4, obstacle=True)
         artist = sketch.text(centre, text, size=size, ha="center", va="center", gid=gid, obstacle=False, zorder=6.0)

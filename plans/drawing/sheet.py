@@ -15,7 +15,7 @@ from pathlib import Path
 
 from .._files import replace_all
 from .._text import decimal_comma, user_text
-from ..i18n import term
+from ..i18n import branch_text, term
 from ._canvas import Sketch, fmt_number
 from .blocks import drawing_block, pretty_equation, readings_block, rows_block, table_block, text_rows
 from .layout import FRAME_LEFT, FRAME_OTHER, SHEET_FORMATS, TITLE_BLOCK_W
@@ -93,15 +93,17 @@ TITLE_BLOCK_PT = 8.0
 def branch_lines(branches, lang: str = "en") -> list[str]:
     """The assembly branch of each group with two, one line each, from :class:`plans.structure.Branch` records.
 
-    ``"RRR(3,4): C to the left of B→D (+1)"`` in English; in the other
-    languages the group and its sign (the words are English).
+    ``"RRR(3,4): C to the left of B→D (+1)"``; in the other languages in
+    their words (:func:`plans.i18n.branch_text`), or the group and its sign
+    alone for a form of words not known there.
     """
     out = []
     for b in branches or ():
         if not b.sign:
             continue
         sign = f"{b.sign:+d}".replace("-", "\u2212")
-        out.append(f"{b.group}: {guide_names(b.words)} ({sign})" if lang == "en" else f"{b.group}: {sign}")
+        words = branch_text(guide_names(b.words), lang)
+        out.append(f"{b.group}: {words} ({sign})" if words else f"{b.group}: {sign}")
     return out
 
 

@@ -268,7 +268,9 @@ def render_svg(fig: Figure) -> bytes:
         FigureCanvasSVG(fig).print_svg(buffer, metadata={"Date": None})
     data = buffer.getvalue()
     width_in, height_in = fig.get_size_inches()
-    replacement = rb'\1 width="%smm" height="%smm"' % (
+    # xml:space="preserve": the spaces at the ends of a typeset run (" = " after v_A, " [m/s]") are drawn, not
+    # collapsed (an SVG viewer strips them by default and the runs, placed one by one, close up: "v_A=  ω ₂")
+    replacement = rb'\1 xml:space="preserve" width="%smm" height="%smm"' % (
         _mm(width_in * 25.4).encode(), _mm(height_in * 25.4).encode()
     )
     data, count = _ROOT_SIZE.subn(replacement, data, count=1)

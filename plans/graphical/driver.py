@@ -107,7 +107,7 @@ def driver_acceleration(ctx: Construction) -> None:
             if epsilon != 0.0:
                 tip = tip_n + 1j * epsilon * oa / plan.k0
                 known.append(plan.component(tip_n, tip, "tangential", f"a^t_{first}{pivot}"))
-                equations = [f"a_{first} = a^n_{first}{pivot} + a^t_{first}{pivot}  (a^n ∥ {first}{pivot}, ω²·{pivot}{first}; a^t ⊥ {pivot}{first}, |ε|·{pivot}{first})"]
+                equations = [f"a_{first} = a^n_{first}{pivot} + a^t_{first}{pivot}  (a^n_{first}{pivot} ∥ {first}{pivot}, ω²·{pivot}{first}; a^t_{first}{pivot} ⊥ {pivot}{first}, |ε|·{pivot}{first})"]
             else:
                 equations = [f"a_{first} = a^n_{first}{pivot}  (∥ {first}{pivot}, ω²·{pivot}{first}; ε = 0)"]
             plan.place(plan.label(first), tip, first)

@@ -206,6 +206,12 @@ class GraphicalSolution(_Drawable):
         ω = |vector| × k_v / length, and the segment of the mechanism it is
         perpendicular to (``"BC"``).  Links that turn with another share its
         entry; a driver's given ω has none.
+    travel : dict[str, tuple[float, float]]
+        Drawing data, not part of the construction: ``"4.slot"`` ->
+        (s_min, s_max) [m], the stretch of a line that what slides on it uses
+        over the cycle (:func:`plans.sweep.line_travel`), given by the caller
+        (``dataclasses.replace``) so that the scheme draws a slot or a guide
+        over it; empty, they are drawn around the present place.
     """
 
     scene: object
@@ -223,6 +229,7 @@ class GraphicalSolution(_Drawable):
     warnings: tuple = ()
     relative: dict[str, dict] = field(default_factory=dict)
     rotations: dict[str, dict[str, tuple[str, str, float]]] = field(default_factory=dict)
+    travel: dict[str, tuple[float, float]] = field(default_factory=dict)
 
     def sheet(self, *, lang: str = "en"):
         """The one-page sheet (mechanism, both plans, vector equations) as a matplotlib Figure."""

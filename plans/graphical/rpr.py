@@ -157,7 +157,7 @@ def acceleration_rpr(ctx: Construction, group: Group) -> None:
         Chain(pe, plan.absolute(e), [(a_k, "coriolis", f"a^k_{ei}{ej}")], u, f"∥ {line_i.key}", "relative", f"a^r_{ei}{ej}"),
     )
     equations = [
-        f"a_{ei} = a_{b} + a^n_{ei}{b} + a^t_{ei}{b}  (a^n ∥ {e}{b}, a^t ⊥ {b}{e})",
+        f"a_{ei} = a_{b} + a^n_{ei}{b} + a^t_{ei}{b}  (a^n_{ei}{b} ∥ {e}{b}, a^t_{ei}{b} ⊥ {b}{e})",
         sliding_equation("a", ei, ej, j, line_i.key, w != 0),
     ]
     image = plan.label(e, i)
