@@ -403,7 +403,7 @@ def handout_pages(
     from .compare import compare
     from .drawing.diagrams import draw_cycle_diagrams
     from .drawing.layout import stamp_page_number
-    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_frames, scale_line
+    from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_frames
     from .graphical import construct
     from .loops import loop_equations
     from .positions import at_page_precision, run_positions
@@ -430,15 +430,12 @@ def handout_pages(
     def where(r) -> str:
         return f"{term('position', lang)} {r.index}:  {r.label}" if multi else r.label
 
-    #: the scale factors a page states: those of its drawings
-    stated = {"velocity": ("k_l", "k_v"), "acceleration": ("k_a",)}
-
     def head(r, scales, page="velocity"):
-        scales = {k: v for k, v in scales.items() if k in stated[page]}
+        # each scale factor is stated once, under the drawing it belongs to (its caption), not again in the header;
         # the scene's data are on the cover of a multi-position handout: its position pages give the room to the drawings
         if multi:
-            return ["§" + where(r), "§" + formula, scale_line(scales, lang), term("scales_per_position", lang)]
-        return ["§" + where(r)] + (data if page == "velocity" else []) + ["§" + formula, scale_line(scales, lang)]
+            return ["§" + where(r), "§" + formula, term("scales_per_position", lang)]
+        return ["§" + where(r)] + (data if page == "velocity" else []) + ["§" + formula]
 
     def at_scales(r, scales):
         g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
@@ -457,8 +454,6 @@ def handout_pages(
             sizes = _mechanism_sizes(solved, lang, unscaled["mechanism"])
             unscaled["mechanisms"] = [size[:4] for size in sizes]
         frame = _choose_frame(frames, run.runs, given, unscaled)
-        # each page states the scale factors of the drawings on it
-        stated.update({page: tuple(key for kind, key in (("mechanism", "k_l"), ("velocity", "k_v"), ("acceleration", "k_a")) if frame.pages.get(kind) == page) for page in stated})
         k_l_common, per_run = handout_scales(run.runs, frame, given, unscaled)
         # mechanisms whose guides or slots scale too: drawn again at that k_l, measured, and k_l fitted to them
         for _ in range(2):
@@ -476,7 +471,7 @@ def handout_pages(
     if multi and solved:
         listing = [f"{r.index}:  {r.label}" + ("" if r.ok else f"  ({term('not_solved', lang)}: {r.brief(lang)})") for r in run.runs]
         cover_k = _cover_scale(run, math.ceil(len(listing) / 3))
-        cover_lines = data + ["§" + formula] + ([scale_line({"k_l": cover_k}, lang)] if cover_k else [])
+        cover_lines = data + ["§" + formula]  # k_l stated under the plan of positions
         pages.append(("cover", draw_cover_page(run, lang=lang, header_lines=cover_lines, positions_lines=listing, footer=footer, k_l=cover_k)))
     for number, r in enumerate(run.runs, start=1):
         say(f"{term('position', lang)} {number}/{len(run.runs)}")

@@ -59,8 +59,11 @@ def test_the_pages_of_a_multi_position_handout(russian):
         for graphical in (velocity, acceleration):
             assert f"Положение {k}:" in texts[graphical]
             assert "Векторные уравнения планов" in texts[graphical]
-            assert "Масштабы:" in texts[graphical]
         assert "План скоростей" in texts[velocity] and "План ускорений" not in texts[velocity]
+        # each drawing states its scale factor once, under it (decimal comma), not again in the header
+        assert len(re.findall(r"k\s*l\s*= [0-9]+,[0-9]+ m/mm", texts[velocity])) == 1
+        assert len(re.findall(r"k\s*v\s*= [0-9]+,[0-9]+ \(m/s\)/mm", texts[velocity])) == 1
+        assert len(re.findall(r"k\s*a\s*= [0-9]+,[0-9]+ \(m/s²\)/mm", texts[acceleration])) == 1
         assert "План ускорений" in texts[acceleration] and "План скоростей" not in texts[acceleration]
         assert "Аналитическая проверка: метод комплексных чисел" in texts[check]
         assert "RRR(3,4)" in texts[check] and "величина" in texts[check]

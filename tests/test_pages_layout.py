@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import re
 
+import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
@@ -25,8 +26,9 @@ PLAN_ACROSS_MM = 40.0
 LARGEST_VECTOR_MM = 60.0
 MECHANISM_ACROSS_MM = 100.0
 POSITIONS = 12
-#: the scale factors a page states in its header (typeset ``$k_l$ = 0.002 m/mm``: its plain text reads ``kl = 0.002 m/mm``)
-STATED = re.compile(r"\bk([lva]) = ([0-9.]+) ")
+#: a scale factor stated on a page: typeset page text (``$k_l$ = 0.002 m/mm`` reads ``kl = 0.002 m/mm``) or a
+#: drawing's caption (``$k_{l}$ = 0.002 m/mm``)
+STATED = re.compile(r"\bk_?\{?([lva])\}?\$? = ([0-9.]+) ")
 
 
 def _bbox(zs):
@@ -42,13 +44,17 @@ def handout(request):
     return dict(pages), record
 
 
-def _stated(fig) -> dict[str, float]:
-    """The scale factors a page states (its header's typeset line)."""
-    found = {}
-    for artist in fig.artists:
-        for key, value in STATED.findall(artist.get_text() if hasattr(artist, "get_text") else ""):
-            found["k_" + key] = float(value)
+def _statements(fig) -> list[tuple[str, float]]:
+    """Every scale factor a page states, each time it states one: (``k_l``, value)."""
+    found = []
+    for artist in fig.findobj(lambda o: hasattr(o, "get_text")):
+        found += [("k_" + key, float(value)) for key, value in STATED.findall(artist.get_text())]
     return found
+
+
+def _stated(fig) -> dict[str, float]:
+    """The scale factors a page states."""
+    return dict(_statements(fig))
 
 
 def _boxes(fig) -> list[tuple[float, float, float, float]]:
@@ -146,13 +152,16 @@ def _same_arrangement(pages, record):
 
 
 def test_the_cover_states_the_k_l_its_figure_is_drawn_at():
-    pages = dict(handout_pages(plans.load(plans.example_path("four-bar")), positions=2))
-    cover = pages["cover"]
-    # a typeset line is one artist (plans.drawing.typeset.TypesetText): its text is the whole line
-    stated = [m.group(1) for a in cover.artists if (m := re.search(r"= ([0-9.]+) m/mm", a.get_text()))]
-    drawn = [t.get_text() for ax in cover.axes for t in ax.texts if "m/mm" in t.get_text()]
-    assert len(stated) == 1 and len(drawn) == 1
-    assert stated[0] == re.search(r"= ([0-9.]+) m/mm", drawn[0]).group(1)
+    scene = plans.load(plans.example_path("four-bar"))
+    pages = dict(handout_pages(scene, positions=2))
+    statements = _statements(pages["cover"])
+    assert [key for key, _ in statements] == ["k_l"], statements  # once, under the plan of positions
+    # the crank pin's path is a circle of radius OA: its width on paper is 2·OA / k_l
+    crank = scene.bodies["2"].points
+    radius = abs(crank["A"] - crank["O"])  # own coordinates [m]
+    (path,) = [line for ax in pages["cover"].axes for line in ax.lines if line.get_gid() == "positions-path-A"]
+    width_mm = np.ptp(path.get_xdata())
+    assert 2 * radius / width_mm == pytest.approx(statements[0][1], rel=1e-3)
 
 
 LONG = r"$a_{B} = a_{A} + (i\varepsilon_{3} - \omega_{3}^2)\,l_{AB}\,e^{i\varphi_{3}} = (-8.604 - 12.29i) + (i(-17.61) - 0.2502^2)\cdot0.45\,e^{i\,117.52^\circ} = (-1.561 - 8.65i)\ \mathrm{m/s^2}$"
@@ -257,3 +266,16 @@ def test_a_check_page_with_room_sets_its_loop_equations_larger(handout):
         ys = sorted({round(a.get_position()[1], 3) for a in fig.artists if (a.get_gid() or "").startswith("page-loop")}, reverse=True)
         pitches = [a - b for a, b in zip(ys, ys[1:])]
         assert len(ys) > 10 and min(pitches) > pitch_8pt + 0.2, (name, min(pitches))
+
+
+def test_every_scale_factor_is_stated_once_on_its_page(handout):
+    """Each drawing's scale factor is stated once on the page that draws it (its caption), not again in the
+    header; the cover states the k_l of its plan of positions once."""
+    pages, record = handout
+    drawing_pages = {name for name, _ in record}
+    for name, fig in pages.items():
+        statements = _statements(fig)
+        keys = [key for key, _ in statements]
+        assert len(keys) == len(set(keys)), (name, statements)
+        if name in drawing_pages or name == "cover":
+            assert statements, name

@@ -24,7 +24,7 @@ from pathlib import Path
 from .._files import replace_all
 from .._text import decimal_comma, user_text
 from ..i18n import term
-from ._canvas import Sketch, fit_axes, fmt_number
+from ._canvas import Sketch, fit_axes
 from .blocks import Block, drawing_block, legend_block, pretty_equation, readings_block, rows_block, table_block, text_rows
 from .layout import A4, GAP, PAGE_MARGIN, Frame, header, header_height, new_page, place_in_box, position_frames
 from .sheet import branch_lines, draw_sheet, sheet_equations
@@ -44,7 +44,6 @@ __all__ = [
     "draw_check_pages",
     "draw_cover_page",
     "draw_unsolved_page",
-    "scale_line",
 ]
 
 TEXT_PT = 8.0  # equations on a handout page (their exponents ≥ 6 pt, see plans.drawing.typeset)
@@ -563,8 +562,3 @@ def draw_unsolved_page(run, *, lang: str, where: str, message: str, footer: str 
     return fig
 
 
-def scale_line(scales: dict, lang: str) -> str:
-    """``"Scale factors:  $k_l$ = 0.01 m/mm,  $k_v$ = 0.02 (m/s)/mm,  $k_a$ = 0.25 (m/s²)/mm"`` (symbols typeset)."""
-    units = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}
-    parts = [f"${key}$ = {fmt_number(value)} {units[key]}" for key, value in scales.items() if key in units]
-    return f"{term('scale_factors', lang)}:  " + ",  ".join(parts)
