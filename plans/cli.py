@@ -324,7 +324,9 @@ def _number(text: str) -> float | str:
         return text
 
 
-def _construct(scene: Scene, args):
+def _construct(scene: Scene, args, scales: dict | None = None):
+    """The graphical solution at the factors given (--k-l …, else the scene's, else automatic), or at *scales*
+    (chosen by plans for a sheet: not checked again)."""
     from dataclasses import replace
 
     from .graphical import construct
@@ -332,10 +334,19 @@ def _construct(scene: Scene, args):
     if args.precision == 0:  # exact readings, whatever the scene's [scales] say
         scene = replace(scene, scales=replace(scene.scales, precision=None))
         args.precision = None
-
+    if scales is not None:
+        return construct(
+            scene, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=args.precision,
+            warn_condition=args.warn_condition, check_scales=False,
+        )
     return construct(
         scene, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision, warn_condition=args.warn_condition
     )
+
+
+def _given_scales(args, scene: Scene) -> dict:
+    """The factors the user gave (--k-l …, else the scene's [scales]): a sheet keeps them exactly."""
+    return {key: getattr(args, key) if getattr(args, key) is not None else getattr(scene.scales, key) for key in ("k_l", "k_v", "k_a")}
 
 
 def _warn(message: str) -> None:
@@ -521,7 +532,8 @@ def _draw(args) -> int:
     from ._files import batch
     from .analytic import solve
     from .compare import compare
-    from .drawing import write_drawings
+    from .drawing import draw_sheet, write_drawings
+    from .drawing.sheet import sheet_scales
     from .positions import at_page_precision
     from .report import sheet_table
 
@@ -541,32 +553,60 @@ def _draw(args) -> int:
             paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format)
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
-        graphical = _construct(scene, args)
-        comparisons = compare(analytic, graphical)
-        sheet_table_rows = sheet_table(comparisons, graphical, analytic)
+        branches = _branch_lines(analytic, args.lang)
+        formula = analytic.structure.formula
+
+        def table_of(g):
+            return sheet_table(compare(analytic, g), g, analytic)
+
+        graphical, figure = _fitted_sheet(
+            _construct(scene, args),
+            lambda scales: _construct(scene, args, scales),
+            lambda g: draw_sheet(g, formula=formula, table=table_of(g), lang=args.lang, branches=branches),
+            lambda g, fixed: sheet_scales(g, formula=formula, table=table_of(g), lang=args.lang, branches=branches, given=given, fixed=fixed),
+            given=(given := _given_scales(args, scene)),
+        )
         _warn_solution(analytic, graphical)
         with batch():
             if _is_file(args.output):  # -o page.png: the sheet alone, in the format of the suffix
-                from .drawing import draw_sheet
                 from .drawing.formats import save_figure
 
-                from .drawing.sheet import branch_lines
-
-                figure = draw_sheet(graphical, formula=analytic.structure.formula, table=sheet_table_rows, lang=args.lang, branches=branch_lines(analytic.branches, args.lang))
                 paths = [save_figure(figure, args.output)]
             else:
                 paths = write_drawings(
                     graphical,
                     Path(args.output),
-                    formula=analytic.structure.formula,
-                    table=sheet_table_rows,
+                    formula=formula,
+                    table=table_of(graphical),
                     lang=args.lang,
                     format=args.format,
-                    branches=_branch_lines(analytic, args.lang),
+                    branches=branches,
+                    sheet=figure,
                 )
     for path in paths:
         print(path)
     return 0
+
+
+def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=None):
+    """(graphical, sheet figure): the sheet's factors chosen for its regions (:func:`plans.drawing.sheet.sheet_scales`,
+    *choose*), the plans constructed again at them (*construct_at*: drawing never solves) and the sheet drawn (*draw*).
+
+    The factors are chosen from what each drawing takes beyond its geometry, measured on a drawing at other
+    factors; when the sheet drawn at the chosen ones does not fit A3 after all, they are chosen once more from
+    what this drawing measured.
+    """
+    from .drawing.sheet import SHEET_FIRST
+
+    for attempt in (0, 1):
+        scales = choose(graphical, fixed)
+        if scales != graphical.scales:
+            graphical = construct_at(scales)
+        figure = draw(graphical)
+        if attempt or figure.plans_sheet.format == SHEET_FIRST or all(given.get(key) is not None for key in graphical.scales):
+            break
+        fixed = figure.plans_sheet.fixed
+    return graphical, figure
 
 
 def _is_file(output: str) -> bool:
