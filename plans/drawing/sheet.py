@@ -438,6 +438,24 @@ def _formats():
     return SHEET_FORMATS[names.index(SHEET_FIRST):]
 
 
+#: An arrangement that breaks the reading order (mechanism, velocity plan, acceleration plan: left to right or
+#: top down) counts this much less for each pair out of order.
+OUT_OF_ORDER = 0.85
+
+
+def _order_factor(boxes) -> float:
+    """:data:`OUT_OF_ORDER` to the power of the pairs of drawings out of reading order in *boxes* (kind -> x, y from the top, w, h)."""
+    kinds = [k for k in ("mechanism", "velocity", "acceleration") if k in boxes]
+    factor = 1.0
+    for i, a in enumerate(kinds):
+        for b in kinds[i + 1:]:
+            ax, ay, aw, ah = boxes[a]
+            bx, by, bw, bh = boxes[b]
+            if bx + bw <= ax + 1e-6 or (by + bh <= ay + 1e-6 and not ax + aw <= bx + 1e-6):  # b left of a, or above it
+                factor *= OUT_OF_ORDER
+    return factor
+
+
 def _choose_scales(figures: dict, texts, tb_h: float, mantissas):
     """(format, page, scales) of the arrangement whose drawings, each filling its box, are largest."""
     ladder = _ladder(mantissas)
@@ -461,7 +479,7 @@ def _choose_scales(figures: dict, texts, tb_h: float, mantissas):
                     scales[kind] = k
                     ratios += r
                 else:
-                    score = (min(ratios) + 0.2 * sum(ratios) / len(ratios)) if ratios else 0.0
+                    score = (min(ratios) + 0.2 * sum(ratios) / len(ratios)) * _order_factor(boxes) if ratios else 0.0
                     if best is None or score > best[0] + 1e-9:
                         best = (score, scales)
         if best is not None:
@@ -484,13 +502,14 @@ def _choose_places(drawings: dict, texts, tb_h: float):
                     break
                 fill = min(fill, max(nw / w, nh / h))
             else:
+                boxes = {}
+                for region, tree in regions:
+                    boxes.update(_place_boxes(tree, region, sizes))
+                fill *= _order_factor(boxes)
                 if best is None or fill > best[0] + 1e-9:
-                    best = (fill, texts_placed, regions)
+                    best = (fill, texts_placed, boxes)
         if best is not None:
-            boxes = {}
-            for region, tree in best[2]:
-                boxes.update(_place_boxes(tree, region, sizes))
-            return name, page, best[1], boxes, best[0]
+            return name, page, best[1], best[2], best[0]
     return None
 
 
