@@ -549,8 +549,9 @@ def _draw(args) -> int:
         run = run_positions(scene, _position_spec(args, scene), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
         for message in run.skipped_messages():
             _warn(message)
+        sheets = _position_sheets(run, args.lang, _given_scales(args, scene))
         with batch():
-            paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format)
+            paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format, sheets=sheets)
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
         branches = _branch_lines(analytic, args.lang)
@@ -607,6 +608,44 @@ def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=N
             break
         fixed = figure.plans_sheet.fixed
     return graphical, figure
+
+
+def _position_sheets(run, lang: str, given: dict) -> dict:
+    """Position index -> its sheet, each at the factors that make its drawings fill their regions (given ones kept).
+
+    What the drawings take beyond their geometry is measured on the first sheet's drawings and then on each
+    sheet drawn, for the next (see :func:`_fitted_sheet`).
+    """
+    from dataclasses import replace
+
+    from .compare import compare
+    from .drawing.sheet import branch_lines, sheet_scales
+    from .drawing.sheets import draw_position_sheet
+    from .graphical import construct
+    from .report import sheet_table
+
+    sheets, fixed = {}, None
+    for r in run.runs:
+        if not r.ok:
+            continue
+
+        def table_of(g, r=r):
+            return sheet_table(compare(r.analytic, g), g, r.analytic)
+
+        def construct_at(scales, r=r):
+            return construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
+
+        def draw(g, r=r):
+            return draw_position_sheet(replace(r, graphical=g, comparisons=compare(r.analytic, g)), lang=lang, total=len(run.runs))
+
+        def choose(g, measured, r=r):
+            formula = r.analytic.structure.formula
+            return sheet_scales(g, formula=formula, table=table_of(g), lang=lang, branches=branch_lines(r.analytic.branches, lang), given=given, fixed=measured)
+
+        _, figure = _fitted_sheet(r.graphical, construct_at, draw, choose, given=given, fixed=fixed)
+        fixed = figure.plans_sheet.fixed
+        sheets[r.index] = figure
+    return sheets
 
 
 def _is_file(output: str) -> bool:

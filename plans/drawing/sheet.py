@@ -131,8 +131,11 @@ SHEET_FIRST = "A3"
 MECHANISM_ACROSS_MM = 100.0
 LARGEST_VECTOR_MM = 60.0
 PLAN_ACROSS_MM = 40.0
-#: Shares in which a region is split between two drawings.
-SHARES = tuple(round(0.25 + 0.05 * i, 2) for i in range(11))
+#: Shares in which a region is split between drawings: coarse ones tried for every arrangement, then the fine
+#: ones for the :data:`FINE_TRIES` best.
+COARSE_SHARES = (0.3, 0.4, 0.5, 0.6, 0.7)
+SHARES = tuple(round(0.2 + 0.05 * i, 2) for i in range(13))
+FINE_TRIES = 4
 #: Room [mm] a chosen scale factor leaves in its box: the drawing made at the final factors may differ a little
 #: from the one its fixed parts were measured on (labels placed anew, numbers of other lengths).
 FIT_SLACK = 2.0
@@ -255,48 +258,39 @@ def _structures(kinds):
     if n == 1:
         return [kinds[0]]
     if n == 2:
-        return [("row", list(kinds)), ("column", list(kinds))]
+        return [("row", tuple(kinds)), ("column", tuple(kinds))]
     first, second, third = kinds
     return [
-        ("row", list(kinds)),
-        ("column", list(kinds)),
-        ("column", [first, ("row", [second, third])]),  # the first above the other two side by side
-        ("row", [first, ("column", [second, third])]),  # the first beside the other two stacked
-        ("column", [("row", [first, second]), third]),  # the first two side by side above the third
-        ("row", [("column", [first, second]), third]),  # the first two stacked beside the third
+        ("row", tuple(kinds)),
+        ("column", tuple(kinds)),
+        ("column", (first, ("row", (second, third)))),  # the first above the other two side by side
+        ("row", (first, ("column", (second, third)))),  # the first beside the other two stacked
+        ("column", (("row", (first, second)), third)),  # the first two side by side above the third
+        ("row", (("column", (first, second)), third)),  # the first two stacked beside the third
     ]
 
 
-def _share_boxes(node, box):
-    """Every split of *box* (x, y from the top, w, h) among the leaves of *node* by :data:`SHARES`: kind -> box."""
-    if isinstance(node, str):
-        yield {node: box}
-        return
+def _share_parts(node, box, shares=None):
+    """Every split of *box* (x, y from the top, w, h) among the children of *node* by *shares*
+    (:data:`SHARES` by default): a list of boxes."""
+    shares = SHARES if shares is None else shares
     axis, children = node
     x, y, w, h = box
     length = (w if axis == "row" else h) - GAP * (len(children) - 1)
     if length <= 0:
         return
     if len(children) == 2:
-        shares = [(s, 1.0 - s) for s in SHARES]
+        splits = [(s, 1.0 - s) for s in shares]
     else:
-        shares = [(a, b, 1.0 - a - b) for a in SHARES[:7] for b in SHARES[:7] if a + b <= 0.8 + 1e-9]
-    for share in shares:
+        thirds = [s for s in shares if 0.2 <= s <= 0.6 + 1e-9]
+        splits = [(a, b, 1.0 - a - b) for a in thirds for b in thirds if 0.2 - 1e-9 <= 1.0 - a - b]
+    for share in splits:
         parts, at = [], 0.0
         for p in share:
             size = length * p
             parts.append((x + at, y, size, h) if axis == "row" else (x, y + at, w, size))
             at += size + GAP
-        yield from _combine([list(_share_boxes(child, part)) for child, part in zip(children, parts)])
-
-
-def _combine(options):
-    if not options:
-        yield {}
-        return
-    for first in options[0]:
-        for rest in _combine(options[1:]):
-            yield {**first, **rest}
+        yield parts
 
 
 def _natural(node, sizes) -> tuple[float, float]:
@@ -456,32 +450,74 @@ def _order_factor(boxes) -> float:
     return factor
 
 
-def _choose_scales(figures: dict, texts, tb_h: float, mantissas):
-    """(format, page, scales) of the arrangement whose drawings, each filling its box, are largest."""
+def _leaves(tree) -> list[str]:
+    return [tree] if isinstance(tree, str) else [k for child in tree[1] for k in _leaves(child)]
+
+
+def _score(ratios) -> float:
+    return min(ratios) + 0.2 * sum(ratios) / len(ratios) if ratios else 0.0
+
+
+def _choose_scales(figures: dict, options, tb_h: float, mantissas):
+    """(format, page, scales) of the arrangement whose drawings, each filling its box, are largest.
+
+    *options* are the lists of text blocks to try (the readings side by side,
+    or stacked).  An arrangement is scored by its smallest ratio of drawn size
+    to target plus a fifth of their mean (:func:`_Figure.ratios`), less for
+    drawings out of reading order; each split of a region takes the share
+    that scores best for the drawings on either side of it: first among
+    :data:`COARSE_SHARES` for every arrangement, then among :data:`SHARES`
+    for the few best.
+    """
     ladder = _ladder(mantissas)
     kinds = list(figures)
+    cache: dict = {}
+
+    def best_in(tree, box, shares):
+        """(score, ratios, kind -> k, kind -> box) of *tree* in *box*, its splits at their best shares; None: no fit."""
+        key = (tree, box, shares)
+        if key in cache:
+            return cache[key]
+        found = None
+        if isinstance(tree, str):
+            k = figures[tree].fit(box[2], box[3], ladder)
+            if k is not None:
+                ratios = figures[tree].ratios(k)
+                found = (_score(ratios), ratios, {tree: k}, {tree: box})
+        else:
+            for parts in _share_parts(tree, box, shares):
+                results = [best_in(child, part, shares) for child, part in zip(tree[1], parts)]
+                if any(r is None for r in results):
+                    continue
+                ratios = [x for r in results for x in r[1]]
+                score = _score(ratios)
+                if found is None or score > found[0] + 1e-9:
+                    found = (score, ratios, {k: v for r in results for k, v in r[2].items()}, {k: v for r in results for k, v in r[3].items()})
+        cache[key] = found
+        return found
+
+    def evaluate(regions, shares):
+        results = [best_in(tree, region, shares) for region, tree in regions]
+        if any(r is None for r in results):
+            return None
+        boxes = {k: v for r in results for k, v in r[3].items()}
+        return _score([x for r in results for x in r[1]]) * _order_factor(boxes), {k: v for r in results for k, v in r[2].items()}
+
     for name, page in _formats():
         inner, tb = _content(page, tb_h)
-        cache: dict = {}
+        coarse = []
+        for texts in options:
+            for _, regions in _arrangements(inner, tb, texts, kinds):
+                found = evaluate(regions, COARSE_SHARES)
+                if found is not None:
+                    coarse.append((found[0], len(coarse), regions))
+        if not coarse:
+            continue
         best = None
-        for _, regions in _arrangements(inner, tb, texts, kinds):
-            for boxes in _combine([list(_share_boxes(tree, region)) for region, tree in regions]):
-                scales = {}
-                ratios = []
-                for kind, (_, _, w, h) in boxes.items():
-                    key = (kind, round(w, 6), round(h, 6))
-                    if key not in cache:
-                        k = figures[kind].fit(w, h, ladder)
-                        cache[key] = (k, figures[kind].ratios(k) if k else None)
-                    k, r = cache[key]
-                    if k is None:
-                        break
-                    scales[kind] = k
-                    ratios += r
-                else:
-                    score = (min(ratios) + 0.2 * sum(ratios) / len(ratios)) * _order_factor(boxes) if ratios else 0.0
-                    if best is None or score > best[0] + 1e-9:
-                        best = (score, scales)
+        for _, _, regions in sorted(coarse, key=lambda c: (-c[0], c[1]))[:FINE_TRIES]:
+            found = evaluate(regions, SHARES)
+            if found is not None and (best is None or found[0] > best[0] + 1e-9):
+                best = found
         if best is not None:
             return name, page, best[1], best[0]
     return None
@@ -594,11 +630,7 @@ def sheet_scales(
         key = _KEYS[kind]
         size, largest = _geometry(solution, kind)
         figures[kind] = _Figure(kind, size, largest, fixed[kind], given.get(key, solution.scales[key]), key in given)
-    best = None
-    for texts in options:  # the readings side by side, or stacked: the smaller format, then the larger drawings
-        found = _choose_scales(figures, texts, sum(tb_heights), mantissas)
-        if found is not None and (best is None or (_FORMAT_ORDER[found[0]], -found[3]) < (_FORMAT_ORDER[best[0]], -best[3])):
-            best = found
+    best = _choose_scales(figures, options, sum(tb_heights), mantissas)
     if best is None:  # nothing fits A0: the factors as they are
         return dict(solution.scales)
     return {_KEYS[kind]: k for kind, k in best[2].items()}

@@ -77,7 +77,7 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
     )
 
 
-def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg") -> list[Path]:
+def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg", sheets: dict | None = None) -> list[Path]:
     """Write ``sheet-00.svg``, ``sheet-01.svg``, … and ``positions.svg`` (the plan of positions).
 
     Every sheet uses the run's common scale factors.  A position that cannot
@@ -91,6 +91,10 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
     positions_run : plans.positions.PositionsRun
     directory : str or pathlib.Path
     lang : str
+    sheets : dict, optional
+        Position index -> its sheet, drawn already (``plans draw --positions``
+        draws each at the factors that fill it); the others are drawn here at
+        the run's common factors.
 
     Returns
     -------
@@ -108,7 +112,7 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
     for run in positions_run.runs:
         if not run.ok:
             continue
-        fig = draw_position_sheet(run, lang=lang, total=total)
+        fig = (sheets or {}).get(run.index) or draw_position_sheet(run, lang=lang, total=total)
         contents[directory / f"sheet-{run.index:0{width}d}.{format}"] = render(fig, format)
     contents[directory / f"positions.{format}"] = render(draw_positions_plan(positions_run, lang=lang)[0].figure, format)
     if format != "svg":  # the record of what plans wrote is an SVG comment: other formats remove nothing
