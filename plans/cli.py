@@ -593,20 +593,27 @@ def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=N
     """(graphical, sheet figure): the sheet's factors chosen for its regions (:func:`plans.drawing.sheet.sheet_scales`,
     *choose*), the plans constructed again at them (*construct_at*: drawing never solves) and the sheet drawn (*draw*).
 
-    The factors are chosen from what each drawing takes beyond its geometry, measured on a drawing at other
-    factors; when the sheet drawn at the chosen ones does not fit A3 after all, they are chosen once more from
-    what this drawing measured.
+    The factors are chosen from what each drawing takes beyond its geometry (labels, supports, caption,
+    legend): *fixed* as measured on another sheet, else an estimate.  The sheet drawn then measures it for
+    itself; when that gives other factors, the sheet is drawn once more at those (kept if it fits A3, or if
+    the first did not, or if its drawings are larger).
     """
-    from .drawing.sheet import SHEET_FIRST
+    from .drawing.sheet import ESTIMATED_FIXED, SHEET_FIRST, drawn_score
 
-    for attempt in (0, 1):
-        scales = choose(graphical, fixed)
-        if scales != graphical.scales:
-            graphical = construct_at(scales)
-        figure = draw(graphical)
-        if attempt or figure.plans_sheet.format == SHEET_FIRST or all(given.get(key) is not None for key in graphical.scales):
-            break
-        fixed = figure.plans_sheet.fixed
+    scales = choose(graphical, fixed or ESTIMATED_FIXED)
+    if scales != graphical.scales:
+        graphical = construct_at(scales)
+    figure = draw(graphical)
+    if all(given.get(key) is not None for key in graphical.scales):
+        return graphical, figure
+    again = choose(graphical, figure.plans_sheet.fixed)
+    if again == graphical.scales:
+        return graphical, figure
+    second = construct_at(again)
+    second_figure = draw(second)
+    first_fits, second_fits = (f.plans_sheet.format == SHEET_FIRST for f in (figure, second_figure))
+    if second_fits and (not first_fits or drawn_score(second) > drawn_score(graphical)) or not first_fits:
+        return second, second_figure
     return graphical, figure
 
 

@@ -27,7 +27,7 @@ from .style import HEADING_PT
 from .svg import drawing_rc, new_figure
 from .typeset import draw_text, measure
 
-__all__ = ["draw_sheet", "sheet_scales", "fixed_parts", "SheetLayout", "branch_lines", "write_drawings", "sheet_equations", "guide_names", "translate_table", "label_driver"]
+__all__ = ["draw_sheet", "sheet_scales", "drawn_score", "fixed_parts", "SheetLayout", "ESTIMATED_FIXED", "SHEET_FIRST", "branch_lines", "write_drawings", "sheet_equations", "guide_names", "translate_table", "label_driver"]
 
 SHEET_PAD = 4.0  # mm between the frame and the content
 GAP = 6.0  # mm between blocks
@@ -139,6 +139,9 @@ FINE_TRIES = 4
 #: Room [mm] a chosen scale factor leaves in its box: the drawing made at the final factors may differ a little
 #: from the one its fixed parts were measured on (labels placed anew, numbers of other lengths).
 FIT_SLACK = 2.0
+#: What a drawing takes beyond its geometry [mm] (width, height: labels, supports, margins, caption, legend), as
+#: a first estimate before a drawing has measured it (see :func:`fixed_parts`).
+ESTIMATED_FIXED = {"mechanism": (40.0, 40.0), "velocity": (30.0, 50.0), "acceleration": (30.0, 60.0)}
 _KEYS = {"mechanism": "k_l", "velocity": "k_v", "acceleration": "k_a"}
 _TARGETS = {"mechanism": MECHANISM_ACROSS_MM}
 
@@ -218,6 +221,20 @@ def _geometry(solution, kind: str) -> tuple[tuple[float, float], float]:
     w, h = _bbox(ends)
     largest = max((abs(v.tip - v.tail) for v in plan.vectors), default=0.0)
     return (w * plan.scale, h * plan.scale), largest * plan.scale
+
+
+def drawn_score(solution) -> float:
+    """How large the drawings of *solution* are, at its factors, against what a sheet aims at.
+
+    The smallest ratio of drawn size to target (:data:`MECHANISM_ACROSS_MM`,
+    :data:`LARGEST_VECTOR_MM`, :data:`PLAN_ACROSS_MM`) plus a fifth of their
+    mean, the score :func:`sheet_scales` maximises.
+    """
+    ratios = []
+    for kind in _objects(solution):
+        size, largest = _geometry(solution, kind)
+        ratios += _Figure(kind, size, largest, (0.0, 0.0), solution.scales[_KEYS[kind]], True).ratios(solution.scales[_KEYS[kind]])
+    return _score(ratios)
 
 
 def fixed_parts(solution, blocks: dict) -> dict[str, tuple[float, float]]:
@@ -629,7 +646,7 @@ def sheet_scales(
     for kind in _objects(solution):
         key = _KEYS[kind]
         size, largest = _geometry(solution, kind)
-        figures[kind] = _Figure(kind, size, largest, fixed[kind], given.get(key, solution.scales[key]), key in given)
+        figures[kind] = _Figure(kind, size, largest, fixed.get(kind, ESTIMATED_FIXED[kind]), given.get(key, solution.scales[key]), key in given)
     best = _choose_scales(figures, options, sum(tb_heights), mantissas)
     if best is None:  # nothing fits A0: the factors as they are
         return dict(solution.scales)
