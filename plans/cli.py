@@ -589,6 +589,11 @@ def _draw(args) -> int:
     return 0
 
 
+#: A sheet that fits A3 is drawn again at the factors its own measurements give only when they make its
+#: drawings this much larger (:func:`plans.drawing.sheet.drawn_score`).
+REFIT_GAIN = 1.05
+
+
 def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=None):
     """(graphical, sheet figure): the sheet's factors chosen for its regions (:func:`plans.drawing.sheet.sheet_scales`,
     *choose*), the plans constructed again at them (*construct_at*: drawing never solves) and the sheet drawn (*draw*).
@@ -607,12 +612,13 @@ def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=N
     if all(given.get(key) is not None for key in graphical.scales):
         return graphical, figure
     again = choose(graphical, figure.plans_sheet.fixed)
-    if again == graphical.scales:
-        return graphical, figure
+    fits = figure.plans_sheet.format == SHEET_FIRST
+    if again == graphical.scales or fits and drawn_score(graphical, again) < REFIT_GAIN * drawn_score(graphical):
+        return graphical, figure  # drawn again only to fit A3, or for drawings noticeably larger
     second = construct_at(again)
     second_figure = draw(second)
-    first_fits, second_fits = (f.plans_sheet.format == SHEET_FIRST for f in (figure, second_figure))
-    if second_fits and (not first_fits or drawn_score(second) > drawn_score(graphical)) or not first_fits:
+    second_fits = second_figure.plans_sheet.format == SHEET_FIRST
+    if second_fits and (not fits or drawn_score(second) > drawn_score(graphical)) or not fits:
         return second, second_figure
     return graphical, figure
 

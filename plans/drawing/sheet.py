@@ -133,9 +133,9 @@ LARGEST_VECTOR_MM = 60.0
 PLAN_ACROSS_MM = 40.0
 #: Shares in which a region is split between drawings: coarse ones tried for every arrangement, then the fine
 #: ones for the :data:`FINE_TRIES` best.
-COARSE_SHARES = (0.3, 0.4, 0.5, 0.6, 0.7)
+COARSE_SHARES = (0.35, 0.5, 0.65)
 SHARES = tuple(round(0.2 + 0.05 * i, 2) for i in range(13))
-FINE_TRIES = 4
+FINE_TRIES = 3
 #: Room [mm] a chosen scale factor leaves in its box: the drawing made at the final factors may differ a little
 #: from the one its fixed parts were measured on (labels placed anew, numbers of other lengths).
 FIT_SLACK = 2.0
@@ -223,17 +223,18 @@ def _geometry(solution, kind: str) -> tuple[tuple[float, float], float]:
     return (w * plan.scale, h * plan.scale), largest * plan.scale
 
 
-def drawn_score(solution) -> float:
-    """How large the drawings of *solution* are, at its factors, against what a sheet aims at.
+def drawn_score(solution, scales: dict | None = None) -> float:
+    """How large the drawings of *solution* are, at its factors (or at *scales*), against what a sheet aims at.
 
     The smallest ratio of drawn size to target (:data:`MECHANISM_ACROSS_MM`,
     :data:`LARGEST_VECTOR_MM`, :data:`PLAN_ACROSS_MM`) plus a fifth of their
     mean, the score :func:`sheet_scales` maximises.
     """
+    scales = solution.scales if scales is None else scales
     ratios = []
     for kind in _objects(solution):
         size, largest = _geometry(solution, kind)
-        ratios += _Figure(kind, size, largest, (0.0, 0.0), solution.scales[_KEYS[kind]], True).ratios(solution.scales[_KEYS[kind]])
+        ratios += _Figure(kind, size, largest, (0.0, 0.0), scales[_KEYS[kind]], True).ratios(scales[_KEYS[kind]])
     return _score(ratios)
 
 
