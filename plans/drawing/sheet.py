@@ -1,11 +1,16 @@
-"""The one-page sheet and :func:`write_drawings`.
+"""The one-page sheet, the scale factors that make it full, and :func:`write_drawings`.
 
 The sheet puts the mechanism and both plans (each at its own scale, 1:1 on
 the page, so the stated scale factors hold on the printed sheet too), the
-vector equations each group solved and the results table in a drawing frame
-on A4 landscape, or A3 landscape when A4 cannot hold them (a larger ISO
-sheet only when A3 cannot either), with a title block in the lower right
-corner: title, structural formula, scale factors and assembly branches.
+vector equations each group solved, the readings of both plans and the
+results table in a drawing frame on A3 landscape, with a title block in the
+lower right corner: title, structural formula, scale factors and assembly
+branches.  The layout decides the regions first (the texts in columns at the
+top right, over the title block); :func:`sheet_scales` then gives the factors
+with which each drawing fills its region, for the caller to construct the
+plans at (drawing never solves), and :func:`draw_sheet` places the drawn
+blocks.  A larger ISO sheet only when factors given by the user draw the
+figures too large for A3.
 """
 
 from __future__ import annotations
