@@ -80,7 +80,9 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
 def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg", sheets: dict | None = None) -> list[Path]:
     """Write ``sheet-00.svg``, ``sheet-01.svg``, … and ``positions.svg`` (the plan of positions).
 
-    Every sheet uses the run's common scale factors.  A position that cannot
+    Each sheet is the one given in *sheets* (``plans draw --positions``
+    draws every sheet at the factors that fill it), else drawn here at the
+    run's common scale factors.  A position that cannot
     be solved gets no sheet (it is left out, and the plan of positions does
     not draw it).  All files are written together, atomically; sheets of an
     earlier run with more positions that plans wrote (and nobody changed
