@@ -633,7 +633,7 @@ def _position_sheets(run, lang: str, given: dict) -> dict:
 
     from .compare import compare
     from .drawing.sheet import branch_lines, sheet_scales
-    from .drawing.sheets import draw_position_sheet
+    from .drawing.sheets import draw_position_sheet, position_title
     from .graphical import construct
     from .report import sheet_table
 
@@ -653,7 +653,8 @@ def _position_sheets(run, lang: str, given: dict) -> dict:
 
         def choose(g, measured, r=r):
             formula = r.analytic.structure.formula
-            return sheet_scales(g, formula=formula, table=table_of(g), lang=lang, branches=branch_lines(r.analytic.branches, lang), given=given, fixed=measured)
+            return sheet_scales(g, formula=formula, table=table_of(g), lang=lang, title=position_title(r, len(run.runs), lang),
+                                branches=branch_lines(r.analytic.branches, lang), given=given, fixed=measured)
 
         _, figure = _fitted_sheet(r.graphical, construct_at, draw, choose, given=given, fixed=fixed)
         fixed = figure.plans_sheet.fixed

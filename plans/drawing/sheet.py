@@ -113,6 +113,21 @@ def branch_lines(branches, lang: str = "en") -> list[str]:
     return out
 
 
+def _wrapped(text: str, size: float, weight: str, width: float) -> list[str]:
+    """*text* broken at spaces into lines no wider than *width* [mm] (a word wider than that stays whole)."""
+    if measure(text, size, weight)[0] <= width:
+        return [text]
+    lines, line = [], ""
+    for word in text.split(" "):
+        trial = f"{line} {word}" if line else word
+        if line and measure(trial, size, weight)[0] > width:
+            lines.append(line)
+            line = word
+        else:
+            line = trial
+    return lines + [line]
+
+
 def _title_block_rows(title: str, formula: str, scales: dict, branches, lang: str) -> list[tuple[str, float, str]]:
     rows = [(title or "—", HEADING_PT + 1.0, "bold")]
     if formula:
@@ -576,8 +591,12 @@ def _sheet_texts(solution, *, formula, table, equations, lang, title, branches):
     """The title block's rows and their heights, and the text blocks (equations, readings side by side or stacked, table)."""
     table = [[decimal_comma(cell, lang) for cell in row] for row in translate_table(table, lang)] if table else table
     title = user_text(title if title is not None else (getattr(solution.scene, "title", "") or ""))
-    tb_rows = [(decimal_comma(t, lang) if k else t, size, weight) for k, (t, size, weight) in enumerate(_title_block_rows(title, formula, solution.scales, branches, lang))]
-    tb_heights = [measure(t, size, weight)[1] + 2 * TITLE_BLOCK_PAD for t, size, weight in tb_rows]
+    # each row broken at spaces into lines that fit the title block (a position sheet's title is long)
+    room = TITLE_BLOCK_W - 2 * TITLE_BLOCK_PAD - 2.0
+    tb_rows = [(_wrapped(decimal_comma(t, lang) if k else t, size, weight, room), size, weight)
+               for k, (t, size, weight) in enumerate(_title_block_rows(title, formula, solution.scales, branches, lang))]
+    tb_heights = [sum(measure(line, size, weight)[1] + SHEET_LINE_GAP for line in lines) - SHEET_LINE_GAP + 2 * TITLE_BLOCK_PAD
+                  for lines, size, weight in tb_rows]
 
     eq_lines = sheet_equations(solution) if equations is None else list(equations)
     if lang != "en":  # "driver:" is the one English word of the steps: the structural notation instead
@@ -748,10 +767,14 @@ def draw_sheet(
         tb_x = right - tb_w
         sheet.polygon([complex(tb_x, bottom), complex(right, bottom), complex(right, bottom + tb_h), complex(tb_x, bottom + tb_h)], lw=1.0, gid="title-block", obstacle=False)
         y = bottom + tb_h
-        for k, ((text, size, weight), h) in enumerate(zip(tb_rows, tb_heights)):
+        for k, ((lines, size, weight), h) in enumerate(zip(tb_rows, tb_heights)):
             if k:
                 sheet.line([complex(tb_x, y), complex(right, y)], lw=0.5, gid="title-block-rule", obstacle=False)
-            draw_text(sheet, complex(tb_x + TITLE_BLOCK_PAD + 1.0, y - h / 2), text, size=size, weight=weight, gid="title-block-title" if k == 0 else f"title-block-row{k}")
+            line_y = y - TITLE_BLOCK_PAD
+            for line in lines:
+                lh = measure(line, size, weight)[1]
+                draw_text(sheet, complex(tb_x + TITLE_BLOCK_PAD + 1.0, line_y - lh / 2), line, size=size, weight=weight, gid="title-block-title" if k == 0 else f"title-block-row{k}")
+                line_y -= lh + SHEET_LINE_GAP
             y -= h
 
         # content coordinates (x from the left, y down from the top of the content) to the page's

@@ -37,6 +37,7 @@ from .typeset import draw_text, measure
 __all__ = [
     "write_position_sheets",
     "draw_position_sheet",
+    "position_title",
     "draw_position_page",
     "POSITION_PAGES",
     "position_page_bands",
@@ -59,7 +60,8 @@ CHECK_PT = (8.0, 7.6, 7.2, 6.8)
 # --- plans draw --positions -----------------------------------------------------------
 
 
-def _position_title(run, total: int, lang: str) -> str:
+def position_title(run, total: int, lang: str = "en") -> str:
+    """The title of a position's sheet: the scene's title, the position's number and its driver position."""
     return f"{user_text(run.scene.title)} — {term('position', lang)} {run.index} ({run.index + 1}/{total}): {run.label}"
 
 
@@ -72,7 +74,7 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
         formula=run.analytic.structure.formula,
         table=sheet_table(run.comparisons, run.graphical, run.analytic),
         lang=lang,
-        title=_position_title(run, total or run.index + 1, lang),
+        title=position_title(run, total or run.index + 1, lang),
         branches=branch_lines(run.analytic.branches, lang),
     )
 
