@@ -25,7 +25,7 @@ from .._text import decimal_comma, user_text
 from ..graphical.scales import PAGE_MANTISSAS
 from ..i18n import term
 from ._canvas import Sketch, fmt_number
-from .blocks import drawing_block, pretty_equation, readings_block, rows_block, table_block, text_rows
+from .blocks import READINGS_PT, TABLE_PT, drawing_block, pretty_equation, readings_block, rows_block, table_block, text_rows
 from .layout import FRAME_LEFT, FRAME_OTHER, SHEET_FORMATS, TITLE_BLOCK_W
 from .numerals import scale_caption
 from .style import HEADING_PT
@@ -146,6 +146,10 @@ def _title_block_rows(title: str, formula: str, scales: dict, branches, lang: st
 #: The sheet's format: A3 landscape for every sheet; a larger ISO sheet only when scale factors given by the
 #: user (or a scene too large for A3's text columns) leave no arrangement that fits.
 SHEET_FIRST = "A3"
+#: A sheet whose best arrangement leaves a drawing short of its target tries its tables a point smaller
+#: (:data:`SMALLER_PT`), and takes them when that scores :data:`SMALLER_GAIN` times higher.
+SMALLER_PT = 1.0
+SMALLER_GAIN = 1.03
 #: What the layout aims at [mm] (issue 11 §1): the mechanism across (the larger side of its bounding box),
 #: a plan's largest vector, a plan across.
 MECHANISM_ACROSS_MM = 100.0
@@ -539,7 +543,8 @@ def _choose_scales(figures: dict, options, tb_h: float, mantissas):
         if any(r is None for r in results):
             return None
         boxes = {k: v for r in results for k, v in r[3].items()}
-        return _score([x for r in results for x in r[1]]) * _order_factor(boxes), {k: v for r in results for k, v in r[2].items()}
+        ratios = [x for r in results for x in r[1]]
+        return _score(ratios) * _order_factor(boxes), {k: v for r in results for k, v in r[2].items()}, min(ratios, default=0.0)
 
     for name, page in _formats():
         inner, tb = _content(page, tb_h)
@@ -557,7 +562,7 @@ def _choose_scales(figures: dict, options, tb_h: float, mantissas):
             if found is not None and (best is None or found[0] > best[0] + 1e-9):
                 best = found
         if best is not None:
-            return name, page, best[1], best[0]
+            return name, page, best[1], best[0], best[2]
     return None
 
 
@@ -587,7 +592,7 @@ def _choose_places(drawings: dict, texts, tb_h: float):
     return None
 
 
-def _sheet_texts(solution, *, formula, table, equations, lang, title, branches):
+def _sheet_texts(solution, *, formula, table, equations, lang, title, branches, small: bool = False):
     """The title block's rows and their heights, and the text blocks (equations, readings side by side or stacked, table)."""
     table = [[decimal_comma(cell, lang) for cell in row] for row in translate_table(table, lang)] if table else table
     title = user_text(title if title is not None else (getattr(solution.scene, "title", "") or ""))
@@ -606,9 +611,11 @@ def _sheet_texts(solution, *, formula, table, equations, lang, title, branches):
         heading = term("vector_equations", lang) if lang != "en" else "Vector equations"
         rows = text_rows(heading, [pretty_equation(decimal_comma(line, lang)) for line in eq_lines], EQ_WIDTH, EQ_PT)
         eq_block = rows_block(rows, "equation", line_gap=SHEET_LINE_GAP)
-    table_block_ = table_block(table, "Results" if lang == "en" else term("results", lang)) if table else None
+    less = SMALLER_PT if small else 0.0  # a crowded sheet: the tables a point smaller
+    heading = "Results" if lang == "en" else term("results", lang)
+    table_block_ = table_block(table, heading, size=TABLE_PT - less, heading_size=HEADING_PT - less) if table else None
     # what is measured on each plan and what it gives (issue 10 §2): the two plans' readings side by side, or stacked
-    side, stacked = readings_block(solution, lang), readings_block(solution, lang, width=0.0)
+    side, stacked = readings_block(solution, lang, size=READINGS_PT - less), readings_block(solution, lang, size=READINGS_PT - less, width=0.0)
     options = []
     for readings in ([side, stacked] if side is not None and stacked is not None and side.width != stacked.width else [side]):
         options.append([b for b in (eq_block, readings, table_block_) if b is not None])
@@ -673,6 +680,12 @@ def sheet_scales(
         size, largest = _geometry(solution, kind)
         figures[kind] = _Figure(kind, size, largest, fixed.get(kind, ESTIMATED_FIXED[kind]), given.get(key, solution.scales[key]), key in given)
     best = _choose_scales(figures, options, sum(tb_heights), mantissas)
+    if best is None or best[4] < 1.0:  # a drawing short of its target: the tables a point smaller, if that helps
+        with drawing_rc():
+            _, _, smaller = _sheet_texts(solution, formula=formula, table=table, equations=equations, lang=lang, title=title, branches=branches, small=True)
+        found = _choose_scales(figures, smaller, sum(tb_heights), mantissas)
+        if found is not None and (best is None or (_FORMAT_ORDER[found[0]], -found[3]) < (_FORMAT_ORDER[best[0]], -best[3] * SMALLER_GAIN)):
+            best = found
     if best is None:  # nothing fits A0: the factors as they are
         return dict(solution.scales)
     return {_KEYS[kind]: k for kind, k in best[2].items()}
@@ -727,13 +740,18 @@ def draw_sheet(
     with drawing_rc():
         fig = new_figure()
         drawings = {kind: drawing_block(fig, kind, obj, lang) for kind, obj in _objects(solution).items()}
-        tb_rows, tb_heights, options = _sheet_texts(solution, formula=formula, table=table, equations=equations, lang=lang, title=title, branches=branches)
+        texts_args = dict(formula=formula, table=table, equations=equations, lang=lang, title=title, branches=branches)
+        tb_rows, tb_heights, options = _sheet_texts(solution, **texts_args)
         tb_h = sum(tb_heights)
         best = None
-        for texts in options:
-            found = _choose_places(drawings, texts, tb_h)
-            if found is not None and (best is None or (_FORMAT_ORDER[found[0]], -found[4]) < (_FORMAT_ORDER[best[0]], -best[4])):
-                best = found
+        for small in (False, True):  # the tables a point smaller only when A3 cannot hold them at their size
+            variants = options if not small else _sheet_texts(solution, **texts_args, small=True)[2]
+            for texts in variants:
+                found = _choose_places(drawings, texts, tb_h)
+                if found is not None and (best is None or (_FORMAT_ORDER[found[0]], -found[4]) < (_FORMAT_ORDER[best[0]], -best[4])):
+                    best = found
+            if best is not None and best[0] == SHEET_FIRST:
+                break
         if best is None:  # larger than A0: the drawings in a row, the texts in a column beside them, a sheet of that size
             texts = options[0]
             row_w = sum(b.width for b in drawings.values()) + GAP * (len(drawings) - 1)
