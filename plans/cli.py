@@ -611,6 +611,8 @@ def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=N
     figure = draw(graphical)
     if all(given.get(key) is not None for key in graphical.scales):
         return graphical, figure
+    if figure.plans_sheet.format == SHEET_FIRST and drawn_score(graphical, least=True) >= 1.0 and fixed is not None:
+        return graphical, figure  # fits A3 and every drawing reaches its size, from another sheet's measurements
     again = choose(graphical, figure.plans_sheet.fixed)
     fits = figure.plans_sheet.format == SHEET_FIRST
     if again == graphical.scales or fits and drawn_score(graphical, again) < REFIT_GAIN * drawn_score(graphical):
@@ -623,11 +625,12 @@ def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=N
     return graphical, figure
 
 
-def _position_sheets(run, lang: str, given: dict) -> dict:
-    """Position index -> its sheet, each at the factors that make its drawings fill their regions (given ones kept).
+def _position_sheets(run, lang: str, given: dict):
+    """A function: a solved position -> its sheet, at the factors that make its drawings fill their regions
+    (given ones kept), for :func:`plans.drawing.write_position_sheets` to call position by position.
 
-    What the drawings take beyond their geometry is measured on the first sheet's drawings and then on each
-    sheet drawn, for the next (see :func:`_fitted_sheet`).
+    What the drawings take beyond their geometry is measured on each sheet drawn, for the next
+    (see :func:`_fitted_sheet`).
     """
     from dataclasses import replace
 
@@ -637,29 +640,27 @@ def _position_sheets(run, lang: str, given: dict) -> dict:
     from .graphical import construct
     from .report import sheet_table
 
-    sheets, fixed = {}, None
-    for r in run.runs:
-        if not r.ok:
-            continue
+    measured = {}
 
-        def table_of(g, r=r):
+    def sheet_of(r):
+        def table_of(g):
             return sheet_table(compare(r.analytic, g), g, r.analytic)
 
-        def construct_at(scales, r=r):
+        def construct_at(scales):
             return construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
 
-        def draw(g, r=r):
+        def draw(g):
             return draw_position_sheet(replace(r, graphical=g, comparisons=compare(r.analytic, g)), lang=lang, total=len(run.runs))
 
-        def choose(g, measured, r=r):
-            formula = r.analytic.structure.formula
-            return sheet_scales(g, formula=formula, table=table_of(g), lang=lang, title=position_title(r, len(run.runs), lang),
-                                branches=branch_lines(r.analytic.branches, lang), given=given, fixed=measured)
+        def choose(g, fixed):
+            return sheet_scales(g, formula=r.analytic.structure.formula, table=table_of(g), lang=lang, title=position_title(r, len(run.runs), lang),
+                                branches=branch_lines(r.analytic.branches, lang), given=given, fixed=fixed)
 
-        _, figure = _fitted_sheet(r.graphical, construct_at, draw, choose, given=given, fixed=fixed)
-        fixed = figure.plans_sheet.fixed
-        sheets[r.index] = figure
-    return sheets
+        _, figure = _fitted_sheet(r.graphical, construct_at, draw, choose, given=given, fixed=measured.get("fixed"))
+        measured["fixed"] = figure.plans_sheet.fixed
+        return figure
+
+    return sheet_of
 
 
 def _is_file(output: str) -> bool:

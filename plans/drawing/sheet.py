@@ -247,19 +247,20 @@ def _geometry(solution, kind: str) -> tuple[tuple[float, float], float]:
     return (w * plan.scale, h * plan.scale), largest * plan.scale
 
 
-def drawn_score(solution, scales: dict | None = None) -> float:
+def drawn_score(solution, scales: dict | None = None, *, least: bool = False) -> float:
     """How large the drawings of *solution* are, at its factors (or at *scales*), against what a sheet aims at.
 
     The smallest ratio of drawn size to target (:data:`MECHANISM_ACROSS_MM`,
     :data:`LARGEST_VECTOR_MM`, :data:`PLAN_ACROSS_MM`) plus a fifth of their
-    mean, the score :func:`sheet_scales` maximises.
+    mean, the score :func:`sheet_scales` maximises; with *least*, the
+    smallest ratio alone (1 or more: every drawing reaches its target).
     """
     scales = solution.scales if scales is None else scales
     ratios = []
     for kind in _objects(solution):
         size, largest = _geometry(solution, kind)
         ratios += _Figure(kind, size, largest, (0.0, 0.0), scales[_KEYS[kind]], True).ratios(scales[_KEYS[kind]])
-    return _score(ratios)
+    return min(ratios, default=0.0) if least else _score(ratios)
 
 
 def fixed_parts(solution, blocks: dict) -> dict[str, tuple[float, float]]:
@@ -496,6 +497,10 @@ def _leaves(tree) -> list[str]:
     return [tree] if isinstance(tree, str) else [k for child in tree[1] for k in _leaves(child)]
 
 
+def _leaves(tree) -> list[str]:
+    return [tree] if isinstance(tree, str) else [k for child in tree[1] for k in _leaves(child)]
+
+
 def _score(ratios) -> float:
     return min(ratios) + 0.2 * sum(ratios) / len(ratios) if ratios else 0.0
 
@@ -549,11 +554,19 @@ def _choose_scales(figures: dict, options, tb_h: float, mantissas):
     for name, page in _formats():
         inner, tb = _content(page, tb_h)
         coarse = []
+        kept: list[float] = []  # the FINE_TRIES best coarse scores so far, best first
         for texts in options:
             for _, regions in _arrangements(inner, tb, texts, kinds):
+                # each drawing given its whole region: an arrangement that cannot beat the ones kept is not split
+                alone = [best_in(kind, region, COARSE_SHARES) for region, tree in regions for kind in _leaves(tree)]
+                if any(r is None for r in alone):
+                    continue
+                if len(kept) >= FINE_TRIES and _score([x for r in alone for x in r[1]]) <= kept[-1]:
+                    continue
                 found = evaluate(regions, COARSE_SHARES)
                 if found is not None:
                     coarse.append((found[0], len(coarse), regions))
+                    kept = sorted(kept + [found[0]], reverse=True)[:FINE_TRIES]
         if not coarse:
             continue
         best = None

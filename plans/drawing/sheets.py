@@ -79,12 +79,12 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
     )
 
 
-def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg", sheets: dict | None = None) -> list[Path]:
+def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg", sheets=None) -> list[Path]:
     """Write ``sheet-00.svg``, ``sheet-01.svg``, … and ``positions.svg`` (the plan of positions).
 
-    Each sheet is the one given in *sheets* (``plans draw --positions``
-    draws every sheet at the factors that fill it), else drawn here at the
-    run's common scale factors.  A position that cannot
+    Each sheet is the one *sheets* gives (``plans draw --positions`` draws
+    every sheet at the factors that fill it), else drawn here at the run's
+    common scale factors.  A position that cannot
     be solved gets no sheet (it is left out, and the plan of positions does
     not draw it).  All files are written together, atomically; sheets of an
     earlier run with more positions that plans wrote (and nobody changed
@@ -95,10 +95,10 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
     positions_run : plans.positions.PositionsRun
     directory : str or pathlib.Path
     lang : str
-    sheets : dict, optional
-        Position index -> its sheet, drawn already (``plans draw --positions``
-        draws each at the factors that fill it); the others are drawn here at
-        the run's common factors.
+    sheets : callable, optional
+        ``sheets(run)`` -> the sheet of that position, called for each solved
+        position in turn (``plans draw --positions`` draws each at the factors
+        that fill it); by default each is drawn here at the run's common factors.
 
     Returns
     -------
@@ -116,7 +116,7 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
     for run in positions_run.runs:
         if not run.ok:
             continue
-        fig = (sheets or {}).get(run.index) or draw_position_sheet(run, lang=lang, total=total)
+        fig = sheets(run) if sheets is not None else draw_position_sheet(run, lang=lang, total=total)
         contents[directory / f"sheet-{run.index:0{width}d}.{format}"] = render(fig, format)
     contents[directory / f"positions.{format}"] = render(draw_positions_plan(positions_run, lang=lang)[0].figure, format)
     if format != "svg":  # the record of what plans wrote is an SVG comment: other formats remove nothing
