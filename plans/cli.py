@@ -325,7 +325,9 @@ def _number(text: str) -> float | str:
         return text
 
 
-def _construct(scene: Scene, args):
+def _construct(scene: Scene, args, scales: dict | None = None):
+    """The graphical solution at the factors given (--k-l …, else the scene's, else automatic), or at *scales*
+    (chosen by plans for a sheet: not checked again)."""
     from dataclasses import replace
 
     from .graphical import construct
@@ -333,10 +335,19 @@ def _construct(scene: Scene, args):
     if args.precision == 0:  # exact readings, whatever the scene's [scales] say
         scene = replace(scene, scales=replace(scene.scales, precision=None))
         args.precision = None
-
+    if scales is not None:
+        return construct(
+            scene, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=args.precision,
+            warn_condition=args.warn_condition, check_scales=False,
+        )
     return construct(
         scene, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision, warn_condition=args.warn_condition
     )
+
+
+def _given_scales(args, scene: Scene) -> dict:
+    """The factors the user gave (--k-l …, else the scene's [scales]): a sheet keeps them exactly."""
+    return {key: getattr(args, key) if getattr(args, key) is not None else getattr(scene.scales, key) for key in ("k_l", "k_v", "k_a")}
 
 
 def _warn(message: str) -> None:
@@ -519,12 +530,13 @@ def _nowhere(scene: Scene, positions) -> PlansError:
 
 
 def _draw(args) -> int:
+    from dataclasses import replace
+
     from ._files import batch
     from .analytic import solve
     from .compare import compare
-    from .drawing import write_drawings
-    from dataclasses import replace
-
+    from .drawing import draw_sheet, write_drawings
+    from .drawing.sheet import sheet_scales
     from .positions import at_page_precision, cycle_travel
     from .report import sheet_table
 
@@ -540,38 +552,121 @@ def _draw(args) -> int:
         run = run_positions(scene, _position_spec(args, scene), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
         for message in run.skipped_messages():
             _warn(message)
+        sheets = _position_sheets(run, args.lang, _given_scales(args, scene))
         with batch():
-            paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format, progress=_progress(args))
+            paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format, sheets=sheets, progress=_progress(args))
         _progress_done(args)
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
-        graphical = _construct(scene, args)
-        graphical = replace(graphical, travel=cycle_travel(scene, analytic.structure))  # slots over the cycle's travel
-        comparisons = compare(analytic, graphical)
-        sheet_table_rows = sheet_table(comparisons, graphical, analytic)
+        branches = _branch_lines(analytic, args.lang)
+        formula = analytic.structure.formula
+        travel = cycle_travel(scene, analytic.structure)  # slots and guides drawn over the cycle's travel
+
+        def table_of(g):
+            return sheet_table(compare(analytic, g), g, analytic)
+
+        graphical, figure = _fitted_sheet(
+            replace(_construct(scene, args), travel=travel),
+            lambda scales: replace(_construct(scene, args, scales), travel=travel),
+            lambda g: draw_sheet(g, formula=formula, table=table_of(g), lang=args.lang, branches=branches),
+            lambda g, fixed: sheet_scales(g, formula=formula, table=table_of(g), lang=args.lang, branches=branches, given=given, fixed=fixed),
+            given=(given := _given_scales(args, scene)),
+        )
         _warn_solution(analytic, graphical)
         with batch():
             if _is_file(args.output):  # -o page.png: the sheet alone, in the format of the suffix
-                from .drawing import draw_sheet
                 from .drawing.formats import save_figure
 
-                from .drawing.sheet import branch_lines
-
-                figure = draw_sheet(graphical, formula=analytic.structure.formula, table=sheet_table_rows, lang=args.lang, branches=branch_lines(analytic.branches, args.lang))
                 paths = [save_figure(figure, args.output)]
             else:
                 paths = write_drawings(
                     graphical,
                     Path(args.output),
-                    formula=analytic.structure.formula,
-                    table=sheet_table_rows,
+                    formula=formula,
+                    table=table_of(graphical),
                     lang=args.lang,
                     format=args.format,
-                    branches=_branch_lines(analytic, args.lang),
+                    branches=branches,
+                    sheet=figure,
                 )
     for path in paths:
         print(path)
     return 0
+
+
+#: A sheet that fits A3 is drawn again at the factors its own measurements give only when they make its
+#: drawings this much larger (:func:`plans.drawing.sheet.drawn_score`).
+REFIT_GAIN = 1.05
+
+
+def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=None):
+    """(graphical, sheet figure): the sheet's factors chosen for its regions (:func:`plans.drawing.sheet.sheet_scales`,
+    *choose*), the plans constructed again at them (*construct_at*: drawing never solves) and the sheet drawn (*draw*).
+
+    The factors are chosen from what each drawing takes beyond its geometry (labels, supports, caption,
+    legend): *fixed* as measured on another sheet, else an estimate.  The sheet drawn then measures it for
+    itself; when that gives other factors, the sheet is drawn once more at those (kept if it fits A3, or if
+    the first did not, or if its drawings are larger).
+    """
+    from .drawing.sheet import ESTIMATED_FIXED, SHEET_FIRST, drawn_score
+
+    scales = choose(graphical, fixed or ESTIMATED_FIXED)
+    if scales != graphical.scales:
+        graphical = construct_at(scales)
+    figure = draw(graphical)
+    if all(given.get(key) is not None for key in graphical.scales):
+        return graphical, figure
+    if figure.plans_sheet.format == SHEET_FIRST and drawn_score(graphical, least=True) >= 1.0 and fixed is not None:
+        return graphical, figure  # fits A3 and every drawing reaches its size, from another sheet's measurements
+    again = choose(graphical, figure.plans_sheet.fixed)
+    fits = figure.plans_sheet.format == SHEET_FIRST
+    if again == graphical.scales or fits and drawn_score(graphical, again) < REFIT_GAIN * drawn_score(graphical):
+        return graphical, figure  # drawn again only to fit A3, or for drawings noticeably larger
+    second = construct_at(again)
+    second_figure = draw(second)
+    second_fits = second_figure.plans_sheet.format == SHEET_FIRST
+    if second_fits and (not fits or drawn_score(second) > drawn_score(graphical)) or not fits:
+        return second, second_figure
+    return graphical, figure
+
+
+def _position_sheets(run, lang: str, given: dict):
+    """A function: a solved position -> its sheet, at the factors that make its drawings fill their regions
+    (given ones kept), for :func:`plans.drawing.write_position_sheets` to call position by position.
+
+    What the drawings take beyond their geometry is measured on each sheet drawn, for the next
+    (see :func:`_fitted_sheet`).
+    """
+    from dataclasses import replace
+
+    from .compare import compare
+    from .drawing.sheet import branch_lines, sheet_scales
+    from .drawing.sheets import draw_position_sheet, position_title
+    from .graphical import construct
+    from .report import sheet_table
+
+    measured = {}
+
+    def sheet_of(r):
+        def table_of(g):
+            return sheet_table(compare(r.analytic, g), g, r.analytic)
+
+        def construct_at(scales):
+            g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
+            return replace(g, travel=r.graphical.travel)  # slots and guides over the cycle's travel, as the run drew them
+
+        def draw(g):
+            return draw_position_sheet(replace(r, graphical=g, comparisons=compare(r.analytic, g)), lang=lang, total=len(run.runs))
+
+        def choose(g, fixed):
+            return sheet_scales(g, formula=r.analytic.structure.formula, table=table_of(g), lang=lang, title=position_title(r, len(run.runs), lang),
+                                branches=branch_lines(r.analytic.branches, lang), given=given, fixed=fixed)
+
+        _, figure = _fitted_sheet(r.graphical, construct_at, draw, choose, given=given, fixed=measured.get("fixed"))
+        measured["fixed"] = figure.plans_sheet.fixed
+        return figure
+
+    return sheet_of
 
 
 def _is_file(output: str) -> bool:

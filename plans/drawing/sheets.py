@@ -37,6 +37,7 @@ from .typeset import draw_text, measure
 __all__ = [
     "write_position_sheets",
     "draw_position_sheet",
+    "position_title",
     "draw_position_page",
     "POSITION_PAGES",
     "position_page_bands",
@@ -60,7 +61,8 @@ CHECK_PT = (9.5, 9.0, 8.5, 8.0, 7.6, 7.2, 6.8)
 # --- plans draw --positions -----------------------------------------------------------
 
 
-def _position_title(run, total: int, lang: str) -> str:
+def position_title(run, total: int, lang: str = "en") -> str:
+    """The title of a position's sheet: the scene's title, the position's number and its driver position."""
     return f"{user_text(run.scene.title)} — {term('position', lang)} {run.index} ({run.index + 1}/{total}): {run.label}"
 
 
@@ -73,15 +75,17 @@ def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):
         formula=run.analytic.structure.formula,
         table=sheet_table(run.comparisons, run.graphical, run.analytic),
         lang=lang,
-        title=_position_title(run, total or run.index + 1, lang),
+        title=position_title(run, total or run.index + 1, lang),
         branches=branch_lines(run.analytic.branches, lang),
     )
 
 
-def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg", progress=None) -> list[Path]:
+def write_position_sheets(positions_run, directory, *, lang: str = "en", format: str = "svg", sheets=None, progress=None) -> list[Path]:
     """Write ``sheet-00.svg``, ``sheet-01.svg``, … and ``positions.svg`` (the plan of positions).
 
-    Every sheet uses the run's common scale factors.  A position that cannot
+    Each sheet is the one *sheets* gives (``plans draw --positions`` draws
+    every sheet at the factors that fill it), else drawn here at the run's
+    common scale factors.  A position that cannot
     be solved gets no sheet (it is left out, and the plan of positions does
     not draw it).  All files are written together, atomically; sheets of an
     earlier run with more positions that plans wrote (and nobody changed
@@ -92,6 +96,10 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
     positions_run : plans.positions.PositionsRun
     directory : str or pathlib.Path
     lang : str
+    sheets : callable, optional
+        ``sheets(run)`` -> the sheet of that position, called for each solved
+        position in turn (``plans draw --positions`` draws each at the factors
+        that fill it); by default each is drawn here at the run's common factors.
     progress : callable, optional
         Called with ``"sheet 3/13"`` as each file is made (the plan of positions last).
 
@@ -114,7 +122,7 @@ def write_position_sheets(positions_run, directory, *, lang: str = "en", format:
         if not run.ok:
             continue
         say(f"sheet {len(contents) + 1}/{files}")
-        fig = draw_position_sheet(run, lang=lang, total=total)
+        fig = sheets(run) if sheets is not None else draw_position_sheet(run, lang=lang, total=total)
         contents[directory / f"sheet-{run.index:0{width}d}.{format}"] = render(fig, format)
     say(f"sheet {files}/{files}")
     contents[directory / f"positions.{format}"] = render(draw_positions_plan(positions_run, lang=lang)[0].figure, format)
