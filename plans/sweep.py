@@ -321,7 +321,7 @@ def line_travel(solution) -> dict[str, tuple[float, float]]:
     from its origin (through point) in its own direction, of the points of the
     body that slides on it (for the guide's line) or, for a slider that is a
     link of its own (a rod sliding through a sleeve), of the guide body (for
-    the slider's line), over the positions
+    the rod's line only: the sleeve is a collar), over the positions
     where the mechanism is solved.  A line with nothing solved is left out.
     Read from the sweep's positions and poses; nothing is solved here.
 
@@ -349,9 +349,12 @@ def line_travel(solution) -> dict[str, tuple[float, float]]:
                 found.setdefault(f"{body}.{line_name}", []).extend((float(t.min()), float(t.max())))
 
     for pair in scene.prismatics:
-        along(pair.guide, pair.guide_line, scene.bodies[pair.slider].points)
-        if pair.guide != FRAME and pair.slider != FRAME and len(scene.bodies[pair.slider].points) > 1:  # a rod through a sleeve
+        if pair.guide != FRAME and pair.slider != FRAME and len(scene.bodies[pair.slider].points) > 1:
+            # a rod through a sleeve: the rod is drawn over where the sleeve rides on it; the sleeve stays a
+            # collar (its line over the rod's points would draw the rod again, past its ends)
             along(pair.slider, pair.slider_line, scene.bodies[pair.guide].points)
+        else:
+            along(pair.guide, pair.guide_line, scene.bodies[pair.slider].points)
     return {key: (min(ts), max(ts)) for key, ts in sorted(found.items())}
 
 
