@@ -100,8 +100,9 @@ def _cplx(z: complex, alone: bool = False) -> str:
 
 
 def _deg(angle: float) -> str:
-    d = math.degrees(math.remainder(float(angle), 2 * math.pi))
-    return rf"{d:.2f}^\circ"
+    """An angle in degrees, 0 ≤ φ < 360 as the page's headers and the tables' ∠ print it."""
+    d = f"{math.degrees(float(angle)) % 360.0:.2f}"
+    return rf"{'0.00' if d == '360.00' else d}^\circ"
 
 
 def _sub(name: str) -> str:

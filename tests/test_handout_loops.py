@@ -48,8 +48,9 @@ def test_the_rrr_loop_and_its_derivatives_with_the_solvers_numbers(six_bar):
 def test_the_coriolis_term_of_the_sliding_rod(six_bar):
     _, blocks = six_bar
     acceleration = plain(blocks[2].lines[5])
-    # 2iω₅ṡ e^{iφ₅} with ω₅ = −1.813 rad/s and ṡ = −0.7759 m/s substituted
-    assert "2i·(-1.813)·(-0.7759)e^i-96.63^°" in acceleration
+    # 2iω₅ṡ e^{iφ₅} with ω₅ = −1.813 rad/s and ṡ = −0.7759 m/s substituted; φ₅ = −96.63° printed as
+    # 263.37° (angles 0…360°, as the page's header and the tables' ∠ print them)
+    assert "2i·(-1.813)·(-0.7759)e^i263.37^°" in acceleration
     assert "ε_5 = -3.344, s̈_E = -6.548" in acceleration
 
 
