@@ -395,8 +395,6 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "odčitki",
     },
     "segment": {"en": "segment", "sr": "дуж", "ru": "отрезок", "bg": "отсечка", "sl": "daljica"},
-    "cw": {"en": "cw", "sr": "у смеру казаљке", "ru": "по часовой", "bg": "по часовника", "sl": "v smeri ure"},
-    "ccw": {"en": "ccw", "sr": "супротно казаљци", "ru": "против часовой", "bg": "обратно на часовника", "sl": "proti smeri ure"},
 }
 
 

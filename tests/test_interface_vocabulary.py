@@ -116,11 +116,10 @@ VOCABULARY = {
     "centres_results": {"sr": "Брзине из тренутних полова и аналитичке вредности", "ru": "Скорости по мгновенным центрам и аналитические значения", "bg": "Скорости от моментните центрове и аналитични стойности", "sl": "Hitrosti iz trenutnih polov in analitične vrednosti"},
     "centres_omega_rule": {"sr": "ω члана из ω погонског члана, преко полова", "ru": "ω звена по ω ведущего звена, через центры", "bg": "ω на звеното от ω на водещото звено, чрез центровете", "sl": "ω člena iz ω pogonskega člena, prek polov"},
     "centres_v_rule": {"sr": "брзина тачке из пола око ког се окреће њен члан", "ru": "скорость точки по центру, вокруг которого поворачивается её звено", "bg": "скорост на точка от центъра, около който се завърта звеното ѝ", "sl": "hitrost točke iz pola, okoli katerega se vrti njen člen"},
-    # readings of a plan (issue 10 §2): the courses' words for a reading, a segment and the senses of rotation
+    # readings of a plan (issue 10 §2): the courses' words for a reading and a segment (the sense of rotation is
+    # the arc arrow ↺/↻, no word)
     "readings": {"sr": "очитавања", "ru": "отсчёты", "bg": "отчитания", "sl": "odčitki"},
     "segment": {"sr": "дуж", "ru": "отрезок", "bg": "отсечка", "sl": "daljica"},
-    "cw": {"sr": "у смеру казаљке", "ru": "по часовой", "bg": "по часовника", "sl": "v smeri ure"},
-    "ccw": {"sr": "супротно казаљци", "ru": "против часовой", "bg": "обратно на часовника", "sl": "proti smeri ure"},
 }
 
 #: domain.md §9, word for word: the headings every handout carries.

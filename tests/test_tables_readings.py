@@ -67,7 +67,7 @@ def results_table(texts: list[str]) -> dict[tuple[str, str], tuple[str, str, str
     return rows
 
 
-_VALUE = re.compile(r"^([0-9.]+) (m/s²|m/s|rad/s²|rad/s)(?: (cw|ccw))?$")
+_VALUE = re.compile(r"^([0-9.]+) (m/s²|m/s|rad/s²|rad/s)(?: (↻|↺))?$")  # ↺ counter-clockwise, ↻ clockwise
 
 
 def readings(texts: list[str], heading: str) -> list[dict]:
@@ -222,7 +222,7 @@ def test_readings_recompute_every_graphical_value_and_its_error(drawn):
                 graphical = _value(row[0])
                 signed = abs(graphical) if isinstance(graphical, complex) else graphical
                 if r["sense"] is not None:
-                    value_signed = value if r["sense"] == "ccw" else -value
+                    value_signed = value if r["sense"] == "↺" else -value
                     assert signed == pytest.approx(value_signed, rel=1e-3), (r, row)
                 else:
                     assert signed == pytest.approx(value, rel=1e-3), (r, row)

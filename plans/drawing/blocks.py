@@ -265,8 +265,10 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
         if sense is not None:  # ω, ε: the magnitude measured, the sense seen on the plan
             value = math.copysign(value, sense)
             rate_unit = _RATE[kind][2]
-            words = "" if value == 0 else " " + term("ccw" if value > 0 else "cw", lang)
-            text = f"{table_number(abs(value))} {rate_unit}{words}"
+            # the sense as the arc arrow a plan or a scheme draws it (↺ counter-clockwise, ↻ clockwise): the
+            # same narrow sign in every language, so the readings stand beside the results table
+            arrow = "" if value == 0 else (" ↺" if value > 0 else " ↻")
+            text = f"{table_number(abs(value))} {rate_unit}{arrow}"
         else:
             text = f"{table_number(value)} {unit}"
         factor = f"× {fmt(k)}" + ("" if divide is None else f"  ÷ {table_number(divide)}")
