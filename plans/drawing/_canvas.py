@@ -30,6 +30,10 @@ __all__ = ["Bounds", "Obstacles", "Sketch", "text_size", "fmt_number", "unit"]
 _TEXT_TO_PATH = TextToPath()
 
 
+#: a math string whose only math is its leading symbol (a caption: ``$k_{l}$ = 0.005 m/mm``)
+_MATH_LEAD = re.compile(r"(\$[^$]+\$)([^$\\]*)")
+
+
 @functools.lru_cache(maxsize=4096)
 def text_size(text: str, size_pt: float, weight: str = "normal", math: bool = False) -> tuple[float, float]:
     """Width and height [mm] of the box matplotlib lays *text* out in.
@@ -38,7 +42,11 @@ def text_size(text: str, size_pt: float, weight: str = "normal", math: bool = Fa
     ``va="center"`` centres, so single labels of different letters line up.
     """
     prop = FontProperties(family=FONT_FAMILY, size=size_pt, weight=weight)
-    width, _, _ = _TEXT_TO_PATH.get_text_width_height_descent(text, prop, ismath=math)
+    lead = _MATH_LEAD.fullmatch(text) if math else None
+    if lead:  # "$k_{l}$ = 0.005 m/mm": the symbol parsed once for every value, the rest measured as plain text
+        width = sum(_TEXT_TO_PATH.get_text_width_height_descent(part, prop, ismath=m)[0] for part, m in ((lead[1], True), (lead[2], False)) if part)
+    else:
+        width, _, _ = _TEXT_TO_PATH.get_text_width_height_descent(text, prop, ismath=math)
     _, height, _ = _TEXT_TO_PATH.get_text_width_height_descent("lp", prop, ismath=False)
     return width * MM_PER_PT, height * MM_PER_PT * 1.18
 
