@@ -352,8 +352,9 @@ def _make_room(g, frame, sizes, scales, given) -> dict[str, float]:
     return out
 
 
-def _cover_scale(run, list_rows: int) -> float | None:
-    """A round k_l that fits the plan of positions (every position and the paths) on the cover page."""
+def _cover_scale(run, list_rows: int, common: float | None = None) -> float | None:
+    """A round k_l that fits the plan of positions (every position and the paths) on the cover page: the
+    position pages' *common* k_l when that fits (one k_l in the whole handout), else the smallest that does."""
     import numpy as np
 
     zs = []
@@ -372,7 +373,7 @@ def _cover_scale(run, list_rows: int) -> float | None:
     need = max(w / box_w, h / max(box_h, 40.0))
     if not (need > 0 and math.isfinite(need)):
         return None
-    return round_up(need)
+    return common if common is not None and common >= need else round_up(need)
 
 
 # --- pages --------------------------------------------------------------------------------
@@ -470,7 +471,7 @@ def handout_pages(
     pages: list[tuple[str, object]] = []
     if multi and solved:
         listing = [f"{r.index}:  {r.label}" + ("" if r.ok else f"  ({term('not_solved', lang)}: {r.brief(lang)})") for r in run.runs]
-        cover_k = _cover_scale(run, math.ceil(len(listing) / 3))
+        cover_k = _cover_scale(run, math.ceil(len(listing) / 3), fixed.get("k_l"))
         cover_lines = data + ["§" + formula]  # k_l stated under the plan of positions
         pages.append(("cover", draw_cover_page(run, lang=lang, header_lines=cover_lines, positions_lines=listing, footer=footer, k_l=cover_k)))
     for number, r in enumerate(run.runs, start=1):

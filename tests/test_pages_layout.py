@@ -279,3 +279,20 @@ def test_every_scale_factor_is_stated_once_on_its_page(handout):
         assert len(keys) == len(set(keys)), (name, statements)
         if name in drawing_pages or name == "cover":
             assert statements, name
+
+
+def test_the_cover_and_the_position_pages_share_k_l_where_it_fits(handout):
+    """One k_l in the handout where the cover's plan of positions fits at the pages' k_l (a review found the
+    Bulgarian linear-arm cover at 0.005 m/mm beside pages saying 0.006 m/mm, "the same for every position");
+    where it does not, the cover's own factor draws it smaller (a larger k_l), never larger."""
+    pages, record = handout
+    cover = dict(_statements(pages["cover"]))["k_l"]
+    common = {_stated(pages[name]).get("k_l") for name, _ in record} - {None}
+    assert len(common) == 1, common
+    (common,) = common
+    assert cover >= common, (cover, common)
+    # the plan of positions across the page's drawable width (A4: 210 mm less 2 × 11 mm margins) at the pages' k_l
+    paths = [line for ax in pages["cover"].axes for line in ax.lines if (line.get_gid() or "").startswith("positions-path-")]
+    width_at_common = (max(max(p.get_xdata()) for p in paths) - min(min(p.get_xdata()) for p in paths)) * cover / common
+    if width_at_common <= 150.0:  # well within the page: the common factor must have been used
+        assert cover == common, (cover, common, width_at_common)
