@@ -78,6 +78,8 @@ MARKERS = ("o", "s", "^", "D", "v", "x", "+", "*")
 NO_ASSEMBLY = {"facecolor": "#d4d4d4", "edgecolor": "#6e6e6e", "hatch": "///"}
 NEAR = {"facecolor": "none", "edgecolor": "#000000", "hatch": "\\\\\\\\"}
 MARK = {"color": "#202020", "lw": 0.7, "ls": "--"}
+#: Size [pt] of every text in a diagram but the page's title and subtitle: tick labels, legends, notes, position numbers.
+TEXT = 8.0
 
 
 def _number(value: float, lang: str, digits: int = 3) -> str:
@@ -257,11 +259,11 @@ def _decorate(ax, x, invalid, near, marks, lang, *, numbers: bool, limits: tuple
         ax.axvline(xm, zorder=0.6, **MARK)
         ax.plot([xm], [1.0], marker="v", ms=3.5, color=MARK["color"], transform=ax.get_xaxis_transform(), clip_on=False, zorder=3, label="_mark")
         if numbers:
-            ax.text(xm, 1.025, str(k), transform=ax.get_xaxis_transform(), ha="center", va="bottom", fontsize=6.5, color="#202020")
+            ax.text(xm, 1.025, str(k), transform=ax.get_xaxis_transform(), ha="center", va="bottom", fontsize=TEXT, color="#202020")
     ax.grid(True, axis="y", lw=0.3, color="#d8d8d8")
     # the zero line where the range holds 0, without pulling 0 into the range (a φ from 140° to 155° stays readable)
     ax.add_artist(Line2D([0.0, 1.0], [0.0, 0.0], transform=ax.get_yaxis_transform(), color="#000000", lw=0.5, zorder=0.7, label="_zero"))
-    ax.tick_params(labelsize=7)
+    ax.tick_params(labelsize=TEXT)
     ax.xaxis.set_major_formatter(_Ticks(lang))
     ax.yaxis.set_major_formatter(_Ticks(lang))
     ax.set_xlim(*limits)
@@ -301,7 +303,7 @@ def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: b
     if has_clipped:
         handles.append(Line2D([], [], color="#000000", ls="none", marker="^", ms=3.5, label=term("clipped", lang)))
     if handles:
-        fig.legend(handles=handles, loc="lower left", bbox_to_anchor=(24 / A4[0], 5 / A4[1]), ncol=2, fontsize=7, frameon=False)
+        fig.legend(handles=handles, loc="lower left", bbox_to_anchor=(24 / A4[0], 5 / A4[1]), ncol=2, fontsize=TEXT, frameon=False)
 
 
 @dataclass
@@ -336,6 +338,54 @@ def _panel(series, valid, lang: str, unit: str, extra_notes=()) -> _Panel:
     if notes:
         notes = [f"{', '.join(notes)}  ({term('constant', lang)})"] if not extra_notes else [", ".join(notes)]
     return _Panel([(" = ".join(names), y) for names, y in curves], notes)
+
+
+#: Angles share a panel only where each one's swing is at least this share of the panel's data range.
+SHARE = 0.5
+
+
+def _angle_panels(panel: _Panel, lang: str) -> list[_Panel]:
+    """The angle panel split so that every angle's swing is readable: links whose swings are alike share a
+    panel, each drawn as its change from the middle of its swing (named ``φ₄ − 112,3°``); a link that
+    swings much less (or much more) than the others gets a panel of its own, drawn as it is.  The notes
+    (the crank's φ, constant angles) go into the first panel."""
+    if len(panel.curves) < 2:
+        return [panel]
+
+    def swing(y):
+        return float(np.nanmax(y) - np.nanmin(y))
+
+    groups: list[list[tuple[str, np.ndarray, float]]] = []
+    for name, y in sorted(panel.curves, key=lambda c: -swing(c[1])):
+        middle = round((float(np.nanmax(y)) + float(np.nanmin(y))) / 2, 1)
+        entry = (name, y, middle)
+        for group in groups:
+            trial = group + [entry]
+            lo = min(float(np.nanmin(v - m)) for _, v, m in trial)
+            hi = max(float(np.nanmax(v - m)) for _, v, m in trial)
+            if all(swing(v) >= SHARE * (hi - lo) for _, v, _ in trial):
+                group.append(entry)
+                break
+        else:
+            groups.append([entry])
+    order = [name for name, _ in panel.curves]  # the links' order within each panel
+    out = []
+    for group in sorted(groups, key=lambda g: min(order.index(n) for n, _, _ in g)):
+        group.sort(key=lambda e: order.index(e[0]))
+        if len(group) == 1:
+            out.append(_Panel([(group[0][0], group[0][1])], []))
+        else:
+            curves: list = []  # links that turn together swing alike: one curve with both names
+            for name, y, m in group:
+                label, d = f"{name} {MINUS if m >= 0 else '+'} {localised(f'{abs(m):.1f}', lang)}°", y - m
+                same = [c for c in curves if np.array_equal(np.isfinite(c[1]), np.isfinite(d)) and np.allclose(c[1][np.isfinite(d)], d[np.isfinite(d)], atol=1e-9)]
+                if same:
+                    same[0][0].append(label)
+                else:
+                    curves.append(([label], d))
+            out.append(_Panel([("\n= ".join(names), d) for names, d in curves], []))  # (a long name: a line each)
+    out[0].notes = list(panel.notes)
+    return out
 
 
 def _well_conditioned(analytic) -> np.ndarray:
@@ -390,7 +440,7 @@ def _clip(ax, x, panel: _Panel, good, lang: str, unit: str) -> bool:
     beyond = [f"{name}: {' / '.join(values)}" for name, values in extremes.items()]
     if beyond:
         ax.text(0.99, 0.97, f"{term('clipped', lang)}: " + ", ".join(beyond) + (f" {unit}" if unit else ""), transform=ax.transAxes,
-                ha="right", va="top", fontsize=6.5, bbox={"facecolor": "white", "edgecolor": "none", "pad": 1.0}, zorder=5)
+                ha="right", va="top", fontsize=TEXT, bbox={"facecolor": "white", "edgecolor": "none", "pad": 1.0}, zorder=5)
     return bool(beyond)
 
 
@@ -409,11 +459,11 @@ def _plot_panel(ax, x, panel: _Panel, ylabel: str, marks=()) -> None:
             markevery=on_marks if on_marks is not None else ((n * step) // max(1, len(panel.curves)), step),
             mfc="white" if n % 2 else COLOURS[n % len(COLOURS)],
         )
-    ax.set_ylabel(ylabel, fontsize=8)
+    ax.set_ylabel(ylabel, fontsize=TEXT)
     if panel.curves:
-        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7, frameon=False, borderaxespad=0.0, handlelength=3.0)
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=TEXT, frameon=False, borderaxespad=0.0, handlelength=3.0)
     if panel.notes:
-        ax.text(0.01, 0.97, "\n".join(panel.notes), transform=ax.transAxes, ha="left", va="top", fontsize=6.5,
+        ax.text(0.01, 0.97, "\n".join(panel.notes), transform=ax.transAxes, ha="left", va="top", fontsize=TEXT,
                 bbox={"facecolor": "white", "edgecolor": "none", "pad": 1.0}, zorder=5)
 
 
@@ -458,15 +508,18 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     subtitle = user_text(scene.title)
     out = []
 
-    def page(name, words, panels):
+    def page(name, words, quantities):
+        panels = []
+        for quantity, ylabel, unit in quantities:
+            panel = _quantity_panel(analytic, quantity, valid, lang, unit, start=start)
+            panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang) if quantity == "phi" else [panel])]
         fig, axes = _page(title, subtitle + "\n" + words, len(panels))
         clipped = False
-        for ax, (quantity, ylabel, unit) in zip(axes, panels):
-            panel = _quantity_panel(analytic, quantity, valid, lang, unit, start=start)
+        for ax, (panel, ylabel, unit) in zip(axes, panels):
             _plot_panel(ax, x, panel, ylabel, marks)
             _decorate(ax, x, invalid, near, marks, lang, numbers=ax is axes[0], limits=limits)
             clipped |= _clip(ax, x, panel, good, lang, unit)
-        axes[-1].set_xlabel(f"{xlabel}  —  {xwords}", fontsize=8)
+        axes[-1].set_xlabel(f"{xlabel}  —  {xwords}", fontsize=TEXT + 1)
         if ticks is not None:
             axes[-1].set_xticks(ticks)
             axes[-1].set_xlim(*limits)
@@ -610,5 +663,5 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
         if ticks is not None:
             ax.set_xticks(ticks)
             ax.set_xlim(*limits)
-        ax.set_xlabel(xlabel, fontsize=8)
+        ax.set_xlabel(xlabel, fontsize=TEXT + 1)
     return [line for line in ax.get_lines() if not line.get_label().startswith("_")]
