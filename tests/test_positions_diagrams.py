@@ -68,8 +68,10 @@ def test_angles_are_continuous_and_the_csvs_up_to_whole_turns(rocker_limit, caps
     capsys.readouterr()
     assert status == 0
     rows = list(csv.DictReader(io.StringIO((tmp_path / "rl.csv").read_text())))
-    line = _curves(figures["links"].axes[0])["φ₄"]
-    curve = np.asarray(line.get_ydata(), dtype=float)
+    # φ₄ shares its panel with φ₃: drawn as its change from the middle of its swing, the middle in its name
+    ((label, line),) = [(k, v) for ax in figures["links"].axes for k, v in _curves(ax).items() if k.startswith("φ₄")]
+    middle = float(label.split("\u2212")[1].rstrip("°")) if "\u2212" in label else 0.0
+    curve = np.asarray(line.get_ydata(), dtype=float) + middle
     # the diagram runs over the arc where it assembles (before position 0 negative): row k of the CSV is Δφ = k°
     rows_at = np.round(np.asarray(line.get_xdata(), dtype=float)).astype(int) % 360
     from_csv = np.array([float(r["4.phi_deg"]) if r["4.phi_deg"] else np.nan for r in rows])[rows_at]
@@ -118,14 +120,15 @@ def test_nothing_flat_and_nothing_twice_and_every_curve_its_own_style():
 def test_constants_of_the_scene_are_written_not_drawn():
     six = _sweep("six-bar", 72)
     links = dict(draw_cycle_diagrams(six.cycle))["links"]
-    assert "ω₂" not in _curves(links.axes[1]) and "ε₂" not in _curves(links.axes[2]) and "φ₂" not in _curves(links.axes[0])
-    assert "ω₂ = \u221210.0 rad/s  (the same at every position)" in _notes(links.axes[1])  # ω = −10 rad/s in six-bar.toml
+    omega_axis, epsilon_axis = links.axes[-2:]  # (the angles take one panel or more: ω and ε are the last two)
+    assert "ω₂" not in _curves(omega_axis) and "ε₂" not in _curves(epsilon_axis) and not any(k.startswith("φ₂") for ax in links.axes[:-2] for k in _curves(ax))
+    assert "ω₂ = \u221210.0 rad/s  (the same at every position)" in _notes(omega_axis)  # ω = −10 rad/s in six-bar.toml
     assert "φ₂ = 55.00° \u2212 Δφ" in _notes(links.axes[0])  # clockwise from 55°
     arm = _sweep("linear-arm", 40)
     figures = dict(draw_cycle_diagrams(arm.cycle))
     assert "φ₂ = 0  (the same at every position)" in _notes(figures["links"].axes[0])
     # the rod 3 and the rocker 4 carrying its welded sleeve turn together: one curve, both names
-    omega = _curves(figures["links"].axes[1])
+    omega = _curves(figures["links"].axes[-2])
     assert "ω₃ = ω₄" in omega and "ω₃" not in omega and "ω₄" not in omega
     assert np.allclose(omega["ω₃ = ω₄"].get_ydata(), arm.cycle.links["4"].omega)
     # the quick-return's block E slides on a frame guide: no Coriolis acceleration, said once
@@ -180,13 +183,15 @@ def test_an_angle_panel_is_not_pulled_down_to_zero():
     import plans
     from plans.drawing.diagrams import draw_cycle_diagrams
 
-    scene = plans.load(plans.example_path("four-bar"))
+    # (the quick-return's φ₄, about 60°…120°, has a panel of its own: angles sharing a panel are drawn as their
+    # change from the middle of the swing, which holds 0 by design)
+    scene = plans.load(plans.example_path("quick-return"))
     sweep = plans.solve(scene, np.radians(np.arange(0.0, 360.0, 5.0)), allow_partial=True)
-    phi = {name: np.degrees(np.unwrap(np.asarray(link.phi))) % 360.0 for name, link in sweep.links.items()}
+    phi = np.degrees(np.unwrap(np.asarray(sweep.links["4"].phi))) % 360.0
     figures = dict(draw_cycle_diagrams(sweep))
-    bottom, top = figures["links"].axes[0].get_ylim()
-    lows = [float(np.min(v)) for name, v in phi.items() if name != scene.driver.link]
-    assert bottom > 0.0 or min(lows) <= 0.0  # 0 is in the range only when an angle reaches it
+    (ax,) = [ax for ax in figures["links"].axes if list(_curves(ax)) == ["φ₄"]]
+    bottom, top = ax.get_ylim()
+    assert float(np.min(phi)) > 0.0 and bottom > 0.0  # 0 is in the range only when the angle reaches it
 
 
 def test_curve_markers_sit_on_the_marked_positions():
