@@ -314,6 +314,8 @@ class _Panel:
 
     curves: list
     notes: list
+    #: each curve's colour, line style and marker by number (the angles split over panels keep their link's)
+    styles: list | None = None
 
 
 def _panel(series, valid, lang: str, unit: str, extra_notes=()) -> _Panel:
@@ -375,9 +377,10 @@ def _angle_panels(panel: _Panel, lang: str) -> list[_Panel]:
     for group in sorted(groups, key=lambda g: min(order.index(n) for n, _, _ in g)):
         group.sort(key=lambda e: order.index(e[0]))
         if len(group) == 1:
-            out.append(_Panel([(group[0][0], group[0][1])], []))
+            out.append(_Panel([(group[0][0], group[0][1])], [], [order.index(group[0][0])]))
         else:
             curves: list = []  # links that turn together swing alike: one curve with both names
+            styles = []
             for name, y, m in group:
                 label, d = f"{name} {MINUS if m >= 0 else '+'} {localised(f'{abs(m):.1f}', lang)}°", y - m
                 same = [c for c in curves if np.array_equal(np.isfinite(c[1]), np.isfinite(d)) and np.allclose(c[1][np.isfinite(d)], d[np.isfinite(d)], atol=1e-9)]
@@ -385,7 +388,8 @@ def _angle_panels(panel: _Panel, lang: str) -> list[_Panel]:
                     same[0][0].append(label)
                 else:
                     curves.append(([label], d))
-            out.append(_Panel([("\n= ".join(names), d) for names, d in curves], []))  # (a long name: a line each)
+                    styles.append(order.index(name))
+            out.append(_Panel([("\n= ".join(names), d) for names, d in curves], [], styles))  # (a long name: a line each)
     out[0].notes = list(panel.notes)
     return out
 
@@ -454,11 +458,12 @@ def _plot_panel(ax, x, panel: _Panel, ylabel: str, marks=()) -> None:
     """
     step = max(1, len(x) // 10)
     on_marks = sorted({int(np.nanargmin(np.abs(x - xm))) for _, xm in marks}) if len(marks) else None
-    for n, (label, y) in enumerate(panel.curves):
+    for k, (label, y) in enumerate(panel.curves):
+        n = panel.styles[k] if panel.styles else k
         ax.plot(
             x, y, color=COLOURS[n % len(COLOURS)], ls=STYLES[n % len(STYLES)], lw=1.1, label=label,
             marker=MARKERS[n % len(MARKERS)], ms=3.2,
-            markevery=on_marks if on_marks is not None else ((n * step) // max(1, len(panel.curves)), step),
+            markevery=on_marks if on_marks is not None else ((k * step) // max(1, len(panel.curves)), step),
             mfc="white" if n % 2 else COLOURS[n % len(COLOURS)],
         )
     ax.set_ylabel(ylabel, fontsize=TEXT)
