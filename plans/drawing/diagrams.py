@@ -391,6 +391,10 @@ def _angle_panels(panel: _Panel, lang: str) -> list[_Panel]:
                     styles.append(order.index(name))
             out.append(_Panel([("\n= ".join(names), d) for names, d in curves], [], styles))  # (a long name: a line each)
     out[0].notes = list(panel.notes)
+    # styles numbered over all the angle panels in the links' order, links drawn as one counted once (as in ω, ε)
+    ranks = {n: r for r, n in enumerate(sorted({n for p in out for n in p.styles}))}
+    for p in out:
+        p.styles = [ranks[n] for n in p.styles]
     return out
 
 
