@@ -20,6 +20,12 @@ Conventions, the same as :mod:`plans.positions` and ``plans sweep``:
   interval without assembly too) and starts in [0°, 360°): it differs from
   the CSV's angle in [0, 360) by whole turns only.  The crank's own φ is the
   horizontal axis and is not drawn again: the panel says how it relates.
+  Each angle is drawn over its own swing: links whose swings are alike share a
+  panel, each as its change from the middle of its swing (``φ₄ − 112,3°`` in
+  the legend); a link that swings less than :data:`SHARE` of the panel's range
+  gets a panel of its own, drawn as it is (see :func:`_angle_panels`).
+* Every text of a diagram (ticks, legends, notes, position numbers) is
+  :data:`TEXT` pt; the positions' lines are one thin width (:data:`MARK`).
 * A quantity constant by the scene (the crank's ω and ε, the angle of a
   linear driver, |aᵏ| on a guide that does not turn) is not drawn as a flat
   curve but written in the panel; curves equal at every position (links
