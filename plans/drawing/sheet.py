@@ -206,14 +206,32 @@ class _Figure:
         self.size = size  # (width, height) of the geometry [m, m/s or m/s²]: what the targets measure
         #: (width, height) of what is drawn to scale [m …]: the geometry, and a mechanism's guides over their travel
         self.reach = reach or size
+        self.at: dict[float, tuple[float, float]] = {}  # factor -> what the drawing took beyond its geometry, drawn at it
         self.largest = largest  # a plan's largest vector [m/s or m/s²]
         self.fixed = fixed  # (width, height) [mm] of labels, supports, margins, caption and legend
         self.k = k  # the factor it is drawn at now
         self.given = given  # the factor is the user's: kept as it is
 
     def fit(self, w: float, h: float, ladder) -> float | None:
-        """The factor with which this drawing fills a box *w* × *h* [mm] (None: it cannot fit)."""
-        gw, gh = w - self.fixed[0] - FIT_SLACK, h - self.fixed[1] - FIT_SLACK
+        """The factor with which this drawing fills a box *w* × *h* [mm] (None: it cannot fit).
+
+        Where the drawing was measured at the factor found (:attr:`at`), what it took there is used
+        instead, and a larger factor taken when that does not fit (a plan's enlarged detail is drawn at
+        some factors only).
+        """
+        k = self._fit(w, h, ladder, self.fixed)
+        for _ in range(4):
+            measured = next((f for at, f in self.at.items() if k is not None and math.isclose(at, k, rel_tol=1e-9)), None)
+            if measured is None:
+                break
+            again = self._fit(w, h, ladder, measured)
+            if again is None or again <= k * (1 + 1e-9):
+                return k if again is not None else None
+            k = again
+        return k
+
+    def _fit(self, w: float, h: float, ladder, fixed) -> float | None:
+        gw, gh = w - fixed[0] - FIT_SLACK, h - fixed[1] - FIT_SLACK
         if gw <= 5.0 or gh <= 5.0:
             return None
         rw, rh = self.reach
@@ -713,6 +731,8 @@ def sheet_scales(
     fixed : dict, optional
         Kind -> what each drawing takes beyond its geometry [mm]
         (:func:`fixed_parts`); by default measured by drawing *solution* once.
+        Its key ``"at"``, if any: kind -> {factor -> what the drawing took when drawn at that factor},
+        used at those factors instead.
     mantissas : sequence of float
         The round mantissas allowed.
 
@@ -733,6 +753,7 @@ def sheet_scales(
         size, largest = _geometry(solution, kind)
         figures[kind] = _Figure(kind, size, largest, fixed.get(kind, ESTIMATED_FIXED[kind]), given.get(key, solution.scales[key]), key in given,
                                 _reach(solution) if kind == "mechanism" else None)
+        figures[kind].at = dict(fixed.get("at", {}).get(kind, {}))
     best = _choose_scales(figures, options, sum(tb_heights), mantissas)
     if best is None or best[4] < 1.0:  # a drawing short of its target: the tables a point smaller, if that helps
         with drawing_rc():
