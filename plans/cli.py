@@ -597,6 +597,9 @@ def _draw(args) -> int:
 #: A sheet that fits A3 is drawn again at the factors its own measurements give only when they make its
 #: drawings this much larger (:func:`plans.drawing.sheet.drawn_score`).
 REFIT_GAIN = 1.05
+#: A drawing that takes this much more [mm] beyond its geometry than on the sheet before draws a part at some
+#: factors only (a plan's enlarged detail): the re-fit charges it at the factor it was measured at.
+PART_AT_SOME_FACTORS = 20.0
 
 
 def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=None):
@@ -608,7 +611,7 @@ def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=N
     itself; when that gives other factors, the sheet is drawn once more at those (kept if it fits A3, or if
     the first did not, or if its drawings are larger).
     """
-    from .drawing.sheet import ESTIMATED_FIXED, SHEET_FIRST, drawn_score
+    from .drawing.sheet import _KEYS, ESTIMATED_FIXED, SHEET_FIRST, drawn_score
 
     scales = choose(graphical, fixed or ESTIMATED_FIXED)
     if scales != graphical.scales:
@@ -618,14 +621,36 @@ def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=N
         return graphical, figure
     if figure.plans_sheet.format == SHEET_FIRST and drawn_score(graphical, least=True) >= 1.0 and fixed is not None:
         return graphical, figure  # fits A3 and every drawing reaches its size, from another sheet's measurements
-    again = choose(graphical, figure.plans_sheet.fixed)
-    fits = figure.plans_sheet.format == SHEET_FIRST
+    first = figure.plans_sheet
+    measured = {kind: {graphical.scales[_KEYS[kind]]: f} for kind, f in first.fixed.items()}
+    own = dict(first.fixed)
+    for kind, f in first.fixed.items():
+        before = (fixed or {}).get(kind)
+        if before is not None and max(f[0] - before[0], f[1] - before[1]) > PART_AT_SOME_FACTORS:
+            # much more than on the sheet before: a part drawn at some factors only (a plan's enlarged detail),
+            # charged at this factor, not at the others
+            own[kind] = tuple(map(min, f, before))
+    again = choose(graphical, {**own, "at": measured})
+    fits = first.format == SHEET_FIRST
     if again == graphical.scales or fits and drawn_score(graphical, again) < REFIT_GAIN * drawn_score(graphical):
         return graphical, figure  # drawn again only to fit A3, or for drawings noticeably larger
     second = construct_at(again)
     second_figure = draw(second)
     second_fits = second_figure.plans_sheet.format == SHEET_FIRST
-    if second_fits and (not fits or drawn_score(second) > drawn_score(graphical)) or not fits:
+    if second_fits and (not fits or drawn_score(second) > drawn_score(graphical)):
+        return second, second_figure
+    if not second_fits and (not fits or drawn_score(graphical, least=True) < 1.0):
+        # the second took more than chosen for (a part drawn at its factors only): chosen once more with what
+        # both drawings measured at their factors, kept if it fits A3 (and beats a first that fits)
+        for kind, f in second_figure.plans_sheet.fixed.items():
+            measured.setdefault(kind, {})[second.scales[_KEYS[kind]]] = f
+        third = choose(graphical, {**first.fixed, "at": measured})
+        if third not in (graphical.scales, second.scales) and (not fits or drawn_score(graphical, third) > drawn_score(graphical)):
+            third_solution = construct_at(third)
+            third_figure = draw(third_solution)
+            if third_figure.plans_sheet.format == SHEET_FIRST:
+                return third_solution, third_figure
+    if not fits:
         return second, second_figure
     return graphical, figure
 

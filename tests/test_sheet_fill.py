@@ -149,13 +149,12 @@ def test_the_rocker_limit_crank_is_larger_than_its_omega_arc_and_o_is_clear_of_t
     assert _disjoint(label, ink(root, "mech-epsilon-head")), (label, ink(root, "mech-epsilon-head"))
 
 
-@pytest.mark.parametrize("example, count", [("ladder", 12), ("six-bar", 4), ("rocker-limit", 4), ("linear-arm", 12)])
-def test_position_sheets_fill_a3_too(example, count, tmp_path):
-    assert main(["draw", "--example", example, "--positions", str(count), "-o", str(tmp_path)]) == 0
+def _check_position_sheets(example, count, out):
+    """Every sheet of ``draw --positions`` in *out*: A3, the sizes reached, ink inside the frame, drawings apart."""
     scene = plans.load(plans.example_path(example))
     values = parse_positions(count, scene)
     analytic = plans.solve(scene, np.asarray(values, dtype=float), allow_partial=True)
-    written = sorted(tmp_path.glob("sheet-*.svg"))
+    written = sorted(out.glob("sheet-*.svg"))
     assert written
     for path in written:
         index = int(path.stem.split("-")[1])
@@ -172,6 +171,32 @@ def test_position_sheets_fill_a3_too(example, count, tmp_path):
         for kind, box in boxes.items():
             assert _inside(box, frame) and _disjoint(box, rect(root, "sheet-title-block")), (path.name, kind)
         assert all(_disjoint(a, b) for i, a in enumerate(boxes.values()) for b in list(boxes.values())[i + 1:]), path.name
+    return written
+
+
+@pytest.mark.parametrize("example, count", [("six-bar", 4), ("rocker-limit", 4)])
+def test_position_sheets_fill_a3_too(example, count, tmp_path):
+    assert main(["draw", "--example", example, "--positions", str(count), "-o", str(tmp_path)]) == 0
+    _check_position_sheets(example, count, tmp_path)
+
+
+@pytest.fixture(scope="module", params=plans.example_names())
+def twelve(request, tmp_path_factory):
+    """``draw --example NAME --positions 12``, written once per example."""
+    out = tmp_path_factory.mktemp(f"{request.param}-12")
+    assert main(["draw", "--example", request.param, "--positions", "12", "-o", str(out)]) == 0
+    return request.param, out
+
+
+def test_every_example_s_twelve_position_sheets_fill_a3(twelve):
+    """Issue 11 §1 on every sheet of every bundled example at 12 positions (99 sheets: rocker-limit solves 3 of 12)."""
+    example, out = twelve
+    written = _check_position_sheets(example, 12, out)
+    scene = plans.load(plans.example_path(example))
+    analytic = plans.solve(scene, np.asarray(parse_positions(12, scene), dtype=float), allow_partial=True)
+    solved = [i for i in range(12) if all(np.isfinite(complex(m.r[i])) for m in analytic.points.values())]
+    # a sheet for every position the analytic solution reaches, and none other
+    assert [int(p.stem.split("-")[1]) for p in written] == solved, example
 
 
 def test_a_long_title_is_broken_into_lines_inside_the_title_block(tmp_path):

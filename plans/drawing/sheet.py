@@ -15,6 +15,7 @@ figures too large for A3.
 
 from __future__ import annotations
 
+import cmath
 import itertools
 import math
 import re
@@ -199,23 +200,45 @@ class SheetLayout:
 class _Figure:
     """A drawing to place: its geometry's physical size, its largest vector, what it takes beyond its geometry [mm]."""
 
-    def __init__(self, kind: str, size: tuple[float, float], largest: float, fixed: tuple[float, float], k: float, given: bool):
+    def __init__(self, kind: str, size: tuple[float, float], largest: float, fixed: tuple[float, float], k: float, given: bool,
+                 reach: tuple[float, float] | None = None):
         self.kind = kind
-        self.size = size  # (width, height) of the geometry [m, m/s or m/s²]
+        self.size = size  # (width, height) of the geometry [m, m/s or m/s²]: what the targets measure
+        #: (width, height) of what is drawn to scale [m …]: the geometry, and a mechanism's guides over their travel
+        self.reach = reach or size
+        self.at: dict[float, tuple[float, float]] = {}  # factor -> what the drawing took beyond its geometry, drawn at it
         self.largest = largest  # a plan's largest vector [m/s or m/s²]
         self.fixed = fixed  # (width, height) [mm] of labels, supports, margins, caption and legend
         self.k = k  # the factor it is drawn at now
         self.given = given  # the factor is the user's: kept as it is
 
     def fit(self, w: float, h: float, ladder) -> float | None:
-        """The factor with which this drawing fills a box *w* × *h* [mm] (None: it cannot fit)."""
-        gw, gh = w - self.fixed[0] - FIT_SLACK, h - self.fixed[1] - FIT_SLACK
+        """The factor with which this drawing fills a box *w* × *h* [mm] (None: it cannot fit).
+
+        Where the drawing was measured at the factor found (:attr:`at`), what it took there is used
+        instead, and a larger factor taken when that does not fit (a plan's enlarged detail is drawn at
+        some factors only).
+        """
+        k = self._fit(w, h, ladder, self.fixed)
+        for _ in range(4):
+            measured = next((f for at, f in self.at.items() if k is not None and math.isclose(at, k, rel_tol=1e-9)), None)
+            if measured is None:
+                break
+            again = self._fit(w, h, ladder, measured)
+            if again is None or again <= k * (1 + 1e-9):
+                return k if again is not None else None
+            k = again
+        return k
+
+    def _fit(self, w: float, h: float, ladder, fixed) -> float | None:
+        gw, gh = w - fixed[0] - FIT_SLACK, h - fixed[1] - FIT_SLACK
         if gw <= 5.0 or gh <= 5.0:
             return None
-        if self.given or not (self.size[0] > 0 or self.size[1] > 0):
+        rw, rh = self.reach
+        if self.given or not (rw > 0 or rh > 0):
             k = self.k
-            return k if self.size[0] / k <= gw + 1e-9 and self.size[1] / k <= gh + 1e-9 else None
-        return ladder(max(self.size[0] / gw, self.size[1] / gh))
+            return k if rw / k <= gw + 1e-9 and rh / k <= gh + 1e-9 else None
+        return ladder(max(rw / gw, rh / gh))
 
     def ratios(self, k: float) -> list[float]:
         """The drawn size at *k* over what the sheet aims at (see :data:`MECHANISM_ACROSS_MM`)."""
@@ -249,6 +272,31 @@ def _geometry(solution, kind: str) -> tuple[tuple[float, float], float]:
     return (w * plan.scale, h * plan.scale), largest * plan.scale
 
 
+def _reach(solution) -> tuple[float, float]:
+    """(width, height) [m] of the mechanism's points and of its guides and slots over the travel the drawing
+    gives them (``solution.travel``, metres along each line from its origin; see
+    :meth:`plans.drawing.mechanism.MechanismDrawing._travel`): all of it scales with k_l, none of it is fixed."""
+    points = [complex(z) for z in solution.positions.values()]
+    travel = getattr(solution, "travel", None) or {}
+    if not points or not travel:
+        return _bbox(points)
+    w, h = _bbox(points)
+    size = math.hypot(w, h)
+    ends = list(points)
+    for key, span in travel.items():
+        body, _, name = key.partition(".")
+        line = getattr(solution.scene.bodies.get(body), "lines", {}).get(name)
+        if line is None:
+            continue
+        phi, at = (0.0, 0j) if body not in solution.poses else solution.poses[body]
+        origin = complex(at) + cmath.exp(1j * phi) * complex(line.origin)
+        u = cmath.exp(1j * (phi + line.angle))
+        along = [((z - origin) * u.conjugate()).real for z in points]
+        lo, hi = min(along) - size, max(along) + size
+        ends += [origin + u * min(max(float(t), lo), hi) for t in span if math.isfinite(t)]
+    return _bbox(ends)
+
+
 def drawn_score(solution, scales: dict | None = None, *, least: bool = False) -> float:
     """How large the drawings of *solution* are, at its factors (or at *scales*), against what a sheet aims at.
 
@@ -274,6 +322,8 @@ def fixed_parts(solution, blocks: dict) -> dict[str, tuple[float, float]]:
     out = {}
     for kind, block in blocks.items():
         (w, h), _ = _geometry(solution, kind)
+        if kind == "mechanism":
+            w, h = _reach(solution)
         k = solution.scales[_KEYS[kind]]
         out[kind] = (max(block.width - w / k, 0.0), max(block.height - h / k, 0.0))
     return out
@@ -387,7 +437,7 @@ def _text_options(texts):
                 yield order
 
 
-def _arrangements(inner, tb, texts, kinds):
+def _arrangements(inner, tb, texts, kinds, strips=()):
     """Every arrangement tried on a sheet: (placed texts [(block, x, y)], [(region, tree of kinds)]), in content coordinates.
 
     *inner* is the content's (width, height) [mm], *tb* the title block's left
@@ -457,6 +507,15 @@ def _arrangements(inner, tb, texts, kinds):
                             continue
                         for order in itertools.permutations(kinds):
                             yield placed_texts, list(zip((left, one, two), order))
+    if "mechanism" in kinds and len(kinds) > 1:  # a mechanism too wide for the left region: a strip across the top
+        rest = [k for k in kinds if k != "mechanism"]
+        for strip in strips:
+            dy = strip + GAP
+            if tb_y - dy < 60.0:
+                continue
+            for placed_texts, regions in _arrangements((width, height - dy), (tb_x, tb_y - dy), texts, rest):
+                yield ([(b, x, y + dy) for b, x, y in placed_texts],
+                       [((0.0, 0.0, width, strip), "mechanism")] + [((x, y + dy, w, h), tree) for (x, y, w, h), tree in regions])
 
 
 def _overlap(a, b) -> bool:
@@ -503,7 +562,7 @@ def _score(ratios) -> float:
     return min(ratios) + 0.2 * sum(ratios) / len(ratios) if ratios else 0.0
 
 
-def _choose_scales(figures: dict, options, tb_h: float, mantissas):
+def _choose_scales(figures: dict, options, tb_h: float, mantissas, strips=()):
     """(format, page, scales) of the arrangement whose drawings, each filling its box, are largest.
 
     *options* are the lists of text blocks to try (the readings side by side,
@@ -554,7 +613,7 @@ def _choose_scales(figures: dict, options, tb_h: float, mantissas):
         coarse = []
         kept: list[float] = []  # the FINE_TRIES best coarse scores so far, best first
         for texts in options:
-            for _, regions in _arrangements(inner, tb, texts, kinds):
+            for _, regions in _arrangements(inner, tb, texts, kinds, strips):
                 # each drawing given its whole region: an arrangement that cannot beat the ones kept is not split
                 alone = [best_in(kind, region, COARSE_SHARES) for region, tree in regions for kind in _leaves(tree)]
                 if any(r is None for r in alone):
@@ -584,7 +643,8 @@ def _choose_places(drawings: dict, texts, tb_h: float):
     for name, page in _formats():
         inner, tb = _content(page, tb_h)
         best = None
-        for texts_placed, regions in _arrangements(inner, tb, texts, kinds):
+        wide = "mechanism" in sizes and sizes["mechanism"][0] > tb[0] - GAP  # wider than the left region can be
+        for texts_placed, regions in _arrangements(inner, tb, texts, kinds, (sizes["mechanism"][1],) if wide else ()):
             fill = math.inf
             for (_, _, w, h), tree in regions:
                 nw, nh = _natural(tree, sizes)
@@ -671,6 +731,8 @@ def sheet_scales(
     fixed : dict, optional
         Kind -> what each drawing takes beyond its geometry [mm]
         (:func:`fixed_parts`); by default measured by drawing *solution* once.
+        Its key ``"at"``, if any: kind -> {factor -> what the drawing took when drawn at that factor},
+        used at those factors instead.
     mantissas : sequence of float
         The round mantissas allowed.
 
@@ -689,7 +751,9 @@ def sheet_scales(
     for kind in _objects(solution):
         key = _KEYS[kind]
         size, largest = _geometry(solution, kind)
-        figures[kind] = _Figure(kind, size, largest, fixed.get(kind, ESTIMATED_FIXED[kind]), given.get(key, solution.scales[key]), key in given)
+        figures[kind] = _Figure(kind, size, largest, fixed.get(kind, ESTIMATED_FIXED[kind]), given.get(key, solution.scales[key]), key in given,
+                                _reach(solution) if kind == "mechanism" else None)
+        figures[kind].at = dict(fixed.get("at", {}).get(kind, {}))
     best = _choose_scales(figures, options, sum(tb_heights), mantissas)
     if best is None or best[4] < 1.0:  # a drawing short of its target: the tables a point smaller, if that helps
         with drawing_rc():
@@ -697,6 +761,17 @@ def sheet_scales(
         found = _choose_scales(figures, smaller, sum(tb_heights), mantissas)
         if found is not None and (best is None or (_FORMAT_ORDER[found[0]], -found[3]) < (_FORMAT_ORDER[best[0]], -best[3] * SMALLER_GAIN)):
             best = found
+    mechanism = figures.get("mechanism")
+    if (best is None or best[4] < 1.0) and mechanism is not None and not mechanism.given and max(mechanism.size) > 0:
+        # the mechanism across the top of the sheet, at the largest round factors that draw it 100 mm across or more
+        need = max(mechanism.size) / MECHANISM_ACROSS_MM
+        e = math.floor(math.log10(need))
+        ks = sorted((k for k in (float(f"{m}e{d}") for d in (e - 1, e) for m in mantissas) if k <= need * (1 + 1e-12)), reverse=True)[:2]
+        strips = tuple(mechanism.reach[1] / k + mechanism.fixed[1] + FIT_SLACK + 0.5 for k in ks)
+        for texts in (options, smaller):
+            found = _choose_scales(figures, texts, sum(tb_heights), mantissas, strips)
+            if found is not None and (best is None or (_FORMAT_ORDER[found[0]], -found[4], -found[3]) < (_FORMAT_ORDER[best[0]], -best[4], -best[3])):
+                best = found
     if best is None:  # nothing fits A0: the factors as they are
         return dict(solution.scales)
     return {_KEYS[kind]: k for kind, k in best[2].items()}
