@@ -606,7 +606,8 @@ class MechanismDrawing:
                 height = on_guide
             base = q + d * height
             left, right = base + n * half, base - n * half
-            self.s.polygon([q, left, right], fc="white", lw=0.8, gid=f"ground-{name}", zorder=2.5)
+            # under the links (at 2.0): a crank turning over its support, which stays put, is drawn over it
+            self.s.polygon([q, left, right], fc="white", lw=0.8, gid=f"ground-{name}", zorder=1.95)
             if under_block:
                 # the support's sides reach the pin over the swinging block (the sleeve turns
                 # about E): drawn under it, the triangle would seem to lean on the block's edge
@@ -614,7 +615,7 @@ class MechanismDrawing:
             if on_guide is not None:
                 continue  # the guide's own hatching is its ground: not drawn twice
             a, b = base + n * (half + 2.0), base - n * (half + 2.0)
-            self.s.line([a, b], lw=1.0, gid="ground-base", zorder=2.5)
+            self.s.line([a, b], lw=1.0, gid="ground-base", zorder=1.95)
             self._hatch(b, a, d)
 
     def _support_footprint(self, q: complex, d: complex, height: float):
