@@ -347,11 +347,19 @@ class MechanismDrawing:
                     a = origin + u * lo + n * side * gap
                     b = origin + u * hi + n * side * gap
                     spans = []
+                    # the band the hatching takes on this side (its strokes lean back along the line)
+                    out = n * side * (HATCH_LEN + 0.4)
+                    ext = u * (HATCH_LEN + 0.5)
+                    band = ShapelyPolygon([(z.real, z.imag) for z in (a - ext, b + ext, b + ext + out, a - ext + out)])
                     for q, r in crossing:
-                        hit = LineString([(a.real, a.imag), (b.real, b.imag)]).intersection(LineString([(q.real, q.imag), (r.real, r.imag)]))
+                        rod = LineString([(q.real, q.imag), (r.real, r.imag)])
+                        hit = LineString([(a.real, a.imag), (b.real, b.imag)]).intersection(rod)
                         if hit.geom_type == "Point":
                             t = ((complex(hit.x, hit.y) - a) * u.conjugate()).real
-                            spans.append((a + u * (t - 2.0), a + u * (t + 2.0)))
+                            # the gap reaches over where the link runs through the hatching beyond the line
+                            across = rod.buffer(BAR_PT * MM_PER_PT / 2 + 0.3).intersection(band)
+                            ts = [((complex(x, y) - a) * u.conjugate()).real for x, y in (across.exterior.coords if across.geom_type == "Polygon" else [])]
+                            spans.append((a + u * (min([t] + ts) - 2.0), a + u * (max([t] + ts) + 2.0)))
                     for p0, p1 in _outside(a, b, spans):
                         if abs(p1 - p0) < 1.0:
                             continue
