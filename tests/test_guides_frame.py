@@ -143,7 +143,12 @@ def test_the_crank_s_support_stays_below_its_pivot_and_the_crank_is_drawn_over_i
     # six-bar: 12 positions of the crank every 30°; no direction is clear of it: the support stands below O
     for _, artists in _pages("six-bar"):
         assert abs(_support(artists, "O") - (-1j)) < 1e-9
-        assert _gid(artists, "mech-link-2").get_zorder() > _gid(artists, "mech-ground-O").get_zorder()
+        # the crank from O (its direction as the pins give it) is drawn over the support's triangle
+        over = _gid(artists, "mech-link-2-at-O")
+        ends = [complex(x, y) for x, y in zip(*over.get_data())]
+        o, a = _pin(artists, "O"), _pin(artists, "A")
+        assert abs(ends[0] - o) < 1e-9 and abs(((ends[1] - o) / (a - o)).imag) < 1e-9 and ((ends[1] - o) / (a - o)).real > 0
+        assert over.get_zorder() > _gid(artists, "mech-ground-O").get_zorder()
 
 
 def test_the_quick_return_ram_runs_in_one_guideway_at_every_position():

@@ -614,8 +614,16 @@ class MechanismDrawing:
                 height = on_guide
             base = q + d * height
             left, right = base + n * half, base - n * half
-            # under the links (at 2.0): a crank turning over its support, which stays put, is drawn over it
-            self.s.polygon([q, left, right], fc="white", lw=0.8, gid=f"ground-{name}", zorder=1.95)
+            self.s.polygon([q, left, right], fc="white", lw=0.8, gid=f"ground-{name}", zorder=2.5)
+            # a link from the pivot runs over its support (a crank turning over a support that stays put)
+            reach = height + HATCH_LEN + 1.0
+            for body in self.scene.bodies_with(name):
+                end = getattr(self, "bars", {}).get(body)
+                if body == FRAME or end is None or body in getattr(self, "slot_spans", {}):
+                    continue
+                far = end[1] if abs(end[0] - q) < abs(end[1] - q) else end[0]
+                if abs(far - q) > 1e-9:
+                    self.s.line([q, q + unit(far - q) * min(reach, abs(far - q))], lw=BAR_PT, gid=f"link-{body}-at-{name}", zorder=2.55, capstyle="round", obstacle=False)
             if under_block:
                 # the support's sides reach the pin over the swinging block (the sleeve turns
                 # about E): drawn under it, the triangle would seem to lean on the block's edge
@@ -623,7 +631,7 @@ class MechanismDrawing:
             if on_guide is not None:
                 continue  # the guide's own hatching is its ground: not drawn twice
             a, b = base + n * (half + 2.0), base - n * (half + 2.0)
-            self.s.line([a, b], lw=1.0, gid="ground-base", zorder=1.95)
+            self.s.line([a, b], lw=1.0, gid="ground-base", zorder=2.5)
             self._hatch(b, a, d)
 
     def _support_footprint(self, q: complex, d: complex, height: float):
