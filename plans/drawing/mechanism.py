@@ -9,7 +9,11 @@ What is drawn: links as bars between their extreme points, a link with three
 or more points not on one line as a light plate; pins (points shared by two
 bodies) as circles and other reported points as dots; frame pivots with the
 ground symbol; frame guides that something slides on as hatched lines, on
-the side away from the links; lines carried by moving links (slot, rod);
+the side away from the links (or a guideway hatched both ways when the links
+pass to both sides in the cycle); given the mechanism over the cycle (the
+solution's ``cycle_poses``), each guide's hatched side and each support's
+direction are chosen once for the cycle, so every position stands on the same
+frame; lines carried by moving links (slot, rod);
 slider blocks and sleeves as rectangles along their lines; the driver's ω
 (and ε when not zero) as curved arrows, or a linear driver's v (and a) as
 straight ones; labels of the reported points and the frame pivots; link
