@@ -20,10 +20,12 @@ import cmath
 import math
 import re
 import xml.etree.ElementTree as ET
+from dataclasses import replace
 
 import pytest
 from matplotlib.collections import LineCollection
 from shapely.geometry import LineString, Point, Polygon
+from shapely.ops import unary_union
 
 from plans.cli import main
 from plans.drawing import draw_mechanism
@@ -38,8 +40,6 @@ def _pages(name, positions="12"):
     for r in run.runs:
         assert r.ok
         g = r.graphical
-        from dataclasses import replace
-
         g = replace(g, travel={k: t for k, t in g.travel.items() if not k.startswith("frame.")})
         out.append((g, draw_mechanism(g)))
     return out
@@ -116,8 +116,6 @@ def _support_shape(artists, name) -> Polygon:
                 for s0, s1 in _hatch_strokes(artists):
                     if base.distance(Point(s0.real, s0.imag)) < 1e-6:
                         shapes.append(LineString([(s0.real, s0.imag), (s1.real, s1.imag)]))
-    from shapely.ops import unary_union
-
     return unary_union(shapes).difference(Point(q.real, q.imag).buffer(2.0))
 
 
