@@ -537,8 +537,9 @@ def _draw(args) -> int:
     from .compare import compare
     from .drawing import draw_sheet, write_drawings
     from .drawing.sheet import sheet_scales
-    from .positions import at_page_precision, cycle_travel
+    from .positions import at_page_precision, cycle_poses, cycle_sweep
     from .report import sheet_table
+    from .sweep import line_travel
 
     scene = _load(args)
     scene = at_page_precision(scene, args.precision)  # a sheet prints lengths to 0.1 mm unless told
@@ -560,14 +561,16 @@ def _draw(args) -> int:
         analytic = solve(scene, warn_condition=args.warn_condition)
         branches = _branch_lines(analytic, args.lang)
         formula = analytic.structure.formula
-        travel = cycle_travel(scene, analytic.structure)  # slots and guides drawn over the cycle's travel
+        cycle = cycle_sweep(scene, analytic.structure)
+        travel = line_travel(cycle) if scene.prismatics else {}  # slots and guides drawn over the cycle's travel
+        poses = cycle_poses(cycle)  # the frame (guides' hatching, supports) chosen over the cycle
 
         def table_of(g):
             return sheet_table(compare(analytic, g), g, analytic)
 
         graphical, figure = _fitted_sheet(
-            replace(_construct(scene, args), travel=travel),
-            lambda scales: replace(_construct(scene, args, scales), travel=travel),
+            replace(_construct(scene, args), travel=travel, cycle_poses=poses),
+            lambda scales: replace(_construct(scene, args, scales), travel=travel, cycle_poses=poses),
             lambda g: draw_sheet(g, formula=formula, table=table_of(g), lang=args.lang, branches=branches),
             lambda g, fixed: sheet_scales(g, formula=formula, table=table_of(g), lang=args.lang, branches=branches, given=given, fixed=fixed),
             given=(given := _given_scales(args, scene)),
@@ -678,7 +681,7 @@ def _position_sheets(run, lang: str, given: dict):
 
         def construct_at(scales):
             g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
-            return replace(g, travel=r.graphical.travel)  # slots and guides over the cycle's travel, as the run drew them
+            return replace(g, travel=r.graphical.travel, cycle_poses=r.graphical.cycle_poses)  # slots, guides, frame as the run drew them
 
         def draw(g):
             return draw_position_sheet(replace(r, graphical=g, comparisons=compare(r.analytic, g)), lang=lang, total=len(run.runs))

@@ -440,7 +440,7 @@ def handout_pages(
 
     def at_scales(r, scales):
         g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
-        g = replace(g, travel=r.graphical.travel)  # slots over the cycle's travel (see below)
+        g = replace(g, travel=r.graphical.travel, cycle_poses=r.graphical.cycle_poses)  # slots over the cycle's travel (see below), the frame as on every page
         return replace(r, graphical=g, comparisons=compare(r.analytic, g))
 
     # one frame of drawing boxes for every position page, chosen for the drawings it must hold
@@ -459,7 +459,7 @@ def handout_pages(
         # mechanisms whose guides or slots scale too: drawn again at that k_l, measured, and k_l fitted to them
         for _ in range(2):
             if sizes is None or not _refine_mechanism_sizes(solved, sizes, k_l_common, frame.boxes["mechanism"], lang,
-                                                            lambda r, k: construct(r.scene, run.structure, k_l=k, k_v=r.graphical.scales["k_v"], k_a=r.graphical.scales.get("k_a"), precision=run.precision, check_scales=False)):
+                                                            lambda r, k: replace(construct(r.scene, run.structure, k_l=k, k_v=r.graphical.scales["k_v"], k_a=r.graphical.scales.get("k_a"), precision=run.precision, check_scales=False), cycle_poses=r.graphical.cycle_poses)):
                 break
             unscaled["mechanisms"] = [size[:4] for size in sizes]
             k_l_common, per_run = handout_scales(run.runs, frame, given, unscaled)

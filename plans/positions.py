@@ -50,6 +50,8 @@ __all__ = [
     "parse_positions",
     "cycle_positions",
     "cycle_travel",
+    "cycle_sweep",
+    "cycle_poses",
     "fit_scale",
     "common_scales",
     "PositionRun",
@@ -176,24 +178,56 @@ def cycle_positions(scene: Scene, count: int, *, closed: bool = False) -> list[f
     return [a + (b - a) * k / (count - 1) for k in range(count)]
 
 
-def cycle_travel(scene: Scene, structure=None, steps: int = CYCLE_STEPS) -> dict[str, tuple[float, float]]:
-    """The travel along each guide line over the driver's cycle (:func:`plans.sweep.line_travel`), for drawing.
-
-    A crank's full turn, or a linear driver's stroke, in *steps* positions
-    (the scene's own position alone when a linear driver has no stroke).
-    """
+def cycle_sweep(scene: Scene, structure=None, steps: int = CYCLE_STEPS):
+    """The analytic solution over the driver's cycle: a crank's full turn, or a linear driver's stroke, in
+    *steps* positions (the scene's own position alone when a linear driver has no stroke)."""
     from .analytic import solve
-    from .sweep import line_travel
 
-    if not scene.prismatics:
-        return {}
     if _is_crank(scene):
         at = cycle_positions(scene, steps)
     elif scene.driver.stroke is not None:
         at = cycle_positions(scene, steps + 1)
     else:
         at = [scene.driver.s]
-    return line_travel(solve(scene, np.asarray(at, dtype=float), structure, allow_partial=True))
+    return solve(scene, np.asarray(at, dtype=float), structure, allow_partial=True)
+
+
+def cycle_travel(scene: Scene, structure=None, steps: int = CYCLE_STEPS) -> dict[str, tuple[float, float]]:
+    """The travel along each guide line over the driver's cycle (:func:`plans.sweep.line_travel`), for drawing."""
+    from .sweep import line_travel
+
+    if not scene.prismatics:
+        return {}
+    return line_travel(cycle_sweep(scene, structure, steps))
+
+
+#: Positions of a cycle the scheme's frame is chosen over (every 5° of a crank's turn).
+CYCLE_POSES = 72
+
+
+def cycle_poses(sweep, samples: int = CYCLE_POSES) -> tuple:
+    """The mechanism over a solved sweep, for drawing: one ``(positions, poses)`` pair per assembled position
+    (at most *samples*, evenly spread), as a GraphicalSolution's own ``positions`` [m] and ``poses``
+    (φ [rad], origin [m]).  Read from the sweep; nothing is solved here.  The scheme uses it to draw its frame
+    (the hatched side of each guide, the direction of each support) the same way at every position."""
+    valid = np.asarray(sweep.valid, dtype=bool).reshape(-1)
+    if not valid.any():
+        return ()
+    index = np.flatnonzero(valid)
+    if len(index) > samples:
+        index = index[np.linspace(0, len(index) - 1, samples).round().astype(int)]
+    shape = valid.shape
+
+    def at(values, k):
+        return np.broadcast_to(np.asarray(values), shape)[k]
+
+    out = []
+    for k in index:
+        positions = {name: complex(at(point.r, k)) for name, point in sweep.points.items()}
+        poses = {body: (float(at(phi, k)), complex(at(origin, k))) for body, (phi, origin) in sweep.poses.items()}
+        if all(np.isfinite(z.real) and np.isfinite(z.imag) for z in positions.values()):
+            out.append((positions, poses))
+    return tuple(out)
 
 
 def position_text(scene: Scene, position: float, digits: int = 1) -> str:
@@ -644,6 +678,7 @@ def run_positions(
         given={"k_l": k_l, "k_v": k_v, "k_a": k_a},
     )
     travel = line_travel(cycle)
+    poses = cycle_poses(cycle)  # the frame drawn the same way at every position
     runs = []
     for index, value, here, first, error in prepared:
         if error is not None:
@@ -653,7 +688,7 @@ def run_positions(
             here, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision,
             check_scales=False,  # given factors were checked above; common ones are plans' own choice
         )
-        graphical = replace(graphical, travel=travel)  # slots and guides drawn over the cycle's travel
+        graphical = replace(graphical, travel=travel, cycle_poses=poses)  # slots and guides over the cycle's travel
         analytic = sweep.at(index)
         runs.append(PositionRun(index, value, here, analytic, graphical, compare(analytic, graphical)))
     return PositionsRun(scene, structure, tuple(runs), scales, precision, cycle)

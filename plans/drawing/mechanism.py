@@ -9,7 +9,11 @@ What is drawn: links as bars between their extreme points, a link with three
 or more points not on one line as a light plate; pins (points shared by two
 bodies) as circles and other reported points as dots; frame pivots with the
 ground symbol; frame guides that something slides on as hatched lines, on
-the side away from the links; lines carried by moving links (slot, rod);
+the side away from the links (or a guideway hatched both ways when the links
+pass to both sides in the cycle); given the mechanism over the cycle (the
+solution's ``cycle_poses``), each guide's hatched side and each support's
+direction are chosen once for the cycle, so every position stands on the same
+frame; lines carried by moving links (slot, rod);
 slider blocks and sleeves as rectangles along their lines; the driver's ω
 (and ε when not zero) as curved arrows, or a linear driver's v (and a) as
 straight ones; labels of the reported points and the frame pivots; link
@@ -107,7 +111,7 @@ def _frame_pivots(scene) -> list[str]:
     return [p for p in frame.points if any(p in b.points for n, b in scene.bodies.items() if n != FRAME)]
 
 
-def draw_mechanism(solution, ax=None, *, lang: str = "en", slots: dict | None = None) -> list:
+def draw_mechanism(solution, ax=None, *, lang: str = "en", slots: dict | None = None, cycle=None) -> list:
     """Draw the kinematic scheme of *solution* (a GraphicalSolution) at k_l.
 
     Parameters
@@ -126,12 +130,30 @@ def draw_mechanism(solution, ax=None, *, lang: str = "en", slots: dict | None = 
         guide or a rod is drawn over it.  The drawing solves nothing: when
         omitted, the solution's own ``travel`` is used (a caller attaches it);
         without either, a slot is drawn around the block's present place.
+    cycle : tuple, optional
+        The mechanism over the cycle, ``(positions, poses)`` pairs as the
+        solution's own (:func:`plans.positions.cycle_poses`): the hatched side
+        of each frame guide (or a guideway hatched both ways, when the links
+        meeting its sliders pass to both sides) and the direction of each
+        ground support are chosen once, clear of the links at every one of
+        these positions, so that every position is drawn on the same frame.
+        When omitted, the solution's own ``cycle_poses`` is used; without
+        either (or where no one choice keeps clear), each drawing chooses for
+        its own position.
 
     Returns
     -------
     list of matplotlib.artist.Artist
     """
-    return sketch_on(ax, "mech", lambda sketch: MechanismDrawing(sketch, solution, lang=lang, slots=slots).draw())
+    return sketch_on(ax, "mech", lambda sketch: MechanismDrawing(sketch, solution, lang=lang, slots=slots, cycle=cycle).draw())
+
+
+class _Pose:
+    """The mechanism at one position of a cycle: the points' positions [m] and the bodies' poses."""
+
+    def __init__(self, positions: dict, poses: dict):
+        self.positions = positions
+        self.poses = poses
 
 
 def _box_within(bounds, centre: complex, reach: float) -> bool:
@@ -150,8 +172,9 @@ class MechanismDrawing:
     *caption* False leaves out the heading and the scale statement (a page that states them itself).
     """
 
-    def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True, slots: dict | None = None):
+    def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True, slots: dict | None = None, cycle=None):
         self.slots = dict(slots if slots is not None else getattr(solution, "travel", None) or {})
+        self.cycle = tuple(cycle if cycle is not None else getattr(solution, "cycle_poses", None) or ())
         self.lang = lang
         self.show_caption = caption
         self.s = sketch
@@ -299,9 +322,12 @@ class MechanismDrawing:
             # a rod lying along the guide (a ram's connecting link): the guide is a guideway,
             # two lines either side of the ram, hatched outward, over the rod's length and
             # past the block (the stroke it travels), so the rod runs between them, on no hatching
-            channel = False
+            # the frame chosen once over the cycle: one side hatched, or a guideway hatched both ways
+            # when the links meeting its sliders pass to both sides of the line (the quick-return's DE)
+            choice = self._cycle_guide_side(name, origin, u * 1j)
+            channel = choice == "channel"
             for body in self.moving:
-                if self.is_block(body):
+                if self.is_block(body) or choice is not None:
                     continue
                 along = [((q - origin) * u.conjugate()) for q in self.body_points(body)]
                 if len(along) < 2 or any(abs(z.imag) > 1.0 for z in along):
@@ -325,11 +351,19 @@ class MechanismDrawing:
                     a = origin + u * lo + n * side * gap
                     b = origin + u * hi + n * side * gap
                     spans = []
+                    # the band the hatching takes on this side (its strokes lean back along the line)
+                    out = n * side * (HATCH_LEN + 0.4)
+                    ext = u * (HATCH_LEN + 0.5)
+                    band = ShapelyPolygon([(z.real, z.imag) for z in (a - ext, b + ext, b + ext + out, a - ext + out)])
                     for q, r in crossing:
-                        hit = LineString([(a.real, a.imag), (b.real, b.imag)]).intersection(LineString([(q.real, q.imag), (r.real, r.imag)]))
+                        rod = LineString([(q.real, q.imag), (r.real, r.imag)])
+                        hit = LineString([(a.real, a.imag), (b.real, b.imag)]).intersection(rod)
                         if hit.geom_type == "Point":
                             t = ((complex(hit.x, hit.y) - a) * u.conjugate()).real
-                            spans.append((a + u * (t - 2.0), a + u * (t + 2.0)))
+                            # the gap reaches over where the link runs through the hatching beyond the line
+                            across = rod.buffer(BAR_PT * MM_PER_PT / 2 + 0.3).intersection(band)
+                            ts = [((complex(x, y) - a) * u.conjugate()).real for x, y in (across.exterior.coords if across.geom_type == "Polygon" else [])]
+                            spans.append((a + u * (min([t] + ts) - 2.0), a + u * (max([t] + ts) + 2.0)))
                     for p0, p1 in _outside(a, b, spans):
                         if abs(p1 - p0) < 1.0:
                             continue
@@ -339,7 +373,7 @@ class MechanismDrawing:
                 continue
             a = origin + u * lo
             b = origin + u * hi
-            side = -1.0 if self._mechanism_side(FRAME, name, origin, n) > 0 else 1.0
+            side = choice if choice is not None else (-1.0 if self._mechanism_side(FRAME, name, origin, n) > 0 else 1.0)
             self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=1.2)
             self._hatch(a, b, n * side)
             self.guides.append((a, b))
@@ -362,6 +396,53 @@ class MechanismDrawing:
             self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=2.2)
             self._hatch(a, b, n * side) if side > 0 else self._hatch(b, a, n * side)
         self.guides.append((origin + u * (centre - half), origin + u * (centre + half)))
+
+    def _over_cycle(self, measure) -> list:
+        """``measure()`` taken with the mechanism at every position of the cycle given (the drawing's own
+        position is restored after)."""
+        own = self.sol
+        out = []
+        try:
+            for positions, poses in self.cycle:
+                self.sol = _Pose(positions, poses)
+                out.append(measure())
+        finally:
+            self.sol = own
+        return out
+
+    def _cycle_guide_side(self, name: str, origin: complex, n: complex):
+        """The hatched side of frame line *name* for the whole cycle: +1 or −1 along *n* when the links
+        meeting its sliders stay on the other side at every position of the cycle, ``"channel"`` (a
+        guideway hatched both ways) when they pass to both sides; None without a cycle, or when they
+        lie along the line throughout (the drawing's own position decides)."""
+        if not self.cycle:
+            return None
+        riders = [pr.slider for pr in self.scene.prismatics if pr.guide == FRAME and pr.guide_line == name]
+        driver = self.scene.driver
+        if getattr(driver, "guide", None) == name:
+            riders.append(driver.link)
+        if any(not self.is_block(r) for r in riders) and getattr(driver, "guide", None) != name:
+            return None  # a bar in a slide bearing, hatched both ways already
+
+        def offsets():
+            out = []
+            for rider in riders:
+                for point in self.scene.bodies[rider].points:
+                    for other in self.scene.bodies_with(point):
+                        if other not in (rider, FRAME):
+                            out += [((q - origin) * n.conjugate()).real for q in self.body_points(other)]
+            return out
+
+        found = [t for ts in self._over_cycle(offsets) for t in ts]
+        tol = 1.0  # mm: a point this near the line is on it
+        above, below = any(t > tol for t in found), any(t < -tol for t in found)
+        if above and below:
+            return "channel"
+        if above:
+            return -1.0
+        if below:
+            return 1.0
+        return None
 
     def _mechanism_side(self, body: str, line: str, origin: complex, n: complex) -> float:
         """Which side of a frame line the links attached to its sliders lie on (+ along *n*)."""
@@ -517,7 +598,9 @@ class MechanismDrawing:
             under_block = any(self.is_block(b) for b in self.scene.bodies_with(name) if b != FRAME)
             if under_block:
                 height = max(height, math.hypot(*self.block) / 2 + 2.5)
-            d = self._support_direction(name, q, height)
+            d = self._cycle_support_direction(name, q, height)  # one direction for the whole cycle
+            if d is None:
+                d = self._support_direction(name, q, height)
             n = d * 1j
             half = 3.2 * self.symbol_scale
             # a support that would stand in a hatched guide's hatching stands on the guide instead
@@ -536,6 +619,15 @@ class MechanismDrawing:
             base = q + d * height
             left, right = base + n * half, base - n * half
             self.s.polygon([q, left, right], fc="white", lw=0.8, gid=f"ground-{name}", zorder=2.5)
+            # a link from the pivot runs over its support (a crank turning over a support that stays put)
+            reach = height + HATCH_LEN + 1.0
+            for body in self.scene.bodies_with(name):
+                end = getattr(self, "bars", {}).get(body)
+                if body == FRAME or end is None or body in getattr(self, "slot_spans", {}):
+                    continue
+                far = end[1] if abs(end[0] - q) < abs(end[1] - q) else end[0]
+                if abs(far - q) > 1e-9:
+                    self.s.line([q, q + unit(far - q) * min(reach, abs(far - q))], lw=BAR_PT, gid=f"link-{body}-at-{name}", zorder=2.55, capstyle="round", obstacle=False)
             if under_block:
                 # the support's sides reach the pin over the swinging block (the sleeve turns
                 # about E): drawn under it, the triangle would seem to lean on the block's edge
@@ -553,6 +645,73 @@ class MechanismDrawing:
         far = height + HATCH_LEN
         pts = [q + d * (self.pin_r + 0.3) + n * 0.5, q + d * (self.pin_r + 0.3) - n * 0.5, q + d * far - n * half, q + d * far + n * half]
         return ShapelyPolygon([(z.real, z.imag) for z in pts]).buffer(2.0)
+
+    def _support_clearance(self, height: float) -> float:
+        """The least angle [rad] between a support's axis and a link from its pivot that keeps the link
+        off the support's base and hatching."""
+        return math.atan2(3.2 * self.symbol_scale + 2.0 + 1.0, height)
+
+    def _cycle_support_direction(self, name: str, q: complex, height: float) -> complex | None:
+        """Unit direction from frame pivot *name* to its ground, one for the whole cycle given: at every
+        position of the cycle at least :meth:`_support_clearance` from each link meeting the pivot, and clear
+        of the other links; of those, as far from the links as can be (up to 75°), then down, then up, in
+        preference to sideways (as :meth:`_support_direction`).  A link turning a full circle about the
+        pivot (a crank) passes every direction: a crank's support stays put and the crank passes over it.
+        None without a cycle, or when no one direction keeps clear (each position then chooses its own)."""
+        if not self.cycle:
+            return None
+        need = self._support_clearance(height)
+        meeting = [b for b in self.scene.bodies_with(name) if b != FRAME]
+        others = [b for b in self.moving if b not in meeting and not self.is_block(b)]
+
+        def measure():
+            angles = {}
+            for body in meeting:
+                out = [cmath.phase(r - q) for r in self.body_points(body) if abs(r - q) > 1e-6]
+                if self.is_block(body):
+                    phi = self.block_angle(body)
+                    out += [phi, phi + math.pi]
+                angles[body] = out
+            shapes = {}
+            for body in others:
+                pts = self.body_points(body)
+                if len(pts) < 2:
+                    continue
+                if self._is_plate(body):
+                    shapes[body] = MultiPoint([(z.real, z.imag) for z in pts]).convex_hull
+                else:
+                    a, c = max(((z, r) for z in pts for r in pts), key=lambda zr: abs(zr[0] - zr[1]))
+                    shapes[body] = LineString([(a.real, a.imag), (c.real, c.imag)]).buffer(BAR_PT * MM_PER_PT / 2)
+            return angles, shapes
+
+        samples = self._over_cycle(measure)
+        thetas = np.array([-math.pi / 2 + 2 * math.pi * k / 24 for k in range(24)])
+        feet = np.array([self._support_footprint(q, cmath.exp(1j * t), height) for t in thetas], dtype=object)
+        # per link, the least angle from each candidate direction to the link over the cycle (meeting links),
+        # or whether the support there meets the link at some position (links passing by)
+        clearance, blocked = {}, {}
+        for body in meeting:
+            a = np.asarray([t for angles, _ in samples for t in angles[body]], dtype=float)
+            gap = np.abs(np.angle(np.exp(1j * (thetas[:, None] - a[None, :])))).min(axis=1) if a.size else np.full(len(thetas), math.pi)
+            clearance[body] = gap
+            blocked[body] = gap < need
+        for body in others:
+            shapes = np.array([shs[body] for _, shs in samples if body in shs], dtype=object)
+            if len(shapes):
+                blocked[body] = shapely.intersects(feet[:, None], shapes[None, :]).any(axis=1)
+        # a link that meets the support whichever way it stands (a crank turning about its pivot, a lever
+        # swinging through it) passes over it at some position: the support stays put, the others decide
+        avoid = [b for b, hit in blocked.items() if not hit.all()]
+        works = ~np.any([blocked[b] for b in avoid], axis=0) if avoid else np.full(len(thetas), True)
+        clear = np.min([clearance[b] for b in avoid if b in clearance] or [np.full(len(thetas), math.pi)], axis=0)
+        if not works.any():
+            return None
+        down = np.abs(np.angle(np.exp(1j * (thetas + math.pi / 2))))
+        up = np.abs(np.angle(np.exp(1j * (thetas - math.pi / 2)))) + math.radians(10)
+        score = np.minimum(clear, math.radians(75)) - 0.05 * np.minimum(down, up)
+        score = np.where(works, score, -np.inf)
+        best = int(np.flatnonzero(score > score.max() - 1e-12)[0])
+        return cmath.exp(1j * thetas[best])
 
     def _support_direction(self, name: str, q: complex, height: float | None = None) -> complex:
         """Unit direction from a pivot to its ground: as far from every link meeting it as can be (up to 75°),

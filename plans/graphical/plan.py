@@ -212,6 +212,14 @@ class GraphicalSolution(_Drawable):
         over the cycle (:func:`plans.sweep.line_travel`), given by the caller
         (``dataclasses.replace``) so that the scheme draws a slot or a guide
         over it; empty, they are drawn around the present place.
+    cycle_poses : tuple
+        Drawing data, not part of the construction: the mechanism over the
+        cycle, one ``(positions, poses)`` pair per solved position of a sweep
+        (as this solution's own ``positions`` and ``poses``), given by the
+        caller (:func:`plans.positions.cycle_poses`) so that the scheme draws
+        its frame the same way at every position (the hatched side of each
+        guide, the direction of each ground support); empty, each drawing
+        chooses for its own position.
     """
 
     scene: object
@@ -230,6 +238,7 @@ class GraphicalSolution(_Drawable):
     relative: dict[str, dict] = field(default_factory=dict)
     rotations: dict[str, dict[str, tuple[str, str, float]]] = field(default_factory=dict)
     travel: dict[str, tuple[float, float]] = field(default_factory=dict)
+    cycle_poses: tuple = ()
 
     def sheet(self, *, lang: str = "en"):
         """The one-page sheet (mechanism, both plans, vector equations) as a matplotlib Figure."""
