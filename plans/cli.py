@@ -614,7 +614,7 @@ def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=N
     itself; when that gives other factors, the sheet is drawn once more at those (kept if it fits A3, or if
     the first did not, or if its drawings are larger).
     """
-    from .drawing.sheet import _KEYS, ESTIMATED_FIXED, SHEET_FIRST, drawn_score
+    from .drawing.sheet import ESTIMATED_FIXED, SCALE_OF, SHEET_FIRST, drawn_score
 
     scales = choose(graphical, fixed or ESTIMATED_FIXED)
     if scales != graphical.scales:
@@ -625,7 +625,7 @@ def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=N
     if figure.plans_sheet.format == SHEET_FIRST and drawn_score(graphical, least=True) >= 1.0 and fixed is not None:
         return graphical, figure  # fits A3 and every drawing reaches its size, from another sheet's measurements
     first = figure.plans_sheet
-    measured = {kind: {graphical.scales[_KEYS[kind]]: f} for kind, f in first.fixed.items()}
+    measured = {kind: {graphical.scales[SCALE_OF[kind]]: f} for kind, f in first.fixed.items()}
     own = dict(first.fixed)
     for kind, f in first.fixed.items():
         before = (fixed or {}).get(kind)
@@ -646,7 +646,7 @@ def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=N
         # the second took more than chosen for (a part drawn at its factors only): chosen once more with what
         # both drawings measured at their factors, kept if it fits A3 (and beats a first that fits)
         for kind, f in second_figure.plans_sheet.fixed.items():
-            measured.setdefault(kind, {})[second.scales[_KEYS[kind]]] = f
+            measured.setdefault(kind, {})[second.scales[SCALE_OF[kind]]] = f
         third = choose(graphical, {**first.fixed, "at": measured})
         if third not in (graphical.scales, second.scales) and (not fits or drawn_score(graphical, third) > drawn_score(graphical)):
             third_solution = construct_at(third)

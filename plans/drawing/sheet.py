@@ -33,7 +33,7 @@ from .style import HEADING_PT
 from .svg import drawing_rc, new_figure
 from .typeset import draw_text, measure
 
-__all__ = ["draw_sheet", "sheet_scales", "drawn_score", "fixed_parts", "SheetLayout", "ESTIMATED_FIXED", "SHEET_FIRST", "branch_lines", "write_drawings", "sheet_equations", "guide_names", "translate_table", "label_driver"]
+__all__ = ["draw_sheet", "sheet_scales", "drawn_score", "fixed_parts", "SheetLayout", "ESTIMATED_FIXED", "SCALE_OF", "SHEET_FIRST", "branch_lines", "write_drawings", "sheet_equations", "guide_names", "translate_table", "label_driver"]
 
 SHEET_PAD = 4.0  # mm between the frame and the content
 GAP = 6.0  # mm between blocks
@@ -169,7 +169,8 @@ FIT_SLACK = 2.0
 #: What a drawing takes beyond its geometry [mm] (width, height: labels, supports, margins, caption, legend), as
 #: a first estimate before a drawing has measured it (see :func:`fixed_parts`).
 ESTIMATED_FIXED = {"mechanism": (40.0, 40.0), "velocity": (30.0, 50.0), "acceleration": (30.0, 60.0)}
-_KEYS = {"mechanism": "k_l", "velocity": "k_v", "acceleration": "k_a"}
+#: the scale factor of each drawing of a sheet
+SCALE_OF = {"mechanism": "k_l", "velocity": "k_v", "acceleration": "k_a"}
 _TARGETS = {"mechanism": MECHANISM_ACROSS_MM}
 
 
@@ -309,7 +310,7 @@ def drawn_score(solution, scales: dict | None = None, *, least: bool = False) ->
     ratios = []
     for kind in _objects(solution):
         size, largest = _geometry(solution, kind)
-        ratios += _Figure(kind, size, largest, (0.0, 0.0), scales[_KEYS[kind]], True).ratios(scales[_KEYS[kind]])
+        ratios += _Figure(kind, size, largest, (0.0, 0.0), scales[SCALE_OF[kind]], True).ratios(scales[SCALE_OF[kind]])
     return min(ratios, default=0.0) if least else _score(ratios)
 
 
@@ -324,7 +325,7 @@ def fixed_parts(solution, blocks: dict) -> dict[str, tuple[float, float]]:
         (w, h), _ = _geometry(solution, kind)
         if kind == "mechanism":
             w, h = _reach(solution)
-        k = solution.scales[_KEYS[kind]]
+        k = solution.scales[SCALE_OF[kind]]
         out[kind] = (max(block.width - w / k, 0.0), max(block.height - h / k, 0.0))
     return out
 
@@ -749,7 +750,7 @@ def sheet_scales(
         tb_rows, tb_heights, options = _sheet_texts(solution, formula=formula, table=table, equations=equations, lang=lang, title=title, branches=branches)
     figures = {}
     for kind in _objects(solution):
-        key = _KEYS[kind]
+        key = SCALE_OF[kind]
         size, largest = _geometry(solution, kind)
         figures[kind] = _Figure(kind, size, largest, fixed.get(kind, ESTIMATED_FIXED[kind]), given.get(key, solution.scales[key]), key in given,
                                 _reach(solution) if kind == "mechanism" else None)
@@ -774,7 +775,7 @@ def sheet_scales(
                 best = found
     if best is None:  # nothing fits A0: the factors as they are
         return dict(solution.scales)
-    return {_KEYS[kind]: k for kind, k in best[2].items()}
+    return {SCALE_OF[kind]: k for kind, k in best[2].items()}
 
 
 _FORMAT_ORDER = {name: i for i, (name, _) in enumerate(SHEET_FORMATS)}
