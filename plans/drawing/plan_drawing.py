@@ -263,9 +263,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
                 # out on that shaft within a white rim
                 size = _head(max(head, VECTOR_STYLE["absolute"][3]), lw, v.length)
                 _, head_artist = sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=size, gid=f"{kind}-{v.label}", zorder=2.4)
-                head_artist.set_zorder(3.6)
-                rim = ShapelyPolygon(head_artist.get_xy()[:3]).buffer(HALO_PT * MM_PER_PT, join_style=2)
-                sketch.polygon([complex(x, y) for x, y in list(rim.exterior.coords)[:-1]], fc="white", ec="none", lw=0, gid=f"{kind}-{v.label}-rim", zorder=3.5, obstacle=False)
+                _rim(sketch, head_artist, f"{kind}-{v.label}-rim")
                 continue
             if kind != "absolute":
                 shift = _beside(tail, tip, absolute)
@@ -293,33 +291,18 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             sketch.circle(complex(v.tip), 0.3, fc=INK, lw=0, gid=f"end-dot-{v.label}", zorder=4.0, obstacle=False)
 
     # labels: the pole first, then each group of coincident images (and component ends)
-    groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [(image_text(plan.pole), "pole-label")])]
-
-    def join(z: complex, piece: tuple[str, str], within: float) -> None:
-        for at, pieces in groups:
-            if abs(at - z) <= within:
-                pieces.append(piece)
-                return
-        groups.append((z, [piece]))
-
-    for name, z in images.items():
-        join(z, (image_text(name), f"image-{name}"), SAME_MM)
-    for z, letter, label in ends:
-        # an end a short component away from an image shares its label ("a′, n₁")
-        join(z, (letter, f"end-{label}"), JOIN_MM if any(v.label == label for v in shorts) else SAME_MM)
+    groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     for at, pieces in groups:
-        away = 0j
-        for v in vectors:
-            for end, other in ((v.tail, v.tip), (v.tip, v.tail)):
-                if abs(end - at) <= SAME_MM and abs(other - end) > SAME_MM:
-                    away -= unit(other - end)
-        place_label(sketch, at, pieces, size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
+        place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
 
+    in_detail: dict[str, str] = {}
     for index, crowd in enumerate(_crowds(plan, images) if detail else []):
-        _detail(sketch, plan, vectors, images, crowd, index)
+        name = DETAIL_NAME + ("I" * index)
+        for label in _detail(sketch, plan, vectors, images, ends, crowd, name):
+            in_detail.setdefault(label, name)
 
     if caption:
-        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label)) for v in shorts])
+        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label), in_detail.get(v.label)) for v in shorts])
 
 
 def _crowds(plan, images: dict) -> list[list[str]]:
@@ -358,14 +341,53 @@ def _clip(a: complex, b: complex, centre: complex, r: float):
     return a + d * t0, a + d * t1
 
 
-def _detail(sketch: Sketch, plan, vectors, images: dict, names: list[str], index: int) -> None:
+def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[complex, list[tuple[str, str]]]]:
+    """The plan's labels: (point, [(text, gid), …]) for the pole, each group of coincident images, and component ends.
+
+    Images closer than :data:`SAME_MM` share one label ("p, o, c"); the end of a
+    short component within *join* of an image shares that image's label ("a′, n₁").
+    """
+    groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [(image_text(plan.pole), "pole-label")])]
+    short = {v.label for v in shorts}
+
+    def add(z: complex, piece: tuple[str, str], within: float) -> None:
+        for at, pieces in groups:
+            if abs(at - z) <= within:
+                pieces.append(piece)
+                return
+        groups.append((z, [piece]))
+
+    for name, z in images.items():
+        add(z, (image_text(name), f"image-{name}"), SAME_MM)
+    for z, letter, label in ends:
+        add(z, (letter, f"end-{label}"), join if label in short else SAME_MM)
+    return groups
+
+
+def _away(at: complex, vectors) -> complex | None:
+    """The direction away from the vectors that start or end at *at* (where its label is preferred), or None."""
+    away = 0j
+    for v in vectors:
+        for end, other in ((v.tail, v.tip), (v.tip, v.tail)):
+            if abs(end - at) <= SAME_MM and abs(other - end) > SAME_MM:
+                away -= unit(other - end)
+    return away if abs(away) > 1e-9 else None
+
+
+def _detail(sketch: Sketch, plan, vectors, images: dict, ends, names: list[str], name: str) -> set[str]:
     """Crowded images drawn again, enlarged n : 1, in a circle beside the plan (a drafting detail).
 
-    The crowd is ringed on the plan and named; the detail repeats every vector
-    (the part inside the ring), the link's figure, the image points and their
-    labels, so that the figure (a b c) and the heads can be read.  Gids:
-    ``detail-ring``, ``detail``, ``detail-<vector>`` (shaft, ``-head``),
-    ``detail-figure``, ``detail-image-<name>``, ``detail-name``.
+    The crowd is ringed on the plan and named.  The detail shows everything the
+    ring holds, enlarged: every vector that passes through it (the part inside,
+    with its head when its tip is inside), also one too short for an arrow on
+    the plan that is long enough at n : 1 (the plan's note on it says where it
+    is drawn), the link's figure, and every image point and lettered component
+    end inside the ring with the label it has on the plan (the pole "p, o, c").
+    Gids: ``detail-ring``, ``detail``, ``detail-<vector>`` (shaft, ``-head``),
+    ``detail-figure``, ``detail-dot-<n>``, ``detail-pole-label``,
+    ``detail-image-<name>``, ``detail-end-<vector>``, ``detail-name``.
+
+    Returns the labels of the vectors shorter than :data:`SHORT_MM` that the detail draws.
     """
     pts = [images[n] for n in names]
     centre = sum(pts) / len(pts)
@@ -373,7 +395,6 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, names: list[str], index
     closest = min(abs(q - w) for i, q in enumerate(pts) for w in pts[:i])
     ratio = next((k for k in DETAIL_RATIOS if 2 * r * k >= DETAIL_SPAN_MM and closest * k >= DETAIL_APART_MM), DETAIL_RATIOS[-1])
     big = r * ratio
-    name = DETAIL_NAME + ("I" * index)
     edge, lw, fill = FIGURE_STYLE
     sketch.circle(centre, r, fc="none", ec=edge, lw=0.5, gid="detail-ring", zorder=1.2, obstacle=False)
     sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
@@ -404,6 +425,9 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, names: list[str], index
     def f(z: complex) -> complex:
         return at + (z - centre) * ratio
 
+    def inside(z: complex) -> bool:
+        return abs(complex(z) - centre) <= r
+
     sketch.circle(at, big, fc="none", ec=edge, lw=0.6, gid="detail", zorder=1.2, obstacle=False)
     sketch.bounds.add_box(at.real - big, at.imag - big, at.real + big, at.imag + big)
     sketch.obstacles.append(Point(at.real, at.imag).buffer(big).exterior.buffer(0.3))
@@ -411,22 +435,46 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, names: list[str], index
     hull = MultiPoint([(q.real, q.imag) for q in figure]).convex_hull
     if hull.geom_type == "Polygon":
         sketch.polygon([complex(x, y) for x, y in list(hull.exterior.coords)[:-1]], fc=fill, ec=edge, lw=lw, gid="detail-figure", zorder=0.8)
+    shown: set[str] = set()
+    long_absolute = [v for v in vectors if v.kind == "absolute" and v.length * ratio >= SHORT_MM]
     for v in vectors:
         part = _clip(complex(v.tail), complex(v.tip), centre, r)
-        if part is None or v.length < SHORT_MM:
-            continue
+        if part is None or v.length * ratio < SHORT_MM:
+            continue  # outside the ring, or too short for an arrow even at n : 1
         color, vlw, dashes, head = VECTOR_STYLE[v.kind]
         a, c = f(part[0]), f(part[1])
+        z = 3.0 if v.kind == "absolute" else 2.5
         if abs(part[1] - complex(v.tip)) <= SAME_MM and abs(c - a) > 1.0:
-            sketch.arrow(a, c, color=color, lw=vlw, dashes=dashes, head=_head(head, vlw, abs(c - a)), gid=f"detail-{v.label}", zorder=3.0 if v.kind == "absolute" else 2.5)
+            if v.kind != "absolute" or _along(v, long_absolute) is None:
+                sketch.arrow(a, c, color=color, lw=vlw, dashes=dashes, head=_head(head, vlw, abs(c - a)), gid=f"detail-{v.label}", zorder=z)
+            else:
+                # on a longer absolute vector's shaft (v_A4C on p→d): its head stands out within a white rim, as on the plan
+                _, head_artist = sketch.arrow(a, c, color=color, lw=vlw, dashes=dashes, head=_head(max(head, VECTOR_STYLE["absolute"][3]), vlw, abs(c - a)), gid=f"detail-{v.label}", zorder=2.4)
+                _rim(sketch, head_artist, f"detail-{v.label}-rim")
         else:
-            sketch.line([a, c], color=color, lw=vlw, dashes=dashes, gid=f"detail-{v.label}", zorder=3.0 if v.kind == "absolute" else 2.5)
-    for n in names:
-        sketch.circle(f(images[n]), 0.45, fc=INK, lw=0, gid=f"detail-dot-{n}", zorder=4.0)
-    for n in names:
-        away = f(images[n]) - at
-        place_label(sketch, f(images[n]), [(image_text(n), f"detail-image-{n}")], size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
+            sketch.line([a, c], color=color, lw=vlw, dashes=dashes, gid=f"detail-{v.label}", zorder=z)
+        if v.length < SHORT_MM:
+            shown.add(v.label)
+    # every image and lettered end inside the ring, labelled as on the plan; an end
+    # that shares an image's label on the plan (a short component) has its own here
+    groups = [(q, pieces) for q, pieces in _label_groups(plan, images, ends, [], SAME_MM) if inside(q)]
+    for q, pieces in groups:
+        sketch.circle(f(q), 0.55 if abs(q) <= SAME_MM else 0.45, fc=INK, lw=0, gid=f"detail-dot-{pieces[0][1]}", zorder=4.0)
+    near = [v for v in vectors if v.length * ratio >= SHORT_MM]
+    for q, pieces in groups:
+        away = _away(q, near)
+        if away is None:
+            away = f(q) - at if abs(f(q) - at) > 1e-9 else None
+        place_label(sketch, f(q), [(text, f"detail-{gid}") for text, gid in pieces], size=LABEL_PT, prefer=away, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
     sketch.text(at + 1j * (big + 3.2), f"{name} ({fmt_number(ratio)} : 1)", size=LABEL_PT, gid="detail-name")
+    return shown
+
+
+def _rim(sketch: Sketch, head_artist, gid: str) -> None:
+    """Raise an arrowhead over the shaft it stands on, within a white rim :data:`HALO_PT` wide."""
+    head_artist.set_zorder(3.6)
+    rim = ShapelyPolygon(head_artist.get_xy()[:3]).buffer(HALO_PT * MM_PER_PT, join_style=2)
+    sketch.polygon([complex(x, y) for x, y in list(rim.exterior.coords)[:-1]], fc="white", ec="none", lw=0, gid=gid, zorder=3.5, obstacle=False)
 
 
 def _head(head: float, lw: float, length: float) -> float:
@@ -537,9 +585,10 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     # (a plan with many of them grows by a line, not by a line each)
     width = max(b.width, 60.0)
     cursor = None
-    for v, letter in notes:
-        # language-neutral: the vector, its drawn length, and the point that stands for it
-        where = f"  ({letter})" if letter else ""
+    for v, letter, detail in notes:
+        # language-neutral: the vector, its drawn length, the point that stands for it, and the detail that draws it
+        where = ", ".join(x for x in (letter, detail) if x)
+        where = f"  ({where})" if where else ""
         note = f"|{vector_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm{where}"
         w = text_size(note, CAPTION_PT, math=True)[0]
         if cursor is None or cursor + w > x + width:
