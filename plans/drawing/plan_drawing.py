@@ -296,18 +296,24 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
         place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
 
     in_detail: dict[str, str] = {}
-    for index, crowd in enumerate(_crowds(plan, images) if detail else []):
+    for index, (pts, names) in enumerate(_crowds(plan, images, vectors) if detail else []):
         name = DETAIL_NAME + ("I" * index)
-        for label in _detail(sketch, plan, vectors, images, ends, crowd, name):
+        for label in _detail(sketch, plan, vectors, images, ends, pts, names, name):
             in_detail.setdefault(label, name)
 
     if caption:
         _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label), in_detail.get(v.label)) for v in shorts])
 
 
-def _crowds(plan, images: dict) -> list[list[str]]:
-    """The images of each link that crowd (3 or more distinct images within :data:`CROWD_MM`)."""
-    out = []
+def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[str]]]:
+    """What crowds on the plan, each as (its points, the images of its link figure):
+
+    * the images of a link, 3 or more distinct within :data:`CROWD_MM` (six-bar a b c);
+    * a chain of vectors too short for an arrow (under :data:`SHORT_MM`) but long enough to
+      read at the largest ratio, joining 3 or more distinct points within :data:`CROWD_MM`
+      (quick-return pos 2: a′ →k Coriolis 1.38 mm, k →a₄′ aʳ 1.26 mm), whose heads the plan cannot show.
+    """
+    out: list[tuple[list[complex], list[str]]] = []
     for link, labels in getattr(plan, "links", {}).items():
         names: list[str] = []
         for label in labels:
@@ -317,8 +323,28 @@ def _crowds(plan, images: dict) -> list[list[str]]:
         pts = [images[n] for n in names]
         if len(pts) >= 3:
             span = max(abs(q - r) for q in pts for r in pts)
-            if 0.5 < span < CROWD_MM and not any(set(names) <= set(c) for c in out):
-                out.append(names)
+            if 0.5 < span < CROWD_MM and not any(set(names) <= set(c) for _, c in out):
+                out.append((pts, names))
+    # chains of short vectors: their ends joined into clusters, in plan order
+    readable = DETAIL_APART_MM / DETAIL_RATIOS[-1]
+    clusters: list[list[complex]] = []
+    for v in vectors:
+        if not readable <= v.length < SHORT_MM:
+            continue
+        ends = [complex(v.tail), complex(v.tip)]
+        hit = [c for c in clusters if any(abs(e - q) <= SAME_MM for e in ends for q in c)]
+        merged: list[complex] = []
+        for c in hit:
+            clusters.remove(c)
+            merged.extend(q for q in c if all(abs(q - m) > SAME_MM for m in merged))
+        merged.extend(e for e in ends if all(abs(e - m) > SAME_MM for m in merged))
+        clusters.append(merged)
+    for pts in clusters:
+        if len(pts) < 3 or max(abs(q - r) for q in pts for r in pts) >= CROWD_MM:
+            continue
+        if any(all(any(abs(q - w) <= SAME_MM for w in c) for q in pts) for c, _ in out):
+            continue  # already in a link's detail
+        out.append((pts, []))
     return out
 
 
@@ -374,7 +400,7 @@ def _away(at: complex, vectors) -> complex | None:
     return away if abs(away) > 1e-9 else None
 
 
-def _detail(sketch: Sketch, plan, vectors, images: dict, ends, names: list[str], name: str) -> set[str]:
+def _detail(sketch: Sketch, plan, vectors, images: dict, ends, pts: list[complex], names: list[str], name: str) -> set[str]:
     """Crowded images drawn again, enlarged n : 1, in a circle beside the plan (a drafting detail).
 
     The crowd is ringed on the plan and named.  The detail shows everything the
@@ -384,12 +410,12 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, names: list[str],
     is drawn), the link's figure, and every image point and lettered component
     end inside the ring with the label it has on the plan (the pole "p, o, c").
     Gids: ``detail-ring``, ``detail``, ``detail-<vector>`` (shaft, ``-head``),
-    ``detail-figure``, ``detail-dot-<n>``, ``detail-pole-label``,
+    ``detail-figure``, ``detail-pole``, ``detail-dot-<n>``, ``detail-end-dot-<vector>``, ``detail-pole-label``,
     ``detail-image-<name>``, ``detail-end-<vector>``, ``detail-name``.
 
+    *pts* are the crowding points, *names* the images of the link whose figure is drawn (or none).
     Returns the labels of the vectors shorter than :data:`SHORT_MM` that the detail draws.
     """
-    pts = [images[n] for n in names]
     centre = sum(pts) / len(pts)
     r = max(abs(q - centre) for q in pts) + 1.6
     closest = min(abs(q - w) for i, q in enumerate(pts) for w in pts[:i])
@@ -433,7 +459,7 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, names: list[str],
     sketch.obstacles.append(Point(at.real, at.imag).buffer(big).exterior.buffer(0.3))
     figure = [f(images[n]) for n in names]
     hull = MultiPoint([(q.real, q.imag) for q in figure]).convex_hull
-    if hull.geom_type == "Polygon":
+    if len(figure) >= 3 and hull.geom_type == "Polygon":
         sketch.polygon([complex(x, y) for x, y in list(hull.exterior.coords)[:-1]], fc=fill, ec=edge, lw=lw, gid="detail-figure", zorder=0.8)
     shown: set[str] = set()
     long_absolute = [v for v in vectors if v.kind == "absolute" and v.length * ratio >= SHORT_MM]
@@ -445,7 +471,7 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, names: list[str],
         a, c = f(part[0]), f(part[1])
         z = 3.0 if v.kind == "absolute" else 2.5
         if abs(part[1] - complex(v.tip)) <= SAME_MM and abs(c - a) > 1.0:
-            if v.kind != "absolute" or _along(v, long_absolute) is None:
+            if _along(v, long_absolute) is None and not _on_shaft(v, long_absolute, 0.5 / ratio):
                 sketch.arrow(a, c, color=color, lw=vlw, dashes=dashes, head=_head(head, vlw, abs(c - a)), gid=f"detail-{v.label}", zorder=z)
             else:
                 # on a longer absolute vector's shaft (v_A4C on p→d): its head stands out within a white rim, as on the plan
@@ -459,7 +485,9 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, names: list[str],
     # that shares an image's label on the plan (a short component) has its own here
     groups = [(q, pieces) for q, pieces in _label_groups(plan, images, ends, [], SAME_MM) if inside(q)]
     for q, pieces in groups:
-        sketch.circle(f(q), 0.55 if abs(q) <= SAME_MM else 0.45, fc=INK, lw=0, gid=f"detail-dot-{pieces[0][1]}", zorder=4.0)
+        first = pieces[0][1]  # the point's gid as on the plan: pole, dot-<image>, end-dot-<vector>
+        dot = "pole" if first == "pole-label" else "dot-" + first[len("image-"):] if first.startswith("image-") else "end-dot-" + first[len("end-"):]
+        sketch.circle(f(q), 0.55 if abs(q) <= SAME_MM else 0.45, fc=INK, lw=0, gid=f"detail-{dot}", zorder=4.0)
     near = [v for v in vectors if v.length * ratio >= SHORT_MM]
     for q, pieces in groups:
         away = _away(q, near)
@@ -468,6 +496,19 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, names: list[str],
         place_label(sketch, f(q), [(text, f"detail-{gid}") for text, gid in pieces], size=LABEL_PT, prefer=away, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
     sketch.text(at + 1j * (big + 3.2), f"{name} ({fmt_number(ratio)} : 1)", size=LABEL_PT, gid="detail-name")
     return shown
+
+
+def _on_shaft(v, absolute, within: float) -> bool:
+    """Whether *v*'s tip lies within *within* [mm] of the inside of another absolute vector's shaft (its head would be lost on it)."""
+    tip = complex(v.tip)
+    for w in absolute:
+        if w is v or _same(v, w):
+            continue
+        u = unit(w.tip - w.tail)
+        off = (tip - w.tail) * u.conjugate()
+        if within < off.real < w.length - within and abs(off.imag) < within:
+            return True
+    return False
 
 
 def _rim(sketch: Sketch, head_artist, gid: str) -> None:
