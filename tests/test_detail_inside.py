@@ -31,6 +31,11 @@ def _text(name: str) -> str:
     return name[0] + name[1:].translate(_SUB)
 
 
+def _gid(label: str) -> str:
+    """A vector's label as it appears in gids (``a^k_A4A3`` → ``a_k_A4A3``)."""
+    return label.replace("^", "_")
+
+
 def _artists(fig):
     for ax in fig.axes:
         yield from ax.get_children()
@@ -96,8 +101,8 @@ def check_detail(fig, plan) -> list[str]:
     for v in plan.vectors:
         if abs(v.tip - v.tail) * ratio < 3.0:
             continue
-        if _crosses(complex(v.tail), complex(v.tip), centre, r) * ratio > 1.5 and not any(g.endswith(f"-detail-{v.label}") for g in gids):
-            if not any(abs(w.tail - v.tail) < 1e-3 and abs(w.tip - v.tip) < 1e-3 and any(g.endswith(f"-detail-{w.label}") for g in gids) for w in plan.vectors):
+        if _crosses(complex(v.tail), complex(v.tip), centre, r) * ratio > 1.5 and not any(g.endswith(f"-detail-{_gid(v.label)}") for g in gids):
+            if not any(abs(w.tail - v.tail) < 1e-3 and abs(w.tip - v.tip) < 1e-3 and any(g.endswith(f"-detail-{_gid(w.label)}") for g in gids) for w in plan.vectors):
                 problems.append(f"{v.label} passes through the ring but is not drawn in the detail")
     return problems
 
@@ -120,11 +125,22 @@ def detail_overlaps(fig) -> list[str]:
 
 
 @pytest.fixture(scope="module")
-def quick_return_page():
+def quick_return_handout():
     record: list = []
     pages = dict(handout_pages(load(example_path("quick-return")), positions=4, lang="sr", record=record))
-    run = dict(record)["position-2"]
-    return pages["position-2"], run.graphical.velocity_plan
+    return pages, dict(record)
+
+
+@pytest.fixture(scope="module")
+def quick_return_page(quick_return_handout):
+    pages, runs = quick_return_handout
+    return pages["position-2"], runs["position-2"].graphical.velocity_plan
+
+
+@pytest.fixture(scope="module")
+def quick_return_acceleration(quick_return_handout):
+    pages, runs = quick_return_handout
+    return pages["acceleration-2"], runs["acceleration-2"].graphical.acceleration_plan
 
 
 @pytest.fixture(scope="module")
@@ -156,7 +172,20 @@ def test_six_bar_detail_shows_every_image_inside_it(six_bar):
     assert {"a", "b", "c"} <= texts
 
 
-@pytest.mark.parametrize("which", ["quick_return_page", "six_bar"])
+def test_quick_return_acceleration_short_components_are_magnified(quick_return_acceleration):
+    """Review 3 item 8: the Coriolis component a′→k (1.38 mm) and aʳ k→a₄′ (1.26 mm) get a detail with their heads."""
+    fig, plan = quick_return_acceleration
+    assert check_detail(fig, plan) == []
+    texts = {t.get_text() for t in _detail_texts(fig).values()}
+    assert {"a′", "k", "a₄′"} <= texts
+    gids = {a.get_gid() or "" for a in _artists(fig)}
+    for label in ("a^k_A4A3", "a^r_A4A3"):
+        v = next(v for v in plan.vectors if v.label == label)
+        assert abs(v.tip - v.tail) < 3.0, label  # too short for an arrow on the plan
+        assert any(g.endswith(f"-detail-{_gid(label)}-head") for g in gids), label
+
+
+@pytest.mark.parametrize("which", ["quick_return_page", "six_bar", "quick_return_acceleration"])
 def test_detail_labels_overlap_no_label_or_arrowhead(which, request):
     fig, _ = request.getfixturevalue(which)
     assert detail_overlaps(fig) == []

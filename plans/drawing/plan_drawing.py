@@ -291,14 +291,16 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             sketch.circle(complex(v.tip), 0.3, fc=INK, lw=0, gid=f"end-dot-{v.label}", zorder=4.0, obstacle=False)
 
     # labels: the pole first, then each group of coincident images (and component ends)
+    # the ring around each crowd first, so that the plan's labels keep off it
+    rings = [(_ring(sketch, pts), names) for pts, names in (_crowds(plan, images, vectors) if detail else [])]
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     for at, pieces in groups:
         place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
 
     in_detail: dict[str, str] = {}
-    for index, (pts, names) in enumerate(_crowds(plan, images, vectors) if detail else []):
+    for index, (ring, names) in enumerate(rings):
         name = DETAIL_NAME + ("I" * index)
-        for label in _detail(sketch, plan, vectors, images, ends, pts, names, name):
+        for label in _detail(sketch, plan, vectors, images, ends, ring, names, name):
             in_detail.setdefault(label, name)
 
     if caption:
@@ -400,7 +402,19 @@ def _away(at: complex, vectors) -> complex | None:
     return away if abs(away) > 1e-9 else None
 
 
-def _detail(sketch: Sketch, plan, vectors, images: dict, ends, pts: list[complex], names: list[str], name: str) -> set[str]:
+def _ring(sketch: Sketch, pts: list[complex]) -> tuple[complex, float, float]:
+    """The ring around crowding points on the plan (gid ``detail-ring``), an obstacle to labels: (centre, radius, ratio n)."""
+    centre = sum(pts) / len(pts)
+    r = max(abs(q - centre) for q in pts) + 1.6
+    closest = min(abs(q - w) for i, q in enumerate(pts) for w in pts[:i])
+    ratio = next((k for k in DETAIL_RATIOS if 2 * r * k >= DETAIL_SPAN_MM and closest * k >= DETAIL_APART_MM), DETAIL_RATIOS[-1])
+    edge, _, _ = FIGURE_STYLE
+    sketch.circle(centre, r, fc="none", ec=edge, lw=0.5, gid="detail-ring", zorder=1.2, obstacle=False)
+    sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
+    return centre, r, ratio
+
+
+def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[complex, float, float], names: list[str], name: str) -> set[str]:
     """Crowded images drawn again, enlarged n : 1, in a circle beside the plan (a drafting detail).
 
     The crowd is ringed on the plan and named.  The detail shows everything the
@@ -413,17 +427,12 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, pts: list[complex
     ``detail-figure``, ``detail-pole``, ``detail-dot-<n>``, ``detail-end-dot-<vector>``, ``detail-pole-label``,
     ``detail-image-<name>``, ``detail-end-<vector>``, ``detail-name``.
 
-    *pts* are the crowding points, *names* the images of the link whose figure is drawn (or none).
+    *ring* is the crowd's ring on the plan (:func:`_ring`), *names* the images of the link whose figure is drawn (or none).
     Returns the labels of the vectors shorter than :data:`SHORT_MM` that the detail draws.
     """
-    centre = sum(pts) / len(pts)
-    r = max(abs(q - centre) for q in pts) + 1.6
-    closest = min(abs(q - w) for i, q in enumerate(pts) for w in pts[:i])
-    ratio = next((k for k in DETAIL_RATIOS if 2 * r * k >= DETAIL_SPAN_MM and closest * k >= DETAIL_APART_MM), DETAIL_RATIOS[-1])
+    centre, r, ratio = ring
     big = r * ratio
     edge, lw, fill = FIGURE_STYLE
-    sketch.circle(centre, r, fc="none", ec=edge, lw=0.5, gid="detail-ring", zorder=1.2, obstacle=False)
-    sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
     place_label(sketch, centre + r * cmath.exp(1j * math.pi / 4), [(name, "detail-mark")], size=LABEL_PT, gaps=(0.4, 1.2, 2.4, 4.0), leader_from=3.0)
 
     # where: in a free part of the plan (the page's room for it is not widened),
