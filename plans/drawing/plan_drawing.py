@@ -291,15 +291,34 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             sketch.circle(complex(v.tip), 0.3, fc=INK, lw=0, gid=f"end-dot-{v.label}", zorder=4.0, obstacle=False)
 
     # labels: the pole first, then each group of coincident images (and component ends)
-    # the ring around each crowd first, so that the plan's labels keep off it
-    rings = [(_ring(sketch, pts), names) for pts, names in (_crowds(plan, images, vectors) if detail else [])]
+    # a detail of short components that crowd is drawn first, where the plan has room for it (else their
+    # notes stand alone); a link's crowd is ringed first, so that the plan's labels keep off the ring, and its
+    # detail, beside the plan when there is no room within, is drawn after them
+    in_detail: dict[str, str] = {}
+    rings = []
+    names_given: list[str] = []  # I, II, … in the order the details are drawn
+
+    def next_name() -> str:
+        names_given.append(DETAIL_NAME + "I" * len(names_given))
+        return names_given[-1]
+
+    for pts, names in _crowds(plan, images, vectors) if detail else []:
+        chain = [v.length for v in shorts if not names and any(abs(complex(v.tail) - q) <= SAME_MM for q in pts) and any(abs(complex(v.tip) - q) <= SAME_MM for q in pts)]
+        ring = _ring(pts, min(chain) if chain else None)
+        if names:
+            _draw_ring(sketch, ring)
+            rings.append((ring, names))
+        elif (at := _spot(sketch, ring, within=True)) is not None:
+            _draw_ring(sketch, ring)
+            name = next_name()
+            for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, at):
+                in_detail.setdefault(label, name)
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     for at, pieces in groups:
         place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
 
-    in_detail: dict[str, str] = {}
-    for index, (ring, names) in enumerate(rings):
-        name = DETAIL_NAME + ("I" * index)
+    for ring, names in rings:
+        name = next_name()
         for label in _detail(sketch, plan, vectors, images, ends, ring, names, name):
             in_detail.setdefault(label, name)
 
@@ -402,19 +421,58 @@ def _away(at: complex, vectors) -> complex | None:
     return away if abs(away) > 1e-9 else None
 
 
-def _ring(sketch: Sketch, pts: list[complex]) -> tuple[complex, float, float]:
-    """The ring around crowding points on the plan (gid ``detail-ring``), an obstacle to labels: (centre, radius, ratio n)."""
+def _ring(pts: list[complex], shortest: float | None = None) -> tuple[complex, float, float]:
+    """The ring around crowding points on the plan: (centre, radius, ratio n of its detail).
+
+    A link's crowd is enlarged to about :data:`DETAIL_SPAN_MM` with its images
+    :data:`DETAIL_APART_MM` apart; a chain of short components (the *shortest* of
+    them given) just enough for each to be an arrow twice :data:`SHORT_MM` long,
+    so that its detail finds room within the plan.
+    """
     centre = sum(pts) / len(pts)
     r = max(abs(q - centre) for q in pts) + 1.6
     closest = min(abs(q - w) for i, q in enumerate(pts) for w in pts[:i])
-    ratio = next((k for k in DETAIL_RATIOS if 2 * r * k >= DETAIL_SPAN_MM and closest * k >= DETAIL_APART_MM), DETAIL_RATIOS[-1])
+    if shortest is not None:
+        fits = (k for k in DETAIL_RATIOS if 2 * r * k >= 0.75 * DETAIL_SPAN_MM and shortest * k >= 2 * SHORT_MM and closest * k >= 0.5 * DETAIL_APART_MM)
+    else:
+        fits = (k for k in DETAIL_RATIOS if 2 * r * k >= DETAIL_SPAN_MM and closest * k >= DETAIL_APART_MM)
+    return centre, r, next(fits, DETAIL_RATIOS[-1])
+
+
+def _draw_ring(sketch: Sketch, ring: tuple[complex, float, float]) -> None:
+    """The ring on the plan (gid ``detail-ring``), an obstacle to labels."""
+    centre, r, _ = ring
     edge, _, _ = FIGURE_STYLE
     sketch.circle(centre, r, fc="none", ec=edge, lw=0.5, gid="detail-ring", zorder=1.2, obstacle=False)
     sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
-    return centre, r, ratio
 
 
-def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[complex, float, float], names: list[str], name: str) -> set[str]:
+def _spot(sketch: Sketch, ring: tuple[complex, float, float], within: bool = False) -> complex | None:
+    """Where the ring's detail goes: in a free part of the plan (the page's room for it is not widened),
+    nearest the crowd; else (unless *within*) beside it, to the right, level with the crowd."""
+    centre, r, ratio = ring
+    big = r * ratio
+    b = sketch.bounds
+    free = big + 1.5
+    step = 2.0
+    spots = [
+        complex(b.xmin + free + i * step, b.ymin + free + j * step)
+        for i in range(int(max(0.0, b.width - 2 * free) / step) + 1)
+        for j in range(int(max(0.0, b.height - 2 * free) / step) + 1)
+    ]
+    for c in sorted(spots, key=lambda c: (abs(c - centre), c.real, c.imag)):
+        disk = Point(c.real, c.imag).buffer(free)
+        if not any(disk.intersects(o) for o in sketch.obstacles.near(c.real - free, c.imag - free, c.real + free, c.imag + free)):
+            return c
+    if within:
+        return None
+    # level with the crowd, but within the plan's height when the plan is taller than the detail
+    level = min(max(centre.imag, b.ymin + big), b.ymax - big) if b.height >= 2 * big else centre.imag
+    outside = [complex(b.xmax + 6.0 + big, level), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
+    return next((c for c in outside if not any(Point(c.real, c.imag).buffer(big + 2.0).intersects(o) for o in sketch.obstacles)), outside[0])
+
+
+def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[complex, float, float], names: list[str], name: str, at: complex | None = None) -> set[str]:
     """Crowded images drawn again, enlarged n : 1, in a circle beside the plan (a drafting detail).
 
     The crowd is ringed on the plan and named.  The detail shows everything the
@@ -427,7 +485,8 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[compl
     ``detail-figure``, ``detail-pole``, ``detail-dot-<n>``, ``detail-end-dot-<vector>``, ``detail-pole-label``,
     ``detail-image-<name>``, ``detail-end-<vector>``, ``detail-name``.
 
-    *ring* is the crowd's ring on the plan (:func:`_ring`), *names* the images of the link whose figure is drawn (or none).
+    *ring* is the crowd's ring on the plan (:func:`_ring`), *names* the images of the link whose figure is drawn (or none),
+    *at* the detail's centre (by default where :func:`_spot` finds room).
     Returns the labels of the vectors shorter than :data:`SHORT_MM` that the detail draws.
     """
     centre, r, ratio = ring
@@ -435,27 +494,8 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[compl
     edge, lw, fill = FIGURE_STYLE
     place_label(sketch, centre + r * cmath.exp(1j * math.pi / 4), [(name, "detail-mark")], size=LABEL_PT, gaps=(0.4, 1.2, 2.4, 4.0), leader_from=3.0)
 
-    # where: in a free part of the plan (the page's room for it is not widened),
-    # nearest the crowd; else beside it, to the right, level with the crowd
-    b = sketch.bounds
-    at = None
-    free = big + 1.5
-    step = 2.0
-    spots = [
-        complex(b.xmin + free + i * step, b.ymin + free + j * step)
-        for i in range(int(max(0.0, b.width - 2 * free) / step) + 1)
-        for j in range(int(max(0.0, b.height - 2 * free) / step) + 1)
-    ]
-    for c in sorted(spots, key=lambda c: (abs(c - centre), c.real, c.imag)):
-        disk = Point(c.real, c.imag).buffer(free)
-        if not any(disk.intersects(o) for o in sketch.obstacles.near(c.real - free, c.imag - free, c.real + free, c.imag + free)):
-            at = c
-            break
     if at is None:
-        # level with the crowd, but within the plan's height when the plan is taller than the detail
-        level = min(max(centre.imag, b.ymin + big), b.ymax - big) if b.height >= 2 * big else centre.imag
-        outside = [complex(b.xmax + 6.0 + big, level), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
-        at = next((c for c in outside if not any(Point(c.real, c.imag).buffer(big + 2.0).intersects(o) for o in sketch.obstacles)), outside[0])
+        at = _spot(sketch, ring)
 
     def f(z: complex) -> complex:
         return at + (z - centre) * ratio
