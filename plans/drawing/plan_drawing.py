@@ -263,9 +263,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
                 # out on that shaft within a white rim
                 size = _head(max(head, VECTOR_STYLE["absolute"][3]), lw, v.length)
                 _, head_artist = sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=size, gid=f"{kind}-{v.label}", zorder=2.4)
-                head_artist.set_zorder(3.6)
-                rim = ShapelyPolygon(head_artist.get_xy()[:3]).buffer(HALO_PT * MM_PER_PT, join_style=2)
-                sketch.polygon([complex(x, y) for x, y in list(rim.exterior.coords)[:-1]], fc="white", ec="none", lw=0, gid=f"{kind}-{v.label}-rim", zorder=3.5, obstacle=False)
+                _rim(sketch, head_artist, f"{kind}-{v.label}-rim")
                 continue
             if kind != "absolute":
                 shift = _beside(tail, tip, absolute)
@@ -293,38 +291,50 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             sketch.circle(complex(v.tip), 0.3, fc=INK, lw=0, gid=f"end-dot-{v.label}", zorder=4.0, obstacle=False)
 
     # labels: the pole first, then each group of coincident images (and component ends)
-    groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [(image_text(plan.pole), "pole-label")])]
+    # a detail of short components that crowd is drawn first, where the plan has room for it (else their
+    # notes stand alone); a link's crowd is ringed first, so that the plan's labels keep off the ring, and its
+    # detail, beside the plan when there is no room within, is drawn after them
+    in_detail: dict[str, str] = {}
+    rings = []
+    names_given: list[str] = []  # I, II, … in the order the details are drawn
 
-    def join(z: complex, piece: tuple[str, str], within: float) -> None:
-        for at, pieces in groups:
-            if abs(at - z) <= within:
-                pieces.append(piece)
-                return
-        groups.append((z, [piece]))
+    def next_name() -> str:
+        names_given.append(DETAIL_NAME + "I" * len(names_given))
+        return names_given[-1]
 
-    for name, z in images.items():
-        join(z, (image_text(name), f"image-{name}"), SAME_MM)
-    for z, letter, label in ends:
-        # an end a short component away from an image shares its label ("a′, n₁")
-        join(z, (letter, f"end-{label}"), JOIN_MM if any(v.label == label for v in shorts) else SAME_MM)
+    for pts, names in _crowds(plan, images, vectors) if detail else []:
+        chain = [v.length for v in shorts if not names and any(abs(complex(v.tail) - q) <= SAME_MM for q in pts) and any(abs(complex(v.tip) - q) <= SAME_MM for q in pts)]
+        ring = _ring(pts, min(chain) if chain else None)
+        if names:
+            _draw_ring(sketch, ring)
+            rings.append((ring, names))
+        elif (at := _spot(sketch, ring, within=True)) is not None:
+            _draw_ring(sketch, ring)
+            name = next_name()
+            for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, at):
+                in_detail.setdefault(label, name)
+    groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     for at, pieces in groups:
-        away = 0j
-        for v in vectors:
-            for end, other in ((v.tail, v.tip), (v.tip, v.tail)):
-                if abs(end - at) <= SAME_MM and abs(other - end) > SAME_MM:
-                    away -= unit(other - end)
-        place_label(sketch, at, pieces, size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
+        place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
 
-    for index, crowd in enumerate(_crowds(plan, images) if detail else []):
-        _detail(sketch, plan, vectors, images, crowd, index)
+    for ring, names in rings:
+        name = next_name()
+        for label in _detail(sketch, plan, vectors, images, ends, ring, names, name):
+            in_detail.setdefault(label, name)
 
     if caption:
-        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label)) for v in shorts])
+        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label), in_detail.get(v.label)) for v in shorts])
 
 
-def _crowds(plan, images: dict) -> list[list[str]]:
-    """The images of each link that crowd (3 or more distinct images within :data:`CROWD_MM`)."""
-    out = []
+def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[str]]]:
+    """What crowds on the plan, each as (its points, the images of its link figure):
+
+    * the images of a link, 3 or more distinct within :data:`CROWD_MM` (six-bar a b c);
+    * a chain of vectors too short for an arrow (under :data:`SHORT_MM`) but long enough to
+      read at the largest ratio, joining 3 or more distinct points within :data:`CROWD_MM`
+      (quick-return pos 2: a′ →k Coriolis 1.38 mm, k →a₄′ aʳ 1.26 mm), whose heads the plan cannot show.
+    """
+    out: list[tuple[list[complex], list[str]]] = []
     for link, labels in getattr(plan, "links", {}).items():
         names: list[str] = []
         for label in labels:
@@ -334,8 +344,28 @@ def _crowds(plan, images: dict) -> list[list[str]]:
         pts = [images[n] for n in names]
         if len(pts) >= 3:
             span = max(abs(q - r) for q in pts for r in pts)
-            if 0.5 < span < CROWD_MM and not any(set(names) <= set(c) for c in out):
-                out.append(names)
+            if 0.5 < span < CROWD_MM and not any(set(names) <= set(c) for _, c in out):
+                out.append((pts, names))
+    # chains of short vectors: their ends joined into clusters, in plan order
+    readable = DETAIL_APART_MM / DETAIL_RATIOS[-1]
+    clusters: list[list[complex]] = []
+    for v in vectors:
+        if not readable <= v.length < SHORT_MM:
+            continue
+        ends = [complex(v.tail), complex(v.tip)]
+        hit = [c for c in clusters if any(abs(e - q) <= SAME_MM for e in ends for q in c)]
+        merged: list[complex] = []
+        for c in hit:
+            clusters.remove(c)
+            merged.extend(q for q in c if all(abs(q - m) > SAME_MM for m in merged))
+        merged.extend(e for e in ends if all(abs(e - m) > SAME_MM for m in merged))
+        clusters.append(merged)
+    for pts in clusters:
+        if len(pts) < 3 or max(abs(q - r) for q in pts for r in pts) >= CROWD_MM:
+            continue
+        if any(all(any(abs(q - w) <= SAME_MM for w in c) for q in pts) for c, _ in out):
+            continue  # already in a link's detail
+        out.append((pts, []))
     return out
 
 
@@ -358,31 +388,71 @@ def _clip(a: complex, b: complex, centre: complex, r: float):
     return a + d * t0, a + d * t1
 
 
-def _detail(sketch: Sketch, plan, vectors, images: dict, names: list[str], index: int) -> None:
-    """Crowded images drawn again, enlarged n : 1, in a circle beside the plan (a drafting detail).
+def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[complex, list[tuple[str, str]]]]:
+    """The plan's labels: (point, [(text, gid), …]) for the pole, each group of coincident images, and component ends.
 
-    The crowd is ringed on the plan and named; the detail repeats every vector
-    (the part inside the ring), the link's figure, the image points and their
-    labels, so that the figure (a b c) and the heads can be read.  Gids:
-    ``detail-ring``, ``detail``, ``detail-<vector>`` (shaft, ``-head``),
-    ``detail-figure``, ``detail-image-<name>``, ``detail-name``.
+    Images closer than :data:`SAME_MM` share one label ("p, o, c"); the end of a
+    short component within *join* of an image shares that image's label ("a′, n₁").
     """
-    pts = [images[n] for n in names]
+    groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [(image_text(plan.pole), "pole-label")])]
+    short = {v.label for v in shorts}
+
+    def add(z: complex, piece: tuple[str, str], within: float) -> None:
+        for at, pieces in groups:
+            if abs(at - z) <= within:
+                pieces.append(piece)
+                return
+        groups.append((z, [piece]))
+
+    for name, z in images.items():
+        add(z, (image_text(name), f"image-{name}"), SAME_MM)
+    for z, letter, label in ends:
+        add(z, (letter, f"end-{label}"), join if label in short else SAME_MM)
+    return groups
+
+
+def _away(at: complex, vectors) -> complex | None:
+    """The direction away from the vectors that start or end at *at* (where its label is preferred), or None."""
+    away = 0j
+    for v in vectors:
+        for end, other in ((v.tail, v.tip), (v.tip, v.tail)):
+            if abs(end - at) <= SAME_MM and abs(other - end) > SAME_MM:
+                away -= unit(other - end)
+    return away if abs(away) > 1e-9 else None
+
+
+def _ring(pts: list[complex], shortest: float | None = None) -> tuple[complex, float, float]:
+    """The ring around crowding points on the plan: (centre, radius, ratio n of its detail).
+
+    A link's crowd is enlarged to about :data:`DETAIL_SPAN_MM` with its images
+    :data:`DETAIL_APART_MM` apart; a chain of short components (the *shortest* of
+    them given) just enough for each to be an arrow twice :data:`SHORT_MM` long,
+    so that its detail finds room within the plan.
+    """
     centre = sum(pts) / len(pts)
     r = max(abs(q - centre) for q in pts) + 1.6
     closest = min(abs(q - w) for i, q in enumerate(pts) for w in pts[:i])
-    ratio = next((k for k in DETAIL_RATIOS if 2 * r * k >= DETAIL_SPAN_MM and closest * k >= DETAIL_APART_MM), DETAIL_RATIOS[-1])
-    big = r * ratio
-    name = DETAIL_NAME + ("I" * index)
-    edge, lw, fill = FIGURE_STYLE
+    if shortest is not None:
+        fits = (k for k in DETAIL_RATIOS if 2 * r * k >= 0.75 * DETAIL_SPAN_MM and shortest * k >= 2 * SHORT_MM and closest * k >= 0.5 * DETAIL_APART_MM)
+    else:
+        fits = (k for k in DETAIL_RATIOS if 2 * r * k >= DETAIL_SPAN_MM and closest * k >= DETAIL_APART_MM)
+    return centre, r, next(fits, DETAIL_RATIOS[-1])
+
+
+def _draw_ring(sketch: Sketch, ring: tuple[complex, float, float]) -> None:
+    """The ring on the plan (gid ``detail-ring``), an obstacle to labels."""
+    centre, r, _ = ring
+    edge, _, _ = FIGURE_STYLE
     sketch.circle(centre, r, fc="none", ec=edge, lw=0.5, gid="detail-ring", zorder=1.2, obstacle=False)
     sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
-    place_label(sketch, centre + r * cmath.exp(1j * math.pi / 4), [(name, "detail-mark")], size=LABEL_PT, gaps=(0.4, 1.2, 2.4, 4.0), leader_from=3.0)
 
-    # where: in a free part of the plan (the page's room for it is not widened),
-    # nearest the crowd; else beside it, to the right, level with the crowd
+
+def _spot(sketch: Sketch, ring: tuple[complex, float, float], within: bool = False) -> complex | None:
+    """Where the ring's detail goes: in a free part of the plan (the page's room for it is not widened),
+    nearest the crowd; else (unless *within*) beside it, to the right, level with the crowd."""
+    centre, r, ratio = ring
+    big = r * ratio
     b = sketch.bounds
-    at = None
     free = big + 1.5
     step = 2.0
     spots = [
@@ -393,40 +463,108 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, names: list[str], index
     for c in sorted(spots, key=lambda c: (abs(c - centre), c.real, c.imag)):
         disk = Point(c.real, c.imag).buffer(free)
         if not any(disk.intersects(o) for o in sketch.obstacles.near(c.real - free, c.imag - free, c.real + free, c.imag + free)):
-            at = c
-            break
+            return c
+    if within:
+        return None
+    # level with the crowd, but within the plan's height when the plan is taller than the detail
+    level = min(max(centre.imag, b.ymin + big), b.ymax - big) if b.height >= 2 * big else centre.imag
+    outside = [complex(b.xmax + 6.0 + big, level), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
+    return next((c for c in outside if not any(Point(c.real, c.imag).buffer(big + 2.0).intersects(o) for o in sketch.obstacles)), outside[0])
+
+
+def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[complex, float, float], names: list[str], name: str, at: complex | None = None) -> set[str]:
+    """Crowded images drawn again, enlarged n : 1, in a circle beside the plan (a drafting detail).
+
+    The crowd is ringed on the plan and named.  The detail shows everything the
+    ring holds, enlarged: every vector that passes through it (the part inside,
+    with its head when its tip is inside), also one too short for an arrow on
+    the plan that is long enough at n : 1 (the plan's note on it says where it
+    is drawn), the link's figure, and every image point and lettered component
+    end inside the ring with the label it has on the plan (the pole "p, o, c").
+    Gids: ``detail-ring``, ``detail``, ``detail-<vector>`` (shaft, ``-head``),
+    ``detail-figure``, ``detail-pole``, ``detail-dot-<n>``, ``detail-end-dot-<vector>``, ``detail-pole-label``,
+    ``detail-image-<name>``, ``detail-end-<vector>``, ``detail-name``.
+
+    *ring* is the crowd's ring on the plan (:func:`_ring`), *names* the images of the link whose figure is drawn (or none),
+    *at* the detail's centre (by default where :func:`_spot` finds room).
+    Returns the labels of the vectors shorter than :data:`SHORT_MM` that the detail draws.
+    """
+    centre, r, ratio = ring
+    big = r * ratio
+    edge, lw, fill = FIGURE_STYLE
+    place_label(sketch, centre + r * cmath.exp(1j * math.pi / 4), [(name, "detail-mark")], size=LABEL_PT, gaps=(0.4, 1.2, 2.4, 4.0), leader_from=3.0)
+
     if at is None:
-        # level with the crowd, but within the plan's height when the plan is taller than the detail
-        level = min(max(centre.imag, b.ymin + big), b.ymax - big) if b.height >= 2 * big else centre.imag
-        outside = [complex(b.xmax + 6.0 + big, level), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
-        at = next((c for c in outside if not any(Point(c.real, c.imag).buffer(big + 2.0).intersects(o) for o in sketch.obstacles)), outside[0])
+        at = _spot(sketch, ring)
 
     def f(z: complex) -> complex:
         return at + (z - centre) * ratio
+
+    def inside(z: complex) -> bool:
+        return abs(complex(z) - centre) <= r
 
     sketch.circle(at, big, fc="none", ec=edge, lw=0.6, gid="detail", zorder=1.2, obstacle=False)
     sketch.bounds.add_box(at.real - big, at.imag - big, at.real + big, at.imag + big)
     sketch.obstacles.append(Point(at.real, at.imag).buffer(big).exterior.buffer(0.3))
     figure = [f(images[n]) for n in names]
     hull = MultiPoint([(q.real, q.imag) for q in figure]).convex_hull
-    if hull.geom_type == "Polygon":
+    if len(figure) >= 3 and hull.geom_type == "Polygon":
         sketch.polygon([complex(x, y) for x, y in list(hull.exterior.coords)[:-1]], fc=fill, ec=edge, lw=lw, gid="detail-figure", zorder=0.8)
+    shown: set[str] = set()
+    long_absolute = [v for v in vectors if v.kind == "absolute" and v.length * ratio >= SHORT_MM]
     for v in vectors:
         part = _clip(complex(v.tail), complex(v.tip), centre, r)
-        if part is None or v.length < SHORT_MM:
-            continue
+        if part is None or v.length * ratio < SHORT_MM:
+            continue  # outside the ring, or too short for an arrow even at n : 1
         color, vlw, dashes, head = VECTOR_STYLE[v.kind]
         a, c = f(part[0]), f(part[1])
+        z = 3.0 if v.kind == "absolute" else 2.5
         if abs(part[1] - complex(v.tip)) <= SAME_MM and abs(c - a) > 1.0:
-            sketch.arrow(a, c, color=color, lw=vlw, dashes=dashes, head=_head(head, vlw, abs(c - a)), gid=f"detail-{v.label}", zorder=3.0 if v.kind == "absolute" else 2.5)
+            if _along(v, long_absolute) is None and not _on_shaft(v, long_absolute, 0.5 / ratio):
+                sketch.arrow(a, c, color=color, lw=vlw, dashes=dashes, head=_head(head, vlw, abs(c - a)), gid=f"detail-{v.label}", zorder=z)
+            else:
+                # on a longer absolute vector's shaft (v_A4C on p→d): its head stands out within a white rim, as on the plan
+                _, head_artist = sketch.arrow(a, c, color=color, lw=vlw, dashes=dashes, head=_head(max(head, VECTOR_STYLE["absolute"][3]), vlw, abs(c - a)), gid=f"detail-{v.label}", zorder=2.4)
+                _rim(sketch, head_artist, f"detail-{v.label}-rim")
         else:
-            sketch.line([a, c], color=color, lw=vlw, dashes=dashes, gid=f"detail-{v.label}", zorder=3.0 if v.kind == "absolute" else 2.5)
-    for n in names:
-        sketch.circle(f(images[n]), 0.45, fc=INK, lw=0, gid=f"detail-dot-{n}", zorder=4.0)
-    for n in names:
-        away = f(images[n]) - at
-        place_label(sketch, f(images[n]), [(image_text(n), f"detail-image-{n}")], size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
+            sketch.line([a, c], color=color, lw=vlw, dashes=dashes, gid=f"detail-{v.label}", zorder=z)
+        if v.length < SHORT_MM:
+            shown.add(v.label)
+    # every image and lettered end inside the ring, labelled as on the plan; an end
+    # that shares an image's label on the plan (a short component) has its own here
+    groups = [(q, pieces) for q, pieces in _label_groups(plan, images, ends, [], SAME_MM) if inside(q)]
+    for q, pieces in groups:
+        first = pieces[0][1]  # the point's gid as on the plan: pole, dot-<image>, end-dot-<vector>
+        dot = "pole" if first == "pole-label" else "dot-" + first[len("image-"):] if first.startswith("image-") else "end-dot-" + first[len("end-"):]
+        sketch.circle(f(q), 0.55 if abs(q) <= SAME_MM else 0.45, fc=INK, lw=0, gid=f"detail-{dot}", zorder=4.0)
+    near = [v for v in vectors if v.length * ratio >= SHORT_MM]
+    for q, pieces in groups:
+        away = _away(q, near)
+        if away is None:
+            away = f(q) - at if abs(f(q) - at) > 1e-9 else None
+        place_label(sketch, f(q), [(text, f"detail-{gid}") for text, gid in pieces], size=LABEL_PT, prefer=away, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
     sketch.text(at + 1j * (big + 3.2), f"{name} ({fmt_number(ratio)} : 1)", size=LABEL_PT, gid="detail-name")
+    return shown
+
+
+def _on_shaft(v, absolute, within: float) -> bool:
+    """Whether *v*'s tip lies within *within* [mm] of the inside of another absolute vector's shaft (its head would be lost on it)."""
+    tip = complex(v.tip)
+    for w in absolute:
+        if w is v or _same(v, w):
+            continue
+        u = unit(w.tip - w.tail)
+        off = (tip - w.tail) * u.conjugate()
+        if within < off.real < w.length - within and abs(off.imag) < within:
+            return True
+    return False
+
+
+def _rim(sketch: Sketch, head_artist, gid: str) -> None:
+    """Raise an arrowhead over the shaft it stands on, within a white rim :data:`HALO_PT` wide."""
+    head_artist.set_zorder(3.6)
+    rim = ShapelyPolygon(head_artist.get_xy()[:3]).buffer(HALO_PT * MM_PER_PT, join_style=2)
+    sketch.polygon([complex(x, y) for x, y in list(rim.exterior.coords)[:-1]], fc="white", ec="none", lw=0, gid=gid, zorder=3.5, obstacle=False)
 
 
 def _head(head: float, lw: float, length: float) -> float:
@@ -537,9 +675,10 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     # (a plan with many of them grows by a line, not by a line each)
     width = max(b.width, 60.0)
     cursor = None
-    for v, letter in notes:
-        # language-neutral: the vector, its drawn length, and the point that stands for it
-        where = f"  ({letter})" if letter else ""
+    for v, letter, detail in notes:
+        # language-neutral: the vector, its drawn length, the point that stands for it, and the detail that draws it
+        where = ", ".join(x for x in (letter, detail) if x)
+        where = f"  ({where})" if where else ""
         note = f"|{vector_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm{where}"
         w = text_size(note, CAPTION_PT, math=True)[0]
         if cursor is None or cursor + w > x + width:
