@@ -148,6 +148,9 @@ def draw_mechanism(solution, ax=None, *, lang: str = "en", slots: dict | None = 
     return sketch_on(ax, "mech", lambda sketch: MechanismDrawing(sketch, solution, lang=lang, slots=slots, cycle=cycle).draw())
 
 
+#: choices made over a cycle (:meth:`MechanismDrawing._cycle_support_direction`), kept for the next drawing of the same cycle
+_CYCLE_CHOICES: dict = {}
+
 class _Pose:
     """The mechanism at one position of a cycle: the points' positions [m] and the bodies' poses."""
 
@@ -175,6 +178,7 @@ class MechanismDrawing:
     def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True, slots: dict | None = None, cycle=None):
         self.slots = dict(slots if slots is not None else getattr(solution, "travel", None) or {})
         self.cycle = tuple(cycle if cycle is not None else getattr(solution, "cycle_poses", None) or ())
+        self._plates: dict[str, bool] = {}  # body -> drawn as a plate (:meth:`_is_plate`)
         self.lang = lang
         self.show_caption = caption
         self.s = sketch
@@ -524,13 +528,18 @@ class MechanismDrawing:
         return [min(max(float(t) / self.k_l, lo), hi) for t in travel if math.isfinite(t)]
 
     def _is_plate(self, body: str) -> bool:
-        """A link with three or more points not on one line, drawn as a plate."""
-        pts = self.body_points(body)
-        if len(pts) < 3:
-            return False
-        hull = MultiPoint([(q.real, q.imag) for q in pts]).convex_hull
-        span = max(abs(q - r) for q in pts for r in pts)
-        return hull.geom_type == "Polygon" and hull.area > 0.02 * span * span
+        """A link with three or more points not on one line, drawn as a plate (a rigid body's shape: the same
+        at every position, so found once)."""
+        plates = self._plates
+        if body not in plates:
+            pts = self.body_points(body)
+            if len(pts) < 3:
+                plates[body] = False
+            else:
+                hull = MultiPoint([(q.real, q.imag) for q in pts]).convex_hull
+                span = max(abs(q - r) for q in pts for r in pts)
+                plates[body] = hull.geom_type == "Polygon" and hull.area > 0.02 * span * span
+        return plates[body]
 
     def _in_slot(self, block: str) -> bool:
         return any(g.startswith("slot-") and g.endswith(f"/{block}") for g in self.slotted)
@@ -660,6 +669,18 @@ class MechanismDrawing:
         None without a cycle, or when no one direction keeps clear (each position then chooses its own)."""
         if not self.cycle:
             return None
+        # the same for every drawing of one cycle at one scale (every position page of a handout): found once
+        key = ("support", id(self.cycle), name, q, height, self.k_l, self.symbol_scale)
+        hit = _CYCLE_CHOICES.get(key)
+        if hit is not None and hit[0] is self.cycle:
+            return hit[1]
+        found = self._find_cycle_support_direction(name, q, height)
+        if len(_CYCLE_CHOICES) >= 256:
+            _CYCLE_CHOICES.clear()
+        _CYCLE_CHOICES[key] = (self.cycle, found)  # the cycle kept with it: its id cannot be reused meanwhile
+        return found
+
+    def _find_cycle_support_direction(self, name: str, q: complex, height: float) -> complex | None:
         need = self._support_clearance(height)
         meeting = [b for b in self.scene.bodies_with(name) if b != FRAME]
         others = [b for b in self.moving if b not in meeting and not self.is_block(b)]
