@@ -10,8 +10,8 @@ the side of the guide line its hatch strokes run to.  The examples' geometry, wo
   through A = O + 120 mm·e^{iφ₂}, O = (0, 250 mm)).  Link DE meets the ram's block on both sides of
   the line: no one side is clear, so the ram runs in a guideway hatched both ways at every position.
 * six-bar: rocker 4 swings about D, the rod 5 through the sleeve about E: supports at D and E exist that
-  clear them at every position; the crank 2 turns a full circle about O, so no direction is clear of it
-  (its support stays put and the crank passes over it).
+  clear them at every position; the crank 2 turns a full circle about O, so no direction is clear of it:
+  its support stands below O and turns away only where the crank lies over it (issue 10 §4).
 """
 
 from __future__ import annotations
@@ -119,14 +119,30 @@ def _support_shape(artists, name) -> Polygon:
     return unary_union(shapes).difference(Point(q.real, q.imag).buffer(2.0))
 
 
+#: a crank's support may turn away where the crank lies over it (issue 10 §4: a crank never crosses its own
+#: support): within this angle of the support's axis, measured from the pins
+CRANK_OVER = math.radians(50)
+
+
+def _crank_over(artists, d) -> bool:
+    o, a = _pin(artists, "O"), _pin(artists, "A")
+    return abs(cmath.phase((a - o) / d)) < CRANK_OVER
+
+
 @pytest.mark.parametrize("name, pivots", [("quick-return", "OC"), ("six-bar", "ODE")])
 def test_every_support_points_the_same_way_on_every_position_page(name, pivots):
     pages = _pages(name)
     assert len(pages) == 12
     for p in pivots:
-        first = _support(pages[0][1], p)
-        for _, artists in pages[1:]:
-            assert abs(_support(artists, p) - first) < 1e-9, p
+        dirs = [_support(artists, p) for _, artists in pages]
+        common = max(dirs, key=lambda d: sum(abs(e - d) < 1e-9 for e in dirs))
+        turned = [k for k, d in enumerate(dirs) if abs(d - common) >= 1e-9]
+        if p != "O":
+            assert not turned, (p, turned)
+        # the crank's pivot: the common direction, except where the crank lies over it
+        for k in turned:
+            assert _crank_over(pages[k][1], common), (p, k)
+        assert len(turned) <= 4, (p, turned)
 
 
 @pytest.mark.parametrize("name, pivot, links", [("quick-return", "C", ()), ("six-bar", "D", ()), ("six-bar", "E", ())])
@@ -137,16 +153,27 @@ def test_a_support_that_can_keep_clear_of_the_links_does_so_at_every_position(na
             assert not support.intersects(bar), (pivot, body)
 
 
-def test_the_crank_s_support_stays_below_its_pivot_and_the_crank_is_drawn_over_it():
-    # six-bar: 12 positions of the crank every 30°; no direction is clear of it: the support stands below O
+def test_the_crank_s_support_stands_below_and_turns_away_only_where_the_crank_is_over_it():
+    # six-bar: 12 positions of the crank every 30°; no one direction is clear of a crank at every position:
+    # the support stands below O, and only where the crank lies over that it turns away from the crank
+    turned = 0
     for _, artists in _pages("six-bar"):
-        assert abs(_support(artists, "O") - (-1j)) < 1e-9
-        # the crank from O (its direction as the pins give it) is drawn over the support's triangle
-        over = _gid(artists, "mech-link-2-at-O")
-        ends = [complex(x, y) for x, y in zip(*over.get_data())]
-        o, a = _pin(artists, "O"), _pin(artists, "A")
-        assert abs(ends[0] - o) < 1e-9 and abs(((ends[1] - o) / (a - o)).imag) < 1e-9 and ((ends[1] - o) / (a - o)).real > 0
-        assert over.get_zorder() > _gid(artists, "mech-ground-O").get_zorder()
+        d = _support(artists, "O")
+        if abs(d - (-1j)) < 1e-9:
+            # the crank from O (its direction as the pins give it) is drawn over the support's triangle
+            over = _gid(artists, "mech-link-2-at-O")
+            ends = [complex(x, y) for x, y in zip(*over.get_data())]
+            o, a = _pin(artists, "O"), _pin(artists, "A")
+            assert abs(ends[0] - o) < 1e-9 and abs(((ends[1] - o) / (a - o)).imag) < 1e-9 and ((ends[1] - o) / (a - o)).real > 0
+            assert over.get_zorder() > _gid(artists, "mech-ground-O").get_zorder()
+        else:
+            turned += 1
+            assert _crank_over(artists, -1j)
+            support = _support_shape(artists, "O")
+            for body, bar in _bars(artists):
+                if body == "2":
+                    assert not support.intersects(bar)  # turned away: the crank clear of its support
+    assert 1 <= turned <= 4, turned  # the crank passes below O at some of the 12 positions
 
 
 def test_the_quick_return_ram_runs_in_one_guideway_at_every_position():
@@ -206,7 +233,7 @@ def test_the_cover_the_position_pages_and_the_position_sheets_share_the_supports
     assert len(sheets) == 4
     drawn = [p for p in pages if "mech-ground-D" in p.read_text()]
     assert len(drawn) == 4
-    for name in "ODE":
+    for name in "DE":  # (O turns away where the crank lies over its support: the test above)
         want = _svg_support(pages[0], "positions", name)
         for path in drawn + sheets:
             assert abs(_svg_support(path, "mech", name) - want) < 1e-6, (name, path.name)

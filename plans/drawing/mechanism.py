@@ -608,6 +608,8 @@ class MechanismDrawing:
             if under_block:
                 height = max(height, math.hypot(*self.block) / 2 + 2.5)
             d = self._cycle_support_direction(name, q, height)  # one direction for the whole cycle
+            if d is not None and self._link_over_support(name, q, d, height):
+                d = None  # a crank over its support at this position turns it away here (issue 10 §4), only here
             if d is None:
                 d = self._support_direction(name, q, height)
             n = d * 1j
@@ -655,6 +657,18 @@ class MechanismDrawing:
         pts = [q + d * (self.pin_r + 0.3) + n * 0.5, q + d * (self.pin_r + 0.3) - n * 0.5, q + d * far - n * half, q + d * far + n * half]
         return ShapelyPolygon([(z.real, z.imag) for z in pts]).buffer(2.0)
 
+    def _link_over_support(self, name: str, q: complex, d: complex, height: float) -> bool:
+        """Whether a link meeting pivot *name* lies, at the drawing's own position, within
+        :meth:`_support_clearance` of a support turned along *d* (a crank passing over its support)."""
+        need = self._support_clearance(height)
+        for body in self.scene.bodies_with(name):
+            if body == FRAME or self.is_block(body):
+                continue
+            for r in self.body_points(body):
+                if abs(r - q) > 1e-6 and abs(cmath.phase((r - q) / d)) < need:
+                    return True
+        return False
+
     def _support_clearance(self, height: float) -> float:
         """The least angle [rad] between a support's axis and a link from its pivot that keeps the link
         off the support's base and hatching."""
@@ -665,7 +679,8 @@ class MechanismDrawing:
         position of the cycle at least :meth:`_support_clearance` from each link meeting the pivot, and clear
         of the other links; of those, as far from the links as can be (up to 75°), then down, then up, in
         preference to sideways (as :meth:`_support_direction`).  A link turning a full circle about the
-        pivot (a crank) passes every direction: a crank's support stays put and the crank passes over it.
+        pivot (a crank) passes every direction: a crank's support keeps the direction the others decide, and
+        :meth:`ground_pivots` turns it away at a position where the crank lies over it.
         None without a cycle, or when no one direction keeps clear (each position then chooses its own)."""
         if not self.cycle:
             return None
