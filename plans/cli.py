@@ -562,7 +562,7 @@ def _draw(args) -> int:
         branches = _branch_lines(analytic, args.lang)
         formula = analytic.structure.formula
         cycle = cycle_sweep(scene, analytic.structure)
-        travel = line_travel(cycle) if scene.prismatics else {}  # slots and guides drawn over the cycle's travel
+        travel = line_travel(cycle)  # slots and guides drawn over the cycle's travel
         poses = cycle_poses(cycle)  # the frame (guides' hatching, supports) chosen over the cycle
 
         def table_of(g):

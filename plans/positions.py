@@ -49,7 +49,6 @@ from .units import UnitError, parse_quantity
 __all__ = [
     "parse_positions",
     "cycle_positions",
-    "cycle_travel",
     "cycle_sweep",
     "cycle_poses",
     "fit_scale",
@@ -190,15 +189,6 @@ def cycle_sweep(scene: Scene, structure=None, steps: int = CYCLE_STEPS):
     else:
         at = [scene.driver.s]
     return solve(scene, np.asarray(at, dtype=float), structure, allow_partial=True)
-
-
-def cycle_travel(scene: Scene, structure=None, steps: int = CYCLE_STEPS) -> dict[str, tuple[float, float]]:
-    """The travel along each guide line over the driver's cycle (:func:`plans.sweep.line_travel`), for drawing."""
-    from .sweep import line_travel
-
-    if not scene.prismatics:
-        return {}
-    return line_travel(cycle_sweep(scene, structure, steps))
 
 
 #: Positions of a cycle the scheme's frame is chosen over (every 5° of a crank's turn).

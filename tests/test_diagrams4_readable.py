@@ -15,7 +15,6 @@ Everything is measured in the figure or the PDF, against the solver's angles.
 
 from __future__ import annotations
 
-import io
 import math
 import re
 import shutil
@@ -168,10 +167,16 @@ def test_every_position_line_has_the_same_width(name, lang, tmp_path):
             if abs(float(x0) - float(x1)) < 1e-6:
                 strokes.add(float(w))
     assert len(strokes) == 1 and strokes == widths
-    if shutil.which("pdftoppm") is None:
-        pytest.skip("pdftoppm is not installed")
+
+
+@pytest.mark.skipif(shutil.which("pdftoppm") is None, reason="pdftoppm (poppler-utils) is not installed")
+@pytest.mark.parametrize("name, lang", [("quick-return", "sr"), ("six-bar", "en")])
+def test_every_position_line_prints_equally_wide(name, lang, tmp_path):
+    """Rasterised by pdftoppm (what a teacher prints from), every position line is the same number of pixels
+    wide at 70, 110 and 150 dpi."""
     from PIL import Image
 
+    figures, path = _handout_diagram_pdf(name, lang, tmp_path)
     fig = figures[0]
     ax = fig.axes[-1]  # the bottom panel: nothing drawn across the lines but the curves
     height = fig.get_size_inches()[1] * 72.0

@@ -15,7 +15,8 @@ import plans
 from plans.drawing.sheet import _Figure, _ladder, _reach
 from plans.graphical import construct
 from plans.graphical.scales import PAGE_MANTISSAS
-from plans.positions import cycle_travel
+from plans.positions import cycle_sweep
+from plans.sweep import line_travel
 
 
 def test_the_slider_crank_s_guide_over_its_stroke_widens_what_scales_with_k_l():
@@ -23,7 +24,7 @@ def test_the_slider_crank_s_guide_over_its_stroke_widens_what_scales_with_k_l():
     # to √((0.25+0.1)² − 0.05²) = √0.12; at 45° B is at 0.1/√2 + √(0.25² − (0.05 − 0.1/√2)²) ≈ 0.31985.
     scene = plans.load(plans.example_path("slider-crank"))
     graphical = construct(scene)
-    travelled = replace(graphical, travel=cycle_travel(scene, plans.solve(scene).structure))
+    travelled = replace(graphical, travel=line_travel(cycle_sweep(scene, plans.solve(scene).structure)))
     a = 0.1 / math.sqrt(2)
     b = a + math.sqrt(0.25**2 - (0.05 - a) ** 2)
     assert _reach(graphical) == pytest.approx((b, a), abs=1e-9)  # no travel attached: the points alone

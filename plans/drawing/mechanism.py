@@ -657,17 +657,27 @@ class MechanismDrawing:
         pts = [q + d * (self.pin_r + 0.3) + n * 0.5, q + d * (self.pin_r + 0.3) - n * 0.5, q + d * far - n * half, q + d * far + n * half]
         return ShapelyPolygon([(z.real, z.imag) for z in pts]).buffer(2.0)
 
+    def _meeting_angles(self, name: str, q: complex) -> dict[str, list[float]]:
+        """Per link meeting frame pivot *name* (at *q*), the directions [rad] in which it leaves the pivot at
+        the drawing's present position: towards each of its points, and both ways along a block's guide
+        (the rod through a swinging sleeve runs both ways through the pivot)."""
+        out = {}
+        for body in self.scene.bodies_with(name):
+            if body == FRAME:
+                continue
+            angles = [cmath.phase(r - q) for r in self.body_points(body) if abs(r - q) > 1e-6]
+            if self.is_block(body):
+                phi = self.block_angle(body)
+                angles += [phi, phi + math.pi]
+            out[body] = angles
+        return out
+
     def _link_over_support(self, name: str, q: complex, d: complex, height: float) -> bool:
         """Whether a link meeting pivot *name* lies, at the drawing's own position, within
         :meth:`_support_clearance` of a support turned along *d* (a crank passing over its support)."""
         need = self._support_clearance(height)
-        for body in self.scene.bodies_with(name):
-            if body == FRAME or self.is_block(body):
-                continue
-            for r in self.body_points(body):
-                if abs(r - q) > 1e-6 and abs(cmath.phase((r - q) / d)) < need:
-                    return True
-        return False
+        return any(abs(cmath.phase(cmath.exp(1j * a) / d)) < need
+                   for body, angles in self._meeting_angles(name, q).items() if not self.is_block(body) for a in angles)
 
     def _support_clearance(self, height: float) -> float:
         """The least angle [rad] between a support's axis and a link from its pivot that keeps the link
@@ -701,13 +711,7 @@ class MechanismDrawing:
         others = [b for b in self.moving if b not in meeting and not self.is_block(b)]
 
         def measure():
-            angles = {}
-            for body in meeting:
-                out = [cmath.phase(r - q) for r in self.body_points(body) if abs(r - q) > 1e-6]
-                if self.is_block(body):
-                    phi = self.block_angle(body)
-                    out += [phi, phi + math.pi]
-                angles[body] = out
+            angles = self._meeting_angles(name, q)
             shapes = {}
             for body in others:
                 pts = self.body_points(body)
@@ -753,17 +757,7 @@ class MechanismDrawing:
         """Unit direction from a pivot to its ground: as far from every link meeting it as can be (up to 75°),
         clear of other links drawn near, then down, then up, in preference to sideways."""
         height = self.ground if height is None else height
-        angles = []
-        for body in self.scene.bodies_with(name):
-            if body == FRAME:
-                continue
-            for r in self.body_points(body):
-                if abs(r - q) > 1e-6:
-                    angles.append(cmath.phase(r - q))
-            if self.is_block(body):
-                # a block's guide (the rod through a swinging sleeve) runs both ways through the pivot
-                phi = self.block_angle(body)
-                angles += [phi, phi + math.pi]
+        angles = [a for found in self._meeting_angles(name, q).values() for a in found]
         best = None
         hole = Point(q.real, q.imag).buffer(self.pin_r + 0.3)  # what meets the pivot itself is judged above
         near = [o for o in getattr(self, "link_shapes", []) if not o.intersects(hole)]
