@@ -431,7 +431,7 @@ def handout_pages(
     def where(r) -> str:
         return f"{term('position', lang)} {r.index}:  {r.label}" if multi else r.label
 
-    def head(r, scales, page="velocity"):
+    def head(r, page="velocity"):
         # each scale factor is stated once, under the drawing it belongs to (its caption), not again in the header;
         # the scene's data are on the cover of a multi-position handout: its position pages give the room to the drawings
         if multi:
@@ -447,7 +447,7 @@ def handout_pages(
     pages_runs = {}
     if solved:
         sample = solved[0]
-        frames = position_page_frames(sample.graphical, lang=lang, header_lines=lambda page: head(sample, sample.graphical.scales, page), equations=_equations(sample.graphical, run.structure))
+        frames = position_page_frames(sample.graphical, lang=lang, header_lines=lambda page: head(sample, page), equations=_equations(sample.graphical, run.structure))
         # what the drawings take beyond their geometry: the plans' as the first position's, each mechanism's its own
         unscaled = _fixed_parts(sample.graphical, lang)
         sizes = None
@@ -492,7 +492,7 @@ def handout_pages(
         for page, name in (("velocity", "position"), ("acceleration", "acceleration")):
             if page == "acceleration" and here.graphical.acceleration_plan is None:
                 continue
-            fig, g = draw_position_page(here, frame=frame, page=page, lang=lang, header_lines=lambda g, r=r, page=page: head(r, g.scales, page), equations=equations, footer=footer, rescale=rescale)
+            fig, g = draw_position_page(here, frame=frame, page=page, lang=lang, header_lines=lambda g, r=r, page=page: head(r, page), equations=equations, footer=footer, rescale=rescale)
             if g is not here.graphical:
                 here = replace(r, graphical=g)
             drawn.append((f"{name}-{r.index}", fig))
