@@ -50,7 +50,7 @@ def user_text(text) -> str:
 def decimal_comma(text: str, lang: str) -> str:
     """*text* with the decimal point of its numbers as *lang* writes it: ``0.025`` → ``0,025`` in sr, ru, bg, sl.
 
-    Only a point between two digits changes (``5.rod``, ``I(0,2)`` stay).
+    Only a point between two digits changes (``5.rod``, ``I(1,2)`` stay).
 
     >>> decimal_comma("k_v = 0.025 (m/s)/mm, φ = 55.0°", "ru")
     'k_v = 0,025 (m/s)/mm, φ = 55,0°'

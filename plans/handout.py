@@ -124,7 +124,7 @@ def _equations(graphical, structure) -> dict[str, list[str]]:
     """Page (``"velocity"``, ``"acceleration"``) -> the vector equations of its plan."""
     from .drawing.sheet import sheet_equations
 
-    return {page: sheet_equations(graphical, driver_label=f"I(0,{structure.driver})", plans=(page,)) for page in ("velocity", "acceleration")}
+    return {page: sheet_equations(graphical, driver_label=f"I({structure.frame},{structure.driver})", plans=(page,)) for page in ("velocity", "acceleration")}
 
 
 # --- scales ------------------------------------------------------------------------------

@@ -27,7 +27,7 @@ text.
 >>> scene = plans.load(plans.example_path("four-bar"))
 >>> blocks = loop_equations(plans.solve(scene))
 >>> [b.title for b in blocks]
-['I(0,2)', 'RRR(3,4)']
+['I(1,2)', 'RRR(3,4)']
 """
 
 from __future__ import annotations
@@ -49,7 +49,7 @@ class LoopBlock:
     Attributes
     ----------
     title : str
-        ``"I(0,2)"`` or the group's name ``"RRR(3,4)"``.
+        ``"I(1,2)"`` or the group's name ``"RRR(3,4)"``.
     lines : tuple of str
         Mathtext lines: for a group, the symbolic loop, then the position,
         velocity and acceleration equations with numbers and results; then
@@ -473,7 +473,7 @@ def _driver_block(b: _Builder) -> LoopBlock:
             lines.append(rf"$a_{{{p}}} = \ddot{{s}}\,u = {_paren(driver.acceleration)}\,{e} = {_cplx(m.a[b.k], True)}\ \mathrm{{m/s^2}}$")
         joints = {driver.point: body.points[driver.point]}
         lines += _point_lines(b, link, joints, {driver.point})
-    return LoopBlock(f"I(0,{link})", tuple(lines))
+    return LoopBlock(f"I({scene.frame_number},{link})", tuple(lines))
 
 
 def _group_block(b: _Builder, group, done: set[str]) -> LoopBlock:

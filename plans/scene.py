@@ -231,6 +231,18 @@ class Scene:
         """Names of the moving bodies (driver, links, blocks), in scene order."""
         return [name for name in self.bodies if name != FRAME]
 
+    @property
+    def frame_number(self) -> str:
+        """The number the frame goes by on every page, in every formula and label.
+
+        It follows the scene's numbering: ``"1"`` where the links start at 2
+        (the crank is 2, as in the Serbian workbook), ``"0"`` where a link is
+        already called 1 (the crank is 1, as in the Russian and Bulgarian
+        courses); ``"frame"`` only if both 0 and 1 are taken.
+        """
+        links = self.links
+        return "1" if "1" not in links else ("0" if "0" not in links else FRAME)
+
     def line(self, key: str) -> Line:
         """The line ``"BODY.LINE"``."""
         body, _, name = key.rpartition(".")

@@ -137,11 +137,13 @@ class Structure:
     driver: str
     groups: tuple[Group, ...]
     mobility: int
+    #: The frame's number (:attr:`plans.scene.Scene.frame_number`).
+    frame: str = "1"
 
     @property
     def formula(self) -> str:
-        """The structural formula, such as ``I(0,2) → RRR(3,4) → RPR(5,6)``."""
-        return " → ".join([f"I(0,{self.driver})"] + [g.name for g in self.groups])
+        """The structural formula, such as ``I(1,2) → RRR(3,4) → RPR(5,6)`` (the frame's number first)."""
+        return " → ".join([f"I({self.frame},{self.driver})"] + [g.name for g in self.groups])
 
     def group_of(self, link: str) -> Group | None:
         for group in self.groups:
@@ -296,7 +298,7 @@ def find_structure(scene: Scene) -> Structure:
             f"attached to links solved before them ({solved}): {detail}; each dyad needs one joint from each of its "
             "two links to a solved link; plans solves dyads only (a class III group or higher needs an iterative solution)"
         )
-    structure = Structure(driver, tuple(groups), w)
+    structure = Structure(driver, tuple(groups), w, scene.frame_number)
     check_assembly(scene, structure)
     return structure
 

@@ -34,7 +34,7 @@ def test_solve_json_follows_the_schema_and_matches_e2(capsys):
     assert status == 0
     doc = json.loads(out)
     assert doc["title"] == "Offset slider-crank (E2)"
-    assert doc["structure"] == "I(0,2) → RRP(3,4)"
+    assert doc["structure"] == "I(1,2) → RRP(3,4)"
     assert doc["driver"]["type"] == "crank" and doc["driver"]["phi_deg"] == pytest.approx(45.0)
     b = doc["points"]["B"]
     assert complex(*b["analytic"]["v"]) == pytest.approx(E2_V_B, rel=1e-7)
@@ -69,7 +69,7 @@ def test_velocities_only_scene_has_no_acceleration_keys(capsys, tmp_path):
 def test_solve_table_names_units_and_methods(capsys):
     status, out, _ = run(capsys, "solve", "--example", "quick-return")
     assert status == 0
-    assert "I(0,2) → RPR(3,4) → RRP(5,6)" in out
+    assert "I(1,2) → RPR(3,4) → RRP(5,6)" in out
     assert "v [m/s]" in out and "graphical" in out and "Coriolis" in out
 
 

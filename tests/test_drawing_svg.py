@@ -31,7 +31,7 @@ def drawn(tmp_path_factory):
     for name in ("slider_crank", "quick_return", "ladder"):
         solution = getattr(F, name)()
         directory = tmp_path_factory.mktemp(name)
-        write_drawings(solution, directory, formula="I(0,2) → RRP(3,4)", table=[["quantity", "value"], ["v_B [m/s]", "16.04"]])
+        write_drawings(solution, directory, formula="I(1,2) → RRP(3,4)", table=[["quantity", "value"], ["v_B [m/s]", "16.04"]])
         out[name] = (solution, directory)
     return out
 
@@ -213,10 +213,10 @@ def test_write_drawings_returns_the_four_paths(drawn):
 def test_sheet_has_title_formula_equations_and_table(tmp_path):
     solution = F.quick_return()
     table = [["quantity", "graphical", "analytic", "rel. error"], ["ω link 4 [rad/s]", "1.650", "1.6501", "1.0e-04"]]
-    write_drawings(solution, tmp_path, formula="I(0,2) → RPR(3,4) → RRP(5,6)", table=table, equations=["plain equation one"])
+    write_drawings(solution, tmp_path, formula="I(1,2) → RPR(3,4) → RRP(5,6)", table=table, equations=["plain equation one"])
     found = texts(tmp_path / "sheet.svg")
     assert solution.scene.title in found
-    assert "Structural formula:  I(0,2) → RPR(3,4) → RRP(5,6)" in found
+    assert "Structural formula:  I(1,2) → RPR(3,4) → RRP(5,6)" in found
     assert "plain equation one" in found
     for cell in table[0] + table[1]:
         assert cell in found

@@ -118,7 +118,7 @@ def test_a_one_position_handout_is_three_pages_the_plans_and_the_check(single):
     first, accel, second = (page.extract_text() for page in reader.pages)
     assert "Offset slider-crank (E2)" in first and "φ₂ = 45.0°" in first
     assert "Mechanism" in first and "Velocity plan" in first and "Acceleration plan" in accel
-    assert "Structural formula:  I(0,2) → RRP(3,4)" in first
+    assert "Structural formula:  I(1,2) → RRP(3,4)" in first
     assert "Vector equations of the plans" in first and "Vector equations of the plans" in accel
     assert "Graphical against analytic" in second and "rel. error" in second
     assert "Analytic check: complex-number method" in second

@@ -30,7 +30,7 @@ def six_bar():
 
 def test_one_block_for_the_driver_and_one_per_group(six_bar):
     solution, blocks = six_bar
-    assert [b.title for b in blocks] == ["I(0,2)", "RRR(3,4)", "RPR(5,6)"]
+    assert [b.title for b in blocks] == ["I(1,2)", "RRR(3,4)", "RPR(5,6)"]
 
 
 def test_the_rrr_loop_and_its_derivatives_with_the_solvers_numbers(six_bar):

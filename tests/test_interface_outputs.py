@@ -105,7 +105,7 @@ def test_every_command_path_runs_and_writes_valid_files(two_runs):
         elif kind == "csv":
             assert len(list(csv.reader(io.StringIO(stdout)))) == 25
         elif kind == "table":
-            assert "structure: I(0,2)" in stdout
+            assert "structure: I(1,2)" in stdout
         elif kind == "toml":
             assert 'title = "Wedge cam (PRP)"' in stdout
         elif kind == "text":

@@ -94,4 +94,4 @@ def test_a_handout_page_reads_back_from_the_pdf():
     pages = handout_pages(plans.load(plans.example_path("quick-return")), lang="sr")
     data = render_pdf([fig for _, fig in pages])
     text = "".join(t for t, _, _ in _glyphs(data))
-    assert "Структурнаформула:I(0,2)→RPR(3,4)→RRP(5,6)" in "".join(text.split())
+    assert "Структурнаформула:I(1,2)→RPR(3,4)→RRP(5,6)" in "".join(text.split())

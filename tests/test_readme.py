@@ -13,6 +13,6 @@ def test_python_examples_in_the_readme_run(tmp_path, monkeypatch, capsys):
     for block in blocks:
         exec(compile(block, "README.md", "exec"), {})
     out = capsys.readouterr().out
-    assert "I(0,2) → RRP(3,4)" in out
+    assert "I(1,2) → RRP(3,4)" in out
     assert "-16.0407" in out  # v_B of E2, domain.md §6
     assert (tmp_path / "out" / "sheet.svg").exists()

@@ -8,15 +8,15 @@ from plans.structure import find_structure, mobility
 
 # worked out by hand from each example's kinematic scheme
 EXPECTED = {
-    "ladder": "I(0,2) → RRP(3,4)",
-    "slider-crank": "I(0,2) → RRP(3,4)",
-    "four-bar": "I(0,2) → RRR(3,4)",
-    "quick-return": "I(0,2) → RPR(3,4) → RRP(5,6)",
-    "six-bar": "I(0,2) → RRR(3,4) → RPR(5,6)",
-    "linear-arm": "I(0,2) → RPR(3,4) → RRP(5,6)",
-    "wedge": "I(0,2) → PRP(3,4)",
-    "scotch-yoke": "I(0,2) → RPP(3,4)",
-    "rocker-limit": "I(0,2) → RRR(3,4)",
+    "ladder": "I(1,2) → RRP(3,4)",
+    "slider-crank": "I(1,2) → RRP(3,4)",
+    "four-bar": "I(1,2) → RRR(3,4)",
+    "quick-return": "I(1,2) → RPR(3,4) → RRP(5,6)",
+    "six-bar": "I(1,2) → RRR(3,4) → RPR(5,6)",
+    "linear-arm": "I(1,2) → RPR(3,4) → RRP(5,6)",
+    "wedge": "I(1,2) → PRP(3,4)",
+    "scotch-yoke": "I(1,2) → RPP(3,4)",
+    "rocker-limit": "I(1,2) → RRR(3,4)",
 }
 
 
@@ -90,3 +90,24 @@ def test_over_constrained_link_is_named():
     with pytest.raises(StructureError) as info:
         find_structure(loads(text))
     assert "mobility" in str(info.value) and "= 0" in str(info.value)
+
+
+def _renumbered(name: str, shift: int) -> str:
+    """The example's text with every link number lowered by *shift* (crank 2 -> crank 1)."""
+    import re
+
+    text = example_path(name).read_text()
+    return re.sub(r'(\[link\.|crank = "|link = "|")(\d)(?=[\]".])', lambda m: m.group(1) + str(int(m.group(2)) - shift), text)
+
+
+@pytest.mark.parametrize("shift, frame", [(0, "1"), (1, "0")])
+def test_one_frame_number_in_the_formula_and_the_centres(shift, frame):
+    # the scene's numbering decides: crank 2 -> frame 1 (Serbian workbook), crank 1 -> frame 0 (Russian, Bulgarian)
+    from plans.centres import instant_centres
+
+    scene = loads(_renumbered("four-bar", shift), source="four-bar.toml")
+    crank = scene.driver.link
+    assert crank == str(2 - shift)
+    assert find_structure(scene).formula.startswith(f"I({frame},{crank}) → RRR(")
+    numbers = instant_centres(scene).numbers
+    assert numbers["frame"] == frame

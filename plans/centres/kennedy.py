@@ -113,8 +113,7 @@ def body_numbers(scene: Scene) -> dict[str, str]:
     link is already called 1 (the crank-1 convention), then ``"0"``.
     """
     links = sorted(scene.links, key=_number_key)
-    frame = "1" if "1" not in links else ("0" if "0" not in links else FRAME)
-    return {FRAME: frame, **{name: name for name in links}}
+    return {FRAME: scene.frame_number, **{name: name for name in links}}
 
 
 def centre_label(numbers: dict[str, str], a: str, b: str) -> str:

@@ -12,7 +12,7 @@ only modules of plans that import matplotlib; nothing in ``plans.scene``,
 ``plans.structure``, ``plans.analytic`` or ``plans.graphical`` imports it.
 
 >>> from plans.drawing import write_drawings  # doctest: +SKIP
->>> write_drawings(solution, "out", formula="I(0,2) → RRP(3,4)")  # doctest: +SKIP
+>>> write_drawings(solution, "out", formula="I(1,2) → RRP(3,4)")  # doctest: +SKIP
 [PosixPath('out/mechanism.svg'), PosixPath('out/velocity.svg'), PosixPath('out/acceleration.svg'), PosixPath('out/sheet.svg')]
 """
 

@@ -58,7 +58,7 @@ def guide_names(line: str) -> str:
 def sheet_equations(solution, driver_label: str | None = None, plans=("velocity", "acceleration")) -> list[str]:
     """One line per construction step: ``"RRP(3,4):  v_B = v_A + v_BA;  v_B = …"``, velocity plan first.
 
-    With *driver_label* (such as ``"I(0,2)"``) the driver's steps are headed
+    With *driver_label* (such as ``"I(1,2)"``) the driver's steps are headed
     with it instead of the English word ``driver`` (see :func:`label_driver`);
     *plans* says of which plans (both by default).
     """
@@ -73,7 +73,7 @@ def sheet_equations(solution, driver_label: str | None = None, plans=("velocity"
 
 
 def label_driver(lines: list[str], label: str) -> list[str]:
-    """Equation lines with a leading ``driver:`` replaced by ``label:`` (``"I(0,2):"``, the structural notation)."""
+    """Equation lines with a leading ``driver:`` replaced by ``label:`` (``"I(1,2):"``, the structural notation)."""
     return [f"{label}:" + line[len("driver:"):] if line.startswith("driver:") else line for line in lines]
 
 
@@ -677,7 +677,7 @@ def _sheet_texts(solution, *, formula, table, equations, lang, title, branches, 
 
     eq_lines = sheet_equations(solution) if equations is None else list(equations)
     if lang != "en":  # "driver:" is the one English word of the steps: the structural notation instead
-        eq_lines = label_driver(eq_lines, f"I(0,{getattr(getattr(solution.scene, 'driver', None), 'link', '')})")
+        eq_lines = label_driver(eq_lines, f"I({getattr(solution.scene, 'frame_number', '1')},{getattr(getattr(solution.scene, 'driver', None), 'link', '')})")
     eq_block = None
     if eq_lines:
         heading = term("vector_equations", lang) if lang != "en" else "Vector equations"
