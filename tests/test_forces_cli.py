@@ -161,3 +161,12 @@ def test_solve_still_solves_the_kinematics_of_a_loaded_scene(capsys):
     doc = json.loads(out)
     assert status == 0 and doc["links"]["3"]["analytic"]["epsilon"] == pytest.approx(6511.74403, abs=5e-6)
     assert math.isclose(doc["points"]["B"]["analytic"]["v"][0], -14.69806, abs_tol=5e-6)
+
+
+def test_near_a_dead_centre_a_warning_and_at_it_a_refusal(capsys):
+    """rocker-limit-loads: A, B, D in line when |AD| = AB + BD = 0.65 m, cos φ_t = (0.1² + 0.7² − 0.65²)/(2·0.1·0.7)."""
+    limit = math.degrees(math.acos((0.01 + 0.49 - 0.4225) / 0.14))
+    status, out, err = run(capsys, "forces", "--example", "rocker-limit-loads", "--at", f"{limit - 1e-4!r} deg", "--analytic-only")
+    assert status == 0 and "near a dead centre" in err and "RRR(3,4)" in err
+    status, out, err = run(capsys, "forces", "--example", "rocker-limit-loads", "--at", f"{limit!r} deg", "--analytic-only")
+    assert status == 2 and out == "" and "dead centre" in err
