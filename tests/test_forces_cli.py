@@ -168,5 +168,7 @@ def test_near_a_dead_centre_a_warning_and_at_it_a_refusal(capsys):
     limit = math.degrees(math.acos((0.01 + 0.49 - 0.4225) / 0.14))
     status, out, err = run(capsys, "forces", "--example", "rocker-limit-loads", "--at", f"{limit - 1e-4!r} deg", "--analytic-only")
     assert status == 0 and "near a dead centre" in err and "RRR(3,4)" in err
+    doc = json.loads(run(capsys, "forces", "--example", "rocker-limit-loads", "--at", f"{limit - 1e-4!r} deg", "--analytic-only", "--json")[1])
+    assert any("near a dead centre" in warning for warning in doc["warnings"])
     status, out, err = run(capsys, "forces", "--example", "rocker-limit-loads", "--at", f"{limit!r} deg", "--analytic-only")
     assert status == 2 and out == "" and "dead centre" in err
