@@ -202,3 +202,19 @@ def test_the_force_plans_hook_puts_their_numbers_beside_the_analytic(capsys):
     assert "force_plans" not in doc["reactions"]["R_04"]
     table = forces_table(run_, "ru")
     assert "планы сил" in table and f"{M_B + 0.5:16.9g}".strip() in table
+
+
+def test_the_kinetostatics_never_imports_matplotlib():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "from plans.cli import main\n"
+        "assert main(['forces', '--example', 'slider-crank-loads', '--json']) == 0\n"
+        "import plans\n"
+        "plans.forces(plans.load(plans.example_path('six-bar-loads')))\n"
+        "print('matplotlib' in sys.modules, file=sys.stderr)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert done.stderr.strip() == "False"
