@@ -38,7 +38,7 @@ def test_json_has_exactly_the_documented_keys_and_the_worked_example(capsys):
     doc = json.loads(out)
     assert list(doc) == TOP and doc["schema"] == 1
     assert doc["units"] == UNITS
-    assert doc["structure"] == "I(0,2) → RRP(3,4)"
+    assert doc["structure"] == "I(1,2) → RRP(3,4)"
     assert [entry["name"] for entry in doc["loads"]] == ["G_2", "F_Φ2", "M_Φ2", "G_3", "F_Φ3", "M_Φ3", "G_4", "F_Φ4", "F_r"]
     assert all(list(entry) == LOAD for entry in doc["loads"])
     assert list(doc["reactions"]) == ["R_02", "R_23", "R_34", "R_04"]
