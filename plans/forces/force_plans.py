@@ -60,7 +60,7 @@ import cmath
 import math
 from dataclasses import dataclass, field
 
-from ..errors import SingularPositionError
+from ..errors import SceneError, SingularPositionError
 from ..graphical.plan import ConstructionLine
 from ..graphical.scales import measure, round_scale
 from ..limits import REFUSE_SINE, position_text
@@ -70,9 +70,6 @@ from ..structure import Group, find_structure
 __all__ = [
     "FORCE_KINDS",
     "PLAN_KINDS",
-    "Mass",
-    "PointLoad",
-    "LoadCase",
     "AppliedForce",
     "Couple",
     "PlanForce",
@@ -91,46 +88,6 @@ FORCE_KINDS = ("weight", "inertia", "external", "reaction", "balancing")
 #: force), a reaction read off the plan, its normal and tangential components,
 #: the balancing force.
 PLAN_KINDS = ("weight", "inertia", "external", "reaction", "normal", "tangential", "balancing")
-
-
-# --- what the construction reads from the scene -------------------------------------
-
-
-@dataclass(frozen=True)
-class Mass:
-    """A link's mass [kg], its centre S in the link's own coordinates [m], its inertia J_S [kg·m²]."""
-
-    body: str
-    mass: float
-    centre: complex
-    inertia: float = 0.0
-
-
-@dataclass(frozen=True)
-class PointLoad:
-    """A given load on a link: a force [N] at a point (own coordinates [m]) or a couple [N·m].
-
-    ``force`` is a fixed vector, or None when ``against_velocity`` [N] gives
-    a magnitude that opposes the velocity of the point (a resistance);
-    ``moment`` is a couple (counter-clockwise positive).  ``name`` is its
-    label (``"F_c"``).
-    """
-
-    body: str
-    name: str
-    at: complex = 0j
-    force: complex | None = None
-    against_velocity: float | None = None
-    moment: float | None = None
-
-
-@dataclass(frozen=True)
-class LoadCase:
-    """The loads of the scene at one position: masses, gravity [m/s², a vector], given loads."""
-
-    masses: tuple[Mass, ...] = ()
-    gravity: complex = 0j
-    loads: tuple[PointLoad, ...] = ()
 
 
 # --- results ----------------------------------------------------------------------------
@@ -297,7 +254,7 @@ class ForcePlans:
         for r in self.reactions.values():
             if r.on == body:
                 forces.append(AppliedForce(r.label, "reaction", body, r.at, r.force))
-            elif r.by == body:
+            elif r.by == body and pair_label(r.on, r.by) not in self.reactions:  # its other half, when not listed
                 forces.append(AppliedForce(pair_label(r.on, r.by), "reaction", body, r.at, -r.force))
         if self.balancing_force is not None and self.graphical.scene.driver.link == body:
             forces.append(AppliedForce("F_b", "balancing", body, self.balancing_at, self.balancing_force))
@@ -408,42 +365,43 @@ def _read_image(image: complex, k: float, precision: float | None) -> complex:
     return measure(size, precision) * k * (image / size)
 
 
-def _applied(graphical, case: LoadCase, d: _Drafting):
-    """Weights, inertia forces and couples, given loads: read from the graphical solution."""
+def _applied(graphical, d: _Drafting):
+    """Weights, inertia forces and couples, given loads (the scene's), read from the graphical solution."""
     scene = graphical.scene
     acc = graphical.acceleration_plan
     vel = graphical.velocity_plan
     k_a = graphical.scales.get("k_a")
+    gravity = scene.gravity.vector if scene.gravity is not None else 0j
     loads: list[AppliedForce] = []
     couples: list[Couple] = []
     centres: dict[str, Centre] = {}
-    for m in case.masses:
+    for m in scene.masses.values():
         if m.mass == 0 and m.inertia == 0:
             continue
         s = _sub(m.body)
         at = d.world(m.body, m.centre)
-        if acc is None:
-            raise ValueError("force plans need the acceleration plan (the scene asks for velocities only)")
         image = _image(acc, scene, graphical, m.body, at, "a")
         a_s = _read_image(image, k_a, d.precision)
         centres[m.body] = Centre(m.body, at, image, a_s)
-        if m.mass and case.gravity:
-            loads.append(AppliedForce(f"G_{s}", "weight", m.body, at, m.mass * case.gravity))
+        if m.mass and gravity:
+            loads.append(AppliedForce(f"G_{s}", "weight", m.body, at, m.mass * gravity))
         if m.mass and a_s:
             loads.append(AppliedForce(f"F_Φ{s}", "inertia", m.body, at, -m.mass * a_s))
         epsilon = graphical.links[m.body]["epsilon"]
         if m.inertia and epsilon:
             couples.append(Couple(f"M_Φ{s}", "inertia", m.body, -m.inertia * epsilon))
-    for load in case.loads:
-        if load.moment is not None:
-            couples.append(Couple(load.name, "external", load.body, load.moment))
+    for load in scene.loads:
+        if load.kind == "moment":
+            if load.moment:
+                couples.append(Couple(load.name, "external", load.body, load.moment))
             continue
         at = d.world(load.body, load.at)
-        if load.force is not None:
+        if load.kind == "force":
             force = load.force
-        else:
+        else:  # a resistance: against the velocity of its point read off the velocity plan
             v = _read_image(_image(vel, scene, graphical, load.body, at, "v"), graphical.scales["k_v"], d.precision)
-            force = -load.against_velocity * _unit(v)
+            working = load.working is None or (v * load.working.conjugate()).real > 0
+            force = -load.magnitude * _unit(v) if working else 0j
         if force:
             loads.append(AppliedForce(load.name, "external", load.body, at, force))
     return loads, couples, centres
@@ -479,12 +437,12 @@ def _intersect(p1: complex, d1: complex, p2: complex, d2: complex, size: float, 
 class _Builder:
     """Group by group, from the last to the driver."""
 
-    def __init__(self, graphical, structure, case: LoadCase, d: _Drafting):
+    def __init__(self, graphical, structure, d: _Drafting):
         self.g = graphical
         self.scene = graphical.scene
         self.structure = structure
         self.d = d
-        self.loads, self.couples, self.centres = _applied(graphical, case, d)
+        self.loads, self.couples, self.centres = _applied(graphical, d)
         self.passed: dict[str, list[AppliedForce]] = {}  # reactions of later groups on a known link
         self.reactions: dict[str, Reaction] = {}
         self.plans: list[ForcePlan] = []
@@ -803,15 +761,14 @@ def _guide_words(prismatic) -> str:
     return f"{prismatic.guide_line}"
 
 
-def construct_force_plans(graphical, case: LoadCase, *, structure=None, precision: float | None = ..., mu_F: float | None = None) -> ForcePlans:
+def construct_force_plans(graphical, *, structure=None, precision: float | None = ..., mu_F: float | None = None) -> ForcePlans:
     """Construct the force plans of every group and of the driver at the graphical solution's position.
 
     Parameters
     ----------
     graphical : plans.graphical.GraphicalSolution
-        With its acceleration plan: the accelerations are read off it.
-    case : LoadCase
-        Masses, gravity and given loads.
+        With its acceleration plan: the accelerations are read off it.  Its
+        scene's masses, gravity and loads are the loads.
     structure : plans.structure.Structure, optional
     precision : float or None, optional
         Drafting precision [mm] of every length read (the force plans and the
@@ -837,7 +794,10 @@ def construct_force_plans(graphical, case: LoadCase, *, structure=None, precisio
     if structure is None:
         structure = find_structure(graphical.scene)
     d = _Drafting(graphical, precision, mu_F)
-    builder = _Builder(graphical, structure, case, d)
+    if graphical.acceleration_plan is None:
+        scene = graphical.scene
+        raise SceneError("force plans need the acceleration plan, and the scene asks for velocities only", scene.source, "compute")
+    builder = _Builder(graphical, structure, d)
     for group in reversed(structure.groups):
         builder.group(group)
     m_b, f_b, at = builder.driver()
