@@ -1,0 +1,412 @@
+"""Drawings of the kinetostatics: each group's force plan, the driver's, and the free bodies of the groups.
+
+Drawn from :class:`plans.forces.force_plans.ForcePlans` data and nothing
+else: the plans' coordinates are already millimetres at μ_F, the free bodies
+are the mechanism at k_l.  Nothing is solved here.
+
+* :func:`draw_force_plan` — one force plan: the polygon of loads and
+  reactions head to tail, the two closing lines of known direction, the
+  reactions' components, every vector labelled, μ_F and the readings stated;
+* :func:`draw_free_bodies` — the mechanism cut into its groups and the
+  driver, each with its loads (weights, inertia forces and couples, given
+  forces) and the reactions on it, at the length scale k_l (the arrows have
+  one length, not to scale);
+* :func:`force_figures` / :func:`write_force_drawings` — every drawing of a
+  position, as figures or files (SVG true to scale, PDF, PNG), all or none.
+
+Gids: ``fplan-<kind>-<label>`` (shaft; ``-head``), ``fplan-line-<n>``,
+``fplan-start``, ``fplan-label-<label>``, ``fplan-heading``, ``fplan-scale``,
+``fplan-reading-<label>``, ``fplan-legend-<kind>``; ``fbody-link-<body>``,
+``fbody-force-<label>``, ``fbody-couple-<label>``, ``fbody-heading-<group>``.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from pathlib import Path
+
+from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
+from .labels import place_label
+from .numerals import localised, scale_caption
+from .style import CAPTION_PT, CONSTRUCTION_STYLE, FIGURE_STYLE, FORCE_STYLE, HEADING_PT, INK, LABEL_PT, SMALL_PT
+from ..i18n import term
+
+__all__ = [
+    "draw_force_plan",
+    "draw_force_plan_into",
+    "draw_free_bodies",
+    "force_figures",
+    "write_force_drawings",
+    "force_math",
+    "FORCE_LEGEND",
+    "FREE_ARROW_MM",
+]
+
+#: Length of every force arrow on the free bodies [mm] (not to scale).
+FREE_ARROW_MM = 14.0
+#: Radius of a couple's arc on the free bodies [mm].
+COUPLE_R_MM = 6.0
+#: Space between two free bodies [mm].
+FREE_GAP_MM = 22.0
+#: How far a closing line runs past the intersection and behind its start [mm].
+PAST_MM = 8.0
+BEHIND_MM = 4.0
+#: A vector shorter than this [mm] is drawn without a head; a note under the plan gives its length.
+SHORT_MM = 3.0
+#: Label gaps [mm] tried in turn.
+GAPS = (0.8, 1.6, 2.6, 3.8, 5.5, 8.0, 11.0)
+
+#: plan/force kind -> plans.i18n key of its legend words
+FORCE_LEGEND = {
+    "weight": "force_weight",
+    "inertia": "force_inertia",
+    "external": "force_external",
+    "reaction": "force_reaction",
+    "normal": "force_normal",
+    "tangential": "force_tangential",
+    "balancing": "balancing_force",
+}
+
+
+def _escape(text: str) -> str:
+    text = text.replace("\\", "").replace("{", "").replace("}", "")
+    for c in "$_%#&^~":
+        text = text.replace(c, "\\" + c)
+    return text
+
+
+def force_math(label: str) -> str:
+    """A force's label as mathtext: ``"R^t_23"`` → ``$R^{t}_{\\mathrm{23}}$``, ``"F_Φ3"``, a given load's name.
+
+    The symbol, superscript and subscript are escaped (a load's name comes
+    from the scene and is never read as a mathtext command).
+    """
+    head, _, sub = label.partition("_")
+    symbol, _, sup = head.partition("^")
+    text = _escape(symbol) or " "
+    if sup:
+        text += "^{" + _escape(sup) + "}"
+    if sub:
+        text += r"_{\mathrm{" + _escape(sub) + "}}"
+    return f"${text}$"
+
+
+def _number(value: float, lang: str, digits: int = 4) -> str:
+    """A reading to *digits* significant figures, in the language's numerals."""
+    if value == 0:
+        return "0"
+    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
+    return localised(f"{value:.{decimals}f}", lang)
+
+
+# --- a force plan ----------------------------------------------------------------------
+
+
+def draw_force_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, balancing_moment: float | None = None) -> list:
+    """Draw one force plan (:class:`plans.forces.force_plans.ForcePlan`), one data unit = 1 mm.
+
+    *balancing_moment* [N·m], given for the driver's plan, is stated under it.
+    Returns the artists; a new true-to-scale figure is ``artists[0].figure``.
+    """
+    return sketch_on(ax, "fplan", lambda sketch: draw_force_plan_into(sketch, plan, lang=lang, legend=legend, balancing_moment=balancing_moment))
+
+
+def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool = True, caption: bool = True, balancing_moment: float | None = None) -> None:
+    """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch."""
+    vectors = [v for v in plan.vectors if v.length > 1e-9]
+    for v in vectors:
+        for z in (v.tail, v.tip):
+            if not (math.isfinite(z.real) and math.isfinite(z.imag)):
+                raise ValueError(f"force plan {plan.group}: {v.label} is not finite")
+    # the closing lines, thin, under everything, from their point past the intersection
+    target = _closing_point(plan)
+    for n, line in enumerate(plan.lines):
+        d = unit(complex(line.direction))
+        t = ((target - line.through) * d.conjugate()).real if target is not None else 20.0
+        lo, hi = min(0.0, t), max(0.0, t)
+        a = line.through + d * (lo - (BEHIND_MM if t >= 0 else PAST_MM))
+        b = line.through + d * (hi + (PAST_MM if t >= 0 else BEHIND_MM))
+        color, lw, dashes = CONSTRUCTION_STYLE
+        sketch.line([a, b], color=color, lw=lw, dashes=dashes, gid=f"line-{n}", zorder=1.0)
+    # components and inner reactions first, under the polygon's own vectors
+    order = {"normal": 0, "tangential": 1, "reaction": 2, "weight": 3, "inertia": 3, "external": 3, "balancing": 3}
+    for v in sorted(vectors, key=lambda v: order[v.kind]):
+        color, lw, dashes, head = FORCE_STYLE[v.kind]
+        if v.length < SHORT_MM:  # too short for an arrow: its end is a point, its length a note
+            sketch.line([complex(v.tail), complex(v.tip)], color=color, lw=lw, gid=f"{v.kind}-{v.label}", zorder=3.0)
+            continue
+        sketch.arrow(complex(v.tail), complex(v.tip), color=color, lw=lw, dashes=dashes, head=min(head, v.length / 3.0), gid=f"{v.kind}-{v.label}", zorder=3.0 if v.kind != "normal" else 2.6)
+    sketch.circle(0j, 0.55, fc=INK, lw=0, gid="start", zorder=4.0)
+    for name, z in plan.points.items():
+        sketch.circle(complex(z), 0.35, fc=INK, lw=0, gid=f"vertex-{name}", zorder=4.0, obstacle=False)
+    centre = sum(complex(z) for z in plan.points.values()) / max(1, len(plan.points))
+    for v in vectors:
+        middle = (complex(v.tail) + complex(v.tip)) / 2
+        across = unit(middle - centre) if abs(middle - centre) > 1e-6 else 1j * unit(v.tip - v.tail)
+        place_label(sketch, middle, [(force_math(v.label), f"label-{v.label}")], size=LABEL_PT if v.length >= 6 else SMALL_PT,
+                    prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK)
+    if caption:
+        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment)
+
+
+def _closing_point(plan):
+    """The intersection of the two closing lines [mm], if the plan has them."""
+    if len(plan.lines) != 2:
+        return None
+    (p1, d1), (p2, d2) = ((complex(line.through), complex(line.direction)) for line in plan.lines)
+    cross = (d1.conjugate() * d2).imag
+    if abs(cross) < 1e-12:
+        return None
+    t = ((p2 - p1).conjugate() * d2).imag / cross
+    return p1 + t * d1
+
+
+def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None) -> None:
+    """Heading, μ_F, the reactions read off the plan, the legend: below the plan."""
+    b = sketch.bounds
+    x, y = b.xmin, b.ymin - 3.0
+    what = term("driver", lang) if plan.group == "driver" else plan.group
+    sketch.text(complex(x, y), f"{term('force_plan', lang)}: {what}", size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+    y -= 5.0
+    sketch.text(complex(x, y), scale_caption(r"\mu_F", fmt_number(plan.scale), "N/mm", lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    row = text_size("lp", CAPTION_PT)[1] + 0.9
+    for v in vectors:
+        if v.kind != "reaction":
+            continue
+        y -= row
+        line = f"{force_math(v.label)} = {_number(v.length, lang, 3)} mm · {localised(fmt_number(plan.scale), lang)} N/mm = {_number(v.value, lang)} N"
+        sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"reading-{v.label}", obstacle=False, math=True)
+    shorts = [v for v in vectors if v.length < SHORT_MM]
+    if shorts:
+        y -= row
+        notes = ",  ".join(f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm" for v in shorts)
+        sketch.text(complex(x, y), notes, size=CAPTION_PT, ha="left", va="top", gid="short", obstacle=False, math=True)
+    if balancing_moment is not None:
+        y -= row
+        sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(balancing_moment, lang)} N·m ({term('balancing_moment', lang)})",
+                    size=CAPTION_PT, ha="left", va="top", gid="reading-M_b", obstacle=False, math=True)
+    if not legend:
+        return
+    kinds = [k for k in FORCE_LEGEND if any(v.kind == k and v.length >= SHORT_MM for v in vectors)]
+    y -= 2.0
+    for kind in kinds:
+        y -= row
+        color, lw, dashes, _ = FORCE_STYLE[kind]
+        sketch.arrow(complex(x, y), complex(x + 9.0, y), color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}")
+        sketch.text(complex(x + 11.0, y), term(FORCE_LEGEND[kind], lang), size=CAPTION_PT, ha="left", va="center", gid=f"legend-text-{kind}", obstacle=False)
+    if plan.lines:
+        y -= row
+        color, lw, dashes = CONSTRUCTION_STYLE
+        sketch.line([complex(x, y), complex(x + 9.0, y)], color=color, lw=lw, dashes=dashes, gid="legend-construction", obstacle=False)
+        sketch.text(complex(x + 11.0, y), term("construction_line", lang), size=CAPTION_PT, ha="left", va="center", gid="legend-text-construction", obstacle=False)
+
+
+# --- the free bodies ---------------------------------------------------------------------
+
+
+def draw_free_bodies(forces, ax=None, *, lang: str = "en") -> list:
+    """The groups and the driver, cut apart, with their loads and the reactions on them.
+
+    Each is drawn at the mechanism's k_l, side by side in the order of the
+    force plans (the last group first, the driver last); every force is an
+    arrow of :data:`FREE_ARROW_MM` at its point of application (a load from
+    its point, a reaction into its joint), every couple an arc.
+    """
+    return sketch_on(ax, "fbody", lambda sketch: draw_free_bodies_into(sketch, forces, lang=lang))
+
+
+def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True) -> None:
+    """Draw the free bodies into *sketch* (see :func:`draw_free_bodies`)."""
+    g = forces.graphical
+    k_l = g.scales["k_l"]
+    x_next = 0.0
+    top = 0.0
+    placed = []
+    for plan in forces.plans:
+        links = plan.links
+        pts = [g.positions[n] / k_l for body in links for n in g.scene.bodies[body].points]
+        acting = []
+        couples = []
+        for body in links:
+            f, c = forces.on(body)
+            inner = {pair_label_of(r) for r in f if r.kind == "reaction" and _inside(r.label, links)}
+            acting += [x for x in f if not (x.kind == "reaction" and x.label in inner)]
+            couples += c
+        pts += [f.at / k_l for f in acting]
+        xmin = min(z.real for z in pts)
+        ymax = max(z.imag for z in pts)
+        shift = complex(x_next - xmin + FREE_ARROW_MM, 0.0)
+        placed.append((plan, links, shift, acting, couples))
+        width = max(z.real for z in pts) - xmin + 2 * FREE_ARROW_MM
+        x_next += width + FREE_GAP_MM
+        top = max(top, ymax)
+    for plan, links, shift, acting, couples in placed:
+        _free_body(sketch, forces, plan, links, shift, acting, couples, lang)
+    if caption:
+        b = sketch.bounds
+        sketch.text(complex(b.xmin, b.ymax + 9.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
+        sketch.text(complex(b.xmin, b.ymin - 3.0), f"{scale_caption('k_l', fmt_number(k_l), 'm/mm', lang)};  {term('not_to_scale', lang)}",
+                    size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+
+
+def pair_label_of(force) -> str:
+    return force.label
+
+
+def _inside(label: str, links) -> bool:
+    """Whether a reaction ``R_xy`` is between two links of the same free body (it cancels there)."""
+    sub = label.partition("_")[2]
+    names = sub.split(",") if "," in sub else list(sub)
+    return len(names) == 2 and all(n in links for n in names)
+
+
+def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, couples, lang: str) -> None:
+    g = forces.graphical
+    k_l = g.scales["k_l"]
+    edge, _, fill = FIGURE_STYLE
+
+    def at(z: complex) -> complex:
+        return z / k_l + shift
+
+    labelled: set[str] = set()
+    for body in links:
+        names = list(g.scene.bodies[body].points)
+        zs = [at(g.positions[n]) for n in names]
+        block = g.scene.bodies[body].block
+        if block or len(zs) == 1:
+            _block(sketch, forces, body, zs[0], at)
+        else:
+            far = max(((a, b) for a in zs for b in zs), key=lambda ab: abs(ab[0] - ab[1]))
+            if len(zs) >= 3:
+                sketch.polygon(_hull(zs), fc=fill, ec=INK, lw=1.4, gid=f"link-{body}", zorder=1.5)
+            else:
+                sketch.line(list(far), color=INK, lw=2.2, gid=f"link-{body}", zorder=1.5, capstyle="round")
+        for n, z in zip(names, zs):
+            if n in labelled:
+                continue
+            labelled.add(n)
+            if len(g.scene.bodies_with(n)) > 1:
+                sketch.circle(z, 1.1, fc="white", ec=INK, lw=0.8, gid=f"pin-{n}", zorder=4.5)
+            place_label(sketch, z, [(n, f"point-{n}")], size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0))
+    for body in links:
+        centre = forces.centres.get(body)
+        if centre is not None:
+            c = at(centre.at)
+            sketch.circle(c, 1.0, fc="white", ec=INK, lw=0.7, gid=f"centre-{body}", zorder=4.6)
+            sketch.polygon([c + 1.0, c + 1.0j, c - 1.0, c - 1.0j], fc=INK, ec=INK, lw=0.1, gid=f"centre-mark-{body}", zorder=4.7, obstacle=False)
+            if not any(abs(centre.at - g.positions[n]) <= 1e-9 * k_l for n in g.scene.bodies[body].points):
+                place_label(sketch, c, [(f"S{_digits(body)}", f"centre-label-{body}")], size=SMALL_PT, gaps=(1.4, 2.4, 3.6))
+    for f in acting:
+        size = abs(f.force)
+        if size == 0:
+            continue
+        u = f.force / size
+        point = at(f.at)
+        if f.kind == "reaction":
+            tail, tip = point - u * FREE_ARROW_MM, point - u * 1.2
+        else:
+            tail, tip = point, point + u * FREE_ARROW_MM
+        color, lw, dashes, head = FORCE_STYLE[f.kind]
+        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{f.label}", zorder=5.0)
+        end = tail if f.kind == "reaction" else tip
+        place_label(sketch, end, [(force_math(f.label), f"force-label-{f.label}")], size=LABEL_PT, prefer=u if f.kind != "reaction" else -u,
+                    gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, color=color if f.kind != "reaction" else INK)
+    for c in couples:
+        if c.moment == 0:
+            continue
+        body_centre = forces.centres.get(c.body)
+        if c.kind == "balancing" or body_centre is None:
+            where = at(_pivot(g, c.body))
+        else:
+            where = at(body_centre.at)
+        sweep = math.radians(250) * (1 if c.moment > 0 else -1)
+        color = FORCE_STYLE["balancing" if c.kind == "balancing" else "inertia" if c.kind == "inertia" else "external"][0]
+        sketch.arc_arrow(where, COUPLE_R_MM, math.radians(145), sweep, color=color, lw=0.9, gid=f"couple-{c.label}")
+        place_label(sketch, where + COUPLE_R_MM * cmath.exp(1j * math.radians(145)), [(force_math(c.label), f"couple-label-{c.label}")],
+                    size=LABEL_PT, prefer=cmath.exp(1j * math.radians(145)), gaps=(0.8, 1.8, 3.0), mathtext=True, color=color)
+    b_top = max(at(g.positions[n]).imag for body in links for n in g.scene.bodies[body].points)
+    what = term("driver", lang) if plan.group == "driver" else plan.group
+    xs = [at(g.positions[n]).real for body in links for n in g.scene.bodies[body].points]
+    sketch.text(complex(min(xs), b_top + FREE_ARROW_MM + 4.0), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
+
+
+def _pivot(g, body: str) -> complex:
+    """The crank's pivot, or the body's first point [m]."""
+    driver = g.scene.driver
+    if body == driver.link and hasattr(driver, "pivot"):
+        return g.positions[driver.pivot]
+    return g.positions[next(iter(g.scene.bodies[body].points))]
+
+
+def _digits(body: str) -> str:
+    from .._text import subscript
+
+    return subscript(body)
+
+
+def _block(sketch: Sketch, forces, body: str, centre: complex, at) -> None:
+    """A slider block: a rectangle along the line it slides on."""
+    g = forces.graphical
+    scene = g.scene
+    angle = g.poses[body][0]
+    for p in scene.prismatics:
+        if body in (p.slider, p.guide):
+            line = scene.line(f"{p.guide}.{p.guide_line}")
+            angle = g.poses[p.guide][0] + line.angle
+            break
+    u = cmath.exp(1j * angle)
+    w, h = 4.5, 2.7
+    corners = [centre + u * (sx * w + sy * h * 1j) for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    sketch.polygon(corners, fc="white", ec=INK, lw=1.2, gid=f"link-{body}", zorder=1.6)
+
+
+def _hull(zs):
+    from shapely.geometry import MultiPoint
+
+    hull = MultiPoint([(z.real, z.imag) for z in zs]).convex_hull
+    if hull.geom_type != "Polygon":
+        return zs
+    return [complex(x, y) for x, y in list(hull.exterior.coords)[:-1]]
+
+
+# --- all the drawings of a position ------------------------------------------------------
+
+
+def force_figures(forces, *, lang: str = "en", lever=None, draw_lever=None) -> list[tuple[str, object]]:
+    """Every kinetostatic drawing of one position as ``(name, Figure)``.
+
+    ``free-bodies``, ``force-plan-1`` … (one per group, in construction
+    order), ``force-plan-driver``, and ``lever`` when a lever and the function
+    drawing it are given.
+    """
+    out = [("free-bodies", draw_free_bodies(forces, lang=lang)[0].figure)]
+    number = 0
+    for plan in forces.plans:
+        if plan.group == "driver":
+            name = "force-plan-driver"
+            artists = draw_force_plan(plan, lang=lang, balancing_moment=forces.balancing_moment)
+        else:
+            number += 1
+            name = f"force-plan-{number}"
+            artists = draw_force_plan(plan, lang=lang)
+        out.append((name, artists[0].figure))
+    if lever is not None and draw_lever is not None:
+        out.append(("lever", draw_lever(lever, lang=lang)[0].figure))
+    return out
+
+
+def write_force_drawings(forces, directory, *, lang: str = "en", formats=("svg",), lever=None, draw_lever=None) -> list[Path]:
+    """Write every drawing of :func:`force_figures` into *directory*, in each of *formats*, all or none.
+
+    Returns the files written.
+    """
+    from .._files import replace_all
+    from .formats import render
+
+    directory = Path(directory)
+    contents: dict[Path, bytes] = {}
+    for name, fig in force_figures(forces, lang=lang, lever=lever, draw_lever=draw_lever):
+        for fmt in formats:
+            contents[directory / f"{name}.{fmt}"] = render(fig, fmt)
+    return replace_all(contents)
