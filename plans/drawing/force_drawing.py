@@ -92,6 +92,19 @@ def force_math(label: str) -> str:
     return f"${text}$"
 
 
+def _step(plan) -> float | None:
+    """The smallest step of a force read off *plan* [N]: the precision times μ_F."""
+    return plan.precision * plan.scale if plan.precision else None
+
+
+def _reading(value: float, step: float | None, lang: str) -> str:
+    """A value read to *step* (as many decimals as the step has), or to 4 significant figures without one."""
+    if not step:
+        return _number(value, lang)
+    decimals = max(0, -math.floor(math.log10(step) + 1e-9))
+    return localised(f"{round(value / step) * step:.{decimals}f}", lang)
+
+
 def _number(value: float, lang: str, digits: int = 4) -> str:
     """A reading to *digits* significant figures, in the language's numerals."""
     if value == 0:
@@ -172,10 +185,10 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
     sketch.text(complex(x, y), scale_caption(r"\mu_F", fmt_number(plan.scale), "N/mm", lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     row = text_size("lp", CAPTION_PT)[1] + 0.9
     for v in vectors:
-        if v.kind != "reaction":
+        if v.label not in plan.found:
             continue
         y -= row
-        line = f"{force_math(v.label)} = {_number(v.length, lang, 3)} mm · {localised(fmt_number(plan.scale), lang)} N/mm = {_number(v.value, lang)} N"
+        line = f"{force_math(v.label)} = {_reading(v.length, plan.precision, lang)} mm · {localised(fmt_number(plan.scale), lang)} N/mm = {_reading(v.value, _step(plan), lang)} N"
         sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"reading-{v.label}", obstacle=False, math=True)
     shorts = [v for v in vectors if v.length < SHORT_MM]
     if shorts:
@@ -243,6 +256,11 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
         top = max(top, ymax)
     for plan, links, shift, acting, couples in placed:
         _free_body(sketch, forces, plan, links, shift, acting, couples, lang)
+    heading_y = sketch.bounds.ymax + 3.0
+    for plan, links, shift, _, _ in placed:
+        xs = [g.positions[n].real / k_l + shift.real for body in links for n in g.scene.bodies[body].points]
+        what = term("driver", lang) if plan.group == "driver" else plan.group
+        sketch.text(complex(min(xs), heading_y), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
     if caption:
         b = sketch.bounds
         sketch.text(complex(b.xmin, b.ymax + 9.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
@@ -303,14 +321,19 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             continue
         u = f.force / size
         point = at(f.at)
-        if f.kind == "reaction":
+        # a reaction points into its joint, unless a load's arrow from the same point lies there
+        into = f.kind == "reaction" and not any(
+            x.kind != "reaction" and abs(x.at - f.at) <= 1e-9 * k_l * 1e3 and abs(x.force) > 0 and ((x.force / abs(x.force)) * u.conjugate()).real < -0.9
+            for x in acting
+        )
+        if into:
             tail, tip = point - u * FREE_ARROW_MM, point - u * 1.2
         else:
             tail, tip = point, point + u * FREE_ARROW_MM
         color, lw, dashes, head = FORCE_STYLE[f.kind]
         sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{f.label}", zorder=5.0)
-        end = tail if f.kind == "reaction" else tip
-        place_label(sketch, end, [(force_math(f.label), f"force-label-{f.label}")], size=LABEL_PT, prefer=u if f.kind != "reaction" else -u,
+        end = tail if into else tip
+        place_label(sketch, end, [(force_math(f.label), f"force-label-{f.label}")], size=LABEL_PT, prefer=-u if into else u,
                     gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, color=color if f.kind != "reaction" else INK)
     for c in couples:
         if c.moment == 0:
@@ -325,10 +348,6 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         sketch.arc_arrow(where, COUPLE_R_MM, math.radians(145), sweep, color=color, lw=0.9, gid=f"couple-{c.label}")
         place_label(sketch, where + COUPLE_R_MM * cmath.exp(1j * math.radians(145)), [(force_math(c.label), f"couple-label-{c.label}")],
                     size=LABEL_PT, prefer=cmath.exp(1j * math.radians(145)), gaps=(0.8, 1.8, 3.0), mathtext=True, color=color)
-    b_top = max(at(g.positions[n]).imag for body in links for n in g.scene.bodies[body].points)
-    what = term("driver", lang) if plan.group == "driver" else plan.group
-    xs = [at(g.positions[n]).real for body in links for n in g.scene.bodies[body].points]
-    sketch.text(complex(min(xs), b_top + FREE_ARROW_MM + 4.0), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
 
 
 def _pivot(g, body: str) -> complex:

@@ -169,6 +169,11 @@ class ForcePlan:
         The lettered vertices of the polygon [mm] (``"a"``, ``"b"``, …).
     sine : float
         |sin| of the angle between the two closing lines (1.0 without them).
+    found : tuple[str, ...]
+        The labels of the reactions read off this plan (the others are loads
+        known before it: a later group's reactions on these links).
+    precision : float or None
+        The drafting precision [mm] its lengths are read to.
     """
 
     group: str
@@ -179,6 +184,8 @@ class ForcePlan:
     equations: tuple[str, ...]
     points: dict[str, complex] = field(default_factory=dict)
     sine: float = 1.0
+    found: tuple[str, ...] = ()
+    precision: float | None = None
 
 
 @dataclass(frozen=True)
@@ -505,7 +512,9 @@ class _Builder:
             for z in (v.tail, v.tip):
                 if not any(abs(z - w) <= 1e-9 * max(1.0, abs(w)) for w in points.values()):
                     points[chr(ord("a") + len(points))] = z
-        self.plans.append(ForcePlan(group, tuple(links), mu, vectors, lines, tuple(equations), points, sine))
+        known = {f.label for body in links for f in self.passed.get(body, [])}
+        found = tuple(v.label for v in vectors if v.kind == "reaction" and v.label not in known)
+        self.plans.append(ForcePlan(group, tuple(links), mu, vectors, lines, tuple(equations), points, sine, found, self.d.precision))
         return mu
 
     def load_vectors(self, poly: _Polygon, body: str) -> list[str]:
