@@ -243,3 +243,59 @@ def test_given_force_scale():
     assert r.length == pytest.approx(REFERENCE["R_23"][0] / 50.0, rel=1e-8)
     with pytest.raises(ValueError, match="mu_F"):
         construct_force_plans(g, mu_F=-1.0)
+
+
+def _first(x) -> complex:
+    import numpy as np
+
+    return complex(np.ravel(x)[0])
+
+
+@pytest.mark.parametrize("name", LOADED)
+def test_against_the_analytic_kinetostatics(name):
+    """Exact: every reaction, its line of action and M_b (or F_b) as Newton–Euler gives them, to round-off."""
+    from plans.forces import solve_forces
+
+    scene = load(example_path(name))
+    analytic = solve_forces(scene)
+    fp = construct_force_plans(construct(scene, precision=None), precision=None)
+    for label, r in analytic.reactions.items():
+        force = _first(r.force)
+        assert fp.reactions[label].force == pytest.approx(force, abs=EXACT * (1 + abs(force))), label
+        if abs(force) > 0:  # the same line of action (a prismatic pair's point of action)
+            u = force / abs(force)
+            offset = ((fp.reactions[label].at - _first(r.point)) * u.conjugate()).imag
+            assert abs(offset) <= EXACT * (1 + abs(_first(r.point))), label
+    balancing = _first(analytic.balancing).real
+    mine = fp.balancing_moment if isinstance(scene.driver, Crank) else fp.balancing_force.real
+    assert mine == pytest.approx(balancing, rel=EXACT, abs=EXACT)
+
+
+@pytest.mark.parametrize("name", LOADED)
+def test_against_the_analytic_at_drafting_precision(name):
+    """Read at 0.1 mm: within the bound the readings allow (see the worked example's test).
+
+    Each plan adds at most p/2·μ_F to a reaction it reads and passes on; the
+    accelerations at most m·p/2·k_a per mass: bound (plans + 1)·p·μ_F + Σ m·p·k_a.
+    The driving effort adds the arms' p/2·k_l on every force on the driver.
+    """
+    from plans.forces import solve_forces
+
+    scene = load(example_path(name))
+    analytic = solve_forces(scene)
+    g = construct(scene, precision=PRECISION)
+    fp = construct_force_plans(g)
+    p = PRECISION
+    mu = max(plan.scale for plan in fp.plans)
+    bound = (len(fp.plans) + 1) * p * mu + sum(m.mass for m in scene.masses.values()) * p * g.scales["k_a"]
+    for label, r in analytic.reactions.items():
+        assert abs(fp.reactions[label].force - _first(r.force)) <= bound, label
+    balancing = _first(analytic.balancing).real
+    driver = scene.driver.link
+    forces, _ = fp.on(driver)
+    reach = max(abs(z - w) for z in g.positions.values() for w in g.positions.values())
+    if isinstance(scene.driver, Crank):
+        allowed = bound * reach + sum(abs(f.force) for f in forces) * p * g.scales["k_l"]
+        assert abs(fp.balancing_moment - balancing) <= allowed
+    else:
+        assert abs(fp.balancing_force.real - balancing) <= bound
