@@ -14,7 +14,7 @@ are the mechanism at k_l.  Nothing is solved here.
 * :func:`force_figures` / :func:`write_force_drawings` — every drawing of a
   position, as figures or files (SVG true to scale, PDF, PNG), all or none.
 
-Gids: ``fplan-<kind>-<label>`` (shaft; ``-head``), ``fplan-line-<n>``,
+Gids (labels in ASCII, Φ as ``Phi``): ``fplan-<kind>-<label>`` (shaft; ``-head``), ``fplan-line-<n>``,
 ``fplan-start``, ``fplan-label-<label>``, ``fplan-heading``, ``fplan-scale``,
 ``fplan-reading-<label>``, ``fplan-legend-<kind>``; ``fbody-link-<body>``,
 ``fbody-force-<label>``, ``fbody-couple-<label>``, ``fbody-heading-<group>``.
@@ -67,6 +67,11 @@ FORCE_LEGEND = {
     "tangential": "force_tangential",
     "balancing": "balancing_force",
 }
+
+
+def _gid(label: str) -> str:
+    """A label as a gid (ASCII): ``"F_Φ3"`` → ``"F_Phi3"``."""
+    return label.replace("Φ", "Phi")
 
 
 def _escape(text: str) -> str:
@@ -147,9 +152,9 @@ def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool
     for v in sorted(vectors, key=lambda v: order[v.kind]):
         color, lw, dashes, head = FORCE_STYLE[v.kind]
         if v.length < SHORT_MM:  # too short for an arrow: its end is a point, its length a note
-            sketch.line([complex(v.tail), complex(v.tip)], color=color, lw=lw, gid=f"{v.kind}-{v.label}", zorder=3.0)
+            sketch.line([complex(v.tail), complex(v.tip)], color=color, lw=lw, gid=f"{v.kind}-{_gid(v.label)}", zorder=3.0)
             continue
-        sketch.arrow(complex(v.tail), complex(v.tip), color=color, lw=lw, dashes=dashes, head=min(head, v.length / 3.0), gid=f"{v.kind}-{v.label}", zorder=3.0 if v.kind != "normal" else 2.6)
+        sketch.arrow(complex(v.tail), complex(v.tip), color=color, lw=lw, dashes=dashes, head=min(head, v.length / 3.0), gid=f"{v.kind}-{_gid(v.label)}", zorder=3.0 if v.kind != "normal" else 2.6)
     sketch.circle(0j, 0.55, fc=INK, lw=0, gid="start", zorder=4.0)
     for name, z in plan.points.items():
         sketch.circle(complex(z), 0.35, fc=INK, lw=0, gid=f"vertex-{name}", zorder=4.0, obstacle=False)
@@ -157,7 +162,7 @@ def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool
     for v in vectors:
         middle = (complex(v.tail) + complex(v.tip)) / 2
         across = unit(middle - centre) if abs(middle - centre) > 1e-6 else 1j * unit(v.tip - v.tail)
-        place_label(sketch, middle, [(force_math(v.label), f"label-{v.label}")], size=LABEL_PT if v.length >= 6 else SMALL_PT,
+        place_label(sketch, middle, [(force_math(v.label), f"label-{_gid(v.label)}")], size=LABEL_PT if v.length >= 6 else SMALL_PT,
                     prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK)
     if caption:
         _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment)
@@ -189,7 +194,7 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
             continue
         y -= row
         line = f"{force_math(v.label)} = {_reading(v.length, plan.precision, lang)} mm · {localised(fmt_number(plan.scale), lang)} N/mm = {_reading(v.value, _step(plan), lang)} N"
-        sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"reading-{v.label}", obstacle=False, math=True)
+        sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"reading-{_gid(v.label)}", obstacle=False, math=True)
     shorts = [v for v in vectors if v.length < SHORT_MM]
     if shorts:
         y -= row
@@ -331,9 +336,9 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         else:
             tail, tip = point, point + u * FREE_ARROW_MM
         color, lw, dashes, head = FORCE_STYLE[f.kind]
-        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{f.label}", zorder=5.0)
+        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0)
         end = tail if into else tip
-        place_label(sketch, end, [(force_math(f.label), f"force-label-{f.label}")], size=LABEL_PT, prefer=-u if into else u,
+        place_label(sketch, end, [(force_math(f.label), f"force-label-{_gid(f.label)}")], size=LABEL_PT, prefer=-u if into else u,
                     gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, color=color if f.kind != "reaction" else INK)
     for c in couples:
         if c.moment == 0:
@@ -345,8 +350,8 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             where = at(body_centre.at)
         sweep = math.radians(250) * (1 if c.moment > 0 else -1)
         color = FORCE_STYLE["balancing" if c.kind == "balancing" else "inertia" if c.kind == "inertia" else "external"][0]
-        sketch.arc_arrow(where, COUPLE_R_MM, math.radians(145), sweep, color=color, lw=0.9, gid=f"couple-{c.label}")
-        place_label(sketch, where + COUPLE_R_MM * cmath.exp(1j * math.radians(145)), [(force_math(c.label), f"couple-label-{c.label}")],
+        sketch.arc_arrow(where, COUPLE_R_MM, math.radians(145), sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
+        place_label(sketch, where + COUPLE_R_MM * cmath.exp(1j * math.radians(145)), [(force_math(c.label), f"couple-label-{_gid(c.label)}")],
                     size=LABEL_PT, prefer=cmath.exp(1j * math.radians(145)), gaps=(0.8, 1.8, 3.0), mathtext=True, color=color)
 
 
