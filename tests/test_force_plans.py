@@ -299,3 +299,15 @@ def test_against_the_analytic_at_drafting_precision(name):
         assert abs(fp.balancing_moment - balancing) <= allowed
     else:
         assert abs(fp.balancing_force.real - balancing) <= bound
+
+
+@pytest.mark.parametrize("name", ["slider-crank-loads", "wedge-loads"])
+def test_balancing_as_the_analytic_states_it(name):
+    """``balancing``: M_b on a crank, F_b along a linear driver's guide (signed): as plans.forces gives it."""
+    from plans.forces import solve_forces
+    from plans.forces.force_plans import force_plans
+
+    scene = load(example_path(name))
+    fp = force_plans(construct(scene, precision=None), precision=None)
+    assert fp.balancing == pytest.approx(_first(solve_forces(scene).balancing).real, rel=1e-9)
+    assert fp.balancing_kind == ("moment" if isinstance(scene.driver, Crank) else "force")

@@ -78,6 +78,7 @@ __all__ = [
     "Centre",
     "ForcePlans",
     "construct_force_plans",
+    "force_plans",
     "body_number",
     "pair_label",
 ]
@@ -254,6 +255,20 @@ class ForcePlans:
     balancing_moment: float | None
     balancing_force: complex | None
     balancing_at: complex | None
+
+    @property
+    def balancing(self) -> float:
+        """M_b [N·m] on a crank, or F_b [N] along a linear driver's guide (as :class:`plans.forces.AnalyticForces` gives it)."""
+        if self.balancing_moment is not None:
+            return self.balancing_moment
+        scene = self.graphical.scene
+        u = scene.frame.lines[scene.driver.guide].direction
+        return (self.balancing_force * u.conjugate()).real
+
+    @property
+    def balancing_kind(self) -> str:
+        """``"moment"`` (a crank) or ``"force"`` (a linear driver)."""
+        return "moment" if self.balancing_moment is not None else "force"
 
     def on(self, body: str) -> tuple[list[AppliedForce], list[Couple]]:
         """Everything acting on *body*: its loads, the reactions on it, F_b; and its couples."""
@@ -822,3 +837,8 @@ def construct_force_plans(graphical, *, structure=None, precision: float | None 
         balancing_force=f_b,
         balancing_at=at,
     )
+
+
+def force_plans(graphical, *, precision: float | None = ..., mu_F: float | None = None) -> ForcePlans:
+    """:func:`construct_force_plans` (the name :mod:`plans.forces.compare` calls)."""
+    return construct_force_plans(graphical, precision=precision, mu_F=mu_F)
