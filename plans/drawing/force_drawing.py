@@ -36,6 +36,9 @@ __all__ = [
     "draw_force_plan",
     "draw_force_plan_into",
     "draw_free_bodies",
+    "draw_free_bodies_into",
+    "draw_force_legend_into",
+    "legend_kinds",
     "force_figures",
     "write_force_drawings",
     "force_math",
@@ -106,7 +109,8 @@ def _reading(value: float, step: float | None, lang: str) -> str:
     """A value read to *step* (as many decimals as the step has), or to 4 significant figures without one."""
     if not step:
         return _number(value, lang)
-    decimals = max(0, -math.floor(math.log10(step) + 1e-9))
+    text = f"{step:.10f}".rstrip("0")
+    decimals = len(text.partition(".")[2])
     return localised(f"{round(value / step) * step:.{decimals}f}", lang)
 
 
@@ -195,11 +199,17 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
         y -= row
         line = f"{force_math(v.label)} = {_reading(v.length, plan.precision, lang)} mm · {localised(fmt_number(plan.scale), lang)} N/mm = {_reading(v.value, _step(plan), lang)} N"
         sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"reading-{_gid(v.label)}", obstacle=False, math=True)
-    shorts = [v for v in vectors if v.length < SHORT_MM]
-    if shorts:
-        y -= row
-        notes = ",  ".join(f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm" for v in shorts)
-        sketch.text(complex(x, y), notes, size=CAPTION_PT, ha="left", va="top", gid="short", obstacle=False, math=True)
+    # notes on vectors too short for an arrow, side by side as far as the plan is wide (at least 50 mm)
+    width = max(b.width, 50.0)
+    cursor = None
+    for v in (v for v in vectors if v.length < SHORT_MM):
+        note = f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm"
+        w = text_size(note, CAPTION_PT, math=True)[0]
+        if cursor is None or cursor + w > x + width:
+            y -= row
+            cursor = x
+        sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=f"short-{_gid(v.label)}", obstacle=False, math=True)
+        cursor += w + 3.0
     if balancing_moment is not None:
         y -= row
         sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(balancing_moment, lang)} N·m ({term('balancing_moment', lang)})",
@@ -207,13 +217,24 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
     if not legend:
         return
     kinds = [k for k in FORCE_LEGEND if any(v.kind == k and v.length >= SHORT_MM for v in vectors)]
-    y -= 2.0
+    draw_force_legend_into(sketch, kinds, bool(plan.lines), lang, x, y - 2.0)
+
+
+def legend_kinds(plans) -> tuple[list[str], bool]:
+    """The kinds of force the *plans* draw as arrows (in legend order), and whether any has closing lines."""
+    kinds = [k for k in FORCE_LEGEND if any(v.kind == k and v.length >= SHORT_MM for plan in plans for v in plan.vectors)]
+    return kinds, any(plan.lines for plan in plans)
+
+
+def draw_force_legend_into(sketch: Sketch, kinds, lines: bool, lang: str, x: float = 0.0, y: float = 0.0) -> None:
+    """The legend of force plans: a sample arrow and the words of each kind, one row each downwards from (x, y) [mm]."""
+    row = text_size("lp", CAPTION_PT)[1] + 0.9
     for kind in kinds:
         y -= row
         color, lw, dashes, _ = FORCE_STYLE[kind]
         sketch.arrow(complex(x, y), complex(x + 9.0, y), color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}")
         sketch.text(complex(x + 11.0, y), term(FORCE_LEGEND[kind], lang), size=CAPTION_PT, ha="left", va="center", gid=f"legend-text-{kind}", obstacle=False)
-    if plan.lines:
+    if lines:
         y -= row
         color, lw, dashes = CONSTRUCTION_STYLE
         sketch.line([complex(x, y), complex(x + 9.0, y)], color=color, lw=lw, dashes=dashes, gid="legend-construction", obstacle=False)
@@ -234,13 +255,13 @@ def draw_free_bodies(forces, ax=None, *, lang: str = "en") -> list:
     return sketch_on(ax, "fbody", lambda sketch: draw_free_bodies_into(sketch, forces, lang=lang))
 
 
-def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True) -> None:
-    """Draw the free bodies into *sketch* (see :func:`draw_free_bodies`)."""
+def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True, k_l: float | None = None, per_row: int | None = None) -> None:
+    """Draw the free bodies into *sketch* (see :func:`draw_free_bodies`), at *k_l* [m/mm] (by default the solution's),
+    *per_row* of them in a row (by default all in one), each row under the one before."""
     g = forces.graphical
-    k_l = g.scales["k_l"]
-    x_next = 0.0
-    top = 0.0
-    placed = []
+    k_l = k_l or g.scales["k_l"]
+    per_row = per_row or len(forces.plans)
+    bodies = []
     for plan in forces.plans:
         links = plan.links
         pts = [g.positions[n] / k_l for body in links for n in g.scene.bodies[body].points]
@@ -252,23 +273,36 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
             acting += [x for x in f if not (x.kind == "reaction" and x.label in inner)]
             couples += c
         pts += [f.at / k_l for f in acting]
-        xmin = min(z.real for z in pts)
-        ymax = max(z.imag for z in pts)
-        shift = complex(x_next - xmin + FREE_ARROW_MM, 0.0)
-        placed.append((plan, links, shift, acting, couples))
-        width = max(z.real for z in pts) - xmin + 2 * FREE_ARROW_MM
-        x_next += width + FREE_GAP_MM
-        top = max(top, ymax)
+        box = (min(z.real for z in pts), max(z.real for z in pts), min(z.imag for z in pts), max(z.imag for z in pts))
+        bodies.append((plan, links, box, acting, couples))
+    placed = []
+    y_next = 0.0
+    for start in range(0, len(bodies), per_row):
+        row = bodies[start:start + per_row]
+        height = max(box[3] - box[2] for _, _, box, _, _ in row) + 2 * FREE_ARROW_MM
+        x_next = 0.0
+        for plan, links, box, acting, couples in row:
+            xmin, xmax, ymin, ymax = box
+            shift = complex(x_next - xmin + FREE_ARROW_MM, y_next - FREE_ARROW_MM - ymax)
+            placed.append((plan, links, shift, acting, couples))
+            x_next += xmax - xmin + 2 * FREE_ARROW_MM + FREE_GAP_MM
+        y_next -= height + FREE_GAP_MM + 6.0  # and the next row's names
     for plan, links, shift, acting, couples in placed:
-        _free_body(sketch, forces, plan, links, shift, acting, couples, lang)
-    heading_y = sketch.bounds.ymax + 3.0
-    for plan, links, shift, _, _ in placed:
-        xs = [g.positions[n].real / k_l + shift.real for body in links for n in g.scene.bodies[body].points]
-        what = term("driver", lang) if plan.group == "driver" else plan.group
-        sketch.text(complex(min(xs), heading_y), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
+        _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
+    # each body's name over its row
+    for start in range(0, len(placed), per_row):
+        row = placed[start:start + per_row]
+        tops = []
+        for _, links, shift, acting, _ in row:
+            zs = [g.positions[n] / k_l + shift for body in links for n in g.scene.bodies[body].points] + [f.at / k_l + shift for f in acting]
+            tops.append(max(z.imag for z in zs) + FREE_ARROW_MM + 5.0)
+        for (plan, links, shift, _, _), top in zip(row, [max(tops)] * len(row)):
+            xs = [g.positions[n].real / k_l + shift.real for body in links for n in g.scene.bodies[body].points]
+            what = term("driver", lang) if plan.group == "driver" else plan.group
+            sketch.text(complex(min(xs), top), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
     if caption:
         b = sketch.bounds
-        sketch.text(complex(b.xmin, b.ymax + 9.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
+        sketch.text(complex(b.xmin, b.ymax + 6.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
         sketch.text(complex(b.xmin, b.ymin - 3.0), f"{scale_caption('k_l', fmt_number(k_l), 'm/mm', lang)};  {term('not_to_scale', lang)}",
                     size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
 
@@ -284,9 +318,8 @@ def _inside(label: str, links) -> bool:
     return len(names) == 2 and all(n in links for n in names)
 
 
-def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, couples, lang: str) -> None:
+def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, couples, lang: str, k_l: float) -> None:
     g = forces.graphical
-    k_l = g.scales["k_l"]
     edge, _, fill = FIGURE_STYLE
 
     def at(z: complex) -> complex:
@@ -318,7 +351,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             c = at(centre.at)
             sketch.circle(c, 1.0, fc="white", ec=INK, lw=0.7, gid=f"centre-{body}", zorder=4.6)
             sketch.polygon([c + 1.0, c + 1.0j, c - 1.0, c - 1.0j], fc=INK, ec=INK, lw=0.1, gid=f"centre-mark-{body}", zorder=4.7, obstacle=False)
-            if not any(abs(centre.at - g.positions[n]) <= 1e-9 * k_l for n in g.scene.bodies[body].points):
+            if not any(abs(centre.at - g.positions[n]) <= 1e-9 * (1 + abs(centre.at)) for n in g.scene.bodies[body].points):
                 place_label(sketch, c, [(f"S{_digits(body)}", f"centre-label-{body}")], size=SMALL_PT, gaps=(1.4, 2.4, 3.6))
     for f in acting:
         size = abs(f.force)
@@ -328,7 +361,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         point = at(f.at)
         # a reaction points into its joint, unless a load's arrow from the same point lies there
         into = f.kind == "reaction" and not any(
-            x.kind != "reaction" and abs(x.at - f.at) <= 1e-9 * k_l * 1e3 and abs(x.force) > 0 and ((x.force / abs(x.force)) * u.conjugate()).real < -0.9
+            x.kind != "reaction" and abs(x.at - f.at) <= 1e-9 * (1 + abs(f.at)) and abs(x.force) > 0 and ((x.force / abs(x.force)) * u.conjugate()).real < -0.9
             for x in acting
         )
         if into:

@@ -516,7 +516,8 @@ class _Builder:
 
     def finish(self, group: str, links, poly: _Polygon, equations, sine: float = 1.0) -> float:
         largest = max((abs(tip - tail) for tail, tip, *_ in poly.vectors), default=0.0)
-        mu = self.d.mu_F if self.d.mu_F is not None else round_scale(largest)
+        given = self.d.mu_F.get(group) if isinstance(self.d.mu_F, dict) else self.d.mu_F
+        mu = given if given is not None else round_scale(largest)
         vectors = tuple(
             PlanForce(tail / mu, tip / mu, kind, label, abs(self.d.read(tip - tail, mu)))
             for tail, tip, kind, label in poly.vectors
@@ -785,7 +786,7 @@ def _guide_words(prismatic) -> str:
     return f"{prismatic.guide_line}"
 
 
-def construct_force_plans(graphical, *, structure=None, precision: float | None = ..., mu_F: float | None = None) -> ForcePlans:
+def construct_force_plans(graphical, *, structure=None, precision: float | None = ..., mu_F: float | dict[str, float] | None = None) -> ForcePlans:
     """Construct the force plans of every group and of the driver at the graphical solution's position.
 
     Parameters
@@ -798,9 +799,10 @@ def construct_force_plans(graphical, *, structure=None, precision: float | None 
         Drafting precision [mm] of every length read (the force plans and the
         arms on the mechanism drawing); by default the graphical solution's.
         None: exact.
-    mu_F : float, optional
-        One force scale [N/mm] for every plan; by default each plan gets the
-        round value (1, 2, 2.5 or 5 × 10ⁿ) that draws its largest vector 60–120 mm long.
+    mu_F : float or dict, optional
+        One force scale [N/mm] for every plan, or one per plan (group name, or
+        ``"driver"`` -> N/mm); a plan without one gets the round value (1, 2,
+        2.5 or 5 × 10ⁿ) that draws its largest vector 60–120 mm long.
 
     Returns
     -------
@@ -813,8 +815,9 @@ def construct_force_plans(graphical, *, structure=None, precision: float | None 
     """
     if precision is ...:
         precision = graphical.precision
-    if mu_F is not None and not (math.isfinite(mu_F) and mu_F > 0):
-        raise ValueError(f"mu_F must be a positive number of N/mm, got {mu_F!r}")
+    for value in (mu_F.values() if isinstance(mu_F, dict) else [mu_F]):
+        if value is not None and not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+            raise ValueError(f"mu_F must be a positive number of N/mm, got {value!r}")
     if structure is None:
         structure = find_structure(graphical.scene)
     d = _Drafting(graphical, precision, mu_F)
@@ -839,6 +842,6 @@ def construct_force_plans(graphical, *, structure=None, precision: float | None 
     )
 
 
-def force_plans(graphical, *, precision: float | None = ..., mu_F: float | None = None) -> ForcePlans:
+def force_plans(graphical, *, precision: float | None = ..., mu_F: float | dict[str, float] | None = None) -> ForcePlans:
     """:func:`construct_force_plans` (the name :mod:`plans.forces.compare` calls)."""
     return construct_force_plans(graphical, precision=precision, mu_F=mu_F)
