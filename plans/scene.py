@@ -230,8 +230,9 @@ class Gravity:
 
     @property
     def vector(self) -> complex:
-        """g as a vector [m/s²]."""
-        return self.g * cmath.exp(1j * self.angle)
+        """g as a vector [m/s²] (a component that is round-off of cos 90° is 0: straight down is (0, −g))."""
+        x, y = math.cos(self.angle), math.sin(self.angle)
+        return complex(self.g * (x if abs(x) > 1e-15 else 0.0), self.g * (y if abs(y) > 1e-15 else 0.0))
 
 
 #: The kinds of :class:`Load`.
