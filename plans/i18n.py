@@ -315,21 +315,6 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "стрелките не са в мащаб",
         "sl": "puščice niso v merilu",
     },
-    "joukowski_lever": {"en": "Joukowski's lever", "sr": "Жуковљева полуга", "ru": "Рычаг Жуковского", "bg": "Лост на Жуковски", "sl": "Žukovskijev vzvod"},
-    "balancing_moment": {
-        "en": "balancing moment",
-        "sr": "уравнотежни момент",
-        "ru": "уравновешивающий момент",
-        "bg": "уравновесяващ момент",
-        "sl": "uravnotežni moment",
-    },
-    "balancing_force": {
-        "en": "balancing force",
-        "sr": "уравнотежна сила",
-        "ru": "уравновешивающая сила",
-        "bg": "уравновесяваща сила",
-        "sl": "uravnotežna sila",
-    },
     "force_weight": {"en": "weight G", "sr": "тежина G", "ru": "сила тяжести G", "bg": "сила на тежестта G", "sl": "teža G"},
     "force_inertia": {"en": "inertia force", "sr": "сила инерције", "ru": "сила инерции", "bg": "инерционна сила", "sl": "vztrajnostna sila"},
     "force_external": {"en": "given force", "sr": "задата сила", "ru": "заданная сила", "bg": "зададена сила", "sl": "dana sila"},
@@ -349,7 +334,7 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "komponenta Rᵗ ⊥ na člen",
     },
     "force_couple": {"en": "couple", "sr": "спрег", "ru": "пара сил", "bg": "двоица сили", "sl": "dvojica sil"},
-    "kinetostatics": {
+    "kinetostatics_page": {
         "en": "Kinetostatics: force plans",
         "sr": "Кинетостатика: планови сила",
         "ru": "Кинетостатика: планы сил",

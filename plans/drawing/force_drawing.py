@@ -100,6 +100,11 @@ def force_math(label: str) -> str:
     return f"${text}$"
 
 
+def _lower(words: str) -> str:
+    """Words as they go inside a sentence or a legend: the first letter in lower case."""
+    return words[:1].lower() + words[1:]
+
+
 def _step(plan) -> float | None:
     """The smallest step of a force read off *plan* [N]: the precision times μ_F."""
     return plan.precision * plan.scale if plan.precision else None
@@ -212,7 +217,7 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
         cursor += w + 3.0
     if balancing_moment is not None:
         y -= row
-        sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(balancing_moment, lang)} N·m ({term('balancing_moment', lang)})",
+        sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(balancing_moment, lang)} N·m ({_lower(term('balancing_moment', lang))})",
                     size=CAPTION_PT, ha="left", va="top", gid="reading-M_b", obstacle=False, math=True)
     if not legend:
         return
@@ -233,7 +238,7 @@ def draw_force_legend_into(sketch: Sketch, kinds, lines: bool, lang: str, x: flo
         y -= row
         color, lw, dashes, _ = FORCE_STYLE[kind]
         sketch.arrow(complex(x, y), complex(x + 9.0, y), color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}")
-        sketch.text(complex(x + 11.0, y), term(FORCE_LEGEND[kind], lang), size=CAPTION_PT, ha="left", va="center", gid=f"legend-text-{kind}", obstacle=False)
+        sketch.text(complex(x + 11.0, y), _lower(term(FORCE_LEGEND[kind], lang)), size=CAPTION_PT, ha="left", va="center", gid=f"legend-text-{kind}", obstacle=False)
     if lines:
         y -= row
         color, lw, dashes = CONSTRUCTION_STYLE

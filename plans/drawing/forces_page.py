@@ -191,7 +191,7 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
 
     size = A4
     width = size[0] - 2 * PAGE_MARGIN
-    lines = [decimal_comma(line, lang) for line in header_lines] + ["§" + term("kinetostatics", lang)]
+    lines = [decimal_comma(line, lang) for line in header_lines] + ["§" + term("kinetostatics_page", lang)]
     first = construct_force_plans(graphical)
     items = [plan.group for plan in first.plans] + (["lever"] if lever is not None and draw_lever_into is not None else [])
     with drawing_rc():
