@@ -334,6 +334,14 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "komponenta Rᵗ ⊥ na člen",
     },
     "force_couple": {"en": "couple", "sr": "спрег", "ru": "пара сил", "bg": "двоица сили", "sl": "dvojica sil"},
+    "lever_turned": {
+        "en": "the velocity plan turned by 90°, every load at the image of its point",
+        "sr": "план брзина заокренут за 90°, свако оптерећење у слици своје тачке",
+        "ru": "план скоростей, повёрнутый на 90°, каждая нагрузка в изображении своей точки",
+        "bg": "планът на скоростите, завъртян на 90°, всяко натоварване в образа на своята точка",
+        "sl": "načrt hitrosti, zasukan za 90°, vsaka obremenitev v sliki svoje točke",
+    },
+    "lever_arm": {"en": "arm h", "sr": "крак h", "ru": "плечо h", "bg": "рамо h", "sl": "ročica h"},
     "kinetostatics_page": {
         "en": "Kinetostatics: force plans",
         "sr": "Кинетостатика: планови сила",

@@ -41,7 +41,10 @@ __all__ = [
     "legend_kinds",
     "force_figures",
     "write_force_drawings",
+    "force_drawing_files",
     "force_math",
+    "draw_lever",
+    "draw_lever_into",
     "FORCE_LEGEND",
     "FREE_ARROW_MM",
 ]
@@ -70,6 +73,13 @@ FORCE_LEGEND = {
     "tangential": "force_tangential",
     "balancing": "balancing_force",
 }
+
+
+def _beside(drawn: list, tail: complex, u: complex) -> complex:
+    """The sideways shift [mm] that keeps an arrow from *tail* along *u* off those already *drawn* there (same point, same way)."""
+    same = sum(1 for t, w in drawn if abs(t - tail) < 0.5 and (w * u.conjugate()).real > 0.97)
+    drawn.append((tail, u))
+    return 1j * u * 1.8 * same
 
 
 def _gid(label: str) -> str:
@@ -358,6 +368,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             sketch.polygon([c + 1.0, c + 1.0j, c - 1.0, c - 1.0j], fc=INK, ec=INK, lw=0.1, gid=f"centre-mark-{body}", zorder=4.7, obstacle=False)
             if not any(abs(centre.at - g.positions[n]) <= 1e-9 * (1 + abs(centre.at)) for n in g.scene.bodies[body].points):
                 place_label(sketch, c, [(f"S{_digits(body)}", f"centre-label-{body}")], size=SMALL_PT, gaps=(1.4, 2.4, 3.6))
+    drawn: list = []
     for f in acting:
         size = abs(f.force)
         if size == 0:
@@ -372,6 +383,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         if into:
             tail, tip = point - u * FREE_ARROW_MM, point - u * 1.2
         else:
+            point = point + _beside(drawn, point, u)
             tail, tip = point, point + u * FREE_ARROW_MM
         color, lw, dashes, head = FORCE_STYLE[f.kind]
         sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0)
@@ -435,12 +447,12 @@ def _hull(zs):
 # --- all the drawings of a position ------------------------------------------------------
 
 
-def force_figures(forces, *, lang: str = "en", lever=None, draw_lever=None) -> list[tuple[str, object]]:
+def force_figures(forces, *, lang: str = "en", lever=None) -> list[tuple[str, object]]:
     """Every kinetostatic drawing of one position as ``(name, Figure)``.
 
     ``free-bodies``, ``force-plan-1`` … (one per group, in construction
-    order), ``force-plan-driver``, and ``lever`` when a lever and the function
-    drawing it are given.
+    order: the last group first), ``force-plan-driver``, and ``lever`` when
+    Joukowski's lever (:func:`plans.forces.lever.joukowski_lever`) is given.
     """
     out = [("free-bodies", draw_free_bodies(forces, lang=lang)[0].figure)]
     number = 0
@@ -453,22 +465,157 @@ def force_figures(forces, *, lang: str = "en", lever=None, draw_lever=None) -> l
             name = f"force-plan-{number}"
             artists = draw_force_plan(plan, lang=lang)
         out.append((name, artists[0].figure))
-    if lever is not None and draw_lever is not None:
+    if lever is not None:
         out.append(("lever", draw_lever(lever, lang=lang)[0].figure))
     return out
 
 
-def write_force_drawings(forces, directory, *, lang: str = "en", formats=("svg",), lever=None, draw_lever=None) -> list[Path]:
+def force_drawing_files(forces, directory, *, lang: str = "en", formats=("svg",), lever=None) -> dict[Path, bytes]:
+    """The files of :func:`force_figures` in *directory* (``NAME.FORMAT`` for each of *formats*), rendered, not written."""
+    from .formats import render
+
+    directory = Path(directory)
+    contents: dict[Path, bytes] = {}
+    for name, fig in force_figures(forces, lang=lang, lever=lever):
+        for fmt in formats:
+            contents[directory / f"{name}.{fmt}"] = render(fig, fmt)
+    return contents
+
+
+def write_force_drawings(forces, directory, *, lang: str = "en", formats=("svg",), lever=None) -> list[Path]:
     """Write every drawing of :func:`force_figures` into *directory*, in each of *formats*, all or none.
 
     Returns the files written.
     """
     from .._files import replace_all
-    from .formats import render
 
-    directory = Path(directory)
-    contents: dict[Path, bytes] = {}
-    for name, fig in force_figures(forces, lang=lang, lever=lever, draw_lever=draw_lever):
-        for fmt in formats:
-            contents[directory / f"{name}.{fmt}"] = render(fig, fmt)
-    return replace_all(contents)
+    return replace_all(force_drawing_files(forces, directory, lang=lang, formats=formats, lever=lever))
+
+
+# --- Joukowski's lever ---------------------------------------------------------------------
+
+#: Length of every force arrow on the lever [mm] (not to scale: the moments are what count).
+LEVER_ARROW_MM = 12.0
+#: An arm shorter than this [mm] is not drawn (its line would hide under the arrows).
+ARM_MIN_MM = 0.5
+
+#: the lever's load kinds (plans.forces.loads.LOAD_KINDS, "balancing") -> force style
+_LEVER_KIND = {
+    "weight": "weight",
+    "inertia force": "inertia",
+    "inertia couple": "inertia",
+    "force": "external",
+    "resistance": "external",
+    "moment": "external",
+    "balancing": "balancing",
+}
+
+
+def draw_lever(lever, ax=None, *, lang: str = "en") -> list:
+    """Joukowski's lever (:class:`plans.forces.lever.JoukowskiLever`), one data unit = 1 mm of the velocity plan.
+
+    The velocity plan turned by 90° (its images and link figures), every
+    load as an arrow at the turned image of its point (parallel to the load;
+    an inertia couple as its pair of forces), the balancing force F_b heavy,
+    each force's arm from the pole p as a thin line to the foot of the
+    perpendicular; under it the moments about the pole and M_b.
+    """
+    return sketch_on(ax, "lever", lambda sketch: draw_lever_into(sketch, lever, lang=lang))
+
+
+def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = True) -> None:
+    """Draw the lever into *sketch* (see :func:`draw_lever`)."""
+    from .plan_drawing import image_text
+
+    edge, lw_figure, fill = FIGURE_STYLE
+    images = {k: complex(z) for k, z in lever.images.items()}
+    for link, labels in lever.links.items():
+        pts = []
+        for label in labels:
+            z = images.get(label)
+            if z is not None and all(abs(z - q) > 1e-6 for q in pts):
+                pts.append(z)
+        if len(pts) >= 3:
+            hull = _hull(pts)
+            if len(hull) >= 3:
+                sketch.polygon(hull, fc=fill, ec=edge, lw=lw_figure, gid=f"figure-{link}", zorder=0.8, obstacle=False)
+                continue
+        if len(pts) >= 2:
+            a, b = max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1]))
+            sketch.line([a, b], color=edge, lw=1.2, gid=f"figure-{link}", zorder=1.5)
+    everything = list(lever.forces) + [lever.balancing_force]
+    for f in everything:
+        size = abs(f.force)
+        if size == 0:
+            continue
+        if abs(f.arm) >= ARM_MIN_MM:
+            color, lw, dashes = CONSTRUCTION_STYLE
+            sketch.line([0j, complex(f.foot)], color=color, lw=lw, dashes=dashes, gid=f"arm-{_gid(f.name)}", zorder=1.0, obstacle=False)
+            # the line of action through the point, as far as the foot
+            sketch.line([complex(f.point), complex(f.foot)], color=color, lw=lw * 0.8, dashes=(1.0, 1.5), gid=f"action-{_gid(f.name)}", zorder=1.0, obstacle=False)
+    sketch.circle(0j, 0.6, fc=INK, lw=0, gid="pole", zorder=4.0)
+    for label, z in images.items():
+        if abs(z) > 1e-6:
+            sketch.circle(z, 0.45, fc=INK, lw=0, gid=f"dot-{label}", zorder=4.0, obstacle=False)
+    drawn: list = []
+    for f in everything:
+        size = abs(f.force)
+        if size == 0:
+            continue
+        kind = _LEVER_KIND.get(f.kind, "external")
+        color, lw, dashes, head = FORCE_STYLE[kind]
+        u = f.force / size
+        tail = complex(f.point)
+        tail += _beside(drawn, tail, u)
+        sketch.arrow(tail, tail + u * LEVER_ARROW_MM, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.name)}", zorder=5.0)
+    groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [("p", "pole-label")])]
+    for label, z in images.items():
+        for at, pieces in groups:
+            if abs(at - z) <= 1e-3:
+                pieces.append((image_text(label), f"image-{label}"))
+                break
+        else:
+            groups.append((z, [(image_text(label), f"image-{label}")]))
+    for at, pieces in groups:
+        place_label(sketch, at, pieces, size=LABEL_PT, gaps=GAPS, leader_from=4.0)
+    for f in everything:
+        if abs(f.force) == 0:
+            continue
+        u = f.force / abs(f.force)
+        kind = _LEVER_KIND.get(f.kind, "external")
+        place_label(sketch, complex(f.point) + u * LEVER_ARROW_MM, [(force_math(f.name), f"force-label-{_gid(f.name)}")], size=LABEL_PT,
+                    prefer=u, gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, leader_from=4.0, color=FORCE_STYLE[kind][0] if kind != "reaction" else INK)
+    if caption:
+        _lever_caption(sketch, lever, lang)
+
+
+def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
+    """Heading, k_v, what the lever is, the moments about the pole (F, h, F·h), F_b and M_b."""
+    b = sketch.bounds
+    x, y = b.xmin, b.ymin - 3.0
+    sketch.text(complex(x, y), term("joukowski_lever", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+    y -= 5.0
+    sketch.text(complex(x, y), scale_caption("k_v", fmt_number(lever.k_v), "(m/s)/mm", lang) + ";  " + term("lever_turned", lang),
+                size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    row = text_size("lp", CAPTION_PT)[1] + 0.9
+    y -= row + 0.6
+    sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$", size=CAPTION_PT, ha="left", va="top",
+                gid="equation", obstacle=False, math=True)
+    for f in list(lever.forces) + [lever.balancing_force]:
+        if abs(f.force) == 0:
+            continue
+        y -= row
+        line = (f"{force_math(f.name)}: {_number(abs(f.force), lang)} N · {localised(f'{f.arm:.1f}', lang)} mm = "
+                f"{_number(f.moment, lang)} N·mm")
+        sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(f.name)}", obstacle=False, math=True)
+    for c in lever.couples:
+        y -= row
+        sketch.text(complex(x, y), f"{force_math(c.name)}: {_number(c.moment, lang)} N·mm", size=CAPTION_PT, ha="left", va="top",
+                    gid=f"moment-{_gid(c.name)}", obstacle=False, math=True)
+    y -= row
+    if lever.balancing_kind == "moment":
+        result = (f"$M_{{\\mathrm{{b}}}}$ = $F_{{\\mathrm{{b}}}}$·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force), lang)} N · "
+                  f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(lever.balancing, lang)} N·m ({_lower(term('balancing_moment', lang))})")
+    else:
+        result = f"$F_{{\\mathrm{{b}}}}$ = {_number(lever.balancing, lang)} N ({_lower(term('balancing_force', lang))})"
+    sketch.text(complex(x, y), result, size=CAPTION_PT, ha="left", va="top", gid="result", obstacle=False, math=True)

@@ -4,7 +4,7 @@ One A4 page after a position's pages: the free bodies of the groups and the
 driver with their loads and reactions (at a page k_l), then every force plan
 in construction order (the last group first, the driver's last), each at its
 own round μ_F chosen so that it fills its box, with its readings and M_b;
-Joukowski's lever when one is given with the function that draws it.
+Joukowski's lever, when one is given, on a page of its own at its velocity plan's k_v.
 
 The force plans are constructed here at the page's μ_F (so that what the
 page states, drawn length × μ_F, is what is read); nothing is drawn that the
@@ -18,7 +18,7 @@ from .._text import decimal_comma
 from ..graphical.scales import round_down, round_up
 from ..i18n import term
 from .blocks import Block
-from .force_drawing import draw_force_legend_into, draw_force_plan_into, draw_free_bodies_into, legend_kinds
+from .force_drawing import draw_force_legend_into, draw_force_plan_into, draw_free_bodies_into, draw_lever_into, legend_kinds
 from .layout import A4, GAP, PAGE_MARGIN, footer as page_footer, header, new_page
 from .svg import drawing_rc
 from ._canvas import sketch_on
@@ -145,7 +145,7 @@ def _layout(fig, graphical, first, items, room: float, width: float, lang: str):
     return best[1:]
 
 
-def _place_plans(fig, sketch, graphical, items, columns, box, scales, y_top: float, width: float, size, lang: str, lever, draw_lever_into) -> None:
+def _place_plans(fig, sketch, graphical, items, columns, box, scales, y_top: float, width: float, size, lang: str, lever) -> None:
     from ..forces.force_plans import construct_force_plans
 
     final = construct_force_plans(graphical, mu_F=scales)
@@ -162,7 +162,7 @@ def _place_plans(fig, sketch, graphical, items, columns, box, scales, y_top: flo
         block.place(sketch, x, y, size)
 
 
-def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: str | None = None, footer: str = "", lever=None, draw_lever_into=None) -> list:
+def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: str | None = None, footer: str = "", lever=None) -> list:
     """The kinetostatic pages of one position, A4 portrait, from its graphical solution.
 
     One page: the free bodies across the top, the force plans under them,
@@ -178,9 +178,8 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
     header_lines : sequence of str
         The page header's data lines (the position, as the other pages).
     title, footer : str
-    lever, draw_lever_into : optional
-        Joukowski's lever (:func:`plans.forces.lever.joukowski_lever`) and the
-        function that draws it into a Sketch (``draw_lever_into(sketch, lever, lang=…)``).
+    lever : plans.forces.lever.JoukowskiLever, optional
+        Joukowski's lever of the position, drawn after the force plans.
 
     Returns
     -------
@@ -193,7 +192,7 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
     width = size[0] - 2 * PAGE_MARGIN
     lines = [decimal_comma(line, lang) for line in header_lines] + ["§" + term("kinetostatics_page", lang)]
     first = construct_force_plans(graphical)
-    items = [plan.group for plan in first.plans] + (["lever"] if lever is not None and draw_lever_into is not None else [])
+    items = [plan.group for plan in first.plans]
     with drawing_rc():
         fig, sketch = new_page(size)
         top = header(sketch, size, title or graphical.scene.title, lines)
@@ -228,10 +227,10 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
         if shared is not None and shared[0] <= CRAMPED:
             _, columns, box, scales = shared
             free.place(sketch, PAGE_MARGIN + (width - free.width) / 2, top - free.height, size)
-            _place_plans(fig, sketch, graphical, items, columns, box, scales, top - free.height - GAP, width, size, lang, lever, draw_lever_into)
+            _place_plans(fig, sketch, graphical, items, columns, box, scales, top - free.height - GAP, width, size, lang, lever)
             page_footer(sketch, footer)
             fig.force_scales = dict(scales)
-            return [fig]
+            return [fig] + _lever_page(graphical, lever, lang, title, lines, footer)
         # two pages: the free bodies larger on the first, the plans and their legend on the second
         free.axes.remove()
         legend.axes.remove()
@@ -246,7 +245,23 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
         legend.place(sketch2, PAGE_MARGIN, bottom, size)
         room2 = top2 - bottom - legend.height - GAP
         _, columns, box, scales = _layout(second, graphical, first, items, room2, width, lang)
-        _place_plans(second, sketch2, graphical, items, columns, box, scales, top2, width, size, lang, lever, draw_lever_into)
+        _place_plans(second, sketch2, graphical, items, columns, box, scales, top2, width, size, lang, lever)
         page_footer(sketch2, footer)
         second.force_scales = dict(scales)
-    return [fig, second]
+    return [fig, second] + _lever_page(graphical, lever, lang, title, lines, footer)
+
+
+def _lever_page(graphical, lever, lang: str, title, lines, footer: str) -> list:
+    """Joukowski's lever on a page of its own, at its velocity plan's k_v (none without a lever)."""
+    if lever is None:
+        return []
+    size = A4
+    width = size[0] - 2 * PAGE_MARGIN
+    with drawing_rc():
+        fig, sketch = new_page(size)
+        top = header(sketch, size, title or graphical.scene.title, lines)
+        block = _block(fig, "lever", lambda s: draw_lever_into(s, lever, lang=lang))
+        block.place(sketch, PAGE_MARGIN + max(0.0, (width - block.width) / 2), top - block.height, size)
+        page_footer(sketch, footer)
+    fig.force_scales = {}
+    return [fig]
