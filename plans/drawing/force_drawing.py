@@ -79,7 +79,7 @@ def _beside(drawn: list, tail: complex, u: complex) -> complex:
     """The sideways shift [mm] that keeps an arrow from *tail* along *u* off those already *drawn* there (same point, same way)."""
     same = sum(1 for t, w in drawn if abs(t - tail) < 0.5 and (w * u.conjugate()).real > 0.97)
     drawn.append((tail, u))
-    return 1j * u * 1.8 * same
+    return 1j * u * 2.6 * same
 
 
 def _gid(label: str) -> str:
