@@ -9,7 +9,10 @@ Two independent methods over one scene model:
 * :func:`construct` — the graphical velocity and acceleration plans, built
   group by group with construction lines and read off at scale (shapely);
 
-and :func:`compare` sets one against the other.  :func:`write_drawings`
+and :func:`compare` sets one against the other.  :func:`forces` finds the
+joint reactions and the balancing moment of a scene with masses and loads
+(kinetostatics: Newton–Euler group by group; :mod:`plans.forces` has
+Joukowski's lever and the comparison of the methods).  :func:`write_drawings`
 draws the mechanism and the plans to SVG (matplotlib).  ``construct`` and
 ``write_drawings`` are imported on first use, so ``import plans`` stays light.
 
@@ -37,6 +40,7 @@ __all__ = [
     "prepare",
     "construct",
     "compare",
+    "forces",
     "write_drawings",
     "write_position_sheets",
     "run_positions",
@@ -64,6 +68,10 @@ def __getattr__(name: str):
         from . import analytic
 
         return getattr(analytic, name)
+    if name == "forces":  # the package, callable: plans.forces(scene, positions=None, ...)
+        import importlib
+
+        return importlib.import_module(f"{__name__}.forces")
     if name == "construct":
         from .graphical import construct
 

@@ -45,12 +45,12 @@ from ..scene import FRAME, Crank, LinearDriver, Scene
 from ..structure import Group, Joint, Structure
 from .loads import AppliedLoad, applied_loads
 
-__all__ = ["Reaction", "AnalyticForces", "solve_forces", "forces_from", "reaction_label", "cross"]
+__all__ = ["Reaction", "AnalyticForces", "SolutionKinematics", "solve_forces", "forces_from", "load_power", "reaction_label", "cross"]
 
 
 def cross(a, b):
     """The z component of a × b for plane vectors as complex numbers: ``Im(ā·b) = a_x·b_y − a_y·b_x``."""
-    return a.real * b.imag - a.imag * b.real
+    return (a.conjugate() * b).imag
 
 
 def _dot(a, b):
@@ -258,30 +258,27 @@ def forces_from(kinematics) -> AnalyticForces:
             "compute.accelerations",
         )
 
-    def point_motion(body, z):
-        motion = kinematics.motion_of(body, z)
-        return motion.r, motion.v, motion.a
-
-    def angular(body):
-        link = kinematics.links[body]
-        return link.omega, link.epsilon
-
-    loads = applied_loads(scene, point_motion, angular)
+    loads = applied_loads(scene, SolutionKinematics(kinematics))
     sums = _Sums()
+    at_points: dict[tuple[str, int], list] = {}  # forces at one point (a weight and an inertia force at S) summed first
     for load in loads:
         if load.is_couple:
             sums.add_couple(load.body, load.moment)
         else:
-            sums.add_force(load.body, load.force, load.r)
+            entry = at_points.setdefault((load.body, id(load.r)), [load.r, 0j])
+            entry[1] = entry[1] + load.force
+    for (body, _), (r, force) in at_points.items():
+        sums.add_force(body, force, r)
     n = len(kinematics)
     solved: list[list[Reaction]] = []
-    for group in reversed(structure.groups):
-        reactions = _GROUPS[group.kind](kinematics, group, sums)
-        for reaction in reactions:
-            if reaction.on in group.links and reaction.by not in group.links:  # passed on to the known body
-                _pass_on(sums, reaction)
-        solved.append(reactions)
-    balancing, driver_reaction = _driver(kinematics, sums)
+    with np.errstate(divide="ignore", invalid="ignore"):  # NaN where a position is not solved
+        for group in reversed(structure.groups):
+            reactions = _GROUPS[group.kind](kinematics, group, sums)
+            for reaction in reactions:
+                if reaction.on in group.links and reaction.by not in group.links:  # passed on to the known body
+                    _pass_on(sums, reaction)
+            solved.append(reactions)
+        balancing, driver_reaction = _driver(kinematics, sums)
     ordered = [driver_reaction] + [r for reactions in reversed(solved) for r in reactions]
     out: dict[str, Reaction] = {}
     for reaction in ordered:
@@ -291,6 +288,71 @@ def forces_from(kinematics) -> AnalyticForces:
     return AnalyticForces(scene, structure, kinematics, loads, out, _frozen(np.real(balancing) + np.zeros(n)), "moment" if isinstance(scene.driver, Crank) else "force")
 
 
+class SolutionKinematics:
+    """The kinematics of any point of a body from an analytic solution (for :func:`plans.forces.loads.applied_loads`).
+
+    A named point's own motion where the point is one (no arithmetic); else,
+    for a body with two named points A, B, the similarity of its figure,
+    ``X = X_A + (z − z_A)·(X_B − X_A)/(z_B − z_A)`` for X = r, v, a (the
+    points of a rigid body move as a figure similar to it); for a body of one
+    point, ``r = r_O + e^{iφ}z``, ``v = v_O + iω(r − r_O)``, ``a = a_O + (iε − ω²)(r − r_O)``.
+
+    Parameters
+    ----------
+    solution : plans.analytic.AnalyticSolution
+    """
+
+    def __init__(self, solution):
+        self.solution = solution
+        self.scene = solution.scene
+
+    def _named(self, body: str, z: complex) -> str | None:
+        for name, local in self.scene.bodies[body].points.items():
+            if local == z:
+                return name
+        return None
+
+    def _pair(self, body: str):
+        points = list(self.scene.bodies[body].points.items())
+        if len(points) < 2:
+            return None
+        (a, za), (b, zb) = points[0], max(points[1:], key=lambda item: abs(item[1] - points[0][1]))
+        return (a, za, b, zb) if zb != za else None
+
+    def _motion(self, body: str, z: complex, quantity: str):
+        solution = self.solution
+        name = self._named(body, z)
+        if name is not None:
+            return getattr(solution.points[name], quantity)
+        pair = self._pair(body)
+        if pair is not None:
+            a, za, b, zb = pair
+            xa, xb = getattr(solution.points[a], quantity), getattr(solution.points[b], quantity)
+            return xa + (xb - xa) * ((z - za) / (zb - za))
+        motion = solution.motion_of(body, z)
+        return getattr(motion, quantity)
+
+    def position(self, body: str, z: complex):
+        """r [m] of the body's point with own coordinates z, per position."""
+        return self._motion(body, z, "r")
+
+    def velocity(self, body: str, z: complex):
+        """v [m/s]."""
+        return self._motion(body, z, "v")
+
+    def acceleration(self, body: str, z: complex):
+        """a [m/s²]."""
+        return self._motion(body, z, "a")
+
+    def omega(self, body: str):
+        """ω [rad/s] of the body."""
+        return self.solution.links[body].omega
+
+    def epsilon(self, body: str):
+        """ε [rad/s²] of the body."""
+        return self.solution.links[body].epsilon
+
+
 def _frozen(array) -> np.ndarray:
     array = np.asarray(array)
     array.setflags(write=False)
@@ -298,9 +360,14 @@ def _frozen(array) -> np.ndarray:
 
 
 def _full(reaction: Reaction, n: int) -> Reaction:
-    """Every array of the reaction of shape (N,), read-only."""
+    """Every array of the reaction of shape (N,), read-only (an array of that shape is kept, not copied)."""
     def full(x, dtype):
-        return None if x is None else _frozen(np.asarray(x, dtype=dtype) + np.zeros(n, dtype=dtype))
+        if x is None:
+            return None
+        x = np.asarray(x)
+        if x.shape != (n,) or x.dtype != dtype:
+            x = np.asarray(x, dtype=dtype) + np.zeros(n, dtype=dtype)
+        return _frozen(x)
 
     return Reaction(reaction.label, reaction.joint, reaction.kind, reaction.by, reaction.on, reaction.group,
                     full(reaction.force, complex), full(reaction.point, complex), full(reaction.normal, complex),
@@ -345,15 +412,14 @@ def _revolute(label_by: str, on: str, joint: Joint, group: str, force, kinematic
 def _prismatic(by: str, on: str, joint: Joint, group: str, normal_force, couple, reference, u) -> Reaction:
     """The reaction N·n of a prismatic pair whose couple about *reference* is C: it acts through Q + (C/N)·u."""
     n = 1j * u
-    with np.errstate(divide="ignore", invalid="ignore"):
-        offset = np.where(normal_force != 0, couple / np.where(normal_force != 0, normal_force, 1.0), np.nan)
+    offset = np.where(normal_force != 0, couple / np.where(normal_force != 0, normal_force, 1.0), np.nan)
     point = reference + offset * u
     return Reaction(reaction_label(by, on), joint.prismatic.name, "P", by, on, group, normal_force * n, point, n, normal_force, reference, couple)
 
 
 def _divide(a, b):
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return a / b
+    """a / b, NaN or infinite where b = 0 (a dead centre; :func:`forces_from` silences numpy's warnings)."""
+    return a / b
 
 
 # --- the groups --------------------------------------------------------------------

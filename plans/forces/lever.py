@@ -162,7 +162,7 @@ def joukowski_lever(graphical) -> JoukowskiLever:
     plan = graphical.velocity_plan
     images = {label: TURN * z for label, z in plan.images.items()}
     links = {link: tuple(labels) for link, labels in plan.links.items()}
-    loads = applied_loads(scene, readings.point_motion, readings.angular)
+    loads = applied_loads(scene, readings)
 
     def place(body: str, local: complex, point: str | None, fallback: str) -> tuple[str, complex]:
         """(label, turned image) of the body's point; a label added to the images when the plan lacks it."""
@@ -199,7 +199,7 @@ def joukowski_lever(graphical) -> JoukowskiLever:
             continue
         ends = _pair_points(scene, load.body)
         if ends is None:
-            omega, _ = readings.angular(load.body)
+            omega = readings.omega(load.body)
             couples.append(LeverCouple(load.name, load.body, load.kind, float(load.moment), -float(load.moment) * omega / readings.k_v))
             continue
         (name1, z1), (name2, z2) = ends

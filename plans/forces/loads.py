@@ -21,8 +21,6 @@ numbers) or N positions (arrays of shape (N,)).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable
-
 import numpy as np
 
 from ..scene import Scene
@@ -84,22 +82,19 @@ def inertia_symbol(body: str, couple: bool = False) -> str:
     return f"{'M' if couple else 'F'}_Φ{body}"
 
 
-def applied_loads(
-    scene: Scene,
-    point_motion: Callable[[str, complex], tuple],
-    angular: Callable[[str], tuple],
-) -> tuple[AppliedLoad, ...]:
+def applied_loads(scene: Scene, kinematics) -> tuple[AppliedLoad, ...]:
     """Every load on the moving bodies, from the kinematics given.
 
     Parameters
     ----------
     scene : plans.scene.Scene
-    point_motion : callable
-        ``point_motion(body, z) -> (r, v, a)``: position [m], velocity [m/s]
-        and acceleration [m/s²] of the point with own coordinates *z* [m] of
-        the body (complex numbers or arrays).
-    angular : callable
-        ``angular(body) -> (omega, epsilon)`` [rad/s, rad/s²].
+    kinematics : object
+        A method's kinematics, with methods ``position(body, z)`` [m],
+        ``velocity(body, z)`` [m/s] and ``acceleration(body, z)`` [m/s²] of
+        the point with own coordinates *z* [m] of the body (complex numbers or
+        arrays), and ``epsilon(body)`` [rad/s²]
+        (:class:`plans.forces.analytic.SolutionKinematics`,
+        :class:`plans.forces.readings.PlanReadings`).
 
     Returns
     -------
@@ -111,20 +106,24 @@ def applied_loads(
     out: list[AppliedLoad] = []
     g = scene.gravity.vector if scene.gravity is not None else 0j
     for body, mass in scene.masses.items():
-        r, _, a = point_motion(body, mass.centre)
+        r = kinematics.position(body, mass.centre)
         if mass.mass > 0 and g != 0:
             out.append(AppliedLoad(weight_symbol(body), body, "weight", mass.centre, mass.point, r, mass.mass * g, 0.0))
         if mass.mass > 0:
+            a = kinematics.acceleration(body, mass.centre)
             out.append(AppliedLoad(inertia_symbol(body), body, "inertia force", mass.centre, mass.point, r, -mass.mass * a, 0.0))
         if mass.inertia > 0:
-            _, epsilon = angular(body)
+            epsilon = kinematics.epsilon(body)
             out.append(AppliedLoad(inertia_symbol(body, True), body, "inertia couple", mass.centre, mass.point, r, 0j, -mass.inertia * epsilon))
     for load in scene.loads:
+        r = kinematics.position(load.body, load.at)
         if load.kind == "moment":
-            r, _, _ = point_motion(load.body, load.at)
             out.append(AppliedLoad(load.name, load.body, "moment", load.at, None, r, 0j, load.moment))
             continue
-        r, v, _ = point_motion(load.body, load.at)
+        if load.kind == "force" and load.working is None:
+            out.append(AppliedLoad(load.name, load.body, load.kind, load.at, load.point, r, load.force, 0.0))
+            continue
+        v = kinematics.velocity(load.body, load.at)
         if load.kind == "force":
             force = load.force
         else:  # against the velocity of its point: −|F|·v/|v|, zero where v = 0

@@ -99,16 +99,22 @@ class PlanReadings:
             return 0j
         return measure(length, self.graphical.precision) * k * image / length
 
-    def point_motion(self, body: str, z: complex) -> tuple[complex, complex, complex]:
-        """``(r [m], v [m/s], a [m/s²])`` of the body's point with own coordinates z, read off the plans."""
-        return (
-            self.world(body, z),
-            self.reading(self.image(body, z, "velocity"), self.k_v),
-            self.reading(self.image(body, z, "acceleration"), self.k_a),
-        )
+    def position(self, body: str, z: complex) -> complex:
+        """r [m] of the body's point with own coordinates z, on the mechanism drawing."""
+        return self.world(body, z)
 
-    def angular(self, body: str) -> tuple[float, float]:
-        """``(ω [rad/s], ε [rad/s²])`` of the body as read off the plans."""
-        reading = self.graphical.links[body]
-        return reading["omega"], reading["epsilon"]
+    def velocity(self, body: str, z: complex) -> complex:
+        """v [m/s] read off the velocity plan (the point's image by similarity)."""
+        return self.reading(self.image(body, z, "velocity"), self.k_v)
 
+    def acceleration(self, body: str, z: complex) -> complex:
+        """a [m/s²] read off the acceleration plan (the point's image by similarity)."""
+        return self.reading(self.image(body, z, "acceleration"), self.k_a)
+
+    def omega(self, body: str) -> float:
+        """ω [rad/s] of the body as read off the plans."""
+        return self.graphical.links[body]["omega"]
+
+    def epsilon(self, body: str) -> float:
+        """ε [rad/s²] of the body as read off the plans."""
+        return self.graphical.links[body]["epsilon"]
