@@ -171,8 +171,9 @@ class ForcePlan:
     sine : float
         |sin| of the angle between the two closing lines (1.0 without them).
     found : tuple[str, ...]
-        The labels of the reactions read off this plan (the others are loads
-        known before it: a later group's reactions on these links).
+        The labels of the reactions (and a linear driver's balancing force)
+        read off this plan; the plan's other reactions are loads known before
+        it (a later group's reactions on these links).
     precision : float or None
         The drafting precision [mm] its lengths are read to.
     """
@@ -529,7 +530,7 @@ class _Builder:
                 if not any(abs(z - w) <= 1e-9 * max(1.0, abs(w)) for w in points.values()):
                     points[chr(ord("a") + len(points))] = z
         known = {f.label for body in links for f in self.passed.get(body, [])}
-        found = tuple(v.label for v in vectors if v.kind == "reaction" and v.label not in known)
+        found = tuple(v.label for v in vectors if v.kind in ("reaction", "balancing") and v.label not in known)
         self.plans.append(ForcePlan(group, tuple(links), mu, vectors, lines, tuple(equations), points, sine, found, self.d.precision))
         return mu
 
