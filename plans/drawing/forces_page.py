@@ -94,8 +94,24 @@ def _span(points) -> tuple[float, float]:
     return max(xs) - min(xs), max(ys) - min(ys)
 
 
-def _plan_scales(fig, graphical, first, items, box, lang: str) -> dict[str, float]:
-    """Group -> the round μ_F [N/mm] that draws its plan largest within *box*, in construction order."""
+class _Measured:
+    """A drawing's size [mm], measured once and taken off the page (it stands in for a Block while fitting)."""
+
+    class _Gone:
+        def remove(self) -> None:
+            pass
+
+    def __init__(self, width: float, height: float):
+        self.width, self.height = width, height
+        self.axes = self._Gone()
+
+
+def _plan_scales(fig, graphical, first, items, box, lang: str, sizes: dict) -> dict[str, float]:
+    """Group -> the round μ_F [N/mm] that draws its plan largest within *box*, in construction order.
+
+    *sizes* keeps every plan drawing measured, by (group, μ_F, the μ_F of the plans before it), for
+    the next layout tried.
+    """
     from ..forces.force_plans import construct_force_plans
 
     scales: dict[str, float] = {}
@@ -103,9 +119,14 @@ def _plan_scales(fig, graphical, first, items, box, lang: str) -> dict[str, floa
         plan0 = next(p for p in first.plans if p.group == group)
 
         def make(mu, group=group):
-            plan = next(p for p in construct_force_plans(graphical, mu_F={**scales, group: mu}).plans if p.group == group)
-            moment = first.balancing_moment if group == "driver" else None
-            return _block(fig, "fplan", lambda s: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment))
+            key = (group, mu, tuple(sorted(scales.items())))
+            if key not in sizes:
+                plan = next(p for p in construct_force_plans(graphical, mu_F={**scales, group: mu}).plans if p.group == group)
+                moment = first.balancing_moment if group == "driver" else None
+                block = _block(fig, "fplan", lambda s: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment))
+                block.axes.remove()
+                sizes[key] = (block.width, block.height)
+            return _Measured(*sizes[key])
 
         ends = [z for v in plan0.vectors for z in (v.tail, v.tip)]
 
@@ -123,17 +144,42 @@ def _plan_scales(fig, graphical, first, items, box, lang: str) -> dict[str, floa
 CRAMPED = 2.5
 
 
-def _layout(fig, graphical, first, items, room: float, width: float, lang: str):
-    """(worst shrink, columns, box, scales): the column count that draws the plans largest in *room* [mm]."""
+def _natural(fig, first, lang: str) -> dict[str, tuple[float, float, float, float]]:
+    """Group -> (width, height [mm] of its drawing, of its polygon) at its own μ_F: the fixed part of each plan's size."""
+    out = {}
+    for plan in first.plans:
+        moment = first.balancing_moment if plan.group == "driver" else None
+        block = _block(fig, "fplan", lambda s, plan=plan, moment=moment: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment))
+        block.axes.remove()
+        out[plan.group] = (block.width, block.height, *_span([z for v in plan.vectors for z in (v.tail, v.tip)]))
+    return out
+
+
+def _shrink(natural, box) -> float:
+    """The largest factor by which a plan must be drawn smaller than at its own μ_F to fit *box*, by the size model (inf: never)."""
+    worst = 1.0
+    for w, h, pw, ph in natural.values():
+        for drawn, scaled, room in ((w, pw, box[0]), (h, ph, box[1])):
+            if scaled > 0:
+                fixed = drawn - scaled
+                worst = max(worst, scaled / (room - fixed) if room - fixed > 1.0 else float("inf"))
+    return worst
+
+
+def _layout(fig, graphical, first, items, room: float, width: float, lang: str, sizes: dict, natural=None, limit: float = float("inf")):
+    """(worst shrink, columns, box, scales): the column count that draws the plans largest in *room* [mm].
+
+    Layouts whose boxes the size model says shrink a plan more than *limit* (given *natural*) are not tried; None if none is left.
+    """
     best = None
     for columns in ([1, 2] if len(items) <= 2 else [2]):
         if columns > len(items):
             continue
         rows = -(-len(items) // columns)
         box = ((width - (columns - 1) * GAP) / columns, (room - GAP * (rows - 1)) / rows)
-        if box[1] < 25.0:
+        if box[1] < 25.0 or (natural is not None and _shrink(natural, box) > limit):
             continue
-        scales = _plan_scales(fig, graphical, first, items, box, lang)
+        scales = _plan_scales(fig, graphical, first, items, box, lang, sizes)
         growth = 1.0
         for plan in first.plans:
             growth *= plan.scale / scales[plan.group]
@@ -223,7 +269,9 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
             return best[1]
 
         free = free_bodies(FREE_BODIES_SHARE)
-        shared = _layout(fig, graphical, first, items, room - free.height - GAP, width, lang)
+        sizes: dict = {}
+        natural = _natural(fig, first, lang)
+        shared = _layout(fig, graphical, first, items, room - free.height - GAP, width, lang, sizes, natural, limit=CRAMPED * 1.5)
         if shared is not None and shared[0] <= CRAMPED:
             _, columns, box, scales = shared
             free.place(sketch, PAGE_MARGIN + (width - free.width) / 2, top - free.height, size)
@@ -244,7 +292,7 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
         legend = _block(second, "flegend", lambda s: draw_force_legend_into(s, kinds, closing, lang))
         legend.place(sketch2, PAGE_MARGIN, bottom, size)
         room2 = top2 - bottom - legend.height - GAP
-        _, columns, box, scales = _layout(second, graphical, first, items, room2, width, lang)
+        _, columns, box, scales = _layout(second, graphical, first, items, room2, width, lang, sizes)
         _place_plans(second, sketch2, graphical, items, columns, box, scales, top2, width, size, lang, lever)
         page_footer(sketch2, footer)
         second.force_scales = dict(scales)
