@@ -169,3 +169,15 @@ def test_lever_forces_stand_at_their_turned_images():
     texts = _texts(artists)
     assert "M_{\\mathrm{b}}" in texts["lever-result"] and "620" in texts["lever-result"]  # §11: 620.218316 N·m
     assert not any("−0.0 mm" in t for t in texts.values())
+
+
+#: domain.md §11's table, typed here: the heading of a force plan in each language
+FORCE_PLAN_WORDS = {"en": "Force plan", "sr": "План сила", "ru": "План сил", "bg": "План на силите", "sl": "Načrt sil"}
+
+
+@pytest.mark.parametrize("lang", sorted(FORCE_PLAN_WORDS))
+def test_the_heading_is_the_textbooks_word(lang):
+    texts = _texts(draw_force_plan(TRIANGLE, lang=lang))
+    assert texts["fplan-heading"] == f"{FORCE_PLAN_WORDS[lang]}: RRR(1,2)"
+    decimal = "," if lang != "en" else "."
+    assert texts["fplan-reading-R_12"] == rf"$R_{{\mathrm{{12}}}}$ = 40{decimal}0 mm · 10 N/mm = 400 N"
