@@ -219,6 +219,7 @@ def build_parser() -> argparse.ArgumentParser:
     handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg / FILE.png for a file per page")
     handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
     handout.add_argument("--centres", action="store_true", help="a page more per position: the instant centres (Kennedy's theorem) and the velocities from them against analytic")
+    handout.add_argument("--forces", action="store_true", help="the kinetostatic pages per position: free bodies, force plans, Joukowski's lever (the scene needs masses or loads)")
     handout.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr (shown only when stderr is a terminal)")
     _language_argument(handout)
     _scale_arguments(handout)
@@ -233,6 +234,12 @@ def build_parser() -> argparse.ArgumentParser:
     _position_argument(forces)
     forces.add_argument("--json", action="store_true", help="print the JSON document instead of a table")
     forces.add_argument("--analytic-only", action="store_true", help="skip the graphical methods (construction, lever, force plans)")
+    forces.add_argument(
+        "-o", "--output", metavar="DIR",
+        help="also draw the free bodies, each group's force plan, the driver's and Joukowski's lever into DIR "
+             "(DIR/position-K/ for each of an --at list), all or none; lengths read to 0.1 mm unless --precision says",
+    )
+    forces.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="format of the drawings written into DIR (default svg)")
     _language_argument(forces)
     _warn_argument(forces)
     _scale_arguments(forces)
@@ -476,6 +483,8 @@ def _forces(args) -> int:
     from .forces.report import forces_json, forces_table
     from .report import format_json
 
+    if args.output is not None and args.analytic_only:
+        raise SceneError("-o draws the graphical methods (force plans, Joukowski's lever): leave out --analytic-only")
     scene = _load(args)
     scenes = [scene.at(value) for value in _listed_positions(scene, args.at)] if _several(args) else [scene]
     if not scene.has_forces:
@@ -502,12 +511,43 @@ def _forces(args) -> int:
                 table = f"position {k} of {len(runs)}: {_position_words(run.scene)}\n{table}"
             tables.append(table)
         text = "\n".join(tables)
+    if args.output is not None:
+        _force_drawings(args, runs)
     for run in runs:
         _warn_solution(run.analytic.kinematics, run.graphical)
         for note in run.notes:
             _warn(note)
     sys.stdout.write(text)
     return 0
+
+
+def _force_drawings(args, runs) -> None:
+    """``plans forces -o DIR``: every position's kinetostatic drawings, written together or not at all."""
+    from ._files import replace_all
+    from .drawing.force_drawing import force_drawing_files
+
+    from .forces.force_plans import force_plans
+    from .forces.lever import LeverError, joukowski_lever
+    from .graphical import construct
+    from .positions import at_page_precision
+
+    directory = Path(args.output)
+    contents: dict = {}
+    for k, run in enumerate(runs):
+        graphical, plans, lever = run.graphical, run.force_plans, run.lever
+        if graphical.precision is None and args.precision != 0:
+            # a drawing reads its lengths to 0.1 mm unless told (as plans draw's sheets): drawn again at that precision
+            scene = at_page_precision(run.scene, None)
+            graphical = construct(scene, k_l=graphical.scales["k_l"], k_v=graphical.scales["k_v"], k_a=graphical.scales.get("k_a"), check_scales=False)
+            plans = force_plans(graphical)
+            try:
+                lever = joukowski_lever(graphical)
+            except LeverError:
+                lever = None
+        where = directory if len(runs) == 1 else directory / f"position-{k}"
+        contents.update(force_drawing_files(plans, where, lang=args.lang, formats=(args.format,), lever=lever))
+    for path in replace_all(contents):
+        print(path, file=sys.stderr)
 
 
 def _position_words(scene: Scene) -> str:
@@ -789,6 +829,7 @@ def _handout(args) -> int:
             precision=args.precision,
             components=args.components,
             centres=args.centres,
+            forces=args.forces,
             progress=_progress(args),
         )
     _progress_done(args)

@@ -392,12 +392,14 @@ def handout_pages(
     progress=None,
     record: list | None = None,
     centres: bool = False,
+    forces: bool = False,
 ) -> list[tuple[str, object]]:
     """The handout's pages as (name, matplotlib Figure) pairs, in order.
 
     Names: ``cover``, ``position-K`` and ``check-K`` for each position K,
     ``unsolved-K`` for a position that cannot be solved, ``diagram-links``,
-    ``diagram-points``, ``diagram-sliders``, and ``centres-K`` with *centres*.  Arguments as :func:`write_handout`;
+    ``diagram-points``, ``diagram-sliders``, ``centres-K`` with *centres*, ``forces-K`` (``forces-K-2`` …) with
+    *forces*.  Arguments as :func:`write_handout`;
     *record* (a list), when given, receives ``(page name, PositionRun drawn)``
     for every position page (the solution at the scale factors the page states).
     """
@@ -410,6 +412,11 @@ def handout_pages(
     from .positions import at_page_precision, run_positions
 
     check_language(lang)
+    if forces and not scene.has_forces:
+        from .errors import SceneError
+
+        raise SceneError("--forces: the scene has no masses and no loads, so there is no kinetostatics to draw "
+                         "(give mass, centre, inertia on the links, [gravity] and [[load]]; plans examples --loads lists scenes that do)", scene.source)
     scene = at_page_precision(scene, precision)  # lengths measured and printed to 0.1 mm unless told
     say = progress or (lambda text: None)
     given = {"k_l": k_l if k_l is not None else scene.scales.k_l,
@@ -509,6 +516,16 @@ def handout_pages(
             from .drawing.centres_page import draw_centres_page
 
             pages.append((f"centres-{r.index}", draw_centres_page(r, lang=lang, header_lines=check_head, footer=footer)))
+        if forces:  # the kinetostatic pages of the position (plans.drawing.forces_page), from its graphical solution
+            from .drawing.forces_page import draw_forces_pages
+            from .forces.lever import LeverError, joukowski_lever
+
+            try:
+                lever = joukowski_lever(here.graphical)
+            except LeverError:
+                lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
+            for n, page in enumerate(draw_forces_pages(here.graphical, lang=lang, header_lines=check_head, footer=footer, lever=lever)):
+                pages.append((f"forces-{r.index}" + (f"-{n + 1}" if n else ""), page))
 
     if multi and solved:
         for name, fig in draw_cycle_diagrams(run.cycle, marked=run.positions, lang=lang, components=components):
@@ -533,6 +550,7 @@ def write_handout(
     components: bool = False,
     progress=None,
     centres: bool = False,
+    forces: bool = False,
 ) -> list[Path]:
     """Write the handout of a scene: a PDF of A4 pages, or SVG pages.
 
@@ -567,6 +585,12 @@ def write_handout(
         A page more after each position's: the instant centres (Kennedy's
         theorem, :mod:`plans.centres`) drawn on the mechanism with the circle
         diagram, and ω, v from them against the analytic values.
+    forces : bool
+        The kinetostatic pages after each position's (the scene must have
+        masses or loads): the free bodies of the groups with their loads and
+        reactions, each group's force plan and the driver's with the
+        reactions read off them and M_b, and Joukowski's lever
+        (:mod:`plans.drawing.forces_page`).
 
     Returns
     -------
@@ -596,7 +620,7 @@ def write_handout(
         raise HandoutError(str(exc)) from None
     if positions is None:
         _check_solvable(scene)
-    pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components, progress=progress, centres=centres)
+    pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components, progress=progress, centres=centres, forces=forces)
     say = progress or (lambda text: None)
     total = len(pages)
     if suffix == ".pdf":
