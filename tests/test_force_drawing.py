@@ -114,7 +114,7 @@ def worked():
 def test_free_bodies_draw_every_load_and_outer_reaction(worked):
     artists = draw_free_bodies(worked)
     gids = {a.get_gid() for a in artists}
-    for label in ("G_3", "F_Phi3", "G_4", "F_Phi4", "F_r", "R_23", "R_04", "G_2", "F_Phi2", "R_32", "R_02"):
+    for label in ("G_3", "F_Phi3", "G_4", "F_Phi4", "F_r", "R_23", "R_14", "G_2", "F_Phi2", "R_32", "R_12"):
         assert f"fbody-force-{label}" in gids, label
     # the inner reaction of the group cancels on its free body: not drawn
     assert not any(g.startswith("fbody-force-R_34") or g.startswith("fbody-force-R_43") for g in gids if g)

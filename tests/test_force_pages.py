@@ -19,7 +19,7 @@ from plans.i18n import term
 from plans.scene import example_path, load
 
 M_B = 620.218316  # domain.md §11
-R_02 = 9646.41888
+R_12 = 9646.41888
 
 
 def test_forces_output_draws_every_drawing(tmp_path, capsys):
@@ -72,16 +72,16 @@ def test_the_page_states_the_worked_example(lang):
     assert term("free_bodies", lang) in texts
     assert f"{term('force_plan', lang)}: RRP(3,4)" in texts
     assert f"{term('force_plan', lang)}: {term('driver', lang)}" in texts
-    # R_02 read on the page at its own μ_F, within the page's drafting precision of §11's
+    # R_12 read on the page at its own μ_F, within the page's drafting precision of §11's
     mu = pages[0].force_scales["driver"]
-    found = re.search(r"R_\{\\mathrm\{02\}\}\$ = ([0-9.,]+) mm · [0-9.,]+ N/mm = ([0-9.,]+) N", texts)
+    found = re.search(r"R_\{\\mathrm\{12\}\}\$ = ([0-9.,]+) mm · [0-9.,]+ N/mm = ([0-9.,]+) N", texts)
     assert found, texts
     length, value = (float(x.replace(",", ".")) for x in found.groups())
     assert value == pytest.approx(length * mu, abs=mu * 0.05)  # what the page says is drawn length × μ_F
-    assert abs(value - R_02) <= 2 * 0.1 * mu + 9 * 0.1 * g.scales["k_a"]
+    assert abs(value - R_12) <= 2 * 0.1 * mu + 9 * 0.1 * g.scales["k_a"]
     # the plan is drawn at the scale the page states: its construction at that μ_F reads the same length
     plan = next(p for p in construct_force_plans(g, mu_F=pages[0].force_scales).plans if p.group == "driver")
-    r = next(v for v in plan.vectors if v.label == "R_02")
+    r = next(v for v in plan.vectors if v.label == "R_12")
     assert round(r.length, 1) == pytest.approx(length)
 
 
@@ -107,5 +107,5 @@ def test_forces_drawings_read_to_a_tenth_of_a_millimetre_unless_told(tmp_path, c
     capsys.readouterr()
     read = (tmp_path / "a" / "force-plan-driver.svg").read_text(encoding="utf-8")
     exact = (tmp_path / "b" / "force-plan-driver.svg").read_text(encoding="utf-8")
-    assert re.search(r"= 96\.4 mm · 100 N/mm = 9640 N", read)  # R_02 = 9646.4 N of §11 read to 0.1 mm at 100 N/mm
+    assert re.search(r"= 96\.4 mm · 100 N/mm = 9640 N", read)  # R_12 = 9646.4 N of §11 read to 0.1 mm at 100 N/mm
     assert re.search(r"= 96\.46 mm · 100 N/mm = 9646 N", exact)

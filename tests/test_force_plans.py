@@ -30,9 +30,9 @@ PRECISION = 0.1
 
 LOADED = example_names(loads=True)
 
-#: domain.md §11: label -> (|R| [N], angle [deg]); R12 of the text is R_02 here (the frame is body 0)
+#: domain.md §11: label -> (|R| [N], angle [deg]); R12 of the text is R_12 here (the frame is body 0)
 REFERENCE = {
-    "R_02": (9646.41888, 199.942051),
+    "R_12": (9646.41888, 199.942051),
     "R_23": (8353.55006, 192.098702),
     "R_34": (5461.32544, 157.194749),
 }
@@ -57,7 +57,7 @@ def test_worked_example_exact():
         r = fp.reactions[label]
         assert abs(r.force) == pytest.approx(size, rel=1e-8), label
         assert _angle(r.force) == pytest.approx(angle, abs=1e-6), label
-    guide = fp.reactions["R_04"]
+    guide = fp.reactions["R_14"]
     assert guide.force.real == pytest.approx(0.0, abs=1e-6)
     assert guide.force.imag == pytest.approx(GUIDE_ON_SLIDER, rel=1e-8)
     assert guide.at == pytest.approx(g.positions["B"], abs=1e-12)  # every load on the piston passes through B
@@ -83,7 +83,7 @@ def test_worked_example_at_drafting_precision():
         exact = cmath.rect(size, math.radians(angle))
         assert abs(fp.reactions[label].force - exact) <= bound, label
         assert fp.reactions[label].force != exact  # really read at a precision
-    assert abs(fp.reactions["R_04"].force - GUIDE_ON_SLIDER * 1j) <= bound
+    assert abs(fp.reactions["R_14"].force - GUIDE_ON_SLIDER * 1j) <= bound
     on_crank = sum(abs(f.force) for f in fp.on("2")[0])
     assert abs(fp.balancing_moment - M_B) <= bound * 0.1 + on_crank * p * g.scales["k_l"]
     # every reading is a whole number of precision steps times μ_F
@@ -104,7 +104,7 @@ def test_plans_are_drawn_at_round_scales_and_close():
     # the group's polygon: loads and found reactions head to tail back to the start
     group = fp.plans[0]
     labels = [v.label for v in group.vectors]
-    assert labels[:7] == ["R^t_23", "G_3", "F_Φ3", "G_4", "F_Φ4", "F_r", "R_04"]
+    assert labels[:7] == ["R^t_23", "G_3", "F_Φ3", "G_4", "F_Φ4", "F_r", "R_14"]
     chain = group.vectors[:8]
     for a, b in zip(chain, chain[1:]):
         assert b.tail == pytest.approx(a.tip, abs=1e-9)
@@ -139,7 +139,7 @@ def test_inertia_loads_from_the_plans_equal_the_analytic(name):
     loads = {f.label: f for f in fp.loads}
     couples = {c.label: c.moment for c in fp.couples}
     for body, m in scene.masses.items():
-        label = body if body != "frame" else "0"
+        label = body if body != "frame" else "1"
         S = fp.centres[body].at
         a_s = acceleration(body, S)
         assert fp.centres[body].acceleration == pytest.approx(a_s, abs=EXACT * (1 + abs(a_s)))
@@ -202,7 +202,7 @@ def test_every_link_in_equilibrium(name, precision):
 def test_reaction_labels_name_who_acts_on_whom():
     _, _, fp = _solved("six-bar-loads")
     for label, r in fp.reactions.items():
-        assert label == pair_label(r.by, r.on)
+        assert label == pair_label(r.by, r.on, "1")  # crank 2: the frame is 1
     # each inner pair both ways, equal and opposite
     assert fp.reactions["R_34"].force == pytest.approx(-fp.reactions["R_43"].force)
     assert fp.reactions["R_56"].force == pytest.approx(-fp.reactions["R_65"].force)

@@ -49,11 +49,11 @@ def test_the_worked_example_of_domain_md_section_11():
     assert close(kin.points["B"].a[0].real, A_B, 6)
     assert result.balancing_kind == "moment"
     assert close(result.balancing[0], M_B, 6)
-    for label, (magnitude, degrees) in (("R_02", R12), ("R_23", R23), ("R_34", R34)):
+    for label, (magnitude, degrees) in (("R_12", R12), ("R_23", R23), ("R_34", R34)):
         force = complex(result.reactions[label].force[0])
         assert close(abs(force), magnitude, 5), label
         assert close(math.degrees(math.atan2(force.imag, force.real)) % 360, degrees, 6), label
-    guide = result.reactions["R_04"]
+    guide = result.reactions["R_14"]
     assert guide.kind == "P" and guide.by == FRAME and guide.on == "4"
     assert close(guide.normal_force[0], GUIDE, 5)
     assert guide.normal[0] == pytest.approx(1j, abs=1e-15)  # +y
@@ -260,3 +260,20 @@ def test_a_couple_on_a_block_on_a_moving_guide_passes_to_the_guide_when_the_norm
     omega3 = kin.links["3"].omega[0]
     assert abs(omega3) > 0.1
     assert result.balancing[0] * kin.scene.driver.velocity == pytest.approx(-5.0 * omega3, rel=1e-12)
+
+
+def test_the_frame_goes_by_the_scenes_number_in_every_reaction_label():
+    # the §11 example renumbered as the Russian and Bulgarian courses number it: crank 1, rod 2, piston 3, frame 0
+    from plans.forces.force_plans import construct_force_plans
+    from plans.graphical import construct
+
+    text = example_path("slider-crank-loads").read_text()
+    text = text.replace("[link.2]", "[link.1]").replace("[link.3]", "[link.2]").replace('link = "4"', 'link = "3"').replace('crank = "2"', 'crank = "1"')
+    scene = loads(text, source="crank-one.toml")
+    assert scene.frame_number == "0"
+    analytic = solve_forces(scene)
+    assert list(analytic.reactions) == ["R_01", "R_12", "R_23", "R_03"]
+    assert abs(analytic.reactions["R_01"].force[0]) == pytest.approx(9646.41888, abs=1e-5)  # §11's R12 (frame on crank)
+    assert abs(analytic.reactions["R_03"].force[0]) == pytest.approx(2077.57014, abs=1e-5)  # §11's guide on slider
+    graphical = construct(scene)
+    assert set(construct_force_plans(graphical).reactions) >= {"R_01", "R_12", "R_23", "R_03"}

@@ -41,14 +41,14 @@ def test_json_has_exactly_the_documented_keys_and_the_worked_example(capsys):
     assert doc["structure"] == "I(1,2) → RRP(3,4)"
     assert [entry["name"] for entry in doc["loads"]] == ["G_2", "F_Φ2", "M_Φ2", "G_3", "F_Φ3", "M_Φ3", "G_4", "F_Φ4", "F_r"]
     assert all(list(entry) == LOAD for entry in doc["loads"])
-    assert list(doc["reactions"]) == ["R_02", "R_23", "R_34", "R_04"]
+    assert list(doc["reactions"]) == ["R_12", "R_23", "R_34", "R_14"]
     for label, entry in doc["reactions"].items():
         assert list(entry) == REACTION
         assert list(entry["analytic"]) == (REACTION_P if entry["kind"] == "P" else REACTION_R)
-    assert (doc["reactions"]["R_02"]["by"], doc["reactions"]["R_02"]["on"], doc["reactions"]["R_02"]["joint"]) == ("0", "2", "O")
+    assert (doc["reactions"]["R_12"]["by"], doc["reactions"]["R_12"]["on"], doc["reactions"]["R_12"]["joint"]) == ("1", "2", "O")
     assert doc["reactions"]["R_23"]["analytic"]["magnitude"] == pytest.approx(8353.55006, abs=1e-5)
     assert doc["reactions"]["R_23"]["analytic"]["angle_deg"] == pytest.approx(192.098702, abs=5e-7)
-    assert doc["reactions"]["R_04"]["analytic"]["normal_force"] == pytest.approx(-2077.57014, abs=1e-5)
+    assert doc["reactions"]["R_14"]["analytic"]["normal_force"] == pytest.approx(-2077.57014, abs=1e-5)
     balancing = doc["balancing"]
     assert (balancing["kind"], balancing["symbol"]) == ("moment", "M_b")
     assert balancing["analytic"] == pytest.approx(M_B, abs=5e-7)
@@ -101,7 +101,7 @@ def test_a_linear_driver_gets_a_balancing_force(capsys):
     status, out, _ = run(capsys, "forces", "--example", "ladder-loads", "--json")
     doc = json.loads(out)
     assert status == 0 and doc["balancing"]["kind"] == "force" and doc["balancing"]["symbol"] == "F_b"
-    assert doc["reactions"]["R_02"]["kind"] == "P"
+    assert doc["reactions"]["R_12"]["kind"] == "P"
     assert doc["power"]["driving"] == pytest.approx(doc["balancing"]["analytic"] * 1.0, rel=1e-12)  # F_b·v, v = 1 m/s
 
 
@@ -140,12 +140,12 @@ def test_sweep_adds_the_balancing_moment_and_every_reaction(capsys):
     assert status == 0
     rows = list(csv.DictReader(io.StringIO(out)))
     header = list(rows[0])
-    assert header[-5:] == ["M_b", "R_02.magnitude", "R_23.magnitude", "R_34.magnitude", "R_04.magnitude"]
+    assert header[-5:] == ["M_b", "R_12.magnitude", "R_23.magnitude", "R_34.magnitude", "R_14.magnitude"]
     first = rows[0]
     assert float(first["driver_phi_deg"]) == 60
     assert float(first["M_b"]) == pytest.approx(M_B, abs=5e-7)
-    assert float(first["R_02.magnitude"]) == pytest.approx(9646.41888, abs=1e-5)
-    assert float(first["R_04.magnitude"]) == pytest.approx(2077.57014, abs=1e-5)
+    assert float(first["R_12.magnitude"]) == pytest.approx(9646.41888, abs=1e-5)
+    assert float(first["R_14.magnitude"]) == pytest.approx(2077.57014, abs=1e-5)
     plain = run(capsys, "sweep", "--example", "slider-crank", "--steps", "12")[1]
     assert "M_b" not in plain.splitlines()[0]
 
@@ -188,10 +188,10 @@ def test_the_force_plans_hook_puts_their_numbers_beside_the_analytic(capsys):
     exact = {label: complex(r.force[0]) for label, r in run_.analytic.reactions.items()}
     stand_in = SimpleNamespace(
         balancing=M_B + 0.5,
-        reactions={label: SimpleNamespace(force=force + 2.0) for label, force in exact.items() if label != "R_04"},
+        reactions={label: SimpleNamespace(force=force + 2.0) for label, force in exact.items() if label != "R_14"},
     )
     rows = compare_forces(run_.analytic, run_.lever, stand_in)
-    assert [(row.quantity, row.method) for row in rows] == [("M_b", "force_plans"), ("M_b", "lever"), ("R_02", "force_plans"),
+    assert [(row.quantity, row.method) for row in rows] == [("M_b", "force_plans"), ("M_b", "lever"), ("R_12", "force_plans"),
                                                            ("R_23", "force_plans"), ("R_34", "force_plans")]
     assert rows[0].abs_error == pytest.approx(0.5, abs=1e-6) and rows[2].abs_error == pytest.approx(2.0, rel=1e-12)
     assert rows[3].rel_error == pytest.approx(2.0 / 8353.55006, rel=1e-6)
@@ -199,7 +199,7 @@ def test_the_force_plans_hook_puts_their_numbers_beside_the_analytic(capsys):
     doc = forces_json(run_)
     assert doc["balancing"]["force_plans"]["value"] == pytest.approx(M_B + 0.5, abs=1e-6)
     assert doc["reactions"]["R_23"]["force_plans"]["abs_error"] == pytest.approx(2.0, rel=1e-12)
-    assert "force_plans" not in doc["reactions"]["R_04"]
+    assert "force_plans" not in doc["reactions"]["R_14"]
     table = forces_table(run_, "ru")
     assert "планы сил" in table and f"{M_B + 0.5:16.9g}".strip() in table
 

@@ -20,7 +20,7 @@ Conventions (SI, frame axes, counter-clockwise positive):
   action is unknown: the unknowns are N and the couple C of that force about
   a reference point Q of the pair, and the force acts through
   ``Q + (C/N)·u`` (2 unknowns; no friction);
-* ``R_ij`` is the force of body i on body j (the frame is 0): the reaction
+* ``R_ij`` is the force of body i on body j (the frame by the scene's number, 1 where the crank is 2): the reaction
   of the known body on a group's link at an outer joint, of the group's
   first link on its second at the inner joint.
 
@@ -59,9 +59,13 @@ def _dot(a, b):
     return a.real * b.real + a.imag * b.imag
 
 
-def reaction_label(by: str, on: str) -> str:
-    """``"R_23"``: the force of body *by* on body *on* (the frame is 0); ``"R_3,rod"`` for longer names."""
-    names = ["0" if b == FRAME else b for b in (by, on)]
+def reaction_label(by: str, on: str, frame: str = "1") -> str:
+    """``"R_23"``: the force of body *by* on body *on*; ``"R_3,rod"`` for longer names.
+
+    The frame goes by *frame*, the scene's :attr:`~plans.scene.Scene.frame_number`
+    (``"1"`` where the crank is 2: ``R_12`` is the frame on the crank).
+    """
+    names = [frame if b == FRAME else b for b in (by, on)]
     joiner = "" if all(len(n) == 1 for n in names) else ","
     return f"R_{joiner.join(names)}"
 
@@ -282,7 +286,8 @@ def forces_from(kinematics) -> AnalyticForces:
     out: dict[str, Reaction] = {}
     for reaction in ordered:
         reaction = _full(reaction, n)
-        label = reaction.label if reaction.label not in out else f"{reaction.label}:{reaction.joint}"
+        label = reaction_label(reaction.by, reaction.on, scene.frame_number)
+        label = label if label not in out else f"{label}:{reaction.joint}"
         out[label] = reaction if label == reaction.label else _relabel(reaction, label)
     return AnalyticForces(scene, structure, kinematics, loads, out, _frozen(np.real(balancing) + np.zeros(n)), "moment" if isinstance(scene.driver, Crank) else "force")
 

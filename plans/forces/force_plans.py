@@ -35,7 +35,7 @@ one; the two methods share only the scene):
    A group's reactions on the links it is attached to are loads on those
    links, applied where they act, when their own group's plan is drawn.
 3. **The driver.**  A crank: the balancing moment M_b (a couple) from
-   Σ M_O = 0 over the crank (arms measured), and the frame's reaction R_02
+   Σ M_O = 0 over the crank (arms measured), and the frame's reaction R_12
    closing the polygon of the crank's loads and the first group's reaction.  A linear driver: the polygon closed by the line ∥
    its guide (the balancing force) and the line ⊥ it (the guide's reaction).
 
@@ -277,26 +277,27 @@ class ForcePlans:
         for r in self.reactions.values():
             if r.on == body:
                 forces.append(AppliedForce(r.label, "reaction", body, r.at, r.force))
-            elif r.by == body and pair_label(r.on, r.by) not in self.reactions:  # its other half, when not listed
-                forces.append(AppliedForce(pair_label(r.on, r.by), "reaction", body, r.at, -r.force))
+            elif r.by == body and pair_label(r.on, r.by, self.graphical.scene.frame_number) not in self.reactions:  # its other half, when not listed
+                forces.append(AppliedForce(pair_label(r.on, r.by, self.graphical.scene.frame_number), "reaction", body, r.at, -r.force))
         if self.balancing_force is not None and self.graphical.scene.driver.link == body:
             forces.append(AppliedForce("F_b", "balancing", body, self.balancing_at, self.balancing_force))
         return forces, [c for c in self.couples if c.body == body]
 
 
-def body_number(body: str) -> str:
-    """A body as labels write it: the frame is 0."""
-    return "0" if body == FRAME else body
+def body_number(body: str, frame: str) -> str:
+    """A body as labels write it: the frame by *frame*, the scene's :attr:`~plans.scene.Scene.frame_number`."""
+    return frame if body == FRAME else body
 
 
-def pair_label(by: str, on: str) -> str:
+def pair_label(by: str, on: str, frame: str) -> str:
     """``"R_23"``: the reaction of body *by* on body *on* (``"R_{rod,slider}"``-like with a comma for longer names)."""
-    a, b = body_number(by), body_number(on)
+    a, b = body_number(by, frame), body_number(on, frame)
     return f"R_{a}{b}" if len(a) == 1 and len(b) == 1 else f"R_{a},{b}"
 
 
 def _sub(body: str) -> str:
-    return body_number(body)
+    """A moving link's number as a subscript (the frame carries no loads of its own)."""
+    return body
 
 
 def _cross(a: complex, b: complex) -> float:
@@ -350,7 +351,7 @@ def _images_of(plan, scene, body: str, positions) -> list[tuple[complex, complex
     out = []
     primed = plan.kind == "acceleration"
     for name in scene.bodies[body].points:
-        own = name.lower() + body_number(body) + ("′" if primed else "")
+        own = name.lower() + body_number(body, scene.frame_number) + ("′" if primed else "")
         shared = name.lower() + ("′" if primed else "")
         label = own if own in plan.images else shared
         if label in plan.images:
@@ -473,6 +474,10 @@ class _Builder:
         crank = isinstance(self.scene.driver, Crank)
         self.where = position_text(crank, self.scene.driver.phi if crank else self.scene.driver.s)
 
+    def label(self, by: str, on: str) -> str:
+        """The reaction's label, the frame by the scene's number."""
+        return pair_label(by, on, self.scene.frame_number)
+
     # -- what acts on a link -------------------------------------------------------------
 
     def forces_on(self, body: str) -> list[AppliedForce]:
@@ -498,7 +503,7 @@ class _Builder:
         self.reactions[label] = Reaction(label, joint, kind, by, on, at, force)
         if by != FRAME and by not in self.current:
             # a reaction on a link already known: a load on it when its own plan is drawn
-            self.passed.setdefault(by, []).append(AppliedForce(pair_label(on, by), "reaction", by, at, -force))
+            self.passed.setdefault(by, []).append(AppliedForce(self.label(on, by), "reaction", by, at, -force))
 
     def on_line(self, force: complex, origin: complex, u: complex, about: complex, moment: float) -> complex:
         """The point of action of a force ⊥ a guide line (origin, u) whose moment about *about* must be *moment*.
@@ -571,7 +576,7 @@ class _Builder:
         B, C, D = self.point(b), self.point(c), self.point(dd)
         rt_b, _, eq_b = self.tangential(i, b, c)
         rt_d, _, eq_d = self.tangential(j, dd, c)
-        name_b, name_d, name_c = pair_label(ki, i), pair_label(kj, j), pair_label(j, i)
+        name_b, name_d, name_c = self.label(ki, i), self.label(kj, j), self.label(j, i)
         poly = _Polygon()
         poly.add(rt_b, "tangential", _sup(name_b, "t"))
         start_i = poly.end
@@ -594,7 +599,7 @@ class _Builder:
         self.react(name_b, b, "R", ki, i, B, self.d.read(start_i - x, mu))
         self.react(name_d, dd, "R", kj, j, D, self.d.read(x - before_d, mu))
         self.react(name_c, c, "R", j, i, C, self.d.read(x - end_i, mu))
-        self.reactions[pair_label(i, j)] = Reaction(pair_label(i, j), c, "R", i, j, C, -self.reactions[name_c].force)
+        self.reactions[self.label(i, j)] = Reaction(self.label(i, j), c, "R", i, j, C, -self.reactions[name_c].force)
 
     def group_rrp(self, group: Group) -> None:
         i, j = group.links
@@ -603,7 +608,7 @@ class _Builder:
         B, C = self.point(b), self.point(c)
         origin, u = self.guide(group.outer_j.prismatic)
         rt_b, _, eq_b = self.tangential(i, b, c)
-        name_b, name_n, name_c = pair_label(ki, i), pair_label(kj, j), pair_label(i, j)
+        name_b, name_n, name_c = self.label(ki, i), self.label(kj, j), self.label(i, j)
         poly = _Polygon()
         poly.add(rt_b, "tangential", _sup(name_b, "t"))
         start_i = poly.end
@@ -626,7 +631,7 @@ class _Builder:
         at = self.on_line(normal, origin, u, C, -self.moment_about(j, C))
         self.react(name_b, b, "R", ki, i, B, self.d.read(start_i - x, mu))
         self.react(name_c, c, "R", i, j, C, self.d.read(end_i - x, mu))
-        self.reactions[pair_label(j, i)] = Reaction(pair_label(j, i), c, "R", j, i, C, -self.reactions[name_c].force)
+        self.reactions[self.label(j, i)] = Reaction(self.label(j, i), c, "R", j, i, C, -self.reactions[name_c].force)
         self.react(name_n, group.outer_j.prismatic.name, "P", kj, j, at, normal)
 
     def group_prp(self, group: Group) -> None:
@@ -636,7 +641,7 @@ class _Builder:
         C = self.point(c)
         o_i, u_i = self.guide(group.outer_i.prismatic)
         o_j, u_j = self.guide(group.outer_j.prismatic)
-        name_i, name_j, name_c = pair_label(ki, i), pair_label(kj, j), pair_label(j, i)
+        name_i, name_j, name_c = self.label(ki, i), self.label(kj, j), self.label(j, i)
         poly = _Polygon()
         self.load_vectors(poly, i)
         end_i = poly.end
@@ -657,7 +662,7 @@ class _Builder:
         self.react(name_i, group.outer_i.prismatic.name, "P", ki, i, at_i, n_i)
         self.react(name_j, group.outer_j.prismatic.name, "P", kj, j, at_j, n_j)
         self.react(name_c, c, "R", j, i, C, self.d.read(x - end_i, mu))
-        self.reactions[pair_label(i, j)] = Reaction(pair_label(i, j), c, "R", i, j, C, -self.reactions[name_c].force)
+        self.reactions[self.label(i, j)] = Reaction(self.label(i, j), c, "R", i, j, C, -self.reactions[name_c].force)
 
     def group_rpp(self, group: Group) -> None:
         i, j = group.links
@@ -667,7 +672,7 @@ class _Builder:
         inner, outer = group.inner.prismatic, group.outer_j.prismatic
         o_in, u_in = self.guide(inner)
         o_out, u_out = self.guide(outer)
-        name_b, name_in, name_out = pair_label(ki, i), pair_label(i, j), pair_label(kj, j)
+        name_b, name_in, name_out = self.label(ki, i), self.label(i, j), self.label(kj, j)
         poly = _Polygon()
         self.load_vectors(poly, i)
         end_i = poly.end
@@ -680,7 +685,7 @@ class _Builder:
         poly.draw(x, 0j, "reaction", name_b)
         mu = self.finish(group.name, group.links, poly, (
             f"{name_in} + Σ F({_sub(j)}) + {name_out} = 0",
-            f"{name_b}: {name_b} + Σ F({_sub(i)}) + {pair_label(j, i)} = 0",
+            f"{name_b}: {name_b} + Σ F({_sub(i)}) + {self.label(j, i)} = 0",
             f"ΣM_{b}({_sub(i)}) = 0, ΣM({_sub(j)}) = 0: the normal forces' points of action"), sine)
         n_in = self.d.read(end_i - x, mu)  # on j
         n_out = self.d.read(x - end_j, mu)
@@ -691,7 +696,7 @@ class _Builder:
         at_out = self.on_line(n_out, o_out, u_out, at_in, -self.moment_about(j, at_in))
         self.react(name_b, b, "R", ki, i, B, r_b)
         self.react(name_in, inner.name, "P", i, j, at_in, n_in)
-        self.reactions[pair_label(j, i)] = Reaction(pair_label(j, i), inner.name, "P", j, i, at_in, -n_in)
+        self.reactions[self.label(j, i)] = Reaction(self.label(j, i), inner.name, "P", j, i, at_in, -n_in)
         self.react(name_out, outer.name, "P", kj, j, at_out, n_out)
 
     def group_rpr(self, group: Group) -> None:
@@ -702,7 +707,7 @@ class _Builder:
         p = group.inner.prismatic
         origin, u = self.guide(p)
         nu = 1j * u
-        name_b, name_e, name_n = pair_label(ki, i), pair_label(kj, j), pair_label(i, j)
+        name_b, name_e, name_n = self.label(ki, i), self.label(kj, j), self.label(i, j)
         # N = n·ν on j at origin + s·u:  j: n·(a_E + s) = −M_j;  i: −n·(a_B + s) = −M_i
         m_i, m_j = self.moment_about(i, B), self.moment_about(j, E)
         a_b = _signed_foot(self.d, origin, u, B)
@@ -718,17 +723,17 @@ class _Builder:
         x = end_i - n * nu  # N_ji = −N on i, drawn from the end of i's loads
         poly.draw(end_j, x, "reaction", name_e)
         poly.draw(x, 0j, "reaction", name_b)
-        poly.draw(end_i, x, "reaction", pair_label(j, i))
+        poly.draw(end_i, x, "reaction", self.label(j, i))
         mu = self.finish(group.name, group.links, poly, (
             f"{name_b} + Σ F({_sub(i)}) + Σ F({_sub(j)}) + {name_e} = 0",
             f"ΣM_{b}({_sub(i)}) = 0, ΣM_{e}({_sub(j)}) = 0: {name_n} ⊥ guide and its point of action",
-            f"{name_b} + Σ F({_sub(i)}) + {pair_label(j, i)} = 0"))
+            f"{name_b} + Σ F({_sub(i)}) + {self.label(j, i)} = 0"))
         normal = -self.d.read(x - end_i, mu)  # on j
         at = self.on_line(normal, origin, u, E, -m_j)
         self.react(name_b, b, "R", ki, i, B, self.d.read(-x, mu))
         self.react(name_e, e, "R", kj, j, E, self.d.read(x - end_j, mu))
         self.reactions[name_n] = Reaction(name_n, p.name, "P", i, j, at, normal)
-        self.reactions[pair_label(j, i)] = Reaction(pair_label(j, i), p.name, "P", j, i, at, -normal)
+        self.reactions[self.label(j, i)] = Reaction(self.label(j, i), p.name, "P", j, i, at, -normal)
 
     # -- the driver --------------------------------------------------------------------------
 
@@ -743,7 +748,7 @@ class _Builder:
             # the balancing moment is a couple: it does not enter the polygon, the frame's reaction closes it
             O = self.point(drv.pivot)
             m_b = -self.moment_about(link, O)  # Σ M_O of everything on the crank, M_b included, is zero
-            label = pair_label(FRAME, link)
+            label = self.label(FRAME, link)
             poly.draw(poly.end, 0j, "reaction", label)
             self.finish("driver", (link,), poly, (
                 " + ".join(names + [label]) + " = 0",
@@ -756,7 +761,7 @@ class _Builder:
         P = self.point(drv.point)
         x, sine = _intersect(end, u, 0j, 1j * u, self.size(poly), f"driver: the force plan's closing lines ∥ and ⊥ the guide are parallel at {self.where}")
         poly.lines += [(end, u, "∥ " + drv.guide), (0j, 1j * u, "⊥ " + drv.guide)]
-        label = pair_label(FRAME, link)
+        label = self.label(FRAME, link)
         poly.draw(end, x, "balancing", "F_b")
         poly.draw(x, 0j, "reaction", label)
         mu = self.finish("driver", (link,), poly, (" + ".join(names + ["F_b", label]) + " = 0",), sine)

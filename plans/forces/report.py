@@ -35,8 +35,8 @@ def method_name(method: str, lang: str = "en") -> str:
     return term({"analytic": "analytic", "force_plans": "force_plans", "lever": "joukowski_lever"}[method], lang)
 
 
-def _body(name: str) -> str:
-    return "0" if name == FRAME else name
+def _body(name: str, frame: str) -> str:
+    return frame if name == FRAME else name
 
 
 def _vec(z: complex) -> list[float] | None:
@@ -101,8 +101,8 @@ def forces_json(run: KinetostaticRun) -> dict:
         entry = {
             "joint": reaction.joint,
             "kind": reaction.kind,
-            "by": _body(reaction.by),
-            "on": _body(reaction.on),
+            "by": _body(reaction.by, analytic.scene.frame_number),
+            "on": _body(reaction.on, analytic.scene.frame_number),
             "group": reaction.group,
             "analytic": {"force": _vec(force), "magnitude": _num(abs(force)), "angle_deg": _deg(force), "point": _vec(reaction.point[0])},
         }
