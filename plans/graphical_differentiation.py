@@ -1,0 +1,497 @@
+"""Kinematic diagrams of the output link by graphical differentiation: the method of chords (and of tangents).
+
+The course project's third method, beside the velocity and acceleration plans
+and the analytic solution (domain.md §10).  It knows only the displacement s
+of the output link at the project's positions and the times t at which the
+driver reaches them; it never reads a velocity or an acceleration:
+
+* **The s–t diagram.**  s is the output's signed displacement from its first
+  position (a slider: travel along its guide [m], positive along the guide's
+  direction; a rocker: its angle [rad], counter-clockwise positive), drawn
+  against t at the scales μ_s [m/mm or rad/mm] and μ_t = T / L [s/mm] (T the
+  time of one cycle, L the abscissa's length [mm]).
+* **Method of chords.**  Neighbouring points of the s–t curve are joined by
+  chords.  From a pole P₁ at distance H₁ [mm] to the left of the v–t
+  diagram's origin, rays are drawn parallel to the chords; the intercept y
+  [mm] a ray cuts on the ordinate axis is the mean velocity over the
+  interval, ``v = y · μ_v`` with ``μ_v = μ_s / (μ_t · H₁)``::
+
+      y = H₁ · tan α = H₁ · (Δs / μ_s) / (Δt / μ_t)    ⇒    y · μ_v = Δs / Δt
+
+  and is plotted at the interval's middle in time.  A smooth curve through
+  those points is v(t).  The same on the v–t curve (chords between its
+  points, pole P₂ at H₂, ``μ_a = μ_v / (μ_t · H₂)``) gives a(t).
+* **Reading back at the positions.**  The chord of an interval is exactly
+  parallel to the tangent somewhere inside it (the mean value theorem); at
+  the interval's middle its slope differs from the true v by
+  ``Δt² · s‴ / 24`` (second order).  The a–t points are the chords of the
+  v–t points, so where the positions are equally spaced in time they fall on
+  the positions themselves, with an error ``Δt² · s⁗ / 12``.  The v–t
+  curve is read at the positions through a smooth curve: the cubic through
+  the four nearest points (:func:`smooth`), which adds an error of fourth
+  order; the reading at a position keeps the chord's ``Δt² · s‴ / 24``.
+* **Method of tangents** (:func:`tangents`): the ray parallel to the tangent
+  of the smooth s–t curve at each position; the tangent's slope is that of
+  the curve through the five nearest points (fourth order where s is smooth).
+
+Signs: every value is signed (no magnitudes): v = ds/dt, a = dv/dt, with the
+sign convention of s.  Units SI; drawn lengths in mm.
+
+>>> import numpy as np
+>>> t = np.arange(4) * 0.25                       # four positions of a cycle T = 1 s
+>>> s = np.array([0.0, 1.0, 0.0, -1.0])
+>>> middles, slopes = chords(t, s, period=1.0)
+>>> [float(x) for x in middles], [float(x) for x in slopes]
+([0.125, 0.375, 0.625, 0.875], [4.0, -4.0, -4.0, 4.0])
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .graphical.scales import round_up
+
+__all__ = [
+    "chords",
+    "smooth",
+    "tangents",
+    "Differentiation",
+    "differentiate",
+    "DiagramScales",
+    "diagram_scales",
+    "OutputMotion",
+    "KinematicDiagrams",
+    "kinematic_diagrams_of",
+    "POLE_DISTANCES",
+    "ABSCISSA_MAX",
+    "ORDINATE_MAX",
+    "TIME_MANTISSAS",
+    "relative_errors",
+]
+
+#: Pole distances H [mm] a plate uses: round, short enough to leave the abscissa its room.
+POLE_DISTANCES = (10.0, 12.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0)
+#: The longest abscissa L [mm] of one cycle on an A4 page (the poles and the ordinate's labels take the rest).
+ABSCISSA_MAX = 130.0
+#: The tallest a diagram's ordinate range may be drawn [mm].
+ORDINATE_MAX = 48.0
+#: Round mantissas of μ_t and μ_s (textbooks' 1, 2, 2.5, 5 × 10ⁿ).
+TIME_MANTISSAS = (1, 2, 2.5, 5)
+
+
+def _extended(t: np.ndarray, y: np.ndarray, period: float | None) -> tuple[np.ndarray, np.ndarray]:
+    """The points of a closed cycle with the first one again one period later (open: as given)."""
+    if period is None:
+        return t, y
+    return np.append(t, t[0] + period), np.append(y, y[0])
+
+
+def chords(t, y, *, period: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The method of chords: the middle of every interval and the chord's slope over it.
+
+    Parameters
+    ----------
+    t : array (n,)
+        Abscissae [s], increasing.
+    y : array (n,)
+        Ordinates of the curve at *t* (any unit).
+    period : float, optional
+        The curve repeats after *period* [s]: the last point is joined to the
+        first one a period later (n chords); otherwise n − 1 chords.
+
+    Returns
+    -------
+    middles : array
+        ``(t[k] + t[k+1]) / 2`` [s].
+    slopes : array
+        ``(y[k+1] − y[k]) / (t[k+1] − t[k])`` [unit/s], the mean rate over the interval.
+    """
+    t, y = _extended(np.asarray(t, dtype=float), np.asarray(y, dtype=float), period)
+    return (t[1:] + t[:-1]) / 2, np.diff(y) / np.diff(t)
+
+
+def _nearest(nodes: np.ndarray, values: np.ndarray, x: float, count: int, period: float | None) -> tuple[np.ndarray, np.ndarray]:
+    """The *count* nodes nearest to *x* (a closed cycle: with copies a period before and after)."""
+    if period is not None:
+        nodes = np.concatenate([nodes - period, nodes, nodes + period])
+        values = np.concatenate([values, values, values])
+    order = np.argsort(np.abs(nodes - x), kind="stable")[:count]
+    order = np.sort(order)
+    return nodes[order], values[order]
+
+
+def _lagrange(xs: np.ndarray, ys: np.ndarray, x: float, derivative: bool = False) -> float:
+    """The polynomial through (xs, ys), or its derivative, at *x*."""
+    total = 0.0
+    for j in range(len(xs)):
+        others = np.delete(xs, j)
+        denominator = float(np.prod(xs[j] - others))
+        if not derivative:
+            total += ys[j] * float(np.prod(x - others)) / denominator
+        else:
+            d = 0.0
+            for m in range(len(others)):
+                d += float(np.prod(np.delete(x - others, m)))
+            total += ys[j] * d / denominator
+    return total
+
+
+def smooth(nodes, values, x, *, period: float | None = None) -> np.ndarray:
+    """The smooth curve a draftsman draws through the points (*nodes*, *values*), read at *x*.
+
+    Each reading is the cubic through the four nodes nearest to it (on a
+    closed cycle, counted across its ends): exact for a cubic, an error of
+    fourth order in the spacing for a smooth curve.
+    """
+    nodes, values = np.asarray(nodes, dtype=float), np.asarray(values, dtype=float)
+    count = min(4, len(nodes))
+    out = [_lagrange(*_nearest(nodes, values, float(at), count, period), float(at)) for at in np.atleast_1d(x)]
+    return np.asarray(out)
+
+
+def tangents(t, y, *, period: float | None = None) -> np.ndarray:
+    """The method of tangents: the slope of the smooth curve through the points at every point [unit/s].
+
+    The tangent is that of the curve through the five nearest points (fewer
+    when there are fewer): ``(y₋₂ − 8y₋₁ + 8y₁ − y₂) / (12Δt)`` on an equal
+    spacing, an error of fourth order.
+    """
+    t, y = np.asarray(t, dtype=float), np.asarray(y, dtype=float)
+    count = min(5, len(t))
+    return np.asarray([_lagrange(*_nearest(t, y, float(at), count, period), float(at), derivative=True) for at in t])
+
+
+@dataclass(frozen=True)
+class Differentiation:
+    """One graphical differentiation by the method of chords: from the curve y(t) to its rate.
+
+    Attributes
+    ----------
+    t, y : array
+        The points of the curve differentiated (times [s], ordinates).
+    middles, rates : array
+        The chords: each interval's middle [s] and the chord's slope (the
+        mean rate over the interval), where the rate curve's points are plotted.
+    pole : float
+        H [mm]: the pole's distance to the left of the rate diagram's origin.
+    scale : float
+        μ of the rate diagram: ``scale_of_y / (μ_t · H)`` [unit/s per mm].
+    """
+
+    t: np.ndarray
+    y: np.ndarray
+    middles: np.ndarray
+    rates: np.ndarray
+    pole: float
+    scale: float
+
+    def intercepts(self) -> np.ndarray:
+        """The ordinate [mm] each ray cuts on the rate diagram's axis: ``rate / μ``."""
+        return self.rates / self.scale
+
+
+def differentiate(t, y, *, period: float | None, pole: float, scale: float) -> Differentiation:
+    """The method of chords on the points (*t*, *y*), drawn with pole distance *pole* [mm] at rate scale *scale*."""
+    middles, rates = chords(t, y, period=period)
+    return Differentiation(np.asarray(t, dtype=float), np.asarray(y, dtype=float), middles, rates, float(pole), float(scale))
+
+
+@dataclass(frozen=True)
+class DiagramScales:
+    """The scales of the s–t, v–t and a–t diagrams.
+
+    Attributes
+    ----------
+    mu_t : float
+        [s/mm], ``T / L``.
+    length : float
+        L [mm], the abscissa of one cycle (or of the time the positions span).
+    mu_s : float
+        [m/mm] (a slider) or [rad/mm] (a rocker).
+    pole_v, pole_a : float
+        H₁, H₂ [mm].
+    mu_v, mu_a : float
+        ``μ_s / (μ_t·H₁)`` [(m/s)/mm or (rad/s)/mm], ``μ_v / (μ_t·H₂)`` [(m/s²)/mm or (rad/s²)/mm].
+    """
+
+    mu_t: float
+    length: float
+    mu_s: float
+    pole_v: float
+    mu_v: float
+    pole_a: float
+    mu_a: float
+
+
+def _span(values) -> float:
+    values = np.asarray(values, dtype=float)
+    values = values[np.isfinite(values)]
+    return float(values.max() - values.min()) if len(values) else 0.0
+
+
+def _pole(rate_span_per_h: float, height: float) -> float:
+    """The longest round pole distance H [mm] that draws the rate diagram at most *height* mm tall."""
+    if rate_span_per_h <= 0:
+        return POLE_DISTANCES[-1]
+    fitting = [h for h in POLE_DISTANCES if h * rate_span_per_h <= height]
+    return fitting[-1] if fitting else POLE_DISTANCES[0]
+
+
+def diagram_scales(duration: float, s, *, length_max: float = ABSCISSA_MAX, height: float = ORDINATE_MAX,
+                   t=None, period: float | None = None) -> DiagramScales:
+    """Round scales for the three diagrams of one output.
+
+    μ_t is the smallest round value (1, 2, 2.5, 5 × 10ⁿ s/mm) that draws
+    *duration* [s] at most *length_max* mm long, and L = duration / μ_t; μ_s
+    the smallest round value that draws s at most *height* mm tall.  H₁ is
+    the longest of :data:`POLE_DISTANCES` with which the v–t points (the
+    chords' rates) stay within *height*; likewise H₂ for the a–t points;
+    μ_v and μ_a follow from them.  *t* (the positions' times) and *period*
+    are needed for the chords (default: equally spaced over *duration*).
+    """
+    s = np.asarray(s, dtype=float)
+    if t is None:
+        t = np.arange(len(s)) * duration / (len(s) if period is not None else len(s) - 1)
+    mu_t = round_up(duration / length_max, TIME_MANTISSAS)
+    length = duration / mu_t
+    span = _span(s)
+    mu_s = round_up(span / height, TIME_MANTISSAS) if span > 0 else 1.0
+    # drawn slopes: Δ(s/μ_s) / Δ(t/μ_t); a ray's intercept is H × that
+    _, v = chords(t, s, period=period)
+    drawn_v = _span(v) * mu_t / mu_s
+    pole_v = _pole(drawn_v, height)
+    mu_v = mu_s / (mu_t * pole_v)
+    m, _ = chords(t, s, period=period)
+    _, a = chords(m, v, period=period)
+    drawn_a = _span(a) * mu_t / mu_v
+    pole_a = _pole(drawn_a, height)
+    mu_a = mu_v / (mu_t * pole_a)
+    return DiagramScales(mu_t, length, mu_s, pole_v, mu_v, pole_a, mu_a)
+
+
+@dataclass(frozen=True)
+class OutputMotion:
+    """What the method of chords is given: the output link's displacement at the project's positions.
+
+    Attributes
+    ----------
+    kind : str
+        ``"slider"`` (s in m, along its guide) or ``"rocker"`` (s the angle in rad, counter-clockwise positive).
+    name : str
+        The prismatic pair's name (a slider) or the link's name (a rocker).
+    numbers : tuple of str
+        The positions' numbers as the course writes them (``"0"``, ``"1"`` …).
+    t : array (n,)
+        Time [s] at which the driver reaches each position, from the first.
+    s : array (n,)
+        Displacement of the output from its place at the first position [m or rad].
+    period : float or None
+        T [s]: the positions close a cycle (the last is followed by the first
+        one period later); None for an open series (a linear driver's stroke).
+    """
+
+    kind: str
+    name: str
+    numbers: tuple
+    t: np.ndarray
+    s: np.ndarray
+    period: float | None
+
+    @property
+    def unit(self) -> str:
+        return "m" if self.kind == "slider" else "rad"
+
+    @property
+    def duration(self) -> float:
+        return float(self.period if self.period is not None else self.t[-1] - self.t[0])
+
+
+@dataclass(frozen=True)
+class KinematicDiagrams:
+    """The output link's s–t, v–t, a–t diagrams by graphical differentiation, and the comparison at every position.
+
+    Attributes
+    ----------
+    motion : OutputMotion
+    scales : DiagramScales
+    velocity : Differentiation
+        Chords of the s–t curve: v at the interval middles.
+    acceleration : Differentiation
+        Chords of the v–t points: a at the middles of the middles.
+    v, a : array (n,)
+        v and a at the positions read off the diagrams (the smooth curve
+        through the chords' points) [m/s, m/s² or rad/s, rad/s²].
+    v_tangents, a_tangents : array (n,)
+        The method of tangents at the positions (a by tangents to the v–t
+        curve of tangents).
+    v_plans, a_plans : array (n,)
+        From the velocity and acceleration plans at each position (NaN where
+        a position has no plans).
+    v_analytic, a_analytic : array (n,)
+        The analytic (complex-number) values at the positions.
+    """
+
+    motion: OutputMotion
+    scales: DiagramScales
+    velocity: Differentiation
+    acceleration: Differentiation
+    v: np.ndarray
+    a: np.ndarray
+    v_tangents: np.ndarray
+    a_tangents: np.ndarray
+    v_plans: np.ndarray
+    a_plans: np.ndarray
+    v_analytic: np.ndarray
+    a_analytic: np.ndarray
+
+    def errors(self) -> dict[str, np.ndarray]:
+        """Errors against the analytic values, in % of the largest analytic |v| (|a|) over the positions.
+
+        Keys ``v_diagram``, ``v_plans``, ``a_diagram``, ``a_plans`` (and
+        ``v_tangents``, ``a_tangents``).  A per-cent of the value itself
+        would be infinite where v passes through zero (an extreme position).
+        """
+        return {
+            "v_diagram": relative_errors(self.v, self.v_analytic),
+            "v_plans": relative_errors(self.v_plans, self.v_analytic),
+            "v_tangents": relative_errors(self.v_tangents, self.v_analytic),
+            "a_diagram": relative_errors(self.a, self.a_analytic),
+            "a_plans": relative_errors(self.a_plans, self.a_analytic),
+            "a_tangents": relative_errors(self.a_tangents, self.a_analytic),
+        }
+
+    def rows(self) -> list[dict]:
+        """One dict per position: number, t [s], s, v and a from the diagrams, the plans and analytic, errors [%]."""
+        errors = self.errors()
+        out = []
+        for k, number in enumerate(self.motion.numbers):
+            out.append({
+                "position": number, "t": float(self.motion.t[k]), "s": float(self.motion.s[k]),
+                "v_diagram": float(self.v[k]), "v_plans": float(self.v_plans[k]), "v_analytic": float(self.v_analytic[k]),
+                "a_diagram": float(self.a[k]), "a_plans": float(self.a_plans[k]), "a_analytic": float(self.a_analytic[k]),
+                **{f"error_{key}": float(value[k]) for key, value in errors.items()},
+            })
+        return out
+
+
+def relative_errors(values, reference) -> np.ndarray:
+    """``100 · (values − reference) / max|reference|`` [%] (NaN where either is missing)."""
+    values, reference = np.asarray(values, dtype=float), np.asarray(reference, dtype=float)
+    finite = reference[np.isfinite(reference)]
+    largest = float(np.max(np.abs(finite))) if len(finite) else 0.0
+    if largest == 0.0:
+        return np.full(len(values), np.nan)
+    return 100.0 * (values - reference) / largest
+
+
+def kinematic_diagrams_of(motion: OutputMotion, *, v_plans=None, a_plans=None, v_analytic=None, a_analytic=None,
+                          scales: DiagramScales | None = None) -> KinematicDiagrams:
+    """Differentiate the output's s(t) graphically and set the result beside the other methods' values.
+
+    Only ``motion.t`` and ``motion.s`` enter the differentiation; the plans'
+    and analytic values (arrays over the positions, NaN where missing) are
+    carried for the comparison.
+    """
+    t, s, period = motion.t, motion.s, motion.period
+    if len(t) < 3:
+        from .errors import PlansError
+
+        raise PlansError(f"kinematic diagrams: graphical differentiation needs at least 3 positions, got {len(t)}")
+    if scales is None:
+        scales = diagram_scales(motion.duration, s, t=t, period=period)
+    velocity = differentiate(t, s, period=period, pole=scales.pole_v, scale=scales.mu_v)
+    acceleration = differentiate(velocity.middles, velocity.rates, period=period, pole=scales.pole_a, scale=scales.mu_a)
+    v = smooth(velocity.middles, velocity.rates, t, period=period)
+    a = smooth(acceleration.middles, acceleration.rates, t, period=period)
+    v_tan = tangents(t, s, period=period)
+    a_tan = tangents(t, v_tan, period=period)
+    n = len(t)
+    nan = np.full(n, np.nan)
+
+    def array(x):
+        return nan.copy() if x is None else np.asarray(x, dtype=float)
+
+    return KinematicDiagrams(motion, scales, velocity, acceleration, v, a, v_tan, a_tan,
+                             array(v_plans), array(a_plans), array(v_analytic), array(a_analytic))
+
+
+# --- from a run of positions -------------------------------------------------------------
+
+
+def output_link(scene, structure) -> tuple[str, str]:
+    """The output link as ``(kind, name)``: the last group's slider on a frame guide (``"slider"``, the
+    prismatic pair's name), else the last group's link pivoted to the frame (``"rocker"``, the link's name).
+
+    Raises
+    ------
+    PlansError
+        When the last group has neither (name the output another way).
+    """
+    from .errors import PlansError
+    from .scene import FRAME
+
+    for group in reversed(structure.groups):
+        for joint in (group.outer_i, group.inner, group.outer_j):
+            if joint.kind == "P" and FRAME in joint.bodies and joint.prismatic is not None and joint.prismatic.guide == FRAME:
+                return "slider", joint.prismatic.name
+        for joint in (group.outer_i, group.outer_j):
+            if joint.kind == "R" and joint.bodies[1] == FRAME:
+                return "rocker", joint.bodies[0]
+        break
+    raise PlansError(f"{scene.source}: kinematic diagrams: the last group has no slider on a frame guide and no link pivoted to the frame")
+
+
+def _output_values(kind: str, name: str, analytic, k: int = 0) -> tuple[float, float, float]:
+    """(s, v, a) of the output in an analytic solution at index *k*."""
+    if kind == "slider":
+        m = analytic.sliders[name]
+        return float(m.s[k]), float(m.v_rel[k]), float(m.a_rel[k])
+    m = analytic.links[name]
+    return float(m.phi[k]), float(m.omega[k]), float(m.epsilon[k])
+
+
+def _times(scene, positions) -> tuple[np.ndarray, float | None]:
+    """Time [s] at each position from the first under a constant driver speed, and the cycle's period (a crank)."""
+    from .scene import Crank
+
+    driver = scene.driver
+    positions = np.asarray(positions, dtype=float)
+    if isinstance(driver, Crank):
+        speed = abs(driver.omega)
+        return np.abs(positions - positions[0]) / speed, 2 * math.pi / speed
+    return np.abs(positions - positions[0]) / abs(driver.velocity), None
+
+
+def kinematic_diagrams(run) -> KinematicDiagrams:
+    """The output link's kinematic diagrams over a :class:`plans.positions.PositionsRun`.
+
+    The positions of a crank must cover its turn equally (``positions=12``);
+    every position must be solved (the chords join neighbouring positions).
+    """
+    from .errors import PlansError
+
+    scene = run.scene
+    unsolved = [r.index for r in run.runs if not r.ok]
+    if unsolved:
+        raise PlansError(f"{scene.source}: kinematic diagrams: positions {', '.join(map(str, unsolved))} are not solved; "
+                         "graphical differentiation joins neighbouring positions and needs every one")
+    kind, name = output_link(scene, run.structure)
+    t, period = _times(scene, run.positions)
+    values = np.array([_output_values(kind, name, r.analytic) for r in run.runs])
+    s = values[:, 0] - values[0, 0]
+    if kind == "rocker":
+        s = np.unwrap(values[:, 0]) - values[0, 0]
+    plans_v, plans_a = [], []
+    for r in run.runs:
+        g = r.graphical
+        if kind == "slider":
+            plans_v.append(g.sliders[name]["v_rel"])
+            plans_a.append(g.sliders[name]["a_rel"] if g.acceleration_plan is not None else math.nan)
+        else:
+            plans_v.append(g.links[name]["omega"])
+            plans_a.append(g.links[name]["epsilon"] if g.acceleration_plan is not None else math.nan)
+    motion = OutputMotion(kind, name, tuple(str(r.index) for r in run.runs), t, s, period)
+    return kinematic_diagrams_of(motion, v_plans=plans_v, a_plans=plans_a, v_analytic=values[:, 1], a_analytic=values[:, 2])
