@@ -52,7 +52,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .graphical.scales import round_up
 
 __all__ = [
     "chords",
@@ -70,16 +69,32 @@ __all__ = [
     "ORDINATE_MAX",
     "TIME_MANTISSAS",
     "relative_errors",
+    "round_up",
+    "abscissa_length",
+    "output_link",
+    "kinematic_diagrams",
+    "rescaled",
 ]
 
 #: Pole distances H [mm] a plate uses: round, short enough to leave the abscissa its room.
-POLE_DISTANCES = (10.0, 12.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0)
+POLE_DISTANCES = (10.0, 12.0, 15.0, 20.0, 25.0, 30.0)
 #: The longest abscissa L [mm] of one cycle on an A4 page (the poles and the ordinate's labels take the rest).
-ABSCISSA_MAX = 130.0
+ABSCISSA_MAX = 125.0
 #: The tallest a diagram's ordinate range may be drawn [mm].
-ORDINATE_MAX = 48.0
+ORDINATE_MAX = 40.0
 #: Round mantissas of μ_t and μ_s (textbooks' 1, 2, 2.5, 5 × 10ⁿ).
 TIME_MANTISSAS = (1, 2, 2.5, 5)
+
+
+def round_up(need: float, mantissas=TIME_MANTISSAS) -> float:
+    """The smallest m·10ⁿ (m in *mantissas*) not below *need* (as the nearest float to that decimal)."""
+    n = math.floor(math.log10(need)) - 1
+    while True:
+        for m in mantissas:
+            value = float(f"{m}e{n}")
+            if value >= need * (1 - 1e-12):
+                return value
+        n += 1
 
 
 def _extended(t: np.ndarray, y: np.ndarray, period: float | None) -> tuple[np.ndarray, np.ndarray]:
@@ -240,13 +255,23 @@ def _pole(rate_span_per_h: float, height: float) -> float:
     return fitting[-1] if fitting else POLE_DISTANCES[0]
 
 
+def abscissa_length(intervals: int, length_max: float = ABSCISSA_MAX) -> float:
+    """L [mm]: the longest whole number of millimetres a interval, times *intervals*, within *length_max*
+    (12 intervals: 120 mm, 10 mm each), so that the positions fall on whole millimetres."""
+    if intervals < 1:
+        return float(length_max)
+    per = math.floor(length_max / intervals)
+    return float(per * intervals) if per >= 1 else float(length_max)
+
+
 def diagram_scales(duration: float, s, *, length_max: float = ABSCISSA_MAX, height: float = ORDINATE_MAX,
                    t=None, period: float | None = None) -> DiagramScales:
     """Round scales for the three diagrams of one output.
 
-    μ_t is the smallest round value (1, 2, 2.5, 5 × 10ⁿ s/mm) that draws
-    *duration* [s] at most *length_max* mm long, and L = duration / μ_t; μ_s
-    the smallest round value that draws s at most *height* mm tall.  H₁ is
+    L is a whole number of millimetres per interval between positions, at
+    most *length_max* (:func:`abscissa_length`), and μ_t = duration / L (as
+    the course writes μ_t = T / L); μ_s is the smallest round value (1, 2,
+    2.5, 5 × 10ⁿ) that draws s at most *height* mm tall.  H₁ is
     the longest of :data:`POLE_DISTANCES` with which the v–t points (the
     chords' rates) stay within *height*; likewise H₂ for the a–t points;
     μ_v and μ_a follow from them.  *t* (the positions' times) and *period*
@@ -255,8 +280,8 @@ def diagram_scales(duration: float, s, *, length_max: float = ABSCISSA_MAX, heig
     s = np.asarray(s, dtype=float)
     if t is None:
         t = np.arange(len(s)) * duration / (len(s) if period is not None else len(s) - 1)
-    mu_t = round_up(duration / length_max, TIME_MANTISSAS)
-    length = duration / mu_t
+    length = abscissa_length(len(s) if period is not None else len(s) - 1, length_max)
+    mu_t = duration / length
     span = _span(s)
     mu_s = round_up(span / height, TIME_MANTISSAS) if span > 0 else 1.0
     # drawn slopes: Δ(s/μ_s) / Δ(t/μ_t); a ray's intercept is H × that
@@ -332,6 +357,10 @@ class KinematicDiagrams:
         a position has no plans).
     v_analytic, a_analytic : array (n,)
         The analytic (complex-number) values at the positions.
+    reference : tuple of arrays or None
+        ``(t, s, v, a)`` of the analytic solution over the cycle, densely, to
+        draw beside the constructed curves for comparison (NaN where the
+        mechanism is not assembled); never used by the construction.
     """
 
     motion: OutputMotion
@@ -346,6 +375,7 @@ class KinematicDiagrams:
     a_plans: np.ndarray
     v_analytic: np.ndarray
     a_analytic: np.ndarray
+    reference: tuple | None = None
 
     def errors(self) -> dict[str, np.ndarray]:
         """Errors against the analytic values, in % of the largest analytic |v| (|a|) over the positions.
@@ -388,7 +418,7 @@ def relative_errors(values, reference) -> np.ndarray:
 
 
 def kinematic_diagrams_of(motion: OutputMotion, *, v_plans=None, a_plans=None, v_analytic=None, a_analytic=None,
-                          scales: DiagramScales | None = None) -> KinematicDiagrams:
+                          scales: DiagramScales | None = None, reference: tuple | None = None) -> KinematicDiagrams:
     """Differentiate the output's s(t) graphically and set the result beside the other methods' values.
 
     Only ``motion.t`` and ``motion.s`` enter the differentiation; the plans'
@@ -415,7 +445,7 @@ def kinematic_diagrams_of(motion: OutputMotion, *, v_plans=None, a_plans=None, v
         return nan.copy() if x is None else np.asarray(x, dtype=float)
 
     return KinematicDiagrams(motion, scales, velocity, acceleration, v, a, v_tan, a_tan,
-                             array(v_plans), array(a_plans), array(v_analytic), array(a_analytic))
+                             array(v_plans), array(a_plans), array(v_analytic), array(a_analytic), reference)
 
 
 # --- from a run of positions -------------------------------------------------------------
@@ -494,4 +524,40 @@ def kinematic_diagrams(run) -> KinematicDiagrams:
             plans_v.append(g.links[name]["omega"])
             plans_a.append(g.links[name]["epsilon"] if g.acceleration_plan is not None else math.nan)
     motion = OutputMotion(kind, name, tuple(str(r.index) for r in run.runs), t, s, period)
-    return kinematic_diagrams_of(motion, v_plans=plans_v, a_plans=plans_a, v_analytic=values[:, 1], a_analytic=values[:, 2])
+    return kinematic_diagrams_of(motion, v_plans=plans_v, a_plans=plans_a, v_analytic=values[:, 1], a_analytic=values[:, 2],
+                                 reference=_reference(run, kind, name, values[0, 0]))
+
+
+def _reference(run, kind: str, name: str, start: float) -> tuple | None:
+    """``(t, s, v, a)`` of the run's dense analytic sweep over the cycle, s from *start* (the first position's)."""
+    cycle = run.cycle
+    if cycle is None or len(cycle) < 2:
+        return None
+    t, _ = _times(run.scene, np.concatenate([[run.positions[0]], np.asarray(cycle.driver, dtype=float)]))
+    t = t[1:]
+    valid = np.asarray(cycle.valid, dtype=bool)
+    if kind == "slider":
+        m = cycle.sliders[name]
+        s, v, a = np.array(m.s, dtype=float), np.array(m.v_rel, dtype=float), np.array(m.a_rel, dtype=float)
+        s = s - start
+    else:
+        m = cycle.links[name]
+        phi = np.array(m.phi, dtype=float)
+        phi[valid] = np.unwrap(phi[valid])
+        s = phi - start
+        s -= 2 * math.pi * round(float(s[valid][0]) / (2 * math.pi))  # the turn the first position is on
+        v, a = np.array(m.omega, dtype=float), np.array(m.epsilon, dtype=float)
+    for x in (s, v, a):
+        x[~valid] = np.nan
+    return t, s, v, a
+
+
+def rescaled(diagrams: KinematicDiagrams, height: float) -> KinematicDiagrams:
+    """The same diagrams at the scales that draw each at most *height* mm tall (the construction's numbers unchanged)."""
+    from dataclasses import replace
+
+    motion = diagrams.motion
+    scales = diagram_scales(motion.duration, motion.s, t=motion.t, period=motion.period, height=height)
+    velocity = replace(diagrams.velocity, pole=scales.pole_v, scale=scales.mu_v)
+    acceleration = replace(diagrams.acceleration, pole=scales.pole_a, scale=scales.mu_a)
+    return replace(diagrams, scales=scales, velocity=velocity, acceleration=acceleration)

@@ -395,6 +395,123 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "odčitki",
     },
     "segment": {"en": "segment", "sr": "дуж", "ru": "отрезок", "bg": "отсечка", "sl": "daljica"},
+    # --- kinematic diagrams ---
+    "kinematic_diagrams": {
+        "en": "Kinematic diagrams of the output link",
+        "sr": "Кинематски дијаграми излазног члана",
+        "ru": "Кинематические диаграммы выходного звена",
+        "bg": "Кинематични диаграми на изходното звено",
+        "sl": "Kinematični diagrami izhodnega člena",
+    },
+    "graphical_differentiation": {
+        "en": "graphical differentiation by the method of chords",
+        "sr": "графичко диференцирање методом тетива",
+        "ru": "графическое дифференцирование методом хорд",
+        "bg": "графично диференциране по метода на хордите",
+        "sl": "grafično odvajanje z metodo tetiv",
+    },
+    "output_slider": {
+        "en": "output link: slider",
+        "sr": "излазни члан: клизач",
+        "ru": "выходное звено: ползун",
+        "bg": "изходно звено: плъзгач",
+        "sl": "izhodni člen: drsnik",
+    },
+    "output_rocker": {
+        "en": "output link: rocker",
+        "sr": "излазни члан: клацкач",
+        "ru": "выходное звено: коромысло",
+        "bg": "изходно звено: кобилица",
+        "sl": "izhodni člen: nihalka",
+    },
+    "displacement": {"en": "displacement", "sr": "померање", "ru": "перемещение", "bg": "преместване", "sl": "pomik"},
+    "pole_distance": {
+        "en": "pole distance",
+        "sr": "полно растојање",
+        "ru": "полюсное расстояние",
+        "bg": "полюсно разстояние",
+        "sl": "polna razdalja",
+    },
+    "time": {"en": "time", "sr": "време", "ru": "время", "bg": "време", "sl": "čas"},
+    "cycle_time": {
+        "en": "time of one cycle",
+        "sr": "време једног циклуса",
+        "ru": "время одного цикла",
+        "bg": "време на един цикъл",
+        "sl": "čas enega cikla",
+    },
+    "abscissa_length": {
+        "en": "length of the abscissa",
+        "sr": "дужина апсцисе",
+        "ru": "длина оси абсцисс",
+        "bg": "дължина на абсцисата",
+        "sl": "dolžina abscise",
+    },
+    "chord": {"en": "chord", "sr": "тетива", "ru": "хорда", "bg": "хорда", "sl": "tetiva"},
+    "ray": {
+        "en": "ray from the pole, parallel to the chord",
+        "sr": "зрак из пола, паралелан тетиви",
+        "ru": "луч из полюса, параллельный хорде",
+        "bg": "лъч от полюса, успореден на хордата",
+        "sl": "žarek iz pola, vzporeden s tetivo",
+    },
+    "chord_point": {
+        "en": "mean value over an interval, at its middle",
+        "sr": "средња вредност на интервалу, у његовој средини",
+        "ru": "среднее значение на интервале, в его середине",
+        "bg": "средна стойност в интервала, в средата му",
+        "sl": "srednja vrednost na intervalu, v njegovi sredini",
+    },
+    "chords_curve": {
+        "en": "curve through the points",
+        "sr": "крива кроз тачке",
+        "ru": "кривая через точки",
+        "bg": "крива през точките",
+        "sl": "krivulja skozi točke",
+    },
+    "analytic_curve": {
+        "en": "analytic, for comparison",
+        "sr": "аналитички, за поређење",
+        "ru": "аналитически, для сравнения",
+        "bg": "аналитично, за сравнение",
+        "sl": "analitično, za primerjavo",
+    },
+    "diagrams_table": {
+        "en": "The output link at every position: from the diagrams, from the plans and analytic",
+        "sr": "Излазни члан у сваком положају: из дијаграма, из планова и аналитички",
+        "ru": "Выходное звено во всех положениях: по диаграммам, по планам и аналитически",
+        "bg": "Изходното звено във всяко положение: от диаграмите, от плановете и аналитично",
+        "sl": "Izhodni člen v vsaki legi: iz diagramov, iz načrtov in analitično",
+    },
+    "from_diagram": {"en": "diagr.", "sr": "дијагр.", "ru": "диагр.", "bg": "диагр.", "sl": "diagr."},
+    "from_plans": {"en": "plan", "sr": "план", "ru": "план", "bg": "план", "sl": "načrt"},
+    "from_analytic": {"en": "analyt.", "sr": "аналит.", "ru": "аналит.", "bg": "аналит.", "sl": "analit."},
+    "diagram_error_note": {
+        "en": "δ: error against the analytic value, in % of its largest magnitude over the positions "
+              "(a per cent of the value itself is infinite where it passes through zero)",
+        "sr": "δ: грешка према аналитичкој вредности, у % њене највеће апсолутне вредности у положајима "
+              "(у % саме вредности била би бесконачна где она пролази кроз нулу)",
+        "ru": "δ: погрешность относительно аналитического значения, в % от его наибольшей величины по положениям "
+              "(в % от самого значения она бесконечна там, где оно проходит через нуль)",
+        "bg": "δ: грешка спрямо аналитичната стойност, в % от най-голямата ѝ големина в положенията "
+              "(в % от самата стойност тя е безкрайна там, където стойността минава през нула)",
+        "sl": "δ: napaka glede na analitično vrednost, v % njene največje absolutne vrednosti v legah "
+              "(v % same vrednosti bi bila neskončna, kjer vrednost gre skozi nič)",
+    },
+    "method_of_tangents": {
+        "en": "method of tangents",
+        "sr": "метода тангенти",
+        "ru": "метод касательных",
+        "bg": "метод на допирателните",
+        "sl": "metoda tangent",
+    },
+    "chords_order": {
+        "en": "the error of the chords falls as Δt²: with twice the positions, to about a quarter",
+        "sr": "грешка метода тетива опада као Δt²: са двоструко више положаја на око четвртину",
+        "ru": "погрешность метода хорд убывает как Δt²: при вдвое большем числе положений примерно вчетверо",
+        "bg": "грешката на метода на хордите намалява като Δt²: при двойно повече положения до около една четвърт",
+        "sl": "napaka metode tetiv pada kot Δt²: pri dvakrat več legah na približno četrtino",
+    },
 }
 
 
