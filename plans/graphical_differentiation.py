@@ -71,7 +71,6 @@ __all__ = [
     "relative_errors",
     "round_up",
     "abscissa_length",
-    "output_link",
     "kinematic_diagrams",
     "rescaled",
 ]
@@ -361,6 +360,14 @@ class KinematicDiagrams:
         ``(t, s, v, a)`` of the analytic solution over the cycle, densely, to
         draw beside the constructed curves for comparison (NaN where the
         mechanism is not assembled); never used by the construction.
+    law : plans.motion.DriverLaw or None
+        The driver's law over the cycle the times follow.
+    plan_scales : dict or None
+        ``{"k_l", "k_v", "k_a"}`` of the plans the "plans" column is read from.
+    precision : float or None
+        Their drafting precision [mm].
+    driver : str or None
+        The driver link's name (for the law's symbols: ω₂).
     """
 
     motion: OutputMotion
@@ -376,6 +383,10 @@ class KinematicDiagrams:
     v_analytic: np.ndarray
     a_analytic: np.ndarray
     reference: tuple | None = None
+    law: object = None
+    plan_scales: dict | None = None
+    precision: float | None = None
+    driver: str | None = None
 
     def errors(self) -> dict[str, np.ndarray]:
         """Errors against the analytic values, in % of the largest analytic |v| (|a|) over the positions.
@@ -448,108 +459,142 @@ def kinematic_diagrams_of(motion: OutputMotion, *, v_plans=None, a_plans=None, v
                              array(v_plans), array(a_plans), array(v_analytic), array(a_analytic), reference)
 
 
-# --- from a run of positions -------------------------------------------------------------
+# --- from a scene: the project's positions under the driver's law ------------------------
 
 
-def output_link(scene, structure) -> tuple[str, str]:
-    """The output link as ``(kind, name)``: the last group's slider on a frame guide (``"slider"``, the
-    prismatic pair's name), else the last group's link pivoted to the frame (``"rocker"``, the link's name).
+def _hints(scene, analytic, k: int) -> dict:
+    """The scene's assembly hints moved to where the analytic solution puts the hinted points at row *k*
+    (so that each position's construction follows the branch of the cycle, a swing's way back included)."""
+    hints = {}
+    for name, hint in scene.assembly.items():
+        if isinstance(hint, (complex, float)) and name in analytic.points:
+            z = complex(analytic.points[name].r[k])
+            hints[name] = z if math.isfinite(z.real) and math.isfinite(z.imag) else hint
+        else:
+            hints[name] = hint
+    return hints
+
+
+def _output_columns(output, solution) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(s, v, a) of the output over an analytic solution: travel, v_rel, a_rel [m, m/s, m/s²] or angle
+    (unwrapped along the rows), ω, ε [rad, rad/s, rad/s²]."""
+    values = np.array(output.values(solution), dtype=float)
+    rates = np.array(output.rates(solution), dtype=float)
+    if output.kind == "slider":
+        accelerations = np.array(solution.sliders[output.pair].a_rel, dtype=float)
+    else:
+        accelerations = np.array(solution.links[output.link].epsilon, dtype=float)
+    valid = np.asarray(solution.valid, dtype=bool)
+    for column in (values, rates, accelerations):
+        column[~valid] = np.nan
+    return values, rates, accelerations
+
+
+def _plans_values(output, graphical) -> tuple[float, float]:
+    """v and a of the output read off one position's velocity and acceleration plans."""
+    if output.kind == "slider":
+        reading = graphical.sliders[output.pair]
+        v, a = reading["v_rel"], reading.get("a_rel", math.nan)
+    else:
+        reading = graphical.links[output.link]
+        v, a = reading["omega"], reading.get("epsilon", math.nan)
+    return float(v), float(a) if graphical.acceleration_plan is not None else math.nan
+
+
+#: Positions of the dense analytic sweep drawn beside the constructed curves.
+REFERENCE_STEPS = 360
+
+
+def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, precision: float | None = None,
+                       k_v: float | None = None, k_a: float | None = None, height: float = ORDINATE_MAX) -> KinematicDiagrams:
+    """The output link's kinematic diagrams by graphical differentiation, and the comparison at every position.
+
+    Parameters
+    ----------
+    scene : Scene
+    positions : int
+        The project's positions over one cycle (8, 12, 24 …), numbered from
+        the extreme position of the output link that starts its working
+        stroke, in the sense of the driver's motion (:func:`plans.motion.driver_cycle`).
+    law : str, optional
+        The driver's law over the cycle (``"constant"``, ``"uniform"``,
+        ``"harmonic"``); None: the scene's ``[driver] law`` or the default.
+    precision : float, optional
+        Drafting precision [mm] of the plans' readings (default: the
+        scene's ``[scales] precision``, else 0.1 mm as on a handout; 0: exact).
+    k_v, k_a : float, optional
+        The plans' scale factors, one for every position (default: the round
+        factors that fit the largest of them, as on a plate).
+    height : float
+        The tallest a diagram is drawn [mm] (sets μ_s, H₁, H₂).
+
+    Returns
+    -------
+    KinematicDiagrams
+        s [m or rad], v [m/s or rad/s], a [m/s² or rad/s²] of the output (a
+        slider along its guide, a rocker's angle counter-clockwise), t [s].
 
     Raises
     ------
     PlansError
-        When the last group has neither (name the output another way).
+        No output slider or rocker (name one with ``[output] link``), fewer
+        than 3 positions, or a position where the mechanism is not solved
+        (graphical differentiation joins neighbouring positions).
+
+    Only the s values at the positions enter the differentiation; the plans
+    (:func:`plans.graphical.construct` at each position, the driver's ω and
+    ε there under the law) and the analytic solution are its comparison.
+    A crank turning at constant speed or a rocker input's swing is a
+    repeating cycle (the chord from the last position to the first one a
+    period later closes it); a uniformly accelerated crank's turn and a
+    linear driver's stroke are not: their positions are an open series (the
+    crank's with position 0 again at the end of the turn).
     """
+    from dataclasses import replace
+
     from .errors import PlansError
-    from .scene import FRAME
+    from .graphical import construct
+    from .motion import driver_cycle, output_link
+    from .positions import common_scales, page_precision
+    from .structure import find_structure
 
-    for group in reversed(structure.groups):
-        for joint in (group.outer_i, group.inner, group.outer_j):
-            if joint.kind == "P" and FRAME in joint.bodies and joint.prismatic is not None and joint.prismatic.guide == FRAME:
-                return "slider", joint.prismatic.name
-        for joint in (group.outer_i, group.outer_j):
-            if joint.kind == "R" and joint.bodies[1] == FRAME:
-                return "rocker", joint.bodies[0]
-        break
-    raise PlansError(f"{scene.source}: kinematic diagrams: the last group has no slider on a frame guide and no link pivoted to the frame")
-
-
-def _output_values(kind: str, name: str, analytic, k: int = 0) -> tuple[float, float, float]:
-    """(s, v, a) of the output in an analytic solution at index *k*."""
-    if kind == "slider":
-        m = analytic.sliders[name]
-        return float(m.s[k]), float(m.v_rel[k]), float(m.a_rel[k])
-    m = analytic.links[name]
-    return float(m.phi[k]), float(m.omega[k]), float(m.epsilon[k])
-
-
-def _times(scene, positions) -> tuple[np.ndarray, float | None]:
-    """Time [s] at each position from the first under a constant driver speed, and the cycle's period (a crank)."""
-    from .scene import Crank
-
-    driver = scene.driver
-    positions = np.asarray(positions, dtype=float)
-    if isinstance(driver, Crank):
-        speed = abs(driver.omega)
-        return np.abs(positions - positions[0]) / speed, 2 * math.pi / speed
-    return np.abs(positions - positions[0]) / abs(driver.velocity), None
-
-
-def kinematic_diagrams(run) -> KinematicDiagrams:
-    """The output link's kinematic diagrams over a :class:`plans.positions.PositionsRun`.
-
-    The positions of a crank must cover its turn equally (``positions=12``);
-    every position must be solved (the chords join neighbouring positions).
-    """
-    from .errors import PlansError
-
-    scene = run.scene
-    unsolved = [r.index for r in run.runs if not r.ok]
+    if positions < 3:
+        raise PlansError(f"{scene.source}: kinematic diagrams: graphical differentiation needs at least 3 positions, got {positions}")
+    structure = find_structure(scene)
+    output = output_link(scene, structure)
+    if output is None:
+        raise PlansError(f"{scene.source}: kinematic diagrams: the mechanism has no output slider (on a frame guide) or rocker "
+                         "(turning about a frame point); name one with [output] link = \"…\"")
+    first = driver_cycle(scene, positions, law=law, structure=structure)
+    repeating = first.law.crank and first.law.kind in ("constant", "harmonic")
+    cycle = first if repeating or not first.law.crank else driver_cycle(scene, positions, law=law, structure=structure, closed=True)
+    analytic = cycle.solve(structure)
+    unsolved = [k for k in range(len(cycle)) if not bool(analytic.valid[k])]
     if unsolved:
-        raise PlansError(f"{scene.source}: kinematic diagrams: positions {', '.join(map(str, unsolved))} are not solved; "
+        raise PlansError(f"{scene.source}: kinematic diagrams: the mechanism is not solved at positions {', '.join(map(str, unsolved))}; "
                          "graphical differentiation joins neighbouring positions and needs every one")
-    kind, name = output_link(scene, run.structure)
-    t, period = _times(scene, run.positions)
-    values = np.array([_output_values(kind, name, r.analytic) for r in run.runs])
-    s = values[:, 0] - values[0, 0]
-    if kind == "rocker":
-        s = np.unwrap(values[:, 0]) - values[0, 0]
-    plans_v, plans_a = [], []
-    for r in run.runs:
-        g = r.graphical
-        if kind == "slider":
-            plans_v.append(g.sliders[name]["v_rel"])
-            plans_a.append(g.sliders[name]["a_rel"] if g.acceleration_plan is not None else math.nan)
-        else:
-            plans_v.append(g.links[name]["omega"])
-            plans_a.append(g.links[name]["epsilon"] if g.acceleration_plan is not None else math.nan)
-    motion = OutputMotion(kind, name, tuple(str(r.index) for r in run.runs), t, s, period)
-    return kinematic_diagrams_of(motion, v_plans=plans_v, a_plans=plans_a, v_analytic=values[:, 1], a_analytic=values[:, 2],
-                                 reference=_reference(run, kind, name, values[0, 0]))
-
-
-def _reference(run, kind: str, name: str, start: float) -> tuple | None:
-    """``(t, s, v, a)`` of the run's dense analytic sweep over the cycle, s from *start* (the first position's)."""
-    cycle = run.cycle
-    if cycle is None or len(cycle) < 2:
-        return None
-    t, _ = _times(run.scene, np.concatenate([[run.positions[0]], np.asarray(cycle.driver, dtype=float)]))
-    t = t[1:]
-    valid = np.asarray(cycle.valid, dtype=bool)
-    if kind == "slider":
-        m = cycle.sliders[name]
-        s, v, a = np.array(m.s, dtype=float), np.array(m.v_rel, dtype=float), np.array(m.a_rel, dtype=float)
-        s = s - start
-    else:
-        m = cycle.links[name]
-        phi = np.array(m.phi, dtype=float)
-        phi[valid] = np.unwrap(phi[valid])
-        s = phi - start
-        s -= 2 * math.pi * round(float(s[valid][0]) / (2 * math.pi))  # the turn the first position is on
-        v, a = np.array(m.omega, dtype=float), np.array(m.epsilon, dtype=float)
-    for x in (s, v, a):
-        x[~valid] = np.nan
-    return t, s, v, a
+    values, rates, accelerations = _output_columns(output, analytic)
+    s = values - values[0]
+    t = np.asarray(cycle.t, dtype=float)
+    period = float(cycle.period) if repeating else None
+    numbers = tuple(str(k % positions) if cycle.law.crank else str(k) for k in range(len(cycle)))
+    # the plans at every position, at one scale of each kind
+    precision = page_precision(precision, scene)
+    scenes = [replace(cycle.scene_at(k), assembly=_hints(scene, analytic, k)) for k in range(len(cycle))]
+    scenes = [replace(x, scales=replace(x.scales, precision=precision)) for x in scenes]
+    first_pass = [construct(x, structure, k_v=k_v, k_a=k_a, precision=precision, check_scales=False) for x in scenes]
+    scales = common_scales(first_pass, given={"k_v": k_v, "k_a": k_a})
+    graphicals = [construct(x, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision, check_scales=False)
+                  for x in scenes]
+    plans_v, plans_a = zip(*(_plans_values(output, g) for g in graphicals))
+    motion = OutputMotion(output.kind, output.pair if output.kind == "slider" else output.link, numbers, t, s, period)
+    dense = driver_cycle(scene, REFERENCE_STEPS, law=law, structure=structure, closed=True)
+    rs, rv, ra = _output_columns(output, dense.solve(structure))
+    reference = (np.asarray(dense.t, dtype=float), rs - values[0], rv, ra)
+    scales_d = diagram_scales(motion.duration, s, t=t, period=period, height=height)
+    result = kinematic_diagrams_of(motion, v_plans=plans_v, a_plans=plans_a, v_analytic=rates, a_analytic=accelerations,
+                                   scales=scales_d, reference=reference)
+    return replace(result, law=cycle.law, plan_scales=dict(scales), precision=precision, driver=scene.driver.link)
 
 
 def rescaled(diagrams: KinematicDiagrams, height: float) -> KinematicDiagrams:

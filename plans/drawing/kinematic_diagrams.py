@@ -290,6 +290,15 @@ def diagrams_table(d: KinematicDiagrams, lang: str = "en") -> list[list[str]]:
         symbol = words[key]
         head += [f"{symbol} {diagram}", f"{symbol} {plans}", f"{symbol} {analytic}", f"δ {diagram}", f"δ {plans}"]
     rows = [head]
+
+    def clean(values):  # round-off of a zero (6·10⁻¹⁶ where v passes through 0 at an extreme) printed as 0
+        values = np.array(values, dtype=float)
+        finite = values[np.isfinite(values)]
+        largest = float(np.max(np.abs(finite))) if len(finite) else 0.0
+        values[np.abs(values) < 1e-9 * largest] = 0.0
+        return values
+
+    d = type(d)(**{**d.__dict__, **{k: clean(getattr(d, k)) for k in ("v", "a", "v_plans", "a_plans", "v_analytic", "a_analytic")}})
     for k, number in enumerate(d.motion.numbers):
         row = [str(number), _num(float(d.motion.t[k]), lang, 3), _num(float(d.motion.s[k]), lang, 4)]
         for key, ours, theirs, exact in (("v", d.v, d.v_plans, d.v_analytic), ("a", d.a, d.a_plans, d.a_analytic)):
@@ -382,12 +391,26 @@ def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
     words = diagram_words(d, lang)
     count = len(d.motion.t)
     duration = d.motion.duration
+    width = A4[0] - 2 * PAGE_MARGIN
     return [
         "§" + f"{term('kinematic_diagrams', lang)}: {term('graphical_differentiation', lang)}",
-        f"{words['output']};  {term('positions', lang)}: {count}",
+        *_wrap(f"{words['output']};  {term('positions', lang)}: {count}" + (f";  {d.law.describe(lang, d.driver)}" if d.law is not None else ""), width),
         f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}),  L = {_scale_text(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
         f"$\\mu_{{t}}$ = T/L = {_num(sc.mu_t, lang, 4)} s/mm",
     ]
+
+
+def _wrap(text: str, width: float, size: float = 8.0) -> list[str]:
+    """*text* broken at spaces into lines at most *width* [mm] wide at *size* pt (a word longer than that alone)."""
+    lines, line = [], ""
+    for word in text.split(" "):
+        trial = f"{line} {word}" if line else word
+        if line and measure(trial, size)[0] > width:
+            lines.append(line.rstrip())
+            line = "   " + word
+        else:
+            line = trial
+    return lines + ([line] if line else [])
 
 
 def draw_kinematic_pages(d: KinematicDiagrams, *, title: str, lang: str = "en", footer_text: str = "", extra_lines=()) -> list:
