@@ -404,6 +404,28 @@ class KinematicDiagrams:
             "a_tangents": relative_errors(self.a_tangents, self.a_analytic),
         }
 
+    def pages(self, *, lang: str = "en", title: str = "") -> list:
+        """The page(s) of the diagrams and the table as matplotlib Figures (A4; see
+        :func:`plans.drawing.kinematic_diagrams.draw_kinematic_pages`)."""
+        from .drawing.kinematic_diagrams import draw_kinematic_pages
+
+        return draw_kinematic_pages(self, title=title, lang=lang)
+
+    def save(self, path, *, lang: str = "en", title: str = "") -> list:
+        """Write the page(s) to *path* by its suffix: ``.pdf`` every page in one file; ``.svg`` / ``.png``
+        one file a page (``kd-1.svg``, ``kd-2.svg`` when there are two).  Returns the paths written."""
+        from pathlib import Path
+
+        from .drawing.formats import save_pages
+
+        figures = self.pages(lang=lang, title=title)
+        return save_pages([(str(k + 1), fig) for k, fig in enumerate(figures)], Path(path))
+
+    def _repr_svg_(self) -> str:
+        from .drawing.svg import render_svg
+
+        return render_svg(self.pages()[0]).decode("utf-8")
+
     def rows(self) -> list[dict]:
         """One dict per position: number, t [s], s, v and a from the diagrams, the plans and analytic, errors [%]."""
         errors = self.errors()
