@@ -368,6 +368,9 @@ class KinematicDiagrams:
         Their drafting precision [mm].
     driver : str or None
         The driver link's name (for the law's symbols: ω₂).
+    positions : array (n,) or None
+        The driver's position at each row: crank angle [rad] (running on in
+        the sense of motion, not wrapped) or linear-driver position [m].
     """
 
     motion: OutputMotion
@@ -387,6 +390,7 @@ class KinematicDiagrams:
     plan_scales: dict | None = None
     precision: float | None = None
     driver: str | None = None
+    positions: np.ndarray | None = None
 
     def errors(self) -> dict[str, np.ndarray]:
         """Errors against the analytic values, in % of the largest analytic |v| (|a|) over the positions.
@@ -616,7 +620,8 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, pr
     scales_d = diagram_scales(motion.duration, s, t=t, period=period, height=height)
     result = kinematic_diagrams_of(motion, v_plans=plans_v, a_plans=plans_a, v_analytic=rates, a_analytic=accelerations,
                                    scales=scales_d, reference=reference)
-    return replace(result, law=cycle.law, plan_scales=dict(scales), precision=precision, driver=scene.driver.link)
+    return replace(result, law=cycle.law, plan_scales=dict(scales), precision=precision, driver=scene.driver.link,
+                   positions=np.asarray(cycle.positions, dtype=float))
 
 
 def rescaled(diagrams: KinematicDiagrams, height: float) -> KinematicDiagrams:
