@@ -95,7 +95,7 @@ def __getattr__(name: str):
 
         return getattr(motion, name)
     if name == "kinematic_diagrams":
-        from .graphical_differentiation import kinematic_diagrams
+        from .differentiation import kinematic_diagrams
 
         return kinematic_diagrams
     if name == "write_handout":

@@ -525,7 +525,7 @@ def _kinematic_diagrams(scene: Scene, args) -> list:
     """``plans sweep --plot DIR``: the output link's kinematic diagrams by graphical differentiation, at
     ``--positions`` positions (12 by default), as DIR/kinematic.FORMAT (kinematic-1, kinematic-2 when the table
     takes a page of its own); a mechanism without an output slider or rocker is said so on standard error."""
-    from .graphical_differentiation import kinematic_diagrams
+    from .differentiation import kinematic_diagrams
 
     try:
         diagrams = kinematic_diagrams(scene, args.positions or 12, law=getattr(args, "law", None))

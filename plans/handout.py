@@ -18,7 +18,7 @@ What a handout holds:
   position, the kinematic diagrams over the cycle, and the output link's
   s–t, v–t, a–t diagrams by graphical differentiation (the method of chords
   drawn with its pole and rays) with the table of v and a at every position
-  from the diagrams, the plans and analytic (:mod:`plans.graphical_differentiation`).
+  from the diagrams, the plans and analytic (:mod:`plans.differentiation`).
 
 Every position page has the same arrangement (one :class:`plans.drawing.layout.Frame`
 of boxes, chosen for the drawings it must hold).  The mechanism is drawn at
@@ -531,11 +531,11 @@ def _kinematic_pages(scene: Scene, positions, count: int, precision: float | Non
     when that does not fit under them), at the handout's count of positions (12 when it has fewer than 8).
 
     The diagrams take their own positions, from the output's extreme position under the driver's law
-    (:func:`plans.graphical_differentiation.kinematic_diagrams`), as the course project numbers them.  A
+    (:func:`plans.differentiation.kinematic_diagrams`), as the course project numbers them.  A
     mechanism without an output slider or rocker, or not solved at one of those positions, has no such page.
     """
     from .drawing.kinematic_diagrams import draw_kinematic_pages
-    from .graphical_differentiation import kinematic_diagrams
+    from .differentiation import kinematic_diagrams
 
     if isinstance(positions, int):
         count = positions

@@ -22,7 +22,7 @@ analytic, errors), :func:`draw_kinematic_pages` the handout's page (or two,
 when the table does not fit under the diagrams).
 
 Only the drawing happens here: every number comes from a
-:class:`plans.graphical_differentiation.KinematicDiagrams`.
+:class:`plans.differentiation.KinematicDiagrams`.
 """
 
 from __future__ import annotations
@@ -33,7 +33,7 @@ import numpy as np
 from matplotlib.ticker import MaxNLocator
 
 from .._text import subscript
-from ..graphical_differentiation import ORDINATE_MAX, KinematicDiagrams, rescaled, smooth
+from ..differentiation import ORDINATE_MAX, KinematicDiagrams, rescaled, smooth
 from ..i18n import term
 from .blocks import Block, text_rows
 from .layout import A4, GAP, PAGE_MARGIN, footer, header, header_height, new_page

@@ -411,24 +411,21 @@ class KinematicDiagrams:
     def pages(self, *, lang: str = "en", title: str = "") -> list:
         """The page(s) of the diagrams and the table as matplotlib Figures (A4; see
         :func:`plans.drawing.kinematic_diagrams.draw_kinematic_pages`)."""
-        from .drawing.kinematic_diagrams import draw_kinematic_pages
+        from .display import display_function
 
-        return draw_kinematic_pages(self, title=title, lang=lang)
+        return display_function("kinematic_pages")(self, lang=lang, title=title)
 
     def save(self, path, *, lang: str = "en", title: str = "") -> list:
         """Write the page(s) to *path* by its suffix: ``.pdf`` every page in one file; ``.svg`` / ``.png``
-        one file a page (``kd-1.svg``, ``kd-2.svg`` when there are two).  Returns the paths written."""
-        from pathlib import Path
+        one file a page (``kinematic-1.svg``, ``kinematic-2.svg`` when there are two).  Returns the paths written."""
+        from .display import display_function
 
-        from .drawing.formats import save_pages
-
-        figures = self.pages(lang=lang, title=title)
-        return save_pages([(str(k + 1), fig) for k, fig in enumerate(figures)], Path(path))
+        return display_function("save_pages")([(str(k + 1), fig) for k, fig in enumerate(self.pages(lang=lang, title=title))], path)
 
     def _repr_svg_(self) -> str:
-        from .drawing.svg import render_svg
+        from .display import display_function
 
-        return render_svg(self.pages()[0]).decode("utf-8")
+        return display_function("svg_of_figure")(self.pages()[0])
 
     def rows(self) -> list[dict]:
         """One dict per position: number, t [s], s, v and a from the diagrams, the plans and analytic, errors [%]."""

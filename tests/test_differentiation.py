@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import plans
-from plans.graphical_differentiation import (
+from plans.differentiation import (
     DiagramScales,
     OutputMotion,
     chords,
