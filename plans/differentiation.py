@@ -528,7 +528,7 @@ def _plans_values(output, graphical) -> tuple[float, float]:
 REFERENCE_STEPS = 360
 
 
-def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, precision: float | None = None,
+def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, start: str = "output", precision: float | None = None,
                        k_v: float | None = None, k_a: float | None = None, height: float = ORDINATE_MAX) -> KinematicDiagrams:
     """The output link's kinematic diagrams by graphical differentiation, and the comparison at every position.
 
@@ -542,6 +542,9 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, pr
     law : str, optional
         The driver's law over the cycle (``"constant"``, ``"uniform"``,
         ``"harmonic"``); None: the scene's ``[driver] law`` or the default.
+    start : {"output", "scene"}
+        Position 0: the output's extreme position that starts its working
+        stroke (default, as the course numbers them) or the scene's own.
     precision : float, optional
         Drafting precision [mm] of the plans' readings (default: the
         scene's ``[scales] precision``, else 0.1 mm as on a handout; 0: exact).
@@ -588,9 +591,9 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, pr
     if output is None:
         raise PlansError(f"{scene.source}: kinematic diagrams: the mechanism has no output slider (on a frame guide) or rocker "
                          "(turning about a frame point); name one with [output] link = \"…\"")
-    first = driver_cycle(scene, positions, law=law, structure=structure)
+    first = driver_cycle(scene, positions, law=law, start=start, structure=structure)
     repeating = first.law.crank and first.law.kind in ("constant", "harmonic")
-    cycle = first if repeating or not first.law.crank else driver_cycle(scene, positions, law=law, structure=structure, closed=True)
+    cycle = first if repeating or not first.law.crank else driver_cycle(scene, positions, law=law, start=start, structure=structure, closed=True)
     analytic = cycle.solve(structure)
     unsolved = [k for k in range(len(cycle)) if not bool(analytic.valid[k])]
     if unsolved:
@@ -611,7 +614,7 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, pr
                   for x in scenes]
     plans_v, plans_a = zip(*(_plans_values(output, g) for g in graphicals))
     motion = OutputMotion(output.kind, output.pair if output.kind == "slider" else output.link, numbers, t, s, period)
-    dense = driver_cycle(scene, REFERENCE_STEPS, law=law, structure=structure, closed=True)
+    dense = driver_cycle(scene, REFERENCE_STEPS, law=law, start=start, structure=structure, closed=True)
     rs, rv, ra = _output_columns(output, dense.solve(structure))
     reference = (np.asarray(dense.t, dtype=float), rs - values[0], rv, ra)
     scales_d = diagram_scales(motion.duration, s, t=t, period=period, height=height)

@@ -530,7 +530,7 @@ TERMS: dict[str, dict[str, str]] = {
     "extreme_positions": {"en": "extreme positions", "sr": "крајњи положаји", "ru": "крайние положения",
                           "bg": "крайни положения", "sl": "skrajni legi"},
     "working_stroke": {"en": "working stroke", "sr": "радни ход", "ru": "рабочий ход", "bg": "работен ход", "sl": "delovni hod"},
-    "time_s": {"en": "time t [s]", "sr": "време t [s]", "ru": "время t [с]", "bg": "време t [s]", "sl": "čas t [s]"},
+    "time": {"en": "time", "sr": "време", "ru": "время", "bg": "време", "sl": "čas"},
     "grashof_class": {"en": "Grashof class", "sr": "Грасхофова класа", "ru": "класс по Грасгофу", "bg": "клас по Грасхоф",
                       "sl": "Grashofov razred"},
     "crank-rocker": {"en": "crank-rocker", "sr": "коленасто-клацкајући", "ru": "кривошипно-коромысловый",

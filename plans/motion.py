@@ -15,6 +15,9 @@ law (:class:`DriverLaw`), stated on every cycle output:
   φ_lo, φ_hi and reverses there.  φ = φ_c − A·cos ψ with the phase ψ = Ωt,
   φ_c the middle of the swing and A its half; ω = AΩ·sin ψ, ε = AΩ²·cos ψ:
   ω passes through zero at the limits and every curve stays smooth there.
+  (A position that would fall exactly on a limit, where the limiting group
+  lines up and its rates are 0/0, is taken :data:`LIMIT_STEP` of phase
+  after it, its time to match.)
   Ω is chosen so that |ω| at the scene's angle is the scene's |ω|; the sign
   of the scene's ω says which way it swings at its instant.  At a limit the
   group that limits the crank lines up (a dead centre of its own) and the
@@ -73,8 +76,11 @@ __all__ = [
     "output_link",
     "Cycle",
     "driver_cycle",
+    "cycle_at",
     "Strokes",
     "strokes",
+    "cycle_summary",
+    "cycle_text",
 ]
 
 #: The laws a driver may follow over a cycle.
@@ -180,7 +186,11 @@ def crank_limits(scene: Scene, structure=None) -> Limits | None:
     phi0 = float(scene.driver.phi)
     grid = phi0 + np.linspace(0.0, _TURN, SEARCH_STEPS, endpoint=False)
     sweep = solve(scene, grid, structure, allow_partial=True, warn_condition=math.inf)
-    valid = np.asarray(sweep.valid, dtype=bool)
+    # positions where some group does not assemble (its sine is NaN there); a dead centre the crank passes
+    # through (refused on a grid position, assembled on both sides) does not stop it
+    valid = np.ones(SEARCH_STEPS, dtype=bool)
+    for group in structure.groups:
+        valid &= np.isfinite(np.asarray(sweep.sines[group.name], dtype=float))
     if valid.all():
         return None
     if not valid[0]:
@@ -191,7 +201,8 @@ def crank_limits(scene: Scene, structure=None) -> Limits | None:
     failing = _failing_group(sweep, up)
 
     def assembles(phi: float) -> bool:
-        return bool(solve(scene, [phi], structure, allow_partial=True, warn_condition=math.inf).valid[0])
+        one = solve(scene, [phi], structure, allow_partial=True, warn_condition=math.inf)
+        return bool(one.valid[0])
 
     def edge(inside: float, outside: float) -> float:
         for _ in range(REFINE_STEPS):
@@ -724,7 +735,15 @@ def _turning(scene: Scene, law: DriverLaw, xs: np.ndarray, key: str, period: flo
     return Cycle(scene, law, xs, t, rate, acc, {}, period, law.sense * (xs - xs[0]), start)
 
 
+#: A swing's position that would fall on a limit position itself (the limiting group lined up, its rates 0/0
+#: there) is taken this much phase [rad] after it: 1e-4 rad of phase is A·5e-9 of crank angle.
+LIMIT_STEP = 1e-4
+
+
 def _swing(scene: Scene, law: DriverLaw, phases: np.ndarray, start: str) -> Cycle:
+    phases = np.asarray(phases, dtype=float).copy()
+    on_limit = np.abs(np.sin(phases)) < 0.5 * LIMIT_STEP
+    phases[on_limit] = np.round(phases[on_limit] / math.pi) * math.pi + LIMIT_STEP
     lim = law.limits
     half, middle = 0.5 * lim.swing, 0.5 * (lim.lo + lim.hi)
     omega = law.frequency
@@ -826,6 +845,46 @@ def driver_cycle(
     return cycle
 
 
+def cycle_at(scene: Scene, positions, *, law: str | None = None, structure=None) -> Cycle:
+    """Given driver positions (rad or m, in the order given) under the driver's law: a :class:`Cycle` of them.
+
+    A turning crank or a linear driver takes the law's rate at each position
+    (t from the first one, along the path in the sense of motion).  A swing
+    (a rocker input) takes the positions on the scene's own stroke and
+    branch, with the harmonic law's rate there; a position outside the
+    swing (where the mechanism does not assemble) keeps the scene's rate and
+    has no time (NaN).
+
+    >>> import plans
+    >>> c = cycle_at(plans.load(plans.example_path("four-bar")), [0.0, 1.0], law="uniform")
+    >>> [round(float(w), 4) for w in c.rate]
+    [9.4619, 9.9764]
+    """
+    from .structure import find_structure
+
+    structure = structure or find_structure(scene)
+    the_law = driver_law(scene, law, structure)
+    key = "--law" if law is not None else "driver.law"
+    xs = np.asarray(positions, dtype=float).reshape(-1)
+    if the_law.kind == "harmonic":
+        lim = the_law.limits
+        half, middle = 0.5 * lim.swing, 0.5 * (lim.lo + lim.hi)
+        offsets = np.array([math.remainder(x - middle, _TURN) for x in xs])
+        outside = np.abs(offsets) >= half  # where the mechanism does not assemble: the solver says so there
+        psi = np.arccos(np.clip(-offsets / half, -1.0, 1.0))
+        if the_law.rate0 < 0:
+            psi = _TURN - psi
+        cycle = _swing(scene, the_law, psi, "scene")
+        if outside.any():
+            positions = np.where(outside, xs, cycle.positions)
+            rate = np.where(outside, the_law.rate0, cycle.rate)
+            acc = np.where(outside, 0.0, cycle.acceleration)
+            t = np.where(outside, np.nan, cycle.t)
+            cycle = Cycle(scene, the_law, positions, t, rate, acc, cycle.branches, cycle.period, cycle.phase, "scene")
+        return cycle
+    return _turning(scene, the_law, xs, key)
+
+
 # --- strokes -------------------------------------------------------------------------------
 
 
@@ -898,7 +957,7 @@ class Strokes:
             lines.append(f"{term('output_link', lang)} {self.output.link}: {term('stroke_H', lang)} H = {num(self.travel * 1e3)} mm")
         else:
             lines.append(f"{term('output_link', lang)} {self.output.link}: {term('swing_psi', lang)} ψ{sub} = {num(math.degrees(self.travel))}°")
-        where = (lambda x: f"{num(math.degrees(x) % 360.0)}°") if self.law.crank else (lambda x: f"{num(x * 1e3)} mm")
+        where = (lambda x: f"{num(_degrees_0_360(x))}°") if self.law.crank else (lambda x: f"{num(x * 1e3)} mm")
         lines.append(f"{term('extreme_positions', lang)}: 0 — {where(self.start_position)}, 0′ — {where(self.other_position)}")
         if self.theta is not None:
             lines.append(f"θ = {num(math.degrees(self.theta))}°, K = (180° + θ)/(180° − θ) = {num(self.K)}")
@@ -909,23 +968,37 @@ class Strokes:
         return lines
 
     def as_dict(self) -> dict:
-        """For JSON: SI units (m, rad, s), with the names the keys say."""
+        """For JSON: each key names its unit (``_deg`` in [0, 360) for crank angles, ``_m``, ``_s``)."""
         kind = self.output.kind
+        crank = self.law.crank
+
+        def where(x: float) -> float:
+            return _degrees_0_360(x) if crank else x
+
+        arc = (lambda x: math.degrees(x)) if crank else (lambda x: x)
+        unit = "deg" if crank else "m"
+        finite = math.isfinite
         return {
             "output_link": self.output.link,
             "output_kind": kind,
             "law": self.law.kind,
-            "start_position": self.start_position,
-            "other_position": self.other_position,
+            f"start_{unit}": where(self.start_position),
+            f"other_{unit}": where(self.other_position),
             "stroke_H_m" if kind == "slider" else "swing_psi_deg": self.travel if kind == "slider" else math.degrees(self.travel),
             "theta_deg": None if self.theta is None else math.degrees(self.theta),
             "K": self.K,
-            "working_arc": self.working_arc,
-            "return_arc": None if not math.isfinite(self.return_arc) else self.return_arc,
+            f"working_arc_{unit}": arc(self.working_arc),
+            f"return_arc_{unit}": arc(self.return_arc) if finite(self.return_arc) else None,
             "working_time_s": self.working_time,
-            "return_time_s": None if not math.isfinite(self.return_time) else self.return_time,
+            "return_time_s": self.return_time if finite(self.return_time) else None,
             "working_stroke": self.working,
         }
+
+
+def _degrees_0_360(x: float) -> float:
+    """An angle [rad] in degrees in [0, 360), round-off at 360 as 0."""
+    deg = math.degrees(x) % 360.0
+    return 0.0 if deg > 360.0 - 1e-9 else deg + 0.0
 
 
 def strokes(scene: Scene, law: str | None = None, structure=None, *, _law: DriverLaw | None = None) -> Strokes | None:
@@ -1081,3 +1154,80 @@ def _linear_strokes(scene: Scene, law: DriverLaw, output: Output, structure) -> 
         time = abs(float(rate[1] - rate[0]) / law.acceleration) if law.acceleration else abs(b - a) / abs(law.rate0)
     return Strokes(output, law, a, b, 0.0, abs(b - a), ya, yb, abs(yb - ya), abs(b - a), math.nan, None, None, time, math.nan,
                    "out" if yb > ya else "back")
+
+
+# --- what plans solve states of the cycle ------------------------------------------------------
+
+
+def cycle_summary(scene: Scene, law: str | None = None, structure=None) -> dict:
+    """What ``plans solve --json`` states of the scene's cycle (key ``"cycle"``), SI units with the unit in the key.
+
+    ``law``: the kind, where it came from and its words (None with ``law_error``,
+    the reason, when the driver cannot follow one: a driver at rest);
+    ``limits_deg``: a rocker input's limit angles, else None;
+    ``four_bar_loops``: per loop its group, links, lengths [m], Grashof class
+    and the links that turn fully; ``strokes``: :meth:`Strokes.as_dict` or None.
+    """
+    from .structure import find_structure
+
+    structure = structure or find_structure(scene)
+    out: dict = {"law": None}
+    the_law = None
+    try:
+        the_law = driver_law(scene, law, structure)
+        out["law"] = {"kind": the_law.kind, "source": the_law.source, "words": the_law.describe("en", scene.driver.link)}
+    except SceneError as exc:
+        out["law_error"] = str(exc)
+    limits = the_law.limits if the_law is not None else None
+    out["limits_deg"] = None if limits is None else [math.degrees(limits.lo), math.degrees(limits.hi)]
+    out["four_bar_loops"] = [
+        {
+            "group": loop.group,
+            "links": {"input": loop.input, "coupler": loop.coupler_link, "output": loop.output},
+            "lengths_m": {"frame": loop.ground, "input": loop.crank, "coupler": loop.coupler, "output": loop.rocker},
+            "grashof_class": loop.grashof.kind,
+            "grashof": loop.grashof.grashof,
+            "turning_links": list(loop.turning_links()),
+        }
+        for loop in four_bar_loops(scene, structure)
+    ]
+    found = None
+    if the_law is not None:
+        try:
+            found = strokes(scene, law, structure, _law=the_law)
+        except SceneError:
+            found = None
+    out["strokes"] = None if found is None else found.as_dict()
+    return out
+
+
+def cycle_text(summary: dict) -> str:
+    """The lines of ``plans solve``'s table about the cycle, from :func:`cycle_summary`."""
+    lines = ["", "cycle"]
+    law = summary.get("law")
+    lines.append(f"  {law['words']}" if law else f"  driver law: none ({summary.get('law_error', '')})")
+    if summary["limits_deg"] is not None:
+        lo, hi = summary["limits_deg"]
+        lines.append(f"  the input link cannot turn fully: it swings between its limit positions {lo:.2f}° and {hi:.2f}°".replace("-", "−"))
+    for loop in summary["four_bar_loops"]:
+        turning = ", ".join(loop["turning_links"])
+        turns = f"turning fully: {turning}" if turning else "no link turns fully"
+        n = loop["lengths_m"]
+        lines.append(
+            f"  four-bar loop {loop['group']} (frame {n['frame']:.6g} m, input {loop['links']['input']} {n['input']:.6g} m, "
+            f"coupler {loop['links']['coupler']} {n['coupler']:.6g} m, output {loop['links']['output']} {n['output']:.6g} m): "
+            f"{loop['grashof_class']}{'' if loop['grashof'] else ' (non-Grashof)'}; {turns}"
+        )
+    st = summary["strokes"]
+    if st is not None:
+        if st["output_kind"] == "slider":
+            lines.append(f"  output link {st['output_link']}: stroke H = {st['stroke_H_m'] * 1e3:.6g} mm")
+        else:
+            lines.append(f"  output link {st['output_link']}: swing ψ = {st['swing_psi_deg']:.6g}°")
+        if st["theta_deg"] is not None:
+            lines.append(f"  θ = {st['theta_deg']:.6g}° between the extreme positions, K = (180° + θ)/(180° − θ) = {st['K']:.6g}")
+        elif st["K"] is not None:
+            lines.append(f"  K = t_working / t_return = {st['K']:.6g}")
+        lines.append(f"  working stroke (the slower): {st['working_time_s']:.6g} s"
+                     + (f", return {st['return_time_s']:.6g} s" if st["return_time_s"] is not None else ""))
+    return "\n".join(lines) + "\n"
