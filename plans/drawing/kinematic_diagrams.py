@@ -57,6 +57,8 @@ CHORD = "#D55E00"
 RAY = "#404040"
 ANALYTIC = "#808080"
 GRID = "#b0b0b0"
+#: How far [share of its constructed range] the analytic curve may widen a diagram; beyond, it is cut off.
+REFERENCE_ROOM = 0.25
 #: The shortest [mm] the diagrams are drawn to leave the table room under them on the same page.
 SHORTEST = 32.0
 
@@ -108,9 +110,9 @@ def diagram_words(d: KinematicDiagrams, lang: str = "en") -> dict[str, str]:
     }
 
 
-def _ticks(lo: float, hi: float) -> np.ndarray:
-    """Round values between *lo* and *hi* (physical units) for an ordinate's labels."""
-    values = MaxNLocator(nbins=6, steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi)
+def _ticks(lo: float, hi: float, drawn: float) -> np.ndarray:
+    """Round values between *lo* and *hi* (physical units) for an ordinate *drawn* mm tall, at least 7 mm apart."""
+    values = MaxNLocator(nbins=max(1, min(6, int(drawn / 7.0))), steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi)
     return values[(values >= lo - 1e-12 * abs(hi - lo)) & (values <= hi + 1e-12 * abs(hi - lo))]
 
 
@@ -119,6 +121,20 @@ def _range(*arrays, pad: float = 2.0) -> tuple[float, float]:
     values = np.concatenate([np.asarray(a, dtype=float).ravel() for a in arrays] + [np.zeros(1)])
     values = values[np.isfinite(values)]
     return float(values.min()) - pad, float(values.max()) + pad
+
+
+def _runs(xs, ys) -> list[list[tuple[float, float]]]:
+    """The stretches of a curve where its values are finite (a curve cut at the diagram's edge, or not assembled)."""
+    runs, run = [], []
+    for x, y in zip(xs, ys):
+        if math.isfinite(y):
+            run.append((float(x), float(y)))
+        elif run:
+            runs.append(run)
+            run = []
+    if run:
+        runs.append(run)
+    return [r for r in runs if len(r) >= 2]
 
 
 def _dense(d: KinematicDiagrams, samples: int = 241) -> np.ndarray:
@@ -152,10 +168,19 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
         inside = (rt >= t0 - 1e-12) & (rt <= t0 + motion.duration * (1 + 1e-9))
         ref_mm = (x_of(rt[inside]), rs[inside] / sc.mu_s, rv[inside] / sc.mu_v, ra[inside] / sc.mu_a)
     panels = [
-        ("s", _range(s_mm, s_curve, ref_mm[1] if ref_mm else [])),
-        ("v", _range(v_mm, v_curve, ref_mm[2] if ref_mm else [])),
-        ("a", _range(a_mm, a_curve, ref_mm[3] if ref_mm else [])),
+        ("s", _range(s_mm, s_curve)),
+        ("v", _range(v_mm, v_curve)),
+        ("a", _range(a_mm, a_curve)),
     ]
+    if ref_mm is not None:
+        # the analytic curve widens a diagram by at most REFERENCE_ROOM of its constructed range; beyond, it is cut
+        widened = []
+        for (key, (lo, hi)), ref in zip(panels, ref_mm[1:]):
+            room = REFERENCE_ROOM * (hi - lo)
+            r_lo, r_hi = _range(ref)
+            widened.append((key, (max(min(lo, r_lo), lo - room), min(max(hi, r_hi), hi + room))))
+        panels = widened
+        ref_mm = (ref_mm[0],) + tuple(np.where((ref >= lo) & (ref <= hi), ref, np.nan) for ref, (_, (lo, hi)) in zip(ref_mm[1:], panels))
     length = sc.length
     left = max(sc.pole_v, sc.pole_a) + 6.0  # the poles and their labels
     width = left + length + 8.0 + RIGHT_ROOM
@@ -213,7 +238,7 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
             draw_text(sketch, P(1.2, hi + 0.5, y0), symbol, size=TEXT_PT, gid=f"kd-{key}-symbol")
             right = length + 8.0
             sketch.line([P(right, lo, y0), P(right, hi, y0)], lw=0.4, gid=f"kd-{key}-scale", obstacle=False)
-            for value in _ticks(lo * mu[key], hi * mu[key]):
+            for value in _ticks(lo * mu[key], hi * mu[key], hi - lo):
                 py = value / mu[key]
                 sketch.line([P(right, py, y0), P(right + 1.5, py, y0)], lw=0.4, gid=f"kd-{key}-tick", obstacle=False)
                 draw_text(sketch, P(right + 2.3, py, y0), _tick(float(value), lang), size=TEXT_PT, gid=f"kd-{key}-value")
@@ -224,7 +249,8 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
         tx = x_of(tt)
         # s–t: curve, points, chords
         if ref_mm is not None:
-            sketch.line([P(a, b, ys) for a, b in zip(ref_mm[0], ref_mm[1]) if math.isfinite(b)], color=ANALYTIC, lw=0.6, dashes=(3, 2), gid="kd-s-analytic", obstacle=False)
+            for run in _runs(ref_mm[0], ref_mm[1]):
+                sketch.line([P(a, b, ys) for a, b in run], color=ANALYTIC, lw=0.6, dashes=(3, 2), gid="kd-s-analytic", obstacle=False)
         sketch.line([P(a, b, ys) for a, b in zip(tx, s_curve)], color=CURVE, lw=1.0, gid="kd-s-curve", obstacle=False)
         chord_x = list(pos_x) + closing
         chord_y = list(s_mm) + ([s_mm[0]] if period is not None else [])
@@ -252,7 +278,8 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
                 sketch.circle(P(float(x_of(middle)), intercept, y0), 0.6, fc=CURVE, ec=CURVE, lw=0.3, gid=f"kd-{key}-point", obstacle=False)
             if ref_mm is not None:
                 ry = ref_mm[2] if key == "v" else ref_mm[3]
-                sketch.line([P(a, b, y0) for a, b in zip(ref_mm[0], ry) if math.isfinite(b)], color=ANALYTIC, lw=0.6, dashes=(3, 2), gid=f"kd-{key}-analytic", obstacle=False)
+                for run in _runs(ref_mm[0], ry):
+                    sketch.line([P(a, b, y0) for a, b in run], color=ANALYTIC, lw=0.6, dashes=(3, 2), gid=f"kd-{key}-analytic", obstacle=False)
             sketch.line([P(a, b, y0) for a, b in zip(tx, curve)], color=CURVE, lw=1.0, gid=f"kd-{key}-curve", obstacle=False)
         # the chords of the v–t points, from which the a–t rays are drawn
         mx = x_of(vel.middles)
@@ -291,14 +318,20 @@ def diagrams_table(d: KinematicDiagrams, lang: str = "en") -> list[list[str]]:
         head += [f"{symbol} {diagram}", f"{symbol} {plans}", f"{symbol} {analytic}", f"δ {diagram}", f"δ {plans}"]
     rows = [head]
 
-    def clean(values):  # round-off of a zero (6·10⁻¹⁶ where v passes through 0 at an extreme) printed as 0
+    # round-off of a zero (6·10⁻¹⁶ where v passes through 0 at an extreme, 4·10⁻¹⁴ for the a of a uniform motion)
+    # printed as 0: below 10⁻⁹ of the output's natural scale, its span over the cycle time (squared)
+    duration = d.motion.duration or 1.0
+    span = float(np.ptp(d.motion.s)) if len(d.motion.s) else 0.0
+
+    def clean(values, floor):
         values = np.array(values, dtype=float)
         finite = values[np.isfinite(values)]
         largest = float(np.max(np.abs(finite))) if len(finite) else 0.0
-        values[np.abs(values) < 1e-9 * largest] = 0.0
+        values[np.abs(values) < max(1e-9 * largest, floor)] = 0.0
         return values
 
-    d = type(d)(**{**d.__dict__, **{k: clean(getattr(d, k)) for k in ("v", "a", "v_plans", "a_plans", "v_analytic", "a_analytic")}})
+    floors = {"v": 1e-9 * span / duration, "a": 1e-9 * span / duration**2}
+    d = type(d)(**{**d.__dict__, **{k: clean(getattr(d, k), floors[k[0]]) for k in ("v", "a", "v_plans", "a_plans", "v_analytic", "a_analytic")}})
     for k, number in enumerate(d.motion.numbers):
         row = [str(number), _num(float(d.motion.t[k]), lang, 3), _num(float(d.motion.s[k]), lang, 4)]
         for key, ours, theirs, exact in (("v", d.v, d.v_plans, d.v_analytic), ("a", d.a, d.a_plans, d.a_analytic)):
