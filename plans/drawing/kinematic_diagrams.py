@@ -81,6 +81,12 @@ def _num(value: float, lang: str, digits: int = 4) -> str:
     return localised(text, lang)
 
 
+def _short(value: float, lang: str) -> str:
+    """A derived scale to four significant digits, without trailing zeros: ``320``, ``1.6``, ``0.09549``."""
+    text = f"{value:.4g}"
+    return _num(value, lang) if "e" in text else localised(text, lang)
+
+
 def _scale_text(value: float, lang: str) -> str:
     """A scale's value: round values as they are, others to four significant digits."""
     text = f"{value:.6g}"
@@ -222,10 +228,10 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
             if key == "s":
                 scale = f"{ms} = {_scale_text(sc.mu_s, lang)} {unit}/mm"
             elif key == "v":
-                scale = (f"{mv} = {ms}/($\\mu_{{t}}$·$H_{{1}}$) = {_num(sc.mu_v, lang)} ({unit})/mm,  "
+                scale = (f"{mv} = {ms}/($\\mu_{{t}}$·$H_{{1}}$) = {_short(sc.mu_v, lang)} ({unit})/mm,  "
                          f"$H_{{1}}$ = {_scale_text(sc.pole_v, lang)} mm")
             else:
-                scale = (f"{ma} = {mv}/($\\mu_{{t}}$·$H_{{2}}$) = {_num(sc.mu_a, lang)} ({unit})/mm,  "
+                scale = (f"{ma} = {mv}/($\\mu_{{t}}$·$H_{{2}}$) = {_short(sc.mu_a, lang)} ({unit})/mm,  "
                          f"$H_{{2}}$ = {_scale_text(sc.pole_a, lang)} mm")
             title = f"{symbol}–t: {words[f'{key}_title']} [{unit}];  {scale}"
             draw_text(sketch, complex(x, y0 + hi + TITLE_ROOM - 2.2), title, size=TEXT_PT, gid=f"kd-{key}-title")
@@ -429,7 +435,7 @@ def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
         "§" + f"{term('kinematic_diagrams', lang)}: {term('graphical_differentiation', lang)}",
         *_wrap(f"{words['output']};  {term('positions', lang)}: {count}" + (f";  {d.law.describe(lang, d.driver)}" if d.law is not None else ""), width),
         f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}),  L = {_scale_text(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
-        f"$\\mu_{{t}}$ = T/L = {_num(sc.mu_t, lang, 4)} s/mm",
+        f"$\\mu_{{t}}$ = T/L = {_short(sc.mu_t, lang)} s/mm",
     ]
 
 
