@@ -52,8 +52,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .errors import PlansError
 
 __all__ = [
+    "DiagramsError",
     "chords",
     "smooth",
     "tangents",
@@ -83,6 +85,16 @@ ABSCISSA_MAX = 125.0
 ORDINATE_MAX = 40.0
 #: Round mantissas of μ_t and μ_s (textbooks' 1, 2, 2.5, 5 × 10ⁿ).
 TIME_MANTISSAS = (1, 2, 2.5, 5)
+
+
+class DiagramsError(PlansError, ValueError):
+    """Kinematic diagrams that cannot be made: ``cause`` says why (``"too_few"``, ``"no_output"``,
+    ``"unsolved"``), ``positions`` which positions are not solved (for ``"unsolved"``)."""
+
+    def __init__(self, message: str, cause: str, positions: tuple = ()):
+        super().__init__(message)
+        self.cause = cause
+        self.positions = tuple(positions)
 
 
 def round_up(need: float, mantissas=TIME_MANTISSAS) -> float:
@@ -461,9 +473,7 @@ def kinematic_diagrams_of(motion: OutputMotion, *, v_plans=None, a_plans=None, v
     """
     t, s, period = motion.t, motion.s, motion.period
     if len(t) < 3:
-        from .errors import PlansError
-
-        raise PlansError(f"kinematic diagrams: graphical differentiation needs at least 3 positions, got {len(t)}")
+        raise DiagramsError(f"kinematic diagrams: graphical differentiation needs at least 3 positions, got {len(t)}", "too_few")
     if scales is None:
         scales = diagram_scales(motion.duration, s, t=t, period=period)
     velocity = differentiate(t, s, period=period, pole=scales.pole_v, scale=scales.mu_v)
@@ -562,8 +572,8 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, st
 
     Raises
     ------
-    PlansError
-        No output slider or rocker (name one with ``[output] link``), fewer
+    DiagramsError
+        A :class:`plans.errors.PlansError`: no output slider or rocker (name one with ``[output] link``), fewer
         than 3 positions, or a position where the mechanism is not solved
         (graphical differentiation joins neighbouring positions).
 
@@ -578,27 +588,26 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, st
     """
     from dataclasses import replace
 
-    from .errors import PlansError
     from .graphical import construct
     from .motion import driver_cycle, output_link
     from .positions import common_scales, page_precision
     from .structure import find_structure
 
     if positions < 3:
-        raise PlansError(f"{scene.source}: kinematic diagrams: graphical differentiation needs at least 3 positions, got {positions}")
+        raise DiagramsError(f"{scene.source}: kinematic diagrams: graphical differentiation needs at least 3 positions, got {positions}", "too_few")
     structure = find_structure(scene)
     output = output_link(scene, structure)
     if output is None:
-        raise PlansError(f"{scene.source}: kinematic diagrams: the mechanism has no output slider (on a frame guide) or rocker "
-                         "(turning about a frame point); name one with [output] link = \"…\"")
+        raise DiagramsError(f"{scene.source}: kinematic diagrams: the mechanism has no output slider (on a frame guide) or rocker "
+                            "(turning about a frame point); name one with [output] link = \"…\"", "no_output")
     first = driver_cycle(scene, positions, law=law, start=start, structure=structure)
     repeating = first.law.crank and first.law.kind in ("constant", "harmonic")
     cycle = first if repeating or not first.law.crank else driver_cycle(scene, positions, law=law, start=start, structure=structure, closed=True)
     analytic = cycle.solve(structure)
     unsolved = [k for k in range(len(cycle)) if not bool(analytic.valid[k])]
     if unsolved:
-        raise PlansError(f"{scene.source}: kinematic diagrams: the mechanism is not solved at positions {', '.join(map(str, unsolved))}; "
-                         "graphical differentiation joins neighbouring positions and needs every one")
+        raise DiagramsError(f"{scene.source}: kinematic diagrams: the mechanism is not solved at positions {', '.join(map(str, unsolved))}; "
+                            "graphical differentiation joins neighbouring positions and needs every one", "unsolved", unsolved)
     values, rates, accelerations = _output_columns(output, analytic)
     s = values - values[0]
     t = np.asarray(cycle.t, dtype=float)

@@ -553,10 +553,10 @@ def _kinematic_pages(scene: Scene, positions, count: int, precision: float | Non
 
     The diagrams take their own positions, from the output's extreme position under the driver's law
     (:func:`plans.differentiation.kinematic_diagrams`), as the course project numbers them.  A
-    mechanism without an output slider or rocker, or not solved at one of those positions, has no such page.
+    mechanism without an output slider or rocker, or not solved at one of those positions, gets a page that says so.
     """
-    from .drawing.kinematic_diagrams import draw_kinematic_pages
-    from .differentiation import kinematic_diagrams
+    from .differentiation import DiagramsError, kinematic_diagrams
+    from .drawing.kinematic_diagrams import draw_kinematic_pages, draw_unavailable_page
 
     if isinstance(positions, int):
         count = positions
@@ -564,8 +564,8 @@ def _kinematic_pages(scene: Scene, positions, count: int, precision: float | Non
         count = 12
     try:
         diagrams = kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
-    except PlansError:
-        return []
+    except DiagramsError as exc:  # said on a page of its own, in the reader's language
+        return [draw_unavailable_page(exc, title=scene.title, lang=lang, footer_text=footer)]
     return draw_kinematic_pages(diagrams, title=scene.title, lang=lang, footer_text=footer)
 
 

@@ -505,6 +505,27 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "метод на допирателните",
         "sl": "metoda tangent",
     },
+    "kd_no_output": {
+        "en": "the mechanism has no output slider (on a guide of the frame) or rocker (turning about a frame point); name one with [output] link",
+        "sr": "механизам нема излазни клизач (на вођици постоља) ни клацкач (који се обрће око тачке постоља); наведите га са [output] link",
+        "ru": "у механизма нет выходного ползуна (на направляющей стойки) или коромысла (вращающегося вокруг точки стойки); укажите его в [output] link",
+        "bg": "механизмът няма изходен плъзгач (по водач на стойката) или кобилица (въртяща се около точка на стойката); посочете го с [output] link",
+        "sl": "mehanizem nima izhodnega drsnika (na vodilu ogrodja) ali nihalke (ki se vrti okoli točke ogrodja); navedite ga z [output] link",
+    },
+    "kd_unsolved": {
+        "en": "the mechanism is not solved at positions {positions}: graphical differentiation joins neighbouring positions and needs every one",
+        "sr": "механизам није решен у положајима {positions}: графичко диференцирање спаја суседне положаје и потребан му је сваки",
+        "ru": "механизм не решается в положениях {positions}: графическое дифференцирование соединяет соседние положения, и нужны все",
+        "bg": "механизмът не е решен в положенията {positions}: графичното диференциране свързва съседни положения и са нужни всички",
+        "sl": "mehanizem ni rešen v legah {positions}: grafično odvajanje povezuje sosednje lege in potrebuje vse",
+    },
+    "kd_not_drawn": {
+        "en": "The diagrams are not drawn",
+        "sr": "Дијаграми нису нацртани",
+        "ru": "Диаграммы не построены",
+        "bg": "Диаграмите не са построени",
+        "sl": "Diagrami niso narisani",
+    },
     "chords_order": {
         "en": "the error of the chords falls as Δt²: with twice the positions, to about a quarter",
         "sr": "грешка метода тетива опада као Δt²: са двоструко више положаја на око четвртину",

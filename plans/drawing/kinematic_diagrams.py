@@ -40,7 +40,7 @@ from .layout import A4, GAP, PAGE_MARGIN, footer, header, header_height, new_pag
 from .numerals import localised
 from .typeset import draw_text, measure
 
-__all__ = ["diagrams_block", "diagrams_table", "comparison_block", "header_lines", "diagram_words", "draw_kinematic_pages", "TEXT_PT", "DIAGRAM_GAP"]
+__all__ = ["draw_unavailable_page", "diagrams_block", "diagrams_table", "comparison_block", "header_lines", "diagram_words", "draw_kinematic_pages", "TEXT_PT", "DIAGRAM_GAP"]
 
 #: Size [pt] of every text in the diagrams and their table.
 TEXT_PT = 8.0
@@ -494,3 +494,24 @@ def draw_kinematic_pages(d: KinematicDiagrams, *, title: str, lang: str = "en", 
         draw_text(sketch, complex(PAGE_MARGIN, top - h / 2), text, size=size, gid="kd-note")
         top -= h + 1.2
     return pages
+
+
+def draw_unavailable_page(error, *, title: str, lang: str = "en", footer_text: str = ""):
+    """The page that says, in the reader's language, why the kinematic diagrams are not drawn
+    (*error* a :class:`plans.differentiation.DiagramsError`)."""
+    if error.cause == "unsolved":
+        reason = term("kd_unsolved", lang).format(positions=", ".join(map(str, error.positions)))
+    elif error.cause == "no_output":
+        reason = term("kd_no_output", lang)
+    else:
+        reason = str(error)
+    fig, sketch = new_page(A4)
+    top = header(sketch, A4, title, ["§" + f"{term('kinematic_diagrams', lang)}: {term('graphical_differentiation', lang)}"])
+    lines = [term("kd_not_drawn", lang) + ":"] + _wrap(reason, A4[0] - 2 * PAGE_MARGIN, 10.0)
+    for k, line in enumerate(lines):
+        h = measure(line, 10.0, "bold" if k == 0 else "normal")[1]
+        draw_text(sketch, complex(PAGE_MARGIN, top - h / 2), line, size=10.0, weight="bold" if k == 0 else "normal", gid="kd-unavailable")
+        top -= h + 1.5
+    if footer_text:
+        footer(sketch, footer_text)
+    return fig
