@@ -120,6 +120,31 @@ VOCABULARY = {
     # the arc arrow ↺/↻, no word)
     "readings": {"sr": "очитавања", "ru": "отсчёты", "bg": "отчитания", "sl": "odčitki"},
     "segment": {"sr": "дуж", "ru": "отрезок", "bg": "отсечка", "sl": "daljica"},
+    # the cycle law, strokes and Grashof classes (issue 19): the course words for the motion of a mechanism
+    "driver_law": {"sr": "закон кретања погонског члана", "ru": "закон движения ведущего звена",
+                   "bg": "закон на движение на водещото звено", "sl": "zakon gibanja pogonskega člena"},
+    "law_constant": {"sr": "константна брзина", "ru": "постоянная скорость", "bg": "постоянна скорост", "sl": "konstantna hitrost"},
+    "law_uniform": {"sr": "равномерно убрзано", "ru": "равноускоренно", "bg": "равноускорително", "sl": "enakomerno pospešeno"},
+    "law_harmonic": {"sr": "хармонијско љуљање између", "ru": "гармоническое качание между", "bg": "хармонично люлеене между",
+                     "sl": "harmonično nihanje med"},
+    "law_at": {"sr": "при", "ru": "при", "bg": "при", "sl": "pri"},
+    "law_at_limits": {"sr": "у граничним положајима", "ru": "в крайних положениях", "bg": "в крайните положения", "sl": "v mejnih legah"},
+    "output_link": {"sr": "излазни члан", "ru": "выходное звено", "bg": "изходно звено", "sl": "izhodni člen"},
+    "stroke_H": {"sr": "ход", "ru": "ход", "bg": "ход", "sl": "hod"},
+    "swing_psi": {"sr": "угао љуљања", "ru": "угол качания", "bg": "ъгъл на люлеене", "sl": "kot nihanja"},
+    "extreme_positions": {"sr": "крајњи положаји", "ru": "крайние положения", "bg": "крайни положения", "sl": "skrajni legi"},
+    "working_stroke": {"sr": "радни ход", "ru": "рабочий ход", "bg": "работен ход", "sl": "delovni hod"},
+    "time": {"sr": "време", "ru": "время", "bg": "време", "sl": "čas"},
+    "grashof_class": {"sr": "Грасхофова класа", "ru": "класс по Грасгофу", "bg": "клас по Грасхоф", "sl": "Grashofov razred"},
+    "crank-rocker": {"sr": "кривајно-клацкајући", "ru": "кривошипно-коромысловый", "bg": "колянно-кобиличен", "sl": "ročično-nihajni"},
+    "double-crank": {"sr": "двокривајни", "ru": "двухкривошипный", "bg": "двуколянов", "sl": "dvoročični"},
+    "double-rocker": {"sr": "двоклацкајући", "ru": "двухкоромысловый", "bg": "двукобиличен", "sl": "dvonihajni"},
+    "change point": {"sr": "гранични случај", "ru": "переходный случай", "bg": "граничен случай", "sl": "mejni primer"},
+    "triple-rocker": {"sr": "троклацкајући (није Грасхофов)", "ru": "трёхкоромысловый (не Грасгофов)",
+                      "bg": "трикобиличен (не е Грасхофов)", "sl": "trinihajni (ni Grashofov)"},
+    "turn_fully": {"sr": "окрећу се пуним кругом", "ru": "проворачиваются полностью", "bg": "се завъртат изцяло", "sl": "se zavrtijo v celoti"},
+    "none_turns": {"sr": "ниједан члан се не окреће пуним кругом", "ru": "ни одно звено не проворачивается",
+                   "bg": "никое звено не се завърта изцяло", "sl": "noben člen se ne zavrti v celoti"},
 }
 
 #: domain.md §9, word for word: the headings every handout carries.
