@@ -425,14 +425,6 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "izhodni člen: nihalka",
     },
     "displacement": {"en": "displacement", "sr": "померање", "ru": "перемещение", "bg": "преместване", "sl": "pomik"},
-    "pole_distance": {
-        "en": "pole distance",
-        "sr": "полно растојање",
-        "ru": "полюсное расстояние",
-        "bg": "полюсно разстояние",
-        "sl": "polna razdalja",
-    },
-    "time": {"en": "time", "sr": "време", "ru": "время", "bg": "време", "sl": "čas"},
     "cycle_time": {
         "en": "time of one cycle",
         "sr": "време једног циклуса",
@@ -454,13 +446,6 @@ TERMS: dict[str, dict[str, str]] = {
         "ru": "луч из полюса, параллельный хорде",
         "bg": "лъч от полюса, успореден на хордата",
         "sl": "žarek iz pola, vzporeden s tetivo",
-    },
-    "chord_point": {
-        "en": "mean value over an interval, at its middle",
-        "sr": "средња вредност на интервалу, у његовој средини",
-        "ru": "среднее значение на интервале, в его середине",
-        "bg": "средна стойност в интервала, в средата му",
-        "sl": "srednja vrednost na intervalu, v njegovi sredini",
     },
     "chords_curve": {
         "en": "curve through the points",
