@@ -143,6 +143,21 @@ def _runs(xs, ys) -> list[list[tuple[float, float]]]:
     return [r for r in runs if len(r) >= 2]
 
 
+def _clipped(xs, ys, length: float) -> list:
+    """The segments between neighbouring points (xs, ys) [mm], cut to the abscissa 0 ≤ x ≤ *length*."""
+    out = []
+    for k in range(len(xs) - 1):
+        (xa, ya), (xb, yb) = (float(xs[k]), float(ys[k])), (float(xs[k + 1]), float(ys[k + 1]))
+        if xb <= 0.0 or xa >= length:
+            continue
+        if xa < 0.0:
+            ya, xa = ya + (yb - ya) * (0.0 - xa) / (xb - xa), 0.0
+        if xb > length:
+            yb, xb = ya + (yb - ya) * (length - xa) / (xb - xa), length
+        out.append(((xa, ya), (xb, yb)))
+    return out
+
+
 def _dense(d: KinematicDiagrams, samples: int = 241) -> np.ndarray:
     return np.linspace(0.0, d.motion.duration, samples) + float(d.motion.t[0])
 
@@ -162,7 +177,8 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
     vel, acc = d.velocity, d.acceleration
     # drawn ordinates [mm]
     s_mm = motion.s / sc.mu_s
-    s_curve = smooth(motion.t, motion.s, tt, period=period) / sc.mu_s
+    te, se = motion.points()  # with an open turn's points beyond its ends (not drawn: the chords to them are cut at the ends)
+    s_curve = smooth(te, se, tt, period=period) / sc.mu_s
     v_mm = vel.intercepts()
     v_curve = smooth(vel.middles, vel.rates, tt, period=period) / sc.mu_v
     a_mm = acc.intercepts()
@@ -258,11 +274,11 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
             for run in _runs(ref_mm[0], ref_mm[1]):
                 sketch.line([P(a, b, ys) for a, b in run], color=ANALYTIC, lw=0.6, dashes=(3, 2), gid="kd-s-analytic", obstacle=False)
         sketch.line([P(a, b, ys) for a, b in zip(tx, s_curve)], color=CURVE, lw=1.0, gid="kd-s-curve", obstacle=False)
-        chord_x = list(pos_x) + closing
-        chord_y = list(s_mm) + ([s_mm[0]] if period is not None else [])
-        for k in range(len(chord_x) - 1):
-            sketch.line([P(chord_x[k], chord_y[k], ys), P(chord_x[k + 1], chord_y[k + 1], ys)], color=CHORD, lw=0.7, gid="kd-s-chord", obstacle=False)
-        for px, py in zip(chord_x, chord_y):
+        chord_x = list(x_of(te)) + closing
+        chord_y = list(se / sc.mu_s) + ([s_mm[0]] if period is not None else [])
+        for first, second in _clipped(chord_x, chord_y, length):
+            sketch.line([P(*first, ys), P(*second, ys)], color=CHORD, lw=0.7, gid="kd-s-chord", obstacle=False)
+        for px, py in zip(list(pos_x) + closing, list(s_mm) + ([s_mm[0]] if period is not None else [])):
             sketch.circle(P(px, py, ys), 0.6, fc=CURVE, ec=CURVE, lw=0.3, gid="kd-s-point", obstacle=False)
         # v–t and a–t: pole, rays, intercepts carried to the middles, points, curve
         for key, diff, y0, pole, curve, name in (("v", vel, yv, sc.pole_v, v_curve, "1"), ("a", acc, ya, sc.pole_a, a_curve, "2")):
@@ -278,6 +294,8 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
             sketch.arrow(P(-pole / 2, dim, y0), P(0, dim, y0), lw=0.4, head=1.8, gid=f"kd-{key}-H-dimension")
             draw_text(sketch, P(-pole / 2, lo - 3.0, y0), f"$H_{{{name}}}$", size=TEXT_PT, ha="center", gid=f"kd-{key}-H")
             for middle, intercept in zip(diff.middles, diff.intercepts()):
+                if not -1.0 <= float(x_of(middle)) <= length + 1.0:  # beyond an open turn's ends: not drawn
+                    continue
                 axis_at = P(0, intercept, y0)
                 sketch.line([pole_at, axis_at], color=RAY, lw=0.35, gid=f"kd-{key}-ray", obstacle=False)
                 sketch.line([axis_at, P(float(x_of(middle)), intercept, y0)], color=RAY, lw=0.35, dashes=(1, 1.5), gid=f"kd-{key}-carry", obstacle=False)
@@ -292,13 +310,8 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
         my = vel.intercepts()
         if period is not None:  # the chord across the end of the cycle, drawn at both ends of the abscissa
             mx, my = np.concatenate([[mx[-1] - length], mx, [mx[0] + length]]), np.concatenate([[my[-1]], my, [my[0]]])
-        for k in range(len(mx) - 1):
-            (xa, ya), (xb, yb) = (mx[k], my[k]), (mx[k + 1], my[k + 1])
-            if xa < 0:
-                ya, xa = ya + (yb - ya) * (0 - xa) / (xb - xa), 0.0
-            if xb > length:
-                yb, xb = ya + (yb - ya) * (length - xa) / (xb - xa), length
-            sketch.line([P(xa, ya, yv), P(xb, yb, yv)], color=CHORD, lw=0.7, gid="kd-v-chord", obstacle=False)
+        for first, second in _clipped(mx, my, length):
+            sketch.line([P(*first, yv), P(*second, yv)], color=CHORD, lw=0.7, gid="kd-v-chord", obstacle=False)
         # the legend, in rows as wide as the block
         legend_at = [(x + at.real, y + legend_h - at.imag) for at in legend_places]
         for colour, lw, dashes, label, (lx, ly) in zip(*zip(*items), legend_at):
@@ -428,7 +441,7 @@ def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
     """The page's data lines: the output link and method, the time scale."""
     sc = d.scales
     words = diagram_words(d, lang)
-    count = len(d.motion.t)
+    count = len(set(d.motion.numbers))  # an open turn ends at position 0 again
     duration = d.motion.duration
     width = A4[0] - 2 * PAGE_MARGIN
     return [
