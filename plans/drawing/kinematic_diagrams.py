@@ -45,8 +45,8 @@ __all__ = ["draw_unavailable_page", "diagrams_block", "diagrams_table", "compari
 #: Size [pt] of every text in the diagrams and their table.
 TEXT_PT = 8.0
 #: Room [mm] above a diagram for its title line, and between diagrams.
-TITLE_ROOM = 8.0
-DIAGRAM_GAP = 6.0
+TITLE_ROOM = 7.0
+DIAGRAM_GAP = 4.5
 #: Room [mm] under a diagram for the positions' numbers, and under the block for its legend.
 NUMBER_ROOM = 5.0
 LEGEND_ROOM = 6.0
@@ -479,7 +479,7 @@ def draw_kinematic_pages(d: KinematicDiagrams, *, title: str, lang: str = "en", 
     room = height - header_height(lines) - PAGE_MARGIN - 8.0
     # the diagrams as tall as their scales allow, down to SHORTEST mm, so that the table fits under them
     together = False
-    for tallest in (ORDINATE_MAX, 36.0, SHORTEST):
+    for tallest in (ORDINATE_MAX, 36.0, 34.0, SHORTEST):
         block = diagrams_block(rescaled(d, tallest), lang)
         if block.height + GAP + table.height + notes_h <= room:
             together = True
