@@ -30,6 +30,13 @@ driver reaches them; it never reads a velocity or an acceleration:
   curve is read at the positions through a smooth curve: the cubic through
   the four nearest points (:func:`smooth`), which adds an error of fourth
   order; the reading at a position keeps the chord's ``Δt² · s‴ / 24``.
+* **Ends.**  A repeating cycle (a crank at constant speed, a rocker input's
+  swing) is closed: the chord from the last position to the first one a
+  period later.  An open series has n − 1 chords; a uniformly accelerated
+  crank's turn is continued one position past each end (the crank turns on,
+  :attr:`OutputMotion.lead`, :attr:`OutputMotion.trail`), a linear driver's
+  stroke is not (its end readings lie beyond its last points: the least
+  accurate).
 * **Method of tangents** (:func:`tangents`): the ray parallel to the tangent
   of the smooth s–t curve at each position; the tangent's slope is that of
   the curve through the five nearest points (fourth order where s is smooth).
@@ -267,7 +274,7 @@ def _pole(rate_span_per_h: float, height: float) -> float:
 
 
 def abscissa_length(intervals: int, length_max: float = ABSCISSA_MAX) -> float:
-    """L [mm]: the longest whole number of millimetres a interval, times *intervals*, within *length_max*
+    """L [mm]: the longest whole number of millimetres an interval, times *intervals*, within *length_max*
     (12 intervals: 120 mm, 10 mm each), so that the positions fall on whole millimetres."""
     if intervals < 1:
         return float(length_max)
