@@ -73,8 +73,6 @@ def _num(value: float, lang: str, digits: int = 4) -> str:
     if -4 <= exponent < 6:
         decimals = max(0, digits - 1 - exponent)
         text = f"{value:.{decimals}f}"
-        if "." in text:
-            text = text.rstrip("0").rstrip(".") if decimals > digits else text
     else:
         mantissa, e = f"{value:.{digits - 1}e}".split("e")
         text = f"{mantissa}·10" + str(int(e)).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
@@ -82,17 +80,9 @@ def _num(value: float, lang: str, digits: int = 4) -> str:
 
 
 def _short(value: float, lang: str) -> str:
-    """A derived scale to four significant digits, without trailing zeros: ``320``, ``1.6``, ``0.09549``."""
+    """A scale or a length to four significant digits, without trailing zeros: ``320``, ``1.6``, ``0.005``, ``120``."""
     text = f"{value:.4g}"
     return _num(value, lang) if "e" in text else localised(text, lang)
-
-
-def _scale_text(value: float, lang: str) -> str:
-    """A scale's value: round values as they are, others to four significant digits."""
-    text = f"{value:.6g}"
-    if "e" in text:
-        return _num(value, lang)
-    return localised(text if len(text.replace("-", "").replace(".", "").lstrip("0")) <= 4 else _num(value, lang), lang)
 
 
 def diagram_words(d: KinematicDiagrams, lang: str = "en") -> dict[str, str]:
@@ -242,13 +232,13 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
             # title line: what, the scale
             ms, mv, ma = (f"$\\mu_{{{words[k + '_tex']}}}$" for k in ("s", "v", "a"))
             if key == "s":
-                scale = f"{ms} = {_scale_text(sc.mu_s, lang)} {unit}/mm"
+                scale = f"{ms} = {_short(sc.mu_s, lang)} {unit}/mm"
             elif key == "v":
                 scale = (f"{mv} = {ms}/($\\mu_{{t}}$·$H_{{1}}$) = {_short(sc.mu_v, lang)} ({unit})/mm,  "
-                         f"$H_{{1}}$ = {_scale_text(sc.pole_v, lang)} mm")
+                         f"$H_{{1}}$ = {_short(sc.pole_v, lang)} mm")
             else:
                 scale = (f"{ma} = {mv}/($\\mu_{{t}}$·$H_{{2}}$) = {_short(sc.mu_a, lang)} ({unit})/mm,  "
-                         f"$H_{{2}}$ = {_scale_text(sc.pole_a, lang)} mm")
+                         f"$H_{{2}}$ = {_short(sc.pole_a, lang)} mm")
             title = f"{symbol}–t: {words[f'{key}_title']} [{unit}];  {scale}"
             draw_text(sketch, complex(x, y0 + hi + TITLE_ROOM - 2.2), title, size=TEXT_PT, gid=f"kd-{key}-title")
             # position lines, axes, the ordinate's values on the right
@@ -447,7 +437,7 @@ def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
     return [
         "§" + f"{term('kinematic_diagrams', lang)}: {term('graphical_differentiation', lang)}",
         *_wrap(f"{words['output']};  {term('positions', lang)}: {count}" + (f";  {d.law.describe(lang, d.driver)}" if d.law is not None else ""), width),
-        f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}),  L = {_scale_text(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
+        f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}),  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
         f"$\\mu_{{t}}$ = T/L = {_short(sc.mu_t, lang)} s/mm",
     ]
 
