@@ -166,7 +166,9 @@ def crank_limits(scene: Scene, structure=None) -> Limits | None:
     """The limit positions of the scene's crank, or None if it turns fully (or the driver is linear).
 
     A crank turns fully when the mechanism assembles at every angle of a turn
-    (dead centres it crosses aside).  Otherwise it swings within the interval
+    (dead centres it crosses aside, and the parallel guides of a PRP or RPP
+    group, where a pin runs off to infinity: no limit position to turn back
+    at).  Otherwise it swings within the interval
     of angles around the scene's own where it assembles; each end is found in
     closed form when the group that fails there closes a four-bar loop with
     the crank and the frame (:func:`four_bar_limits`), else by bisection on
@@ -199,6 +201,10 @@ def crank_limits(scene: Scene, structure=None) -> Limits | None:
     up = int(np.argmin(valid))  # the first position not assembled going forward
     down = SEARCH_STEPS - 1 - int(np.argmin(valid[::-1]))  # the last one (the first going backward)
     failing = _failing_group(sweep, up)
+    if structure.groups and next(g for g in structure.groups if g.name == failing).kind not in ("RRR", "RRP", "RPR"):
+        # a PRP or RPP whose guides turn parallel: its pin runs off to infinity, the crank has no limit position to
+        # turn back at (a sweep reports the loss of assembly there)
+        return None
 
     def assembles(phi: float) -> bool:
         one = solve(scene, [phi], structure, allow_partial=True, warn_condition=math.inf)

@@ -89,7 +89,7 @@ def _segments(values: np.ndarray) -> list[np.ndarray]:
     return [r for r in runs if len(r) >= 2]
 
 
-def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l: float | None = None) -> None:
+def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l: float | None = None, law: bool = False) -> None:
     """Draw the plan of positions into a sketch (one data unit = 1 mm)."""
     runs = [r for r in positions_run.runs if r.ok]
     if not runs:
@@ -160,6 +160,14 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     sketch.text(complex(x, y), term("positions_plan", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
     sketch.text(complex(x, y), f"$k_l$ = {localised(fmt_number(k_l), lang)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    motion = getattr(positions_run, "motion", None)
+    if law and motion is not None:  # the driver's law over the cycle (the handout's cover states it in its header)
+        import textwrap
+
+        for n, line in enumerate(textwrap.wrap(motion.law.describe(lang, positions_run.scene.driver.link), 100, subsequent_indent="    ")):
+            y -= 4.5
+            sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top",
+                        gid=f"law-{n}", obstacle=False)
     skipped = positions_run.skipped
     if skipped:
         for cause in ("no_assembly", "dead_centre"):
@@ -318,4 +326,4 @@ def draw_positions_plan(positions_run, ax=None, *, lang: str = "en", k_l: float 
     -------
     list of matplotlib.artist.Artist
     """
-    return sketch_on(ax, "pos", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l))
+    return sketch_on(ax, "pos", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l, law=True))
