@@ -18,7 +18,9 @@ follows one law (:mod:`plans.motion`): :func:`driver_cycle` gives the
 positions, times [s] and driver rates of a cycle (``cycle.solve()`` the
 solution that is a motion), :func:`strokes` the output's stroke H [m] or
 swing ψ [rad], θ and K, :func:`four_bar_loops` the Grashof class of every
-four-bar loop.  :func:`write_drawings`
+four-bar loop; :func:`kinematic_diagrams` the output link's s, v, a
+diagrams by graphical differentiation (method of chords) against the plans
+and the analytic values.  :func:`write_drawings`
 draws the mechanism and the plans to SVG (matplotlib).  ``construct`` and
 ``write_drawings`` are imported on first use, so ``import plans`` stays light.
 
@@ -58,6 +60,7 @@ __all__ = [
     "crank_limits",
     "four_bar_loops",
     "grashof",
+    "kinematic_diagrams",
     "from_mapping",
     "Scene",
     "AnalyticSolution",
@@ -101,6 +104,10 @@ def __getattr__(name: str):
         from . import motion
 
         return getattr(motion, name)
+    if name == "kinematic_diagrams":
+        from .differentiation import kinematic_diagrams
+
+        return kinematic_diagrams
     if name == "write_handout":
         from .handout import write_handout
 

@@ -197,12 +197,14 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument(
         "--plot",
         metavar="DIR",
-        help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) into DIR "
+        help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) and the output link's kinematic diagrams "
+        "by graphical differentiation (kinematic.svg, at --positions positions, 12 by default) into DIR "
         "(without -o the CSV still goes to standard output, the diagrams' names to standard error)",
     )
     sweep.add_argument("--components", action="store_true", help="with --plot: x and y components of v and a too")
     sweep.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="with --plot: format of the diagrams (default svg)")
-    sweep.add_argument("--positions", type=_count, metavar="N", help="with --plot: mark N equally spaced positions (those of plans draw --positions N)")
+    sweep.add_argument("--positions", type=_count, metavar="N", help="with --plot: mark N equally spaced positions (those of plans draw --positions N); "
+                       "the kinematic diagrams' positions (default 12)")
     _law_arguments(sweep)
     _language_argument(sweep)
     _warn_argument(sweep)
@@ -634,6 +636,7 @@ def _sweep(args) -> int:
 
                 figures = draw_cycle_diagrams(analytic, marked=marked, lang=args.lang, components=args.components, cycle=cycle)
                 paths = replace_all({Path(args.plot) / f"{name}.{args.format}": render(fig, args.format) for name, fig in figures})
+            paths = list(paths) + _kinematic_diagrams(scene, args)
     if not args.output:
         sys.stdout.write(text)
     for line in stated:  # the law and the strokes, once everything is written: on stdout beside the files, on stderr beside the CSV
@@ -641,6 +644,20 @@ def _sweep(args) -> int:
     for path in paths:
         print(path, file=sys.stderr if not args.output else sys.stdout)
     return 0
+
+
+def _kinematic_diagrams(scene: Scene, args) -> list:
+    """``plans sweep --plot DIR``: the output link's kinematic diagrams by graphical differentiation, at
+    ``--positions`` positions (12 by default), as DIR/kinematic.FORMAT (kinematic-1, kinematic-2 when the table
+    takes a page of its own); a mechanism without an output slider or rocker is said so on standard error."""
+    from .differentiation import kinematic_diagrams
+
+    try:
+        diagrams = kinematic_diagrams(scene, args.positions or 12, law=args.law, start=args.start)
+    except PlansError as exc:
+        _warn(f"no kinematic diagrams of the output link: {exc}")
+        return []
+    return diagrams.save(Path(args.plot) / f"kinematic.{args.format}", lang=args.lang, title=scene.title)
 
 
 def _nowhere(scene: Scene, positions) -> PlansError:

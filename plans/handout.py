@@ -15,7 +15,10 @@ What a handout holds:
   substituted); printed double-sided, one sheet of paper;
 * several positions: a cover page (data, the plan of positions with the
   paths of the points, the list of positions), the two pages of every
-  position, and the kinematic diagrams over the cycle.
+  position, the kinematic diagrams over the cycle, and the output link's
+  s–t, v–t, a–t diagrams by graphical differentiation (the method of chords
+  drawn with its pole and rays) with the table of v and a at every position
+  from the diagrams, the plans and analytic (:mod:`plans.differentiation`).
 
 Every position page has the same arrangement (one :class:`plans.drawing.layout.Frame`
 of boxes, chosen for the drawings it must hold).  The mechanism is drawn at
@@ -419,8 +422,9 @@ def handout_pages(
 
     Names: ``cover``, ``position-K`` and ``check-K`` for each position K,
     ``unsolved-K`` for a position that cannot be solved, ``diagram-links``,
-    ``diagram-points``, ``diagram-sliders``, ``centres-K`` with *centres*, ``forces-K`` (``forces-K-2`` …) with
-    *forces*.  Arguments as :func:`write_handout`;
+    ``diagram-points``, ``diagram-sliders``, ``kinematic-1`` (and ``kinematic-2``: the output link's
+    kinematic diagrams by graphical differentiation, and their table), ``centres-K`` with *centres*,
+    ``forces-K`` (``forces-K-2`` …) with *forces*.  Arguments as :func:`write_handout`;
     *record* (a list), when given, receives ``(page name, PositionRun drawn)``
     for every position page (the solution at the scale factors the page states).
     """
@@ -552,11 +556,36 @@ def handout_pages(
         marked = run.motion if run.motion is not None else run.positions
         for name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense):
             pages.append((f"diagram-{name}", fig))
+        for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, footer, law, start), start=1):
+            pages.append((f"kinematic-{number}", fig))
     # page numbers
     total = len(pages)
     for number, (_, fig) in enumerate(pages, start=1):
         stamp_page_number(fig, number, total, lang)
     return pages
+
+
+def _kinematic_pages(scene: Scene, positions, count: int, precision: float | None, lang: str, footer: str,
+                     law: str | None = None, start: str = "output") -> list:
+    """The page of the output link's kinematic diagrams by graphical differentiation (and the page of its table
+    when that does not fit under them), at the handout's count of positions (12 when it has fewer than 8).
+
+    The diagrams take their own positions, from the output's extreme position under the driver's law
+    (:func:`plans.differentiation.kinematic_diagrams`), as the course project numbers them.  A
+    mechanism without an output slider or rocker, or not solved at one of those positions, gets a page that says so.
+    """
+    from .differentiation import DiagramsError, kinematic_diagrams
+    from .drawing.kinematic_diagrams import draw_kinematic_pages, draw_unavailable_page
+
+    if isinstance(positions, int):
+        count = positions
+    if count < 8:  # a course project differentiates over 8 or more
+        count = 12
+    try:
+        diagrams = kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
+    except DiagramsError as exc:  # said on a page of its own, in the reader's language
+        return [draw_unavailable_page(exc, title=scene.title, lang=lang, footer_text=footer)]
+    return draw_kinematic_pages(diagrams, title=scene.title, lang=lang, footer_text=footer)
 
 
 def write_handout(

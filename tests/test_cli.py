@@ -152,7 +152,10 @@ def test_positions_and_a_list_are_exclusive(capsys, tmp_path):
 def test_sweep_plot_draws_the_cycle_diagrams(capsys, tmp_path):
     status, out, err = run(capsys, "sweep", "--example", "quick-return", "--steps", "36", "--plot", str(tmp_path), "--positions", "4")
     assert status == 0
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["links.svg", "points.svg", "sliders.svg"]
+    # the cycle diagrams, and the output link's kinematic diagrams by graphical differentiation (issue 19 §4)
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert [n for n in names if not n.startswith("kinematic")] == ["links.svg", "points.svg", "sliders.svg"]
+    assert names[0] in ("kinematic.svg", "kinematic-1.svg")
     # without -o the CSV goes to standard output as the help says (issue 9), the diagrams' names to stderr
     assert out.startswith("driver_phi_deg,") and len(out.splitlines()) == 37
     assert str(tmp_path / "links.svg") in err
