@@ -130,6 +130,7 @@ EXAMPLES = {
     "sweep": "plans sweep --example four-bar --steps 360 -o four-bar.csv --plot diagrams",
     "draw": "plans draw --example six-bar -o drawings\n  plans draw --example six-bar --positions 12 -o sheets --format png",
     "handout": "plans handout --example four-bar --positions 4 -o four-bar.pdf --lang sr",
+    "animate": "plans animate --example six-bar -o six-bar.html\n  plans animate --example four-bar --positions 72 -o four-bar.gif --lang sr",
     "bench": "plans bench --quick -o /tmp/bench",
     "examples": "plans examples\n  plans examples six-bar > my.toml",
 }
@@ -221,6 +222,17 @@ def build_parser() -> argparse.ArgumentParser:
     handout.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr (shown only when stderr is a terminal)")
     _language_argument(handout)
     _scale_arguments(handout)
+
+    animate = _add_command(
+        commands,
+        "animate",
+        "plans that move: a lecture page (one self-contained HTML file) of the mechanism and its plans over the cycle, or a GIF or MP4 for slides",
+    )
+    _scene_argument(animate)
+    animate.add_argument("--positions", type=_count, default=36, metavar="N", help="N positions equally spaced over the driver's cycle (default 36; position 0 is the scene's own)")
+    animate.add_argument("-o", "--output", metavar="FILE", required=True, help="page.html (opens in a browser, no server or network), anim.gif or anim.mp4")
+    _language_argument(animate)
+    _scale_arguments(animate)
 
     centres = commands.add_parser(
         "centres", help="every instant centre by Kennedy's theorem, ω and v from them; draws centres.svg"
@@ -749,6 +761,20 @@ def _progress_done(args) -> None:
         print("\r\033[K", end="", file=sys.stderr, flush=True)
 
 
+def _animate(args) -> int:
+    from .lecture import Animation, check_suffix
+    from .positions import at_page_precision, run_positions
+
+    check_suffix(args.output)  # before any work
+    scene = at_page_precision(_load(args), args.precision)
+    run = run_positions(scene, args.positions, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=scene.scales.precision)
+    for message in run.skipped_messages():
+        _warn(message)
+    path = Animation(run, lang=args.lang).save(args.output)
+    print(path)
+    return 0
+
+
 def _bench(args) -> int:
     from . import bench
 
@@ -770,6 +796,7 @@ _COMMANDS = {
     "sweep": _sweep,
     "draw": _draw,
     "handout": _handout,
+    "animate": _animate,
     "bench": _bench,
     "centres": _centres,
     "examples": _examples,

@@ -395,6 +395,54 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "odčitki",
     },
     "segment": {"en": "segment", "sr": "дуж", "ru": "отрезок", "bg": "отсечка", "sl": "daljica"},
+    # --- lecture page ---------------------------------------------------------------
+    "lecture_title": {
+        "en": "Mechanism, velocity plan and acceleration plan over the cycle",
+        "sr": "Механизам, план брзина и план убрзања током циклуса",
+        "ru": "Механизм, план скоростей и план ускорений за цикл",
+        "bg": "Механизъм, план на скоростите и план на ускоренията за един цикъл",
+        "sl": "Mehanizem, načrt hitrosti in načrt pospeškov v enem ciklu",
+    },
+    "lecture_play": {"en": "Play", "sr": "Покрени", "ru": "Пуск", "bg": "Пусни", "sl": "Predvajaj"},
+    "lecture_pause": {"en": "Pause", "sr": "Заустави", "ru": "Пауза", "bg": "Пауза", "sl": "Ustavi"},
+    "lecture_previous": {
+        "en": "previous position",
+        "sr": "претходни положај",
+        "ru": "предыдущее положение",
+        "bg": "предишно положение",
+        "sl": "prejšnja lega",
+    },
+    "lecture_next": {
+        "en": "next position",
+        "sr": "следећи положај",
+        "ru": "следующее положение",
+        "bg": "следващо положение",
+        "sl": "naslednja lega",
+    },
+    "lecture_speed": {"en": "speed", "sr": "брзина приказа", "ru": "скорость показа", "bg": "скорост на показване", "sl": "hitrost prikaza"},
+    "lecture_keys": {
+        "en": "keys: ← → one position, space play or pause, Home and End the first and the last position",
+        "sr": "тастери: ← → један положај, размак покрени или заустави, Home и End први и последњи положај",
+        "ru": "клавиши: ← → на одно положение, пробел пуск или пауза, Home и End первое и последнее положение",
+        "bg": "клавиши: ← → с едно положение, интервал пусни или пауза, Home и End първото и последното положение",
+        "sl": "tipke: ← → za eno lego, preslednica predvajaj ali ustavi, Home in End prva in zadnja lega",
+    },
+    "lecture_values": {
+        "en": "Values at this position",
+        "sr": "Вредности у овом положају",
+        "ru": "Значения в этом положении",
+        "bg": "Стойности в това положение",
+        "sl": "Vrednosti v tej legi",
+    },
+    "lecture_unit": {"en": "unit", "sr": "јединица", "ru": "ед. изм.", "bg": "мерна единица", "sl": "enota"},
+    "lecture_legend": {"en": "Legend", "sr": "Легенда", "ru": "Условные обозначения", "bg": "Легенда", "sl": "Legenda"},
+    "lecture_cursor": {
+        "en": "the red line is the position shown",
+        "sr": "црвена линија је приказани положај",
+        "ru": "красная линия — показанное положение",
+        "bg": "червената линия е показаното положение",
+        "sl": "rdeča črta je prikazana lega",
+    },
 }
 
 

@@ -448,6 +448,12 @@ class PositionsRun:
         """The kinematic diagrams over the cycle, the positions of the run marked."""
         return Diagrams(self.cycle, marked=self.positions, lang=lang, components=components)
 
+    def animate(self, *, lang: str = "en"):
+        """The run's positions as a :class:`plans.lecture.Animation` (a lecture page, a GIF, an MP4), at the run's scale factors."""
+        from .display import display_function
+
+        return display_function("animate_run")(self, lang=lang)
+
     def plot(self, ax=None, *, lang: str = "en"):
         """Draw the plan of positions into *ax* (a new figure when None); returns the Axes."""
         from .drawing.positions_plan import draw_positions_plan

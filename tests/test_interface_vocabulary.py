@@ -120,6 +120,25 @@ VOCABULARY = {
     # the arc arrow ↺/↻, no word)
     "readings": {"sr": "очитавања", "ru": "отсчёты", "bg": "отчитания", "sl": "odčitki"},
     "segment": {"sr": "дуж", "ru": "отрезок", "bg": "отсечка", "sl": "daljica"},
+    # the lecture page (plans animate): its controls and headings
+    "lecture_title": {"sr": "Механизам, план брзина и план убрзања током циклуса", "ru": "Механизм, план скоростей и план ускорений за цикл",
+                      "bg": "Механизъм, план на скоростите и план на ускоренията за един цикъл",
+                      "sl": "Mehanizem, načrt hitrosti in načrt pospeškov v enem ciklu"},
+    "lecture_play": {"sr": "Покрени", "ru": "Пуск", "bg": "Пусни", "sl": "Predvajaj"},
+    "lecture_pause": {"sr": "Заустави", "ru": "Пауза", "bg": "Пауза", "sl": "Ustavi"},
+    "lecture_previous": {"sr": "претходни положај", "ru": "предыдущее положение", "bg": "предишно положение", "sl": "prejšnja lega"},
+    "lecture_next": {"sr": "следећи положај", "ru": "следующее положение", "bg": "следващо положение", "sl": "naslednja lega"},
+    "lecture_speed": {"sr": "брзина приказа", "ru": "скорость показа", "bg": "скорост на показване", "sl": "hitrost prikaza"},
+    "lecture_keys": {"sr": "тастери: ← → један положај, размак покрени или заустави, Home и End први и последњи положај",
+                     "ru": "клавиши: ← → на одно положение, пробел пуск или пауза, Home и End первое и последнее положение",
+                     "bg": "клавиши: ← → с едно положение, интервал пусни или пауза, Home и End първото и последното положение",
+                     "sl": "tipke: ← → za eno lego, preslednica predvajaj ali ustavi, Home in End prva in zadnja lega"},
+    "lecture_values": {"sr": "Вредности у овом положају", "ru": "Значения в этом положении", "bg": "Стойности в това положение",
+                       "sl": "Vrednosti v tej legi"},
+    "lecture_unit": {"sr": "јединица", "ru": "ед. изм.", "bg": "мерна единица", "sl": "enota"},
+    "lecture_legend": {"sr": "Легенда", "ru": "Условные обозначения", "bg": "Легенда", "sl": "Legenda"},
+    "lecture_cursor": {"sr": "црвена линија је приказани положај", "ru": "красная линия — показанное положение",
+                       "bg": "червената линия е показаното положение", "sl": "rdeča črta je prikazana lega"},
 }
 
 #: domain.md §9, word for word: the headings every handout carries.
