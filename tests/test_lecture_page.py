@@ -1,0 +1,192 @@
+"""plans animate without a browser: the page's data, its scales, its words, GIF and MP4, the CLI, notebooks.
+
+Expected values come from outside the page: the analytic solver at each
+position's angle (for the values and for the drawn length of each velocity
+vector at the stated k_v), the positions a crank's turn gives by hand
+(φ₀ + k·360°/N in the sense of ω), the frame count decoded back from the GIF and the MP4.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import math
+import re
+
+import numpy as np
+import pytest
+
+import plans
+from plans.cli import main
+from plans.lecture import Animation, animate
+
+N = 6
+
+
+@pytest.fixture(scope="module")
+def four_bar():
+    return plans.load(plans.example_path("four-bar"))
+
+
+@pytest.fixture(scope="module")
+def animation(four_bar):
+    return animate(four_bar, N)
+
+
+@pytest.fixture(scope="module")
+def data(animation):
+    text = animation.html
+    found = re.search(r'<script type="application/json" id="plans-data">(.*?)</script>', text, flags=re.S)
+    return json.loads(found.group(1))
+
+
+def _number(text: str) -> float:
+    return float(text.replace("−", "-").replace(",", "."))
+
+
+def _angles(scene, n):
+    sense = -1.0 if scene.driver.omega < 0 else 1.0
+    return [scene.driver.phi + sense * 2 * math.pi * k / n for k in range(n)]
+
+
+def test_the_page_has_a_frame_a_label_and_values_for_every_position(animation, data, four_bar):
+    assert len(data["frames"]) == len(data["labels"]) == len(data["values"]) == N
+    for k, (label, phi) in enumerate(zip(data["labels"], _angles(four_bar, N))):
+        assert label == f"Position {k} ({k + 1}/{N}): φ₂ = {math.degrees(phi) % 360:.1f}°"
+    assert all(f.startswith("<svg") and "<metadata" not in f for f in data["frames"])
+
+
+def test_the_values_are_the_analytic_ones_at_each_position(animation, data, four_bar):
+    rows = re.findall(r"<tr><td>(.*?)</td><td class=\"graphical\">", animation.html)
+    assert rows[0] == "φ<sub>2</sub>" and "ω<sub>3</sub>" in rows and "|v<sub>M</sub>|" in rows
+    for k, phi in enumerate(_angles(four_bar, N)):
+        solved = plans.solve(four_bar.at(phi))
+        expected = {
+            "ω<sub>3</sub>": solved.links["3"].omega[0],
+            "ε<sub>4</sub>": solved.links["4"].epsilon[0],
+            "|v<sub>M</sub>|": abs(solved.points["M"].v[0]),
+            "|a<sub>B</sub>|": abs(solved.points["B"].a[0]),
+        }
+        cells = dict(zip(rows, data["values"][k]))
+        for row, value in expected.items():
+            graphical, analytic = (_number(t) for t in cells[row])
+            assert analytic == pytest.approx(value, rel=5e-4, abs=1e-9), (k, row)
+            assert graphical == pytest.approx(value, rel=0.02, abs=0.02 * abs(value) + 1e-6), (k, row)  # read off the plans at 0.1 mm
+        assert _number(cells["φ<sub>2</sub>"][0]) == pytest.approx(math.degrees(phi) % 360, abs=0.05)
+
+
+def _shaft(svg: str, gid: str) -> complex:
+    """Tip − tail [mm] of the vector drawn with *gid*: the head's first vertex is the tip (SVG y down)."""
+    shaft = re.search(rf'<g id="{re.escape(gid)}">\s*<path d="M ([-0-9.]+) ([-0-9.]+)', svg)
+    head = re.search(rf'<g id="{re.escape(gid)}-head">\s*<path d="M ([-0-9.]+) ([-0-9.]+)', svg)
+    tail = complex(float(shaft.group(1)), -float(shaft.group(2)))
+    tip = complex(float(head.group(1)), -float(head.group(2)))
+    return (tip - tail) * 25.4 / 72  # pt -> mm
+
+
+def test_one_k_v_for_every_frame_and_the_pole_stays_put(animation, data, four_bar):
+    k_v = animation.run.scales["k_v"]
+    poles = set()
+    for k, phi in enumerate(_angles(four_bar, N)):
+        svg = data["frames"][k]
+        assert "(m/s)/mm" in svg
+        v_m = plans.solve(four_bar.at(phi)).points["M"].v[0]
+        drawn = _shaft(svg, "vel-absolute-v_M")
+        assert abs(drawn) * k_v == pytest.approx(abs(v_m), rel=0.01, abs=0.15 * k_v), k  # |pm| · k_v = |v_M|, 0.1 mm drafting
+        assert math.degrees(abs(np.angle(drawn / complex(v_m)))) < 1.0, k  # along v_M
+        pole = re.search(r'<g id="vel-pole">\s*<path d="M ([-0-9.]+) ([-0-9.]+)', svg)
+        poles.add(pole.groups())
+    assert len(poles) == 1  # the pole at one place on one canvas: the plan grows and shrinks about it
+    sizes = {re.search(r'viewBox="([^"]+)"', f).group(1) for f in data["frames"]}
+    assert len(sizes) == 1
+
+
+def test_the_page_is_the_same_bytes_every_time(animation, four_bar):
+    assert animate(four_bar, N).html == animation.html
+
+
+def test_the_page_speaks_the_readers_language(four_bar):
+    text = animate(four_bar, 3, lang="sr").html
+    assert '<html lang="sr">' in text
+    for words in ("Покрени", "Вредности у овом положају", "План брзина", "План убрзања", "Кинематска шема", "графички", "аналитички"):
+        assert words in text
+    assert "Play" not in text and "Velocity plan" not in text
+    data = json.loads(re.search(r'id="plans-data">(.*?)</script>', text, flags=re.S).group(1))
+    assert data["labels"][1].startswith("Положај 1 (2/3): φ₂ = ")
+    assert any("," in cell[1] for cell in data["values"][1][1:])  # decimal comma
+    assert not any(re.search(r"\d\.\d", cell[1]) for cell in data["values"][1])
+
+
+def test_a_position_that_is_not_solved_says_why(tmp_path):
+    scene = plans.load(plans.example_path("rocker-limit"))
+    anim = animate(scene, 12)
+    data = json.loads(re.search(r'id="plans-data">(.*?)</script>', anim.html, flags=re.S).group(1))
+    unsolved = [r.index for r in anim.run.runs if not r.ok]
+    assert unsolved and len(unsolved) < 12
+    k = unsolved[0]
+    assert "mech-not-solved" in data["frames"][k] and "not solved at this position" in data["frames"][k]
+    assert all(cell == ["—", "—"] for cell in data["values"][k][1:])
+    assert data["cursors"]["cursor-omega"][k] is None  # the diagrams do not show it
+    solved = next(r.index for r in anim.run.runs if r.ok)
+    assert data["cursors"]["cursor-omega"][solved] is not None
+
+
+def test_the_gif_has_a_frame_per_position(animation):
+    from io import BytesIO
+
+    from PIL import Image
+
+    data = animation.gif(width_px=480)
+    image = Image.open(BytesIO(data))
+    assert image.format == "GIF" and image.n_frames == N
+    assert image.size[0] == 480
+    assert image.info["duration"] == pytest.approx(6000 / N, abs=10)  # a cycle in 6 s
+
+
+def test_the_mp4_has_a_frame_per_position_and_the_same_bytes_every_time(animation, tmp_path):
+    import imageio_ffmpeg
+
+    data = animation.mp4(width_px=320)
+    assert data[4:8] == b"ftyp"
+    path = tmp_path / "a.mp4"
+    path.write_bytes(data)
+    frames, seconds = imageio_ffmpeg.count_frames_and_secs(str(path))
+    assert frames == N and seconds == pytest.approx(6.0, abs=0.2)
+    assert animation.mp4(width_px=320) == data
+
+
+def test_the_command_writes_the_page_and_refuses_an_unknown_suffix(tmp_path, capsys):
+    out = tmp_path / "page.html"
+    assert main(["animate", "--example", "slider-crank", "--positions", "4", "-o", str(out)]) == 0
+    assert capsys.readouterr().out.strip() == str(out)
+    text = out.read_text(encoding="utf-8")
+    assert text.startswith("<!DOCTYPE html>") and 'max="3"' in text
+    bad = tmp_path / "page.avi"
+    assert main(["animate", "--example", "slider-crank", "-o", str(bad)]) == 2
+    err = capsys.readouterr().err
+    assert str(bad) in err and ".html" in err and ".gif" in err and ".mp4" in err
+    assert not bad.exists()
+
+
+def test_the_command_keeps_given_scales(tmp_path):
+    out = tmp_path / "page.html"
+    assert main(["animate", "--example", "four-bar", "--positions", "3", "--k-v", "0.05", "-o", str(out)]) == 0
+    assert "k_v = 0.05" in out.read_text(encoding="utf-8")
+
+
+def test_in_a_notebook_a_solution_animates_as_the_same_page(four_bar):
+    shown = plans.construct(four_bar).animate(3)
+    assert isinstance(shown, Animation)
+    frame = shown._repr_html_()
+    srcdoc = re.fullmatch(r'<iframe [^>]*srcdoc="(.*)"></iframe>', frame, flags=re.S).group(1)
+    assert html.unescape(srcdoc) == shown.html
+    assert plans.solve(four_bar).animate(3).html == shown.html  # an analytic solution the same
+
+
+def test_a_run_animates_at_its_own_scales(four_bar):
+    from plans.positions import run_positions
+
+    run = run_positions(four_bar, 4, k_v=0.1)
+    shown = run.animate()
+    assert shown.run is run
+    assert "k_v = 0.1" in shown.html
