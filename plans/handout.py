@@ -42,7 +42,7 @@ from .graphical.scales import PAGE_MANTISSAS, round_up
 from .i18n import check_language, reason_text, term
 from .scene import FRAME, Crank, Scene
 
-__all__ = ["HandoutError", "write_handout", "handout_pages", "scene_data_lines", "handout_scales", "round_up", "HANDOUT_MANTISSAS"]
+__all__ = ["HandoutError", "write_handout", "handout_pages", "scene_data_lines", "cycle_lines", "handout_scales", "round_up", "HANDOUT_MANTISSAS"]
 
 class HandoutError(PlansError, ValueError):
     """A handout that cannot be written as asked (such as several pages into one SVG)."""
@@ -110,6 +110,23 @@ def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
     fixed += [f"{line.name}: ∠{_fmt(math.degrees(line.angle))}°" for line in frame.lines.values()]
     third = f"{term('fixed_points', lang)} [{unit}]:  " + ",  ".join(fixed) if fixed else ""
     return [line for line in (first, second, third) if line]
+
+
+def cycle_lines(run, lang: str = "en") -> list[str]:
+    """What the cover states of a cycle (issue 19): the driver's law, the Grashof class of every four-bar loop,
+    the output's stroke H (or swing ψ), θ, K and the working stroke (:mod:`plans.motion`)."""
+    from .motion import four_bar_loops
+
+    lines = []
+    if run.motion is not None:
+        lines.append(run.motion.law.describe(lang, run.scene.driver.link))
+    for loop in four_bar_loops(run.scene, run.structure):
+        turning = loop.turning_links()
+        turns = f"{', '.join(turning)}: {term('turn_fully', lang)}" if turning else term("none_turns", lang)
+        lines.append(f"{term('grashof_class', lang)} {loop.group}: {term(loop.grashof.kind, lang)} ({turns})")
+    if run.strokes is not None:
+        lines += run.strokes.summary(lang)
+    return lines
 
 
 def _table(run, lang: str) -> list[list[str]]:
@@ -392,6 +409,8 @@ def handout_pages(
     progress=None,
     record: list | None = None,
     centres: bool = False,
+    law: str | None = None,
+    start: str = "output",
 ) -> list[tuple[str, object]]:
     """The handout's pages as (name, matplotlib Figure) pairs, in order.
 
@@ -415,7 +434,7 @@ def handout_pages(
     given = {"k_l": k_l if k_l is not None else scene.scales.k_l,
              "k_v": k_v if k_v is not None else scene.scales.k_v,
              "k_a": k_a if k_a is not None else scene.scales.k_a}
-    run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=None)
+    run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=None, law=law, start=start)
     # slots drawn over the cycle's travel; a frame guide (a ram's guideway) around the block's present place on
     # a position page: over its whole stroke it would take the velocity plan's room (the cover draws the stroke)
     run = replace(run, runs=tuple(
@@ -472,7 +491,7 @@ def handout_pages(
     if multi and solved:
         listing = [f"{r.index}:  {r.label}" + ("" if r.ok else f"  ({term('not_solved', lang)}: {r.brief(lang)})") for r in run.runs]
         cover_k = _cover_scale(run, math.ceil(len(listing) / 3), fixed.get("k_l"))
-        cover_lines = data + ["§" + formula]  # k_l stated under the plan of positions
+        cover_lines = data + cycle_lines(run, lang) + ["§" + formula]  # k_l stated under the plan of positions
         pages.append(("cover", draw_cover_page(run, lang=lang, header_lines=cover_lines, positions_lines=listing, footer=footer, k_l=cover_k)))
     for number, r in enumerate(run.runs, start=1):
         say(f"{term('position', lang)} {number}/{len(run.runs)}")
@@ -511,7 +530,8 @@ def handout_pages(
             pages.append((f"centres-{r.index}", draw_centres_page(r, lang=lang, header_lines=check_head, footer=footer)))
 
     if multi and solved:
-        for name, fig in draw_cycle_diagrams(run.cycle, marked=run.positions, lang=lang, components=components):
+        marked = run.motion if run.motion is not None else run.positions
+        for name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense):
             pages.append((f"diagram-{name}", fig))
     # page numbers
     total = len(pages)
@@ -533,6 +553,8 @@ def write_handout(
     components: bool = False,
     progress=None,
     centres: bool = False,
+    law: str | None = None,
+    start: str = "output",
 ) -> list[Path]:
     """Write the handout of a scene: a PDF of A4 pages, or SVG pages.
 
@@ -567,6 +589,13 @@ def write_handout(
         A page more after each position's: the instant centres (Kennedy's
         theorem, :mod:`plans.centres`) drawn on the mechanism with the circle
         diagram, and ω, v from them against the analytic values.
+    law : str, optional
+        The driver's law over the cycle (``"constant"``, ``"uniform"``,
+        ``"harmonic"``; :func:`plans.motion.driver_law`); None: the scene's
+        ``[driver] law`` or the default.  Stated on the cover and the diagrams.
+    start : {"output", "scene"}
+        Position 0 of a count: the extreme position of the output link that
+        starts its working stroke (default), or the scene's own position.
 
     Returns
     -------
@@ -596,7 +625,7 @@ def write_handout(
         raise HandoutError(str(exc)) from None
     if positions is None:
         _check_solvable(scene)
-    pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components, progress=progress, centres=centres)
+    pages = handout_pages(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components, progress=progress, centres=centres, law=law, start=start)
     say = progress or (lambda text: None)
     total = len(pages)
     if suffix == ".pdf":

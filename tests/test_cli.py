@@ -1,6 +1,7 @@
 """The command line: output, exit status, messages, and files left alone on failure."""
 
 import csv
+import math
 import io
 import json
 import subprocess
@@ -97,11 +98,13 @@ def test_missing_scene_argument(capsys):
 
 def test_sweep_writes_one_row_per_position(capsys, tmp_path):
     target = tmp_path / "sweep.csv"
-    status, _, _ = run(capsys, "sweep", "--example", "six-bar", "--steps", "36", "-o", str(target))
+    status, out, _ = run(capsys, "sweep", "--example", "six-bar", "--steps", "36", "-o", str(target), "--start", "scene")
     assert status == 0
+    assert "driver law: constant speed: ω₂ = −10 rad/s, ε₂ = 0" in out  # the law stated beside the file written
     rows = list(csv.DictReader(io.StringIO(target.read_text())))
     assert len(rows) == 36
     assert float(rows[0]["driver_phi_deg"]) == pytest.approx(55.0)
+    assert float(rows[0]["t"]) == 0 and float(rows[1]["t"]) == pytest.approx(math.radians(10) / 10)
     assert float(rows[1]["driver_phi_deg"]) == pytest.approx(45.0)  # ω = −10 rad/s: the sweep runs clockwise
     assert all(row["assembled"] == "1" for row in rows)
     assert "RPR(5,6).condition" in rows[0] and "E.coriolis_x" in rows[0]
