@@ -244,6 +244,7 @@ def build_parser() -> argparse.ArgumentParser:
     _scene_argument(animate)
     animate.add_argument("--positions", type=_count, default=36, metavar="N", help="N positions equally spaced over the driver's cycle (default 36; position 0 is the scene's own)")
     animate.add_argument("-o", "--output", metavar="FILE", required=True, help="page.html (opens in a browser, no server or network), anim.gif or anim.mp4")
+    _law_arguments(animate)
     _language_argument(animate)
     _scale_arguments(animate)
 
@@ -795,7 +796,8 @@ def _animate(args) -> int:
 
     check_suffix(args.output)  # before any work
     scene = at_page_precision(_load(args), args.precision)
-    run = run_positions(scene, args.positions, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=scene.scales.precision)
+    run = run_positions(scene, args.positions, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=scene.scales.precision,
+                        law=args.law, start=args.start)
     for message in run.skipped_messages():
         _warn(message)
     path = Animation(run, lang=args.lang).save(args.output)

@@ -19,6 +19,7 @@ import pytest
 import plans
 from plans.cli import main
 from plans.lecture import Animation, animate
+from plans.motion import driver_cycle
 
 N = 6
 
@@ -45,8 +46,16 @@ def _number(text: str) -> float:
 
 
 def _angles(scene, n):
+    """A crank's n positions of a turn in the sense of ω, 360°/n apart, from the cycle's first (plans.motion's
+    extreme position of the output link, tested there)."""
+    first = float(driver_cycle(scene, n).positions[0])
     sense = -1.0 if scene.driver.omega < 0 else 1.0
-    return [scene.driver.phi + sense * 2 * math.pi * k / n for k in range(n)]
+    return [first + sense * 2 * math.pi * k / n for k in range(n)]
+
+
+def _solved(scene, n):
+    """The analytic solution at the cycle's positions with the driver's rates under its law (plans.motion)."""
+    return driver_cycle(scene, n).solve()
 
 
 def test_the_page_has_a_frame_a_label_and_values_for_every_position(animation, data, four_bar):
@@ -59,13 +68,15 @@ def test_the_page_has_a_frame_a_label_and_values_for_every_position(animation, d
 def test_the_values_are_the_analytic_ones_at_each_position(animation, data, four_bar):
     rows = re.findall(r"<tr><td>(.*?)</td><td class=\"graphical\">", animation.html)
     assert rows[0] == "φ<sub>2</sub>" and "ω<sub>3</sub>" in rows and "|v<sub>M</sub>|" in rows
+    solved = _solved(four_bar, N)
     for k, phi in enumerate(_angles(four_bar, N)):
-        solved = plans.solve(four_bar.at(phi))
         expected = {
-            "ω<sub>3</sub>": solved.links["3"].omega[0],
-            "ε<sub>4</sub>": solved.links["4"].epsilon[0],
-            "|v<sub>M</sub>|": abs(solved.points["M"].v[0]),
-            "|a<sub>B</sub>|": abs(solved.points["B"].a[0]),
+            "ω<sub>3</sub>": solved.links["3"].omega[k],
+            "ε<sub>4</sub>": solved.links["4"].epsilon[k],
+            "|v<sub>M</sub>|": abs(solved.points["M"].v[k]),
+            "|a<sub>B</sub>|": abs(solved.points["B"].a[k]),
+            "ε<sub>2</sub>": 0.0,  # the default law over a cycle: constant speed (the scene's ε is its instant's)
+            "ω<sub>2</sub>": four_bar.driver.omega,
         }
         cells = dict(zip(rows, data["values"][k]))
         for row, value in expected.items():
@@ -73,6 +84,7 @@ def test_the_values_are_the_analytic_ones_at_each_position(animation, data, four
             assert analytic == pytest.approx(value, rel=5e-4, abs=1e-9), (k, row)
             assert graphical == pytest.approx(value, rel=0.02, abs=0.02 * abs(value) + 1e-6), (k, row)  # read off the plans at 0.1 mm
         assert _number(cells["φ<sub>2</sub>"][0]) == pytest.approx(math.degrees(phi) % 360, abs=0.05)
+        assert _number(cells["t"][1]) == pytest.approx(k * 2 * math.pi / N / abs(four_bar.driver.omega), abs=1e-4)  # t = Δφ/ω
 
 
 def _shaft(svg: str, gid: str) -> complex:
@@ -86,11 +98,12 @@ def _shaft(svg: str, gid: str) -> complex:
 
 def test_one_k_v_for_every_frame_and_the_pole_stays_put(animation, data, four_bar):
     k_v = animation.run.scales["k_v"]
+    solved = _solved(four_bar, N)
     poles = set()
     for k, phi in enumerate(_angles(four_bar, N)):
         svg = data["frames"][k]
         assert "(m/s)/mm" in svg
-        v_m = plans.solve(four_bar.at(phi)).points["M"].v[0]
+        v_m = solved.points["M"].v[k]
         drawn = _shaft(svg, "vel-absolute-v_M")
         assert abs(drawn) * k_v == pytest.approx(abs(v_m), rel=0.01, abs=0.15 * k_v), k  # |pm| · k_v = |v_M|, 0.1 mm drafting
         assert math.degrees(abs(np.angle(drawn / complex(v_m)))) < 1.0, k  # along v_M
@@ -118,14 +131,17 @@ def test_the_page_speaks_the_readers_language(four_bar):
 
 
 def test_a_position_that_is_not_solved_says_why(tmp_path):
-    scene = plans.load(plans.example_path("rocker-limit"))
-    anim = animate(scene, 12)
+    scene = plans.load(plans.example_path("rocker-limit"))  # its input swings between about ±56°
+    anim = animate(scene, "0,30,60,120,180 deg")
     data = json.loads(re.search(r'id="plans-data">(.*?)</script>', anim.html, flags=re.S).group(1))
     unsolved = [r.index for r in anim.run.runs if not r.ok]
-    assert unsolved and len(unsolved) < 12
+    assert unsolved == [2, 3, 4]
     k = unsolved[0]
     assert "mech-not-solved" in data["frames"][k] and "not solved at this position" in data["frames"][k]
-    assert all(cell == ["—", "—"] for cell in data["values"][k][1:])
+    rows = re.findall(r"<tr><td>(.*?)</td><td class=\"graphical\">", anim.html)
+    cells = dict(zip(rows, data["values"][k]))
+    assert rows[:2] == ["φ<sub>2</sub>", "t"] and len(rows) > 4
+    assert all(cells[row] == ["—", "—"] for row in rows[2:])  # the driver's angle and time are given; nothing else
     assert data["cursors"]["cursor-omega"][k] is None  # the diagrams do not show it
     solved = next(r.index for r in anim.run.runs if r.ok)
     assert data["cursors"]["cursor-omega"][solved] is not None

@@ -169,11 +169,12 @@ def cycle_axis(analytic, marked=None, cycle=None) -> tuple[np.ndarray, str, list
     return x, label, marks
 
 
-def marks_shown(analytic, marked) -> list[tuple[int, float]]:
-    """Where the diagrams of :func:`plot_cycle` show each marked driver position: (number, x) on their horizontal
-    axis, for those they show (a crank's sweep that assembles over one short arc is shown over that arc only;
-    see :func:`cycle_axis` for the axis).  A cursor that follows the positions is drawn at these x."""
-    return list(_cycle_view(analytic, marked)[3])
+def marks_shown(analytic, marked, cycle=None) -> list[tuple[int, float]]:
+    """Where the diagrams of :func:`plot_cycle` (with the same *cycle*) show each marked position: (number, x)
+    on their horizontal axis, for those they show (a crank's sweep that assembles over one short arc is shown
+    over that arc only; a rocker input's swing against time; see :func:`cycle_axis`).  A cursor that follows
+    the positions is drawn at these x."""
+    return list(_cycle_view(analytic, marked, cycle)[3])
 
 
 #: A crank's sweep that assembles over at most this arc [°] is drawn over that arc (and a margin), not the whole turn.

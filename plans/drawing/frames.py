@@ -237,11 +237,11 @@ def draw_cursor_diagrams(run, quantities, *, lang: str = "en", columns: int = 2,
             row, col = divmod(n, columns)
             left, bottom = col * cw + 17.0, height - (row + 1) * ch + 11.0
             ax = fig.add_axes([left / width, bottom / height, (cw - 17.0 - 32.0) / width, (ch - 17.0) / height])
-            plot_cycle(run.cycle, quantity, ax, lang=lang)
+            plot_cycle(run.cycle, quantity, ax, lang=lang, cycle=run.dense)
             ticks = ax.get_xticks()
             if len(ticks) > 7:  # every 60° rather than 30°: a diagram of the page is narrower than a handout's
                 ax.set_xticks(ticks[::2])
-            marks = dict(marks_shown(run.cycle, run.positions))
+            marks = dict(marks_shown(run.cycle, run.motion if run.motion is not None else run.positions, cycle=run.dense))
             shown = [marks.get(r.index) if r.ok else None for r in run.runs]
             first = next((x for x in shown if x is not None), None)
             gid = f"cursor-{quantity}"

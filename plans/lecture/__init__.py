@@ -15,7 +15,11 @@ one k_l, k_v, k_a for all of them — and returns an :class:`Animation`:
 * in a notebook the Animation shows itself: its ``_repr_html_`` is the same page
   (in an inline frame, so that its keys and ids stay its own).
 
-The command line: ``plans animate SCENE -o page.html [--positions N] [--lang sr]``.
+The positions and the driver's rates follow the driver's law over the cycle (:mod:`plans.motion`: constant
+speed by default, a harmonic swing for a crank that cannot turn fully), from the output link's extreme
+position; the page states the law.
+
+The command line: ``plans animate SCENE -o page.html [--positions N] [--lang sr] [--law L] [--start S]``.
 
 >>> import plans
 >>> from plans.lecture import animate
@@ -132,6 +136,8 @@ class Animation:
         from .._text import decimal_comma
 
         subtitle = decimal_comma(f"{self.run.structure.formula} · {len(self.run.runs)} {term('positions', self.lang)} · {scales}", self.lang)
+        if self.run.motion is not None:  # the driver's law over the cycle, in its own words and numbers
+            subtitle += " · " + self.run.motion.law.describe(self.lang, self.run.scene.driver.link)
         return lecture_html(
             title=self.run.scene.title,
             subtitle=subtitle,
@@ -202,7 +208,7 @@ __all__ += ["check_suffix"]
 
 
 def animate(scene, positions=DEFAULT_POSITIONS, *, lang: str = "en", k_l: float | None = None, k_v: float | None = None,
-            k_a: float | None = None, precision: float | None = None) -> Animation:
+            k_a: float | None = None, precision: float | None = None, law: str | None = None, start: str = "output") -> Animation:
     """The mechanism of *scene* and its plans at *positions* of its cycle, as an :class:`Animation`.
 
     Parameters
@@ -218,6 +224,11 @@ def animate(scene, positions=DEFAULT_POSITIONS, *, lang: str = "en", k_l: float 
         position (one set for all frames).
     precision : float, optional
         Drafting precision [mm] of the plans' readings (default 0.1 mm, as on the sheets; 0: exact).
+    law : str, optional
+        The driver's law over the cycle (:func:`plans.motion.driver_law`: ``"constant"``, ``"uniform"``,
+        ``"harmonic"``); None: the scene's ``[driver] law``, else the default.
+    start : {"output", "scene"}
+        Position 0: the output link's extreme position that starts its working stroke, or the scene's own.
 
     Raises
     ------
@@ -228,5 +239,5 @@ def animate(scene, positions=DEFAULT_POSITIONS, *, lang: str = "en", k_l: float 
 
     check_language(lang)
     scene = at_page_precision(scene, precision)
-    run = run_positions(scene, positions, k_l=k_l, k_v=k_v, k_a=k_a, precision=scene.scales.precision)
+    run = run_positions(scene, positions, k_l=k_l, k_v=k_v, k_a=k_a, precision=scene.scales.precision, law=law, start=start)
     return Animation(run, lang=lang)

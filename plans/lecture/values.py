@@ -41,12 +41,14 @@ def _sub(name: str) -> str:
 
 
 def value_rows(run) -> list[Row]:
-    """The rows of the table of *run*: the driver's position, then ω and ε of each link (blocks that only
+    """The rows of the table of *run*: the driver's position (and the time t under the driver's law), then ω and ε of each link (blocks that only
     slide are left out), |v| and |a| of each reported point, and vʳ, aʳ, |aᵏ| of each prismatic pair."""
     scene = run.scene
     driver = scene.driver
     crank = isinstance(driver, Crank)
     rows = [Row("driver", driver.link, "phi" if crank else "s", ("φ" if crank else "s") + _sub(driver.link), "°" if crank else "mm")]
+    if getattr(run, "motion", None) is not None:  # the time under the driver's law (plans.motion), from position 0
+        rows.append(Row("time", "", "t", "t", "s"))
     accelerations = any(r.ok and r.graphical.acceleration_plan is not None for r in run.runs)
     for name in sorted((n for n in scene.links if not scene.bodies[n].block), key=lambda n: (0, int(n)) if n.isdigit() else (1, 0)):
         rows.append(Row("links", name, "omega", "ω" + _sub(name), _UNITS["omega"]))
@@ -89,6 +91,10 @@ def position_values(run, rows: list[Row], lang: str = "en") -> list[list[list[st
         for row in rows:
             if row.section == "driver":
                 text = _driver_value(r, lang)
+                cells.append([text, text])
+                continue
+            if row.section == "time":
+                text = decimal_comma(f"{float(run.motion.t[r.index]):.4f}", lang)
                 cells.append([text, text])
                 continue
             c = found.get((row.section, row.name, row.quantity)) if r.ok else None
