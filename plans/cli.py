@@ -242,7 +242,7 @@ def build_parser() -> argparse.ArgumentParser:
         "plans that move: a lecture page (one self-contained HTML file) of the mechanism and its plans over the cycle, or a GIF or MP4 for slides",
     )
     _scene_argument(animate)
-    animate.add_argument("--positions", type=_count, default=36, metavar="N", help="N positions equally spaced over the driver's cycle (default 36; position 0 is the scene's own)")
+    animate.add_argument("--positions", type=_count, default=36, metavar="N", help="N positions of the driver's cycle under its law (default 36; see --law and --start)")
     animate.add_argument("-o", "--output", metavar="FILE", required=True, help="page.html (opens in a browser, no server or network), anim.gif or anim.mp4")
     _law_arguments(animate)
     _language_argument(animate)
@@ -791,17 +791,14 @@ def _progress_done(args) -> None:
 
 
 def _animate(args) -> int:
-    from .lecture import Animation, check_suffix
-    from .positions import at_page_precision, run_positions
+    from .lecture import animate, check_suffix
 
     check_suffix(args.output)  # before any work
-    scene = at_page_precision(_load(args), args.precision)
-    run = run_positions(scene, args.positions, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=scene.scales.precision,
-                        law=args.law, start=args.start)
-    for message in run.skipped_messages():
+    animation = animate(_load(args), args.positions, lang=args.lang, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a,
+                        precision=args.precision, law=args.law, start=args.start)
+    for message in animation.run.skipped_messages():
         _warn(message)
-    path = Animation(run, lang=args.lang).save(args.output)
-    print(path)
+    print(animation.save(args.output))
     return 0
 
 

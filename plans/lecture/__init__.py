@@ -221,7 +221,7 @@ def animate(scene, positions=DEFAULT_POSITIONS, *, lang: str = "en", k_l: float 
         The reader's language (en, sr, ru, bg, sl).
     k_l, k_v, k_a : float, optional
         Scale factors; those not given are the round factors that fit every
-        position (one set for all frames).
+        position, as for the sheets of ``plans draw --positions`` (one set for all frames).
     precision : float, optional
         Drafting precision [mm] of the plans' readings (default 0.1 mm, as on the sheets; 0: exact).
     law : str, optional

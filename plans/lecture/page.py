@@ -37,28 +37,31 @@ SPEEDS = (0.25, 0.5, 1.0, 2.0)
 
 STYLE = """
 *{box-sizing:border-box}
-body{margin:0;padding:0.6rem 1rem;font-family:"DejaVu Sans","Segoe UI",Arial,sans-serif;color:#111;background:#f6f6f4}
-h1{font-size:1.15rem;margin:0 0 0.15rem}
-header p{margin:0;color:#444;font-size:0.9rem}
-#stage{background:#fff;border:1px solid #ccc;margin:0.5rem 0;padding:0.3rem}
-#frame svg{display:block;width:100%;height:auto;max-height:60vh}
-#controls{display:flex;flex-wrap:wrap;align-items:center;gap:0.5rem;margin:0.3rem 0}
+body{margin:0;padding:0.5rem 0.9rem;font-family:"DejaVu Sans","Segoe UI",Arial,sans-serif;color:#111;background:#f6f6f4}
+h1{font-size:1.1rem;margin:0 0 0.1rem}
+header p{margin:0;color:#444;font-size:0.82rem}
+#top{display:flex;flex-wrap:wrap;gap:0.8rem;align-items:flex-start;margin-top:0.4rem}
+#left{flex:1 1 40rem;min-width:0}
+#stage{background:#fff;border:1px solid #ccc;padding:0.3rem}
+#frame svg{display:block;width:100%;height:auto;max-height:68vh}
+#controls{display:flex;flex-wrap:wrap;align-items:center;gap:0.5rem;margin:0.4rem 0 0.2rem}
 #controls button{font:inherit;font-size:1rem;min-width:2.6rem;padding:0.25rem 0.6rem;cursor:pointer}
 #play{min-width:7.5rem}
-#slider{flex:1 1 14rem;min-width:10rem}
-#position{font-weight:bold;min-width:15rem}
-#keys{color:#555;font-size:0.8rem;margin:0 0 0.4rem}
-#lower{display:flex;flex-wrap:wrap;gap:1rem;align-items:flex-start}
-#lower section{background:#fff;border:1px solid #ccc;padding:0.4rem 0.6rem}
-#lower h2{font-size:0.95rem;margin:0 0 0.3rem}
-#values table{border-collapse:collapse;font-size:0.88rem}
-#values th,#values td{padding:0.12rem 0.55rem;border-bottom:1px solid #e4e4e4;text-align:right;white-space:nowrap}
+#slider{flex:1 1 12rem;min-width:8rem}
+#position{font-weight:bold;min-width:14rem}
+#keys{color:#555;font-size:0.78rem;margin:0}
+#lower{display:flex;flex-wrap:wrap;gap:0.8rem;align-items:flex-start;margin-top:0.8rem}
+section{background:#fff;border:1px solid #ccc;padding:0.4rem 0.6rem}
+h2{font-size:0.95rem;margin:0 0 0.3rem}
+#values-box{flex:0 0 auto}
+#values{border-collapse:collapse;font-size:0.85rem}
+#values th,#values td{padding:0.08rem 0.5rem;border-bottom:1px solid #e4e4e4;text-align:right;white-space:nowrap}
 #values th:first-child,#values td:first-child{text-align:left}
 #values td.unit{text-align:left;color:#555}
-#diagrams-box{flex:1 1 32rem}
+#diagrams-box{flex:1 1 36rem}
 #diagrams svg{display:block;width:100%;height:auto}
 #legend svg{display:block;max-width:100%;height:auto}
-.note{color:#555;font-size:0.8rem;margin:0.2rem 0 0}
+.note{color:#555;font-size:0.78rem;margin:0.2rem 0 0}
 """
 
 SCRIPT = r"""
@@ -233,6 +236,8 @@ def lecture_html(
 <p>{esc(term("lecture_title", lang))} · {esc(subtitle)}</p>
 </header>
 <main>
+<div id="top">
+<div id="left">
 <div id="stage"><div id="frame" aria-live="off"></div></div>
 <div id="controls">
 <button id="previous" type="button" title="{esc(term("lecture_previous", lang))}" aria-label="{esc(term("lecture_previous", lang))}">◀</button>
@@ -243,12 +248,14 @@ def lecture_html(
 <label>{esc(term("lecture_speed", lang))} <select id="speed">{speeds}</select></label>
 </div>
 <p id="keys">{esc(term("lecture_keys", lang))}</p>
-<div id="lower">
+</div>
 <section id="values-box"><h2>{esc(term("lecture_values", lang))}</h2>
 <table id="values"><thead><tr>{"".join(f"<th>{esc(h)}</th>" for h in heads)}</tr></thead>
 <tbody>
 {body_rows}
 </tbody></table></section>
+</div>
+<div id="lower">
 {diagrams_box}
 {legend_box}
 </div>
