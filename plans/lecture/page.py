@@ -41,7 +41,7 @@ body{margin:0;padding:0.5rem 0.9rem;font-family:"DejaVu Sans","Segoe UI",Arial,s
 h1{font-size:1.1rem;margin:0 0 0.1rem}
 header p{margin:0;color:#444;font-size:0.82rem}
 #top{display:flex;flex-wrap:wrap;gap:0.8rem;align-items:flex-start;margin-top:0.4rem}
-#left{flex:1 1 40rem;min-width:0}
+#left{flex:1 1 56rem;min-width:0}
 #stage{background:#fff;border:1px solid #ccc;padding:0.3rem}
 #frame svg{display:block;width:100%;height:auto;max-height:68vh}
 #controls{display:flex;flex-wrap:wrap;align-items:center;gap:0.5rem;margin:0.4rem 0 0.2rem}
@@ -87,9 +87,8 @@ SCRIPT = r"""
   function setHash(k) {
     var hash = "#position=" + k;
     if (location.hash === hash) { return; }
-    try { history.replaceState(null, "", hash); } catch (e) {
-      try { location.replace(hash); } catch (e2) { /* a page shown where its address cannot change */ }
-    }
+    // a page shown where its address cannot change (a notebook's inline frame, about:srcdoc) keeps its address
+    try { history.replaceState(null, "", hash); } catch (e) { return; }
   }
 
   function hashPosition() {
