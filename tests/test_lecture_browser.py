@@ -270,3 +270,22 @@ def test_a_screenshot_of_the_page_shows_the_drawings(browser, page, tmp_path):
 
     dark = int((np.asarray(region) < 100).sum())
     assert dark > 2000  # ink of the drawings, not a blank stage
+
+
+def test_in_a_notebook_the_page_plays_inside_its_frame(browser, tmp_path):
+    import plans
+
+    shown = plans.construct(plans.load(plans.example_path("four-bar"))).animate(4)
+    notebook = tmp_path / "notebook.html"
+    notebook.write_text(f"<!DOCTYPE html><html><body><p>a cell</p>{shown._repr_html_()}</body></html>", encoding="utf-8")
+    browser.get(notebook.as_uri())
+    browser.switch_to.frame(browser.find_element("tag name", "iframe"))
+    try:
+        assert _shown(browser) == 0
+        for expected in (1, 2):  # the page's address cannot change there (about:srcdoc): it must not reload itself
+            browser.find_element("id", "next").click()
+            assert _shown(browser) == expected
+        assert browser.execute_script("return document.querySelectorAll('#frame [id^=\"vel-absolute-\"]').length") > 0
+    finally:
+        browser.switch_to.default_content()
+    assert _severe(browser) == []
