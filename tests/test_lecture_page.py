@@ -206,3 +206,20 @@ def test_a_run_animates_at_its_own_scales(four_bar):
     shown = run.animate()
     assert shown.run is run
     assert "k_v = 0.1" in shown.html
+
+
+def test_no_two_elements_of_the_page_share_an_id(animation, data):
+    from collections import Counter
+
+    static = animation.html.split('id="plans-data"')[0]
+    for frame in data["frames"]:  # one frame at a time is in the page beside the diagrams and the legend
+        ids = re.findall(r' id="([^"]+)"', static + frame)
+        assert [i for i, n in Counter(ids).items() if n > 1] == []
+    referred = set(re.findall(r'url\(#([^)]+)\)|href="#([^"]+)"', animation.html))
+    assert all(f' id="{a or b}"' in animation.html for a, b in referred)  # what is referred to is there
+
+
+def test_a_cycle_with_no_position_solved_is_refused_naming_the_scene():
+    scene = plans.load(plans.example_path("rocker-limit"))  # its input swings between about ±56°
+    with pytest.raises(plans.PlansError, match=r"rocker-limit\.toml: the mechanism is not solved at any of the 2 positions"):
+        animate(scene, "100,120 deg")

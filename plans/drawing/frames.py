@@ -31,6 +31,8 @@ headings, ``mech-not-solved`` of the reason a position is not solved.
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from ..graphical.plan import KINDS
@@ -204,14 +206,22 @@ class CycleFrames:
         return pixels
 
 
-def frame_svg_text(data: bytes) -> str:
-    """An SVG of :mod:`plans.drawing.svg` as text to put inside a page: no XML declaration, DOCTYPE or metadata."""
+#: The ids matplotlib gives what has no gid of ours (``figure_1``, ``axes_2``, ``text_5`` …): the same in every SVG.
+_AUTOMATIC_ID = re.compile(r' id="((?:figure|axes|patch|text|line2d|legend|xtick|ytick|matplotlib\.axis|PathCollection|PolyCollection|LineCollection|QuadMesh)_\d+)"')
+
+
+def frame_svg_text(data: bytes, name: str | None = None) -> str:
+    """An SVG of :mod:`plans.drawing.svg` as text to put inside a page: no XML declaration, DOCTYPE or metadata;
+    with *name*, matplotlib's own ids (``figure_1`` …) prefixed by it, so that SVGs side by side on one page do not
+    share an id (the ids of plans' drawings, ``mech-…``, ``vel-…``, and those referred to are kept)."""
     text = data.decode("utf-8")
     start = text.index("<svg")
     text = text[start:]
     head, _, rest = text.partition("<metadata>")
     if rest:
         text = head + rest.partition("</metadata>")[2]
+    if name:
+        text = _AUTOMATIC_ID.sub(lambda m: f' id="{name}-{m.group(1)}"', text)
     return text.strip()
 
 

@@ -128,7 +128,7 @@ class Animation:
         from .values import column_heads, position_values, value_rows
 
         frames = self.frames
-        svgs = [frame_svg_text(frames.svg(k)) for k in range(len(frames))]
+        svgs = [frame_svg_text(frames.svg(k), "frame") for k in range(len(frames))]
         quantities = diagram_quantities(self.run)
         diagrams, cursors = draw_cursor_diagrams(self.run, quantities, lang=self.lang) if quantities else (None, {})
         rows = value_rows(self.run)
@@ -147,9 +147,9 @@ class Animation:
             rows=rows,
             values=position_values(self.run, rows, self.lang),
             heads=column_heads(self.lang),
-            diagrams=frame_svg_text(render_svg(diagrams)) if diagrams is not None else None,
+            diagrams=frame_svg_text(render_svg(diagrams), "diagrams") if diagrams is not None else None,
             cursors=cursors,
-            legend=frame_svg_text(render_svg(draw_plan_legend(self.run, lang=self.lang))),
+            legend=frame_svg_text(render_svg(draw_plan_legend(self.run, lang=self.lang)), "legend"),
         )
 
     def _pixels(self, width_px: int) -> list:
