@@ -403,7 +403,7 @@ def _solve(args) -> int:
         scenes = [scene]
     from .motion import cycle_summary, cycle_text
 
-    cycle = cycle_summary(scene)  # the law, Grashof classes, strokes: the same at every position asked for
+    cycle = cycle_summary(args.loaded_scene)  # the law, Grashof classes, strokes: the scene file's, at every position asked for
     documents, tables, solutions = [], [], []
     for k, one in enumerate(scenes):
         analytic = solve(one, warn_condition=args.warn_condition)

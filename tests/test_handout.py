@@ -36,7 +36,8 @@ def _write(path, scene, **options):
 def russian(tmp_path_factory):
     """The four-bar in two positions, in Russian: cover, 2 × (graphical, check), two diagram pages."""
     path = tmp_path_factory.mktemp("ru") / "four-bar.pdf"
-    assert _write(path, plans.load(plans.example_path("four-bar")), positions=2, lang="ru") == [path]
+    # from the scene's own angle (by default position 0 is the output's extreme position: test_motion_outputs.py)
+    assert _write(path, plans.load(plans.example_path("four-bar")), positions=2, lang="ru", start="scene") == [path]
     return pypdf.PdfReader(path)
 
 
@@ -68,6 +69,8 @@ def test_the_pages_of_a_multi_position_handout(russian):
         assert "Аналитическая проверка: метод комплексных чисел" in texts[check]
         assert "RRR(3,4)" in texts[check] and "величина" in texts[check]
     assert "Кинематические диаграммы за цикл" in texts[7] and "Звенья" in texts[7]
+    for page in (0, 7, 8):  # the driver's law over the cycle, on the cover and the diagrams (issue 19)
+        assert "закон движения ведущего звена: постоянная скорость" in texts[page]
     assert "Точки: скорость и ускорение" in texts[8]
     for number, text in enumerate(texts, start=1):
         assert f"стр. {number}/9" in text
