@@ -130,6 +130,7 @@ EXAMPLES = {
     "sweep": "plans sweep --example four-bar --steps 360 -o four-bar.csv --plot diagrams",
     "draw": "plans draw --example six-bar -o drawings\n  plans draw --example six-bar --positions 12 -o sheets --format png",
     "handout": "plans handout --example four-bar --positions 4 -o four-bar.pdf --lang sr",
+    "animate": "plans animate --example six-bar -o six-bar.html\n  plans animate --example four-bar --positions 72 -o four-bar.gif --lang sr",
     "bench": "plans bench --quick -o /tmp/bench",
     "forces": "plans forces --example slider-crank-loads\n  plans forces --example four-bar-loads --at \"0,90 deg\" --json\n  plans examples --loads",
     "examples": "plans examples\n  plans examples six-bar > my.toml\n  plans examples --loads",
@@ -258,6 +259,17 @@ def build_parser() -> argparse.ArgumentParser:
     _language_argument(forces)
     _warn_argument(forces)
     _scale_arguments(forces)
+    animate = _add_command(
+        commands,
+        "animate",
+        "plans that move: a lecture page (one self-contained HTML file) of the mechanism and its plans over the cycle, or a GIF or MP4 for slides",
+    )
+    _scene_argument(animate)
+    animate.add_argument("--positions", type=_count, default=36, metavar="N", help="N positions of the driver's cycle under its law (default 36; see --law and --start)")
+    animate.add_argument("-o", "--output", metavar="FILE", required=True, help="page.html (opens in a browser, no server or network), anim.gif or anim.mp4")
+    _law_arguments(animate)
+    _language_argument(animate)
+    _scale_arguments(animate)
 
     centres = commands.add_parser(
         "centres", help="every instant centre by Kennedy's theorem, ω and v from them; draws centres.svg"
@@ -895,6 +907,18 @@ def _progress_done(args) -> None:
         print("\r\033[K", end="", file=sys.stderr, flush=True)
 
 
+def _animate(args) -> int:
+    from .lecture import animate, check_suffix
+
+    check_suffix(args.output)  # before any work
+    animation = animate(_load(args), args.positions, lang=args.lang, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a,
+                        precision=args.precision, law=args.law, start=args.start)
+    for message in animation.run.skipped_messages():
+        _warn(message)
+    print(animation.save(args.output))
+    return 0
+
+
 def _bench(args) -> int:
     from . import bench
 
@@ -920,6 +944,7 @@ _COMMANDS = {
     "sweep": _sweep,
     "draw": _draw,
     "handout": _handout,
+    "animate": _animate,
     "bench": _bench,
     "centres": _centres,
     "forces": _forces,

@@ -9,7 +9,7 @@ nothing.
 
 __all__ = ["DISPLAY", "display_function"]
 
-#: ``"plot"``, ``"save"``, ``"sheet"`` → the function of :mod:`plans.notebook` that does it.
+#: ``"plot"``, ``"save"``, ``"sheet"``, ``"animate"``, ``"animate_run"`` → the function of :mod:`plans.notebook` that does it.
 DISPLAY: dict = {}
 
 

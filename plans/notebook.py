@@ -10,6 +10,8 @@ and joins them, one way:
 * :func:`sheet` — a solution's one-page sheet as a Figure;
 * :func:`save` — a plan or a solution's sheet to ``.svg``, ``.pdf`` or ``.png``, atomically;
 * :func:`svg` — the SVG text a notebook shows;
+* :func:`animate` — the mechanism and its plans over the cycle, as a lecture page
+  (:func:`plans.lecture.animate`; ``solution.animate()`` calls it);
 * :func:`register` — tell a running IPython to show solutions and plans as
   SVG (``import plans`` calls it; it does nothing outside IPython).
 
@@ -30,7 +32,7 @@ import sys
 
 from .display import DISPLAY
 
-__all__ = ["plot", "sheet", "save", "svg", "register", "kinematic_pages", "save_pages", "svg_of_figure"]
+__all__ = ["plot", "sheet", "save", "svg", "animate", "animate_run", "register", "kinematic_pages", "save_pages", "svg_of_figure"]
 
 
 def _is_plan(obj) -> bool:
@@ -75,6 +77,20 @@ def svg(obj, *, lang: str = "en") -> str:
     return render_svg(_figure(obj, lang)).decode("utf-8")
 
 
+def animate(scene, positions=36, *, lang: str = "en"):
+    """A :class:`plans.lecture.Animation` of *scene* over *positions* of its cycle; a notebook shows it as the lecture page."""
+    from .lecture import animate as lecture_animate
+
+    return lecture_animate(scene, positions, lang=lang)
+
+
+def animate_run(run, *, lang: str = "en"):
+    """A :class:`plans.lecture.Animation` of a :class:`plans.positions.PositionsRun` (``run.animate()``), at its scale factors."""
+    from .lecture import Animation
+
+    return Animation(run, lang=lang)
+
+
 def register(shell=None) -> bool:
     """Show GraphicalSolution and Plan objects as SVG in IPython (*shell*, or the running one).
 
@@ -115,4 +131,4 @@ def svg_of_figure(fig) -> str:
     return render_svg(fig).decode("utf-8")
 
 
-DISPLAY.update(plot=plot, save=save, sheet=sheet, kinematic_pages=kinematic_pages, save_pages=save_pages, svg_of_figure=svg_of_figure)
+DISPLAY.update(plot=plot, save=save, sheet=sheet, kinematic_pages=kinematic_pages, save_pages=save_pages, svg_of_figure=svg_of_figure, animate=animate, animate_run=animate_run)

@@ -463,6 +463,12 @@ class PositionsRun:
         return Diagrams(self.cycle, marked=self.motion if self.motion is not None else self.positions, lang=lang,
                         components=components, cycle=self.dense)
 
+    def animate(self, *, lang: str = "en"):
+        """The run's positions as a :class:`plans.lecture.Animation` (a lecture page, a GIF, an MP4), at the run's scale factors."""
+        from .display import display_function
+
+        return display_function("animate_run")(self, lang=lang)
+
     def plot(self, ax=None, *, lang: str = "en"):
         """Draw the plan of positions into *ax* (a new figure when None); returns the Axes."""
         from .drawing.positions_plan import draw_positions_plan

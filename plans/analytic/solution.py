@@ -180,6 +180,14 @@ class AnalyticSolution:
 
         return figure(group)
 
+    def animate(self, positions: int = 36, *, lang: str = "en"):
+        """The mechanism and its plans over the cycle from the scene's position, at one set of scale factors for
+        all *positions*: a :class:`plans.lecture.Animation`, which a notebook shows as the lecture page
+        (``.save("page.html")``, ``"anim.gif"``, ``"anim.mp4"`` writes it).  Drawn by :mod:`plans.notebook`."""
+        from ..display import display_function
+
+        return display_function("animate")(self.scene, positions, lang=lang)
+
     def __len__(self) -> int:
         return len(self.driver)
 

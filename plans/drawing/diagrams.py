@@ -67,7 +67,7 @@ from .numerals import MINUS, localised
 from .layout import A4
 from .svg import drawing_rc
 
-__all__ = ["NEAR_DEAD_CENTRE", "QUANTITIES", "draw_cycle_diagrams", "write_cycle_diagrams", "plot_cycle", "cycle_axis"]
+__all__ = ["NEAR_DEAD_CENTRE", "QUANTITIES", "draw_cycle_diagrams", "write_cycle_diagrams", "plot_cycle", "cycle_axis", "marks_shown"]
 
 #: |sin| of the angle between construction lines below which a position counts as near a dead centre.
 NEAR_DEAD_CENTRE = 0.1
@@ -167,6 +167,14 @@ def cycle_axis(analytic, marked=None, cycle=None) -> tuple[np.ndarray, str, list
         for k, p in enumerate(marked or ()):
             marks.append((k, float(p) * 1e3))
     return x, label, marks
+
+
+def marks_shown(analytic, marked, cycle=None) -> list[tuple[int, float]]:
+    """Where the diagrams of :func:`plot_cycle` (with the same *cycle*) show each marked position: (number, x)
+    on their horizontal axis, for those they show (a crank's sweep that assembles over one short arc is shown
+    over that arc only; a rocker input's swing against time; see :func:`cycle_axis`).  A cursor that follows
+    the positions is drawn at these x."""
+    return list(_cycle_view(analytic, marked, cycle)[3])
 
 
 #: A crank's sweep that assembles over at most this arc [°] is drawn over that arc (and a margin), not the whole turn.

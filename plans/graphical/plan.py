@@ -245,3 +245,11 @@ class GraphicalSolution(_Drawable):
         from ..display import display_function
 
         return display_function("sheet")(self, lang=lang)
+
+    def animate(self, positions: int = 36, *, lang: str = "en"):
+        """The mechanism and its plans over the cycle from this position (position 0), at one set of scale
+        factors for all *positions*: a :class:`plans.lecture.Animation`, which a notebook shows as the lecture
+        page (``.save("page.html")``, ``"anim.gif"``, ``"anim.mp4"`` writes it)."""
+        from ..display import display_function
+
+        return display_function("animate")(self.scene, positions, lang=lang)
