@@ -12,6 +12,7 @@ import io
 import json
 import math
 
+from ._text import math_name
 from .compare import PLAN_QUANTITIES, QUANTITIES, Comparison
 from .errors import PlansError
 from .limits import expected_rel_error
@@ -516,7 +517,7 @@ def _symbol(label: str) -> str:
     head, _, sub = label.partition("_")
     base, _, sup = head.partition("^")
     base = {"omega": r"\omega", "epsilon": r"\varepsilon"}.get(base, base)
-    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{sub}}}" if sub else "") + "$"
+    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{math_name(sub)}}}" if sub else "") + "$"
 
 
 def _link_order(name: str) -> tuple:

@@ -22,7 +22,7 @@ import re
 
 from ..graphical.plan import KINDS
 from ..i18n import term
-from .._text import decimal_comma, user_text
+from .._text import decimal_comma, math_name, user_text
 from ._canvas import Sketch, text_size
 from .mechanism import draw_mechanism
 from .plan_drawing import SAME_MM, draw_plan, end_letters, image_text, kinds_drawn, legend_row, legend_words, vectors_drawn
@@ -211,7 +211,7 @@ def printed_length(length: float, precision: float | None) -> str:
 def _vector_symbol(label: str) -> str:
     head, _, sub = label.partition("_")
     base, _, sup = head.partition("^")
-    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{sub}}}" if sub else "") + "$"
+    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{math_name(sub)}}}" if sub else "") + "$"
 
 
 def _segment(plan, v, ends: dict) -> str:
@@ -295,7 +295,7 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
             shared.setdefault(entry[rate], []).append(link)
     for (label, segment, length), links in shared.items():
         v = by_label.get(label)
-        symbol_text = "$" + " = ".join(f"{tex}_{{{link}}}" for link in links) + "$"
+        symbol_text = "$" + " = ".join(f"{tex}_{{{math_name(link)}}}" for link in links) + "$"
         r = row(symbol_text, v, divide=length, sense=graphical.links[links[0]][rate])
         r[3] += f" ({segment})"
         rows.append(r)

@@ -20,7 +20,7 @@ from __future__ import annotations
 import cmath
 import math
 
-from .._text import decimal_comma
+from .._text import decimal_comma, math_name
 from ..i18n import term
 from ..graphical.scales import PAGE_MANTISSAS, round_down, round_up
 from ..report import table_error, table_number
@@ -71,11 +71,11 @@ def centres_page_table(result, comparisons, lang: str = "en") -> list[list[str]]
     for name in result.scene.links:
         row = by.get(("links", name))
         if row is not None:
-            rows.append([f"$\\omega_{{{name}}}$ [rad/s]", _about(result, name), _number(row.graphical), _number(row.analytic), table_error(row.rel_error)])
+            rows.append([f"$\\omega_{{{math_name(name)}}}$ [rad/s]", _about(result, name), _number(row.graphical), _number(row.analytic), table_error(row.rel_error)])
     for name in result.scene.report:
         row = by.get(("points", name))
         if row is not None:
-            rows.append([f"$v_{{{name}}}$ [m/s]", _about(result, result.scene.home_of(name)), _vector(complex(row.graphical)),
+            rows.append([f"$v_{{{math_name(name)}}}$ [m/s]", _about(result, result.scene.home_of(name)), _vector(complex(row.graphical)),
                          _vector(complex(row.analytic)), table_error(row.rel_error)])
     return [[decimal_comma(cell, lang) for cell in row] for row in rows]
 

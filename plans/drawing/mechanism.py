@@ -32,7 +32,7 @@ import shapely
 from shapely.geometry import LineString, MultiPoint, Point
 from shapely.geometry import Polygon as ShapelyPolygon
 
-from .._text import SUBSCRIPT
+from .._text import SUBSCRIPT, math_name
 from ._canvas import Sketch, fmt_number, sketch_on, unit
 from .numerals import scale_caption
 from .labels import place_label
@@ -61,7 +61,7 @@ def _sub(symbol: str, name: str) -> tuple[str, bool]:
     """``ω₂`` for link 2; mathtext for other names."""
     if name.isdigit():
         return symbol + name.translate(SUBSCRIPT), False
-    return rf"${symbol}_{{\mathrm{{{name}}}}}$", True
+    return rf"${symbol}_{{\mathrm{{{math_name(name)}}}}}$", True
 
 
 def mechanism_labels(solution) -> list[str]:
@@ -948,7 +948,7 @@ class MechanismDrawing:
             base = q + u * side * (offset + 4.5 * k)
             tail, tip = base - sense * 7.0, base + sense * 7.0
             self.s.arrow(tail, tip, lw=0.9, dashes=dashes, head=2.6, gid=gid)
-            labels.append((tip, rf"${symbol}_{{{driver.point}}}$", f"{gid}-label"))
+            labels.append((tip, rf"${symbol}_{{{math_name(driver.point)}}}$", f"{gid}-label"))
         # labels after both arrows, so that neither label lands on the other arrow
         for tip, text, gid in labels:
             self._label(tip, text, gid=gid, size=LABEL_PT, prefer=u * side, math_=True)

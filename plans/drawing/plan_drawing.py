@@ -20,7 +20,7 @@ import math
 from shapely.geometry import MultiPoint, Point
 from shapely.geometry import Polygon as ShapelyPolygon
 
-from .._text import SUBSCRIPT
+from .._text import SUBSCRIPT, math_name
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
 from .numerals import localised, scale_caption
@@ -133,7 +133,7 @@ def vector_math(label: str) -> str:
     """A plan vector's name as mathtext: ``"a^n_CA"`` → ``"$a^{n}_{\\mathrm{CA}}$"``."""
     head, _, sub = label.partition("_")
     symbol, _, sup = head.partition("^")
-    text = symbol + (f"^{{{sup}}}" if sup else "") + (rf"_{{\mathrm{{{sub}}}}}" if sub else "")
+    text = symbol + (f"^{{{sup}}}" if sup else "") + (rf"_{{\mathrm{{{math_name(sub)}}}}}" if sub else "")
     return f"${text}$"
 
 
