@@ -25,7 +25,7 @@ from ..i18n import term
 from .._text import decimal_comma, math_name, user_text
 from ._canvas import Sketch, text_size
 from .mechanism import draw_mechanism
-from .plan_drawing import SAME_MM, draw_plan, end_letters, image_text, kinds_drawn, legend_row, legend_words, vectors_drawn
+from .plan_drawing import SAME_MM, aliases, draw_plan, end_letters, image_text, kinds_drawn, legend_row, legend_words, pole_text, vectors_drawn
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 from .typeset import draw_text, measure
 
@@ -230,7 +230,9 @@ def _segment(plan, v, ends: dict) -> str:
             return plan.pole
         return here[0] if here else "?"
 
-    a, b = image_text(letter(complex(v.tail), True)), image_text(letter(complex(v.tip), False))
+    points = getattr(plan, "points", None)
+    a = pole_text(plan) if v.kind == "absolute" else image_text(letter(complex(v.tail), True), points)
+    b = image_text(letter(complex(v.tip), False), points)
     return a + b if (a + b).isascii() and len(a) == 1 and len(b) == 1 else f"{a} {b}"
 
 
@@ -277,16 +279,29 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
     from ._canvas import fmt_number as fmt
 
     symbol = "v" if kind == "velocity" else "a"
+    # a vector drawn once under several names is one row naming it each way: "v_A4 = v_A4C"
+    also = aliases(plan)
+    listed: set[str] = set()  # every name a row gives
+
+    def symbols(label: str) -> str:
+        listed.update([label] + also.get(label, []))
+        return " = ".join(_vector_symbol(x)[1:-1] for x in [label] + also.get(label, [])).join("$$")
+
     for name in graphical.scene.report:
         label = f"{symbol}_{name}"
         v = by_label.get(label)
         if v is not None:
-            rows.append(row(_vector_symbol(label), v))
+            rows.append(row(symbols(label), v))
+    # the points of links at sliders (A4, E5): their absolute vectors too
+    reported = {f"{symbol}_{name}" for name in graphical.scene.report} | {f"{symbol}_{name}" for name in graphical.scene.point_names}
+    for v in plan.vectors:
+        if v.kind == "absolute" and v.label not in reported:
+            rows.append(row(symbols(v.label), v))
     for name, entry in getattr(graphical, "relative", {}).items():
         for q in (("v_rel",) if kind == "velocity" else ("coriolis", "a_rel")):
             label = entry.get(q)
             v = by_label.get(label) if label else None
-            if v is not None:
+            if v is not None and label not in listed:
                 rows.append(row(_vector_symbol(label), v))
     rate, tex, _ = _RATE[kind]
     shared: dict[tuple, list[str]] = {}
