@@ -43,9 +43,9 @@ _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 #: ROOM_MIN and ROOM_FRACTION of the ink's larger side.  A centre farther out is an arrow at the
 #: edge with its distance, so that far centres never shrink the mechanism (issue 20 §4).
 ROOM_MIN = 25.0
-ROOM_FRACTION = 0.15
+ROOM_FRACTION = 0.12
 EDGE_ARROW = 9.0  # mm
-EDGE_GAP = 3.0  # mm between the room and an edge arrow's tail
+EDGE_GAP = 2.0  # mm between the room and an edge arrow's tail
 EDGE_SPACING = 13.0  # mm between the tails of two edge arrows, at least (wider for wide labels)
 #: room [mm] kept on every side of the room for the labels of centres near its edge
 LABEL_BAND = 7.0
@@ -55,7 +55,7 @@ LONE_LINE = 25.0  # mm each side of the one finite centre on a Kennedy line
 DIAGRAM_R = 22.0  # mm
 LABEL_PT = SMALL_PT + 1.5
 #: Gaps tried for a centre's label, in units of its mark's clearance; from LEADER_RING on, with a leader line.
-LABEL_RINGS = (1, 2, 3, 4.5, 6.5)
+LABEL_RINGS = (1, 2, 3, 4.5, 6.5, 9, 12)
 LEADER_RING = 2.5
 #: Room [mm] a centre's label keeps from what is drawn (the font's box is an estimate of the ink's).
 LABEL_CLEAR_MM = 0.3
@@ -145,10 +145,17 @@ class CentresFrame:
         return self.outer_hi.imag - self.outer_lo.imag + 2 * MARGIN_MM
 
 
-def _label_box(tip: complex, u: complex, text: str) -> tuple[complex, float, float]:
-    """Where an edge arrow's label goes: its box's centre just beyond the tip along u, and its (w, h) [mm]."""
+def _label_box(tail: complex, tip: complex, u: complex, text: str) -> tuple[complex, float, float]:
+    """Where an edge arrow's label goes, as its box's centre and (w, h) [mm]: just beyond the tip of an
+    arrow pointing up or down; over (or under) the shaft of one pointing sideways, its end at the tip,
+    so that a wide label does not widen the drawing."""
     w, h = text_size(text, LABEL_PT)
-    return tip + u * (0.8 + 0.5 * (abs(u.real) * w + abs(u.imag) * h)), w, h
+    if abs(u.imag) >= 0.6:
+        return tip + u * (0.8 + 0.5 * (abs(u.real) * w + abs(u.imag) * h)), w, h
+    side = 1.0 if u.imag >= 0 else -1.0  # over an arrow rising a little, under one falling
+    x = tip.real - w / 2 if u.real > 0 else tip.real + w / 2
+    y = max(tip.imag, tail.imag) + h / 2 + 0.8 if side > 0 else min(tip.imag, tail.imag) - h / 2 - 0.8
+    return complex(x, y), w, h
 
 
 def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: float = ROOM_MIN) -> CentresFrame:
@@ -195,7 +202,7 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
             u = unit(centre.point / k_l - q) if centre.point is not None else u0  # the arrow points at the centre
             tip = q + EDGE_ARROW * u
             text = edge_text(centre, abs(centre.point / k_l - tip) if centre.point is not None else None)
-            at, w, h = _label_box(tip, u, text)
+            at, w, h = _label_box(q, tip, u, text)
             shape = box(at.real - w / 2 - 0.8, at.imag - h / 2 - 0.8, at.real + w / 2 + 0.8, at.imag + h / 2 + 0.8)
             arrow = LineString([(q.real, q.imag), (tip.real, tip.imag)]).buffer(1.0)
             if all(abs(q - e.tail) >= EDGE_SPACING for e in edges) and not any(shape.intersects(b) or arrow.intersects(b) for b in boxes):
@@ -218,6 +225,7 @@ class _CentresDrawing:
         self.lo, self.hi = frame.lo, frame.hi
         self.middle = (self.lo + self.hi) / 2
         self.soft: list = []  # the Kennedy lines: a label may cross one, at a cost
+        self.words: list = []  # the boxes of the mechanism's names and numbers and of the labels placed so far
 
     def mm(self, z: complex) -> complex:
         return z / self.k_l
@@ -238,6 +246,7 @@ class _CentresDrawing:
             c = at + d * gap
             shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2).buffer(LABEL_CLEAR_MM, join_style=2)
             hits = 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
+            hits += 1000 * sum(1 for o in self.words if shape.intersects(o))  # never over another label or name
             f = self.frame
             if not (f.outer_lo.real <= c.real - w / 2 and c.real + w / 2 <= f.outer_hi.real and f.outer_lo.imag <= c.imag - h / 2 and c.imag + h / 2 <= f.outer_hi.imag):
                 hits += 100  # within the drawing's frame, whose size the page found beforehand
@@ -256,6 +265,7 @@ class _CentresDrawing:
         if leader is not None:
             self.s.line(list(leader), color=CENTRE_COLOUR, lw=0.4, gid=f"{gid}-leader", zorder=4.9)
         self.s.text(c, text, size=LABEL_PT, color=CENTRE_COLOUR, gid=gid)
+        self.words.append(box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2))
 
     def kennedy_lines(self) -> None:
         """Each Kennedy line that gave a centre, through its three centres, inside the room."""
@@ -299,6 +309,8 @@ class _CentresDrawing:
         for e in self.frame.edges:
             self.s.arrow(e.tail, e.tip, color=CENTRE_COLOUR, lw=1.0, head=2.4, gid=f"edge-{e.label}")
             self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}")
+            w, h = text_size(e.text, LABEL_PT)
+            self.words.append(box(e.at.real - w / 2, e.at.imag - h / 2, e.at.real + w / 2, e.at.imag + h / 2))
         for centre in self.r.centres:
             if not centre.determined:
                 continue  # named in the caption
@@ -346,6 +358,13 @@ def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> Non
         lines.append(current)
     for k, line in enumerate(lines):
         s.text(centre - 1j * (DIAGRAM_R + 12.5 + 4.0 * k), line, size=CAPTION_PT, gid="diagram-legend", obstacle=False)
+
+
+def _text_shapes(artists) -> list:
+    """The boxes of the texts among *artists* [mm], TEXT_CLEAR_MM wider on every side."""
+    from matplotlib.text import Text
+
+    return _shapes([a for a in artists if isinstance(a, Text)])
 
 
 def _shapes(artists) -> list:
@@ -462,6 +481,7 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     # the scale, in the room's lower left corner (inside the frame the page sized)
     s.text(complex(lo.real, lo.imag), scale_caption("k_l", fmt_number(k_l), "m/mm", lang), size=CAPTION_PT, ha="left", va="bottom", gid="scale", math=True)
     drawing = _CentresDrawing(s, result, frame, lang)
+    drawing.words += _text_shapes(artists)
     drawing.kennedy_lines()
     drawing.centres()
     if diagram:
