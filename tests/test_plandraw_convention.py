@@ -175,3 +175,14 @@ def test_a_users_names_are_lettered_as_written_and_no_label_is_shared():
         assert len(set(drawn.values())) == len(drawn), drawn
         if plan.kind == "velocity":
             assert pole != "p" and texts[f"{tag}-image-p"] == "p"  # the image of P is p; the pole pᵥ
+
+
+def test_four_bar_pm_and_pa_at_149_6_and_150_degrees_are_told_apart():
+    """The issue's p m / p a (149.6° and 150°): the velocity plan's note gives both directions."""
+    plan = construct(load(example_path("four-bar"))).velocity_plan
+    artists = draw_plan(plan)
+    notes = [t.get_text() for t in artists if isinstance(t, Text) and (t.get_gid() or "").startswith("vel-along-")]
+    a = next(v for v in plan.vectors if v.label == "v_A")
+    m = next(v for v in plan.vectors if v.label == "v_M")
+    expected = {f"∠ p{x} = {math.degrees(cmath.phase(v.tip)) % 360.0:.1f}°" for x, v in (("a", a), ("m", m))}
+    assert any(all(part in note for part in expected) for note in notes), (notes, expected)
