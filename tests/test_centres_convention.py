@@ -165,3 +165,29 @@ def test_plans_centres_prints_zero_for_round_off(capsys, tmp_path):
     assert "e-17" not in out and "e-16" not in out
     row = next(line for line in out.splitlines() if line.startswith("P24"))
     assert row.split()[3] == "0", row  # P24 lies on the x axis through O and D
+
+
+def test_the_table_reads_p1j_m_in_mm_of_the_drawing():
+    """With the drawing's k_l the table gives P_1jM [mm]; × k_l × |ω_j| it is |v_M| (to the 0.1 mm printed)."""
+    from plans.compare import compare_centres
+    from plans.drawing.centres_page import centres_page_table
+
+    scene = plans.load(plans.example_path("linear-arm"))
+    result = instant_centres(scene)
+    analytic = plans.solve(scene)
+    k_l = 0.008
+    rows = centres_page_table(result, compare_centres(analytic, result), "en", k_l)
+    assert rows[0][2] == "$P_{1j}M$ [mm]"
+    checked = 0
+    for name in scene.report:
+        row = next(r for r in rows if r[0].startswith(f"$v_{{{name}}}$"))
+        centre = result.centre("frame", scene.home_of(name))
+        if centre.point is None:
+            assert row[2] == "—"
+            continue
+        mm = float(row[2])
+        assert mm == pytest.approx(abs(analytic.points[name].r[0] - centre.point) / k_l, abs=0.051)
+        omega = abs(analytic.links[scene.home_of(name)].omega[0])
+        assert mm * k_l * omega == pytest.approx(abs(analytic.points[name].v[0]), abs=0.051 * k_l * omega + 1e-9)  # to the 0.1 mm printed
+        checked += 1
+    assert checked >= 3

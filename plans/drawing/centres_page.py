@@ -60,31 +60,46 @@ def _about(result, body: str) -> str:
     return centre_text(centre.label) + ("" if centre.point is not None else " ∞")
 
 
-def centres_page_table(result, comparisons, lang: str = "en") -> list[list[str]]:
+def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None = None) -> list[list[str]]:
     """The page's table: header, then ω of every link and v of every reported point, from the centres and analytic.
 
     Columns: quantity, the centre P_1j its body turns about, the value from
     the centres, the analytic value, the relative error (of the vector for v).
-    *comparisons* from :func:`plans.compare.compare_centres`.
+    *comparisons* from :func:`plans.compare.compare_centres`.  With *k_l* [m/mm] (the drawing's),
+    a column more after P_1j: the reading P_1jM [mm] on the drawing, from which v_M = |ω_j| · P_1jM × k_l
+    (a dash for ω, and where P_1j is at infinity: the link translates).
     """
-    rows = [[term("quantity", lang), "$P_{1j}$", term("by_centres", lang), term("analytic", lang), term("rel_error", lang)]]
+    header = [term("quantity", lang), "$P_{1j}$", term("by_centres", lang), term("analytic", lang), term("rel_error", lang)]
+    if k_l is not None:
+        header.insert(2, "$P_{1j}M$ [mm]")
+    rows = [header]
     by = {(c.section, c.name): c for c in comparisons}
+
+    def reading(name: str) -> list[str]:
+        if k_l is None:
+            return []
+        centre = result.centre("frame", result.scene.home_of(name))
+        if centre.point is None:
+            return ["—"]
+        return [f"{abs(result.positions[name] - centre.point) / k_l:.1f}"]
+
     for name in result.scene.links:
         row = by.get(("links", name))
         if row is not None:
-            rows.append([f"$\\omega_{{{math_name(name)}}}$ [rad/s]", _about(result, name), _number(row.graphical), _number(row.analytic), table_error(row.rel_error)])
+            rows.append([f"$\\omega_{{{math_name(name)}}}$ [rad/s]", _about(result, name)] + (["—"] if k_l is not None else [])
+                        + [_number(row.graphical), _number(row.analytic), table_error(row.rel_error)])
     for name in result.scene.report:
         row = by.get(("points", name))
         if row is not None:
-            rows.append([f"$v_{{{math_name(name)}}}$ [m/s]", _about(result, result.scene.home_of(name)), _vector(complex(row.graphical)),
-                         _vector(complex(row.analytic)), table_error(row.rel_error)])
+            rows.append([f"$v_{{{math_name(name)}}}$ [m/s]", _about(result, result.scene.home_of(name))] + reading(name)
+                        + [_vector(complex(row.graphical)), _vector(complex(row.analytic)), table_error(row.rel_error)])
     return [[decimal_comma(cell, lang) for cell in row] for row in rows]
 
 
 def _rules(lang: str) -> list[str]:
     return [
         f"{term('centres_omega_rule', lang)}:  $\\omega_j / \\omega_k = P_{{1k}}P_{{jk}} / P_{{1j}}P_{{jk}}$",
-        f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{1j}}M$",
+        f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{1j}}M \\times k_l$",
     ]
 
 
@@ -192,16 +207,18 @@ def draw_centres_page(run, *, lang: str = "en", header_lines=(), title: str | No
             block.place(sketch, PAGE_MARGIN, top - block.height, size)
             page_footer(sketch, footer)
             return fig
+        k0 = run.scene.scales.k_l or None
+        from ..graphical.scales import round_scale
+
+        k0 = k0 or round_scale(result.size)
+        # (centres_page_table(..., k_l) has a column of readings P_1jM [mm]: too wide for this page's layout of
+        # table and circle diagram side by side, it is left to the plate's page)
         table = table_block(centres_page_table(result, comparisons, lang), term("centres_results", lang))
         rules = rows_block([(line, TEXT_PT, "normal") for line in _rules(lang)], "centres-rule", line_gap=LINE_GAP)
         legend_lines = [f"{term('centres_legend', lang)};", term("centres_edge_legend", lang)]
         legend = rows_block(text_rows("", legend_lines, width, LEGEND_PT)[1:], "centres-legend", line_gap=0.5)
         circle = _drawing(fig, result, None, lang)
         # the circle diagram beside the mechanism, beside the table or under the mechanism: whichever draws it largest
-        k0 = run.scene.scales.k_l or None
-        from ..graphical.scales import round_scale
-
-        k0 = k0 or round_scale(result.size)
         sizes = _Sizes(result, lang)
         below = rules.height + GAP * 0.6 + table.height + GAP + legend.height + GAP * 0.6
         beside_mechanism = (width - circle.width - GAP, top - bottom - below)
