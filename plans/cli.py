@@ -264,6 +264,8 @@ def _load(args) -> Scene:
     else:
         raise SceneError("no scene: give a scene file or --example NAME (plans examples lists them)")
     args.loaded_scene = scene  # for errors found later (main names the file)
+    for doubt in scene.doubts:  # a bare driver number that looks meant in another unit
+        _warn(f"{scene.source}: {doubt}")
     if getattr(args, "at", None) is not None and not _several(args):
         scene = _at(scene, args.at)
     return scene

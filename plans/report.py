@@ -339,6 +339,8 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
     w(f"{scene.title}\n")
     w(f"structure: {analytic.structure.formula}   (mobility W = {analytic.structure.mobility})\n")
     w(f"driver: {_driver_words(scene)}\n")
+    if scene.readings:
+        w(f"        bare numbers read as SI and degrees: {'; '.join(scene.readings)}\n")
     if graphical is not None:
         scales = ", ".join(f"{key} = {value:g}" for key, value in graphical.scales.items())
         precision = f", drafting precision {graphical.precision:g} mm" if graphical.precision else ""

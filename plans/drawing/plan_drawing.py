@@ -17,6 +17,8 @@ from __future__ import annotations
 import cmath
 import math
 
+import numpy as np
+import shapely
 from shapely.geometry import MultiPoint, Point
 from shapely.geometry import Polygon as ShapelyPolygon
 
@@ -528,10 +530,24 @@ def _spot(sketch: Sketch, ring: tuple[complex, float, float], within: bool = Fal
         for i in range(int(max(0.0, b.width - 2 * free) / step) + 1)
         for j in range(int(max(0.0, b.height - 2 * free) / step) + 1)
     ]
-    for c in sorted(spots, key=lambda c: (abs(c - centre), c.real, c.imag)):
-        disk = Point(c.real, c.imag).buffer(free)
-        if not any(disk.intersects(o) for o in sketch.obstacles.near(c.real - free, c.imag - free, c.real + free, c.imag + free)):
-            return c
+    spots.sort(key=lambda c: (abs(c - centre), c.real, c.imag))
+    # A spot is free when its disk (a polygon inside the circle of radius *free*) meets no obstacle.  One
+    # spatial query finds, for every spot at once, the obstacles within *free* of it (a superset of those
+    # the disk meets); the disks themselves are made and tested only for those pairs.
+    # the spots in batches, nearest the crowd first: a free spot near it ends the search early
+    obstacles = np.array([o for o in sketch.obstacles if not o.is_empty], dtype=object)
+    tree = shapely.STRtree(obstacles)
+    for start in range(0, len(spots), 1024):
+        batch = spots[start:start + 1024]
+        points = shapely.points([(c.real, c.imag) for c in batch])
+        pairs = tree.query(points, predicate="dwithin", distance=free * (1 + 1e-9) + 1e-9)
+        near = np.zeros(len(batch), dtype=bool)
+        if pairs.shape[1]:
+            meets = shapely.intersects(shapely.buffer(points[pairs[0]], free, quad_segs=16), obstacles[pairs[1]])  # as Point.buffer
+            near[pairs[0][meets]] = True
+        free_spots = np.flatnonzero(~near)
+        if len(free_spots):
+            return batch[int(free_spots[0])]
     if within:
         return None
     # level with the crowd, but within the plan's height when the plan is taller than the detail
