@@ -488,8 +488,8 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
         _circle_diagram(s, result, complex(max(s.bounds.xmax, x1) + 14.0 + DIAGRAM_R, (lo.imag + hi.imag) / 2 + 6.0), lang)
     top = s.bounds.ymax + 4.0
     if legend:
-        words = decimal_comma(f"$k_l$ = {fmt_number(k_l)} m/mm;  n(n−1)/2 = {len(result.centres)};  ", lang)
-        s.text(complex(lo.real, top + 2.0), words + term("centres_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend", obstacle=False, math=True)
+        words = f"n(n−1)/2 = {len(result.centres)};  "  # (k_l is stated in the frame, under the mechanism)
+        s.text(complex(lo.real, top + 2.0), words + term("centres_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend", obstacle=False)
         s.text(complex(lo.real, top - 2.0), term("centres_edge_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend-edge", obstacle=False)
         top += 5.0
     if title is not None:
