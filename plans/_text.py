@@ -2,7 +2,8 @@
 
 * :data:`SUBSCRIPT` — the ``str.translate`` table of the digits to subscript digits;
 * :func:`subscript` — a link's name as the subscript of a symbol: ``"3"`` → ``"₃"``, ``"rod"`` → ``"_rod"``;
-* :func:`user_text` — text a user typed (a title) made safe to draw as plain text.
+* :func:`user_text` — text a user typed (a title) made safe to draw as plain text;
+* :func:`math_name` — a name from the scene (a point, a link) made safe to set inside math.
 """
 
 from __future__ import annotations
@@ -10,7 +11,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-__all__ = ["SUBSCRIPT", "subscript", "user_text", "decimal_comma", "DECIMAL_COMMA"]
+__all__ = ["SUBSCRIPT", "subscript", "user_text", "math_name", "decimal_comma", "DECIMAL_COMMA"]
 
 #: languages whose numbers are written with a decimal comma (0,025)
 DECIMAL_COMMA = ("sr", "ru", "bg", "sl")
@@ -45,6 +46,30 @@ def user_text(text) -> str:
             continue
         out.append(" " if category in ("Cc", "Zl", "Zp") else ch)
     return " ".join("".join(out).split()).replace("$", r"\$")
+
+
+#: what math reads as markup: groups, scripts, commands, the end of math, a space it drops
+_MATH_MARKUP = frozenset("\\{}$_^ ")
+
+
+def math_name(name) -> str:
+    """*name* (a point, a link, a line of the scene) as math that sets it as written.
+
+    A name with nothing math reads as markup comes back as it is (``CA``,
+    ``B,x``), so the math around it sets it as before.  Otherwise it is put in
+    ``\\text{…}`` with each of ``\\ { } $ _ ^`` and the space escaped by a
+    backslash, which matplotlib's math parser and plans' own typesetter
+    (:mod:`plans.drawing.typeset`) both read as "this character as it is":
+    ``A_1_2`` is set as ``A_1_2``, never as a double subscript.  Whitespace
+    and invisible characters are cleaned as :func:`user_text` cleans them.
+
+    >>> print(math_name("A_1_2"), math_name("CA"))
+    \\text{A\\_1\\_2} CA
+    """
+    text = user_text(name).replace(r"\$", "$")
+    if not _MATH_MARKUP.intersection(text):
+        return text
+    return r"\text{" + "".join("\\" + ch if ch in _MATH_MARKUP else ch for ch in text) + "}"
 
 
 def decimal_comma(text: str, lang: str) -> str:

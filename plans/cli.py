@@ -131,6 +131,7 @@ EXAMPLES = {
     "draw": "plans draw --example six-bar -o drawings\n  plans draw --example six-bar --positions 12 -o sheets --format png",
     "handout": "plans handout --example four-bar --positions 4 -o four-bar.pdf --lang sr",
     "animate": "plans animate --example six-bar -o six-bar.html\n  plans animate --example four-bar --positions 72 -o four-bar.gif --lang sr",
+    "centres": "plans centres --example six-bar -o drawings\n  plans centres my.toml --at \"30 deg\" --no-drawing\n  plans centres --example four-bar --lang sr -o drawings",
     "bench": "plans bench --quick -o /tmp/bench",
     "forces": "plans forces --example slider-crank-loads\n  plans forces --example four-bar-loads --at \"0,90 deg\" --json\n  plans examples --loads",
     "examples": "plans examples\n  plans examples six-bar > my.toml\n  plans examples --loads",
@@ -160,9 +161,13 @@ def _law_arguments(parser: argparse.ArgumentParser) -> None:
                        "or the scene's own position")
 
 
-def _add_command(commands, name: str, help: str, **kwargs) -> argparse.ArgumentParser:
+def _add_command(commands, name: str, help: str, description: str | None = None, **kwargs) -> argparse.ArgumentParser:
     """A subcommand whose --help ends with an example and where the scene format is described."""
-    return commands.add_parser(name, help=help, description=help[:1].upper() + help[1:] + ".",
+    import textwrap
+
+    text = description or help[:1].upper() + help[1:] + "."
+    text = "\n\n".join(textwrap.fill(paragraph, 79) for paragraph in text.split("\n\n"))
+    return commands.add_parser(name, help=help, description=text,
                                epilog=_epilog(name), formatter_class=argparse.RawDescriptionHelpFormatter, **kwargs)
 
 
@@ -271,8 +276,15 @@ def build_parser() -> argparse.ArgumentParser:
     _language_argument(animate)
     _scale_arguments(animate)
 
-    centres = commands.add_parser(
-        "centres", help="every instant centre by Kennedy's theorem, ω and v from them; draws centres.svg"
+    centres = _add_command(
+        commands, "centres", "every instant centre by Kennedy's theorem, ω and v from them; draws centres.svg",
+        description="Every instant centre P_ij of the mechanism's bodies at one position (the frame is body 1, or 0 when a link is named 1): "
+        "the pairs' own centres, the rest by Kennedy's theorem (the three centres of any three bodies lie on one "
+        "line), each printed where it lies, or as its direction when it is at infinity, with the lines that gave it. "
+        "Then ω of every link by the angular-velocity ratio theorem and v of every point as ω × (M − P_1j), "
+        "beside the analytic values.\n\n"
+        "Draws centres.svg into DIR: the mechanism with every centre marked, the Kennedy lines, and the circle "
+        "diagram (--no-drawing: the table only).",
     )
     _scene_argument(centres)
     _position_argument(centres)
@@ -302,6 +314,8 @@ def _load(args) -> Scene:
     else:
         raise SceneError("no scene: give a scene file or --example NAME (plans examples lists them)")
     args.loaded_scene = scene  # for errors found later (main names the file)
+    for doubt in scene.doubts:  # a bare driver number that looks meant in another unit
+        _warn(f"{scene.source}: {doubt}")
     if getattr(args, "at", None) is not None and not _several(args):
         scene = _at(scene, args.at)
     return scene
@@ -400,8 +414,25 @@ def _given_scales(args, scene: Scene) -> dict:
     return {key: getattr(args, key) if getattr(args, key) is not None else getattr(scene.scales, key) for key in ("k_l", "k_v", "k_a")}
 
 
+def _one_line(text: str) -> str:
+    """*text* as one line of a message: control characters (a newline in a file's name) written as escapes (``\\n``).
+
+    >>> print(_one_line("my\\nscene.toml: bad"))
+    my\\nscene.toml: bad
+    """
+    import unicodedata
+
+    out = []
+    for ch in text:
+        if unicodedata.category(ch) in ("Cc", "Zl", "Zp"):
+            out.append(repr(ch)[1:-1] if ch.isascii() else f"\\u{ord(ch):04x}")
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
 def _warn(message: str) -> None:
-    print(f"plans: warning: {message}", file=sys.stderr)
+    print(f"plans: warning: {_one_line(message)}", file=sys.stderr)
 
 
 def _warn_solution(analytic, graphical=None) -> None:
@@ -492,6 +523,8 @@ def _centres(args) -> int:
     from .centres import instant_centres
     from .report import centres_table
 
+    if not args.no_drawing:
+        _check_directory(args.output, "plans centres -o")
     scene = _load(args)
     result = instant_centres(scene)
     text = centres_table(result)
@@ -596,6 +629,8 @@ def _sweep(args) -> int:
     from .report import sweep_csv
     from .sweep import analyse_sweep
 
+    if args.plot:
+        _check_directory(args.plot, "plans sweep --plot")
     scene = _load(args)
     if args.steps < 2:
         raise SceneError("--steps must be at least 2")
@@ -695,6 +730,7 @@ def _draw(args) -> int:
     from .report import sheet_table
     from .sweep import line_travel
 
+    _check_directory(args.output, "plans draw -o", () if _several(args) else (".svg", ".pdf", ".png"))
     scene = _load(args)
     scene = at_page_precision(scene, args.precision)  # a sheet prints lengths to 0.1 mm unless told
     args.precision = None  # the scene's, set just above
@@ -852,6 +888,27 @@ def _position_sheets(run, lang: str, given: dict):
     return sheet_of
 
 
+#: suffixes of file formats (pictures, documents, data) that name a file, never a directory plans should create
+_FILE_SUFFIXES = frozenset(
+    ".jpg .jpeg .jpe .gif .bmp .tif .tiff .webp .eps .ps .svgz .pgf .raw .rgba .emf .wmf .ico .heic .avif "
+    ".svg .pdf .png .csv .txt .json .toml .html .htm .md .tex .doc .docx .odt .xls .xlsx .zip .gz".split()
+)
+
+
+def _check_directory(output: str, what: str, files: tuple[str, ...] = ()) -> None:
+    """Refuse a directory name that names a file format (``-o x.jpg``) unless it is already a directory.
+
+    *files* are the suffixes that name a file this command writes instead of a directory.
+    """
+    path = Path(output)
+    suffix = path.suffix.lower()
+    if suffix in files or suffix not in _FILE_SUFFIXES or path.is_dir():
+        return
+    where = f"a directory or a {', '.join(files[:-1])} or {files[-1]} file" if files else "a directory"
+    why = f"not a {suffix} file" if suffix in (".svg", ".pdf", ".png") else f"plans does not write {suffix}"
+    raise OutputError(f"{output}: {what} takes {where}; {why} (give a directory name without {suffix}, or an existing directory)")
+
+
 def _is_file(output: str) -> bool:
     """True when -o names a drawing file (page.svg, page.pdf, page.png) rather than a directory."""
     return Path(output).suffix.lower() in (".svg", ".pdf", ".png") and not Path(output).is_dir()
@@ -979,7 +1036,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return _COMMANDS[args.command](args)
     except PlansError as exc:
-        print(f"plans: error: {_error_text(exc, getattr(args, 'loaded_scene', None))}", file=sys.stderr)
+        print(f"plans: error: {_one_line(_error_text(exc, getattr(args, 'loaded_scene', None)))}", file=sys.stderr)
         return EXIT_ERROR
     except BrokenPipeError:  # plans solve ... | head
         return 0
@@ -989,5 +1046,5 @@ def main(argv: list[str] | None = None) -> int:
     except OSError as exc:  # an output file or directory that cannot be written
         target = getattr(exc, "filename2", None) or exc.filename  # a rename names the temporary file first
         where = f" {target}" if target else ""
-        print(f"plans: error: cannot write{where}: {exc.strerror or exc}", file=sys.stderr)
+        print(_one_line(f"plans: error: cannot write{where}: {exc.strerror or exc}"), file=sys.stderr)
         return EXIT_ERROR

@@ -400,11 +400,11 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "krožci: poli v kinematičnih parih; pike: najdeni po Kennedyjevem izreku na črtkanih premicah",
     },
     "centres_edge_legend": {
-        "en": "an arrow at the edge points to a far centre (+ its distance beyond the arrow) or to one at infinity (∞)",
-        "sr": "стрелица на ивици показује удаљени пол (+ његово растојање иза стрелице) или пол у бесконачности (∞)",
-        "ru": "стрелка у края указывает на далёкий центр (+ его расстояние за стрелкой) или на центр в бесконечности (∞)",
-        "bg": "стрелка в края сочи към далечен център (+ разстоянието му след стрелката) или към център в безкрайността (∞)",
-        "sl": "puščica na robu kaže na oddaljeni pol (+ njegova razdalja za puščico) ali na pol v neskončnosti (∞)",
+        "en": "an arrow at the edge points to a centre off the drawing: its distance beyond the arrow's tip in mm of the drawing (× kₗ = metres), or ∞ at infinity",
+        "sr": "стрелица на ивици показује пол ван цртежа: његово растојање иза врха стрелице у mm цртежа (× kₗ = метри), или ∞ у бесконачности",
+        "ru": "стрелка у края указывает на центр за пределами чертежа: его расстояние за остриём стрелки в мм чертежа (× kₗ = метры), или ∞ в бесконечности",
+        "bg": "стрелка в края сочи към център извън чертежа: разстоянието му след върха на стрелката в mm от чертежа (× kₗ = метри), или ∞ в безкрайността",
+        "sl": "puščica na robu kaže na pol zunaj risbe: njegova razdalja za konico puščice v mm risbe (× kₗ = metri), ali ∞ v neskončnosti",
     },
     "centre_undetermined": {"en": "undetermined", "sr": "неодређен", "ru": "не определён", "bg": "неопределен", "sl": "nedoločen"},
     "centre_undetermined_why": {

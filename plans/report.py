@@ -12,6 +12,7 @@ import io
 import json
 import math
 
+from ._text import math_name
 from .compare import PLAN_QUANTITIES, QUANTITIES, Comparison
 from .errors import PlansError
 from .limits import expected_rel_error
@@ -338,6 +339,8 @@ def solution_table(analytic, graphical=None, comparisons: list[Comparison] | Non
     w(f"{scene.title}\n")
     w(f"structure: {analytic.structure.formula}   (mobility W = {analytic.structure.mobility})\n")
     w(f"driver: {_driver_words(scene)}\n")
+    if scene.readings:
+        w(f"        bare numbers read as SI and degrees: {'; '.join(scene.readings)}\n")
     if graphical is not None:
         scales = ", ".join(f"{key} = {value:g}" for key, value in graphical.scales.items())
         precision = f", drafting precision {graphical.precision:g} mm" if graphical.precision else ""
@@ -516,7 +519,7 @@ def _symbol(label: str) -> str:
     head, _, sub = label.partition("_")
     base, _, sup = head.partition("^")
     base = {"omega": r"\omega", "epsilon": r"\varepsilon"}.get(base, base)
-    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{sub}}}" if sub else "") + "$"
+    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{math_name(sub)}}}" if sub else "") + "$"
 
 
 def _link_order(name: str) -> tuple:
@@ -651,21 +654,24 @@ def centres_table(result) -> str:
     for c in result.centres:
         pair = ",".join(result.numbers[b] for b in c.bodies)
         if c.point is not None:
-            where = f"{_clean(c.point.real):13.6g} {_clean(c.point.imag):13.6g}"
+            # round-off far below the mechanism's size prints as 0 (four-bar P24: y = 1.4e-17 m)
+            where = f"{_clean(c.point.real, result.size):13.6g} {_clean(c.point.imag, result.size):13.6g}"
         elif not c.determined:
             where = f"{'—':>13} {'—':>13}"
         else:
             where = f"{'at infinity':>13} {_centre_direction(c):12.3f}°"
         w(f"{c.label:8} {pair:8} {where}   {_found_words(c)}\n")
+    omega_scale = max((abs(x) for x in result.links.values()), default=0.0)
+    v_scale = max((abs(complex(v)) for v in result.points.values()), default=0.0)
     w("\nVelocities from the centres: ω_j from the ratio theorem, v_M = ω_j × (M − P1j)\n")
     w(f"{'link':6} {'ω [rad/s]':>13}   {'about':6}\n")
     for name in [body for body in result.numbers if body != "frame"]:
         centre = next(c for c in result.centres if set(c.bodies) == {"frame", name})
         about = centre.label if centre.point is not None else f"{centre.label} (translates)"
-        w(f"{name:6} {_clean(result.links[name]):13.6g}   {about}\n")
+        w(f"{name:6} {_clean(result.links[name], omega_scale):13.6g}   {about}\n")
     w(f"\n{'point':6} {'vx [m/s]':>13} {'vy [m/s]':>13} {'|v|':>13} {'dir [°]':>9}\n")
     for name in scene.report:
-        w(f"{name:6} " + " ".join(_vector_cells(complex(result.points[name]))) + "\n")
+        w(f"{name:6} " + " ".join(_vector_cells(complex(result.points[name]), v_scale)) + "\n")
     return out.getvalue()
 
 

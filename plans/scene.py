@@ -331,6 +331,12 @@ class Scene:
     #: Advice for errors found after loading: a bare length (metres) far larger than the
     #: scene's other lengths, written by someone who meant millimetres.
     notes: tuple[str, ...] = field(default=(), compare=False, repr=False)
+    #: How each bare (unit-less) non-zero number of the driver was read, such as
+    #: ``"omega = 1850 → 1850 rad/s"``: bare numbers are SI and degrees.
+    readings: tuple[str, ...] = field(default=(), compare=False, repr=False)
+    #: Warnings about bare driver numbers that look meant in another unit (``omega = 1850`` is
+    #: 17 666 rpm, ``angle = 2.396`` is 2.396°): every command prints them.
+    doubts: tuple[str, ...] = field(default=(), compare=False, repr=False)
     masses: dict[str, Mass] = field(default_factory=dict)
     gravity: Gravity | None = None
     loads: tuple[Load, ...] = ()
@@ -578,6 +584,7 @@ class _SceneReader:
         self.source = source
         self.text = text
         self.lengths: list[tuple[str, object, float]] = []  # (field, as written, m) of every length read
+        self.bare_driver: list[tuple[str, float, float, str]] = []  # (field, as written, SI, kind) of bare driver numbers
 
     #: A bare length this many times the median of the scene's lengths is implausible.
     IMPLAUSIBLE = 20.0
@@ -598,6 +605,42 @@ class _SceneReader:
                     f"{median:.3g} m in the rest of the scene; write \"{written:g} mm\" if millimetres were meant"
                 )
         return tuple(notes[:1])
+
+    #: A bare angular velocity at least this large [rad/s] (4 775 rpm) looks meant as rpm.
+    DOUBTFUL_OMEGA = 500.0
+    #: A bare linear velocity at least this large [m/s] looks meant as mm/s.
+    DOUBTFUL_VELOCITY = 50.0
+
+    def driver_readings(self) -> tuple[tuple[str, ...], tuple[str, ...]]:
+        """How each bare driver number was read, and warnings about those that look meant in another unit."""
+        readings, doubts = [], []
+        sizes = sorted(abs(m) for _, _, m in self.lengths if m != 0)
+        median = sizes[len(sizes) // 2] if sizes else 0.0
+        for key, written, si, kind in self.bare_driver:
+            name = key.split(".", 1)[1]
+            line = self._line_of(key.split("[")[0])
+            where = f"{key} (line {line})" if line else key
+            if kind == "angle":
+                shown = f"{math.degrees(si):.6g}°"
+            else:
+                shown = f"{si:.6g} {_SI_UNITS[kind].replace('^2', '²')}"
+            readings.append(f"{name} = {written:g} → {shown}")
+            doubt = None
+            if kind == "angle" and 0 < abs(written) <= 2 * math.pi and (2 * written) != int(2 * written):
+                doubt = (f"is read as {written:g}° (bare angles are degrees); write \"{written:g} rad\" if radians were "
+                         f"meant ({math.degrees(written):.4g}°)")
+            elif kind == "angular velocity" and abs(si) >= self.DOUBTFUL_OMEGA:
+                doubt = (f"is read as {written:g} rad/s = {abs(si) * 30 / math.pi:,.0f} rpm (bare angular velocities are "
+                         f"rad/s); write \"{written:g} rpm\" if revolutions per minute were meant ({abs(written) * math.pi / 30:.4g} rad/s)")
+            elif kind == "velocity" and abs(si) >= self.DOUBTFUL_VELOCITY:
+                doubt = (f"is read as {written:g} m/s = {abs(si) * 3.6:,.0f} km/h (bare velocities are m/s); write "
+                         f"\"{written:g} mm/s\" if millimetres per second were meant")
+            elif kind == "length" and median and abs(si) >= 1 and abs(si) >= self.IMPLAUSIBLE * median:
+                doubt = (f"is read as {written:g} m (bare lengths are metres), next to lengths of about {median:.3g} m in "
+                         f"the rest of the scene; write \"{written:g} mm\" if millimetres were meant")
+            if doubt:
+                doubts.append(f"{where} = {written:g} {doubt}")
+        return tuple(readings), tuple(doubts)
 
     # -- helpers ---------------------------------------------------------------
 
@@ -671,6 +714,8 @@ class _SceneReader:
             raise self.fail(field, str(exc)) from None
         if kind == "length" and field.split(".")[0] in ("frame", "link", "slider"):
             self.lengths.append((field, value, number))
+        if field.startswith("driver.") and isinstance(value, (int, float)) and not isinstance(value, bool) and value != 0:
+            self.bare_driver.append((field, value, number, kind))
         if abs(number) > MAX_MAGNITUDE:
             unit = _SI_UNITS[kind]
             raise self.fail(
@@ -817,6 +862,7 @@ class _SceneReader:
             if names.index(name) != k:
                 raise self.fail(f"load.{k}.name", f"two loads are both named {name!r} (also load.{names.index(name)}); give each its own name")
         output = self.output(self.table(data.get("output", {}), "output"), bodies)
+        readings, doubts = self.driver_readings()
         return Scene(
             title=title,
             bodies=bodies,
@@ -829,6 +875,8 @@ class _SceneReader:
             source=self.source,
             output=output,
             notes=self.length_notes(),
+            readings=readings,
+            doubts=doubts,
             key_lines={f"assembly.{name}": self._line_of(f"assembly.{name}") for name in assembly if self._line_of(f"assembly.{name}")},
             masses=masses,
             gravity=gravity,

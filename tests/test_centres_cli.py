@@ -58,7 +58,13 @@ def test_drawing_marks_centres_where_they_are_at_k_l():
     mark = by_gid["centres-mark-P24"]
     assert isinstance(mark, Circle)
     assert mark.center == pytest.approx((0.0, 0.0765887 / 0.001), abs=1e-3)  # domain.md §8, in mm at k_l
-    assert by_gid["centres-mark-P13"].center == pytest.approx((319.8513, 319.8513), abs=1e-3)
+    # P13 at (319.85, 319.85) mm is far beyond the mechanism (issue 20 §4): an arrow at the edge points at it
+    p13 = complex(319.8513, 319.8513)
+    tip13 = complex(*by_gid["centres-edge-P13-head"].get_xy()[0])
+    shaft13 = by_gid["centres-edge-P13"]
+    tail13 = complex(shaft13.get_xdata()[0], shaft13.get_ydata()[0])
+    assert abs((tip13 - tail13) / abs(tip13 - tail13) - (p13 - tip13) / abs(p13 - tip13)) < 1e-6
+    assert "centres-mark-P13" not in by_gid
     # P14 at infinity along ±y: an arrow at the edge in that direction
     head = by_gid["centres-edge-P14-head"]
     shaft = by_gid["centres-edge-P14"]
@@ -78,8 +84,9 @@ def test_far_centre_at_the_edge_with_its_distance():
     p13 = result.centre("frame", "3").point
     tip = complex(*by_gid["centres-edge-P13-head"].get_xy()[0])
     text = by_gid["centres-label-P13"].get_text()
-    distance = float(re.fullmatch(r"P₁₃ \+([\d.]+) m", text).group(1))
-    assert distance == pytest.approx(abs(p13 - tip * k_l), rel=1e-2)
+    # its distance beyond the arrow's tip in mm of the drawing (× k_l: metres), to the mm
+    distance = float(re.fullmatch(r"P₁₃ (\d+) mm", text).group(1))
+    assert distance == pytest.approx(abs(p13 / k_l - tip), abs=0.5)
     # the arrow points at the centre
     shaft = by_gid["centres-edge-P13"]
     tail = complex(shaft.get_xdata()[0], shaft.get_ydata()[0])

@@ -43,7 +43,7 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--quick", action="store_true", help="a smoke run of a few seconds (fewer sizes, samples and repeats)")
     parser.add_argument("-o", "--output", metavar="DIR", help="write bench.csv, bench.md and error_vs_time.svg here")
     parser.add_argument("--case", action="append", metavar="NAME", help="run only this case (repeatable)")
-    parser.add_argument("--no-processes", action="store_true", help="skip timing plans solve / plans draw as whole processes")
+    parser.add_argument("--no-processes", action="store_true", help="skip timing plans solve / plans draw as whole processes (the chains of RRR dyads too)")
     return parser
 
 
@@ -62,7 +62,7 @@ def run_command(args) -> int:
     if args.case:
         settings = replace(settings, cases=tuple(args.case))
     if args.no_processes:
-        settings = replace(settings, processes=False)
+        settings = replace(settings, processes=False, chains=())
     try:
         result = run_bench(settings, progress=lambda line: print(line, file=sys.stderr, flush=True))
     except ValueError as exc:

@@ -67,7 +67,7 @@ import numpy as np
 from ..errors import PlansError
 from ..scene import Scene
 from ..structure import find_structure
-from .cases import Case, suite
+from .cases import CHAIN_DYADS, Case, dyad_chain_toml, suite
 from .reference import DIGITS, Reference, ReferenceError, reference
 from .yardstick import offset_slider_crank
 
@@ -116,10 +116,11 @@ class Settings:
     process_runs: int = 5
     cases: tuple[str, ...] | None = None
     cold_ns: tuple[int, ...] = ()
+    chains: tuple[int, ...] = ()
 
 
 #: ``plans bench``: about 40 s on a 2-CPU virtual machine.
-DEFAULT = Settings(cold_ns=(3600, 100_000))
+DEFAULT = Settings(cold_ns=(3600, 100_000), chains=CHAIN_DYADS)
 #: ``plans bench --quick``: a smoke run, a few seconds.
 QUICK = Settings(
     ns=(1, 360, 3600), yardstick_ns=(1, 3600), samples=3, arc_segments=(4, 32), budget=0.01, processes=False, cold_ns=()
@@ -180,6 +181,7 @@ class BenchResult:
     cold: dict[int, tuple[float, float]] = field(default_factory=dict)
     #: Kinetostatics (issue 22): best seconds of the kinematics, of the kinematics and the forces, at 3600 positions.
     forces: dict[str, float] = field(default_factory=dict)
+    chains: dict[int, float] = field(default_factory=dict)
 
 
 #: The methods, in the order tables list them.
@@ -463,6 +465,24 @@ def time_processes(runs: int) -> dict[str, float]:
     return out
 
 
+def time_chain_draws(dyads: tuple[int, ...]) -> dict[int, float]:
+    """Per chain length n: wall time [s] of one whole ``plans draw`` process of a crank and n RRR dyads in a row
+    (:func:`plans.bench.cases.dyad_chain_toml`): how drawing grows with the number of groups, labels and supports."""
+    root = str(Path(__file__).resolve().parents[2])
+    env = dict(os.environ)
+    env["PYTHONPATH"] = root + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
+    out = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for n in dyads:
+            scene = Path(tmp) / f"chain-{n}.toml"
+            scene.write_text(dyad_chain_toml(n), encoding="utf-8")
+            start = time.perf_counter()
+            done = subprocess.run([sys.executable, "-m", "plans", "draw", str(scene), "-o", str(Path(tmp) / f"out-{n}")],
+                                  env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+            out[n] = time.perf_counter() - start if done.returncode == 0 else math.nan
+    return out
+
+
 _COLD = """
 import sys, time
 from plans.bench.cases import suite
@@ -544,7 +564,7 @@ def time_forces(budget: float) -> dict[str, float]:
 
 
 def _targets(rows: list[Row], processes: dict[str, float], cold: dict[int, tuple[float, float]] | None = None,
-             forces: dict[str, float] | None = None) -> list[Target]:
+             forces: dict[str, float] | None = None, chains: dict[int, float] | None = None) -> list[Target]:
     targets = []
 
     def add(name, goal, value, text, limit, below=True):
@@ -587,6 +607,8 @@ def _targets(rows: list[Row], processes: dict[str, float], cold: dict[int, tuple
         add(f"kinetostatics, {FORCES_CASE[0]}, {FORCES_CASE[1]} positions: forces / kinematics", "≤ 2×",
             (both - kinematics) / kinematics,
             lambda v: f"{v:.1f}× ({kinematics * 1e3:.2f} ms kinematics, {both * 1e3:.2f} ms with the forces)", 2.0)
+    if chains and 50 in chains:  # issue 21
+        add("plans draw of a chain of 50 RRR dyads, whole process", "< 10 s", chains[50], lambda v: f"{v:.1f} s", 10.0)
     return targets
 
 
@@ -623,8 +645,13 @@ def run_bench(settings: Settings = DEFAULT, progress=None) -> BenchResult:
         if progress:
             progress("bench: kinetostatics")
         forces = time_forces(settings.budget)
-    return BenchResult(machine(), settings, rows, _targets(rows, processes, cold, forces), processes, time.perf_counter() - start,
-                       cold, forces)
+    chains = {}
+    if settings.chains:
+        if progress:
+            progress("bench: plans draw of chains of RRR dyads")
+        chains = time_chain_draws(settings.chains)
+    return BenchResult(machine(), settings, rows, _targets(rows, processes, cold, forces, chains), processes,
+                       time.perf_counter() - start, cold, forces, chains)
 
 
 # --- output ------------------------------------------------------------------------------------
@@ -721,6 +748,9 @@ def markdown(result: BenchResult) -> str:
         lines += ["", "First call in a fresh process (offset slider-crank, median of fresh processes, wall time): "
                   + "; ".join(f"N = {n}: plans {general * 1e3:.2f} ms, yardstick {yardstick * 1e3:.2f} ms"
                               for n, (general, yardstick) in sorted(result.cold.items())) + "."]
+    if result.chains:
+        lines += ["", "`plans draw` of a crank and n RRR dyads in a row, whole process (wall time, one run each): "
+                  + "; ".join(f"n = {n}: {seconds:.2f} s" for n, seconds in sorted(result.chains.items())) + "."]
     if result.processes:
         lines += ["", f"Whole processes (median of {settings.process_runs} runs, wall time): "
                   + "; ".join(f"`{name}` {seconds:.3f} s" for name, seconds in result.processes.items()) + "."]

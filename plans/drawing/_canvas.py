@@ -113,11 +113,14 @@ class Obstacles(list):
     """
 
     CELL_MM = 12.0
+    #: a shape covering more cells than this (a guide drawn over a long stroke) is kept out of the grid
+    WIDE_CELLS = 4096
 
     def __init__(self, *args):
         super().__init__(*args)
         self._cells: dict[tuple[int, int], list[int]] = {}
         self._bounds: list[tuple[float, float, float, float]] = []
+        self._wide: list[int] = []
         self._indexed = 0
 
     def _index(self) -> None:
@@ -127,6 +130,9 @@ class Obstacles(list):
             self._bounds.append((x0, y0, x1, y1))
             if not all(map(math.isfinite, (x0, y0, x1, y1))):
                 continue  # an empty shape has no bounds and is near nothing
+            if (x1 - x0) * (y1 - y0) > self.WIDE_CELLS * c * c or max(x1 - x0, y1 - y0) > self.WIDE_CELLS * c:
+                self._wide.append(k)  # a shape over very many cells is looked at by its bounds on every query
+                continue
             for i in range(math.floor(x0 / c), math.floor(x1 / c) + 1):
                 for j in range(math.floor(y0 / c), math.floor(y1 / c) + 1):
                     self._cells.setdefault((i, j), []).append(k)
@@ -136,7 +142,7 @@ class Obstacles(list):
         """Shapes whose bounding box meets the box (x0, y0)–(x1, y1) [mm], in drawing order."""
         self._index()
         c = self.CELL_MM
-        found: set[int] = set()
+        found: set[int] = set(self._wide)
         for i in range(math.floor(x0 / c), math.floor(x1 / c) + 1):
             for j in range(math.floor(y0 / c), math.floor(y1 / c) + 1):
                 found.update(self._cells.get((i, j), ()))

@@ -22,10 +22,10 @@ import re
 
 from ..graphical.plan import KINDS
 from ..i18n import term
-from .._text import decimal_comma, user_text
+from .._text import decimal_comma, math_name, user_text
 from ._canvas import Sketch, text_size
 from .mechanism import draw_mechanism
-from .plan_drawing import SAME_MM, draw_plan, end_letters, image_text, kinds_drawn, legend_row, legend_words, vectors_drawn
+from .plan_drawing import SAME_MM, aliases, draw_plan, end_letters, image_text, kinds_drawn, legend_row, legend_words, pole_text, vectors_drawn
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 from .typeset import draw_text, measure
 
@@ -211,7 +211,7 @@ def printed_length(length: float, precision: float | None) -> str:
 def _vector_symbol(label: str) -> str:
     head, _, sub = label.partition("_")
     base, _, sup = head.partition("^")
-    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{sub}}}" if sub else "") + "$"
+    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{math_name(sub)}}}" if sub else "") + "$"
 
 
 def _segment(plan, v, ends: dict) -> str:
@@ -230,7 +230,9 @@ def _segment(plan, v, ends: dict) -> str:
             return plan.pole
         return here[0] if here else "?"
 
-    a, b = image_text(letter(complex(v.tail), True)), image_text(letter(complex(v.tip), False))
+    points = getattr(plan, "points", None)
+    a = pole_text(plan) if v.kind == "absolute" else image_text(letter(complex(v.tail), True), points)
+    b = image_text(letter(complex(v.tip), False), points)
     return a + b if (a + b).isascii() and len(a) == 1 and len(b) == 1 else f"{a} {b}"
 
 
@@ -277,16 +279,29 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
     from ._canvas import fmt_number as fmt
 
     symbol = "v" if kind == "velocity" else "a"
+    # a vector drawn once under several names is one row naming it each way: "v_A4 = v_A4C"
+    also = aliases(plan)
+    listed: set[str] = set()  # every name a row gives
+
+    def symbols(label: str) -> str:
+        listed.update([label] + also.get(label, []))
+        return " = ".join(_vector_symbol(x)[1:-1] for x in [label] + also.get(label, [])).join("$$")
+
     for name in graphical.scene.report:
         label = f"{symbol}_{name}"
         v = by_label.get(label)
         if v is not None:
-            rows.append(row(_vector_symbol(label), v))
+            rows.append(row(symbols(label), v))
+    # the points of links at sliders (A4, E5): their absolute vectors too
+    reported = {f"{symbol}_{name}" for name in graphical.scene.report} | {f"{symbol}_{name}" for name in graphical.scene.point_names}
+    for v in plan.vectors:
+        if v.kind == "absolute" and v.label not in reported:
+            rows.append(row(symbols(v.label), v))
     for name, entry in getattr(graphical, "relative", {}).items():
         for q in (("v_rel",) if kind == "velocity" else ("coriolis", "a_rel")):
             label = entry.get(q)
             v = by_label.get(label) if label else None
-            if v is not None:
+            if v is not None and label not in listed:
                 rows.append(row(_vector_symbol(label), v))
     rate, tex, _ = _RATE[kind]
     shared: dict[tuple, list[str]] = {}
@@ -295,7 +310,7 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
             shared.setdefault(entry[rate], []).append(link)
     for (label, segment, length), links in shared.items():
         v = by_label.get(label)
-        symbol_text = "$" + " = ".join(f"{tex}_{{{link}}}" for link in links) + "$"
+        symbol_text = "$" + " = ".join(f"{tex}_{{{math_name(link)}}}" for link in links) + "$"
         r = row(symbol_text, v, divide=length, sense=graphical.links[links[0]][rate])
         r[3] += f" ({segment})"
         rows.append(r)

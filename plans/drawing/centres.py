@@ -30,26 +30,32 @@ from ..graphical.scales import round_scale
 from ..i18n import term
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .mechanism import MechanismDrawing
+from .numerals import scale_caption
 from .style import CAPTION_PT, CONSTRUCTION_STYLE, HEADING_PT, INK, MARGIN_MM, SMALL_PT, TITLE_PT
 from .svg import new_figure, render_svg
 
-__all__ = ["draw_centres", "draw_centres_into", "draw_circle_diagram_into", "centres_svg", "centre_text", "undetermined_text", "CENTRE_COLOUR"]
+__all__ = ["draw_centres", "draw_centres_into", "draw_circle_diagram_into", "centres_svg", "centre_text", "undetermined_text", "CENTRE_COLOUR",
+           "CentresFrame", "centres_frame", "CentresSizer", "edge_text"]
 
 CENTRE_COLOUR = "#C0392B"
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-#: room around the mechanism where centres are drawn where they are [mm]
+#: room around the mechanism's ink where centres are drawn where they are [mm]: the larger of
+#: ROOM_MIN and ROOM_FRACTION of the ink's larger side.  A centre farther out is an arrow at the
+#: edge with its distance, so that far centres never shrink the mechanism (issue 20 §4).
 ROOM_MIN = 25.0
-ROOM_FRACTION = 0.35
-#: centres within this fraction of the mechanism's drawn size beyond it are drawn where they are
-NEAR_FRACTION = 1.0
+ROOM_FRACTION = 0.12
 EDGE_ARROW = 9.0  # mm
-EDGE_GAP = 3.0  # mm between the room and an edge arrow's tail
-EDGE_SPACING = 13.0  # mm between the tails of two edge arrows
+EDGE_GAP = 2.0  # mm between the room and an edge arrow's tail
+EDGE_SPACING = 13.0  # mm between the tails of two edge arrows, at least (wider for wide labels)
+#: room [mm] kept on every side of the room for the labels of centres near its edge
+LABEL_BAND = 7.0
+#: room [mm] a centre's label keeps from the mechanism's names and numbers (so that "3" and "P₁₂" read as two)
+TEXT_CLEAR_MM = 1.2
 LONE_LINE = 25.0  # mm each side of the one finite centre on a Kennedy line
 DIAGRAM_R = 22.0  # mm
 LABEL_PT = SMALL_PT + 1.5
 #: Gaps tried for a centre's label, in units of its mark's clearance; from LEADER_RING on, with a leader line.
-LABEL_RINGS = (1, 2, 3, 4.5, 6.5)
+LABEL_RINGS = (1, 2, 3, 4.5, 6.5, 9, 12)
 LEADER_RING = 2.5
 #: Room [mm] a centre's label keeps from what is drawn (the font's box is an estimate of the ink's).
 LABEL_CLEAR_MM = 0.3
@@ -91,36 +97,141 @@ def undetermined_text(centre, lang: str = "en") -> str:
     return f"{centre_text(centre.label)} {term('centre_undetermined', lang)}: {why}"
 
 
+def edge_text(centre, distance_mm: float | None) -> str:
+    """The label of an edge arrow: ``P₁₃ 245 mm`` (the centre lies 245 mm of the drawing beyond the
+    arrow's tip, along it: × k_l in metres), ``P₁₄ ∞`` for a centre at infinity."""
+    if distance_mm is None:
+        return f"{centre_text(centre.label)} ∞"
+    return f"{centre_text(centre.label)} {distance_mm:.0f} mm"
+
+
+@dataclass(frozen=True)
+class EdgeArrow:
+    """An arrow at the drawing's edge pointing to a far centre [mm]: tail, tip, its label's text and centre."""
+
+    label: str
+    tail: complex
+    tip: complex
+    text: str
+    at: complex
+
+
+@dataclass(frozen=True)
+class CentresFrame:
+    """Where the centres drawing at k_l puts things, found from geometry alone [mm of paper, the scene's
+    origin at 0, x and y as the scene's].
+
+    ``lo``, ``hi``: the room around the mechanism's ink, where a centre is drawn where it is (``near``);
+    every other determined centre is an :class:`EdgeArrow` just outside it (``edges``); ``outer_lo``,
+    ``outer_hi``: all of it with the labels (the circle diagram, legend and title aside).
+    """
+
+    k_l: float
+    lo: complex
+    hi: complex
+    near: tuple[str, ...]
+    edges: tuple[EdgeArrow, ...]
+    outer_lo: complex
+    outer_hi: complex
+
+    @property
+    def width(self) -> float:
+        """Across [mm], margins included: the width :func:`draw_centres_into` returns without diagram, legend or title."""
+        return self.outer_hi.real - self.outer_lo.real + 2 * MARGIN_MM
+
+    @property
+    def height(self) -> float:
+        """Up [mm], margins included."""
+        return self.outer_hi.imag - self.outer_lo.imag + 2 * MARGIN_MM
+
+
+def _label_box(tail: complex, tip: complex, u: complex, text: str) -> tuple[complex, float, float]:
+    """Where an edge arrow's label goes, as its box's centre and (w, h) [mm]: just beyond the tip of an
+    arrow pointing up or down; over (or under) the shaft of one pointing sideways, its end at the tip,
+    so that a wide label does not widen the drawing."""
+    w, h = text_size(text, LABEL_PT)
+    if abs(u.imag) >= 0.6:
+        return tip + u * (0.8 + 0.5 * (abs(u.real) * w + abs(u.imag) * h)), w, h
+    side = 1.0 if u.imag >= 0 else -1.0  # over an arrow rising a little, under one falling
+    x = tip.real - w / 2 if u.real > 0 else tip.real + w / 2
+    y = max(tip.imag, tail.imag) + h / 2 + 0.8 if side > 0 else min(tip.imag, tail.imag) - h / 2 - 0.8
+    return complex(x, y), w, h
+
+
+def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: float = ROOM_MIN) -> CentresFrame:
+    """The frame of the centres drawing at *k_l* [m/mm] around the mechanism's *ink* (lower-left, upper-right [mm]).
+
+    The room is the ink widened by ROOM_MIN [mm] or ROOM_FRACTION of its larger side; a centre
+    inside is drawn where it is, every other one (and one at infinity) as an arrow just outside the
+    room on the ray from its middle towards the centre, the arrows spread apart so that neither they
+    nor their labels overlap.  Nothing here draws: the page finds its k_l from this.
+    """
+    lo, hi = ink
+    room = max(room_min, ROOM_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag))
+    lo, hi = lo - room * (1 + 1j), hi + room * (1 + 1j)
+    # a centre no farther out than an edge arrow would reach is drawn where it is, and the room grows to hold it
+    reach = EDGE_GAP + EDGE_ARROW + 4.0
+    for centre in result.centres:
+        if centre.determined and centre.point is not None:
+            q = centre.point / k_l
+            if lo.real - reach <= q.real <= hi.real + reach and lo.imag - reach <= q.imag <= hi.imag + reach:
+                lo = complex(min(lo.real, q.real - 3.0), min(lo.imag, q.imag - 3.0))
+                hi = complex(max(hi.real, q.real + 3.0), max(hi.imag, q.imag + 3.0))
+    middle = (lo + hi) / 2
+
+    def inside(q: complex) -> bool:
+        return lo.real <= q.real <= hi.real and lo.imag <= q.imag <= hi.imag
+
+    near: list[str] = []
+    edges: list[EdgeArrow] = []
+    boxes: list = []
+    outer_lo, outer_hi = lo - LABEL_BAND * (1 + 1j), hi + LABEL_BAND * (1 + 1j)
+    for centre in result.centres:
+        if not centre.determined:
+            continue
+        if centre.point is not None and inside(centre.point / k_l):
+            near.append(centre.label)
+            continue
+        u0 = unit(centre.point / k_l - middle) if centre.point is not None else centre.direction
+        span = _clip(middle, u0, lo, hi)
+        base = middle + span[1] * u0 + EDGE_GAP * u0
+        wide = text_size(edge_text(centre, 9999.0), LABEL_PT)[0]
+        spacing = max(EDGE_SPACING, abs(u0.imag) * wide + 2.0)
+        for step in range(48):
+            q = base + (1j * u0) * spacing * ((step + 1) // 2) * (1 if step % 2 else -1)
+            u = unit(centre.point / k_l - q) if centre.point is not None else u0  # the arrow points at the centre
+            tip = q + EDGE_ARROW * u
+            text = edge_text(centre, abs(centre.point / k_l - tip) if centre.point is not None else None)
+            at, w, h = _label_box(q, tip, u, text)
+            shape = box(at.real - w / 2 - 0.8, at.imag - h / 2 - 0.8, at.real + w / 2 + 0.8, at.imag + h / 2 + 0.8)
+            arrow = LineString([(q.real, q.imag), (tip.real, tip.imag)]).buffer(1.0)
+            if all(abs(q - e.tail) >= EDGE_SPACING for e in edges) and not any(shape.intersects(b) or arrow.intersects(b) for b in boxes):
+                break
+        boxes += [shape, arrow]
+        edges.append(EdgeArrow(centre.label, q, tip, text, at))
+        for z in (q, tip, complex(at.real - w / 2, at.imag - h / 2), complex(at.real + w / 2, at.imag + h / 2)):
+            outer_lo = complex(min(outer_lo.real, z.real), min(outer_lo.imag, z.imag))
+            outer_hi = complex(max(outer_hi.real, z.real), max(outer_hi.imag, z.imag))
+    return CentresFrame(k_l, lo, hi, tuple(near), tuple(edges), outer_lo, outer_hi)
+
+
 class _CentresDrawing:
-    def __init__(self, sketch: Sketch, result, k_l: float, lo: complex, hi: complex, lang: str = "en"):
+    def __init__(self, sketch: Sketch, result, frame: CentresFrame, lang: str = "en"):
         self.lang = lang
         self.s = sketch
         self.r = result
-        self.k_l = k_l
-        self.lo, self.hi = lo, hi
-        self.middle = (lo + hi) / 2
-        self.edges: list[complex] = []
+        self.frame = frame
+        self.k_l = frame.k_l
+        self.lo, self.hi = frame.lo, frame.hi
+        self.middle = (self.lo + self.hi) / 2
         self.soft: list = []  # the Kennedy lines: a label may cross one, at a cost
+        self.words: list = []  # the boxes of the mechanism's names and numbers and of the labels placed so far
 
     def mm(self, z: complex) -> complex:
         return z / self.k_l
 
     def inside(self, q: complex) -> bool:
         return self.lo.real <= q.real <= self.hi.real and self.lo.imag <= q.imag <= self.hi.imag
-
-    def edge_point(self, u: complex) -> complex:
-        """Just outside where the ray from the middle in direction u leaves the room, moved across it off earlier arrows.
-
-        Returns the tail of the arrow; its tip is EDGE_ARROW further along u.
-        """
-        span = _clip(self.middle, u, self.lo, self.hi)
-        base = self.middle + span[1] * u + EDGE_GAP * u
-        q, step = base, 0
-        while any(abs(q - e) < EDGE_SPACING for e in self.edges) and step < 24:
-            step += 1
-            q = base + (1j * u) * EDGE_SPACING * ((step + 1) // 2) * (1 if step % 2 else -1)
-        self.edges.append(q)
-        return q
 
     def label(self, at: complex, text: str, gid: str, away: complex, clear: float) -> None:
         """Text near *at*, at the first of eight places around it that overlaps nothing drawn before."""
@@ -135,6 +246,10 @@ class _CentresDrawing:
             c = at + d * gap
             shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2).buffer(LABEL_CLEAR_MM, join_style=2)
             hits = 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
+            hits += 1000 * sum(1 for o in self.words if shape.intersects(o))  # never over another label or name
+            f = self.frame
+            if not (f.outer_lo.real <= c.real - w / 2 and c.real + w / 2 <= f.outer_hi.real and f.outer_lo.imag <= c.imag - h / 2 and c.imag + h / 2 <= f.outer_hi.imag):
+                hits += 100  # within the drawing's frame, whose size the page found beforehand
             leader = None
             if ring >= LEADER_RING:  # away from a crowd, a leader line joins the label to its centre
                 a = at + d * clear
@@ -150,6 +265,7 @@ class _CentresDrawing:
         if leader is not None:
             self.s.line(list(leader), color=CENTRE_COLOUR, lw=0.4, gid=f"{gid}-leader", zorder=4.9)
         self.s.text(c, text, size=LABEL_PT, color=CENTRE_COLOUR, gid=gid)
+        self.words.append(box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2))
 
     def kennedy_lines(self) -> None:
         """Each Kennedy line that gave a centre, through its three centres, inside the room."""
@@ -189,11 +305,17 @@ class _CentresDrawing:
                 self.soft.append(LineString([(z.real, z.imag) for z in ends]))
 
     def centres(self) -> None:
+        # the edge arrows first (their places are fixed): the labels of the near centres keep off them
+        for e in self.frame.edges:
+            self.s.arrow(e.tail, e.tip, color=CENTRE_COLOUR, lw=1.0, head=2.4, gid=f"edge-{e.label}")
+            self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}")
+            w, h = text_size(e.text, LABEL_PT)
+            self.words.append(box(e.at.real - w / 2, e.at.imag - h / 2, e.at.real + w / 2, e.at.imag + h / 2))
         for centre in self.r.centres:
             if not centre.determined:
                 continue  # named in the caption
             text = centre_text(centre.label)
-            if centre.point is not None and self.inside(self.mm(centre.point)):
+            if centre.label in self.frame.near:
                 q = self.mm(centre.point)
                 if centre.found_by.startswith("revolute"):
                     self.s.circle(q, 2.2, fc="none", ec=CENTRE_COLOUR, lw=0.9, gid=f"mark-{centre.label}", zorder=5.0)
@@ -202,20 +324,6 @@ class _CentresDrawing:
                     self.s.circle(q, 1.0, fc=CENTRE_COLOUR, ec=CENTRE_COLOUR, lw=0.5, gid=f"mark-{centre.label}", zorder=5.0)
                     clear = 1.2
                 self.label(q, text, f"label-{centre.label}", q - self.middle, clear)
-                continue
-            if centre.point is not None:
-                tail = self.edge_point(unit(self.mm(centre.point) - self.middle))
-                u = unit(self.mm(centre.point) - tail)  # the arrow points at the centre
-                tip = tail + EDGE_ARROW * u
-                beyond = abs(self.mm(centre.point) - tip) * self.k_l
-                text = decimal_comma(f"{text} +{beyond:.3g} m", self.lang)
-            else:
-                u = centre.direction
-                tail = self.edge_point(u)
-                tip = tail + EDGE_ARROW * u
-                text = f"{text} ∞"
-            self.s.arrow(tail, tip, color=CENTRE_COLOUR, lw=1.0, head=2.4, gid=f"edge-{centre.label}")
-            self.label(tip, text, f"label-{centre.label}", u, 0.8)
 
 
 def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> None:
@@ -252,6 +360,13 @@ def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> Non
         s.text(centre - 1j * (DIAGRAM_R + 12.5 + 4.0 * k), line, size=CAPTION_PT, gid="diagram-legend", obstacle=False)
 
 
+def _text_shapes(artists) -> list:
+    """The boxes of the texts among *artists* [mm], TEXT_CLEAR_MM wider on every side."""
+    from matplotlib.text import Text
+
+    return _shapes([a for a in artists if isinstance(a, Text)])
+
+
 def _shapes(artists) -> list:
     """Obstacles for the labels from the mechanism's artists: lines, circles, polygons, text boxes [mm]."""
     from matplotlib.lines import Line2D
@@ -278,8 +393,65 @@ def _shapes(artists) -> list:
             x, y = artist.get_position()
             x0 = {"left": x, "center": x - w / 2, "right": x - w}.get(artist.get_ha(), x - w / 2)
             y0 = {"bottom": y, "center": y - h / 2, "top": y - h}.get(artist.get_va(), y - h / 2)
-            shapes.append(box(x0, y0, x0 + w, y0 + h))
+            shapes.append(box(x0, y0, x0 + w, y0 + h).buffer(TEXT_CLEAR_MM, join_style=2))
     return shapes
+
+
+def _mechanism(ax, result, k_l: float, lang: str):
+    """The mechanism at *k_l* drawn into *ax*: (its artists, its ink's (lower-left, upper-right) [mm])."""
+    # the centres' marks are there before the mechanism's labels are placed: a link number or a point's
+    # name keeps clear of them (the six-bar's "2" touched P₂₆)
+    marks = [Point(c.point.real / k_l, c.point.imag / k_l).buffer((2.2 if c.found_by.startswith("revolute") else 1.0) + 0.4)
+             for c in result.centres if c.determined and c.point is not None]
+    drawn = _Drawn(result.scene, {"k_l": k_l}, result.positions, result.poses)
+    # no heading or scale under the mechanism: the drawing states k_l in its frame (draw_centres_into)
+    artists = sketch_on(ax, "mech", lambda sketch: (sketch.obstacles.extend(marks), MechanismDrawing(sketch, drawn, lang=lang, caption=False).draw()))
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    return artists, (complex(x0 + MARGIN_MM, y0 + MARGIN_MM), complex(x1 - MARGIN_MM, y1 - MARGIN_MM))
+
+
+class CentresSizer:
+    """The centres drawing's size [mm] at any k_l, found without drawing it there.
+
+    The mechanism is drawn twice, alone (at *k0* and *k0*/2; *k0* by default the round value that
+    draws it 60–120 mm): how far its ink reaches beyond its points on each side is a part fixed in
+    millimetres (names, supports, arrows) and a part that scales (guides), a + b/k_l, which the two
+    drawings give.  The rest (the room, which centres are drawn where they are, the edge arrows and
+    their labels) is :func:`centres_frame`, geometry alone.  So the page tries any number of k_l for
+    the price of two drawings of the mechanism (the six-position handout drew its centres page 114 times).
+    """
+
+    def __init__(self, result, lang: str = "en", room_min: float = ROOM_MIN, k0: float | None = None):
+        from .svg import new_figure
+
+        self.result, self.room_min = result, room_min
+        xs = [z.real for z in result.positions.values()]
+        ys = [z.imag for z in result.positions.values()]
+        self.lo_m, self.hi_m = complex(min(xs), min(ys)), complex(max(xs), max(ys))
+        k0 = k0 or round_scale(result.size)
+        over = []
+        for k in (k0, k0 / 2):
+            ax = new_figure().add_axes([0, 0, 1, 1])
+            _, (lo, hi) = _mechanism(ax, result, k, lang)
+            over.append((self.lo_m / k - lo, hi - self.hi_m / k))  # (left, bottom), (right, top) beyond the points [mm]
+        # o(k) = a + b/k per side, from o(k0) and o(k0/2)
+        self.model = []
+        for first, second in zip(over[0], over[1]):
+            b = (second - first) * k0
+            self.model.append((first - b / k0, b))
+
+    def ink(self, k_l: float) -> tuple[complex, complex]:
+        """The mechanism's ink at *k_l*: (lower-left, upper-right) [mm]."""
+        (a_lo, b_lo), (a_hi, b_hi) = self.model
+        return self.lo_m / k_l - (a_lo + b_lo / k_l), self.hi_m / k_l + (a_hi + b_hi / k_l)
+
+    def frame(self, k_l: float) -> CentresFrame:
+        return centres_frame(self.result, k_l, self.ink(k_l), self.room_min)
+
+    def size(self, k_l: float) -> tuple[float, float]:
+        """(width, height) [mm] of :func:`draw_centres_into` at *k_l* with no diagram, legend or title."""
+        frame = self.frame(k_l)
+        return frame.width, frame.height
 
 
 def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | None = None, legend: bool = True, diagram: bool = True,
@@ -291,48 +463,40 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     dots, dashed lines and edge arrows mean; *diagram* False leaves the circle
     diagram out (a page puts it elsewhere: :func:`draw_circle_diagram_into`).
     *room_min* [mm] is the least room kept around the mechanism for the
-    Kennedy lines and labels (far centres' arrows go outside it).
-    The axes' limits are set to the ink plus the margin.
+    Kennedy lines and labels (far centres' arrows go outside it): see
+    :func:`centres_frame`, which gives the drawing's size without drawing it
+    (with *diagram*, *legend* and *title* off, and every centre determined).
+    The axes' limits are set to the frame plus the margin.
 
     Returns
     -------
     (width, height) [mm] of the drawing.
     """
-    scene = result.scene
-    # the centres' marks are there before the mechanism's labels are placed: a link number or a point's
-    # name keeps clear of them (the six-bar's "2" touched P₂₆)
-    marks = [Point(c.point.real / k_l, c.point.imag / k_l).buffer((2.2 if c.found_by.startswith("revolute") else 1.0) + 0.4)
-             for c in result.centres if c.determined and c.point is not None]
-    drawn = _Drawn(scene, {"k_l": k_l}, result.positions, result.poses)
-    artists = sketch_on(ax, "mech", lambda sketch: (sketch.obstacles.extend(marks), MechanismDrawing(sketch, drawn, lang=lang).draw()))
-    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-    lo, hi = complex(x0 + MARGIN_MM, y0 + MARGIN_MM), complex(x1 - MARGIN_MM, y1 - MARGIN_MM)
-    room = max(room_min, ROOM_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag))
-    reach = NEAR_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag)
-    near = [c.point / k_l for c in result.centres if c.point is not None]
-    near = [q for q in near if lo.real - reach <= q.real <= hi.real + reach and lo.imag - reach <= q.imag <= hi.imag + reach]
-    lo, hi = lo - room * (1 + 1j), hi + room * (1 + 1j)
-    for q in near:  # a centre up to one mechanism's size away is drawn where it is, with some room around it
-        lo = complex(min(lo.real, q.real - 12.0), min(lo.imag, q.imag - 8.0))
-        hi = complex(max(hi.real, q.real + 12.0), max(hi.imag, q.imag + 8.0))
+    artists, ink = _mechanism(ax, result, k_l, lang)
+    frame = centres_frame(result, k_l, ink, room_min)
+    lo, hi = frame.lo, frame.hi
+    (x0, y0), (x1, y1) = (frame.outer_lo.real, frame.outer_lo.imag), (frame.outer_hi.real, frame.outer_hi.imag)
     s = Sketch(ax, "centres")
     s.obstacles.extend(_shapes(artists))
-    drawing = _CentresDrawing(s, result, k_l, lo, hi, lang)
+    # the scale, in the room's lower left corner (inside the frame the page sized)
+    s.text(complex(lo.real, lo.imag), scale_caption("k_l", fmt_number(k_l), "m/mm", lang), size=CAPTION_PT, ha="left", va="bottom", gid="scale", math=True)
+    drawing = _CentresDrawing(s, result, frame, lang)
+    drawing.words += _text_shapes(artists)
     drawing.kennedy_lines()
     drawing.centres()
     if diagram:
         _circle_diagram(s, result, complex(max(s.bounds.xmax, x1) + 14.0 + DIAGRAM_R, (lo.imag + hi.imag) / 2 + 6.0), lang)
     top = s.bounds.ymax + 4.0
     if legend:
-        words = decimal_comma(f"$k_l$ = {fmt_number(k_l)} m/mm;  n(n−1)/2 = {len(result.centres)};  ", lang)
-        s.text(complex(lo.real, top + 2.0), words + term("centres_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend", obstacle=False, math=True)
+        words = f"n(n−1)/2 = {len(result.centres)};  "  # (k_l is stated in the frame, under the mechanism)
+        s.text(complex(lo.real, top + 2.0), words + term("centres_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend", obstacle=False)
         s.text(complex(lo.real, top - 2.0), term("centres_edge_legend", lang), size=CAPTION_PT, ha="left", va="bottom", gid="legend-edge", obstacle=False)
         top += 5.0
     if title is not None:
         s.text(complex(lo.real, top + 2.0), user_text(title), size=TITLE_PT - 3, ha="left", va="bottom", weight="bold", gid="title", obstacle=False)
     missing = [c for c in result.centres if not c.determined]
     for k, c in enumerate(missing):
-        s.text(complex(lo.real, min(s.bounds.ymin, y0) - 3.0), undetermined_text(c, lang),
+        s.text(complex(lo.real, y0 - 3.0 - 4.6 * k), undetermined_text(c, lang),
                size=CAPTION_PT, ha="left", va="top", color=CENTRE_COLOUR, gid=f"undetermined-{c.label}", obstacle=False)
     b = s.bounds
     xmin, xmax = min(b.xmin, x0), max(b.xmax, x1)

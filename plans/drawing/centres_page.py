@@ -20,12 +20,12 @@ from __future__ import annotations
 import cmath
 import math
 
-from .._text import decimal_comma
+from .._text import decimal_comma, math_name
 from ..i18n import term
 from ..graphical.scales import PAGE_MANTISSAS, round_down, round_up
 from ..report import table_error, table_number
 from .blocks import Block, rows_block, table_block, text_rows
-from .centres import centre_text, draw_centres_into, draw_circle_diagram_into
+from .centres import CentresSizer, centre_text, draw_centres_into, draw_circle_diagram_into
 from .layout import A4, GAP, PAGE_MARGIN, footer as page_footer, header, new_page
 from .svg import drawing_rc
 
@@ -41,14 +41,15 @@ LINE_GAP = 0.7
 
 
 def _number(value: float) -> str:
-    """*value* to 6 significant digits as tables print numbers (:func:`plans.report.table_number`)."""
-    return table_number(value, 6)
+    """*value* as every table prints numbers: 4 significant digits (:func:`plans.report.table_number`)."""
+    return table_number(value)
 
 
 def _vector(z: complex) -> str:
+    """``0.4993 ∠ 27.0°``: the direction 0…360° counter-clockwise from x, as on every other page."""
     if z == 0:
         return "0"
-    return f"{_number(abs(z))} ∠ {math.degrees(cmath.phase(z)):.1f}°".replace("-", "−")
+    return f"{_number(abs(z))} ∠ {math.degrees(cmath.phase(z)) % 360.0:.1f}°".replace("-", "−")
 
 
 def _about(result, body: str) -> str:
@@ -59,31 +60,46 @@ def _about(result, body: str) -> str:
     return centre_text(centre.label) + ("" if centre.point is not None else " ∞")
 
 
-def centres_page_table(result, comparisons, lang: str = "en") -> list[list[str]]:
+def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None = None) -> list[list[str]]:
     """The page's table: header, then ω of every link and v of every reported point, from the centres and analytic.
 
     Columns: quantity, the centre P_1j its body turns about, the value from
     the centres, the analytic value, the relative error (of the vector for v).
-    *comparisons* from :func:`plans.compare.compare_centres`.
+    *comparisons* from :func:`plans.compare.compare_centres`.  With *k_l* [m/mm] (the drawing's),
+    a column more after P_1j: the reading P_1jM [mm] on the drawing, from which v_M = |ω_j| · P_1jM × k_l
+    (a dash for ω, and where P_1j is at infinity: the link translates).
     """
-    rows = [[term("quantity", lang), "$P_{1j}$", term("by_centres", lang), term("analytic", lang), term("rel_error", lang)]]
+    header = [term("quantity", lang), "$P_{1j}$", term("by_centres", lang), term("analytic", lang), term("rel_error", lang)]
+    if k_l is not None:
+        header.insert(2, "$P_{1j}M$ [mm]")
+    rows = [header]
     by = {(c.section, c.name): c for c in comparisons}
+
+    def reading(name: str) -> list[str]:
+        if k_l is None:
+            return []
+        centre = result.centre("frame", result.scene.home_of(name))
+        if centre.point is None:
+            return ["—"]
+        return [f"{abs(result.positions[name] - centre.point) / k_l:.1f}"]
+
     for name in result.scene.links:
         row = by.get(("links", name))
         if row is not None:
-            rows.append([f"$\\omega_{{{name}}}$ [rad/s]", _about(result, name), _number(row.graphical), _number(row.analytic), table_error(row.rel_error)])
+            rows.append([f"$\\omega_{{{math_name(name)}}}$ [rad/s]", _about(result, name)] + (["—"] if k_l is not None else [])
+                        + [_number(row.graphical), _number(row.analytic), table_error(row.rel_error)])
     for name in result.scene.report:
         row = by.get(("points", name))
         if row is not None:
-            rows.append([f"$v_{{{name}}}$ [m/s]", _about(result, result.scene.home_of(name)), _vector(complex(row.graphical)),
-                         _vector(complex(row.analytic)), table_error(row.rel_error)])
+            rows.append([f"$v_{{{math_name(name)}}}$ [m/s]", _about(result, result.scene.home_of(name))] + reading(name)
+                        + [_vector(complex(row.graphical)), _vector(complex(row.analytic)), table_error(row.rel_error)])
     return [[decimal_comma(cell, lang) for cell in row] for row in rows]
 
 
 def _rules(lang: str) -> list[str]:
     return [
         f"{term('centres_omega_rule', lang)}:  $\\omega_j / \\omega_k = P_{{1k}}P_{{jk}} / P_{{1j}}P_{{jk}}$",
-        f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{1j}}M$",
+        f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{1j}}M \\times k_l$",
     ]
 
 
@@ -104,72 +120,63 @@ def _drawing(fig, result, k_l: float | None, lang: str) -> Block:
     return block
 
 
-def _size_model(fig, result, lang: str, k0: float) -> tuple[tuple[float, float], tuple[float, float]]:
-    """((scaled, fixed) across, (scaled, fixed) up) of the drawing: size [mm] ≈ fixed + scaled / k_l.
-
-    The part that scales is the mechanism with its near centres, the fixed
-    part labels, arrows and margins (the room kept around a small mechanism
-    has a floor, so the trials are at k0 and k0/2, where the mechanism is
-    large); two trial drawings give both.
-    """
-    k1 = k0 / 2
-    first, second = _drawing(fig, result, k0, lang), _drawing(fig, result, k1, lang)
-    model = []
-    for a, b in ((first.width, second.width), (first.height, second.height)):
-        scaled = max((a - b) / (1 / k0 - 1 / k1), 0.0)
-        model.append((scaled, a - scaled / k0))
-    for trial in (first, second):
-        trial.axes.remove()
-    return model[0], model[1]
-
-
-def _need(model, box: tuple[float, float], k0: float) -> float:
-    """The k_l the model says fits *box* (4·k0 where the fixed part alone fills it)."""
-    needs = [scaled / (room - fixed) if room - fixed > 5.0 else 4 * k0 for (scaled, fixed), room in zip(model, box) if scaled > 0]
-    return max(needs, default=k0)
-
-
 class _Sizes:
-    """The drawing's size [mm] at each k_l tried (each drawn once, then taken off the page)."""
+    """The drawing's size [mm] at each k_l: from geometry (:class:`plans.drawing.centres.CentresSizer`: two
+    drawings of the mechanism alone), or as drawn, once a k_l has been drawn."""
 
-    def __init__(self, fig, result, lang: str):
-        self.fig, self.result, self.lang = fig, result, lang
+    def __init__(self, result, lang: str):
+        self.sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
         self.known: dict[float, tuple[float, float]] = {}
 
+    def size(self, k: float) -> tuple[float, float]:
+        return self.known.get(k) or self.sizer.size(k)
+
     def fits(self, k: float, box: tuple[float, float]) -> bool:
-        if k not in self.known:
-            block = _drawing(self.fig, self.result, k, self.lang)
-            self.known[k] = (block.width, block.height)
-            block.axes.remove()
-        w, h = self.known[k]
+        w, h = self.size(k)
         return w <= box[0] + 0.5 and h <= box[1] + 0.5
 
 
-def centres_page_k_l(sizes: _Sizes, box: tuple[float, float], guess: float) -> float:
+def _need(sizes: _Sizes, box: tuple[float, float], k0: float) -> float:
+    """The k_l the drawing's size, fixed + scaled / k_l (from its sizes at k0 and k0/2), says fits *box*."""
+    (w0, h0), (w1, h1) = sizes.size(k0), sizes.size(k0 / 2)
+    needs = []
+    for a, b, room in ((w0, w1, box[0]), (h0, h1, box[1])):
+        scaled = max((b - a) * k0, 0.0)  # a = fixed + scaled/k0, b = fixed + 2·scaled/k0
+        fixed = a - scaled / k0
+        if scaled > 0:
+            needs.append(scaled / (room - fixed) if room - fixed > 5.0 else 4 * k0)
+    return max(needs, default=k0)
+
+
+def centres_page_k_l(sizes: _Sizes, box: tuple[float, float], guess: float, least: float | None = None) -> float:
     """The smallest round k_l (the largest drawing) with which the centres drawing fits *box* (width, height [mm]).
 
-    From the round value at *guess*: larger ones while the drawing runs
-    over, else smaller ones while it still fits (a drawing's labels and
-    arrows do not scale, and which centres are drawn where they are depends
-    on the size, so the size is measured, never extrapolated).
+    From the round value at *guess* (or *least*, the plate's k_l, when given: never finer than it):
+    larger ones while the drawing runs over, else smaller ones while it still fits.  Sizes come
+    from :class:`_Sizes`: geometry, not drawings.
     """
-    k = round_up(guess)
+    k = round_up(least if least is not None else guess)
     if sizes.fits(k, box):
         for _ in range(12):
+            if least is not None:
+                break
             smaller = round_down(k * 0.999)
             if not sizes.fits(smaller, box):
                 break
             k = smaller
         return k
-    for _ in range(12):
+    for _ in range(24):
         k = round_up(k * 1.001)
         if sizes.fits(k, box):
             break
     return k
 
 
-def draw_centres_page(run, *, lang: str = "en", header_lines=(), title: str | None = None, footer: str = ""):
+def draw_centres_page(run, *, lang: str = "en", header_lines=(), title: str | None = None, footer: str = "", k_l: float | None = None):
     """The instant-centre page of a solved position *run* (a :class:`plans.positions.PositionRun`), A4 portrait.
+
+    *k_l* [m/mm]: the plate's scale, which the page keeps where the drawing fits (else the next
+    coarser round value that fits); None: the largest that fits.
 
     The centres are found by :func:`plans.centres.instant_centres` from the
     position's scene alone; the analytic values compared with are those of
@@ -200,17 +207,19 @@ def draw_centres_page(run, *, lang: str = "en", header_lines=(), title: str | No
             block.place(sketch, PAGE_MARGIN, top - block.height, size)
             page_footer(sketch, footer)
             return fig
+        k0 = run.scene.scales.k_l or None
+        from ..graphical.scales import round_scale
+
+        k0 = k0 or round_scale(result.size)
+        # (centres_page_table(..., k_l) has a column of readings P_1jM [mm]: too wide for this page's layout of
+        # table and circle diagram side by side, it is left to the plate's page)
         table = table_block(centres_page_table(result, comparisons, lang), term("centres_results", lang))
         rules = rows_block([(line, TEXT_PT, "normal") for line in _rules(lang)], "centres-rule", line_gap=LINE_GAP)
         legend_lines = [f"{term('centres_legend', lang)};", term("centres_edge_legend", lang)]
         legend = rows_block(text_rows("", legend_lines, width, LEGEND_PT)[1:], "centres-legend", line_gap=0.5)
         circle = _drawing(fig, result, None, lang)
         # the circle diagram beside the mechanism, beside the table or under the mechanism: whichever draws it largest
-        k0 = run.scene.scales.k_l or None
-        from ..graphical.scales import round_scale
-
-        k0 = k0 or round_scale(result.size)
-        model = _size_model(fig, result, lang, k0)
+        sizes = _Sizes(result, lang)
         below = rules.height + GAP * 0.6 + table.height + GAP + legend.height + GAP * 0.6
         beside_mechanism = (width - circle.width - GAP, top - bottom - below)
         # beside the table, the legend goes above the table, left of the circle diagram
@@ -222,14 +231,20 @@ def draw_centres_page(run, *, lang: str = "en", header_lines=(), title: str | No
         layouts = [("beside", beside_mechanism), ("stacked", stacked)]
         if table.width + GAP + circle.width <= width:
             layouts.insert(1, ("table", beside_table))
-        sizes = _Sizes(fig, result, lang)
         tried = []
         for n, (name, box) in enumerate(layouts):
             if box[1] > 20.0 and box[0] > 20.0:
-                guess = min(max(_need(model, box, k0), k0 / 8), k0 * 8)
-                tried.append((centres_page_k_l(sizes, box, guess), n, name, box))
+                guess = min(max(_need(sizes, box, k0), k0 / 8), k0 * 8)
+                tried.append((centres_page_k_l(sizes, box, guess, k_l), n, name, box))
         k_l, _, layout, box = min(tried)
-        drawing = _drawing(fig, result, k_l, lang)
+        # drawn once; where the mechanism's names fall otherwise than foreseen and it runs over, at the next round k_l
+        for _ in range(6):
+            drawing = _drawing(fig, result, k_l, lang)
+            if drawing.width <= box[0] + 0.5 and drawing.height <= box[1] + 0.5:
+                break
+            sizes.known[k_l] = (drawing.width, drawing.height)
+            drawing.axes.remove()
+            k_l = centres_page_k_l(sizes, box, k_l, round_up(k_l * 1.001))
         rules.place(sketch, PAGE_MARGIN, bottom, size)
         y = bottom + rules.height + GAP * 0.6
         table.place(sketch, PAGE_MARGIN, y, size)

@@ -61,7 +61,7 @@ from matplotlib.lines import Line2D
 from matplotlib.ticker import ScalarFormatter
 
 from .._files import replace_all
-from .._text import subscript, user_text
+from .._text import math_name, subscript, user_text
 from ..i18n import term
 from .numerals import MINUS, localised
 from .layout import A4
@@ -518,10 +518,7 @@ def _name(symbol: str, sub: str) -> str:
     """
     if sub.isdigit() and "^" not in symbol:
         return symbol + subscript(sub)
-    safe = sub.replace("\\", "").replace("{", "").replace("}", "")
-    for c in "$_%#&^~":
-        safe = safe.replace(c, "\\" + c)
-    return rf"${symbol}_{{\mathrm{{{safe}}}}}$"
+    return rf"${symbol}_{{\mathrm{{{math_name(sub)}}}}}$"
 
 
 def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None) -> list[tuple[str, Figure]]:

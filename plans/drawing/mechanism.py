@@ -32,7 +32,7 @@ import shapely
 from shapely.geometry import LineString, MultiPoint, Point
 from shapely.geometry import Polygon as ShapelyPolygon
 
-from .._text import SUBSCRIPT
+from .._text import SUBSCRIPT, math_name
 from ._canvas import Sketch, fmt_number, sketch_on, unit
 from .numerals import scale_caption
 from .labels import place_label
@@ -61,7 +61,7 @@ def _sub(symbol: str, name: str) -> tuple[str, bool]:
     """``ω₂`` for link 2; mathtext for other names."""
     if name.isdigit():
         return symbol + name.translate(SUBSCRIPT), False
-    return rf"${symbol}_{{\mathrm{{{name}}}}}$", True
+    return rf"${symbol}_{{\mathrm{{{math_name(name)}}}}}$", True
 
 
 def mechanism_labels(solution) -> list[str]:
@@ -303,6 +303,7 @@ class MechanismDrawing:
             ts = [((r - origin) * u.conjugate()).real for r in riders]
             driver = self.scene.driver
             if getattr(driver, "guide", None) == name and getattr(driver, "stroke", None):
+                self._check_stroke(driver)
                 base = ((self.p(driver.point) - origin) * u.conjugate()).real - driver.s / self.k_l
                 ts += [base + driver.stroke[0] / self.k_l, base + driver.stroke[1] / self.k_l]
             reach = self.block[0] + 8.0
@@ -514,6 +515,26 @@ class MechanismDrawing:
                 for p0, p1 in _outside(a, c, spans):
                     self.s.line([p0, p1], lw=0.8, gid=f"line-{body}-{name}", zorder=1.6)
 
+    def _check_stroke(self, driver) -> None:
+        """Refuse a linear driver's stroke whose guide, drawn over it at this k_l, is longer than the largest
+        sheet holds (the drawing's cost would grow with it): a :class:`plans.errors.SceneError` naming
+        ``driver.stroke``, the length drawn and the longest stroke that fits."""
+        from ..errors import SceneError
+        from ..graphical.scales import DRAWN_LARGEST
+
+        a, b = driver.stroke
+        drawn = abs(b - a) / self.k_l
+        if drawn <= DRAWN_LARGEST:
+            return
+        length = f"{drawn:.3g} mm" if math.isfinite(drawn) else "longer than any number"
+        raise SceneError(
+            f"the stroke from {a:g} m to {b:g} m would draw the driver's guide {length} long at k_l = {self.k_l:g} m/mm, "
+            f"longer than the largest sheet (A0) holds ({DRAWN_LARGEST:g} mm): give a stroke of at most "
+            f"{DRAWN_LARGEST * self.k_l:.3g} m at this scale, or a larger k_l (--k-l)",
+            getattr(self.scene, "source", None),
+            "driver.stroke",
+        )
+
     def _travel(self, key: str, origin: complex, u: complex) -> list[float]:
         """The travel given for line *key* [mm along *u* from *origin*], cut to the mechanism's own reach: no
         further than its size beyond its points (a pin that runs off towards infinity near parallel guides
@@ -705,15 +726,17 @@ class MechanismDrawing:
         _CYCLE_CHOICES[key] = (self.cycle, found)  # the cycle kept with it: its id cannot be reused meanwhile
         return found
 
-    def _find_cycle_support_direction(self, name: str, q: complex, height: float) -> complex | None:
-        need = self._support_clearance(height)
-        meeting = [b for b in self.scene.bodies_with(name) if b != FRAME]
-        others = [b for b in self.moving if b not in meeting and not self.is_block(b)]
+    def _cycle_link_shapes(self) -> dict:
+        """Per moving link that is not a block, its shapes over the cycle (a bar's buffered segment, a plate's
+        hull) and the bounds [mm] they all lie in: made once for every support of the drawing."""
+        cached = getattr(self, "_link_shapes", None)
+        if cached is not None and cached[0] == (id(self.cycle), self.k_l):
+            return cached[1]
+        bodies = [b for b in self.moving if not self.is_block(b)]
 
         def measure():
-            angles = self._meeting_angles(name, q)
             shapes = {}
-            for body in others:
+            for body in bodies:
                 pts = self.body_points(body)
                 if len(pts) < 2:
                     continue
@@ -722,22 +745,40 @@ class MechanismDrawing:
                 else:
                     a, c = max(((z, r) for z in pts for r in pts), key=lambda zr: abs(zr[0] - zr[1]))
                     shapes[body] = LineString([(a.real, a.imag), (c.real, c.imag)]).buffer(BAR_PT * MM_PER_PT / 2)
-            return angles, shapes
+            return shapes
 
         samples = self._over_cycle(measure)
+        out = {}
+        for body in bodies:
+            shapes = np.array([shs[body] for shs in samples if body in shs], dtype=object)
+            if len(shapes):
+                b = shapely.bounds(shapes)
+                out[body] = (shapes, (b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()))
+        self._link_shapes = ((id(self.cycle), self.k_l), out)
+        return out
+
+    def _find_cycle_support_direction(self, name: str, q: complex, height: float) -> complex | None:
+        need = self._support_clearance(height)
+        meeting = [b for b in self.scene.bodies_with(name) if b != FRAME]
+        samples = self._over_cycle(lambda: self._meeting_angles(name, q))
         thetas = np.array([-math.pi / 2 + 2 * math.pi * k / 24 for k in range(24)])
         feet = np.array([self._support_footprint(q, cmath.exp(1j * t), height) for t in thetas], dtype=object)
         # per link, the least angle from each candidate direction to the link over the cycle (meeting links),
         # or whether the support there meets the link at some position (links passing by)
         clearance, blocked = {}, {}
         for body in meeting:
-            a = np.asarray([t for angles, _ in samples for t in angles[body]], dtype=float)
+            a = np.asarray([t for angles in samples for t in angles[body]], dtype=float)
             gap = np.abs(np.angle(np.exp(1j * (thetas[:, None] - a[None, :])))).min(axis=1) if a.size else np.full(len(thetas), math.pi)
             clearance[body] = gap
             blocked[body] = gap < need
-        for body in others:
-            shapes = np.array([shs[body] for _, shs in samples if body in shs], dtype=object)
-            if len(shapes):
+        # links passing by: only those whose shapes over the cycle come within the supports' reach can meet one
+        x0, y0, x1, y1 = shapely.bounds(shapely.union_all(feet))
+        for body, (shapes, (bx0, by0, bx1, by1)) in self._cycle_link_shapes().items():
+            if body in meeting:
+                continue
+            if bx0 > x1 or bx1 < x0 or by0 > y1 or by1 < y0:
+                blocked[body] = np.full(len(thetas), False)
+            else:
                 blocked[body] = shapely.intersects(feet[:, None], shapes[None, :]).any(axis=1)
         # a link that meets the support whichever way it stands (a crank turning about its pivot, a lever
         # swinging through it) passes over it at some position: the support stays put, the others decide
@@ -948,7 +989,7 @@ class MechanismDrawing:
             base = q + u * side * (offset + 4.5 * k)
             tail, tip = base - sense * 7.0, base + sense * 7.0
             self.s.arrow(tail, tip, lw=0.9, dashes=dashes, head=2.6, gid=gid)
-            labels.append((tip, rf"${symbol}_{{{driver.point}}}$", f"{gid}-label"))
+            labels.append((tip, rf"${symbol}_{{{math_name(driver.point)}}}$", f"{gid}-label"))
         # labels after both arrows, so that neither label lands on the other arrow
         for tip, text, gid in labels:
             self._label(tip, text, gid=gid, size=LABEL_PT, prefer=u * side, math_=True)
@@ -964,6 +1005,10 @@ class MechanismDrawing:
             self._label(q, name, gid=f"point-{name}", size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=(r, r + 0.8, r + 1.8, r + 3.0, r + 5.0))
 
     def link_labels(self) -> None:
+        # every bar and block centre once, as geometry: each bar's label keeps away from all but its own
+        bar_names = list(self.bars)
+        marks = np.array([LineString([(p0.real, p0.imag), (p1.real, p1.imag)]) for p0, p1 in self.bars.values()]
+                         + [Point(q.real, q.imag) for q in getattr(self, "block_centres", {}).values()], dtype=object)
         for body in self.moving:
             if body in self.plates:
                 self._label(self.plates[body], body, gid=f"number-{body}", size=SMALL_PT + 1, first=(self.plates[body],))
@@ -973,11 +1018,12 @@ class MechanismDrawing:
                 n = unit(c - a) * 1j
                 # beside its own bar, on the stretch furthest from every other link and
                 # block (linear-arm: "3" on rod F–G, not by rocker D–K where the bar's middle is)
-                others = [LineString([(p0.real, p0.imag), (p1.real, p1.imag)]) for b, (p0, p1) in self.bars.items() if b != body]
-                others += [Point(q.real, q.imag) for b, q in getattr(self, "block_centres", {}).items()]
+                others = np.delete(marks, bar_names.index(body))
                 spots = [a + (c - a) * t + n * side * 2.8 for t in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8) for side in (1, -1)]
-                if others:
-                    spots.sort(key=lambda z: -min(Point(z.real, z.imag).distance(o) for o in others))
+                if len(others):
+                    far = shapely.distance(shapely.points([(z.real, z.imag) for z in spots])[:, None], others[None, :]).min(axis=1)
+                    order = sorted(range(len(spots)), key=lambda k: -far[k])
+                    spots = [spots[k] for k in order]
                 self._label(mid, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=n, first=tuple(spots[:4]), gaps=(1.2, 2.5, 4.0, 7.0))
             elif body in self.block_centres:
                 centre = self.block_centres[body]

@@ -17,10 +17,12 @@ from __future__ import annotations
 import cmath
 import math
 
+import numpy as np
+import shapely
 from shapely.geometry import MultiPoint, Point
 from shapely.geometry import Polygon as ShapelyPolygon
 
-from .._text import SUBSCRIPT
+from .._text import SUBSCRIPT, math_name
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
 from .numerals import localised, scale_caption
@@ -44,6 +46,10 @@ __all__ = [
     "draw_velocity_plan",
     "draw_acceleration_plan",
     "vectors_drawn",
+    "aliases",
+    "alongside",
+    "pole_text",
+    "along_note",
     "kinds_drawn",
     "vector_math",
     "end_letters",
@@ -133,7 +139,7 @@ def vector_math(label: str) -> str:
     """A plan vector's name as mathtext: ``"a^n_CA"`` → ``"$a^{n}_{\\mathrm{CA}}$"``."""
     head, _, sub = label.partition("_")
     symbol, _, sup = head.partition("^")
-    text = symbol + (f"^{{{sup}}}" if sup else "") + (rf"_{{\mathrm{{{sub}}}}}" if sub else "")
+    text = symbol + (f"^{{{sup}}}" if sup else "") + (rf"_{{\mathrm{{{math_name(sub)}}}}}" if sub else "")
     return f"${text}$"
 
 
@@ -190,13 +196,77 @@ def draw_acceleration_plan(plan, ax=None, *, lang: str = "en") -> list:
     return draw_plan(plan, ax, lang=lang)
 
 
-def image_text(name: str) -> str:
-    """An image's label as the textbook prints it: the link number of a coincident point as a subscript.
+def image_text(name: str, points: dict | None = None) -> str:
+    """An image's label as the textbook prints it: the point's name in lower case, the link number of a coincident point as a subscript.
 
-    ``"e5"`` → ``"e₅"``, ``"a4′"`` → ``"a₄′"``; names without digits are unchanged.
+    *points* is the plan's :attr:`~plans.graphical.plan.Plan.points` (image label ->
+    (point as the scene writes it, link number or ``""``)): ``"e5"`` of (E, 5) → ``"e₅"``,
+    ``"a4′"`` → ``"a₄′"``, and the image of a point the scene names O2 → ``"o2"``, its digits
+    as written (not ``"o₂"``, which would read as the point O of link 2).  Without *points*
+    (or for a label it does not know) trailing digits are taken for a link number.
     """
+    base = name.rstrip("′")
+    primes = name[len(base):]
+    if points and name in points:
+        point, body = points[name]
+        return point.lower() + body.translate(SUBSCRIPT) + primes
     letters = name.rstrip("0123456789′")
     return letters + name[len(letters):].translate(SUBSCRIPT)
+
+
+def pole_text(plan) -> str:
+    """The pole's label: ``p`` (``π``), or ``pᵥ`` (``πₐ``) when an image would otherwise share it (a point named P)."""
+    texts = {image_text(name, plan.points) for name, z in plan.images.items() if abs(z) > SAME_MM}
+    pole = image_text(plan.pole)
+    if pole in texts:
+        return pole + ("ᵥ" if plan.kind == "velocity" else "ₐ")
+    return pole
+
+
+def aliases(plan) -> dict[str, list[str]]:
+    """Absolute vector label -> the other names of the same vector, which the drawing draws once with it.
+
+    A relative vector from a point at rest (v_A4C with c at the pole, v_HQ, v_EE0) or a crank pin's
+    normal acceleration (a^n_AO) *is* the absolute vector: the plan draws it once, as absolute, and
+    the readings name it both ways (``v_A4 = v_A4C``).
+    """
+    vectors = [v for v in plan.vectors if abs(v.tip - v.tail) > ZERO_MM]
+    out: dict[str, list[str]] = {}
+    for w in vectors:
+        if w.kind != "absolute":
+            continue
+        for v in vectors:
+            if v.kind != "absolute" and _same(v, w) and v.label not in out.setdefault(w.label, []):
+                out[w.label].append(v.label)
+    return {k: names for k, names in out.items() if names}
+
+
+#: Two vectors from the pole closer than this in direction [degrees], the shorter's tip within
+#: :data:`BESIDE_MM` of the longer's shaft, lie one on the other: a note under the plan gives both directions.
+ALONG_DEG = 3.0
+#: ...but more than this apart [degrees]: images on one line through the pole (quick-return a₄ on p d, the
+#: similarity of link 4's images) lie exactly along, as the construction makes them, and need no note.
+ALONG_MIN_DEG = 0.05
+
+
+def alongside(plan) -> list[tuple]:
+    """Pairs (shorter, longer) of drawn absolute vectors that lie one along the other (six-bar π m′ on π a′, 0.6° apart).
+
+    The shorter's head stands on the longer's shaft (within a white rim); as the two shafts read
+    as one, the plan's notes give both directions (:func:`draw_plan`).
+    """
+    absolute = [v for v in vectors_drawn(plan) if v.kind == "absolute" and v.length >= SHORT_MM and abs(v.tail) <= SAME_MM]
+    out = []
+    for v in absolute:
+        for w in absolute:
+            if w is v or w.length <= v.length + SAME_MM:
+                continue
+            turn = abs(math.degrees(cmath.phase(complex(v.tip) / complex(w.tip))))
+            off = (complex(v.tip) * unit(complex(w.tip)).conjugate()).imag
+            if ALONG_MIN_DEG < turn < ALONG_DEG and abs(off) < BESIDE_MM:
+                out.append((v, w))
+                break
+    return out
 
 
 def legend_row(sketch, kind: str, words: str, x: float, y: float, *, text_gid: str) -> None:
@@ -323,7 +393,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             in_detail.setdefault(label, name)
 
     if caption:
-        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label), in_detail.get(v.label)) for v in shorts])
+        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label), in_detail.get(v.label)) for v in shorts], along=alongside(plan))
 
 
 def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[str]]]:
@@ -394,7 +464,7 @@ def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[c
     Images closer than :data:`SAME_MM` share one label ("p, o, c"); the end of a
     short component within *join* of an image shares that image's label ("a′, n₁").
     """
-    groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [(image_text(plan.pole), "pole-label")])]
+    groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [(pole_text(plan), "pole-label")])]
     short = {v.label for v in shorts}
 
     def add(z: complex, piece: tuple[str, str], within: float) -> None:
@@ -405,7 +475,7 @@ def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[c
         groups.append((z, [piece]))
 
     for name, z in images.items():
-        add(z, (image_text(name), f"image-{name}"), SAME_MM)
+        add(z, (image_text(name, getattr(plan, "points", None)), f"image-{name}"), SAME_MM)
     for z, letter, label in ends:
         add(z, (letter, f"end-{label}"), join if label in short else SAME_MM)
     return groups
@@ -460,10 +530,24 @@ def _spot(sketch: Sketch, ring: tuple[complex, float, float], within: bool = Fal
         for i in range(int(max(0.0, b.width - 2 * free) / step) + 1)
         for j in range(int(max(0.0, b.height - 2 * free) / step) + 1)
     ]
-    for c in sorted(spots, key=lambda c: (abs(c - centre), c.real, c.imag)):
-        disk = Point(c.real, c.imag).buffer(free)
-        if not any(disk.intersects(o) for o in sketch.obstacles.near(c.real - free, c.imag - free, c.real + free, c.imag + free)):
-            return c
+    spots.sort(key=lambda c: (abs(c - centre), c.real, c.imag))
+    # A spot is free when its disk (a polygon inside the circle of radius *free*) meets no obstacle.  One
+    # spatial query finds, for every spot at once, the obstacles within *free* of it (a superset of those
+    # the disk meets); the disks themselves are made and tested only for those pairs.
+    # the spots in batches, nearest the crowd first: a free spot near it ends the search early
+    obstacles = np.array([o for o in sketch.obstacles if not o.is_empty], dtype=object)
+    tree = shapely.STRtree(obstacles)
+    for start in range(0, len(spots), 1024):
+        batch = spots[start:start + 1024]
+        points = shapely.points([(c.real, c.imag) for c in batch])
+        pairs = tree.query(points, predicate="dwithin", distance=free * (1 + 1e-9) + 1e-9)
+        near = np.zeros(len(batch), dtype=bool)
+        if pairs.shape[1]:
+            meets = shapely.intersects(shapely.buffer(points[pairs[0]], free, quad_segs=16), obstacles[pairs[1]])  # as Point.buffer
+            near[pairs[0][meets]] = True
+        free_spots = np.flatnonzero(~near)
+        if len(free_spots):
+            return batch[int(free_spots[0])]
     if within:
         return None
     # level with the crowd, but within the plan's height when the plan is taller than the detail
@@ -662,8 +746,28 @@ def legend_words(plan_kind: str, kind: str, lang: str = "en") -> str:
     return term(LEGEND_TERMS[plan_kind][kind], lang)
 
 
-def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True, notes=()) -> None:
-    """Heading, scale factor, notes on vectors too short to draw, and the legend, below the plan."""
+def _tip_text(plan, v) -> str:
+    """The letter of the image at *v*'s tip (the one *v*'s name is of, when several meet there)."""
+    sub = v.label.partition("_")[2]
+    here = [name for name, z in plan.images.items() if abs(z - complex(v.tip)) <= SAME_MM]
+    named = [name for name in here if "".join(plan.points.get(name, (name.rstrip("′").upper(), ""))) == sub]
+    name = (named or here or ["?"])[0]
+    return image_text(name, plan.points)
+
+
+def along_note(plan, v, w, lang: str = "en") -> str:
+    """The note on two vectors from the pole that lie one along the other: ``∠ πm′ = 235.6°, ∠ πa′ = 235.0°``
+    (directions 0…360°, counter-clockwise from the x axis; language-neutral)."""
+    pole = pole_text(plan)
+
+    def angle(u) -> str:
+        return localised(f"{math.degrees(cmath.phase(complex(u.tip) - complex(u.tail))) % 360.0:.1f}", lang)
+
+    return f"∠ {pole}{_tip_text(plan, v)} = {angle(v)}°,  ∠ {pole}{_tip_text(plan, w)} = {angle(w)}°"
+
+
+def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True, notes=(), along=()) -> None:
+    """Heading, scale factor, notes on vectors too short to draw and on vectors that lie one along the other, and the legend, below the plan."""
     symbol, units = _UNITS[plan.kind]
     heading = term("velocity_plan" if plan.kind == "velocity" else "acceleration_plan", lang)
     b = sketch.bounds
@@ -686,6 +790,9 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
             cursor = x
         sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=f"short-{v.label}", obstacle=False, math=True)
         cursor += w + 4.0
+    for v, w in along:
+        y -= 4.6
+        sketch.text(complex(x, y), along_note(plan, v, w, lang), size=CAPTION_PT, ha="left", va="top", gid=f"along-{v.label}", obstacle=False)
     if not legend:
         return
     drawn = {v.kind for v in vectors if v.length >= SHORT_MM}  # as kinds_drawn: a kind only in notes is not listed

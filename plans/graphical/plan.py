@@ -143,6 +143,11 @@ class Plan(_Drawable):
         Moving link -> labels of the images of its points on this plan (the
         image of a link's figure, similar to the link: ``"3": ("a", "b", "c")``,
         ``"5": ("b", "e5", "m")``).  Empty when not known.
+    points : dict[str, tuple[str, str]]
+        Image label -> (the mechanism point's name as the scene writes it, the
+        number of the link it is a point of, or ``""``): ``"e5"`` -> ``("E", "5")``,
+        ``"o2"`` of a point named O2 -> ``("O2", "")``.  How a drawing letters the
+        image (:func:`plans.drawing.plan_drawing.image_text`).  Empty when not known.
     """
 
     kind: str
@@ -152,6 +157,7 @@ class Plan(_Drawable):
     steps: tuple[Step, ...]
     vectors: tuple[PlanVector, ...]
     links: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    points: dict[str, tuple[str, str]] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)

@@ -25,6 +25,7 @@ points, or a plan's pole, images and vector ends.
 from __future__ import annotations
 
 import math
+import sys
 
 __all__ = [
     "MANTISSAS",
@@ -163,8 +164,9 @@ def check_scale(key: str, k: float, size: float, *, what: str, where: str, sourc
     low, high = fitting_range(size)
     unit = _UNITS[key]
     problem = "larger than the largest sheet (A0)" if drawn > DRAWN_LARGEST else "smaller than a millimetre"
+    drawn_text = f"{drawn:.3g} mm large" if math.isfinite(drawn) else f"larger than {sys.float_info.max:.3g} mm (the largest number there is)"
     raise SceneError(
-        f"{key} = {k:g} {unit} draws {what} {drawn:.3g} mm large {where}, {problem}; a figure is drawn "
+        f"{key} = {k:g} {unit} draws {what} {drawn_text} {where}, {problem}; a figure is drawn "
         f"{DRAWN_LEAST:g} to {DRAWN_LARGEST:g} mm large: for this scene at this position {key} from "
         f"{_round_up(low)} to {_round_down(high)} {unit} fits (leave it out for an automatic round value)",
         source,

@@ -106,13 +106,16 @@ class Sketch:
         self.primed = kind == "acceleration"
         self.images: dict[str, complex] = {}
         self.named: dict[str, str] = {}  # image label -> named point it is the image of
+        self.points: dict[str, tuple[str, str]] = {}  # image label -> (point, body number or "")
         self.components: list[Vec] = []
         self.steps: list[_Step] = []
 
     # -- drawing -------------------------------------------------------------
 
     def label(self, point: str, body: str | None = None) -> str:
-        return image_label(point, body, self.primed)
+        label = image_label(point, body, self.primed)
+        self.points.setdefault(label, (point, body_label(body) if body is not None else ""))
+        return label
 
     def place(self, label: str, at: complex, point: str | None = None) -> None:
         """Mark an image on the plan (``point``: the named mechanism point it belongs to)."""
@@ -172,12 +175,21 @@ class Sketch:
         return out
 
     def finish(self, k: float, precision: float | None, links: dict[str, tuple[str, ...]] | None = None) -> Plan:
-        """The plan redrawn at scale *k*, named absolute vectors added, zero vectors left out."""
+        """The plan redrawn at scale *k*, absolute vectors added, zero vectors left out.
+
+        Every image has its absolute vector from the pole: a named point's (``v_D``) and
+        that of a point of a link coinciding with a slider's pin (``v_A4``, ``a_E5``), which the
+        construction reaches through components (v_A4 = v_C + v_A4C).
+        """
         f = self.k0 / k
         absolute = []
         symbol = "v" if self.kind == "velocity" else "a"
         for label, point in self.named.items():
             absolute.append(Vec(0j, self.images[label], "absolute", f"{symbol}_{point}"))
+        for label, z in self.images.items():
+            if label not in self.named and label in self.points:
+                point, body = self.points[label]
+                absolute.append(Vec(0j, z, "absolute", f"{symbol}_{point}{body}"))
         everything = absolute + self.components
         largest = max((abs(v.delta) for v in everything), default=0.0)
         tiny = ZERO * largest
@@ -208,11 +220,12 @@ class Sketch:
             for s in self.steps
         )
         images = {label: z * f for label, z in self.images.items()}
-        return Plan(self.kind, k, self.pole, images, steps, frozen(absolute + self.components), dict(links or {}))
+        points = {label: self.points[label] for label in images if label in self.points}
+        return Plan(self.kind, k, self.pole, images, steps, frozen(absolute + self.components), dict(links or {}), points)
 
     def largest(self) -> float:
-        """The largest vector the finished plan draws [physical units]: a named point's absolute vector or a component."""
-        everything = [abs(self.images[label]) for label in self.named] + [abs(v.delta) for v in self.components]
+        """The largest vector the finished plan draws [physical units]: an image's absolute vector or a component."""
+        everything = [abs(z) for z in self.images.values()] + [abs(v.delta) for v in self.components]
         return max(everything, default=0.0) * self.k0
 
 
