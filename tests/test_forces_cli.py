@@ -136,7 +136,7 @@ def test_examples_loads_lists_the_loaded_scenes(capsys):
 
 
 def test_sweep_adds_the_balancing_moment_and_every_reaction(capsys):
-    status, out, _ = run(capsys, "sweep", "--example", "slider-crank-loads", "--steps", "12")
+    status, out, _ = run(capsys, "sweep", "--example", "slider-crank-loads", "--steps", "12", "--start", "scene")
     assert status == 0
     rows = list(csv.DictReader(io.StringIO(out)))
     header = list(rows[0])

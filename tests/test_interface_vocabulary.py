@@ -224,6 +224,25 @@ VOCABULARY = {
     "kd_unsolved": {"sr": "механизам није решен у положајима {positions}: графичко диференцирање спаја суседне положаје и потребан му је сваки", "ru": "механизм не решается в положениях {positions}: графическое дифференцирование соединяет соседние положения, и нужны все", "bg": "механизмът не е решен в положенията {positions}: графичното диференциране свързва съседни положения и са нужни всички", "sl": "mehanizem ni rešen v legah {positions}: grafično odvajanje povezuje sosednje lege in potrebuje vse"},
     "kd_not_drawn": {"sr": "Дијаграми нису нацртани", "ru": "Диаграммы не построены", "bg": "Диаграмите не са построени", "sl": "Diagrami niso narisani"},
     "chords_order": {"sr": "грешка метода тетива опада као Δt²: са двоструко више положаја на око четвртину", "ru": "погрешность метода хорд убывает как Δt²: при вдвое большем числе положений примерно вчетверо", "bg": "грешката на метода на хордите намалява като Δt²: при двойно повече положения до около една четвърт", "sl": "napaka metode tetiv pada kot Δt²: pri dvakrat več legah na približno četrtino"},
+    # the force plans' drawings (issue 22; domain.md §11's table for "force plan")
+    "force_plan": {"sr": "План сила", "ru": "План сил", "bg": "План на силите", "sl": "Načrt sil"},
+    "kinetostatics_page": {"sr": "Кинетостатика: планови сила", "ru": "Кинетостатика: планы сил", "bg": "Кинетостатика: планове на силите",
+                           "sl": "Kinetostatika: načrti sil"},
+    "free_bodies": {"sr": "Оптерећења и реакције на групама", "ru": "Нагрузки и реакции групп", "bg": "Натоварвания и реакции на групите",
+                    "sl": "Obremenitve in reakcije na skupinah"},
+    "force_couple": {"sr": "спрег", "ru": "пара сил", "bg": "двоица сили", "sl": "dvojica sil"},
+    "force_external": {"sr": "задата сила", "ru": "заданная сила", "bg": "зададена сила", "sl": "dana sila"},
+    "force_inertia": {"sr": "сила инерције", "ru": "сила инерции", "bg": "инерционна сила", "sl": "vztrajnostna sila"},
+    "force_normal": {"sr": "компонента Rⁿ дуж члана", "ru": "составляющая Rⁿ вдоль звена", "bg": "съставяща Rⁿ по звеното", "sl": "komponenta Rⁿ vzdolž člena"},
+    "force_tangential": {"sr": "компонента Rᵗ ⊥ на члан", "ru": "составляющая Rᵗ ⊥ звену", "bg": "съставяща Rᵗ ⊥ на звеното", "sl": "komponenta Rᵗ ⊥ na člen"},
+    "force_reaction": {"sr": "реакција R", "ru": "реакция R", "bg": "реакция R", "sl": "reakcija R"},
+    "force_weight": {"sr": "тежина G", "ru": "сила тяжести G", "bg": "сила на тежестта G", "sl": "teža G"},
+    "lever_arm": {"sr": "крак h", "ru": "плечо h", "bg": "рамо h", "sl": "ročica h"},
+    "lever_turned": {"sr": "план брзина заокренут за 90°, свако оптерећење у слици своје тачке",
+                     "ru": "план скоростей, повёрнутый на 90°, каждая нагрузка в изображении своей точки",
+                     "bg": "планът на скоростите, завъртян на 90°, всяко натоварване в образа на своята точка",
+                     "sl": "načrt hitrosti, zasukan za 90°, vsaka obremenitev v sliki svoje točke"},
+    "not_to_scale": {"sr": "стрелице нису у размери", "ru": "стрелки не в масштабе", "bg": "стрелките не са в мащаб", "sl": "puščice niso v merilu"},
 }
 
 #: domain.md §9, word for word: the headings every handout carries.
