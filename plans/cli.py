@@ -522,13 +522,13 @@ def _sweep(args) -> int:
             if args.format == "svg":
                 from .drawing.diagrams import write_cycle_diagrams
 
-                paths = write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components, cycle=cycle)
+                paths = write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components, cycle=cycle, extremes=found)
             else:
                 from ._files import replace_all
                 from .drawing.diagrams import draw_cycle_diagrams
                 from .drawing.formats import render
 
-                figures = draw_cycle_diagrams(analytic, marked=marked, lang=args.lang, components=args.components, cycle=cycle)
+                figures = draw_cycle_diagrams(analytic, marked=marked, lang=args.lang, components=args.components, cycle=cycle, extremes=found)
                 paths = replace_all({Path(args.plot) / f"{name}.{args.format}": render(fig, args.format) for name, fig in figures})
     if not args.output:
         sys.stdout.write(text)

@@ -461,7 +461,7 @@ class PositionsRun:
     def diagrams(self, *, lang: str = "en", components: bool = False) -> "Diagrams":
         """The kinematic diagrams over the cycle, the positions of the run marked."""
         return Diagrams(self.cycle, marked=self.motion if self.motion is not None else self.positions, lang=lang,
-                        components=components, cycle=self.dense)
+                        components=components, cycle=self.dense, extremes=self.strokes)
 
     def plot(self, ax=None, *, lang: str = "en"):
         """Draw the plan of positions into *ax* (a new figure when None); returns the Axes."""
@@ -491,18 +491,20 @@ class Diagrams:
     >>> d.plot("omega")                                   # doctest: +SKIP
     """
 
-    def __init__(self, analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None):
+    def __init__(self, analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None, extremes=None):
         self.analytic = analytic
         self.marked = marked
         self.lang = lang
         self.components = components
         self.cycle = cycle  # the law the sweep was solved under (plans.motion.Cycle), stated on the diagrams
+        self.extremes = extremes  # the output's extreme positions (plans.motion.Strokes): 0′ marked
 
     def figures(self) -> list:
         """(name, Figure) pairs: ``links``, ``points`` and, with prismatic pairs, ``sliders``."""
         from .drawing.diagrams import draw_cycle_diagrams
 
-        return draw_cycle_diagrams(self.analytic, marked=self.marked, lang=self.lang, components=self.components, cycle=self.cycle)
+        return draw_cycle_diagrams(self.analytic, marked=self.marked, lang=self.lang, components=self.components, cycle=self.cycle,
+                                   extremes=self.extremes)
 
     def plot(self, quantity: str = "omega", ax=None):
         """One diagram (``"omega"``, ``"v"``, ``"coriolis"`` …) into *ax* (a new figure when None); returns the Axes."""
