@@ -555,9 +555,9 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     scene = analytic.scene
     start = float(analytic.driver[0])  # position 0's angle, for the note φ₂ = start + Δφ
     analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked, cycle)
-    if not rolled:  # 0′ dotted, unless it falls on a numbered position's line (within 2 % of the axis: it reads as that)
+    if not rolled:  # 0′ dotted, unless it falls on a numbered position's line (within 1.2 % of the axis: it reads as that)
         span = limits[1] - limits[0]
-        marks = marks + [m for m in _other_extreme(cycle, extremes, x, start) if all(abs(m[1] - xm) > 0.02 * span for _, xm in marks)]
+        marks = marks + [m for m in _other_extreme(cycle, extremes, x, start) if all(abs(m[1] - xm) > 0.012 * span for _, xm in marks)]
     valid = np.asarray(analytic.valid, dtype=bool)
     invalid = ~valid
     near = _near_dead(analytic, ring=rolled)
