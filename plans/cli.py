@@ -388,12 +388,14 @@ def _solve(args) -> int:
         scenes = [scene.at(value) for value in _listed_positions(scene, args.at)]
     else:
         scenes = [scene]
-    from .motion import cycle_summary, cycle_text
-
-    cycle = cycle_summary(args.loaded_scene)  # the law, Grashof classes, strokes: the scene file's, at every position asked for
     documents, tables, solutions = [], [], []
+    cycle: dict = {}  # the law, Grashof classes, strokes: the scene file's, the same at every position asked for (filled below)
     for k, one in enumerate(scenes):
         analytic = solve(one, warn_condition=args.warn_condition)
+        if not cycle:  # after the scene's own errors (solve's): what the cycle says of the scene file
+            from .motion import cycle_summary
+
+            cycle.update(cycle_summary(args.loaded_scene))
         graphical = comparisons = None
         if not args.analytic_only:
             from .compare import compare
@@ -422,6 +424,8 @@ def _solve(args) -> int:
     if args.json:
         text = format_json(documents[0] if len(scenes) == 1 else documents)
     else:
+        from .motion import cycle_text
+
         text = "\n".join(tables) + cycle_text(cycle)
     for analytic, graphical in solutions:
         _warn_solution(analytic, graphical)
