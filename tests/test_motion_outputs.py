@@ -153,3 +153,15 @@ def test_the_other_extreme_position_is_marked_0_prime():
     # the output is at rest there: ω₄ = 0 at 0′
     other = plans.solve(scene, [run.strokes.other_position], rates=(10.0, 0.0))
     assert abs(float(other.links["4"].omega[0])) < 1e-9
+
+
+def test_a_driver_at_rest_draws_its_instant_but_has_no_cycle(capsys, tmp_path):
+    scene = tmp_path / "rest.toml"
+    scene.write_text(plans.example_path("four-bar").read_text().replace('omega = "10 rad/s"', "omega = 0").replace('epsilon = "5 rad/s^2"', "epsilon = 0"))
+    status, out, _ = _run(capsys, "draw", str(scene), "-o", str(tmp_path / "one"))
+    assert status == 0 and (tmp_path / "one" / "sheet.svg").exists()  # the instant: all its plans at the pole
+    status, out, err = _run(capsys, "draw", str(scene), "--positions", "4", "-o", str(tmp_path / "four"))
+    assert status == 2 and "driver.law" in err and "does not move" in err and not (tmp_path / "four").exists()
+    status, out, _ = _run(capsys, "solve", str(scene), "--json", "--analytic-only")
+    cycle = json.loads(out)["cycle"]
+    assert cycle["law"] is None and "does not move" in cycle["law_error"] and cycle["four_bar_loops"][0]["grashof_class"] == "crank-rocker"
