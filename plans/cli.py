@@ -508,9 +508,15 @@ def _sweep(args) -> int:
         raise _nowhere(scene, positions)
     if lost:
         _warn(f"the mechanism is not solved at {lost} of {args.steps} positions; their rows have assembled = 0 and empty cells")
-    if cycle.law.kind != "harmonic":  # a swing runs there and back over the same angles: its limits are not losses
-        for message in analyse_sweep(analytic, args.warn_condition).messages():
-            _warn(message)
+    report = analyse_sweep(analytic, args.warn_condition)
+    crossed = report.crossed
+    if cycle.law.kind == "harmonic":  # a swing turns back at its limit positions, where its limiting group lines up
+        limits = cycle.law.limits
+        step = 2 * math.pi * max(limits.swing, 1e-9) / len(positions)  # (a grid step of the swing, in crank angle, generously)
+        crossed = tuple(c for c in crossed if not (c.group == limits.group and min(
+            abs(math.remainder(c.nearest - x, 2 * math.pi)) for x in (limits.lo, limits.hi)) <= step))
+    for message in [str(x) for x in report.lost] + [str(x) for x in crossed]:
+        _warn(message)
     stated = [cycle.law.describe(args.lang, driver.link)]
     found = strokes(scene, args.law, analytic.structure)
     if found is not None:
