@@ -434,7 +434,7 @@ def handout_pages(
     from .drawing.sheets import draw_check_pages, draw_cover_page, draw_position_page, draw_unsolved_page, position_page_frames
     from .graphical import construct
     from .loops import loop_equations
-    from .positions import at_page_precision, run_positions
+    from .positions import at_page_precision, position_text, run_positions
 
     check_language(lang)
     if forces and not scene.has_forces:
@@ -503,6 +503,8 @@ def handout_pages(
     pages: list[tuple[str, object]] = []
     if multi and solved:
         listing = [f"{r.index}:  {r.label}" + ("" if r.ok else f"  ({term('not_solved', lang)}: {r.brief(lang)})") for r in run.runs]
+        if run.strokes is not None and run.motion is not None and run.motion.start == "output" and run.strokes.law.crank:
+            listing.append(f"0′:  {position_text(run.scene, run.strokes.other_position)}")  # the other extreme position
         cover_k = _cover_scale(run, math.ceil(len(listing) / 3), fixed.get("k_l"))
         cover_lines = data + cycle_lines(run, lang) + ["§" + formula]  # k_l stated under the plan of positions
         pages.append(("cover", draw_cover_page(run, lang=lang, header_lines=cover_lines, positions_lines=listing, footer=footer, k_l=cover_k)))
@@ -554,7 +556,7 @@ def handout_pages(
 
     if multi and solved:
         marked = run.motion if run.motion is not None else run.positions
-        for name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense):
+        for name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense, extremes=run.strokes):
             pages.append((f"diagram-{name}", fig))
         for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, footer, law, start), start=1):
             pages.append((f"kinematic-{number}", fig))

@@ -40,7 +40,9 @@ def _bbox(zs):
 def handout(request):
     """One handout of each example at 12 positions, shared by the tests of this module."""
     record = []
-    pages = handout_pages(plans.load(plans.example_path(request.param)), positions=POSITIONS, record=record)
+    # from the scene's angle, the positions these tests were written for (position 0 is by default the output's
+    # extreme position: issue 19)
+    pages = handout_pages(plans.load(plans.example_path(request.param)), positions=POSITIONS, record=record, start="scene")
     return dict(pages), record
 
 
@@ -88,6 +90,8 @@ def test_every_drawing_is_big_enough(handout):
             # a plan's vectors [m/s, m/s²] at the stated factor, in millimetres of paper
             vectors = [abs(v.tip - v.tail) * plan.scale / stated[key] for v in plan.vectors]
             images = [z * plan.scale / stated[key] for z in plan.images.values()] + [0j]
+            if key == "k_a" and all(abs(p.a[0]) == 0 for p in run.analytic.points.values()):
+                continue  # the wedge at the course's constant driver velocity: every acceleration 0, the plan its pole
             assert max(_bbox(images)) >= PLAN_ACROSS_MM, (position, plan.kind)
             assert max(vectors) >= LARGEST_VECTOR_MM, (position, plan.kind, max(vectors))
 
