@@ -395,16 +395,16 @@ def _toml_error(message: str, text: str) -> str:
         key = code.split("=", 1)[0].strip() if "=" in code else ""
         if key:
             where = f"{section} (line {line})" if section else f"line {line}"
-            return f"{where}: {key} is given twice; give each key once (TOML: {what})"
+            return f"{where}: {key} is given twice; give each key once (not valid TOML: {what})"
     elif m := re.match(r"Cannot declare \((.*)\) twice", what):
         table = ".".join(re.findall(r"'([^']*)'", m.group(1)))
-        return f"line {line}: the table [{table}] is declared twice; give it once, with all its keys (TOML: {what})"
+        return f"line {line}: the table [{table}] is declared twice; give it once, with all its keys (not valid TOML: {what})"
     if twice is None or not inline:
         return f"not valid TOML: {message}"
     owner = inline[-1].strip("\"'")
     field = f"{section}.{owner}" if section else owner
     noun = {"points": "point", "lines": "line"}.get(owner, "key")
-    return f"{field} (line {line}): the {noun} {twice} is given twice; give each {noun} once (TOML: {what})"
+    return f"{field} (line {line}): the {noun} {twice} is given twice; give each {noun} once (not valid TOML: {what})"
 
 
 def loads(text: str, source: str = "<scene>") -> Scene:

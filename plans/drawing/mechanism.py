@@ -772,7 +772,8 @@ class MechanismDrawing:
             clearance[body] = gap
             blocked[body] = gap < need
         # links passing by: only those whose shapes over the cycle come within the supports' reach can meet one
-        x0, y0, x1, y1 = shapely.bounds(shapely.union_all(feet))
+        fb = shapely.bounds(feet)
+        x0, y0, x1, y1 = fb[:, 0].min(), fb[:, 1].min(), fb[:, 2].max(), fb[:, 3].max()
         for body, (shapes, (bx0, by0, bx1, by1)) in self._cycle_link_shapes().items():
             if body in meeting:
                 continue
