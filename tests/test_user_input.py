@@ -144,3 +144,11 @@ def test_the_obstacle_grid_takes_a_shape_of_any_length():
     obstacles = Obstacles([LineString([(-1e12, 0), (1e12, 0)]), Point(5, 5).buffer(1)])
     assert len(obstacles.near(4, 4, 6, 6)) == 1 and len(obstacles.near(-1, -1, 1, 1)) == 1
     assert time.perf_counter() - start < 1.0
+
+
+def test_plans_centres_says_how_bare_driver_numbers_were_read(tmp_path, capsys):
+    text = SLIDER_CRANK.replace('omega = "2000 rpm"', "omega = 1850")
+    assert main(["centres", _scene(tmp_path, text), "--no-drawing"]) == 0
+    out, err = capsys.readouterr()
+    assert "bare numbers read as SI and degrees: omega = 1850 → 1850 rad/s" in out
+    assert "driver.omega (line 23) = 1850" in err
