@@ -316,6 +316,15 @@ def _load(args) -> Scene:
     args.loaded_scene = scene  # for errors found later (main names the file)
     for doubt in scene.doubts:  # a bare driver number that looks meant in another unit
         _warn(f"{scene.source}: {doubt}")
+    if any(not isinstance(hint, int) for hint in scene.assembly.values()):  # a location hint far from both assemblies
+        from .analytic.solver import far_hints
+
+        try:
+            hints = far_hints(scene)
+        except PlansError:  # a scene that cannot be solved: the command says why
+            hints = ()
+        for message in hints:
+            _warn(f"{scene.source}: {message}")
     if getattr(args, "at", None) is not None and not _several(args):
         scene = _at(scene, args.at)
     return scene

@@ -648,6 +648,8 @@ def centres_table(result) -> str:
     names = ", ".join(f"{number} = {'frame' if body == 'frame' else 'link ' + body}" for body, number in result.numbers.items())
     w(f"{scene.title}\n")
     w(f"driver: {_driver_words(scene)}\n")
+    if scene.readings:
+        w(f"        bare numbers read as SI and degrees: {'; '.join(scene.readings)}\n")
     w(f"bodies: {names}\n")
     w(f"\nInstant centres: n = {n} bodies, n(n−1)/2 = {len(result.centres)} centres; x, y [m], or the direction [°] of a centre at infinity\n")
     w(f"{'centre':8} {'bodies':8} {'x':>13} {'y':>13}   found by\n")

@@ -503,6 +503,53 @@ def _read_scene_text(path: Path) -> str:
         raise SceneError("the scene file is not UTF-8 text", str(path)) from None
 
 
+_TOML_AT = re.compile(r"\s*\(at line (\d+), column (\d+)\)$")
+_TOML_KEY = re.compile(r"""([A-Za-z0-9_\-]+|"[^"]*"|'[^']*')\s*=\s*\{""")
+
+
+def _toml_error(message: str, text: str) -> str:
+    """The parser's complaint in the scene's words: a key given twice named with its table and line.
+
+    ``Cannot mutate immutable namespace ('B',) (at line 14, column 53)`` becomes
+    ``link.3.points (line 14): the point B is given twice; give each point once``.
+    Other complaints keep the parser's words.
+    """
+    at = _TOML_AT.search(message)
+    if not at:
+        return f"not valid TOML: {message}"
+    line, column = int(at.group(1)), int(at.group(2))
+    what = message[: at.start()]
+    lines = text.splitlines()
+    code = lines[line - 1] if 0 < line <= len(lines) else ""
+    section = ""
+    for previous in lines[: line - 1][::-1] + ([code] if code.lstrip().startswith("[") else []):
+        header = previous.split("#", 1)[0].strip()
+        if header.startswith("["):
+            section = header.strip("[]").strip()
+            break
+    twice = None
+    inline = _TOML_KEY.findall(code[: max(column - 1, 0)])
+    if m := re.match(r"Duplicate inline table key '([^']*)'", what):
+        twice = m.group(1)
+    elif m := re.match(r"Cannot mutate immutable namespace \((.*)\)$", what):
+        parts = re.findall(r"'([^']*)'", m.group(1))
+        twice = parts[-1] if parts and inline else None
+    elif what.startswith("Cannot overwrite a value"):
+        key = code.split("=", 1)[0].strip() if "=" in code else ""
+        if key:
+            where = f"{section} (line {line})" if section else f"line {line}"
+            return f"{where}: {key} is given twice; give each key once (not valid TOML: {what})"
+    elif m := re.match(r"Cannot declare \((.*)\) twice", what):
+        table = ".".join(re.findall(r"'([^']*)'", m.group(1)))
+        return f"line {line}: the table [{table}] is declared twice; give it once, with all its keys (not valid TOML: {what})"
+    if twice is None or not inline:
+        return f"not valid TOML: {message}"
+    owner = inline[-1].strip("\"'")
+    field = f"{section}.{owner}" if section else owner
+    noun = {"points": "point", "lines": "line"}.get(owner, "key")
+    return f"{field} (line {line}): the {noun} {twice} is given twice; give each {noun} once (not valid TOML: {what})"
+
+
 def loads(text: str, source: str = "<scene>") -> Scene:
     """Validate a scene given as TOML text; see :func:`load`."""
     if len(text) > MAX_SCENE_BYTES:
@@ -510,7 +557,7 @@ def loads(text: str, source: str = "<scene>") -> Scene:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"not valid TOML: {exc}", source) from None
+        raise SceneError(_toml_error(str(exc), text), source) from None
     except RecursionError:  # the parser recurses once per level of nested arrays or inline tables
         raise SceneError(_too_deep(), source) from None
     _check_nesting(data, source)

@@ -174,6 +174,20 @@ def _joints(scene: Scene) -> list[Joint]:
     return joints
 
 
+def _shared_points(scene: Scene) -> str:
+    """The points joining three bodies or more, named with their bodies (each such pin is k − 1 joints)."""
+    parts = []
+    for point in scene.point_names:
+        bodies = scene.bodies_with(point)
+        if len(bodies) >= 3:
+            names = [body_words(b) for b in bodies]
+            parts.append(f"point {point} joins {len(bodies)} bodies ({', '.join(names[:-1])} and {names[-1]}): "
+                         f"a pin shared by {len(bodies)} bodies is {len(bodies) - 1} revolute joints")
+    if not parts:
+        return ""
+    return "; " + "; ".join(parts) + " (give each link its own point where it should not be pinned to the others)"
+
+
 def mobility(scene: Scene) -> tuple[int, int, int]:
     """Chebychev–Grübler count ``(W, n, p)`` with W = 3n − 2p."""
     n = len(scene.links)
@@ -247,7 +261,7 @@ def find_structure(scene: Scene) -> Structure:
         )
         raise StructureError(
             f"{scene.source}: mobility W = 3n − 2p = 3·{n} − 2·{p} = {w}, but a mechanism with one driver needs W = 1; {advice}"
-            + (_loose_points(scene) if w > 1 else "")
+            + (_loose_points(scene) if w > 1 else _shared_points(scene))
         )
     joints = _joints(scene)
     if isinstance(scene.driver, Crank):

@@ -362,22 +362,29 @@ def line_travel(solution) -> dict[str, tuple[float, float]]:
 
 
 def format_column(values, shown=None, degrees: bool = False) -> list[str]:
-    """The cells of one CSV column: each value to :data:`DIGITS` significant digits of the column's scale.
+    """The cells of one CSV column: each value to :data:`DIGITS` significant digits of its own size.
 
-    The scale is the largest magnitude among the cells shown, 10^e with e
-    its decimal exponent; every value is rounded to a multiple of
-    10^(e − DIGITS + 1) and written in the shortest form that reads back as
-    that number.  So a result that is an input up to round-off comes back as
-    given (``29.999999999999996`` in a column of angles up to 350 is ``30``,
+    Each value x is rounded to a multiple of 10^(e − DIGITS + 1), 10^e the
+    decimal exponent of max(|x|, m), m the column's typical size (the upper
+    median of the magnitudes of its non-zero cells shown), and written in the
+    shortest form that reads back as that number.  So a value at least as
+    large as the column's typical one keeps its own DIGITS digits, however
+    large it is (a PRP's travel of 1.5e11 near parallel guides does not take
+    the digits of the rows beside it), a smaller one is rounded as round-off
+    of the column's typical size is: a result that is an input up to
+    round-off comes back as given (``29.999999999999996`` is ``30``,
     ``57.00000000000001`` is ``57``), and round-off far below the column's
-    scale is ``0`` (``-6.8e-18`` beside values of order 1).  With *degrees*
-    angles are given in [0, 360) (after rounding, so that 359.99999999999994
-    is 0).  A cell not shown (*shown* False), NaN or infinite is empty.
+    typical size is ``0`` (``-6.8e-18`` beside values of order 1).  With
+    *degrees* angles are given in [0, 360) (after rounding, so that
+    359.99999999999994 is 0).  A cell not shown (*shown* False), NaN or
+    infinite is empty.
 
     >>> format_column([57.00000000000001, 411.99999999999994, -6.77126e-18, 0.5])
     ['57', '412', '0', '0.5']
     >>> format_column([-90.0, 29.999999999999996, 359.99999999999994], degrees=True)
     ['270', '30', '0']
+    >>> format_column([0.123456789012345678, 1.5e11 + 0.123456789, 0.25])
+    ['0.12345678901235', '150000000000.12', '0.25']
     """
     x = np.array(values, dtype=float)
     keep = np.isfinite(x) if shown is None else np.isfinite(x) & np.asarray(shown, dtype=bool)
@@ -386,13 +393,18 @@ def format_column(values, shown=None, degrees: bool = False) -> list[str]:
         return cells
     if degrees:
         x = np.mod(x, 360.0)
-    scale = float(np.abs(x[keep]).max())
-    if scale > 0:
-        decimals = DIGITS - 1 - math.floor(math.log10(scale))
-        if decimals <= 22:  # 10^decimals is exact: numpy's rounding (x·10^d to an integer, / 10^d) is exact too
-            x = np.round(x, decimals)
-        else:  # a column of tiny values: Python's correctly rounded decimal rounding
-            x = np.array([round(value, decimals) for value in x.tolist()])
+    sizes = np.abs(x[keep])
+    nonzero = np.sort(sizes[sizes > 0])
+    if nonzero.size:
+        typical = float(nonzero[nonzero.size // 2])
+        exponents = np.floor(np.log10(np.maximum(np.abs(x), typical), where=keep, out=np.full(len(x), math.log10(typical))))
+        decimals = (DIGITS - 1 - exponents).astype(int)
+        for d in np.unique(decimals[keep]).tolist():
+            at = keep & (decimals == d)
+            if d <= 22:  # 10^d is exact: numpy's rounding (x·10^d to an integer, / 10^d) is exact too
+                x[at] = np.round(x[at], d)
+            else:  # tiny values: Python's correctly rounded decimal rounding
+                x[at] = [round(value, d) for value in x[at].tolist()]
     if degrees:
         x[x >= 360.0] -= 360.0
     x = x + 0.0  # −0 is 0

@@ -79,3 +79,12 @@ def test_draw_positions_with_underscored_names(scene, tmp_path):
     out = tmp_path / "pos"
     assert main(["draw", str(scene), "--positions", "2", "-o", str(out)]) == 0
     assert (out / "sheet-01.svg").exists()
+
+
+def test_equations_set_underscored_names_as_written():
+    from plans.drawing.blocks import pretty_equation
+    from plans.drawing.typeset import plain_runs
+
+    line = pretty_equation("v_C_1_2 = v_A_1_2 + v_C_1_2A_1_2  (⊥ C_1_2A_1_2)")
+    assert plain_runs(line) == "vC_1_2 = vA_1_2 + vC_1_2A_1_2  (⊥ C_1_2A_1_2)"
+    assert pretty_equation("v_C = v_B + v_CB") == "$v_{CB}$".replace("CB", "C") + " = $v_{B}$ + $v_{CB}$"

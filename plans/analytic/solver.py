@@ -34,7 +34,7 @@ from .dyads import DyadSolution, solve_prp, solve_rpp, solve_rpr, solve_rrp, sol
 from .kinematics import BodyState, PointState, sum_terms, coriolis_acceleration, dot, is_number
 from .solution import AnalyticSolution, LinkMotion, PointMotion, SliderMotion, frozen
 
-__all__ = ["solve", "prepare", "PreparedSolver", "driver_position", "CHUNK", "FEW"]
+__all__ = ["solve", "prepare", "PreparedSolver", "driver_position", "far_hints", "CHUNK", "FEW"]
 
 #: A sweep of more driver positions than this is solved in pieces of this
 #: many.  At 100 000 positions each numpy step would stream its operands
@@ -746,6 +746,49 @@ def _hint_points(scene: Scene, group: Group) -> list[str]:
         for name in scene.assembly
         if (name in scene.bodies[i].points or name in scene.bodies[j].points) and name not in outer
     ]
+
+
+def far_hints(scene: Scene, structure: Structure | None = None) -> tuple[str, ...]:
+    """Messages about ``[assembly]`` location hints far from both assemblies of their group.
+
+    A location hint chooses the assembly that puts its point nearer (see
+    :func:`solve`); a hint that lies further from the nearer assembly than
+    half the distance between the two still chooses one, but not plainly:
+    each message names the hint, the group and where the point lies on each
+    branch at the scene's own position.  Groups that cannot be solved there
+    are left to :func:`solve` to report.
+    """
+    structure = find_structure(scene) if structure is None else structure
+    out = []
+    with np.errstate(all="ignore"):
+        plan = _Plan(scene, structure)
+        for group, sign in zip(structure.groups, plan.signs):
+            hints = _hint_points(scene, group) if group.kind not in ("PRP", "RPP") else []
+            if sign is None or not hints or isinstance(scene.assembly[hints[0]], int):
+                continue
+            name = hints[0]
+            hint = scene.assembly[name]
+            owner = group.links[0] if name in scene.bodies[group.links[0]].points else group.links[1]
+            at = {}
+            for s in (sign, -sign):
+                solution = _solve_group(scene, group, plan.here, s)
+                if np.broadcast_to(solution.assembled, (1,))[0]:
+                    link = solution.i if owner == group.links[0] else solution.j
+                    at[s] = complex(np.broadcast_to(link.position(scene.bodies[owner].points[name]), (1,))[0])
+            if len(at) < 2:
+                continue
+            near, other = abs(at[sign] - hint), abs(at[-sign] - hint)
+            if near <= 0.5 * abs(at[sign] - at[-sign]):
+                continue
+            line = scene.key_lines.get(f"assembly.{name}")
+            where = f"assembly.{name} (line {line})" if line else f"assembly.{name}"
+            out.append(
+                f"{where}: {name} near ({hint.real:g}, {hint.imag:g}) m is far from both assemblies of {group.name} at the "
+                f"scene's own position: {name} lies at ({at[sign].real:.4g}, {at[sign].imag:.4g}) m on the branch chosen "
+                f"({near:.3g} m away) and at ({at[-sign].real:.4g}, {at[-sign].imag:.4g}) m on the other ({other:.3g} m away); "
+                f"give a point nearer the assembly meant, or a sign {name} = 1 or {name} = -1"
+            )
+    return tuple(out)
 
 
 def _branch_sign(scene: Scene, group: Group, here: dict[str, BodyState], asked_here: bool = False) -> int:

@@ -361,7 +361,7 @@ def readings_block(graphical, lang: str = "en", *, size: float = READINGS_PT, wi
 
 # --- equations as text ------------------------------------------------------------------
 
-_TOKEN = re.compile(r"(?<![A-Za-z0-9.])([A-Za-zα-ωΑ-Ω])(?:\^([A-Za-z]+))?(?:_([A-Za-z0-9′]+))?(?![A-Za-z0-9])")
+_TOKEN = re.compile(r"(?<![A-Za-z0-9.])([A-Za-zα-ωΑ-Ω])(?:\^([A-Za-z]+))?(?:_([A-Za-z0-9′_]*[A-Za-z0-9′]))?(?![A-Za-z0-9])")
 
 
 def pretty_equation(line: str) -> str:
@@ -374,10 +374,10 @@ def pretty_equation(line: str) -> str:
 
     def repl(m: re.Match) -> str:
         base, sup, sub = m.group(1), m.group(2), m.group(3)
-        if not sup and not sub:
-            return m.group(0)
+        if not sup and not sub or (not sup and base.isascii() and base.isupper()):
+            return m.group(0)  # a point's name (C_1_2), or segment (C_1_2A_1_2): as written
         sup_part = f"^{{{sup}}}" if sup else ""
-        sub_part = f"_{{{sub}}}" if sub else ""
+        sub_part = f"_{{{math_name(sub)}}}" if sub else ""  # names as written: A_1_2 is no double subscript
         return f"${base}{sup_part}{sub_part}$"
 
     text = _TOKEN.sub(repl, line)

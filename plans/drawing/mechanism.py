@@ -726,9 +726,10 @@ class MechanismDrawing:
         _CYCLE_CHOICES[key] = (self.cycle, found)  # the cycle kept with it: its id cannot be reused meanwhile
         return found
 
-    def _cycle_link_shapes(self) -> dict:
-        """Per moving link that is not a block, its shapes over the cycle (a bar's buffered segment, a plate's
-        hull) and the bounds [mm] they all lie in: made once for every support of the drawing."""
+    def _cycle_link_shapes(self) -> tuple:
+        """The moving links that are not blocks, with their shapes over the cycle (a bar's buffered segment, a
+        plate's hull): ``(names, STRtree of every shape, index into names of each shape)``, made once for
+        every support of the drawing."""
         cached = getattr(self, "_link_shapes", None)
         if cached is not None and cached[0] == (id(self.cycle), self.k_l):
             return cached[1]
@@ -748,12 +749,10 @@ class MechanismDrawing:
             return shapes
 
         samples = self._over_cycle(measure)
-        out = {}
-        for body in bodies:
-            shapes = np.array([shs[body] for shs in samples if body in shs], dtype=object)
-            if len(shapes):
-                b = shapely.bounds(shapes)
-                out[body] = (shapes, (b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()))
+        names = [body for body in bodies if any(body in shs for shs in samples)]
+        shapes = [shs[body] for body in names for shs in samples if body in shs]
+        owner = np.array([k for k, body in enumerate(names) for shs in samples if body in shs], dtype=int)
+        out = (names, shapely.STRtree(shapes), owner)
         self._link_shapes = ((id(self.cycle), self.k_l), out)
         return out
 
@@ -771,15 +770,14 @@ class MechanismDrawing:
             gap = np.abs(np.angle(np.exp(1j * (thetas[:, None] - a[None, :])))).min(axis=1) if a.size else np.full(len(thetas), math.pi)
             clearance[body] = gap
             blocked[body] = gap < need
-        # links passing by: only those whose shapes over the cycle come within the supports' reach can meet one
-        x0, y0, x1, y1 = shapely.bounds(shapely.union_all(feet))
-        for body, (shapes, (bx0, by0, bx1, by1)) in self._cycle_link_shapes().items():
-            if body in meeting:
-                continue
-            if bx0 > x1 or bx1 < x0 or by0 > y1 or by1 < y0:
-                blocked[body] = np.full(len(thetas), False)
-            else:
-                blocked[body] = shapely.intersects(feet[:, None], shapes[None, :]).any(axis=1)
+        # links passing by: one spatial query finds which of their shapes over the cycle each support meets
+        names, tree, owner = self._cycle_link_shapes()
+        hit = np.zeros((len(names), len(thetas)), dtype=bool)
+        feet_at, shapes_at = tree.query(feet, predicate="intersects")
+        hit[owner[shapes_at], feet_at] = True
+        for k, body in enumerate(names):
+            if body not in meeting:
+                blocked[body] = hit[k]
         # a link that meets the support whichever way it stands (a crank turning about its pivot, a lever
         # swinging through it) passes over it at some position: the support stays put, the others decide
         avoid = [b for b, hit in blocked.items() if not hit.all()]
