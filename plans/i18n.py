@@ -462,11 +462,11 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "Reakcije v kinematičnih parih",
     },
     "reaction_convention": {
-        "en": "R_ij: the force of link i on link j (0: the frame)",
-        "sr": "R_ij: сила којом члан i делује на члан j (0: постоље)",
-        "ru": "R_ij: сила действия звена i на звено j (0: стойка)",
-        "bg": "R_ij: сила, с която звено i действа на звено j (0: стойка)",
-        "sl": "R_ij: sila, s katero člen i deluje na člen j (0: ogrodje)",
+        "en": "R_ij: the force of link i on link j ({frame}: the frame)",
+        "sr": "R_ij: сила којом члан i делује на члан j ({frame}: постоље)",
+        "ru": "R_ij: сила действия звена i на звено j ({frame}: стойка)",
+        "bg": "R_ij: сила, с която звено i действа на звено j ({frame}: стойка)",
+        "sl": "R_ij: sila, s katero člen i deluje na člen j ({frame}: ogrodje)",
     },
     "balancing_moment": {
         "en": "Balancing moment",

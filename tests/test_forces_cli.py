@@ -218,3 +218,10 @@ def test_the_kinetostatics_never_imports_matplotlib():
     )
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert done.stderr.strip() == "False"
+
+
+@pytest.mark.parametrize("lang, words", [("en", "(1: the frame)"), ("ru", "(1: стойка)"), ("sr", "(1: постоље)")])
+def test_the_table_states_the_frames_number_as_the_labels_use_it(capsys, lang, words):
+    # crank 2: the frame is 1, so R_12 is the frame on the crank (issue 20 §2: one frame number)
+    status, out, _ = run(capsys, "forces", "--example", "slider-crank-loads", "--lang", lang, "--analytic-only")
+    assert status == 0 and words in out and "R_12" in out and "(0:" not in out

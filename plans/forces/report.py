@@ -198,7 +198,7 @@ def forces_table(run: KinetostaticRun, lang: str = "en") -> str:
         else:
             w(f"{load.name:8} {load.body:6} {kind[:24]:24} {r.real:11.5g} {r.imag:11.5g} {_cells(_first(load.force))}\n")
 
-    w(f"\n{term('reactions', lang)} [N]; {term('reaction_convention', lang)}\n")
+    w(f"\n{term('reactions', lang)} [N]; {term('reaction_convention', lang).format(frame=scene.frame_number)}\n")
     w(f"{'':8} {'':6} {'':20} {'Rx':>13} {'Ry':>13} {'|R|':>13} {'∠ [°]':>9} {'Δ':>10} {'δ':>10}\n")
     for label, reaction in analytic.reactions.items():
         w(f"{label:8} {reaction.joint:6} {method_name('analytic', lang)[:20]:20} {_cells(reaction.force[0])}\n")
