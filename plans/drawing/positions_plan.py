@@ -89,8 +89,9 @@ def _segments(values: np.ndarray) -> list[np.ndarray]:
     return [r for r in runs if len(r) >= 2]
 
 
-def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l: float | None = None) -> None:
-    """Draw the plan of positions into a sketch (one data unit = 1 mm)."""
+def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l: float | None = None, heading: bool = True) -> None:
+    """Draw the plan of positions into a sketch (one data unit = 1 mm); *heading* False leaves out the heading and
+    k_l (a page that states them), keeping the legend of the paths."""
     runs = [r for r in positions_run.runs if r.ok]
     if not runs:
         raise ValueError("no position of the run could be solved: there is nothing to draw")
@@ -157,9 +158,12 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     # caption
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 2.5
-    sketch.text(complex(x, y), term("positions_plan", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
-    y -= 5.0
-    sketch.text(complex(x, y), f"$k_l$ = {localised(fmt_number(k_l), lang)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    if heading:
+        sketch.text(complex(x, y), term("positions_plan", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+        y -= 5.0
+        sketch.text(complex(x, y), f"$k_l$ = {localised(fmt_number(k_l), lang)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    else:
+        y += 5.0
     skipped = positions_run.skipped
     if skipped:
         for cause in ("no_assembly", "dead_centre"):
