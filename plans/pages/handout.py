@@ -41,7 +41,7 @@ from ..i18n import term
 from .._text import decimal_comma
 from .equations import step_lines
 from .typesetting import compile_document, image, math as tex, mixed, string, text
-from .words import assembly_lines, namer, units
+from .words import assembly_lines, formula_words, namer, units
 
 __all__ = ["Handout", "build_handout", "ORDER", "ACCELERATIONS_DEFAULT"]
 
@@ -328,7 +328,7 @@ def build_handout(
     doc.section("data")
     doc.heading(f"{term('plate_title', lang)}: {scene.title_in(lang)}", level=1)
     doc.lines(data_lines(scene, lang), size=TEXT_PT)
-    doc.line(f"{term('structural_formula', lang)}:  {run.structure.formula}", size=TEXT_PT)
+    doc.line(f"{term('structural_formula', lang)}:  {formula_words(run.structure.formula)}", size=TEXT_PT)
     branch_words = assembly_lines(sample.analytic.branches, scene, lang)
     if branch_words:
         doc.line(f"{term('assembly', lang)}: " + ";  ".join(branch_words), size=TEXT_PT)
@@ -443,7 +443,7 @@ def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
     except PlansError as exc:
         doc.line(str(exc), size=TEXT_PT)
         return
-    box = (TEXT_WIDTH, 150.0)
+    box = (TEXT_WIDTH, 125.0)
     k = k_l
     block = centres_svg(result, k, lang)
     for _ in range(8):
@@ -580,7 +580,7 @@ class _Document:
         self.body.append(f"#text(size: {SMALL_PT}pt)[#columns(2, gutter: {GUTTER}mm)[" + "\n".join("#" + p for p in parts) + "]]\n")
 
     def loop_block(self, block) -> None:
-        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(block.title)}]\n")
+        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(formula_words(block.title))}]\n")
         for line in block.lines:
             self.body.append(f"#text(size: {SMALL_PT}pt)[{self.words(line)}]\n")
 

@@ -13,10 +13,11 @@ from __future__ import annotations
 import math
 import re
 
+from ..drawing.numerals import course_units as units
 from ..i18n import term
 from ..scene import FRAME
 
-__all__ = ["namer", "assembly_lines", "group_words", "assembly_text", "units"]
+__all__ = ["namer", "assembly_lines", "group_words", "assembly_text", "units", "formula_words", "KINDS"]
 
 
 def namer(scene, lang: str):
@@ -96,30 +97,12 @@ def assembly_lines(branches, scene, lang: str) -> list[str]:
     return out
 
 
-#: Units as the Russian and Bulgarian courses write them (Cyrillic symbols); Serbian and Slovenian
-#: courses write the international symbols, as English does.
-_CYRILLIC_UNITS = {"rad/s²": "рад/с²", "rad/s": "рад/с", "m/s²": "м/с²", "m/s": "м/с", "m/mm": "м/мм", "mm": "мм", "rad": "рад", "m": "м"}
-_UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|mm|rad|m)(?![\w}])")
 
 
-def units(line: str, lang: str) -> str:
-    """*line* with its unit symbols as the course in *lang* writes them (ru, bg: ``м/с``, ``мм``); math parts kept.
+#: The kind of each class II group as the course numbers them (Artobolevsky): RRR 1, RRP 2, RPR 3, PRP 4, RPP 5.
+KINDS = {"RRR": 1, "RRP": 2, "PRR": 2, "RPR": 3, "PRP": 4, "RPP": 5, "PPR": 5}
 
-    Only the text outside ``$…$`` changes, and only whole unit symbols there
-    (a point or a link named ``m`` inside math stays).
-    """
-    if lang not in ("ru", "bg"):
-        return line
-    pieces = re.split(r"(?<!\\)(\$)", line)
-    out, inside = [], False
-    for piece in pieces:
-        if piece == "$":
-            inside = not inside
-            out.append(piece)
-            continue
-        if inside:
-            piece = re.sub(r"\\mathrm\{([^}]*)\}", lambda m: "\\mathrm{" + _UNIT.sub(lambda u: _CYRILLIC_UNITS[u.group(1)], m.group(1)) + "}", piece)
-        else:
-            piece = _UNIT.sub(lambda u: _CYRILLIC_UNITS[u.group(1)], piece)
-        out.append(piece)
-    return "".join(out)
+
+def formula_words(formula: str) -> str:
+    """The structural formula as the course writes it: ``I(1,2) → RRR(3,4)`` → ``I(1,2) → II₁(3,4)`` (``$…$`` math)."""
+    return re.sub(r"\b([RP]{3})\(", lambda m: f"$\\mathrm{{II}}_{{{KINDS[m.group(1)]}}}$(" if m.group(1) in KINDS else m.group(0), formula)
