@@ -9,7 +9,14 @@ Two independent methods over one scene model:
 * :func:`construct` — the graphical velocity and acceleration plans, built
   group by group with construction lines and read off at scale (shapely);
 
-and :func:`compare` sets one against the other.  :func:`write_drawings`
+and :func:`compare` sets one against the other.  Over a cycle the driver
+follows one law (:mod:`plans.motion`): :func:`driver_cycle` gives the
+positions, times [s] and driver rates of a cycle (``cycle.solve()`` the
+solution that is a motion), :func:`strokes` the output's stroke H [m] or
+swing ψ [rad], θ and K, :func:`four_bar_loops` the Grashof class of every
+four-bar loop; :func:`kinematic_diagrams` the output link's s, v, a
+diagrams by graphical differentiation (method of chords) against the plans
+and the analytic values.  :func:`write_drawings`
 draws the mechanism and the plans to SVG (matplotlib).  ``construct`` and
 ``write_drawings`` are imported on first use, so ``import plans`` stays light.
 
@@ -41,6 +48,13 @@ __all__ = [
     "write_position_sheets",
     "run_positions",
     "write_handout",
+    "driver_cycle",
+    "driver_law",
+    "strokes",
+    "crank_limits",
+    "four_bar_loops",
+    "grashof",
+    "kinematic_diagrams",
     "from_mapping",
     "Scene",
     "AnalyticSolution",
@@ -76,6 +90,14 @@ def __getattr__(name: str):
         from .positions import run_positions
 
         return run_positions
+    if name in ("driver_cycle", "driver_law", "strokes", "crank_limits", "four_bar_loops", "grashof"):
+        from . import motion
+
+        return getattr(motion, name)
+    if name == "kinematic_diagrams":
+        from .differentiation import kinematic_diagrams
+
+        return kinematic_diagrams
     if name == "write_handout":
         from .handout import write_handout
 

@@ -148,6 +148,16 @@ DESCRIPTIONS = {
 }
 
 
+def _law_arguments(parser: argparse.ArgumentParser) -> None:
+    group = parser.add_argument_group("the driver's motion over the cycle (see plans.motion)")
+    group.add_argument("--law", choices=["constant", "uniform", "harmonic"],
+                       help="the driver's law over the cycle (default: the scene's [driver] law, else constant speed; "
+                       "a harmonic swing for a crank that cannot turn fully); uniform: ω² = ω₀² + 2ε(φ − φ₀) from the scene's instant")
+    group.add_argument("--start", choices=["output", "scene"], default="output",
+                       help="position 0: the extreme position of the output link that starts its working stroke (default), "
+                       "or the scene's own position")
+
+
 def _add_command(commands, name: str, help: str, **kwargs) -> argparse.ArgumentParser:
     """A subcommand whose --help ends with an example and where the scene format is described."""
     return commands.add_parser(name, help=help, description=help[:1].upper() + help[1:] + ".",
@@ -186,12 +196,15 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument(
         "--plot",
         metavar="DIR",
-        help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) into DIR "
+        help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) and the output link's kinematic diagrams "
+        "by graphical differentiation (kinematic.svg, at --positions positions, 12 by default) into DIR "
         "(without -o the CSV still goes to standard output, the diagrams' names to standard error)",
     )
     sweep.add_argument("--components", action="store_true", help="with --plot: x and y components of v and a too")
     sweep.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="with --plot: format of the diagrams (default svg)")
-    sweep.add_argument("--positions", type=_count, metavar="N", help="with --plot: mark N equally spaced positions (those of plans draw --positions N)")
+    sweep.add_argument("--positions", type=_count, metavar="N", help="with --plot: mark N equally spaced positions (those of plans draw --positions N); "
+                       "the kinematic diagrams' positions (default 12)")
+    _law_arguments(sweep)
     _language_argument(sweep)
     _warn_argument(sweep)
 
@@ -208,6 +221,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     draw.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="format of the files written into DIR (default svg)")
     draw.add_argument("-q", "--quiet", action="store_true", help="with --positions: no progress on stderr (shown only when stderr is a terminal)")
+    _law_arguments(draw)
     _language_argument(draw)
     _warn_argument(draw)
     _scale_arguments(draw)
@@ -219,6 +233,7 @@ def build_parser() -> argparse.ArgumentParser:
     handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
     handout.add_argument("--centres", action="store_true", help="a page more per position: the instant centres (Kennedy's theorem) and the velocities from them against analytic")
     handout.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr (shown only when stderr is a terminal)")
+    _law_arguments(handout)
     _language_argument(handout)
     _scale_arguments(handout)
 
@@ -375,6 +390,9 @@ def _solve(args) -> int:
         scenes = [scene.at(value) for value in _listed_positions(scene, args.at)]
     else:
         scenes = [scene]
+    from .motion import cycle_summary, cycle_text
+
+    cycle = cycle_summary(scene)  # the law, Grashof classes, strokes: the same at every position asked for
     documents, tables, solutions = [], [], []
     for k, one in enumerate(scenes):
         analytic = solve(one, warn_condition=args.warn_condition)
@@ -387,6 +405,7 @@ def _solve(args) -> int:
         centres = _solve_centres(one, analytic, args)
         if args.json:
             doc = solution_json(analytic, graphical, comparisons)
+            doc["cycle"] = cycle
             if centres is not None:
                 from .report import add_centres_json
 
@@ -405,7 +424,7 @@ def _solve(args) -> int:
     if args.json:
         text = format_json(documents[0] if len(scenes) == 1 else documents)
     else:
-        text = "\n".join(tables)
+        text = "\n".join(tables) + cycle_text(cycle)
     for analytic, graphical in solutions:
         _warn_solution(analytic, graphical)
     sys.stdout.write(text)
@@ -473,28 +492,32 @@ def _sweep(args) -> int:
     if args.steps < 2:
         raise SceneError("--steps must be at least 2")
     driver = scene.driver
-    if isinstance(driver, Crank):  # in the sense of ω, as the positions of plans draw and handout
-        from .positions import cycle_positions
+    if not isinstance(driver, Crank) and driver.stroke is None:
+        raise SceneError("a sweep of a linear driver needs its stroke: add stroke = [start, end] to [driver]", scene.source, "driver.stroke")
+    from .motion import driver_cycle, strokes
 
-        positions = np.asarray(cycle_positions(scene, args.steps))
-    else:
-        if driver.stroke is None:
-            raise SceneError("a sweep of a linear driver needs its stroke: add stroke = [start, end] to [driver]", scene.source, "driver.stroke")
-        positions = np.linspace(driver.stroke[0], driver.stroke[1], args.steps)
-    analytic = solve(scene, positions, allow_partial=True, warn_condition=math.inf)
-    text = sweep_csv(analytic)
+    # in the sense of ω, from the output's extreme position, under the driver's law (plans.motion)
+    cycle = driver_cycle(scene, args.steps, law=args.law, start=args.start)
+    positions = cycle.positions
+    analytic = cycle.solve(warn_condition=math.inf)
+    text = sweep_csv(analytic, cycle.t)
     lost = int(np.count_nonzero(~np.asarray(analytic.valid)))
     if lost == len(positions):
         raise _nowhere(scene, positions)
     if lost:
         _warn(f"the mechanism is not solved at {lost} of {args.steps} positions; their rows have assembled = 0 and empty cells")
-    for message in analyse_sweep(analytic, args.warn_condition).messages():
-        _warn(message)
+    if cycle.law.kind != "harmonic":  # a swing runs there and back over the same angles: its limits are not losses
+        for message in analyse_sweep(analytic, args.warn_condition).messages():
+            _warn(message)
+    stated = [cycle.law.describe(args.lang, driver.link)]
+    found = strokes(scene, args.law, analytic.structure)
+    if found is not None:
+        stated += found.summary(args.lang)
+    for line in stated:  # the law and the strokes: on stdout beside the files, on stderr beside the CSV
+        print(line, file=sys.stdout if args.output else sys.stderr)
     marked = None
     if args.plot and args.positions:
-        from .positions import parse_positions
-
-        marked = parse_positions(args.positions, scene)
+        marked = driver_cycle(scene, args.positions, law=args.law, start=args.start)
     paths = []
     with batch():  # the CSV and the diagrams: all written, or none
         if args.output:
@@ -503,19 +526,34 @@ def _sweep(args) -> int:
             if args.format == "svg":
                 from .drawing.diagrams import write_cycle_diagrams
 
-                paths = write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components)
+                paths = write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components, cycle=cycle)
             else:
                 from ._files import replace_all
                 from .drawing.diagrams import draw_cycle_diagrams
                 from .drawing.formats import render
 
-                figures = draw_cycle_diagrams(analytic, marked=marked, lang=args.lang, components=args.components)
+                figures = draw_cycle_diagrams(analytic, marked=marked, lang=args.lang, components=args.components, cycle=cycle)
                 paths = replace_all({Path(args.plot) / f"{name}.{args.format}": render(fig, args.format) for name, fig in figures})
+            paths = list(paths) + _kinematic_diagrams(scene, args)
     if not args.output:
         sys.stdout.write(text)
     for path in paths:
         print(path, file=sys.stderr if not args.output else sys.stdout)
     return 0
+
+
+def _kinematic_diagrams(scene: Scene, args) -> list:
+    """``plans sweep --plot DIR``: the output link's kinematic diagrams by graphical differentiation, at
+    ``--positions`` positions (12 by default), as DIR/kinematic.FORMAT (kinematic-1, kinematic-2 when the table
+    takes a page of its own); a mechanism without an output slider or rocker is said so on standard error."""
+    from .differentiation import kinematic_diagrams
+
+    try:
+        diagrams = kinematic_diagrams(scene, args.positions or 12, law=args.law, start=args.start)
+    except PlansError as exc:
+        _warn(f"no kinematic diagrams of the output link: {exc}")
+        return []
+    return diagrams.save(Path(args.plot) / f"kinematic.{args.format}", lang=args.lang, title=scene.title)
 
 
 def _nowhere(scene: Scene, positions) -> PlansError:
@@ -550,9 +588,14 @@ def _draw(args) -> int:
 
         if _is_file(args.output):
             raise SceneError(f"{args.output}: several positions give several sheets: give a directory (and --format {Path(args.output).suffix[1:]})")
-        run = run_positions(scene, _position_spec(args, scene), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision)
+        run = run_positions(scene, _position_spec(args, scene), k_l=args.k_l, k_v=args.k_v, k_a=args.k_a, precision=args.precision,
+                            law=args.law, start=args.start)
         for message in run.skipped_messages():
             _warn(message)
+        from .handout import cycle_lines
+
+        for line in cycle_lines(run, args.lang):  # the law, the Grashof classes, the strokes (stdout holds the files written)
+            print(line, file=sys.stderr)
         sheets = _position_sheets(run, args.lang, _given_scales(args, scene))
         with batch():
             paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format, sheets=sheets, progress=_progress(args))
@@ -726,6 +769,8 @@ def _handout(args) -> int:
             components=args.components,
             centres=args.centres,
             progress=_progress(args),
+            law=args.law,
+            start=args.start,
         )
     _progress_done(args)
     for path in paths:

@@ -27,7 +27,7 @@ from .errors import PlansError
 from .i18n import check_language, term
 from .scene import FRAME, Crank, Scene
 
-__all__ = ["HandoutError", "write_handout", "handout", "scene_data_lines"]
+__all__ = ["HandoutError", "write_handout", "handout", "scene_data_lines", "cycle_lines"]
 
 class HandoutError(PlansError, ValueError):
     """A handout that cannot be written as asked (such as several pages into one SVG)."""
@@ -98,6 +98,23 @@ def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
     return [line for line in (first, second, third) if line]
 
 
+def cycle_lines(run, lang: str = "en") -> list[str]:
+    """What the plate states of a cycle (issue 19): the driver's law, the Grashof class of every four-bar loop,
+    the output's stroke H (or swing ψ), θ, K and the working stroke (:mod:`plans.motion`)."""
+    from .motion import four_bar_loops
+
+    lines = []
+    if run.motion is not None:
+        lines.append(run.motion.law.describe(lang, run.scene.driver.link))
+    for loop in four_bar_loops(run.scene, run.structure):
+        turning = loop.turning_links()
+        turns = f"{', '.join(turning)}: {term('turn_fully', lang)}" if turning else term("none_turns", lang)
+        lines.append(f"{term('grashof_class', lang)} {loop.group}: {term(loop.grashof.kind, lang)} ({turns})")
+    if run.strokes is not None:
+        lines += run.strokes.summary(lang)
+    return lines
+
+
 def handout(
     scene: Scene,
     *,
@@ -112,6 +129,8 @@ def handout(
     centres: bool = False,
     accelerations=None,
     scales: str = "plate",
+    law: str | None = None,
+    start: str = "output",
 ):
     """The handout of *scene* as a :class:`plans.pages.handout.Handout` (Typst source and drawings; ``.pdf()``).
 
@@ -126,7 +145,7 @@ def handout(
     if scales not in SCALES:
         raise HandoutError(f"scales: {scales!r} is not one of {', '.join(SCALES)}")
     return build_handout(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components,
-                         progress=progress, centres=centres, accelerations=accelerations, scales=scales)
+                         progress=progress, centres=centres, accelerations=accelerations, scales=scales, law=law, start=start)
 
 
 #: ``"plate"``: one k_l, k_v, k_a over the whole handout; ``"per-position"``: k_v, k_a chosen for each position.
@@ -148,6 +167,8 @@ def write_handout(
     centres: bool = False,
     accelerations=None,
     scales: str = "plate",
+    law: str | None = None,
+    start: str = "output",
 ) -> list[Path]:
     """Write the handout of a scene: a PDF of A4 pages, or SVG/PNG pages.
 
@@ -185,6 +206,13 @@ def write_handout(
     scales : str
         ``"plate"`` (default): one k_v and one k_a for the whole handout;
         ``"per-position"``: each position's own (and the pages say so).
+    law : str, optional
+        The driver's law over the cycle (``"constant"``, ``"uniform"``,
+        ``"harmonic"``; :func:`plans.motion.driver_law`); None: the scene's
+        ``[driver] law`` or the default.  Stated with the data and on the diagrams.
+    start : {"output", "scene"}
+        Position 0 of a count: the extreme position of the output link that
+        starts its working stroke (default), or the scene's own position.
 
     Returns
     -------
@@ -213,7 +241,7 @@ def write_handout(
     if positions is None:
         _check_solvable(scene)
     document = handout(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components,
-                       progress=progress, centres=centres, accelerations=accelerations, scales=scales)
+                       progress=progress, centres=centres, accelerations=accelerations, scales=scales, law=law, start=start)
     say = progress or (lambda text: None)
     say(term("page", lang) + " …")
     if suffix == ".pdf":

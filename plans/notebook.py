@@ -30,7 +30,7 @@ import sys
 
 from .display import DISPLAY
 
-__all__ = ["plot", "sheet", "save", "svg", "register"]
+__all__ = ["plot", "sheet", "save", "svg", "register", "kinematic_pages", "save_pages", "svg_of_figure"]
 
 
 def _is_plan(obj) -> bool:
@@ -92,4 +92,27 @@ def register(shell=None) -> bool:
     return True
 
 
-DISPLAY.update(plot=plot, save=save, sheet=sheet)
+def kinematic_pages(diagrams, *, lang: str = "en", title: str = "") -> list:
+    """The pages of :class:`plans.differentiation.KinematicDiagrams` (:func:`plans.drawing.kinematic_diagrams.draw_kinematic_pages`)."""
+    from .drawing.kinematic_diagrams import draw_kinematic_pages
+
+    return draw_kinematic_pages(diagrams, title=title, lang=lang)
+
+
+def save_pages(pages, path) -> list:
+    """Named figures written to *path* by its suffix (:func:`plans.drawing.formats.save_pages`)."""
+    from pathlib import Path
+
+    from .drawing.formats import save_pages as write
+
+    return write(pages, Path(path))
+
+
+def svg_of_figure(fig) -> str:
+    """A figure as SVG text."""
+    from .drawing.svg import render_svg
+
+    return render_svg(fig).decode("utf-8")
+
+
+DISPLAY.update(plot=plot, save=save, sheet=sheet, kinematic_pages=kinematic_pages, save_pages=save_pages, svg_of_figure=svg_of_figure)

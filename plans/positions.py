@@ -94,22 +94,25 @@ def _stroke(scene: Scene) -> tuple[float, float]:
     return driver.stroke
 
 
-def parse_positions(spec, scene: Scene) -> list[float]:
+def parse_positions(spec, scene: Scene, *, law: str | None = None, start: str = "output") -> list[float]:
     """Driver positions from a count or from a list written as text.
 
     Parameters
     ----------
     spec : int, str or sequence
-        * a count N (``12`` or ``"12"`` with no unit): N positions equally
-          spaced over the driver's cycle — a crank's full turn from the
-          scene's own angle, in the sense of ω (position 0 is the scene's
-          own); a linear driver's ``stroke`` from start to end;
+        * a count N (``12`` or ``"12"`` with no unit): N positions of the
+          driver's cycle (:func:`cycle_positions`): a crank's full turn in
+          the sense of ω, from the extreme position of the output link that
+          starts its working stroke (``start="scene"``: from the scene's own
+          angle); a rocker input's swing and back; a linear driver's
+          ``stroke`` from start to end;
         * a list as text, ``"0,30,55,90 deg"`` or ``"0 deg, 0.5 rad"`` or
           ``"10,20,30 mm"``: a unit written after the last number applies to
           every number without one; bare numbers are degrees for a crank
           and metres for a linear driver (as ``--at``);
         * a sequence of numbers (SI: rad or m) or of such strings.
     scene : Scene
+    law, start : see :func:`plans.motion.driver_cycle` (for a count).
 
     Returns
     -------
@@ -126,11 +129,11 @@ def parse_positions(spec, scene: Scene) -> list[float]:
     if isinstance(spec, bool):
         raise SceneError(f"positions: expected a count or a list, got {spec!r}", scene.source, "--positions")
     if isinstance(spec, (int, np.integer)):
-        return cycle_positions(scene, int(spec))
+        return cycle_positions(scene, int(spec), law=law, start=start)
     if isinstance(spec, str):
         text = spec.strip()
         if re.fullmatch(r"\d+", text):
-            return cycle_positions(scene, int(text))
+            return cycle_positions(scene, int(text), law=law, start=start)
         items = [t.strip() for t in text.split(",")]
         if not text or any(not t for t in items):
             raise SceneError(f"positions: expected numbers separated by commas, such as \"0,30,55,90 deg\", got {spec!r}", scene.source, "--at")
@@ -159,36 +162,32 @@ def parse_positions(spec, scene: Scene) -> list[float]:
     return values
 
 
-def cycle_positions(scene: Scene, count: int, *, closed: bool = False) -> list[float]:
-    """*count* positions equally spaced over the driver's cycle (see :func:`parse_positions`).
+def cycle_positions(scene: Scene, count: int, *, closed: bool = False, law: str | None = None, start: str = "output") -> list[float]:
+    """*count* positions of the driver's cycle under its law (:func:`plans.motion.driver_cycle`; see :func:`parse_positions`).
 
-    With ``closed=True`` a crank's list ends with the starting angle plus a
-    full turn (count + 1 entries), so a trajectory drawn through it closes.
+    With ``closed=True`` a crank's (or a swing's) list ends with position 0
+    one cycle later (count + 1 entries), so a trajectory drawn through it closes.
     """
+    from .motion import driver_cycle
+
     if count < 1:
         raise SceneError(f"positions: the count must be at least 1, got {count}", scene.source, "--positions")
-    if _is_crank(scene):
-        start, sense = scene.driver.phi, _sense(scene)
-        n = count + 1 if closed else count
-        return [start + sense * 2 * math.pi * k / count for k in range(n)]
-    a, b = _stroke(scene)
-    if count == 1:
-        return [a]
-    return [a + (b - a) * k / (count - 1) for k in range(count)]
+    if not _is_crank(scene):
+        _stroke(scene)
+    return driver_cycle(scene, count, closed=closed, law=law, start=start).positions.tolist()
 
 
-def cycle_sweep(scene: Scene, structure=None, steps: int = CYCLE_STEPS):
-    """The analytic solution over the driver's cycle: a crank's full turn, or a linear driver's stroke, in
-    *steps* positions (the scene's own position alone when a linear driver has no stroke)."""
+def cycle_sweep(scene: Scene, structure=None, steps: int = CYCLE_STEPS, *, law: str | None = None, start: str = "output"):
+    """The analytic solution over the driver's cycle under its law (:func:`plans.motion.driver_cycle`): a crank's
+    full turn, a rocker input's swing and back, or a linear driver's stroke, in *steps* positions (the scene's own
+    position alone when a linear driver has no stroke)."""
     from .analytic import solve
+    from .motion import driver_cycle
 
-    if _is_crank(scene):
-        at = cycle_positions(scene, steps)
-    elif scene.driver.stroke is not None:
-        at = cycle_positions(scene, steps + 1)
-    else:
-        at = [scene.driver.s]
-    return solve(scene, np.asarray(at, dtype=float), structure, allow_partial=True)
+    if not _is_crank(scene) and scene.driver.stroke is None:
+        return solve(scene, np.asarray([scene.driver.s], dtype=float), structure, allow_partial=True)
+    count = steps if _is_crank(scene) else steps + 1
+    return driver_cycle(scene, count, law=law, start=start, structure=structure).solve(structure)
 
 
 #: Positions of a cycle the scheme's frame is chosen over (every 5° of a crank's turn).
@@ -413,6 +412,13 @@ class PositionsRun:
         The dense sweep over the driver's cycle (``allow_partial``: ``valid``
         says where the mechanism assembles), for trajectories and diagrams;
         a crank's sweep ends with the starting angle plus a full turn.
+    motion : plans.motion.Cycle or None
+        The positions of the runs under the driver's law (their times,
+        driver rates and branches); None for the scene's own position alone.
+    dense : plans.motion.Cycle or None
+        The law over the dense sweep (*cycle*).
+    strokes : plans.motion.Strokes or None
+        The output link's extreme positions, H (or ψ), θ and K.
     """
 
     scene: Scene
@@ -421,6 +427,14 @@ class PositionsRun:
     scales: dict
     precision: float | None
     cycle: object
+    motion: object = None
+    dense: object = None
+    strokes: object = None
+
+    @property
+    def law(self):
+        """The driver's law over the cycle (:class:`plans.motion.DriverLaw`), or None for the scene's own position alone."""
+        return self.motion.law if self.motion is not None else None
 
     def __len__(self) -> int:
         return len(self.runs)
@@ -446,7 +460,8 @@ class PositionsRun:
 
     def diagrams(self, *, lang: str = "en", components: bool = False) -> "Diagrams":
         """The kinematic diagrams over the cycle, the positions of the run marked."""
-        return Diagrams(self.cycle, marked=self.positions, lang=lang, components=components)
+        return Diagrams(self.cycle, marked=self.motion if self.motion is not None else self.positions, lang=lang,
+                        components=components, cycle=self.dense)
 
     def plot(self, ax=None, *, lang: str = "en"):
         """Draw the plan of positions into *ax* (a new figure when None); returns the Axes."""
@@ -476,23 +491,24 @@ class Diagrams:
     >>> d.plot("omega")                                   # doctest: +SKIP
     """
 
-    def __init__(self, analytic, *, marked=None, lang: str = "en", components: bool = False):
+    def __init__(self, analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None):
         self.analytic = analytic
         self.marked = marked
         self.lang = lang
         self.components = components
+        self.cycle = cycle  # the law the sweep was solved under (plans.motion.Cycle), stated on the diagrams
 
     def figures(self) -> list:
         """(name, Figure) pairs: ``links``, ``points`` and, with prismatic pairs, ``sliders``."""
         from .drawing.diagrams import draw_cycle_diagrams
 
-        return draw_cycle_diagrams(self.analytic, marked=self.marked, lang=self.lang, components=self.components)
+        return draw_cycle_diagrams(self.analytic, marked=self.marked, lang=self.lang, components=self.components, cycle=self.cycle)
 
     def plot(self, quantity: str = "omega", ax=None):
         """One diagram (``"omega"``, ``"v"``, ``"coriolis"`` …) into *ax* (a new figure when None); returns the Axes."""
         from .drawing.diagrams import plot_cycle
 
-        curves = plot_cycle(self.analytic, quantity, ax, marked=self.marked, lang=self.lang)
+        curves = plot_cycle(self.analytic, quantity, ax, marked=self.marked, lang=self.lang, cycle=self.cycle)
         return ax if ax is not None else curves[0].axes
 
     def save(self, path) -> list[Path]:
@@ -544,11 +560,15 @@ def unsolved_positions(scene: Scene, positions) -> list[tuple[int, float, PlansE
     return [(k, v, _position_error(scene, structure, k, v)) for k, v in enumerate(values) if not bool(sweep.valid[k])]
 
 
-def _hints_at(scene: Scene, analytic, k: int) -> dict:
-    """The scene's assembly hints moved to where the analytic sweep puts the hinted points."""
+def _hints_at(scene: Scene, analytic, k: int, every: bool = False) -> dict:
+    """The scene's assembly hints moved to where the analytic sweep puts the hinted points.
+
+    With *every*, branch signs too become the places the sweep puts their
+    points (a swing's way back runs on the other branch of a group).
+    """
     hints = {}
     for name, hint in scene.assembly.items():
-        if isinstance(hint, complex) or isinstance(hint, float):
+        if isinstance(hint, complex) or isinstance(hint, float) or every:
             z = complex(analytic.points[name].r[k])
             hints[name] = z if math.isfinite(z.real) and math.isfinite(z.imag) else hint
         else:
@@ -587,6 +607,8 @@ def run_positions(
     drawn_max: dict[str, float] | float = 120.0,
     cycle_steps: int = CYCLE_STEPS,
     check_scales: bool = True,
+    law: str | None = None,
+    start: str = "output",
 ) -> PositionsRun:
     """Solve the mechanism at every position, analytically and graphically, at one set of scales.
 
@@ -609,6 +631,13 @@ def run_positions(
     check_scales : bool
         Refuse given factors that draw a figure larger than a sheet or
         smaller than 1 mm at some position (see :func:`plans.graphical.construct`).
+    law : str, optional
+        The driver's law over the cycle (:func:`plans.motion.driver_law`);
+        None: the scene's ``[driver] law`` or the default.  Every position
+        (but the scene's own alone) is solved with the driver's ω and ε (or
+        v and a) under that law there.
+    start : {"output", "scene"}
+        Where a count of positions starts (:func:`plans.motion.driver_cycle`).
 
     Returns
     -------
@@ -627,22 +656,40 @@ def run_positions(
     from .structure import find_structure
     from .sweep import line_travel
 
+    from .motion import cycle_at, driver_cycle, strokes
+
     structure = find_structure(scene)
+    motion = dense = found = None
     if positions is None:
         values = [scene.driver.phi if _is_crank(scene) else scene.driver.s]
+    elif isinstance(positions, (int, np.integer)) and not isinstance(positions, bool) or (
+        isinstance(positions, str) and re.fullmatch(r"\s*\d+\s*", positions)
+    ):
+        count = int(positions)
+        if count < 1:
+            raise SceneError(f"positions: the count must be at least 1, got {count}", scene.source, "--positions")
+        if not _is_crank(scene):
+            _stroke(scene)
+        motion = driver_cycle(scene, count, law=law, start=start, structure=structure)
+        values = motion.positions.tolist()
     else:
         values = parse_positions(positions, scene)
+        if values:
+            motion = cycle_at(scene, values, law=law, structure=structure)
     if not values:
         raise SceneError("positions: no positions asked for", scene.source)
 
-    sweep = solve(scene, np.asarray(values, dtype=float), structure, allow_partial=True)
-    if _is_crank(scene):
-        cycle_at = cycle_positions(scene, cycle_steps, closed=True)
-    elif scene.driver.stroke is not None:
-        cycle_at = cycle_positions(scene, cycle_steps + 1)
+    if motion is None:
+        sweep = solve(scene, np.asarray(values, dtype=float), structure, allow_partial=True)
     else:
-        cycle_at = values
-    cycle = solve(scene, np.asarray(cycle_at, dtype=float), structure, allow_partial=True)
+        sweep = motion.solve(structure)
+    if _is_crank(scene) or scene.driver.stroke is not None:
+        count = cycle_steps if _is_crank(scene) else cycle_steps + 1
+        dense = driver_cycle(scene, count, law=law, start=start, closed=_is_crank(scene), structure=structure)
+        cycle = dense.solve(structure)
+        found = strokes(scene, law, structure)
+    else:
+        cycle = solve(scene, np.asarray(values, dtype=float), structure, allow_partial=True)
 
     k_l = k_l if k_l is not None else scene.scales.k_l
     k_v = k_v if k_v is not None else scene.scales.k_v
@@ -651,7 +698,8 @@ def run_positions(
 
     prepared = []
     for index, value in enumerate(values):
-        here = replace(scene.at(value), assembly=_hints_at(scene, sweep, index))
+        moved = scene.at(value) if motion is None else motion.scene_at(index)  # the driver's rates under the law
+        here = replace(moved, assembly=_hints_at(scene, sweep, index, every=bool(motion is not None and motion.branches)))
         if not bool(sweep.valid[index]):  # the solver's own message for this position
             prepared.append((index, value, here, None, _position_error(scene, structure, index, value)))
             continue
@@ -681,4 +729,4 @@ def run_positions(
         graphical = replace(graphical, travel=travel, cycle_poses=poses)  # slots and guides over the cycle's travel
         analytic = sweep.at(index)
         runs.append(PositionRun(index, value, here, analytic, graphical, compare(analytic, graphical)))
-    return PositionsRun(scene, structure, tuple(runs), scales, precision, cycle)
+    return PositionsRun(scene, structure, tuple(runs), scales, precision, cycle, motion, dense, found)

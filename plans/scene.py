@@ -150,6 +150,9 @@ class Crank:
     phi: float
     omega: float
     epsilon: float = 0.0
+    #: The law over a cycle (``[driver] law``): ``"constant"``, ``"uniform"``, ``"harmonic"`` or None (not given:
+    #: constant ω, or a harmonic swing for a crank that cannot turn fully); see :mod:`plans.motion`.
+    law: str | None = None
 
 
 @dataclass(frozen=True)
@@ -168,6 +171,8 @@ class LinearDriver:
     velocity: float
     acceleration: float = 0.0
     stroke: tuple[float, float] | None = None
+    #: The law over the stroke (``[driver] law``): ``"constant"``, ``"uniform"`` or None (constant); see :mod:`plans.motion`.
+    law: str | None = None
 
 
 @dataclass(frozen=True)
@@ -213,6 +218,8 @@ class Scene:
     report: tuple[str, ...]
     scales: Scales
     source: str = "<scene>"
+    #: The output link (``[output] link``) whose extreme positions start a cycle; None: the last group's slider or rocker.
+    output: str | None = None
     #: Line numbers of keys in the scene file, such as ``{"assembly.C": 31}``,
     #: for messages about them found after loading.
     key_lines: dict[str, int] = field(default_factory=dict, compare=False, repr=False)
@@ -422,13 +429,17 @@ def from_mapping(data: dict, source: str = "<scene>") -> Scene:
     return _SceneReader(data, source, "").scene()
 
 
-_TOP_KEYS = ("title", "names", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales")
+_TOP_KEYS = ("title", "names", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales", "output")
 _BODY_KEYS = ("points", "lines")
 _LINE_KEYS = ("through", "angle", "direction")
 _SLIDER_KEYS = ("pin", "on", "name", "points")
 _PRISMATIC_KEYS = ("line", "on", "name")
-_CRANK_KEYS = ("crank", "pivot", "angle", "omega", "epsilon")
-_LINEAR_KEYS = ("slider", "on", "point", "position", "velocity", "acceleration", "stroke")
+_CRANK_KEYS = ("crank", "pivot", "angle", "omega", "epsilon", "law")
+_LINEAR_KEYS = ("slider", "on", "point", "position", "velocity", "acceleration", "stroke", "law")
+_OUTPUT_KEYS = ("link",)
+#: The driver laws a scene may name (see :mod:`plans.motion`); a linear driver has no swing.
+CRANK_LAWS = ("constant", "uniform", "harmonic")
+LINEAR_LAWS = ("constant", "uniform")
 _COMPUTE_KEYS = ("accelerations", "points")
 _SCALE_KEYS = ("k_l", "k_v", "k_a", "precision")
 _NAME = re.compile(r"^[A-Za-z0-9_]+$")
@@ -702,6 +713,7 @@ class _SceneReader:
         assembly = self.assembly(self.table(data.get("assembly", {}), "assembly"), bodies)
         accelerations, report = self.compute(self.table(data.get("compute", {}), "compute"), bodies)
         scales = self.scales(self.table(data.get("scales", {}), "scales"))
+        output = self.output(self.table(data.get("output", {}), "output"), bodies)
         return Scene(
             title=title,
             bodies=bodies,
@@ -714,6 +726,7 @@ class _SceneReader:
             source=self.source,
             titles=titles,
             names=page_names,
+            output=output,
             notes=self.length_notes(),
             key_lines={f"assembly.{name}": self._line_of(f"assembly.{name}") for name in assembly if self._line_of(f"assembly.{name}")},
         )
@@ -899,6 +912,7 @@ class _SceneReader:
                 phi=self.quantity(table["angle"], "angle", "driver.angle"),
                 omega=self.quantity(table["omega"], "angular velocity", "driver.omega"),
                 epsilon=self.quantity(table.get("epsilon", 0.0), "angular acceleration", "driver.epsilon"),
+                law=self.law(table, CRANK_LAWS),
             )
         if "slider" in table:
             self.check_keys(table, _LINEAR_KEYS, "driver")
@@ -930,8 +944,28 @@ class _SceneReader:
                 velocity=self.quantity(table["velocity"], "velocity", "driver.velocity"),
                 acceleration=self.quantity(table.get("acceleration", 0.0), "acceleration", "driver.acceleration"),
                 stroke=stroke,
+                law=self.law(table, LINEAR_LAWS),
             )
         raise self.fail("driver", "say which link is driven: crank = \"2\" (turning) or slider = \"2\" (translating)")
+
+    def law(self, table: dict, laws: tuple[str, ...]) -> str | None:
+        """``[driver] law``: one of *laws*, or None when not given."""
+        if "law" not in table:
+            return None
+        law = table["law"]
+        if law not in laws:
+            raise self.fail("driver.law", f"expected one of {', '.join(repr(x) for x in laws)}, got {_describe(law)}")
+        return law
+
+    def output(self, table: dict, bodies: dict[str, Body]) -> str | None:
+        """``[output] link``: the link whose extreme positions start a cycle, or None."""
+        self.check_keys(table, _OUTPUT_KEYS, "output")
+        if "link" not in table:
+            return None
+        link = table["link"]
+        if not isinstance(link, (str, int)) or isinstance(link, bool) or str(link) not in bodies or str(link) == FRAME:
+            raise self.fail("output.link", f"expected the name of a moving link, got {_describe(link)}{_suggest(str(link), bodies)}")
+        return str(link)
 
     def assembly(self, table: dict, bodies: dict[str, Body]) -> dict[str, complex | int]:
         points = _all_points(bodies)

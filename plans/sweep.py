@@ -406,11 +406,13 @@ def format_column(values, shown=None, degrees: bool = False) -> list[str]:
     return cells
 
 
-def sweep_csv(analytic) -> str:
+def sweep_csv(analytic, t=None) -> str:
     """Every quantity over the solved driver positions, one row per position.
 
     Columns: the driver position (``driver_phi_deg`` for a crank, ``driver_s``
-    [m] for a linear driver), ``assembled`` (1 or 0), then per link
+    [m] for a linear driver), with *t* the time ``t`` [s] from the first row
+    (a cycle's, :attr:`plans.motion.Cycle.t`: then every rate column is the
+    time derivative of the column it rates), ``assembled`` (1 or 0), then per link
     ``phi_deg``, ``omega``, ``epsilon``; per reported point ``x, y, vx, vy,
     ax, ay``; per slider ``s, v_rel, a_rel, coriolis_x, coriolis_y``; per
     group its condition number, the |sin| of the angle between its
@@ -438,6 +440,8 @@ def sweep_csv(analytic) -> str:
         add("driver_phi_deg", np.degrees(analytic.driver), degrees=True, shown=None)
     else:
         add("driver_s", analytic.driver, shown=None)
+    if t is not None:
+        add("t", np.asarray(t, dtype=float), shown=None)
     header.append("assembled")
     cells.append(["1" if v else "0" for v in valid.tolist()])
     for name in scene.links:

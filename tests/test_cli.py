@@ -1,6 +1,7 @@
 """The command line: output, exit status, messages, and files left alone on failure."""
 
 import csv
+import math
 import io
 import json
 import subprocess
@@ -97,11 +98,13 @@ def test_missing_scene_argument(capsys):
 
 def test_sweep_writes_one_row_per_position(capsys, tmp_path):
     target = tmp_path / "sweep.csv"
-    status, _, _ = run(capsys, "sweep", "--example", "six-bar", "--steps", "36", "-o", str(target))
+    status, out, _ = run(capsys, "sweep", "--example", "six-bar", "--steps", "36", "-o", str(target), "--start", "scene")
     assert status == 0
+    assert "driver law: constant speed: ω₂ = −10 rad/s, ε₂ = 0" in out  # the law stated beside the file written
     rows = list(csv.DictReader(io.StringIO(target.read_text())))
     assert len(rows) == 36
     assert float(rows[0]["driver_phi_deg"]) == pytest.approx(55.0)
+    assert float(rows[0]["t"]) == 0 and float(rows[1]["t"]) == pytest.approx(math.radians(10) / 10)
     assert float(rows[1]["driver_phi_deg"]) == pytest.approx(45.0)  # ω = −10 rad/s: the sweep runs clockwise
     assert all(row["assembled"] == "1" for row in rows)
     assert "RPR(5,6).condition" in rows[0] and "E.coriolis_x" in rows[0]
@@ -149,7 +152,10 @@ def test_positions_and_a_list_are_exclusive(capsys, tmp_path):
 def test_sweep_plot_draws_the_cycle_diagrams(capsys, tmp_path):
     status, out, err = run(capsys, "sweep", "--example", "quick-return", "--steps", "36", "--plot", str(tmp_path), "--positions", "4")
     assert status == 0
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["links.svg", "points.svg", "sliders.svg"]
+    # the cycle diagrams, and the output link's kinematic diagrams by graphical differentiation (issue 19 §4)
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert [n for n in names if not n.startswith("kinematic")] == ["links.svg", "points.svg", "sliders.svg"]
+    assert names[0] in ("kinematic.svg", "kinematic-1.svg")
     # without -o the CSV goes to standard output as the help says (issue 9), the diagrams' names to stderr
     assert out.startswith("driver_phi_deg,") and len(out.splitlines()) == 37
     assert str(tmp_path / "links.svg") in err

@@ -34,7 +34,8 @@ def _write(path, scene, **options):
 
 @pytest.fixture(scope="module")
 def russian(tmp_path_factory):
-    """The four-bar in two positions, in Russian: cover, 2 × (graphical, check), two diagram pages."""
+    """The four-bar in two positions, in Russian: cover, 2 × (graphical, check), two diagram pages, the kinematic
+    diagrams of the output link and their table."""
     path = tmp_path_factory.mktemp("ru") / "four-bar.pdf"
     assert _write(path, plans.load(plans.example_path("four-bar")), positions=2, lang="ru") == [path]
     return pypdf.PdfReader(path)
@@ -48,7 +49,7 @@ def single(tmp_path_factory):
 
 
 def test_the_pages_of_a_multi_position_handout(russian):
-    assert len(russian.pages) == 9
+    assert len(russian.pages) == 11
     for page in russian.pages:
         assert (float(page.mediabox.width), float(page.mediabox.height)) == pytest.approx(A4_PT, abs=0.01)
     texts = [page.extract_text() for page in russian.pages]
@@ -69,8 +70,11 @@ def test_the_pages_of_a_multi_position_handout(russian):
         assert "RRR(3,4)" in texts[check] and "величина" in texts[check]
     assert "Кинематические диаграммы за цикл" in texts[7] and "Звенья" in texts[7]
     assert "Точки: скорость и ускорение" in texts[8]
+    # the output link's kinematic diagrams by graphical differentiation (12 positions: fewer than 8 asked), then their table
+    assert "Кинематические диаграммы выходного звена" in texts[9] and "методом хорд" in texts[9]
+    assert "Выходное звено во всех положениях" in texts[10]
     for number, text in enumerate(texts, start=1):
-        assert f"стр. {number}/9" in text
+        assert f"стр. {number}/11" in text
 
 
 def test_one_k_l_on_every_position_page_and_the_page_says_k_v_k_a_are_its_own(russian):
@@ -171,7 +175,8 @@ def test_a_single_position_that_cannot_assemble_is_the_solvers_error(tmp_path):
 def test_a_position_that_cannot_assemble_gets_a_page_that_says_so():
     pages = handout_pages(plans.loads(STUCK), positions="10, 180 deg")
     names = [name for name, _ in pages]
-    assert names == ["cover", "position-0", "acceleration-0", "check-0", "unsolved-1", "diagram-links", "diagram-points"]
+    # the kinematic diagrams of the output take their own positions (a swing of this crank: every one assembles)
+    assert names == ["cover", "position-0", "acceleration-0", "check-0", "unsolved-1", "diagram-links", "diagram-points", "kinematic-1", "kinematic-2"]
     words = [t.get_text() for t in pages[4][1].findobj(lambda a: hasattr(a, "get_text"))]
     assert any("cannot assemble" in w for w in words)
 

@@ -44,7 +44,7 @@ def solve_json(capsys, *argv):
 
 def test_the_whole_schema_has_exactly_the_golden_keys(capsys):
     doc = solve_json(capsys, "--example", "quick-return")
-    assert list(doc) == TOP + ["centres"] and doc["schema"] == 1
+    assert list(doc) == TOP + ["cycle", "centres"] and doc["schema"] == 1
     assert list(doc["driver"]) == CRANK
     assert list(doc["units"]) == UNITS
     for entry in doc["points"].values():
@@ -77,7 +77,7 @@ def test_a_linear_driver_warnings_and_precision(capsys):
 
 def test_analytic_only_and_velocities_only_leave_out_what_the_readme_says(capsys, tmp_path):
     doc = solve_json(capsys, "--example", "six-bar", "--analytic-only")
-    assert list(doc) == [k for k in TOP if k != "scales"]
+    assert list(doc) == [k for k in TOP if k != "scales"] + ["cycle"]
     assert all(list(e) == ["analytic"] for e in doc["points"].values())
     path = tmp_path / "v.toml"
     path.write_text(plans.example_path("quick-return").read_text() + "\n[compute]\naccelerations = false\n")

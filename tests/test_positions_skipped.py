@@ -28,17 +28,26 @@ def _run(capsys, *argv):
 
 
 def test_draw_positions_names_every_skipped_position_and_why(capsys, tmp_path):
-    status, out, err = _run(capsys, "draw", "--example", "rocker-limit", "--positions", "12", "-o", str(tmp_path))
+    status, out, err = _run(capsys, "draw", "--example", "rocker-limit", "--at", "30,90,120,150,-30 deg", "-o", str(tmp_path))
     assert status == 0
-    expected = [k for k in range(12) if not _rocker_limit_assembles(math.radians(30 + 30 * k))]
-    assert expected == list(range(1, 10))  # the hand check itself: φ = 60° … 300°
+    expected = [k for k, phi in enumerate((30, 90, 120, 150, -30)) if not _rocker_limit_assembles(math.radians(phi))]
+    assert expected == [1, 2, 3]  # the hand check itself: the input swings within ±56.39°
     said = [int(m) for m in re.findall(r"^plans: warning: position (\d+) \(φ₂ = [\d.]+°\) is skipped: RRR\(3,4\): joint B cannot assemble", err, re.M)]
     assert said == expected
     sheets = sorted(p.name for p in tmp_path.glob("sheet-*.svg"))
-    assert sheets == ["sheet-00.svg", "sheet-10.svg", "sheet-11.svg"]
+    assert sheets == ["sheet-00.svg", "sheet-04.svg"]
     # and the plan of positions says which positions it does not draw
     svg = (tmp_path / "positions.svg").read_text()
-    assert "not drawn" in svg and "1–9" in svg
+    assert "not drawn" in svg and "1–3" in svg
+
+
+def test_draw_positions_of_a_swinging_input_draws_every_one(capsys, tmp_path):
+    """Issue 19 §2: rocker-limit's 12 positions are spaced over its swing and back (9 of 12 were skipped over a turn)."""
+    status, out, err = _run(capsys, "draw", "--example", "rocker-limit", "--positions", "12", "-o", str(tmp_path))
+    assert status == 0
+    assert "is skipped" not in err
+    assert "harmonic swing between −56.39° … 56.39°" in err  # the law stated
+    assert len(list(tmp_path.glob("sheet-*.svg"))) == 12
 
 
 def test_handout_names_skipped_positions_on_stderr(capsys, tmp_path):
@@ -63,7 +72,7 @@ def test_a_skipped_position_carries_its_reason():
 def test_sweep_and_positions_run_in_the_sense_of_omega(capsys, tmp_path):
     """six-bar: ω₂ = −10 rad/s from φ = 55°: the sweep, the run's cycle and its positions all go clockwise."""
     target = tmp_path / "sweep.csv"
-    status, _, _ = _run(capsys, "sweep", "--example", "six-bar", "--steps", "360", "-o", str(target))
+    status, _, _ = _run(capsys, "sweep", "--example", "six-bar", "--steps", "360", "-o", str(target), "--start", "scene")
     assert status == 0
     phi = np.array([float(r["driver_phi_deg"]) for r in csv.DictReader(io.StringIO(target.read_text()))])
     assert phi[0] == pytest.approx(55.0)
@@ -73,7 +82,7 @@ def test_sweep_and_positions_run_in_the_sense_of_omega(capsys, tmp_path):
 
     assert np.allclose(turn(np.diff(phi)), -1.0)  # clockwise, one degree a step
     scene = plans.load(plans.example_path("six-bar"))
-    run = run_positions(scene, 12)
+    run = run_positions(scene, 12, start="scene")
     assert np.allclose(turn(np.degrees(run.cycle.driver[:360]) - phi), 0.0)  # the handout's diagrams run through the same positions
     assert np.allclose(np.degrees(run.positions), 55.0 - 30.0 * np.arange(12))
 
@@ -92,13 +101,13 @@ def test_the_handout_cover_lists_each_skipped_position_with_its_reason():
 
 def test_a_clockwise_sweep_that_loses_assembly_at_its_end_resumes_at_its_start():
     """rocker-limit turned clockwise from 55.5°: the interval without assembly runs into the end of the turn."""
-    from plans.positions import cycle_positions
     from plans.sweep import analyse_sweep
 
     source = plans.example_path("rocker-limit").read_text()
     source = source.replace('omega = "10 rad/s"', 'omega = "-10 rad/s"').replace('angle = "30 deg"', 'angle = "55.5 deg"')
     scene = plans.loads(source)
-    solution = plans.solve(scene, np.asarray(cycle_positions(scene, 360)), allow_partial=True)
+    # a turn of given angles (plans' cycle swings this input between its limits instead: issue 19)
+    solution = plans.solve(scene, scene.driver.phi - 2 * np.pi * np.arange(360) / 360, allow_partial=True)
     (lost,) = analyse_sweep(solution).lost
     limit = math.degrees(math.acos((0.49 + 0.01 - 0.65**2) / 0.14))  # |AD| = AB + BD by the cosine rule: 56.39°
     assert math.degrees(lost.resume) % 360 == pytest.approx(55.5)

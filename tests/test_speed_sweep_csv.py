@@ -48,7 +48,7 @@ def _sweep(capsys, tmp_path, *argv):
 
 def test_a_crank_sweep_gives_the_scene_angle_as_typed_and_angles_from_0_to_360(capsys, tmp_path):
     # quick-return.toml: angle = "30 deg", ω = 6 rad/s; the ram (link 6) slides on a horizontal guide
-    text = _sweep(capsys, tmp_path, "--example", "quick-return", "--steps", "12")
+    text = _sweep(capsys, tmp_path, "--example", "quick-return", "--steps", "12", "--start", "scene")
     rows = list(csv.DictReader(io.StringIO(text)))
     assert [row["driver_phi_deg"] for row in rows] == ["30", "60", "90", "120", "150", "180", "210", "240", "270", "300", "330", "0"]
     assert [row["2.phi_deg"] for row in rows] == [row["driver_phi_deg"] for row in rows]

@@ -1,10 +1,12 @@
 """Sweeps through trouble: lost assembly, dead centres crossed, one branch throughout.
 
 * a crank-rocker whose rocker is too short for part of the turn, and a
-  non-Grashof four-bar (a triple rocker): the sweep marks the interval where
-  assembly is lost, reports where it stopped and resumed (with the limit
-  positions interpolated, checked against their closed forms), leaves those
-  rows empty, and resumes on the same branch;
+  non-Grashof four-bar (a triple rocker): over a turn of given angles the
+  analysis marks the interval where assembly is lost, reports where it
+  stopped and resumed (with the limit positions interpolated, checked against
+  their closed forms) and resumes on the same branch; ``plans sweep`` (a
+  cycle under the driver's law, issue 19) swings such an input between its
+  limit positions instead, every row assembled;
 * a four-bar that passes through a dead centre without losing assembly: the
   sweep reports it with its driver position;
 * a linear driver whose stroke starts where the mechanism cannot assemble.
@@ -59,9 +61,9 @@ def sweep(capsys, tmp_path, text, steps, *extra):
     scene = tmp_path / "scene.toml"
     scene.write_text(text)
     target = tmp_path / "sweep.csv"
-    status = main(["sweep", str(scene), "--steps", str(steps), "-o", str(target), *extra])
+    status = main(["sweep", str(scene), "--steps", str(steps), "-o", str(target), "--start", "scene", *extra])
     out, err = capsys.readouterr()
-    assert status == 0 and out == "" and "Traceback" not in err
+    assert status == 0 and out.startswith("driver law: ") and "Traceback" not in err  # the law beside the file written
     rows = list(csv.DictReader(io.StringIO(target.read_text())))
     return rows, err.splitlines()
 
@@ -72,7 +74,7 @@ def check_rows(rows):
         for key, cell in row.items():
             assert cell == "" or math.isfinite(float(cell)), (key, cell)
         if row["assembled"] == "0":
-            assert all(cell == "" for key, cell in row.items() if key not in ("driver_phi_deg", "driver_s", "assembled"))
+            assert all(cell == "" for key, cell in row.items() if key not in ("driver_phi_deg", "driver_s", "t", "assembled"))
 
 
 @pytest.mark.parametrize(
@@ -83,32 +85,43 @@ def check_rows(rows):
     ],
     ids=["short-rocker", "non-grashof"],
 )
-def test_a_sweep_marks_where_assembly_is_lost_and_where_it_resumes(capsys, tmp_path, text, start, stop, resume, limits):
-    rows, lines = sweep(capsys, tmp_path, text, 360)
-    check_rows(rows)
-    phis = np.array([float(r["driver_phi_deg"]) for r in rows])
-    assembled = np.array([r["assembled"] == "1" for r in rows])
-    assert phis[0] == pytest.approx(start)
-    # the rows between stop and resume are exactly the unassembled ones
-    inside = ((phis % 360) > stop + 0.5) & ((phis % 360) < resume - 0.5)
+def test_a_sweep_marks_where_assembly_is_lost_and_where_it_resumes(text, start, stop, resume, limits):
+    """Over a turn of given angles (the API; plans sweep swings such an input instead, see the next test)."""
+    scene = loads(text)
+    phis = np.radians(start + np.arange(360.0))
+    solution = solve(scene, phis, allow_partial=True)
+    assembled = np.asarray(solution.valid)
+    degrees = np.degrees(phis) % 360
+    inside = (degrees > stop + 0.5) & (degrees < resume - 0.5)
     assert np.array_equal(~assembled, inside)
-    lost = int(inside.sum())
-    assert lines[0] == f"plans: warning: the mechanism is not solved at {lost} of 360 positions; their rows have assembled = 0 and empty cells"
-    head = f"plans: warning: RRR(3,4) cannot assemble from φ = {stop + 1:.1f}° to φ = {resume - 1:.1f}°: the sweep stops after φ = {stop:.1f}° (limit ≈ φ = "
-    assert lines[1].startswith(head), lines[1]
-    assert f"resumes at φ = {resume:.1f}° (limit ≈ φ = " in lines[1] and lines[1].endswith("on the same branch; those rows have assembled = 0 and empty cells")
-    estimates = [float(x) for x in __import__("re").findall(r"limit ≈ φ = ([\d.]+)°", lines[1])]
-    assert estimates == pytest.approx(list(limits), abs=0.02)  # the limits interpolated between grid positions
-    assert len(lines) == 2
+    (lost,) = analyse_sweep(solution).lost
+    assert (lost.group, lost.cause) == (GROUP, "cannot assemble")
+    assert math.degrees(lost.stop) % 360 == pytest.approx(stop) and math.degrees(lost.resume) % 360 == pytest.approx(resume)
+    assert [math.degrees(lost.stop_limit) % 360, math.degrees(lost.resume_limit) % 360] == pytest.approx(list(limits), abs=0.02)
     # one branch throughout: B stays left of A → D (sign +1) on both sides of the gap
-    A = np.array([complex(float(r["A.x"]), float(r["A.y"])) for r in rows if r["assembled"] == "1"])
-    B = np.array([complex(float(r["B.x"]), float(r["B.y"])) for r in rows if r["assembled"] == "1"])
+    A = np.asarray(solution.points["A"].r)[assembled]
+    B = np.asarray(solution.points["B"].r)[assembled]
     D = complex(float(text.split("D = [")[1].split(",")[0]), 0)
     assert np.all((np.conj(D - A) * (B - A)).imag > 0)
-    # the sine and the condition are in the CSV, and the sine falls towards the limit
-    sines = [float(r[f"{GROUP}.sine"]) for r in rows if r["assembled"] == "1"]
-    assert min(sines) < 0.2 and all(0 < s <= 1 for s in sines)
-    assert all(float(r[f"{GROUP}.condition"]) >= 1 for r in rows if r["assembled"] == "1")
+
+
+@pytest.mark.parametrize("text, limit", [(SHORT_ROCKER, limit_deg(0.7, 0.1, 0.65)), (NON_GRASHOF, limit_deg(0.5, 0.3, 0.75))],
+                         ids=["short-rocker", "non-grashof"])
+def test_plans_sweep_swings_an_input_that_cannot_turn_fully(capsys, tmp_path, text, limit):
+    """Issue 19 §2: the input swings between its limit positions and back, every row assembled, ω through zero."""
+    rows, lines = sweep(capsys, tmp_path, text, 360)
+    check_rows(rows)
+    assert all(r["assembled"] == "1" for r in rows)
+    assert not any("cannot assemble" in line for line in lines)
+    phis = np.array([math.remainder(float(r["driver_phi_deg"]), 360.0) for r in rows])
+    assert phis.max() < limit and phis.min() > -limit
+    assert phis.max() > limit - 1.5 and phis.min() < -limit + 1.5  # the grid comes near both limits
+    omega = np.array([float(r["2.omega"]) for r in rows])
+    assert np.count_nonzero(np.sign(omega) != np.roll(np.sign(omega), 1)) == 2
+    # the sine falls towards the limits, and the condition is at least 1
+    sines = [float(r[f"{GROUP}.sine"]) for r in rows]
+    assert min(sines) < 0.2 and all(0 < x <= 1 for x in sines)
+    assert all(float(r[f"{GROUP}.condition"]) >= 1 for r in rows)
 
 
 def test_the_analysis_api_gives_the_same_intervals():
@@ -123,12 +136,14 @@ def test_the_analysis_api_gives_the_same_intervals():
     assert report.crossed == ()
 
 
-def test_a_gap_at_the_end_of_a_turn_resumes_at_its_start(capsys, tmp_path):
-    rows, lines = sweep(capsys, tmp_path, SHORT_ROCKER.replace('angle = "0 deg"', 'angle = "304 deg"'), 360)
-    check_rows(rows)
-    assert rows[-1]["assembled"] == "0" and rows[0]["assembled"] == "1"
-    assert "RRR(3,4) cannot assemble from φ = 57.0° to φ = 303.0°: the sweep stops after φ = 56.0° (limit ≈ φ = 56.39" in lines[1]
-    assert "resumes at φ = 304.0° (limit ≈ φ = 303.6" in lines[1]
+def test_a_gap_at_the_end_of_a_turn_resumes_at_its_start():
+    scene = loads(SHORT_ROCKER.replace('angle = "0 deg"', 'angle = "304 deg"'))
+    solution = solve(scene, np.radians(304.0 + np.arange(360.0)), allow_partial=True)
+    assert not solution.valid[-1] and solution.valid[0]
+    (lost,) = analyse_sweep(solution).lost
+    text = str(lost)
+    assert "RRR(3,4) cannot assemble from φ = 57.0° to φ = 303.0°: the sweep stops after φ = 56.0° (limit ≈ φ = 56.39" in text
+    assert "resumes at φ = 304.0° (limit ≈ φ = 303.6" in text
 
 
 @pytest.mark.parametrize("steps", [361, 719])

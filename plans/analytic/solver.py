@@ -66,6 +66,8 @@ def solve(
     *,
     allow_partial: bool = False,
     warn_condition: float = WARN_CONDITION,
+    rates=None,
+    branches: dict | None = None,
 ) -> AnalyticSolution:
     """Positions, velocities and accelerations of every link, point and slider.
 
@@ -97,6 +99,17 @@ def solve(
         :class:`~plans.limits.NearDeadCentre` warning (one per group and run
         of consecutive positions, at the worst of them).  Default
         :data:`plans.limits.WARN_CONDITION`; ``math.inf`` never warns.
+
+    rates : None or pair (rate, acceleration), each a number or array_like (N,)
+        The driver's rates at each position, a motion's law along the
+        positions: a crank's ω [rad/s] and ε [rad/s²], counter-clockwise
+        positive; a linear driver's velocity [m/s] and acceleration [m/s²]
+        along its guide.  None: the scene's own at every position.
+    branches : None or dict[str, number or array_like (N,)]
+        For a group (by name, ``"RRR(3,4)"``), +1 keeps at each position the
+        branch the scene's hints choose, −1 takes the other one there (a
+        rocker input passing its limit position goes over to the other
+        branch of the group that limits it).  Groups not named keep theirs.
 
     Returns
     -------
@@ -150,7 +163,7 @@ def solve(
     >>> turn.points["B"].r.shape
     (3600,)
     """
-    return prepare(scene, structure)(positions, allow_partial=allow_partial, warn_condition=warn_condition)
+    return prepare(scene, structure)(positions, allow_partial=allow_partial, warn_condition=warn_condition, rates=rates, branches=branches)
 
 
 class PreparedSolver:
@@ -186,13 +199,18 @@ class PreparedSolver:
         self.scene = plan.scene
         self.structure = plan.structure
 
-    def __call__(self, positions=None, *, allow_partial: bool = False, warn_condition: float = WARN_CONDITION) -> AnalyticSolution:
+    def __call__(
+        self, positions=None, *, allow_partial: bool = False, warn_condition: float = WARN_CONDITION, rates=None, branches: dict | None = None
+    ) -> AnalyticSolution:
         """The solution at *positions* (see :func:`solve` for the arguments)."""
         if not (warn_condition >= 1):
             raise ValueError(f"warn_condition must be a number of at least 1 (a condition number), got {warn_condition!r}")
         plan = self._plan
         driver = _positions(positions, plan.base)
         n = len(driver)
+        if rates is not None or branches:
+            law = _Law(plan, n, rates, branches)
+            return _solve_vectorised(plan, driver, positions is None, allow_partial, warn_condition, law)
         if n <= FEW and plan.resolved and not plan.missing:
             few = _solve_few(plan, driver, warn_condition) if n else None
             if few is not None:
@@ -212,13 +230,15 @@ def prepare(scene: Scene, structure: Structure | None = None) -> PreparedSolver:
     return PreparedSolver(_prepared(scene, structure))
 
 
-def _solve_vectorised(plan: "_Plan", driver: np.ndarray, asked_here: bool, allow_partial: bool, warn_condition: float) -> AnalyticSolution:
-    """Every position with numpy arrays, in pieces of :data:`CHUNK`."""
+def _solve_vectorised(
+    plan: "_Plan", driver: np.ndarray, asked_here: bool, allow_partial: bool, warn_condition: float, law: "_Law | None" = None
+) -> AnalyticSolution:
+    """Every position with numpy arrays, in pieces of :data:`CHUNK` (*law*: the driver's rates and branches per position)."""
     scene = plan.scene
     n = len(driver)
     with np.errstate(all="ignore"):
         if n <= CHUNK or not plan.resolved or plan.missing:
-            piece = _solve_piece(plan, driver, allow_partial, asked_here)
+            piece = _solve_piece(plan, driver, allow_partial, asked_here, law)
             if plan.missing:
                 raise StructureError(f"{scene.source}: the structure does not solve the links {', '.join(plan.missing)}")
             columns = _Columns(plan.dtypes, n)
@@ -228,10 +248,11 @@ def _solve_vectorised(plan: "_Plan", driver: np.ndarray, asked_here: bool, allow
             columns = _Columns(plan.dtypes, n)
             calm = True
             for start in range(0, n, CHUNK):
-                piece = _solve_piece(plan, driver[start : start + CHUNK], True, asked_here)
+                part = law.part(start, start + CHUNK) if law is not None else None
+                piece = _solve_piece(plan, driver[start : start + CHUNK], True, asked_here, part)
                 if not allow_partial and not piece.valid.all():
                     # the error names the first failing position of the first group that fails: one piece finds it
-                    _solve_piece(plan, driver, False, asked_here)
+                    _solve_piece(plan, driver, False, asked_here, law)
                 columns.put(start, _columns(plan, piece))
                 calm = calm and _calm(piece, warn_condition)
 
@@ -483,10 +504,11 @@ class _Piece:
     valid: np.ndarray
 
 
-def _solve_piece(plan: _Plan, driver: np.ndarray, allow_partial: bool, asked_here: bool) -> _Piece:
+def _solve_piece(plan: _Plan, driver: np.ndarray, allow_partial: bool, asked_here: bool, law: "_Law | None" = None) -> _Piece:
     """The driver, then each group in order, at the positions *driver* (see :func:`solve`)."""
     scene, groups = plan.scene, plan.structure.groups
-    states: dict[str, BodyState] = {FRAME: BodyState.resting(), plan.structure.driver: _driver_state(scene, driver)}
+    rates = law.rates if law is not None else None
+    states: dict[str, BodyState] = {FRAME: BodyState.resting(), plan.structure.driver: _driver_state(scene, driver, rates)}
     points: dict[tuple[str, complex], PointState] = {}
     valid = np.ones(len(driver), dtype=bool)
     conditions: dict[str, np.ndarray] = {}
@@ -495,6 +517,8 @@ def _solve_piece(plan: _Plan, driver: np.ndarray, allow_partial: bool, asked_her
         sign = plan.signs[k] if k < len(plan.signs) else None
         if sign is None:
             sign = _branch_sign(scene, group, plan.here, asked_here)  # raises the error the plan met
+        if law is not None and plan.names[k] in law.flips:
+            sign = sign * law.flips[plan.names[k]]  # the other branch where the law says so
         solution = _solve_group(scene, group, states, sign, points)
         solved = solution.assembled & ~solution.singular
         fails = valid & ~solved
@@ -540,22 +564,72 @@ def _positions(positions, base: float) -> np.ndarray:
     return driver
 
 
-def _driver_state(scene: Scene, positions: np.ndarray) -> BodyState:
-    """The driver's motion: ω, ε (or velocity, acceleration) held at the scene's values.
+def _driver_state(scene: Scene, positions: np.ndarray, rates=None) -> BodyState:
+    """The driver's motion: ω, ε (or velocity, acceleration) at each position.
 
-    The rates are plain numbers, the same at every position.
+    Without *rates* they are the scene's values, plain numbers the same at
+    every position; *rates* = (rate, acceleration) gives them per position
+    (arrays over the positions, or numbers).
     """
     driver = scene.driver
     body = scene.bodies[driver.link]
-    if isinstance(driver, Crank):
+    crank = isinstance(driver, Crank)
+    if rates is None:
+        rate, acceleration = (float(driver.omega), float(driver.epsilon)) if crank else (driver.velocity, driver.acceleration)
+    else:
+        rate, acceleration = rates
+    if crank:
         # the pivot stays at its frame point; the crank turns about it
         pivot = PointState(scene.frame.points[driver.pivot], 0j, 0j)
-        return BodyState.from_point(positions, float(driver.omega), float(driver.epsilon), pivot, body.points[driver.pivot])
+        return BodyState.from_point(positions, rate, acceleration, pivot, body.points[driver.pivot])
     # LinearDriver: the link's x axis along the guide, its point at Q + s·u
     guide: Line = scene.frame.lines[driver.guide]
     u = complex(math.cos(guide.angle), math.sin(guide.angle))
-    point = PointState(guide.origin + positions * u, driver.velocity * u, driver.acceleration * u)
+    point = PointState(guide.origin + positions * u, rate * u, acceleration * u)
     return BodyState.from_point(float(guide.angle), 0.0, 0.0, point, body.points[driver.point])
+
+
+class _Law:
+    """The driver's rates and the groups' branch flips at each position asked for (see :func:`solve`, *rates*, *branches*)."""
+
+    def __init__(self, plan: _Plan, n: int, rates, branches):
+        self.rates = None
+        if rates is not None:
+            try:
+                rate, acceleration = rates
+            except (TypeError, ValueError):
+                raise ValueError(f"rates must be a pair (rate, acceleration), got {rates!r}") from None
+            self.rates = (_per_position(rate, n, "rates[0]"), _per_position(acceleration, n, "rates[1]"))
+        self.flips = {}
+        for name, flip in (branches or {}).items():
+            if name not in plan.names:
+                raise ValueError(f"branches: there is no group {name!r} (groups: {', '.join(plan.names)})")
+            flip = _per_position(flip, n, f"branches[{name!r}]")
+            if not np.all(np.abs(flip) == 1):
+                raise ValueError(f"branches[{name!r}]: expected +1 (the scene's branch) or −1 (the other) at each position")
+            self.flips[name] = flip
+
+    def part(self, start: int, stop: int) -> "_Law":
+        """The same over the positions [start, stop)."""
+        out = object.__new__(_Law)
+        cut = lambda x: x if is_number(x) else x[start:stop]  # noqa: E731
+        out.rates = None if self.rates is None else tuple(cut(x) for x in self.rates)
+        out.flips = {name: cut(flip) for name, flip in self.flips.items()}
+        return out
+
+
+def _per_position(value, n: int, what: str):
+    """A number, or a float array of shape (n,), finite."""
+    array = np.asarray(value, dtype=float)
+    if array.ndim == 0:
+        if not math.isfinite(float(array)):
+            raise ValueError(f"{what} must be finite, got {value!r}")
+        return float(array)
+    if array.shape != (n,):
+        raise ValueError(f"{what} must be a number or an array of one value per position ({n}), got shape {array.shape}")
+    if not np.isfinite(array).all():
+        raise ValueError(f"{what} must be finite at every position")
+    return array
 
 
 # --- groups -------------------------------------------------------------------

@@ -125,18 +125,35 @@ def _sense(scene) -> float:
     return -1.0 if omega < 0 else 1.0
 
 
-def cycle_axis(analytic, marked=None) -> tuple[np.ndarray, str, list[tuple[int, float]]]:
+def _swing(cycle) -> bool:
+    """The sweep is a rocker input's swing and back (:mod:`plans.motion`): drawn against time."""
+    return cycle is not None and cycle.law.kind == "harmonic"
+
+
+def cycle_axis(analytic, marked=None, cycle=None) -> tuple[np.ndarray, str, list[tuple[int, float]]]:
     """The x values of a sweep, the axis label, and the marked positions as (number, x).
 
     For a crank, x is the angle turned from the sweep's first position in the
     sense of the crank's ω [°] (the sense :mod:`plans.positions` and ``plans
     sweep`` number and run positions in); for a linear driver, the position
     [mm].  *marked* are driver positions (rad or m), numbered 0, 1, 2 … in the
-    order given.
+    order given, or a :class:`plans.motion.Cycle` of them.  A rocker input's
+    swing (*cycle*, the :class:`plans.motion.Cycle` the sweep was solved
+    under, with a harmonic law) runs there and back over the same angles:
+    x is then the time t [s] from the first position, and *marked* a Cycle.
     """
     scene = analytic.scene
     driver = np.asarray(analytic.driver, dtype=float)
     marks = []
+    if _swing(cycle):
+        x = np.asarray(cycle.t, dtype=float)
+        if hasattr(marked, "phase"):
+            omega = cycle.law.frequency
+            for k, psi in enumerate(np.asarray(marked.phase, dtype=float)):
+                marks.append((k, float(((psi - cycle.phase[0]) % (2 * math.pi)) / omega)))
+        return x, "t [s]", marks
+    if hasattr(marked, "positions"):
+        marked = list(marked.positions)
     if hasattr(scene.driver, "omega"):
         sense = _sense(scene)
         start = driver[0]
@@ -185,12 +202,12 @@ def _window(x: np.ndarray, valid: np.ndarray) -> tuple[np.ndarray, np.ndarray, t
     return order, turned, (lo - margin, hi + margin)
 
 
-def _cycle_view(analytic, marked):
+def _cycle_view(analytic, marked, cycle=None):
     """(solution, x, axis label, marks, x limits, ticks, rolled) of a cycle diagram: a crank's sweep that
     assembles over one short arc is shown over that arc, its positions taken in the order the arc runs
     through (*rolled*: its first and last positions are neighbours on the turn)."""
-    x, xlabel, marks = cycle_axis(analytic, marked)
-    crank = hasattr(analytic.scene.driver, "omega")
+    x, xlabel, marks = cycle_axis(analytic, marked, cycle)
+    crank = hasattr(analytic.scene.driver, "omega") and not _swing(cycle)
     limits, ticks = (float(np.nanmin(x)), float(np.nanmax(x))), None
     if crank and float(np.nanmax(x) - np.nanmin(x)) >= 300.0:
         limits = (0.0, 360.0)  # a whole turn: its axis ends at 360°
@@ -497,7 +514,7 @@ def _name(symbol: str, sub: str) -> str:
     return rf"${symbol}_{{\mathrm{{{safe}}}}}$"
 
 
-def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False) -> list[tuple[str, Figure]]:
+def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None) -> list[tuple[str, Figure]]:
     """The cycle diagrams as (name, Figure) pairs: ``links``, ``points`` and, if any, ``sliders``.
 
     Parameters
@@ -511,24 +528,29 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         Language of headings and axis words (see :mod:`plans.i18n`).
     components : bool
         Also plot the x and y components of every point's v and a.
+    cycle : plans.motion.Cycle, optional
+        The law the sweep was solved under (``cycle.solve()``): stated under
+        the title; a rocker input's swing is drawn against time.
     """
     scene = analytic.scene
     start = float(analytic.driver[0])  # position 0's angle, for the note φ₂ = start + Δφ
-    analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked)
+    analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked, cycle)
     valid = np.asarray(analytic.valid, dtype=bool)
     invalid = ~valid
     near = _near_dead(analytic, ring=rolled)
     good = _well_conditioned(analytic)
     crank = hasattr(scene.driver, "omega")
-    xwords = term("turned_from_0", lang) if crank else term("driver_position", lang)
+    xwords = term("time", lang) if _swing(cycle) else term("turned_from_0", lang) if crank else term("driver_position", lang)
     title = term("cycle_diagrams", lang)
     subtitle = user_text(scene.title_in(lang) if hasattr(scene, "title_in") else scene.title)
+    if cycle is not None:
+        subtitle += "\n" + cycle.law.describe(lang, scene.driver.link)
     out = []
 
     def page(name, words, quantities):
         panels = []
         for quantity, ylabel, unit in quantities:
-            panel = _quantity_panel(analytic, quantity, valid, lang, unit, start=start)
+            panel = _quantity_panel(analytic, quantity, valid, lang, unit, start=start, swing=_swing(cycle))
             panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang) if quantity == "phi" else [panel])]
         fig, axes = _page(title, subtitle + "\n" + words, len(panels))
         clipped = False
@@ -590,7 +612,7 @@ def _unwrap_nan(phi, valid) -> np.ndarray:
     return out
 
 
-def write_cycle_diagrams(analytic, directory, *, marked=None, lang: str = "en", components: bool = False) -> list[Path]:
+def write_cycle_diagrams(analytic, directory, *, marked=None, lang: str = "en", components: bool = False, cycle=None) -> list[Path]:
     """Write ``links.svg``, ``points.svg`` and (with prismatic pairs) ``sliders.svg`` into *directory*, atomically.
 
     Parameters are those of :func:`draw_cycle_diagrams`.
@@ -602,7 +624,7 @@ def write_cycle_diagrams(analytic, directory, *, marked=None, lang: str = "en", 
     from .svg import render_svg
 
     directory = Path(directory)
-    contents = {directory / f"{name}.svg": render_svg(fig) for name, fig in draw_cycle_diagrams(analytic, marked=marked, lang=lang, components=components)}
+    contents = {directory / f"{name}.svg": render_svg(fig) for name, fig in draw_cycle_diagrams(analytic, marked=marked, lang=lang, components=components, cycle=cycle)}
     return replace_all(contents)  # creates the directory
 
 
@@ -621,12 +643,13 @@ QUANTITIES = {
 _UNITS = {"phi": "°", "omega": "rad/s", "epsilon": "rad/s²", "v": "m/s", "a": "m/s²", "s": "mm", "v_rel": "m/s", "a_rel": "m/s²", "coriolis": "m/s²"}
 
 
-def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start: float | None = None) -> _Panel:
-    """*start*: position 0's driver angle [rad] (the sweep's first, unless its order was changed)."""
+def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start: float | None = None, swing: bool = False) -> _Panel:
+    """*start*: position 0's driver angle [rad] (the sweep's first, unless its order was changed); *swing*: a rocker
+    input's swing drawn against time, its own angle a curve like the others."""
     scene = analytic.scene
     extra = []
     series = _series(analytic, quantity, valid)
-    if quantity == "phi" and hasattr(scene.driver, "omega"):
+    if quantity == "phi" and hasattr(scene.driver, "omega") and not swing:
         link = scene.driver.link
         start = _number(math.degrees(float(analytic.driver[0] if start is None else start)) % 360.0, lang, 4)
         sign = "−" if _sense(scene) < 0 else "+"
@@ -662,7 +685,7 @@ def _abs(name: str) -> str:
     return f"$|{name[1:-1]}|$" if name.startswith("$") else f"|{name}|"
 
 
-def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang: str = "en") -> list:
+def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang: str = "en", cycle=None) -> list:
     """One diagram over the cycle into *ax* (a new figure when None): ``"phi"``, ``"omega"``, ``"epsilon"``
     of the links, ``"v"``, ``"a"`` of the points, ``"s"``, ``"v_rel"``, ``"a_rel"``, ``"coriolis"`` of the
     prismatic pairs.  Returns the curves (Line2D).
@@ -670,7 +693,7 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
     if quantity not in QUANTITIES:
         raise ValueError(f"no diagram of {quantity!r}; choose one of {', '.join(QUANTITIES)}")
     start = float(analytic.driver[0])
-    analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked)
+    analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked, cycle)
     valid = np.asarray(analytic.valid, dtype=bool)
     near = _near_dead(analytic, ring=rolled)
     with drawing_rc():
@@ -680,7 +703,7 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
 
             FigureCanvasSVG(fig)
             ax = fig.add_axes([0.12, 0.16, 0.72, 0.76])
-        panel = _quantity_panel(analytic, quantity, valid, lang, _UNITS[quantity], start=start)
+        panel = _quantity_panel(analytic, quantity, valid, lang, _UNITS[quantity], start=start, swing=_swing(cycle))
         _plot_panel(ax, x, panel, QUANTITIES[quantity], marks)
         _decorate(ax, x, ~valid, near, marks, lang, numbers=True, limits=limits)
         _clip(ax, x, panel, _well_conditioned(analytic), lang, _UNITS[quantity])

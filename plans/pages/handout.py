@@ -225,6 +225,8 @@ def build_handout(
     centres: bool = False,
     accelerations=None,
     scales: str = "plate",
+    law: str | None = None,
+    start: str = "output",
 ) -> Handout:
     """The handout of *scene* (see the module); arguments as :func:`plans.handout.write_handout`."""
     from ..compare import compare
@@ -237,7 +239,7 @@ def build_handout(
     given = {"k_l": k_l if k_l is not None else scene.scales.k_l,
              "k_v": k_v if k_v is not None else scene.scales.k_v,
              "k_a": k_a if k_a is not None else scene.scales.k_a}
-    run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=None)
+    run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=None, law=law, start=start)
     # a frame guide (a ram's guideway) around the block's present place: the plan of positions draws the stroke
     run = replace(run, runs=tuple(
         replace(r, graphical=replace(r.graphical, travel={k: t for k, t in r.graphical.travel.items() if not k.startswith("frame.")}))
@@ -327,7 +329,9 @@ def build_handout(
 
     doc.section("data")
     doc.heading(f"{term('plate_title', lang)}: {scene.title_in(lang)}", level=1)
-    doc.lines(data_lines(scene, lang), size=TEXT_PT)
+    from ..handout import cycle_lines
+
+    doc.lines(data_lines(scene, lang) + (cycle_lines(run, lang) if multi else []), size=TEXT_PT)
     doc.line(f"{term('structural_formula', lang)}:  {formula_words(run.structure.formula)}", size=TEXT_PT)
     branch_words = assembly_lines(sample.analytic.branches, scene, lang)
     if branch_words:
@@ -407,14 +411,36 @@ def build_handout(
         from ..drawing.svgblocks import figure_svg
 
         doc.section("diagrams")
-        for page_name, fig in draw_cycle_diagrams(run.cycle, marked=run.positions, lang=lang, components=components):
+        marked = run.motion if run.motion is not None else run.positions
+        for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense):
             doc.full_page(f"diagram-{page_name}", figure_svg(fig))
+        for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
+            doc.full_page(f"kinematic-{number}", figure_svg(fig))
     if centres:
         doc.section("centres")
         for n, h in enumerate(here.values(), start=1):
             say(f"{term('instant_centres', lang)} {n}/{len(here)}")
             _centres_page(doc, h, k_l_plate, lang, multi)
     return Handout(doc.source(), doc.images, plate, per_position, doc.order, chosen, doc.sizes, list(here.values()))
+
+
+def _kinematic_pages(scene, positions, count: int, precision, lang: str, law=None, start: str = "output") -> list:
+    """The pages of the output link's kinematic diagrams by graphical differentiation (and of their table when it
+    does not fit under them), at the handout's count of positions (12 when it has fewer than 8); none for a
+    mechanism without an output slider or rocker, or not solved at one of those positions."""
+    from ..differentiation import kinematic_diagrams
+    from ..drawing.kinematic_diagrams import draw_kinematic_pages
+    from ..errors import PlansError
+
+    if isinstance(positions, int):
+        count = positions
+    if count < 8:  # a course project differentiates over 8 or more
+        count = 12
+    try:
+        diagrams = kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
+    except PlansError:
+        return []
+    return draw_kinematic_pages(diagrams, title=scene.title_in(lang), lang=lang)
 
 
 def _table(h, lang: str) -> list[list[str]]:
