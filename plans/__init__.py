@@ -9,7 +9,10 @@ Two independent methods over one scene model:
 * :func:`construct` — the graphical velocity and acceleration plans, built
   group by group with construction lines and read off at scale (shapely);
 
-and :func:`compare` sets one against the other.  Over a cycle the driver
+and :func:`compare` sets one against the other.  :func:`forces` finds the
+joint reactions and the balancing moment of a scene with masses and loads
+(kinetostatics: Newton–Euler group by group; :mod:`plans.forces` has
+Joukowski's lever and the comparison of the methods).  Over a cycle the driver
 follows one law (:mod:`plans.motion`): :func:`driver_cycle` gives the
 positions, times [s] and driver rates of a cycle (``cycle.solve()`` the
 solution that is a motion), :func:`strokes` the output's stroke H [m] or
@@ -44,6 +47,7 @@ __all__ = [
     "prepare",
     "construct",
     "compare",
+    "forces",
     "write_drawings",
     "write_position_sheets",
     "run_positions",
@@ -78,6 +82,10 @@ def __getattr__(name: str):
         from . import analytic
 
         return getattr(analytic, name)
+    if name == "forces":  # the package, callable: plans.forces(scene, positions=None, ...)
+        import importlib
+
+        return importlib.import_module(f"{__name__}.forces")
     if name == "construct":
         from .graphical import construct
 

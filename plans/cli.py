@@ -131,7 +131,8 @@ EXAMPLES = {
     "draw": "plans draw --example six-bar -o drawings\n  plans draw --example six-bar --positions 12 -o sheets --format png",
     "handout": "plans handout --example four-bar --positions 4 -o four-bar.pdf --lang sr",
     "bench": "plans bench --quick -o /tmp/bench",
-    "examples": "plans examples\n  plans examples six-bar > my.toml",
+    "forces": "plans forces --example slider-crank-loads\n  plans forces --example four-bar-loads --at \"0,90 deg\" --json\n  plans examples --loads",
+    "examples": "plans examples\n  plans examples six-bar > my.toml\n  plans examples --loads",
 }
 
 #: What each bundled example shows, in plain words, for ``plans examples``.
@@ -232,10 +233,31 @@ def build_parser() -> argparse.ArgumentParser:
     handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg / FILE.png for a file per page")
     handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
     handout.add_argument("--centres", action="store_true", help="a page more per position: the instant centres (Kennedy's theorem) and the velocities from them against analytic")
+    handout.add_argument("--forces", action="store_true", help="the kinetostatic pages per position: free bodies, force plans, Joukowski's lever (the scene needs masses or loads)")
     handout.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr (shown only when stderr is a terminal)")
     _law_arguments(handout)
     _language_argument(handout)
     _scale_arguments(handout)
+
+    forces = _add_command(
+        commands,
+        "forces",
+        "kinetostatics of one position: joint reactions and the balancing moment, analytic beside Joukowski's lever "
+        "(and the force plans), with the power balance",
+    )
+    _scene_argument(forces)
+    _position_argument(forces)
+    forces.add_argument("--json", action="store_true", help="print the JSON document instead of a table")
+    forces.add_argument("--analytic-only", action="store_true", help="skip the graphical methods (construction, lever, force plans)")
+    forces.add_argument(
+        "-o", "--output", metavar="DIR",
+        help="also draw the free bodies, each group's force plan, the driver's and Joukowski's lever into DIR "
+             "(DIR/position-K/ for each of an --at list), all or none",
+    )
+    forces.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="format of the drawings written into DIR (default svg)")
+    _language_argument(forces)
+    _warn_argument(forces)
+    _scale_arguments(forces)
 
     centres = commands.add_parser(
         "centres", help="every instant centre by Kennedy's theorem, ω and v from them; draws centres.svg"
@@ -254,6 +276,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench_parser.formatter_class = argparse.RawDescriptionHelpFormatter
     examples = _add_command(commands, "examples", "list the bundled example scenes, or print one of them")
     examples.add_argument("name", nargs="?", metavar="NAME", help="print this example's scene file (TOML), to start a scene of your own from")
+    examples.add_argument("--loads", action="store_true", help="list the scenes with masses and loads (for plans forces) instead")
     return parser
 
 
@@ -473,6 +496,66 @@ def _centres(args) -> int:
     return 0
 
 
+def _forces(args) -> int:
+    """``plans forces``: the kinetostatics of one position (or of each of an --at list), as a table or JSON."""
+    from .forces.compare import kinetostatics
+    from .forces.report import forces_json, forces_table
+    from .report import format_json
+
+    if args.output is not None and args.analytic_only:
+        raise SceneError("-o draws the graphical methods (force plans, Joukowski's lever): leave out --analytic-only")
+    scene = _load(args)
+    scenes = [scene.at(value) for value in _listed_positions(scene, args.at)] if _several(args) else [scene]
+    if not scene.has_forces:
+        _warn("the scene has no masses and no loads: every reaction and the balancing moment are zero "
+              "(give mass, centre, inertia on the links, [gravity] and [[load]]; plans examples --loads lists scenes that do)")
+    runs = []
+    for one in scenes:
+        if args.precision == 0:
+            from dataclasses import replace
+
+            one = replace(one, scales=replace(one.scales, precision=None))
+        runs.append(kinetostatics(
+            one, graphical=not args.analytic_only, k_l=args.k_l, k_v=args.k_v, k_a=args.k_a,
+            precision=args.precision or None, warn_condition=args.warn_condition,
+        ))
+    if args.json:
+        documents = [forces_json(run) for run in runs]
+        text = format_json(documents[0] if len(runs) == 1 else documents)
+    else:
+        tables = []
+        for k, run in enumerate(runs):
+            table = forces_table(run, args.lang)
+            if len(runs) > 1:
+                table = f"position {k} of {len(runs)}: {_position_words(run.scene)}\n{table}"
+            tables.append(table)
+        text = "\n".join(tables)
+    if args.output is not None:
+        _force_drawings(args, runs)
+    for run in runs:
+        _warn_solution(run.analytic.kinematics, run.graphical)
+        for note in run.notes:
+            _warn(note)
+    sys.stdout.write(text)
+    return 0
+
+
+def _force_drawings(args, runs) -> None:
+    """``plans forces -o DIR``: every position's kinetostatic drawings, written together or not at all."""
+    from ._files import replace_all
+    from .drawing.force_drawing import force_drawing_files
+
+    directory = Path(args.output)
+    contents: dict = {}
+    for k, run in enumerate(runs):
+        if run.force_plans is None:
+            raise SceneError("the force plans are not available: nothing to draw")
+        where = directory if len(runs) == 1 else directory / f"position-{k}"
+        contents.update(force_drawing_files(run.force_plans, where, lang=args.lang, formats=(args.format,), lever=run.lever))
+    for path in replace_all(contents):
+        print(path, file=sys.stderr)
+
+
 def _position_words(scene: Scene) -> str:
     from .limits import position_text
 
@@ -500,7 +583,15 @@ def _sweep(args) -> int:
     cycle = driver_cycle(scene, args.steps, law=args.law, start=args.start)
     positions = cycle.positions
     analytic = cycle.solve(warn_condition=math.inf)
-    text = sweep_csv(analytic, cycle.t)
+    forces = None
+    if scene.has_forces:  # M_b and every |R_ij| beside the kinematics
+        if scene.accelerations:
+            from .forces.analytic import forces_from
+
+            forces = forces_from(analytic)
+        else:
+            _warn("the scene has masses or loads but asks for velocities only (accelerations = false): no force columns")
+    text = sweep_csv(analytic, cycle.t, forces)
     lost = int(np.count_nonzero(~np.asarray(analytic.valid)))
     if lost == len(positions):
         raise _nowhere(scene, positions)
@@ -768,6 +859,7 @@ def _handout(args) -> int:
             precision=args.precision,
             components=args.components,
             centres=args.centres,
+            forces=args.forces,
             progress=_progress(args),
             law=args.law,
             start=args.start,
@@ -804,6 +896,10 @@ def _examples(args) -> int:
     if args.name:
         sys.stdout.write(example_path(args.name).read_text(encoding="utf-8"))
         return 0
+    if args.loads:
+        for name in example_names(loads=True):
+            print(f"{name:20} {load(example_path(name)).title}")
+        return 0
     for name in example_names():
         words = DESCRIPTIONS.get(name) or load(example_path(name)).title
         print(f"{name:14} {words}")
@@ -817,6 +913,7 @@ _COMMANDS = {
     "handout": _handout,
     "bench": _bench,
     "centres": _centres,
+    "forces": _forces,
     "examples": _examples,
 }
 

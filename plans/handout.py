@@ -129,6 +129,7 @@ def handout(
     centres: bool = False,
     accelerations=None,
     scales: str = "plate",
+    forces: bool = False,
     law: str | None = None,
     start: str = "output",
 ):
@@ -142,10 +143,15 @@ def handout(
         check_language(lang)
     except ValueError as exc:
         raise HandoutError(str(exc)) from None
+    if forces and not scene.has_forces:
+        from .errors import SceneError
+
+        raise SceneError("--forces: the scene has no masses and no loads, so there is no kinetostatics to draw "
+                         "(give mass, centre, inertia on the links, [gravity] and [[load]]; plans examples --loads lists scenes that do)", scene.source)
     if scales not in SCALES:
         raise HandoutError(f"scales: {scales!r} is not one of {', '.join(SCALES)}")
     return build_handout(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components,
-                         progress=progress, centres=centres, accelerations=accelerations, scales=scales, law=law, start=start)
+                         progress=progress, centres=centres, accelerations=accelerations, scales=scales, forces=forces, law=law, start=start)
 
 
 #: ``"plate"``: one k_l, k_v, k_a over the whole handout; ``"per-position"``: k_v, k_a chosen for each position.
@@ -167,6 +173,7 @@ def write_handout(
     centres: bool = False,
     accelerations=None,
     scales: str = "plate",
+    forces: bool = False,
     law: str | None = None,
     start: str = "output",
 ) -> list[Path]:
@@ -206,6 +213,12 @@ def write_handout(
     scales : str
         ``"plate"`` (default): one k_v and one k_a for the whole handout;
         ``"per-position"``: each position's own (and the pages say so).
+    forces : bool
+        The kinetostatic pages of the positions whose acceleration plans are
+        drawn (the scene must have masses or loads): the free bodies of the
+        groups with their loads and reactions, each group's force plan and the
+        driver's with the reactions read off them and M_b, and Joukowski's
+        lever (:mod:`plans.drawing.forces_page`).
     law : str, optional
         The driver's law over the cycle (``"constant"``, ``"uniform"``,
         ``"harmonic"``; :func:`plans.motion.driver_law`); None: the scene's
@@ -241,7 +254,7 @@ def write_handout(
     if positions is None:
         _check_solvable(scene)
     document = handout(scene, positions=positions, lang=lang, k_l=k_l, k_v=k_v, k_a=k_a, precision=precision, components=components,
-                       progress=progress, centres=centres, accelerations=accelerations, scales=scales, law=law, start=start)
+                       progress=progress, centres=centres, accelerations=accelerations, scales=scales, forces=forces, law=law, start=start)
     say = progress or (lambda text: None)
     say(term("page", lang) + " …")
     if suffix == ".pdf":

@@ -19,6 +19,11 @@ Model
   slider block: an implicit body pinned at a point and sliding on a line.
 * The driver is a :class:`Crank` (turning about a frame point) or a
   :class:`LinearDriver` (translating along a frame line).
+* For the kinetostatics (optional; a scene without them solves its
+  kinematics exactly as before): a :class:`Mass` per link (mass, centre of
+  mass S in the link's own frame, moment of inertia J_S), the
+  :class:`Gravity`, and external :class:`Load` s (a force at a point of a
+  link, a resistance against the velocity of its point, or a couple).
 """
 
 from __future__ import annotations
@@ -44,6 +49,9 @@ __all__ = [
     "Crank",
     "LinearDriver",
     "Scales",
+    "Mass",
+    "Gravity",
+    "Load",
     "Scene",
     "load",
     "loads",
@@ -186,6 +194,97 @@ class Scales:
 
 
 @dataclass(frozen=True)
+class Mass:
+    """Mass and inertia of one moving body (``mass``, ``centre``, ``inertia`` of a ``[link.N]`` or ``[[slider]]``).
+
+    Attributes
+    ----------
+    body : str
+        The body's name.
+    mass : float
+        m [kg], not negative.
+    centre : complex
+        The centre of mass S in the body's own coordinates [m].
+    inertia : float
+        J_S, the moment of inertia about S [kg·m²], not negative.
+    point : str or None
+        The named point S is, if it was given by name (a block's default: its pin).
+    """
+
+    body: str
+    mass: float
+    centre: complex
+    inertia: float = 0.0
+    point: str | None = None
+
+
+@dataclass(frozen=True)
+class Gravity:
+    """The weights G = m·g, acting at each centre of mass.
+
+    Attributes
+    ----------
+    g : float
+        |g| [m/s²], not negative.
+    angle : float
+        The direction g points in [rad], from +x counter-clockwise (−π/2: down, the default).
+    """
+
+    g: float
+    angle: float = -math.pi / 2
+
+    @property
+    def vector(self) -> complex:
+        """g as a vector [m/s²] (a component that is round-off of cos 90° is 0: straight down is (0, −g))."""
+        x, y = math.cos(self.angle), math.sin(self.angle)
+        return complex(self.g * (x if abs(x) > 1e-15 else 0.0), self.g * (y if abs(y) > 1e-15 else 0.0))
+
+
+#: The kinds of :class:`Load`.
+LOAD_KINDS = ("force", "resistance", "moment")
+
+
+@dataclass(frozen=True)
+class Load:
+    """An external load on a moving body (a ``[[load]]`` of the scene).
+
+    Attributes
+    ----------
+    name : str
+        Its label (``name = "F_c"``; default ``F1``, ``F2``, … or ``M1``, … in file order).
+    body : str
+        The body it acts on.
+    kind : str
+        ``"force"``: a given force vector at ``at``; ``"resistance"``: a force of
+        magnitude ``magnitude`` against the velocity of ``at`` (zero where that
+        velocity is zero); ``"moment"``: a couple ``moment`` on the body.
+    at : complex
+        Point of application in the body's own coordinates [m] (0 for a couple).
+    point : str or None
+        The named point it acts at, if given by name.
+    force : complex
+        The force [N] (x + iy, frame axes) of a ``"force"``; 0 otherwise.
+    magnitude : float
+        |F| [N] of a ``"resistance"``.
+    moment : float
+        The couple [N·m], counter-clockwise positive, of a ``"moment"``.
+    working : complex or None
+        Unit vector: the load acts only while ``at`` moves along it (v·working > 0),
+        the working stroke; None: always.
+    """
+
+    name: str
+    body: str
+    kind: str
+    at: complex = 0j
+    point: str | None = None
+    force: complex = 0j
+    magnitude: float = 0.0
+    moment: float = 0.0
+    working: complex | None = None
+
+
+@dataclass(frozen=True)
 class Scene:
     """A validated linkage, all in SI units.
 
@@ -207,6 +306,12 @@ class Scene:
     scales : Scales
     source : str
         The file the scene came from (for messages).
+    masses : dict[str, Mass]
+        Body name -> its :class:`Mass`, for the bodies that have one.
+    gravity : Gravity or None
+        None: no weights.
+    loads : tuple[Load, ...]
+        External loads, in file order.
     """
 
     title: str
@@ -240,6 +345,14 @@ class Scene:
     def name_in(self, name: str, lang: str) -> str:
         """A name (a guide's, a point's) in *lang* as the scene's ``[names]`` give it, else as written."""
         return self.names.get(name, {}).get(lang) or name
+    masses: dict[str, Mass] = field(default_factory=dict)
+    gravity: Gravity | None = None
+    loads: tuple[Load, ...] = ()
+
+    @property
+    def has_forces(self) -> bool:
+        """True when the scene has masses or loads: the kinetostatics has something to find."""
+        return bool(self.loads) or any(m.mass > 0 or m.inertia > 0 for m in self.masses.values())
 
     # --- derived views, for solvers and drawings -----------------------------
 
@@ -302,23 +415,34 @@ class Scene:
 _EXAMPLES = "plans.examples"
 
 
-def example_names() -> list[str]:
-    """Names of the bundled example scenes (``plans examples``)."""
-    return sorted(
-        p.name[: -len(".toml")]
-        for p in resources.files(_EXAMPLES).iterdir()
-        if p.name.endswith(".toml")
-    )
+#: The sub-directory of the bundled scenes with masses and loads (``plans forces``).
+_LOADED = "loaded"
+
+
+def example_names(loads: bool = False) -> list[str]:
+    """Names of the bundled example scenes (``plans examples``).
+
+    *loads*: the scenes with masses and loads for the kinetostatics instead
+    (``plans examples --loads``): ``"slider-crank-loads"`` (domain.md §11) and
+    a loaded variant of each kinematic example that can carry loads.
+    """
+    folder = resources.files(_EXAMPLES)
+    if loads:
+        folder = folder / _LOADED
+    return sorted(p.name[: -len(".toml")] for p in folder.iterdir() if p.name.endswith(".toml"))
 
 
 def example_path(name: str) -> Path:
-    """Path of a bundled example scene by name (``"six-bar"``)."""
+    """Path of a bundled example scene by name (``"six-bar"``, ``"slider-crank-loads"``)."""
     names = example_names()
-    if name not in names:
-        close = difflib.get_close_matches(name, names, n=1)
-        hint = f"; did you mean {close[0]!r}?" if close else ""
-        raise SceneError(f"no bundled example {name!r}{hint} (plans examples lists them)")
-    return Path(str(resources.files(_EXAMPLES) / f"{name}.toml"))
+    if name in names:
+        return Path(str(resources.files(_EXAMPLES) / f"{name}.toml"))
+    loaded = example_names(loads=True)
+    if name in loaded:
+        return Path(str(resources.files(_EXAMPLES) / _LOADED / f"{name}.toml"))
+    close = difflib.get_close_matches(name, names + loaded, n=1)
+    hint = f"; did you mean {close[0]!r}?" if close else ""
+    raise SceneError(f"no bundled example {name!r}{hint} (plans examples lists them; plans examples --loads those with loads)")
 
 
 def load(path: str | Path) -> Scene:
@@ -429,10 +553,13 @@ def from_mapping(data: dict, source: str = "<scene>") -> Scene:
     return _SceneReader(data, source, "").scene()
 
 
-_TOP_KEYS = ("title", "names", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales", "output")
-_BODY_KEYS = ("points", "lines")
+_TOP_KEYS = ("title", "names", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales", "output", "gravity", "load")
+_MASS_KEYS = ("mass", "centre", "inertia")
+_BODY_KEYS = ("points", "lines") + _MASS_KEYS
 _LINE_KEYS = ("through", "angle", "direction")
-_SLIDER_KEYS = ("pin", "on", "name", "points")
+_SLIDER_KEYS = ("pin", "on", "name", "points") + _MASS_KEYS
+_GRAVITY_KEYS = ("g", "angle")
+_LOAD_KEYS = ("name", "link", "at", "force", "moment", "working")
 _PRISMATIC_KEYS = ("line", "on", "name")
 _CRANK_KEYS = ("crank", "pivot", "angle", "omega", "epsilon", "law")
 _LINEAR_KEYS = ("slider", "on", "point", "position", "velocity", "acceleration", "stroke", "law")
@@ -450,6 +577,10 @@ _SI_UNITS = {
     "angular acceleration": "rad/s^2",
     "velocity": "m/s",
     "acceleration": "m/s^2",
+    "mass": "kg",
+    "moment of inertia": "kg·m²",
+    "force": "N",
+    "moment": "N·m",
 }
 
 
@@ -714,6 +845,12 @@ class _SceneReader:
         accelerations, report = self.compute(self.table(data.get("compute", {}), "compute"), bodies)
         scales = self.scales(self.table(data.get("scales", {}), "scales"))
         output = self.output(self.table(data.get("output", {}), "output"), bodies)
+        masses = self.masses(links, sliders, prismatics, bodies)
+        gravity = self.gravity(self.table(data["gravity"], "gravity")) if "gravity" in data else None
+        raw_loads = data.get("load", [])
+        if not isinstance(raw_loads, list):
+            raise self.fail("load", "write loads as [[load]] tables")
+        loads = tuple(self.load(k, self.table(table, f"load.{k}"), bodies) for k, table in enumerate(raw_loads))
         return Scene(
             title=title,
             bodies=bodies,
@@ -729,10 +866,142 @@ class _SceneReader:
             output=output,
             notes=self.length_notes(),
             key_lines={f"assembly.{name}": self._line_of(f"assembly.{name}") for name in assembly if self._line_of(f"assembly.{name}")},
+            masses=masses,
+            gravity=gravity,
+            loads=loads,
         )
+
+    # -- kinetostatics: masses, gravity, loads ----------------------------------
+
+    def masses(self, links: dict, sliders: list, prismatics: list, bodies: dict[str, Body]) -> dict[str, Mass]:
+        """The :class:`Mass` of every link and block that gives ``mass``, ``centre`` or ``inertia``."""
+        out: dict[str, Mass] = {}
+        for raw_name, table in links.items():
+            name = str(raw_name)
+            if any(key in table for key in _MASS_KEYS):
+                out[name] = self.mass(table, f"link.{name}", bodies[name], default=None)
+        for k, table in enumerate(sliders):
+            if not any(key in table for key in _MASS_KEYS):
+                continue
+            block = prismatics[k].slider
+            if str(block) in {str(n) for n in links}:
+                raise self.fail(
+                    f"slider.{k}.mass" if "mass" in table else f"slider.{k}",
+                    f"the block is link {block}, described under [link.{block}]: give its mass, centre and inertia there",
+                )
+            pin = table["pin"]
+            out[block] = self.mass(table, f"slider.{k}", bodies[block], default=pin)
+        return dict(sorted(out.items(), key=lambda item: list(bodies).index(item[0])))
+
+    def mass(self, table: dict, field: str, body: Body, default: str | None) -> Mass:
+        """One body's mass, centre and inertia (a block's centre defaults to its pin, *default*)."""
+        words = body_words(body.name) if not body.block else f"block {body.name}"
+        mass = self.quantity(table.get("mass", 0.0), "mass", f"{field}.mass")
+        if mass < 0:
+            raise self.fail(f"{field}.mass", f"a mass is not negative (got {table['mass']!r})")
+        inertia = self.quantity(table.get("inertia", 0.0), "moment of inertia", f"{field}.inertia")
+        if inertia < 0:
+            raise self.fail(f"{field}.inertia", f"a moment of inertia is not negative (got {table['inertia']!r})")
+        if "centre" in table:
+            centre, point = self.body_point(table["centre"], f"{field}.centre", body)
+        elif default is not None:
+            centre, point = body.points[default], default
+        else:
+            given = " and ".join(key for key in ("mass", "inertia") if key in table)
+            raise self.fail(
+                f"{field}.{'mass' if 'mass' in table else 'inertia'}",
+                f"{words} has a {given} but no centre of mass: give centre = \"S\" (a point of {words}, "
+                f"such as {', '.join(body.points)}) or centre = [x, y] in its own frame",
+            )
+        if "mass" not in table and "inertia" not in table:
+            raise self.fail(f"{field}.centre", f"{words} has a centre but no mass or inertia: give mass = \"2 kg\" (and inertia), or leave the centre out")
+        return Mass(body.name, mass, centre, inertia, point)
+
+    def body_point(self, value: object, field: str, body: Body) -> tuple[complex, str | None]:
+        """A point of *body*: its name, or coordinates [x, y] in the body's own frame; (coordinates, name or None)."""
+        if isinstance(value, str):
+            name = self.name(value, field, "point")
+            if name not in body.points:
+                words = body_words(body.name) if not body.block else f"block {body.name}"
+                raise self.fail(field, f"{words} has no point {name!r}{_suggest(name, body.points)} (its points: {', '.join(body.points)}); or give [x, y] in its own frame")
+            return body.points[name], name
+        return self.point(value, field), None
+
+    def gravity(self, table: dict) -> Gravity:
+        self.check_keys(table, _GRAVITY_KEYS, "gravity")
+        if "g" not in table:
+            raise self.fail("gravity", "give g = \"9.81 m/s^2\" (and its direction angle, default -90 deg: down)")
+        g = self.quantity(table["g"], "acceleration", "gravity.g")
+        if g < 0:
+            raise self.fail("gravity.g", f"g is its magnitude, not negative (got {table['g']!r}); turn its angle instead")
+        angle = self.quantity(table.get("angle", -90.0), "angle", "gravity.angle")
+        return Gravity(g, angle)
+
+    def load(self, k: int, table: dict, bodies: dict[str, Body]) -> Load:
+        field = f"load.{k}"
+        self.check_keys(table, _LOAD_KEYS, field)
+        if "link" not in table:
+            raise self.fail(field, "a load needs link = \"N\", the link it acts on")
+        link = self.name(table["link"], f"{field}.link", "link")
+        if link == FRAME or link == "0":
+            raise self.fail(f"{field}.link", "a load on the frame is taken by the frame: it loads no link; put it on a moving link")
+        if link not in bodies:
+            raise self.fail(f"{field}.link", f"there is no link {link!r}{_suggest(link, [n for n in bodies if n != FRAME])}")
+        body = bodies[link]
+        if ("force" in table) == ("moment" in table):
+            raise self.fail(field, "a load is either force = ... at a point (at = \"B\") or a couple moment = \"20 N*m\"; give one of them")
+        default = ("F" if "force" in table else "M") + str(k + 1)
+        name = table.get("name", default)
+        if not isinstance(name, str) or not name.strip():
+            raise self.fail(f"{field}.name", f"expected text, got {_describe(name)}")
+        if "moment" in table:
+            for key in ("at", "working"):
+                if key in table:
+                    raise self.fail(f"{field}.{key}", f"a couple acts on the whole link, not at a point: leave {key} out (or give a force)")
+            moment = self.quantity(table["moment"], "moment", f"{field}.moment")
+            return Load(name, link, "moment", moment=moment)
+        if "at" not in table:
+            raise self.fail(field, f"a force needs the point it acts at: at = \"P\", a point of link {link} ({', '.join(body.points)})")
+        at_value = table["at"]
+        if isinstance(at_value, str) and self.name(at_value, f"{field}.at", "point") not in body.points:
+            owners = [body_words(n) for n, b in bodies.items() if at_value in b.points]
+            where = f"; {at_value} is a point of {' and '.join(owners)}" if owners else _suggest(at_value, body.points)
+            raise self.fail(f"{field}.at", f"{at_value!r} is not a point of link {link} (its points: {', '.join(body.points)}){where}")
+        at, point = self.body_point(at_value, f"{field}.at", body)
+        working = None
+        if "working" in table:
+            working = cmath.exp(1j * self.direction(table["working"], f"{field}.working"))
+        force = table["force"]
+        if isinstance(force, list):
+            if len(force) != 2:
+                raise self.fail(f"{field}.force", f"expected [Fx, Fy], such as [\"1500 N\", 0], got {_describe(force)}")
+            vector = complex(self.quantity(force[0], "force", f"{field}.force[0]"), self.quantity(force[1], "force", f"{field}.force[1]"))
+            return Load(name, link, "force", at, point, force=vector, working=working)
+        if not isinstance(force, dict):
+            raise self.fail(f"{field}.force", f"expected [Fx, Fy], {{ magnitude, angle }} or {{ magnitude, against = \"velocity\" }}, got {_describe(force)}")
+        if "magnitude" not in force:
+            raise self.fail(f"{field}.force", "give the force's magnitude = \"1500 N\" with its angle, or with against = \"velocity\"")
+        if "angle" in force and "against" in force:
+            raise self.fail(f"{field}.force", "give the force's angle or against = \"velocity\", not both")
+        self.check_keys(force, ("magnitude", "angle", "against"), f"{field}.force")
+        magnitude = self.quantity(force["magnitude"], "force", f"{field}.force.magnitude")
+        if magnitude < 0:
+            raise self.fail(f"{field}.force.magnitude", f"a magnitude is not negative (got {force['magnitude']!r}); turn the force's angle instead")
+        if "against" in force:
+            if force["against"] != "velocity":
+                raise self.fail(f"{field}.force.against", f"a resistance acts against = \"velocity\" (of its point), got {_describe(force['against'])}")
+            return Load(name, link, "resistance", at, point, magnitude=magnitude, working=working)
+        if "angle" not in force:
+            raise self.fail(f"{field}.force", "give the force's angle (from +x, counter-clockwise), or against = \"velocity\"")
+        angle = self.quantity(force["angle"], "angle", f"{field}.force.angle")
+        return Load(name, link, "force", at, point, force=magnitude * cmath.exp(1j * angle), working=working)
 
     def body(self, name: str, table: dict, field: str) -> Body:
         self.check_keys(table, _BODY_KEYS, field)
+        if name == FRAME:
+            for key in _MASS_KEYS:
+                if key in table:
+                    raise self.fail(f"frame.{key}", f"the frame does not move: its {key} takes no part; give {', '.join(_MASS_KEYS)} on the links")
         raw_points = self.table(table.get("points", {}), f"{field}.points")
         points: dict[str, complex] = {}
         for pname, value in raw_points.items():

@@ -406,7 +406,7 @@ def format_column(values, shown=None, degrees: bool = False) -> list[str]:
     return cells
 
 
-def sweep_csv(analytic, t=None) -> str:
+def sweep_csv(analytic, t=None, forces=None) -> str:
     """Every quantity over the solved driver positions, one row per position.
 
     Columns: the driver position (``driver_phi_deg`` for a crank, ``driver_s``
@@ -424,6 +424,12 @@ def sweep_csv(analytic, t=None) -> str:
     cells and ``assembled = 0``; a cell is never NaN or infinite.  Numbers
     are written to 14 significant digits of their column's scale
     (:func:`format_column`): inputs come back as given, round-off prints as 0.
+
+    With *forces* (:class:`plans.forces.analytic.AnalyticForces` of the same
+    positions, for a scene with masses or loads) the kinetostatics follows:
+    ``M_b`` [N·m] on a crank (``F_b`` [N] on a linear driver) and, per
+    reaction, ``R_ij.magnitude`` [N] (the force of body i on body j, the
+    frame 0).
     """
     scene = analytic.scene
     acc = scene.accelerations
@@ -472,6 +478,10 @@ def sweep_csv(analytic, t=None) -> str:
         add(f"{group.name}.condition", np.maximum(condition, 1.0))  # at least 1 (round-off can give 1 − 1e-16)
         add(f"{group.name}.sine", np.minimum(np.asarray(analytic.sines[group.name]), 1.0))
         add(f"{group.name}.expected_rel_error", expected_rel_error(condition))
+    if forces is not None:
+        add("M_b" if forces.balancing_kind == "moment" else "F_b", forces.balancing)
+        for label, reaction in forces.reactions.items():
+            add(f"{label}.magnitude", reaction.magnitude)
     out = io.StringIO()
     csv.writer(out, lineterminator="\n").writerow(header)  # names from the scene may need quoting; numbers do not
     out.write("\n".join(",".join(row) for row in zip(*cells)))

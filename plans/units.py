@@ -1,9 +1,10 @@
 """Quantities as people write them in a scene file: ``"300 mm"``, ``"55 deg"``, ``"2000 rpm"``.
 
-A small, tested table rather than a units library: a scene needs six kinds of
+A small, tested table rather than a units library: a scene needs ten kinds of
 quantity and a dozen unit spellings, and a table keeps ``plans solve`` fast to
 start.  Bare numbers are taken in the default unit of their kind (SI, and
-degrees for angles).  Everything returned is SI: m, rad, rad/s, rad/s², m/s, m/s².
+degrees for angles).  Everything returned is SI: m, rad, rad/s, rad/s², m/s, m/s², and for the
+kinetostatics kg, kg·m², N, N·m.
 """
 
 import math
@@ -22,6 +23,19 @@ KINDS: dict[str, dict[str, float]] = {
     "angular acceleration": {"rad/s^2": 1.0, "rad/s2": 1.0, "rad/s²": 1.0, "deg/s^2": _PI / 180, "deg/s²": _PI / 180},
     "velocity": {"m/s": 1.0, "mm/s": 1e-3, "cm/s": 1e-2, "km/h": 1 / 3.6},
     "acceleration": {"m/s^2": 1.0, "m/s2": 1.0, "m/s²": 1.0, "mm/s^2": 1e-3, "mm/s²": 1e-3, "g": 9.80665},
+    # kinetostatics (issue 22): masses, moments of inertia, forces and moments of forces
+    "mass": {"kg": 1.0, "g": 1e-3, "t": 1e3},
+    "moment of inertia": {
+        "kg·m²": 1.0, "kg*m^2": 1.0, "kg m^2": 1.0, "kg·m^2": 1.0, "kgm^2": 1.0,
+        "kg·mm²": 1e-6, "kg*mm^2": 1e-6, "kg mm^2": 1e-6, "kg·mm^2": 1e-6, "kgmm^2": 1e-6,
+        "g·mm²": 1e-9, "g*mm^2": 1e-9,
+    },
+    "force": {"N": 1.0, "kN": 1e3, "MN": 1e6, "daN": 10.0},
+    "moment": {
+        "N·m": 1.0, "N*m": 1.0, "N m": 1.0, "Nm": 1.0,
+        "N·mm": 1e-3, "N*mm": 1e-3, "N mm": 1e-3, "Nmm": 1e-3,
+        "kN·m": 1e3, "kN*m": 1e3, "kN m": 1e3, "kNm": 1e3,
+    },
 }
 
 _NUMBER = r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?"
@@ -108,4 +122,8 @@ def _example(kind: str) -> str:
         "angular acceleration": "0 rad/s^2",
         "velocity": "1 m/s",
         "acceleration": "0 m/s^2",
+        "mass": "2 kg",
+        "moment of inertia": "0.004 kg*m^2",
+        "force": "1500 N",
+        "moment": "20 N*m",
     }[kind]

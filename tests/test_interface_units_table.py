@@ -22,6 +22,15 @@ STANDARD = {
     "angular acceleration": {"rad/s^2": 1, "rad/s2": 1, "rad/s²": 1, "deg/s^2": PI / 180, "deg/s²": PI / 180},
     "velocity": {"m/s": 1, "mm/s": 1 / 1000, "cm/s": 1 / 100, "km/h": 1000 / 3600},
     "acceleration": {"m/s^2": 1, "m/s2": 1, "m/s²": 1, "mm/s^2": 1 / 1000, "mm/s²": 1 / 1000, "g": 9.80665},
+    # kinetostatics (issue 22): 1 g = 1/1000 kg, 1 t = 1000 kg, 1 N = 1 kg·m/s², SI prefixes (da = 10)
+    "mass": {"kg": 1, "g": 1 / 1000, "t": 1000},
+    "moment of inertia": {"kg·m²": 1, "kg*m^2": 1, "kg m^2": 1, "kg·m^2": 1, "kgm^2": 1,
+                          "kg·mm²": 1 / 1_000_000, "kg*mm^2": 1 / 1_000_000, "kg mm^2": 1 / 1_000_000,
+                          "kg·mm^2": 1 / 1_000_000, "kgmm^2": 1 / 1_000_000,
+                          "g·mm²": 1 / 1_000_000_000, "g*mm^2": 1 / 1_000_000_000},
+    "force": {"N": 1, "kN": 1000, "MN": 1_000_000, "daN": 10},
+    "moment": {"N·m": 1, "N*m": 1, "N m": 1, "Nm": 1, "N·mm": 1 / 1000, "N*mm": 1 / 1000, "N mm": 1 / 1000,
+               "Nmm": 1 / 1000, "kN·m": 1000, "kN*m": 1000, "kN m": 1000, "kNm": 1000},
 }
 
 

@@ -178,6 +178,8 @@ class BenchResult:
     processes: dict[str, float] = field(default_factory=dict)
     seconds: float = 0.0
     cold: dict[int, tuple[float, float]] = field(default_factory=dict)
+    #: Kinetostatics (issue 22): best seconds of the kinematics, of the kinematics and the forces, at 3600 positions.
+    forces: dict[str, float] = field(default_factory=dict)
 
 
 #: The methods, in the order tables list them.
@@ -516,7 +518,33 @@ def _find(rows: list[Row], case: str, method: str, setting: str) -> Row | None:
     return None
 
 
-def _targets(rows: list[Row], processes: dict[str, float], cold: dict[int, tuple[float, float]] | None = None) -> list[Target]:
+#: The scene and the number of positions the kinetostatics is timed at (issue 22).
+FORCES_CASE = ("six-bar-loads", 3600)
+
+
+def time_forces(budget: float) -> dict[str, float]:
+    """Best wall times [s] of the kinematics and of the kinematics with the forces, over FORCES_CASE, alternately.
+
+    ``kinematics``: :func:`plans.analytic.solve` with every attribute of the
+    result read (:func:`read_all`); ``kinetostatics``: the same solve and
+    :func:`plans.forces.analytic.forces_from` (which reads what it needs).
+    """
+    from ..analytic import solve
+    from ..forces.analytic import forces_from
+    from ..scene import example_path, load
+
+    name, n = FORCES_CASE
+    scene = load(example_path(name))
+    structure = find_structure(scene)
+    positions = scene.driver.phi + np.linspace(0.0, 2 * np.pi, n, endpoint=False)
+    (_, kinematics), (_, both) = time_pair(
+        lambda: read_all(solve(scene, positions, structure)), lambda: forces_from(solve(scene, positions, structure)), budget
+    )
+    return {"kinematics": kinematics, "kinetostatics": both}
+
+
+def _targets(rows: list[Row], processes: dict[str, float], cold: dict[int, tuple[float, float]] | None = None,
+             forces: dict[str, float] | None = None) -> list[Target]:
     targets = []
 
     def add(name, goal, value, text, limit, below=True):
@@ -554,6 +582,11 @@ def _targets(rows: list[Row], processes: dict[str, float], cold: dict[int, tuple
         lambda v: f"{v:.2f} s", 0.5)
     add("plans draw --example six-bar (four SVGs), whole process", "≤ 3 s", processes.get("plans draw --example six-bar"),
         lambda v: f"{v:.2f} s", 3.0)
+    if forces:  # issue 22: the forces over 3600 positions against the kinematics they start from
+        kinematics, both = forces["kinematics"], forces["kinetostatics"]
+        add(f"kinetostatics, {FORCES_CASE[0]}, {FORCES_CASE[1]} positions: forces / kinematics", "≤ 2×",
+            (both - kinematics) / kinematics,
+            lambda v: f"{v:.1f}× ({kinematics * 1e3:.2f} ms kinematics, {both * 1e3:.2f} ms with the forces)", 2.0)
     return targets
 
 
@@ -585,7 +618,13 @@ def run_bench(settings: Settings = DEFAULT, progress=None) -> BenchResult:
         if progress:
             progress("bench: first calls in fresh processes")
         cold = time_cold(settings.cold_ns, max(3, settings.process_runs))
-    return BenchResult(machine(), settings, rows, _targets(rows, processes, cold), processes, time.perf_counter() - start, cold)
+    forces = {}
+    if any(case.name == "six-bar" for case in cases):
+        if progress:
+            progress("bench: kinetostatics")
+        forces = time_forces(settings.budget)
+    return BenchResult(machine(), settings, rows, _targets(rows, processes, cold, forces), processes, time.perf_counter() - start,
+                       cold, forces)
 
 
 # --- output ------------------------------------------------------------------------------------

@@ -20,6 +20,7 @@ __all__ = [
     "TITLE_PT",
     "HEADING_PT",
     "VECTOR_STYLE",
+    "FORCE_STYLE",
     "CONSTRUCTION_STYLE",
     "ARROW_RATIO",
     "FIGURE_STYLE",
@@ -74,6 +75,20 @@ VECTOR_STYLE = {
     "normal": ("#009E73", 1.1, (5.0, 2.0), 3.0),
     "tangential": ("#D55E00", 1.1, (6.0, 1.8, 1.2, 1.8), 3.0),
     "coriolis": ("#6A1B7A", 1.3, (1.2, 1.2), 3.0),
+}
+
+#: Force kind -> (colour, line width [pt], dash pattern or None, arrowhead length [mm]), on force
+#: plans and free bodies: a reaction read off a plan heavy solid black (as an absolute vector),
+#: its components as the acceleration components (normal dashed, tangential dash-dot), loads
+#: light solid, each kind its own colour, the balancing force heavy orange.
+FORCE_STYLE = {
+    "reaction": ("#000000", 1.7, None, 3.6),
+    "normal": ("#009E73", 1.1, (5.0, 2.0), 3.0),
+    "tangential": ("#D55E00", 1.1, (6.0, 1.8, 1.2, 1.8), 3.0),
+    "weight": ("#56B4E9", 1.1, None, 3.0),
+    "inertia": ("#0072B2", 1.1, None, 3.0),
+    "external": ("#CC79A7", 1.3, None, 3.0),
+    "balancing": ("#E69F00", 1.7, None, 3.6),
 }
 
 #: Arrowheads are slender: length : width = ARROW_RATIO : 1 (drafting practice, about 3:1).

@@ -47,7 +47,7 @@ __all__ = ["Handout", "build_handout", "ORDER", "ACCELERATIONS_DEFAULT"]
 
 #: The sections of a multi-position handout, in the plate's order (names as :attr:`Handout.order` lists them).
 ORDER = ("data", "positions", "velocity-equations", "velocity-plans", "acceleration-equations", "acceleration-plans",
-         "tables", "loops", "diagrams", "centres")
+         "tables", "loops", "diagrams", "forces", "centres")
 #: How many acceleration plans a handout draws unless asked: one of the working stroke, one of the idle.
 ACCELERATIONS_DEFAULT = 2
 
@@ -225,6 +225,7 @@ def build_handout(
     centres: bool = False,
     accelerations=None,
     scales: str = "plate",
+    forces: bool = False,
     law: str | None = None,
     start: str = "output",
 ) -> Handout:
@@ -416,6 +417,21 @@ def build_handout(
             doc.full_page(f"diagram-{page_name}", figure_svg(fig))
         for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
             doc.full_page(f"kinematic-{number}", figure_svg(fig))
+    if forces:
+        from ..drawing.forces_page import draw_forces_pages
+        from ..drawing.svgblocks import figure_svg
+        from ..forces.lever import LeverError, joukowski_lever
+
+        doc.section("forces")
+        for k in chosen or [sample.index]:
+            h = here[k]
+            try:
+                lever = joukowski_lever(h.graphical)
+            except LeverError:
+                lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
+            where = [f"{term('position', lang)} {h.index}:  {h.label}"] if multi else []
+            for n, page in enumerate(draw_forces_pages(h.graphical, lang=lang, header_lines=where, lever=lever)):
+                doc.full_page(f"forces-{h.index}-{n}", figure_svg(page))
     if centres:
         doc.section("centres")
         for n, h in enumerate(here.values(), start=1):

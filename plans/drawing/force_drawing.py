@@ -1,0 +1,621 @@
+"""Drawings of the kinetostatics: each group's force plan, the driver's, and the free bodies of the groups.
+
+Drawn from :class:`plans.forces.force_plans.ForcePlans` data and nothing
+else: the plans' coordinates are already millimetres at μ_F, the free bodies
+are the mechanism at k_l.  Nothing is solved here.
+
+* :func:`draw_force_plan` — one force plan: the polygon of loads and
+  reactions head to tail, the two closing lines of known direction, the
+  reactions' components, every vector labelled, μ_F and the readings stated;
+* :func:`draw_free_bodies` — the mechanism cut into its groups and the
+  driver, each with its loads (weights, inertia forces and couples, given
+  forces) and the reactions on it, at the length scale k_l (the arrows have
+  one length, not to scale);
+* :func:`force_figures` / :func:`write_force_drawings` — every drawing of a
+  position, as figures or files (SVG true to scale, PDF, PNG), all or none.
+
+Gids (labels in ASCII, Φ as ``Phi``): ``fplan-<kind>-<label>`` (shaft; ``-head``), ``fplan-line-<n>``,
+``fplan-start``, ``fplan-label-<label>``, ``fplan-heading``, ``fplan-scale``,
+``fplan-reading-<label>``, ``fplan-legend-<kind>``; ``fbody-link-<body>``,
+``fbody-force-<label>``, ``fbody-couple-<label>``, ``fbody-heading-<group>``.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from pathlib import Path
+
+from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
+from .labels import place_label
+from .numerals import localised, scale_caption
+from .style import CAPTION_PT, CONSTRUCTION_STYLE, FIGURE_STYLE, FORCE_STYLE, HEADING_PT, INK, LABEL_PT, SMALL_PT
+from ..i18n import term
+
+__all__ = [
+    "draw_force_plan",
+    "draw_force_plan_into",
+    "draw_free_bodies",
+    "draw_free_bodies_into",
+    "draw_force_legend_into",
+    "legend_kinds",
+    "force_figures",
+    "write_force_drawings",
+    "force_drawing_files",
+    "force_math",
+    "draw_lever",
+    "draw_lever_into",
+    "FORCE_LEGEND",
+    "FREE_ARROW_MM",
+]
+
+#: Length of every force arrow on the free bodies [mm] (not to scale).
+FREE_ARROW_MM = 14.0
+#: Radius of a couple's arc on the free bodies [mm].
+COUPLE_R_MM = 6.0
+#: Space between two free bodies [mm].
+FREE_GAP_MM = 22.0
+#: How far a closing line runs past the intersection and behind its start [mm].
+PAST_MM = 8.0
+BEHIND_MM = 4.0
+#: A vector shorter than this [mm] is drawn without a head; a note under the plan gives its length.
+SHORT_MM = 3.0
+#: Label gaps [mm] tried in turn.
+GAPS = (0.8, 1.6, 2.6, 3.8, 5.5, 8.0, 11.0)
+
+#: plan/force kind -> plans.i18n key of its legend words
+FORCE_LEGEND = {
+    "weight": "force_weight",
+    "inertia": "force_inertia",
+    "external": "force_external",
+    "reaction": "force_reaction",
+    "normal": "force_normal",
+    "tangential": "force_tangential",
+    "balancing": "balancing_force",
+}
+
+
+def _beside(drawn: list, tail: complex, u: complex) -> complex:
+    """The sideways shift [mm] that keeps an arrow from *tail* along *u* off those already *drawn* there (same point, same way)."""
+    same = sum(1 for t, w in drawn if abs(t - tail) < 0.5 and (w * u.conjugate()).real > 0.97)
+    drawn.append((tail, u))
+    return 1j * u * 2.6 * same
+
+
+def _gid(label: str) -> str:
+    """A label as a gid (ASCII): ``"F_Φ3"`` → ``"F_Phi3"``."""
+    return label.replace("Φ", "Phi")
+
+
+def _escape(text: str) -> str:
+    text = text.replace("\\", "").replace("{", "").replace("}", "")
+    for c in "$_%#&^~":
+        text = text.replace(c, "\\" + c)
+    return text
+
+
+def force_math(label: str) -> str:
+    """A force's label as mathtext: ``"R^t_23"`` → ``$R^{t}_{\\mathrm{23}}$``, ``"F_Φ3"``, a given load's name.
+
+    The symbol, superscript and subscript are escaped (a load's name comes
+    from the scene and is never read as a mathtext command).
+    """
+    head, _, sub = label.partition("_")
+    symbol, _, sup = head.partition("^")
+    text = _escape(symbol) or " "
+    if sup:
+        text += "^{" + _escape(sup) + "}"
+    if sub:
+        text += r"_{\mathrm{" + _escape(sub) + "}}"
+    return f"${text}$"
+
+
+def _lower(words: str) -> str:
+    """Words as they go inside a sentence or a legend: the first letter in lower case."""
+    return words[:1].lower() + words[1:]
+
+
+def _step(plan) -> float | None:
+    """The smallest step of a force read off *plan* [N]: the precision times μ_F."""
+    return plan.precision * plan.scale if plan.precision else None
+
+
+def _reading(value: float, step: float | None, lang: str) -> str:
+    """A value read to *step* (as many decimals as the step has), or to 4 significant figures without one."""
+    if not step:
+        return _number(value, lang)
+    text = f"{step:.10f}".rstrip("0")
+    decimals = len(text.partition(".")[2])
+    return localised(f"{round(value / step) * step:.{decimals}f}", lang)
+
+
+def _number(value: float, lang: str, digits: int = 4) -> str:
+    """A reading to *digits* significant figures, in the language's numerals."""
+    if value == 0:
+        return "0"
+    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
+    return localised(f"{value:.{decimals}f}", lang)
+
+
+# --- a force plan ----------------------------------------------------------------------
+
+
+def draw_force_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, balancing_moment: float | None = None) -> list:
+    """Draw one force plan (:class:`plans.forces.force_plans.ForcePlan`), one data unit = 1 mm.
+
+    *balancing_moment* [N·m], given for the driver's plan, is stated under it.
+    Returns the artists; a new true-to-scale figure is ``artists[0].figure``.
+    """
+    return sketch_on(ax, "fplan", lambda sketch: draw_force_plan_into(sketch, plan, lang=lang, legend=legend, balancing_moment=balancing_moment))
+
+
+def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool = True, caption: bool = True, balancing_moment: float | None = None) -> None:
+    """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch."""
+    vectors = [v for v in plan.vectors if v.length > 1e-9]
+    for v in vectors:
+        for z in (v.tail, v.tip):
+            if not (math.isfinite(z.real) and math.isfinite(z.imag)):
+                raise ValueError(f"force plan {plan.group}: {v.label} is not finite")
+    # the closing lines, thin, under everything, from their point past the intersection
+    target = _closing_point(plan)
+    for n, line in enumerate(plan.lines):
+        d = unit(complex(line.direction))
+        t = ((target - line.through) * d.conjugate()).real if target is not None else 20.0
+        lo, hi = min(0.0, t), max(0.0, t)
+        a = line.through + d * (lo - (BEHIND_MM if t >= 0 else PAST_MM))
+        b = line.through + d * (hi + (PAST_MM if t >= 0 else BEHIND_MM))
+        color, lw, dashes = CONSTRUCTION_STYLE
+        sketch.line([a, b], color=color, lw=lw, dashes=dashes, gid=f"line-{n}", zorder=1.0)
+    # components and inner reactions first, under the polygon's own vectors
+    order = {"normal": 0, "tangential": 1, "reaction": 2, "weight": 3, "inertia": 3, "external": 3, "balancing": 3}
+    for v in sorted(vectors, key=lambda v: order[v.kind]):
+        color, lw, dashes, head = FORCE_STYLE[v.kind]
+        if v.length < SHORT_MM:  # too short for an arrow: its end is a point, its length a note
+            sketch.line([complex(v.tail), complex(v.tip)], color=color, lw=lw, gid=f"{v.kind}-{_gid(v.label)}", zorder=3.0)
+            continue
+        sketch.arrow(complex(v.tail), complex(v.tip), color=color, lw=lw, dashes=dashes, head=min(head, v.length / 3.0), gid=f"{v.kind}-{_gid(v.label)}", zorder=3.0 if v.kind != "normal" else 2.6)
+    sketch.circle(0j, 0.55, fc=INK, lw=0, gid="start", zorder=4.0)
+    for name, z in plan.points.items():
+        sketch.circle(complex(z), 0.35, fc=INK, lw=0, gid=f"vertex-{name}", zorder=4.0, obstacle=False)
+    centre = sum(complex(z) for z in plan.points.values()) / max(1, len(plan.points))
+    for v in vectors:
+        middle = (complex(v.tail) + complex(v.tip)) / 2
+        across = unit(middle - centre) if abs(middle - centre) > 1e-6 else 1j * unit(v.tip - v.tail)
+        place_label(sketch, middle, [(force_math(v.label), f"label-{_gid(v.label)}")], size=LABEL_PT if v.length >= 6 else SMALL_PT,
+                    prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK)
+    if caption:
+        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment)
+
+
+def _closing_point(plan):
+    """The intersection of the two closing lines [mm], if the plan has them."""
+    if len(plan.lines) != 2:
+        return None
+    (p1, d1), (p2, d2) = ((complex(line.through), complex(line.direction)) for line in plan.lines)
+    cross = (d1.conjugate() * d2).imag
+    if abs(cross) < 1e-12:
+        return None
+    t = ((p2 - p1).conjugate() * d2).imag / cross
+    return p1 + t * d1
+
+
+def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None) -> None:
+    """Heading, μ_F, the reactions read off the plan, the legend: below the plan."""
+    b = sketch.bounds
+    x, y = b.xmin, b.ymin - 3.0
+    what = term("driver", lang) if plan.group == "driver" else plan.group
+    sketch.text(complex(x, y), f"{term('force_plan', lang)}: {what}", size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+    y -= 5.0
+    sketch.text(complex(x, y), scale_caption(r"\mu_F", fmt_number(plan.scale), "N/mm", lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    row = text_size("lp", CAPTION_PT)[1] + 0.9
+    for v in vectors:
+        if v.label not in plan.found:
+            continue
+        y -= row
+        line = f"{force_math(v.label)} = {_reading(v.length, plan.precision, lang)} mm · {localised(fmt_number(plan.scale), lang)} N/mm = {_reading(v.value, _step(plan), lang)} N"
+        sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"reading-{_gid(v.label)}", obstacle=False, math=True)
+    # notes on vectors too short for an arrow, side by side as far as the plan is wide (at least 50 mm)
+    width = max(b.width, 50.0)
+    cursor = None
+    for v in (v for v in vectors if v.length < SHORT_MM):
+        note = f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm"
+        w = text_size(note, CAPTION_PT, math=True)[0]
+        if cursor is None or cursor + w > x + width:
+            y -= row
+            cursor = x
+        sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=f"short-{_gid(v.label)}", obstacle=False, math=True)
+        cursor += w + 3.0
+    if balancing_moment is not None:
+        y -= row
+        sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(balancing_moment, lang)} N·m ({_lower(term('balancing_moment', lang))})",
+                    size=CAPTION_PT, ha="left", va="top", gid="reading-M_b", obstacle=False, math=True)
+    if not legend:
+        return
+    kinds = [k for k in FORCE_LEGEND if any(v.kind == k and v.length >= SHORT_MM for v in vectors)]
+    draw_force_legend_into(sketch, kinds, bool(plan.lines), lang, x, y - 2.0)
+
+
+def legend_kinds(plans) -> tuple[list[str], bool]:
+    """The kinds of force the *plans* draw as arrows (in legend order), and whether any has closing lines."""
+    kinds = [k for k in FORCE_LEGEND if any(v.kind == k and v.length >= SHORT_MM for plan in plans for v in plan.vectors)]
+    return kinds, any(plan.lines for plan in plans)
+
+
+def draw_force_legend_into(sketch: Sketch, kinds, lines: bool, lang: str, x: float = 0.0, y: float = 0.0) -> None:
+    """The legend of force plans: a sample arrow and the words of each kind, one row each downwards from (x, y) [mm]."""
+    row = text_size("lp", CAPTION_PT)[1] + 0.9
+    for kind in kinds:
+        y -= row
+        color, lw, dashes, _ = FORCE_STYLE[kind]
+        sketch.arrow(complex(x, y), complex(x + 9.0, y), color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}")
+        sketch.text(complex(x + 11.0, y), _lower(term(FORCE_LEGEND[kind], lang)), size=CAPTION_PT, ha="left", va="center", gid=f"legend-text-{kind}", obstacle=False)
+    if lines:
+        y -= row
+        color, lw, dashes = CONSTRUCTION_STYLE
+        sketch.line([complex(x, y), complex(x + 9.0, y)], color=color, lw=lw, dashes=dashes, gid="legend-construction", obstacle=False)
+        sketch.text(complex(x + 11.0, y), term("construction_line", lang), size=CAPTION_PT, ha="left", va="center", gid="legend-text-construction", obstacle=False)
+
+
+# --- the free bodies ---------------------------------------------------------------------
+
+
+def draw_free_bodies(forces, ax=None, *, lang: str = "en") -> list:
+    """The groups and the driver, cut apart, with their loads and the reactions on them.
+
+    Each is drawn at the mechanism's k_l, side by side in the order of the
+    force plans (the last group first, the driver last); every force is an
+    arrow of :data:`FREE_ARROW_MM` at its point of application (a load from
+    its point, a reaction into its joint), every couple an arc.
+    """
+    return sketch_on(ax, "fbody", lambda sketch: draw_free_bodies_into(sketch, forces, lang=lang))
+
+
+def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True, k_l: float | None = None, per_row: int | None = None) -> None:
+    """Draw the free bodies into *sketch* (see :func:`draw_free_bodies`), at *k_l* [m/mm] (by default the solution's),
+    *per_row* of them in a row (by default all in one), each row under the one before."""
+    g = forces.graphical
+    k_l = k_l or g.scales["k_l"]
+    per_row = per_row or len(forces.plans)
+    bodies = []
+    for plan in forces.plans:
+        links = plan.links
+        pts = [g.positions[n] / k_l for body in links for n in g.scene.bodies[body].points]
+        acting = []
+        couples = []
+        for body in links:
+            f, c = forces.on(body)
+            inner = {pair_label_of(r) for r in f if r.kind == "reaction" and _inside(r.label, links)}
+            acting += [x for x in f if not (x.kind == "reaction" and x.label in inner)]
+            couples += c
+        pts += [f.at / k_l for f in acting]
+        box = (min(z.real for z in pts), max(z.real for z in pts), min(z.imag for z in pts), max(z.imag for z in pts))
+        bodies.append((plan, links, box, acting, couples))
+    placed = []
+    y_next = 0.0
+    for start in range(0, len(bodies), per_row):
+        row = bodies[start:start + per_row]
+        height = max(box[3] - box[2] for _, _, box, _, _ in row) + 2 * FREE_ARROW_MM
+        x_next = 0.0
+        for plan, links, box, acting, couples in row:
+            xmin, xmax, ymin, ymax = box
+            shift = complex(x_next - xmin + FREE_ARROW_MM, y_next - FREE_ARROW_MM - ymax)
+            placed.append((plan, links, shift, acting, couples))
+            x_next += xmax - xmin + 2 * FREE_ARROW_MM + FREE_GAP_MM
+        y_next -= height + FREE_GAP_MM + 6.0  # and the next row's names
+    for plan, links, shift, acting, couples in placed:
+        _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
+    # each body's name over its row
+    for start in range(0, len(placed), per_row):
+        row = placed[start:start + per_row]
+        tops = []
+        for _, links, shift, acting, _ in row:
+            zs = [g.positions[n] / k_l + shift for body in links for n in g.scene.bodies[body].points] + [f.at / k_l + shift for f in acting]
+            tops.append(max(z.imag for z in zs) + FREE_ARROW_MM + 5.0)
+        for (plan, links, shift, _, _), top in zip(row, [max(tops)] * len(row)):
+            xs = [g.positions[n].real / k_l + shift.real for body in links for n in g.scene.bodies[body].points]
+            what = term("driver", lang) if plan.group == "driver" else plan.group
+            sketch.text(complex(min(xs), top), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
+    if caption:
+        b = sketch.bounds
+        sketch.text(complex(b.xmin, b.ymax + 6.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
+        sketch.text(complex(b.xmin, b.ymin - 3.0), f"{scale_caption('k_l', fmt_number(k_l), 'm/mm', lang)};  {term('not_to_scale', lang)}",
+                    size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+
+
+def pair_label_of(force) -> str:
+    return force.label
+
+
+def _inside(label: str, links) -> bool:
+    """Whether a reaction ``R_xy`` is between two links of the same free body (it cancels there)."""
+    sub = label.partition("_")[2]
+    names = sub.split(",") if "," in sub else list(sub)
+    return len(names) == 2 and all(n in links for n in names)
+
+
+def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, couples, lang: str, k_l: float) -> None:
+    g = forces.graphical
+    edge, _, fill = FIGURE_STYLE
+
+    def at(z: complex) -> complex:
+        return z / k_l + shift
+
+    labelled: set[str] = set()
+    for body in links:
+        names = list(g.scene.bodies[body].points)
+        zs = [at(g.positions[n]) for n in names]
+        block = g.scene.bodies[body].block
+        if block or len(zs) == 1:
+            _block(sketch, forces, body, zs[0], at)
+        else:
+            far = max(((a, b) for a in zs for b in zs), key=lambda ab: abs(ab[0] - ab[1]))
+            if len(zs) >= 3:
+                sketch.polygon(_hull(zs), fc=fill, ec=INK, lw=1.4, gid=f"link-{body}", zorder=1.5)
+            else:
+                sketch.line(list(far), color=INK, lw=2.2, gid=f"link-{body}", zorder=1.5, capstyle="round")
+        for n, z in zip(names, zs):
+            if n in labelled:
+                continue
+            labelled.add(n)
+            if len(g.scene.bodies_with(n)) > 1:
+                sketch.circle(z, 1.1, fc="white", ec=INK, lw=0.8, gid=f"pin-{n}", zorder=4.5)
+            place_label(sketch, z, [(n, f"point-{n}")], size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0))
+    for body in links:
+        centre = forces.centres.get(body)
+        if centre is not None:
+            c = at(centre.at)
+            sketch.circle(c, 1.0, fc="white", ec=INK, lw=0.7, gid=f"centre-{body}", zorder=4.6)
+            sketch.polygon([c + 1.0, c + 1.0j, c - 1.0, c - 1.0j], fc=INK, ec=INK, lw=0.1, gid=f"centre-mark-{body}", zorder=4.7, obstacle=False)
+            if not any(abs(centre.at - g.positions[n]) <= 1e-9 * (1 + abs(centre.at)) for n in g.scene.bodies[body].points):
+                place_label(sketch, c, [(f"S{_digits(body)}", f"centre-label-{body}")], size=SMALL_PT, gaps=(1.4, 2.4, 3.6))
+    drawn: list = []
+    for f in acting:
+        size = abs(f.force)
+        if size == 0:
+            continue
+        u = f.force / size
+        point = at(f.at)
+        # a reaction points into its joint, unless a load's arrow from the same point lies there
+        into = f.kind == "reaction" and not any(
+            x.kind != "reaction" and abs(x.at - f.at) <= 1e-9 * (1 + abs(f.at)) and abs(x.force) > 0 and ((x.force / abs(x.force)) * u.conjugate()).real < -0.9
+            for x in acting
+        )
+        if into:
+            tail, tip = point - u * FREE_ARROW_MM, point - u * 1.2
+        else:
+            point = point + _beside(drawn, point, u)
+            tail, tip = point, point + u * FREE_ARROW_MM
+        color, lw, dashes, head = FORCE_STYLE[f.kind]
+        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0)
+        end = tail if into else tip
+        place_label(sketch, end, [(force_math(f.label), f"force-label-{_gid(f.label)}")], size=LABEL_PT, prefer=-u if into else u,
+                    gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, color=color if f.kind != "reaction" else INK)
+    for c in couples:
+        if c.moment == 0:
+            continue
+        body_centre = forces.centres.get(c.body)
+        if c.kind == "balancing" or body_centre is None:
+            where = at(_pivot(g, c.body))
+        else:
+            where = at(body_centre.at)
+        sweep = math.radians(250) * (1 if c.moment > 0 else -1)
+        color = FORCE_STYLE["balancing" if c.kind == "balancing" else "inertia" if c.kind == "inertia" else "external"][0]
+        sketch.arc_arrow(where, COUPLE_R_MM, math.radians(145), sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
+        place_label(sketch, where + COUPLE_R_MM * cmath.exp(1j * math.radians(145)), [(force_math(c.label), f"couple-label-{_gid(c.label)}")],
+                    size=LABEL_PT, prefer=cmath.exp(1j * math.radians(145)), gaps=(0.8, 1.8, 3.0), mathtext=True, color=color)
+
+
+def _pivot(g, body: str) -> complex:
+    """The crank's pivot, or the body's first point [m]."""
+    driver = g.scene.driver
+    if body == driver.link and hasattr(driver, "pivot"):
+        return g.positions[driver.pivot]
+    return g.positions[next(iter(g.scene.bodies[body].points))]
+
+
+def _digits(body: str) -> str:
+    from .._text import subscript
+
+    return subscript(body)
+
+
+def _block(sketch: Sketch, forces, body: str, centre: complex, at) -> None:
+    """A slider block: a rectangle along the line it slides on."""
+    g = forces.graphical
+    scene = g.scene
+    angle = g.poses[body][0]
+    for p in scene.prismatics:
+        if body in (p.slider, p.guide):
+            line = scene.line(f"{p.guide}.{p.guide_line}")
+            angle = g.poses[p.guide][0] + line.angle
+            break
+    u = cmath.exp(1j * angle)
+    w, h = 4.5, 2.7
+    corners = [centre + u * (sx * w + sy * h * 1j) for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    sketch.polygon(corners, fc="white", ec=INK, lw=1.2, gid=f"link-{body}", zorder=1.6)
+
+
+def _hull(zs):
+    from shapely.geometry import MultiPoint
+
+    hull = MultiPoint([(z.real, z.imag) for z in zs]).convex_hull
+    if hull.geom_type != "Polygon":
+        return zs
+    return [complex(x, y) for x, y in list(hull.exterior.coords)[:-1]]
+
+
+# --- all the drawings of a position ------------------------------------------------------
+
+
+def force_figures(forces, *, lang: str = "en", lever=None) -> list[tuple[str, object]]:
+    """Every kinetostatic drawing of one position as ``(name, Figure)``.
+
+    ``free-bodies``, ``force-plan-1`` … (one per group, in construction
+    order: the last group first), ``force-plan-driver``, and ``lever`` when
+    Joukowski's lever (:func:`plans.forces.lever.joukowski_lever`) is given.
+    """
+    out = [("free-bodies", draw_free_bodies(forces, lang=lang)[0].figure)]
+    number = 0
+    for plan in forces.plans:
+        if plan.group == "driver":
+            name = "force-plan-driver"
+            artists = draw_force_plan(plan, lang=lang, balancing_moment=forces.balancing_moment)
+        else:
+            number += 1
+            name = f"force-plan-{number}"
+            artists = draw_force_plan(plan, lang=lang)
+        out.append((name, artists[0].figure))
+    if lever is not None:
+        out.append(("lever", draw_lever(lever, lang=lang)[0].figure))
+    return out
+
+
+def force_drawing_files(forces, directory, *, lang: str = "en", formats=("svg",), lever=None) -> dict[Path, bytes]:
+    """The files of :func:`force_figures` in *directory* (``NAME.FORMAT`` for each of *formats*), rendered, not written."""
+    from .formats import render
+
+    directory = Path(directory)
+    contents: dict[Path, bytes] = {}
+    for name, fig in force_figures(forces, lang=lang, lever=lever):
+        for fmt in formats:
+            contents[directory / f"{name}.{fmt}"] = render(fig, fmt)
+    return contents
+
+
+def write_force_drawings(forces, directory, *, lang: str = "en", formats=("svg",), lever=None) -> list[Path]:
+    """Write every drawing of :func:`force_figures` into *directory*, in each of *formats*, all or none.
+
+    Returns the files written.
+    """
+    from .._files import replace_all
+
+    return replace_all(force_drawing_files(forces, directory, lang=lang, formats=formats, lever=lever))
+
+
+# --- Joukowski's lever ---------------------------------------------------------------------
+
+#: Length of every force arrow on the lever [mm] (not to scale: the moments are what count).
+LEVER_ARROW_MM = 12.0
+#: An arm shorter than this [mm] is not drawn (its line would hide under the arrows).
+ARM_MIN_MM = 0.5
+
+#: the lever's load kinds (plans.forces.loads.LOAD_KINDS, "balancing") -> force style
+_LEVER_KIND = {
+    "weight": "weight",
+    "inertia force": "inertia",
+    "inertia couple": "inertia",
+    "force": "external",
+    "resistance": "external",
+    "moment": "external",
+    "balancing": "balancing",
+}
+
+
+def draw_lever(lever, ax=None, *, lang: str = "en") -> list:
+    """Joukowski's lever (:class:`plans.forces.lever.JoukowskiLever`), one data unit = 1 mm of the velocity plan.
+
+    The velocity plan turned by 90° (its images and link figures), every
+    load as an arrow at the turned image of its point (parallel to the load;
+    an inertia couple as its pair of forces), the balancing force F_b heavy,
+    each force's arm from the pole p as a thin line to the foot of the
+    perpendicular; under it the moments about the pole and M_b.
+    """
+    return sketch_on(ax, "lever", lambda sketch: draw_lever_into(sketch, lever, lang=lang))
+
+
+def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = True) -> None:
+    """Draw the lever into *sketch* (see :func:`draw_lever`)."""
+    from .plan_drawing import image_text
+
+    edge, lw_figure, fill = FIGURE_STYLE
+    images = {k: complex(z) for k, z in lever.images.items()}
+    for link, labels in lever.links.items():
+        pts = []
+        for label in labels:
+            z = images.get(label)
+            if z is not None and all(abs(z - q) > 1e-6 for q in pts):
+                pts.append(z)
+        if len(pts) >= 3:
+            hull = _hull(pts)
+            if len(hull) >= 3:
+                sketch.polygon(hull, fc=fill, ec=edge, lw=lw_figure, gid=f"figure-{link}", zorder=0.8, obstacle=False)
+                continue
+        if len(pts) >= 2:
+            a, b = max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1]))
+            sketch.line([a, b], color=edge, lw=1.2, gid=f"figure-{link}", zorder=1.5)
+    everything = list(lever.forces) + [lever.balancing_force]
+    for f in everything:
+        size = abs(f.force)
+        if size == 0:
+            continue
+        if abs(f.arm) >= ARM_MIN_MM:
+            color, lw, dashes = CONSTRUCTION_STYLE
+            sketch.line([0j, complex(f.foot)], color=color, lw=lw, dashes=dashes, gid=f"arm-{_gid(f.name)}", zorder=1.0, obstacle=False)
+            # the line of action through the point, as far as the foot
+            sketch.line([complex(f.point), complex(f.foot)], color=color, lw=lw * 0.8, dashes=(1.0, 1.5), gid=f"action-{_gid(f.name)}", zorder=1.0, obstacle=False)
+    sketch.circle(0j, 0.6, fc=INK, lw=0, gid="pole", zorder=4.0)
+    for label, z in images.items():
+        if abs(z) > 1e-6:
+            sketch.circle(z, 0.45, fc=INK, lw=0, gid=f"dot-{label}", zorder=4.0, obstacle=False)
+    drawn: list = []
+    for f in everything:
+        size = abs(f.force)
+        if size == 0:
+            continue
+        kind = _LEVER_KIND.get(f.kind, "external")
+        color, lw, dashes, head = FORCE_STYLE[kind]
+        u = f.force / size
+        tail = complex(f.point)
+        tail += _beside(drawn, tail, u)
+        sketch.arrow(tail, tail + u * LEVER_ARROW_MM, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.name)}", zorder=5.0)
+    groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [("p", "pole-label")])]
+    for label, z in images.items():
+        for at, pieces in groups:
+            if abs(at - z) <= 1e-3:
+                pieces.append((image_text(label), f"image-{label}"))
+                break
+        else:
+            groups.append((z, [(image_text(label), f"image-{label}")]))
+    for at, pieces in groups:
+        place_label(sketch, at, pieces, size=LABEL_PT, gaps=GAPS, leader_from=4.0)
+    for f in everything:
+        if abs(f.force) == 0:
+            continue
+        u = f.force / abs(f.force)
+        kind = _LEVER_KIND.get(f.kind, "external")
+        place_label(sketch, complex(f.point) + u * LEVER_ARROW_MM, [(force_math(f.name), f"force-label-{_gid(f.name)}")], size=LABEL_PT,
+                    prefer=u, gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, leader_from=4.0, color=FORCE_STYLE[kind][0] if kind != "reaction" else INK)
+    if caption:
+        _lever_caption(sketch, lever, lang)
+
+
+def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
+    """Heading, k_v, what the lever is, the moments about the pole (F, h, F·h), F_b and M_b."""
+    b = sketch.bounds
+    x, y = b.xmin, b.ymin - 3.0
+    sketch.text(complex(x, y), term("joukowski_lever", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+    y -= 5.0
+    sketch.text(complex(x, y), scale_caption("k_v", fmt_number(lever.k_v), "(m/s)/mm", lang) + ";  " + term("lever_turned", lang),
+                size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    row = text_size("lp", CAPTION_PT)[1] + 0.9
+    y -= row + 0.6
+    sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$", size=CAPTION_PT, ha="left", va="top",
+                gid="equation", obstacle=False, math=True)
+    for f in list(lever.forces) + [lever.balancing_force]:
+        if abs(f.force) == 0:
+            continue
+        y -= row
+        line = (f"{force_math(f.name)}: {_number(abs(f.force), lang)} N · {localised(f'{f.arm:.1f}', lang)} mm = "
+                f"{_number(f.moment, lang)} N·mm")
+        sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(f.name)}", obstacle=False, math=True)
+    for c in lever.couples:
+        y -= row
+        sketch.text(complex(x, y), f"{force_math(c.name)}: {_number(c.moment, lang)} N·mm", size=CAPTION_PT, ha="left", va="top",
+                    gid=f"moment-{_gid(c.name)}", obstacle=False, math=True)
+    y -= row
+    if lever.balancing_kind == "moment":
+        result = (f"$M_{{\\mathrm{{b}}}}$ = $F_{{\\mathrm{{b}}}}$·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force), lang)} N · "
+                  f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(lever.balancing, lang)} N·m ({_lower(term('balancing_moment', lang))})")
+    else:
+        result = f"$F_{{\\mathrm{{b}}}}$ = {_number(lever.balancing, lang)} N ({_lower(term('balancing_force', lang))})"
+    sketch.text(complex(x, y), result, size=CAPTION_PT, ha="left", va="top", gid="result", obstacle=False, math=True)
