@@ -25,6 +25,7 @@ from pathlib import Path
 from ._text import subscript
 from .errors import PlansError
 from .i18n import check_language, term
+from .pages.words import cycle_lines, scene_data_lines  # noqa: F401 (the handout API)
 from .scene import FRAME, Crank, Scene
 
 __all__ = ["HandoutError", "write_handout", "handout", "scene_data_lines", "cycle_lines"]
@@ -34,85 +35,6 @@ class HandoutError(PlansError, ValueError):
 
 
 # --- words ------------------------------------------------------------------------------
-
-
-def _length_unit(scene: Scene) -> tuple[str, float]:
-    sizes = [abs(z) for body in scene.bodies.values() for z in body.points.values()]
-    largest = max(sizes, default=1.0)
-    if largest < 1e-3:
-        return "µm", 1e6
-    if largest < 20.0:
-        return "mm", 1e3
-    return "m", 1.0
-
-
-def _fmt(x: float) -> str:
-    text = f"{x:.4g}"
-    if "e" in text:
-        text = f"{x:.3e}"
-    return text.replace("-", "−")
-
-
-def _guide_angle(scene: Scene, name: str) -> float:
-    """The angle [rad] of the frame's line *name* (0 when the frame has no such line)."""
-    line = scene.bodies[FRAME].lines.get(name)
-    return line.angle if line is not None else 0.0
-
-
-def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
-    """The scene's data as a few lines of text: driver, link lengths, fixed points."""
-    unit, factor = _length_unit(scene)
-    driver = scene.driver
-    name_in = scene.name_in
-    link = driver.link
-    if isinstance(driver, Crank):
-        first = (
-            f"{term('driver', lang)} {link} ({driver.pivot}):  ω{subscript(link)} = {_fmt(driver.omega)} rad/s,  "
-            f"ε{subscript(link)} = {_fmt(driver.epsilon)} rad/s²"
-        )
-    else:
-        first = (
-            f"{term('driver', lang)} {link} ({driver.point}, {name_in(driver.guide, lang)} ∥ {_fmt(math.degrees(_guide_angle(scene, driver.guide)))}°):  v = {_fmt(driver.velocity)} m/s,  "
-            f"a = {_fmt(driver.acceleration)} m/s²"
-        )
-        if driver.stroke:
-            first += f",  s ∈ [{_fmt(driver.stroke[0] * factor)}, {_fmt(driver.stroke[1] * factor)}] {unit}"
-    lengths = []
-    for name, body in scene.bodies.items():
-        if name == FRAME or body.block:
-            continue
-        pts = list(body.points.items())
-        pairs = []
-        for a in range(len(pts)):
-            for b in range(a + 1, len(pts)):
-                (na, za), (nb, zb) = pts[a], pts[b]
-                pairs.append(f"{na}{nb} = {_fmt(abs(za - zb) * factor)}")
-        extra = [f"∠{name_in(line.name, lang)} = {_fmt(math.degrees(line.angle))}°" for line in body.lines.values() if line.angle]
-        if pairs or extra:
-            lengths.append(f"{name}: " + ", ".join(pairs + extra))
-    second = f"{term('lengths', lang)} [{unit}]:  " + ";  ".join(lengths)
-    frame = scene.bodies[FRAME]
-    fixed = [f"{n} ({_fmt(z.real * factor)}, {_fmt(z.imag * factor)})" for n, z in frame.points.items()]
-    fixed += [f"{name_in(line.name, lang)}: ∠{_fmt(math.degrees(line.angle))}°" for line in frame.lines.values()]
-    third = f"{term('fixed_points', lang)} [{unit}]:  " + ",  ".join(fixed) if fixed else ""
-    return [line for line in (first, second, third) if line]
-
-
-def cycle_lines(run, lang: str = "en") -> list[str]:
-    """What the plate states of a cycle (issue 19): the driver's law, the Grashof class of every four-bar loop,
-    the output's stroke H (or swing ψ), θ, K and the working stroke (:mod:`plans.motion`)."""
-    from .motion import four_bar_loops
-
-    lines = []
-    if run.motion is not None:
-        lines.append(run.motion.law.describe(lang, run.scene.driver.link))
-    for loop in four_bar_loops(run.scene, run.structure):
-        turning = loop.turning_links()
-        turns = f"{', '.join(turning)}: {term('turn_fully', lang)}" if turning else term("none_turns", lang)
-        lines.append(f"{term('grashof_class', lang)} {loop.group}: {term(loop.grashof.kind, lang)} ({turns})")
-    if run.strokes is not None:
-        lines += run.strokes.summary(lang)
-    return lines
 
 
 def handout(

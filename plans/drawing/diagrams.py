@@ -569,7 +569,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         panels = [("phi", f"φ [°]\n({term('angle', lang)})", "°"), ("omega", f"ω [rad/s]\n({term('angular_velocity', lang)})", "rad/s")]
         if scene.accelerations:
             panels.append(("epsilon", f"ε [rad/s²]\n({term('angular_acceleration', lang)})", "rad/s²"))
-        page("links", term("links_motion", lang), _course_units(panels, lang))
+        page("links", term("links_motion", lang), panels)
 
         panels = [("v", f"|v| [m/s]\n({term('velocity', lang)})", "m/s")]
         if components:
@@ -578,7 +578,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
             panels.append(("a", f"|a| [m/s²]\n({term('acceleration', lang)})", "m/s²"))
             if components:
                 panels += [("ax", "$a_x$ [m/s²]", "m/s²"), ("ay", "$a_y$ [m/s²]", "m/s²")]
-        page("points", term("points_motion", lang), _course_units(panels, lang))
+        page("points", term("points_motion", lang), panels)
 
         if any(p.name in analytic.sliders for p in scene.prismatics):
             panels = [("s", f"s [mm]\n({term('travel', lang)})", "mm"), ("v_rel", f"vʳ [m/s]\n({term('relative_velocity_short', lang)})", "m/s")]
@@ -587,15 +587,9 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
                     ("a_rel", f"aʳ [m/s²]\n({term('relative_acceleration_short', lang)})", "m/s²"),
                     ("coriolis", f"|aᵏ| [m/s²]\n({term('coriolis_acceleration', lang)})", "m/s²"),
                 ]
-            page("sliders", term("sliders_motion", lang), _course_units(panels, lang))
+            page("sliders", term("sliders_motion", lang), panels)
     return out
 
-
-def _course_units(panels, lang: str):
-    """The panels' labels and units as the course in *lang* writes units (``м/с`` in ru and bg)."""
-    from .numerals import course_units
-
-    return [(key, course_units(label, lang), course_units(unit, lang)) for key, label, unit in panels]
 
 
 def _unwrap_nan(phi, valid) -> np.ndarray:

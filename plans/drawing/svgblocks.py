@@ -18,6 +18,7 @@ page states holds on the printed paper.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from ._canvas import Sketch, fit_axes
@@ -36,7 +37,22 @@ class SvgBlock:
     height: float
 
 
-def _sketched(tag: str, draw) -> SvgBlock:
+def _units(svg: bytes, lang: str) -> bytes:
+    """The drawing's unit symbols as the course in *lang* writes them (``м/с`` on a Russian or Bulgarian page).
+
+    Every drawing writes the international symbols; the text nodes of its SVG
+    are rewritten here, whole symbols only (a plan's image ``m`` stays).
+    """
+    if lang not in ("ru", "bg"):
+        return svg
+    from .._text import course_units
+
+    text = svg.decode("utf-8")
+    text = re.sub(r">([^<>]+)<", lambda m: ">" + course_units(m.group(1), lang, drawn=True) + "<", text)
+    return text.encode("utf-8")
+
+
+def _sketched(tag: str, draw, lang: str) -> SvgBlock:
     """Run ``draw(sketch)`` on a new figure sized to what it drew plus the margin."""
     with drawing_rc():
         fig = new_figure()
@@ -44,14 +60,14 @@ def _sketched(tag: str, draw) -> SvgBlock:
         sketch = Sketch(ax, tag)
         draw(sketch)
         width, height = fit_axes(ax, sketch.bounds, MARGIN_MM)
-        return SvgBlock(render_svg(fig), width, height)
+        return SvgBlock(_units(render_svg(fig), lang), width, height)
 
 
 def mechanism_svg(graphical, lang: str = "en") -> SvgBlock:
     """The kinematic scheme of a :class:`plans.graphical.GraphicalSolution` at its k_l, without heading and scale."""
     from .mechanism import MechanismDrawing
 
-    return _sketched("mech", lambda sketch: MechanismDrawing(sketch, graphical, lang=lang, caption=False).draw())
+    return _sketched("mech", lambda sketch: MechanismDrawing(sketch, graphical, lang=lang, caption=False).draw(), lang)
 
 
 def plan_svg(plan, lang: str = "en", detail: bool = True) -> SvgBlock:
@@ -59,7 +75,7 @@ def plan_svg(plan, lang: str = "en", detail: bool = True) -> SvgBlock:
     from .plan_drawing import draw_plan_into
 
     tag = "vel" if plan.kind == "velocity" else "acc"
-    return _sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False))
+    return _sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang)
 
 
 def legend_svg(plans, lang: str = "en") -> SvgBlock:
@@ -82,14 +98,14 @@ def legend_svg(plans, lang: str = "en") -> SvgBlock:
         for k, (kind, text) in enumerate(entries):
             legend_row(sketch, kind, text, 0.0, -4.2 * k, text_gid="legend-text")
 
-    return _sketched("legend", draw)
+    return _sketched("legend", draw, lang)
 
 
 def positions_svg(positions_run, k_l: float, lang: str = "en") -> SvgBlock:
     """The plan of positions of a multi-position run at *k_l*: every position and the paths of the points."""
     from .positions_plan import draw_positions_into
 
-    return _sketched("positions", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l, heading=False))
+    return _sketched("positions", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l, heading=False), lang)
 
 
 def centres_svg(result, k_l: float, lang: str = "en", room_min: float | None = None) -> SvgBlock:
@@ -100,7 +116,7 @@ def centres_svg(result, k_l: float, lang: str = "en", room_min: float | None = N
         fig = new_figure()
         ax = fig.add_axes([0, 0, 1, 1])
         width, height = draw_centres_into(ax, result, k_l, lang, legend=False, diagram=False, room_min=ROOM_MIN if room_min is None else room_min)
-        return _fitted(fig, ax, width, height)
+        return _fitted(fig, ax, width, height, lang)
 
 
 def circle_diagram_svg(result, lang: str = "en") -> SvgBlock:
@@ -111,17 +127,17 @@ def circle_diagram_svg(result, lang: str = "en") -> SvgBlock:
         fig = new_figure()
         ax = fig.add_axes([0, 0, 1, 1])
         width, height = draw_circle_diagram_into(ax, result, lang)
-        return _fitted(fig, ax, width, height)
+        return _fitted(fig, ax, width, height, lang)
 
 
-def _fitted(fig, ax, width: float, height: float) -> SvgBlock:
+def _fitted(fig, ax, width: float, height: float, lang: str) -> SvgBlock:
     fig.set_size_inches(width / 25.4, height / 25.4)
     ax.set_position([0.0, 0.0, 1.0, 1.0])
-    return SvgBlock(render_svg(fig), width, height)
+    return SvgBlock(_units(render_svg(fig), lang), width, height)
 
 
-def figure_svg(fig) -> SvgBlock:
-    """A whole figure as a block of its own size."""
+def figure_svg(fig, lang: str = "en") -> SvgBlock:
+    """A whole figure (drawn for a page in *lang*) as a block of its own size."""
     width, height = (x * 25.4 for x in fig.get_size_inches())
     with drawing_rc():
-        return SvgBlock(render_svg(fig), width, height)
+        return SvgBlock(_units(render_svg(fig), lang), width, height)

@@ -330,9 +330,9 @@ def build_handout(
 
     doc.section("data")
     doc.heading(f"{term('plate_title', lang)}: {scene.title_in(lang)}", level=1)
-    from ..handout import cycle_lines
+    from .words import cycle_lines
 
-    doc.lines(data_lines(scene, lang) + (cycle_lines(run, lang) if multi else []), size=TEXT_PT)
+    doc.lines([formula_words(line) for line in data_lines(scene, lang) + (cycle_lines(run, lang) if multi else [])], size=TEXT_PT)
     doc.line(f"{term('structural_formula', lang)}:  {formula_words(run.structure.formula)}", size=TEXT_PT)
     branch_words = assembly_lines(sample.analytic.branches, scene, lang)
     if branch_words:
@@ -414,9 +414,9 @@ def build_handout(
         doc.section("diagrams")
         marked = run.motion if run.motion is not None else run.positions
         for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense):
-            doc.full_page(f"diagram-{page_name}", figure_svg(fig))
+            doc.full_page(f"diagram-{page_name}", figure_svg(fig, lang))
         for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
-            doc.full_page(f"kinematic-{number}", figure_svg(fig))
+            doc.full_page(f"kinematic-{number}", figure_svg(fig, lang))
     if forces:
         from ..drawing.forces_page import draw_forces_pages
         from ..drawing.svgblocks import figure_svg
@@ -431,7 +431,7 @@ def build_handout(
                 lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
             where = [f"{term('position', lang)} {h.index}:  {h.label}"] if multi else []
             for n, page in enumerate(draw_forces_pages(h.graphical, lang=lang, header_lines=where, lever=lever)):
-                doc.full_page(f"forces-{h.index}-{n}", figure_svg(page))
+                doc.full_page(f"forces-{h.index}-{n}", figure_svg(page, lang))
     if centres:
         doc.section("centres")
         for n, h in enumerate(here.values(), start=1):
@@ -504,7 +504,7 @@ def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
 
 def data_lines(scene, lang: str) -> list[str]:
     """The scene's data as a few lines of text in *lang*: driver, link lengths, fixed points (names in *lang*)."""
-    from ..handout import scene_data_lines
+    from .words import scene_data_lines
 
     return scene_data_lines(scene, lang)
 
