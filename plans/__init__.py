@@ -53,6 +53,7 @@ __all__ = [
     "run_positions",
     "write_handout",
     "driver_cycle",
+    "cycle_at",
     "driver_law",
     "strokes",
     "crank_limits",
@@ -98,7 +99,7 @@ def __getattr__(name: str):
         from .positions import run_positions
 
         return run_positions
-    if name in ("driver_cycle", "driver_law", "strokes", "crank_limits", "four_bar_loops", "grashof"):
+    if name in ("driver_cycle", "cycle_at", "driver_law", "strokes", "crank_limits", "four_bar_loops", "grashof"):
         from . import motion
 
         return getattr(motion, name)

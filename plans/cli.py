@@ -415,7 +415,7 @@ def _solve(args) -> int:
         scenes = [scene]
     from .motion import cycle_summary, cycle_text
 
-    cycle = cycle_summary(scene)  # the law, Grashof classes, strokes: the same at every position asked for
+    cycle = cycle_summary(args.loaded_scene)  # the law, Grashof classes, strokes: the scene file's, at every position asked for
     documents, tables, solutions = [], [], []
     for k, one in enumerate(scenes):
         analytic = solve(one, warn_condition=args.warn_condition)
@@ -604,8 +604,6 @@ def _sweep(args) -> int:
     found = strokes(scene, args.law, analytic.structure)
     if found is not None:
         stated += found.summary(args.lang)
-    for line in stated:  # the law and the strokes: on stdout beside the files, on stderr beside the CSV
-        print(line, file=sys.stdout if args.output else sys.stderr)
     marked = None
     if args.plot and args.positions:
         marked = driver_cycle(scene, args.positions, law=args.law, start=args.start)
@@ -628,6 +626,8 @@ def _sweep(args) -> int:
             paths = list(paths) + _kinematic_diagrams(scene, args)
     if not args.output:
         sys.stdout.write(text)
+    for line in stated:  # the law and the strokes, once everything is written: on stdout beside the files, on stderr beside the CSV
+        print(line, file=sys.stdout if args.output else sys.stderr)
     for path in paths:
         print(path, file=sys.stderr if not args.output else sys.stdout)
     return 0
@@ -683,10 +683,6 @@ def _draw(args) -> int:
                             law=args.law, start=args.start)
         for message in run.skipped_messages():
             _warn(message)
-        from .handout import cycle_lines
-
-        for line in cycle_lines(run, args.lang):  # the law, the Grashof classes, the strokes (stdout holds the files written)
-            print(line, file=sys.stderr)
         sheets = _position_sheets(run, args.lang, _given_scales(args, scene))
         with batch():
             paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format, sheets=sheets, progress=_progress(args))

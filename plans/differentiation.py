@@ -30,6 +30,13 @@ driver reaches them; it never reads a velocity or an acceleration:
   curve is read at the positions through a smooth curve: the cubic through
   the four nearest points (:func:`smooth`), which adds an error of fourth
   order; the reading at a position keeps the chord's ``Δt² · s‴ / 24``.
+* **Ends.**  A repeating cycle (a crank at constant speed, a rocker input's
+  swing) is closed: the chord from the last position to the first one a
+  period later.  An open series has n − 1 chords; a uniformly accelerated
+  crank's turn is continued one position past each end (the crank turns on,
+  :attr:`OutputMotion.lead`, :attr:`OutputMotion.trail`), a linear driver's
+  stroke is not (its end readings lie beyond its last points: the least
+  accurate).
 * **Method of tangents** (:func:`tangents`): the ray parallel to the tangent
   of the smooth s–t curve at each position; the tangent's slope is that of
   the curve through the five nearest points (fourth order where s is smooth).
@@ -52,8 +59,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .errors import PlansError
 
 __all__ = [
+    "DiagramsError",
     "chords",
     "smooth",
     "tangents",
@@ -83,6 +92,16 @@ ABSCISSA_MAX = 125.0
 ORDINATE_MAX = 40.0
 #: Round mantissas of μ_t and μ_s (textbooks' 1, 2, 2.5, 5 × 10ⁿ).
 TIME_MANTISSAS = (1, 2, 2.5, 5)
+
+
+class DiagramsError(PlansError, ValueError):
+    """Kinematic diagrams that cannot be made: ``cause`` says why (``"too_few"``, ``"no_output"``,
+    ``"unsolved"``), ``positions`` which positions are not solved (for ``"unsolved"``)."""
+
+    def __init__(self, message: str, cause: str, positions: tuple = ()):
+        super().__init__(message)
+        self.cause = cause
+        self.positions = tuple(positions)
 
 
 def round_up(need: float, mantissas=TIME_MANTISSAS) -> float:
@@ -255,7 +274,7 @@ def _pole(rate_span_per_h: float, height: float) -> float:
 
 
 def abscissa_length(intervals: int, length_max: float = ABSCISSA_MAX) -> float:
-    """L [mm]: the longest whole number of millimetres a interval, times *intervals*, within *length_max*
+    """L [mm]: the longest whole number of millimetres an interval, times *intervals*, within *length_max*
     (12 intervals: 120 mm, 10 mm each), so that the positions fall on whole millimetres."""
     if intervals < 1:
         return float(length_max)
@@ -264,7 +283,7 @@ def abscissa_length(intervals: int, length_max: float = ABSCISSA_MAX) -> float:
 
 
 def diagram_scales(duration: float, s, *, length_max: float = ABSCISSA_MAX, height: float = ORDINATE_MAX,
-                   t=None, period: float | None = None) -> DiagramScales:
+                   t=None, period: float | None = None, intervals: int | None = None) -> DiagramScales:
     """Round scales for the three diagrams of one output.
 
     L is a whole number of millimetres per interval between positions, at
@@ -274,12 +293,16 @@ def diagram_scales(duration: float, s, *, length_max: float = ABSCISSA_MAX, heig
     the longest of :data:`POLE_DISTANCES` with which the v–t points (the
     chords' rates) stay within *height*; likewise H₂ for the a–t points;
     μ_v and μ_a follow from them.  *t* (the positions' times) and *period*
-    are needed for the chords (default: equally spaced over *duration*).
+    are needed for the chords (default: equally spaced over *duration*);
+    *intervals* the intervals between the positions on the abscissa
+    (default: those of *s*).
     """
     s = np.asarray(s, dtype=float)
     if t is None:
         t = np.arange(len(s)) * duration / (len(s) if period is not None else len(s) - 1)
-    length = abscissa_length(len(s) if period is not None else len(s) - 1, length_max)
+    if intervals is None:
+        intervals = len(s) if period is not None else len(s) - 1
+    length = abscissa_length(intervals, length_max)
     mu_t = duration / length
     span = _span(s)
     mu_s = round_up(span / height, TIME_MANTISSAS) if span > 0 else 1.0
@@ -315,6 +338,13 @@ class OutputMotion:
     period : float or None
         T [s]: the positions close a cycle (the last is followed by the first
         one period later); None for an open series (a linear driver's stroke).
+    lead, trail : (t, s) or None
+        On an open series, a point one interval before the first position
+        and one after the last (a crank's turn under a uniformly accelerated
+        law: the crank turns on, and s repeats over its turn), so that the
+        chords reach past the ends and the readings at the end positions
+        are interpolated, not extrapolated.  Not drawn; None: the series
+        ends at its positions (a linear driver's stroke).
     """
 
     kind: str
@@ -323,6 +353,22 @@ class OutputMotion:
     t: np.ndarray
     s: np.ndarray
     period: float | None
+    lead: tuple | None = None
+    trail: tuple | None = None
+
+    def points(self) -> tuple[np.ndarray, np.ndarray]:
+        """(t, s) of the curve differentiated: the positions, with the *lead* and *trail* points on an open series."""
+        t, s = np.asarray(self.t, dtype=float), np.asarray(self.s, dtype=float)
+        if self.lead is not None:
+            t, s = np.insert(t, 0, self.lead[0]), np.insert(s, 0, self.lead[1])
+        if self.trail is not None:
+            t, s = np.append(t, self.trail[0]), np.append(s, self.trail[1])
+        return t, s
+
+    @property
+    def intervals(self) -> int:
+        """The intervals between the positions over the abscissa: n on a closed cycle, n − 1 on an open series."""
+        return len(self.t) if self.period is not None else len(self.t) - 1
 
     @property
     def unit(self) -> str:
@@ -459,19 +505,20 @@ def kinematic_diagrams_of(motion: OutputMotion, *, v_plans=None, a_plans=None, v
     and analytic values (arrays over the positions, NaN where missing) are
     carried for the comparison.
     """
-    t, s, period = motion.t, motion.s, motion.period
+    t, period = motion.t, motion.period
     if len(t) < 3:
-        from .errors import PlansError
-
-        raise PlansError(f"kinematic diagrams: graphical differentiation needs at least 3 positions, got {len(t)}")
+        raise DiagramsError(f"kinematic diagrams: graphical differentiation needs at least 3 positions, got {len(t)}", "too_few")
+    te, se = motion.points()
     if scales is None:
-        scales = diagram_scales(motion.duration, s, t=t, period=period)
-    velocity = differentiate(t, s, period=period, pole=scales.pole_v, scale=scales.mu_v)
+        scales = diagram_scales(motion.duration, se, t=te, period=period, intervals=motion.intervals)
+    velocity = differentiate(te, se, period=period, pole=scales.pole_v, scale=scales.mu_v)
     acceleration = differentiate(velocity.middles, velocity.rates, period=period, pole=scales.pole_a, scale=scales.mu_a)
     v = smooth(velocity.middles, velocity.rates, t, period=period)
     a = smooth(acceleration.middles, acceleration.rates, t, period=period)
-    v_tan = tangents(t, s, period=period)
-    a_tan = tangents(t, v_tan, period=period)
+    inner = slice(1 if motion.lead is not None else 0, len(te) - (1 if motion.trail is not None else 0))
+    v_tan_all = tangents(te, se, period=period)
+    v_tan = v_tan_all[inner]
+    a_tan = tangents(te, v_tan_all, period=period)[inner]
     n = len(t)
     nan = np.full(n, np.nan)
 
@@ -524,6 +571,30 @@ def _plans_values(output, graphical) -> tuple[float, float]:
     return float(v), float(a) if graphical.acceleration_plan is not None else math.nan
 
 
+def _beyond(cycle, s: np.ndarray) -> tuple[tuple | None, tuple | None]:
+    """The points one interval before the first and after the last position of a crank's closed turn
+    (positions 0 … n, n one turn after 0) under a uniformly accelerated law: the crank angles one step
+    further, s repeating over a turn (s there = s of positions n − 1 and 1), and their times under the law,
+    t(φ) = (ω(φ) − ω_first)/ε; None where the driver would not get there (ω² ≤ 0 before the first)."""
+    law = cycle.law
+    x = np.asarray(cycle.positions, dtype=float)
+    step = x[1] - x[0]
+    omega = np.asarray(cycle.rate, dtype=float)
+
+    def time(at: float) -> float | None:
+        if law.acceleration == 0:
+            return float(cycle.t[0] + (at - x[0]) / law.rate0)
+        square = law.rate0**2 + 2 * law.acceleration * (at - law.x0)
+        if square <= 0:
+            return None
+        return float(cycle.t[0] + (law.sense * math.sqrt(square) - omega[0]) / law.acceleration)
+
+    before, after = time(x[0] - step), time(x[-1] + step)
+    lead = (before, float(s[-2])) if before is not None else None
+    trail = (after, float(s[1])) if after is not None else None
+    return lead, trail
+
+
 #: Positions of the dense analytic sweep drawn beside the constructed curves.
 REFERENCE_STEPS = 360
 
@@ -562,8 +633,8 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, st
 
     Raises
     ------
-    PlansError
-        No output slider or rocker (name one with ``[output] link``), fewer
+    DiagramsError
+        A :class:`plans.errors.PlansError`: no output slider or rocker (name one with ``[output] link``), fewer
         than 3 positions, or a position where the mechanism is not solved
         (graphical differentiation joins neighbouring positions).
 
@@ -578,27 +649,26 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, st
     """
     from dataclasses import replace
 
-    from .errors import PlansError
     from .graphical import construct
     from .motion import driver_cycle, output_link
     from .positions import common_scales, page_precision
     from .structure import find_structure
 
     if positions < 3:
-        raise PlansError(f"{scene.source}: kinematic diagrams: graphical differentiation needs at least 3 positions, got {positions}")
+        raise DiagramsError(f"{scene.source}: kinematic diagrams: graphical differentiation needs at least 3 positions, got {positions}", "too_few")
     structure = find_structure(scene)
     output = output_link(scene, structure)
     if output is None:
-        raise PlansError(f"{scene.source}: kinematic diagrams: the mechanism has no output slider (on a frame guide) or rocker "
-                         "(turning about a frame point); name one with [output] link = \"…\"")
+        raise DiagramsError(f"{scene.source}: kinematic diagrams: the mechanism has no output slider (on a frame guide) or rocker "
+                            "(turning about a frame point); name one with [output] link = \"…\"", "no_output")
     first = driver_cycle(scene, positions, law=law, start=start, structure=structure)
     repeating = first.law.crank and first.law.kind in ("constant", "harmonic")
     cycle = first if repeating or not first.law.crank else driver_cycle(scene, positions, law=law, start=start, structure=structure, closed=True)
     analytic = cycle.solve(structure)
     unsolved = [k for k in range(len(cycle)) if not bool(analytic.valid[k])]
     if unsolved:
-        raise PlansError(f"{scene.source}: kinematic diagrams: the mechanism is not solved at positions {', '.join(map(str, unsolved))}; "
-                         "graphical differentiation joins neighbouring positions and needs every one")
+        raise DiagramsError(f"{scene.source}: kinematic diagrams: the mechanism is not solved at positions {', '.join(map(str, unsolved))}; "
+                            "graphical differentiation joins neighbouring positions and needs every one", "unsolved", unsolved)
     values, rates, accelerations = _output_columns(output, analytic)
     s = values - values[0]
     t = np.asarray(cycle.t, dtype=float)
@@ -613,11 +683,15 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, st
     graphicals = [construct(x, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision, check_scales=False)
                   for x in scenes]
     plans_v, plans_a = zip(*(_plans_values(output, g) for g in graphicals))
-    motion = OutputMotion(output.kind, output.pair if output.kind == "slider" else output.link, numbers, t, s, period)
+    lead = trail = None
+    if not repeating and cycle.law.crank:  # the crank turns on: one position more at each end, s repeating over the turn
+        lead, trail = _beyond(cycle, s)
+    motion = OutputMotion(output.kind, output.pair if output.kind == "slider" else output.link, numbers, t, s, period, lead, trail)
     dense = driver_cycle(scene, REFERENCE_STEPS, law=law, start=start, structure=structure, closed=True)
     rs, rv, ra = _output_columns(output, dense.solve(structure))
     reference = (np.asarray(dense.t, dtype=float), rs - values[0], rv, ra)
-    scales_d = diagram_scales(motion.duration, s, t=t, period=period, height=height)
+    te, se = motion.points()
+    scales_d = diagram_scales(motion.duration, se, t=te, period=period, height=height, intervals=motion.intervals)
     result = kinematic_diagrams_of(motion, v_plans=plans_v, a_plans=plans_a, v_analytic=rates, a_analytic=accelerations,
                                    scales=scales_d, reference=reference)
     return replace(result, law=cycle.law, plan_scales=dict(scales), precision=precision, driver=scene.driver.link,
@@ -629,7 +703,8 @@ def rescaled(diagrams: KinematicDiagrams, height: float) -> KinematicDiagrams:
     from dataclasses import replace
 
     motion = diagrams.motion
-    scales = diagram_scales(motion.duration, motion.s, t=motion.t, period=motion.period, height=height)
+    t, s = motion.points()
+    scales = diagram_scales(motion.duration, s, t=t, period=motion.period, height=height, intervals=motion.intervals)
     velocity = replace(diagrams.velocity, pole=scales.pole_v, scale=scales.mu_v)
     acceleration = replace(diagrams.acceleration, pole=scales.pole_a, scale=scales.mu_a)
     return replace(diagrams, scales=scales, velocity=velocity, acceleration=acceleration)

@@ -166,7 +166,9 @@ def crank_limits(scene: Scene, structure=None) -> Limits | None:
     """The limit positions of the scene's crank, or None if it turns fully (or the driver is linear).
 
     A crank turns fully when the mechanism assembles at every angle of a turn
-    (dead centres it crosses aside).  Otherwise it swings within the interval
+    (dead centres it crosses aside, and the parallel guides of a PRP or RPP
+    group, where a pin runs off to infinity: no limit position to turn back
+    at).  Otherwise it swings within the interval
     of angles around the scene's own where it assembles; each end is found in
     closed form when the group that fails there closes a four-bar loop with
     the crank and the frame (:func:`four_bar_limits`), else by bisection on
@@ -199,6 +201,10 @@ def crank_limits(scene: Scene, structure=None) -> Limits | None:
     up = int(np.argmin(valid))  # the first position not assembled going forward
     down = SEARCH_STEPS - 1 - int(np.argmin(valid[::-1]))  # the last one (the first going backward)
     failing = _failing_group(sweep, up)
+    if structure.groups and next(g for g in structure.groups if g.name == failing).kind not in ("RRR", "RRP", "RPR"):
+        # a PRP or RPP whose guides turn parallel: its pin runs off to infinity, the crank has no limit position to
+        # turn back at (a sweep reports the loss of assembly there)
+        return None
 
     def assembles(phi: float) -> bool:
         one = solve(scene, [phi], structure, allow_partial=True, warn_condition=math.inf)
@@ -213,11 +219,12 @@ def crank_limits(scene: Scene, structure=None) -> Limits | None:
                 outside = middle
         return inside
 
-    hi = edge(float(grid[up - 1]), float(grid[up]))
-    lo = edge(float(grid[down + 1]) - _TURN if down + 1 < SEARCH_STEPS else phi0, float(grid[down]) - _TURN)
-    closed = _closed_form_limits(scene, structure, failing, lo, hi)
+    brackets = ((float(grid[down + 1]) - _TURN if down + 1 < SEARCH_STEPS else phi0, float(grid[down]) - _TURN),
+                (float(grid[up - 1]), float(grid[up])))
+    closed = _closed_form_limits(scene, structure, failing, brackets)
     if closed is not None:
         return Limits(closed[0], closed[1], failing, True)
+    lo, hi = (edge(inside, outside) for inside, outside in brackets)
     return Limits(lo, hi, failing)
 
 
@@ -229,10 +236,11 @@ def _failing_group(sweep, k: int) -> str:
     return sweep.structure.groups[0].name if sweep.structure.groups else "?"
 
 
-def _closed_form_limits(scene: Scene, structure, name: str, lo: float, hi: float) -> tuple[float, float] | None:
-    """The closed-form limits nearest *lo*, *hi* when group *name* is an RRR closing a four-bar loop with the crank."""
+def _closed_form_limits(scene: Scene, structure, name: str, brackets) -> tuple[float, float] | None:
+    """The closed-form limits (:func:`four_bar_limits`) when group *name* is an RRR closing a four-bar loop with
+    the crank, each the one inside its bracket (inside, outside) of grid positions the solver found; else None."""
     for loop in four_bar_loops(scene, structure):
-        if loop.group != name or loop.input != scene.driver.link:
+        if loop.group != name or loop.input != scene.driver.link or loop.pivot != scene.driver.pivot:
             continue
         d = scene.driver
         own = scene.bodies[d.link].points
@@ -240,17 +248,15 @@ def _closed_form_limits(scene: Scene, structure, name: str, lo: float, hi: float
         O = scene.frame.points[d.pivot]
         D = scene.frame.points[loop.ground_joint]
         angles = four_bar_limits(abs(a), abs(D - O), loop.coupler, loop.rocker, math.atan2((D - O).imag, (D - O).real))
-        if not angles:
-            return None
         shift = math.atan2(a.imag, a.real)  # φ of the crank = angle of OA − the own angle of A
-
-        def nearest(x: float) -> float:
-            best = min((c - shift for c in angles), key=lambda c: abs(math.remainder(c - x, _TURN)))
-            return x + math.remainder(best - x, _TURN)
-
-        out = nearest(lo), nearest(hi)
-        if abs(out[0] - lo) < 1e-6 and abs(out[1] - hi) < 1e-6:  # the same limits as the solver's: keep the exact ones
-            return out
+        out = []
+        for inside, outside in brackets:
+            lo, hi = sorted((inside, outside))
+            found = [x + _TURN * k for c in angles for k in range(-2, 3) for x in (c - shift,) if lo <= x + _TURN * k <= hi]
+            if len(found) != 1:
+                return None
+            out.append(found[0])
+        return out[0], out[1]
     return None
 
 
@@ -1067,17 +1073,7 @@ def strokes(scene: Scene, law: str | None = None, structure=None, *, _law: Drive
     found = []
     for k in changes:
         a, b = float(phases[k]), float(phases[(k + 1) % n]) + (_TURN if k + 1 == n else 0.0)
-        ra = rate_at(a)
-        for _ in range(REFINE_STEPS):
-            m = 0.5 * (a + b)
-            rm = rate_at(m)
-            if rm == 0:
-                a = b = m
-                break
-            if (rm > 0) == (ra > 0):
-                a, ra = m, rm
-            else:
-                b = m
+        a, b = _root(rate_at, a, b)
         phase = 0.5 * (a + b)
         x, flips = position(phase)
         one = solve(scene, [x], structure, allow_partial=True, warn_condition=math.inf, branches=flips or None)
@@ -1108,6 +1104,38 @@ def strokes(scene: Scene, law: str | None = None, structure=None, *, _law: Drive
         working_arc, return_arc = aw, ar
     return Strokes(output, the_law, xs_, xo, ps, po, ys, yo, abs(yo - ys), working_arc, return_arc, theta, K, tw, tr,
                    "out" if yo > ys else "back")
+
+
+def _root(f, a: float, b: float) -> tuple[float, float]:
+    """A bracket [a, b] of a sign change of f, narrowed to round-off by the Illinois method (regula falsi that halves
+    the weight of an end kept twice): some ten evaluations against bisection's sixty."""
+    fa, fb = f(a), f(b)
+    side = 0
+    c = 0.5 * (a + b)
+    for _ in range(REFINE_STEPS):
+        if fa == 0:
+            return a, a
+        if fb == 0:
+            return b, b
+        if abs(b - a) <= 1e-14 * max(1.0, abs(a)):
+            break
+        c = b - fb * (b - a) / (fb - fa)
+        if not (min(a, b) < c < max(a, b)):
+            c = 0.5 * (a + b)
+        fc = f(c)
+        if (fc > 0) == (fb > 0):
+            b, fb = c, fc
+            if side == -1:
+                fa *= 0.5
+            side = -1
+        else:
+            a, fa = c, fc
+            if side == 1:
+                fb *= 0.5
+            side = 1
+        if abs(fc) <= 1e-15 * (abs(fa) + abs(fb)):
+            return c, c
+    return (c, c) if abs(b - a) > 1e-9 else (a, b)  # the last estimate, should the bracket not have closed
 
 
 def _swing_path(limits: Limits, phase: float, span: float) -> float:

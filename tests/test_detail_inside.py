@@ -127,7 +127,7 @@ def detail_overlaps(fig) -> list[str]:
 @pytest.fixture(scope="module")
 def quick_return_handout():
     record: list = []
-    pages = dict(handout_pages(load(example_path("quick-return")), positions=4, lang="sr", record=record))
+    pages = dict(handout_pages(load(example_path("quick-return")), positions=4, lang="sr", record=record, start="scene"))
     return pages, dict(record)
 
 
@@ -196,7 +196,7 @@ def test_a_planted_omission_fails():
         scene = load(example_path(name))
         if name == "quick-return":
             record: list = []
-            pages = dict(handout_pages(scene, positions=4, lang="sr", record=record))
+            pages = dict(handout_pages(scene, positions=4, lang="sr", record=record, start="scene"))
             fig, plan = pages["position-2"], dict(record)["position-2"].graphical.velocity_plan
         else:
             plan = construct(scene).velocity_plan
@@ -219,7 +219,7 @@ def test_a_planted_omission_fails():
             a.set_gid(gid)
     # the pole called by one name only (what the detail printed before: "c")
     record = []
-    pages = dict(handout_pages(load(example_path("quick-return")), positions=4, lang="sr", record=record))
+    pages = dict(handout_pages(load(example_path("quick-return")), positions=4, lang="sr", record=record, start="scene"))
     fig, plan = pages["position-2"], dict(record)["position-2"].graphical.velocity_plan
     for gid, t in _detail_texts(fig).items():
         if gid.endswith("-detail-pole-label") or gid.endswith("-detail-image-o"):

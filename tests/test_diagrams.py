@@ -24,7 +24,14 @@ def six_bar():
 
 @pytest.fixture(scope="module")
 def stuck():
-    run = run_positions(plans.loads(STUCK), "10, 350 deg")
+    """A turn of given angles (plans.solve, the scene's rates held) through the interval without assembly: the
+    drawing's bands over a sweep that has one (plans' own cycle swings this input instead, issue 19)."""
+    from types import SimpleNamespace
+
+    scene = plans.loads(STUCK)
+    positions = [math.radians(10), math.radians(350)]
+    turn = plans.solve(scene, math.radians(10) + 2 * np.pi * np.arange(361) / 360, allow_partial=True)
+    run = SimpleNamespace(cycle=turn, positions=positions)
     return run, dict(draw_cycle_diagrams(run.cycle, marked=run.positions))
 
 

@@ -321,3 +321,57 @@ def test_cli_sweep_plot_writes_the_kinematic_diagrams(tmp_path, capsys):
     assert any(name.startswith("kinematic") for name in written), written
     svg = "".join((out / n).read_text() for n in written if n.startswith("kinematic"))
     assert "method of chords" in svg and "8" in svg
+
+
+def test_a_linear_drivers_stroke_is_an_open_series():
+    """linear-arm: the driver runs its stroke once at constant speed; n − 1 chords, times from the law."""
+    scene = plans.load(plans.example_path("linear-arm"))
+    d = kinematic_diagrams(scene, 12, precision=0)
+    assert d.motion.period is None and len(d.velocity.rates) == 11 and len(d.acceleration.rates) == 10
+    v0 = scene.driver.velocity
+    assert d.motion.t == pytest.approx(np.abs(d.positions - d.positions[0]) / abs(v0), abs=1e-12)
+    # the chords are the hand formula on the output's own angles, solved independently here
+    phi = np.unwrap(np.asarray(plans.solve(scene, d.positions).links[d.motion.name].phi))
+    assert d.velocity.rates == pytest.approx(np.diff(phi) / np.diff(d.motion.t), rel=1e-9)
+    errors = d.errors()
+    assert np.nanmax(np.abs(errors["v_diagram"])) < 1.0 and np.nanmax(np.abs(errors["a_diagram"])) < 2.0
+
+
+def test_why_the_diagrams_are_not_drawn_is_said_in_the_readers_language():
+    from plans.differentiation import DiagramsError
+    from plans.drawing.kinematic_diagrams import draw_unavailable_page
+    from plans.drawing.svg import render_svg
+
+    error = DiagramsError("x.toml: kinematic diagrams: the mechanism is not solved at positions 3, 4; …", "unsolved", (3, 4))
+    assert isinstance(error, plans.PlansError)
+    root = ET.fromstring(render_svg(draw_unavailable_page(error, title="T", lang="ru")))
+    text = " ".join("".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text"))
+    assert "Диаграммы не построены" in text and "в положениях 3, 4" in text
+    assert "not solved" not in text
+
+
+def test_a_uniformly_accelerated_turn_is_open_and_continued_past_its_ends():
+    """Four-bar, ω² = ω₀² + 2ε(φ − φ₀): not a repeating cycle; the crank turns on, so the chords reach one
+    position past each end (s repeats over a turn, t from the law), and the errors fall as Δt² to the ends."""
+    scene = plans.load(plans.example_path("four-bar"))
+    omega0, eps, phi0 = scene.driver.omega, scene.driver.epsilon, scene.driver.phi
+
+    def time(phi, first):
+        return (math.sqrt(omega0**2 + 2 * eps * (phi - phi0)) - math.sqrt(omega0**2 + 2 * eps * (first - phi0))) / eps
+
+    largest = {}
+    for n in (12, 24, 48):
+        d = kinematic_diagrams(scene, n, law="uniform", precision=0)
+        phi = d.positions
+        assert d.motion.period is None and len(phi) == n + 1 and phi[-1] - phi[0] == pytest.approx(2 * math.pi)
+        assert d.motion.t == pytest.approx([time(p, phi[0]) for p in phi], abs=1e-12)
+        step = phi[1] - phi[0]
+        assert d.motion.lead[0] == pytest.approx(time(phi[0] - step, phi[0]), abs=1e-12)
+        assert d.motion.trail[0] == pytest.approx(time(phi[-1] + step, phi[0]), abs=1e-12)
+        assert (d.motion.lead[1], d.motion.trail[1]) == pytest.approx((d.motion.s[-2], d.motion.s[1]), abs=1e-12)
+        assert d.scales.length == n * (125 // n)  # a whole number of mm for each of the n intervals of the turn
+        e = d.errors()
+        largest[n] = (np.nanmax(np.abs(e["v_diagram"])), np.nanmax(np.abs(e["a_diagram"])))
+    assert largest[12][0] < 10 and largest[12][1] < 20
+    for q in (0, 1):
+        assert 1.6 < math.log2(largest[24][q] / largest[48][q]) < 2.6, largest

@@ -197,3 +197,18 @@ def test_positions_start_at_the_working_strokes_extreme():
     assert min(abs(start - outer), abs(start - inner)) < 1e-8
     assert arc > math.pi
     assert driver_cycle(scene, 12, start="scene").positions[0] == pytest.approx(math.radians(45))
+
+
+def test_quick_return_by_hand():
+    """quick-return.toml: crank r = 120 mm about O, 250 mm above the lever's pivot C; lever CD = 550 mm; the ram's
+    line 520 mm above C, rod DE = 200 mm.  The lever's extremes: the slot tangent to the crank circle (CA ⊥ OA), the
+    crank at ±acos(r/d) from O→C; the short arc 2·acos(r/d) is the return.  The ram's stroke: D at ±CD·r/d either
+    side, the rod's offsets equal: H = 2·CD·r/d."""
+    r, d, lever = 0.12, 0.25, 0.55
+    st = strokes(plans.load(plans.example_path("quick-return")))
+    short = 2 * math.acos(r / d)
+    assert st.output.link == "6" and st.output.kind == "slider"
+    assert st.return_arc == pytest.approx(short, abs=1e-8)
+    assert st.theta == pytest.approx(math.pi - short, abs=1e-8)
+    assert st.K == pytest.approx((2 * math.pi - short) / short, rel=1e-8)
+    assert st.travel == pytest.approx(2 * lever * r / d, rel=1e-9)

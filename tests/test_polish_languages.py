@@ -122,7 +122,9 @@ def _page_texts(path) -> str:
 
 @pytest.mark.parametrize("lang", ("sr", "bg"))
 def test_the_rocker_limit_handout_says_why_in_its_language(tmp_path, lang):
-    assert main(["handout", "--example", "rocker-limit", "--positions", "4", "--lang", lang, "-o", str(tmp_path / "rl.svg"), "--quiet"]) == 0
+    # positions of a turn (the input swings ±56.39°, so 90°, 180°, 270° cannot assemble; --positions 4 would space
+    # them over its swing, every one solved: issue 19)
+    assert main(["handout", "--example", "rocker-limit", "--at", "0,90,180,270 deg", "--lang", lang, "-o", str(tmp_path / "rl.svg"), "--quiet"]) == 0
     scene = plans.load(example_path("rocker-limit"))
     english = set()
     for phi in np.radians([90.0, 180.0, 270.0]):

@@ -89,9 +89,10 @@ def _hatched(ax) -> list[tuple[float, float]]:
 
 @pytest.fixture(scope="module")
 def rocker_limit():
+    # a turn of given angles through the interval without assembly (plans' own cycle swings this input: issue 19)
     scene = plans.load(plans.example_path("rocker-limit"))
-    sweep = solve(scene, np.asarray(cycle_positions(scene, 360, closed=True)), allow_partial=True)
-    marked = cycle_positions(scene, 12)
+    sweep = solve(scene, scene.driver.phi + 2 * np.pi * np.arange(361) / 360, allow_partial=True)
+    marked = list(scene.driver.phi + 2 * np.pi * np.arange(12) / 12)
     return scene, sweep, marked
 
 

@@ -132,7 +132,7 @@ def test_line_travel_reads_the_slot_travel_of_the_sweep():
     from plans.sweep import line_travel
 
     scene = plans.load(plans.example_path("quick-return"))
-    travel = line_travel(solve(scene, np.asarray(cycle_positions(scene, 720)), allow_partial=True))
+    travel = line_travel(solve(scene, np.asarray(cycle_positions(scene, 720, start="scene")), allow_partial=True))
     assert travel["4.slot"] == pytest.approx((0.13, 0.37), abs=1e-9)  # A passes through both ends on the grid
     lo, hi = _quick_return_ram()
     assert travel["frame.ram"] == pytest.approx((lo, hi), abs=2e-4)  # within the grid's step

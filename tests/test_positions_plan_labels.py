@@ -93,7 +93,7 @@ def test_paths_are_not_drawn_where_the_mechanism_does_not_assemble():
 
 def test_the_caption_names_the_positions_not_drawn():
     scene = plans.load(plans.example_path("rocker-limit"))
-    run = run_positions(scene, 12)
+    run = run_positions(scene, ", ".join(str(30 + 30 * k) for k in range(12)) + " deg")  # a turn: the input swings ±56.39°
     for lang, words in (("en", "not drawn (cannot assemble): 1–9"), ("sr", "нису нацртани (механизам се не може саставити): 1–9")):
         fig = draw_positions_plan(run, lang=lang)[0].figure
         assert words in [t.get_text() for t in _texts(fig)]

@@ -75,8 +75,9 @@ def test_a_position_that_cannot_assemble_gets_no_sheet(tmp_path):
     paths = write_position_sheets(run, tmp_path)
     assert [p.name for p in paths] == ["sheet-00.svg", "positions.svg"]
     artists = draw_positions_plan(run)
-    # the path is broken where the mechanism cannot assemble: two pieces, no NaN drawn
+    # the crank cannot turn fully: over its cycle it swings between its limit positions and back (issue 19), B on
+    # one branch there and on the other back: its path is one closed curve, no NaN drawn
     pieces = [a for a in artists if (a.get_gid() or "").startswith("pos-path-B")]
-    assert len(pieces) == 2
+    assert len(pieces) == 1
     for piece in pieces:
         assert np.all(np.isfinite(piece.get_xydata()))

@@ -46,8 +46,9 @@ def test_draw_positions_of_a_swinging_input_draws_every_one(capsys, tmp_path):
     status, out, err = _run(capsys, "draw", "--example", "rocker-limit", "--positions", "12", "-o", str(tmp_path))
     assert status == 0
     assert "is skipped" not in err
-    assert "harmonic swing between −56.39° … 56.39°" in err  # the law stated
     assert len(list(tmp_path.glob("sheet-*.svg"))) == 12
+    svg = (tmp_path / "positions.svg").read_text()
+    assert "harmonic swing between −56.39° … 56.39°" in svg  # the law stated under the plan of positions
 
 
 def test_handout_names_skipped_positions_on_stderr(capsys, tmp_path):

@@ -137,7 +137,7 @@ def test_the_rocker_limit_crank_is_larger_than_its_omega_arc_and_o_is_clear_of_t
     centre = complex((pin[0] + pin[2]) / 2, (pin[1] + pin[3]) / 2)
     arc = ink(root, "mech-omega")
     radius = max(abs(complex(x, y) - centre) for x in (arc[0], arc[2]) for y in (arc[1], arc[3]))
-    assert crank_mm >= 20.0 and crank_mm >= 1.5 * radius, (crank_mm, radius)
+    assert crank_mm >= 20.0 - 1e-6 and crank_mm >= 1.5 * radius, (crank_mm, radius)  # (at 20 mm exactly, read off the SVG)
     # the label O (10 pt text, its box from the anchor at the baseline) clear of the ε₂ arrowhead
     from sheet_measure import SVG, groups
 
@@ -152,8 +152,10 @@ def test_the_rocker_limit_crank_is_larger_than_its_omega_arc_and_o_is_clear_of_t
 def _check_position_sheets(example, count, out):
     """Every sheet of ``draw --positions`` in *out*: A3, the sizes reached, ink inside the frame, drawings apart."""
     scene = plans.load(plans.example_path(example))
-    values = parse_positions(count, scene)
-    analytic = plans.solve(scene, np.asarray(values, dtype=float), allow_partial=True)
+    from plans.motion import driver_cycle
+
+    cycle = driver_cycle(scene, count)  # the positions of draw --positions, the driver's rates under its law
+    analytic = cycle.solve()
     written = sorted(out.glob("sheet-*.svg"))
     assert written
     for path in written:
@@ -165,6 +167,11 @@ def _check_position_sheets(example, count, out):
         assert max(x1 - x0, y1 - y0) / k["k_l"] >= MECHANISM_MM, path.name
         for prefix in ("vel-", "acc-"):
             largest, across = plan_sizes(root, prefix)
+            if prefix == "acc-" and all(abs(complex(m.a[index])) < 1e-12 for m in analytic.points.values()):
+                # the wedge (PRP on fixed guides) at a constant driver velocity, the course's law: every
+                # acceleration is 0 and the plan is its pole alone
+                assert largest == 0.0, path.name
+                continue
             assert largest >= LARGEST_VECTOR_MM - READ and across >= PLAN_ACROSS_MM - READ, (path.name, prefix, largest, across)
         frame = rect(root, "sheet-sheet-frame")
         boxes = {kind: ink(root, prefix) for kind, prefix in PREFIX.items()}
@@ -189,11 +196,11 @@ def twelve(request, tmp_path_factory):
 
 
 def test_every_example_s_twelve_position_sheets_fill_a3(twelve):
-    """Issue 11 §1 on every sheet of every bundled example at 12 positions (99 sheets: rocker-limit solves 3 of 12)."""
+    """Issue 11 §1 on every sheet of every bundled example at 12 positions (rocker-limit: all 12 over its swing and back)."""
     example, out = twelve
     written = _check_position_sheets(example, 12, out)
     scene = plans.load(plans.example_path(example))
-    analytic = plans.solve(scene, np.asarray(parse_positions(12, scene), dtype=float), allow_partial=True)
+    analytic = plans.solve(scene, np.asarray(parse_positions(12, scene), dtype=float), allow_partial=True)  # (positions as drawn)
     solved = [i for i in range(12) if all(np.isfinite(complex(m.r[i])) for m in analytic.points.values())]
     # a sheet for every position the analytic solution reaches, and none other
     assert [int(p.stem.split("-")[1]) for p in written] == solved, example

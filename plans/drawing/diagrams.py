@@ -308,8 +308,10 @@ def _page(title: str, subtitle: str, rows: int) -> tuple[Figure, list]:
     import textwrap
 
     fig.text(11 / A4[0], 1 - 11 / A4[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
-    fig.text(11 / A4[0], 1 - 19 / A4[1], "\n".join(w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)), fontsize=9, ha="left", va="top", linespacing=1.3)
-    top = 1 - 36 / A4[1]
+    lines = [w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)]
+    fig.text(11 / A4[0], 1 - 19 / A4[1], "\n".join(lines), fontsize=9, ha="left", va="top", linespacing=1.3)
+    # the axes below the subtitle's lines (9 pt at 1.3 line spacing, 4.13 mm a line) and the positions' numbers
+    top = 1 - max(36.0, 19.0 + 4.13 * len(lines) + 9.0) / A4[1]
     bottom = 26 / A4[1]
     axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / A4[0], "right": 1 - 40 / A4[0], "top": top, "bottom": bottom, "hspace": 0.2})
     return fig, list(np.atleast_1d(axes))

@@ -40,13 +40,13 @@ from .layout import A4, GAP, PAGE_MARGIN, footer, header, header_height, new_pag
 from .numerals import localised
 from .typeset import draw_text, measure
 
-__all__ = ["diagrams_block", "diagrams_table", "comparison_block", "header_lines", "diagram_words", "draw_kinematic_pages", "TEXT_PT", "DIAGRAM_GAP"]
+__all__ = ["draw_unavailable_page", "diagrams_block", "diagrams_table", "comparison_block", "header_lines", "diagram_words", "draw_kinematic_pages", "TEXT_PT", "DIAGRAM_GAP"]
 
 #: Size [pt] of every text in the diagrams and their table.
 TEXT_PT = 8.0
 #: Room [mm] above a diagram for its title line, and between diagrams.
-TITLE_ROOM = 8.0
-DIAGRAM_GAP = 6.0
+TITLE_ROOM = 7.0
+DIAGRAM_GAP = 4.5
 #: Room [mm] under a diagram for the positions' numbers, and under the block for its legend.
 NUMBER_ROOM = 5.0
 LEGEND_ROOM = 6.0
@@ -73,20 +73,16 @@ def _num(value: float, lang: str, digits: int = 4) -> str:
     if -4 <= exponent < 6:
         decimals = max(0, digits - 1 - exponent)
         text = f"{value:.{decimals}f}"
-        if "." in text:
-            text = text.rstrip("0").rstrip(".") if decimals > digits else text
     else:
         mantissa, e = f"{value:.{digits - 1}e}".split("e")
         text = f"{mantissa}·10" + str(int(e)).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
     return localised(text, lang)
 
 
-def _scale_text(value: float, lang: str) -> str:
-    """A scale's value: round values as they are, others to four significant digits."""
-    text = f"{value:.6g}"
-    if "e" in text:
-        return _num(value, lang)
-    return localised(text if len(text.replace("-", "").replace(".", "").lstrip("0")) <= 4 else _num(value, lang), lang)
+def _short(value: float, lang: str) -> str:
+    """A scale or a length to four significant digits, without trailing zeros: ``320``, ``1.6``, ``0.005``, ``120``."""
+    text = f"{value:.4g}"
+    return _num(value, lang) if "e" in text else localised(text, lang)
 
 
 def diagram_words(d: KinematicDiagrams, lang: str = "en") -> dict[str, str]:
@@ -137,6 +133,21 @@ def _runs(xs, ys) -> list[list[tuple[float, float]]]:
     return [r for r in runs if len(r) >= 2]
 
 
+def _clipped(xs, ys, length: float) -> list:
+    """The segments between neighbouring points (xs, ys) [mm], cut to the abscissa 0 ≤ x ≤ *length*."""
+    out = []
+    for k in range(len(xs) - 1):
+        (xa, ya), (xb, yb) = (float(xs[k]), float(ys[k])), (float(xs[k + 1]), float(ys[k + 1]))
+        if xb <= 0.0 or xa >= length:
+            continue
+        if xa < 0.0:
+            ya, xa = ya + (yb - ya) * (0.0 - xa) / (xb - xa), 0.0
+        if xb > length:
+            yb, xb = ya + (yb - ya) * (length - xa) / (xb - xa), length
+        out.append(((xa, ya), (xb, yb)))
+    return out
+
+
 def _dense(d: KinematicDiagrams, samples: int = 241) -> np.ndarray:
     return np.linspace(0.0, d.motion.duration, samples) + float(d.motion.t[0])
 
@@ -156,7 +167,8 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
     vel, acc = d.velocity, d.acceleration
     # drawn ordinates [mm]
     s_mm = motion.s / sc.mu_s
-    s_curve = smooth(motion.t, motion.s, tt, period=period) / sc.mu_s
+    te, se = motion.points()  # with an open turn's points beyond its ends (not drawn: the chords to them are cut at the ends)
+    s_curve = smooth(te, se, tt, period=period) / sc.mu_s
     v_mm = vel.intercepts()
     v_curve = smooth(vel.middles, vel.rates, tt, period=period) / sc.mu_v
     a_mm = acc.intercepts()
@@ -220,13 +232,13 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
             # title line: what, the scale
             ms, mv, ma = (f"$\\mu_{{{words[k + '_tex']}}}$" for k in ("s", "v", "a"))
             if key == "s":
-                scale = f"{ms} = {_scale_text(sc.mu_s, lang)} {unit}/mm"
+                scale = f"{ms} = {_short(sc.mu_s, lang)} {unit}/mm"
             elif key == "v":
-                scale = (f"{mv} = {ms}/($\\mu_{{t}}$·$H_{{1}}$) = {_num(sc.mu_v, lang)} ({unit})/mm,  "
-                         f"$H_{{1}}$ = {_scale_text(sc.pole_v, lang)} mm")
+                scale = (f"{mv} = {ms}/($\\mu_{{t}}$·$H_{{1}}$) = {_short(sc.mu_v, lang)} ({unit})/mm,  "
+                         f"$H_{{1}}$ = {_short(sc.pole_v, lang)} mm")
             else:
-                scale = (f"{ma} = {mv}/($\\mu_{{t}}$·$H_{{2}}$) = {_num(sc.mu_a, lang)} ({unit})/mm,  "
-                         f"$H_{{2}}$ = {_scale_text(sc.pole_a, lang)} mm")
+                scale = (f"{ma} = {mv}/($\\mu_{{t}}$·$H_{{2}}$) = {_short(sc.mu_a, lang)} ({unit})/mm,  "
+                         f"$H_{{2}}$ = {_short(sc.pole_a, lang)} mm")
             title = f"{symbol}–t: {words[f'{key}_title']} [{unit}];  {scale}"
             draw_text(sketch, complex(x, y0 + hi + TITLE_ROOM - 2.2), title, size=TEXT_PT, gid=f"kd-{key}-title")
             # position lines, axes, the ordinate's values on the right
@@ -252,11 +264,11 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
             for run in _runs(ref_mm[0], ref_mm[1]):
                 sketch.line([P(a, b, ys) for a, b in run], color=ANALYTIC, lw=0.6, dashes=(3, 2), gid="kd-s-analytic", obstacle=False)
         sketch.line([P(a, b, ys) for a, b in zip(tx, s_curve)], color=CURVE, lw=1.0, gid="kd-s-curve", obstacle=False)
-        chord_x = list(pos_x) + closing
-        chord_y = list(s_mm) + ([s_mm[0]] if period is not None else [])
-        for k in range(len(chord_x) - 1):
-            sketch.line([P(chord_x[k], chord_y[k], ys), P(chord_x[k + 1], chord_y[k + 1], ys)], color=CHORD, lw=0.7, gid="kd-s-chord", obstacle=False)
-        for px, py in zip(chord_x, chord_y):
+        chord_x = list(x_of(te)) + closing
+        chord_y = list(se / sc.mu_s) + ([s_mm[0]] if period is not None else [])
+        for first, second in _clipped(chord_x, chord_y, length):
+            sketch.line([P(*first, ys), P(*second, ys)], color=CHORD, lw=0.7, gid="kd-s-chord", obstacle=False)
+        for px, py in zip(list(pos_x) + closing, list(s_mm) + ([s_mm[0]] if period is not None else [])):
             sketch.circle(P(px, py, ys), 0.6, fc=CURVE, ec=CURVE, lw=0.3, gid="kd-s-point", obstacle=False)
         # v–t and a–t: pole, rays, intercepts carried to the middles, points, curve
         for key, diff, y0, pole, curve, name in (("v", vel, yv, sc.pole_v, v_curve, "1"), ("a", acc, ya, sc.pole_a, a_curve, "2")):
@@ -272,6 +284,8 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
             sketch.arrow(P(-pole / 2, dim, y0), P(0, dim, y0), lw=0.4, head=1.8, gid=f"kd-{key}-H-dimension")
             draw_text(sketch, P(-pole / 2, lo - 3.0, y0), f"$H_{{{name}}}$", size=TEXT_PT, ha="center", gid=f"kd-{key}-H")
             for middle, intercept in zip(diff.middles, diff.intercepts()):
+                if not -1.0 <= float(x_of(middle)) <= length + 1.0:  # beyond an open turn's ends: not drawn
+                    continue
                 axis_at = P(0, intercept, y0)
                 sketch.line([pole_at, axis_at], color=RAY, lw=0.35, gid=f"kd-{key}-ray", obstacle=False)
                 sketch.line([axis_at, P(float(x_of(middle)), intercept, y0)], color=RAY, lw=0.35, dashes=(1, 1.5), gid=f"kd-{key}-carry", obstacle=False)
@@ -286,13 +300,8 @@ def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = T
         my = vel.intercepts()
         if period is not None:  # the chord across the end of the cycle, drawn at both ends of the abscissa
             mx, my = np.concatenate([[mx[-1] - length], mx, [mx[0] + length]]), np.concatenate([[my[-1]], my, [my[0]]])
-        for k in range(len(mx) - 1):
-            (xa, ya), (xb, yb) = (mx[k], my[k]), (mx[k + 1], my[k + 1])
-            if xa < 0:
-                ya, xa = ya + (yb - ya) * (0 - xa) / (xb - xa), 0.0
-            if xb > length:
-                yb, xb = ya + (yb - ya) * (length - xa) / (xb - xa), length
-            sketch.line([P(xa, ya, yv), P(xb, yb, yv)], color=CHORD, lw=0.7, gid="kd-v-chord", obstacle=False)
+        for first, second in _clipped(mx, my, length):
+            sketch.line([P(*first, yv), P(*second, yv)], color=CHORD, lw=0.7, gid="kd-v-chord", obstacle=False)
         # the legend, in rows as wide as the block
         legend_at = [(x + at.real, y + legend_h - at.imag) for at in legend_places]
         for colour, lw, dashes, label, (lx, ly) in zip(*zip(*items), legend_at):
@@ -422,14 +431,14 @@ def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
     """The page's data lines: the output link and method, the time scale."""
     sc = d.scales
     words = diagram_words(d, lang)
-    count = len(d.motion.t)
+    count = len(set(d.motion.numbers))  # an open turn ends at position 0 again
     duration = d.motion.duration
     width = A4[0] - 2 * PAGE_MARGIN
     return [
         "§" + f"{term('kinematic_diagrams', lang)}: {term('graphical_differentiation', lang)}",
         *_wrap(f"{words['output']};  {term('positions', lang)}: {count}" + (f";  {d.law.describe(lang, d.driver)}" if d.law is not None else ""), width),
-        f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}),  L = {_scale_text(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
-        f"$\\mu_{{t}}$ = T/L = {_num(sc.mu_t, lang, 4)} s/mm",
+        f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}),  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
+        f"$\\mu_{{t}}$ = T/L = {_short(sc.mu_t, lang)} s/mm",
     ]
 
 
@@ -460,7 +469,7 @@ def draw_kinematic_pages(d: KinematicDiagrams, *, title: str, lang: str = "en", 
     room = height - header_height(lines) - PAGE_MARGIN - 8.0
     # the diagrams as tall as their scales allow, down to SHORTEST mm, so that the table fits under them
     together = False
-    for tallest in (ORDINATE_MAX, 36.0, SHORTEST):
+    for tallest in (ORDINATE_MAX, 36.0, 34.0, SHORTEST):
         block = diagrams_block(rescaled(d, tallest), lang)
         if block.height + GAP + table.height + notes_h <= room:
             together = True
@@ -488,3 +497,24 @@ def draw_kinematic_pages(d: KinematicDiagrams, *, title: str, lang: str = "en", 
         draw_text(sketch, complex(PAGE_MARGIN, top - h / 2), text, size=size, gid="kd-note")
         top -= h + 1.2
     return pages
+
+
+def draw_unavailable_page(error, *, title: str, lang: str = "en", footer_text: str = ""):
+    """The page that says, in the reader's language, why the kinematic diagrams are not drawn
+    (*error* a :class:`plans.differentiation.DiagramsError`)."""
+    if error.cause == "unsolved":
+        reason = term("kd_unsolved", lang).format(positions=", ".join(map(str, error.positions)))
+    elif error.cause == "no_output":
+        reason = term("kd_no_output", lang)
+    else:
+        reason = str(error)
+    fig, sketch = new_page(A4)
+    top = header(sketch, A4, title, ["§" + f"{term('kinematic_diagrams', lang)}: {term('graphical_differentiation', lang)}"])
+    lines = [term("kd_not_drawn", lang) + ":"] + _wrap(reason, A4[0] - 2 * PAGE_MARGIN, 10.0)
+    for k, line in enumerate(lines):
+        h = measure(line, 10.0, "bold" if k == 0 else "normal")[1]
+        draw_text(sketch, complex(PAGE_MARGIN, top - h / 2), line, size=10.0, weight="bold" if k == 0 else "normal", gid="kd-unavailable")
+        top -= h + 1.5
+    if footer_text:
+        footer(sketch, footer_text)
+    return fig

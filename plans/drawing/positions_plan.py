@@ -89,9 +89,10 @@ def _segments(values: np.ndarray) -> list[np.ndarray]:
     return [r for r in runs if len(r) >= 2]
 
 
-def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l: float | None = None, heading: bool = True) -> None:
+def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l: float | None = None, law: bool = False,
+                        heading: bool = True) -> None:
     """Draw the plan of positions into a sketch (one data unit = 1 mm); *heading* False leaves out the heading and
-    k_l (a page that states them), keeping the legend of the paths."""
+    k_l (a page that states them), keeping the legend of the paths; *law* states the driver's law under it."""
     runs = [r for r in positions_run.runs if r.ok]
     if not runs:
         raise ValueError("no position of the run could be solved: there is nothing to draw")
@@ -164,6 +165,14 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
         sketch.text(complex(x, y), f"$k_l$ = {localised(fmt_number(k_l), lang)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     else:
         y += 5.0
+    motion = getattr(positions_run, "motion", None)
+    if law and motion is not None:  # the driver's law over the cycle (the handout's cover states it in its header)
+        import textwrap
+
+        for n, line in enumerate(textwrap.wrap(motion.law.describe(lang, positions_run.scene.driver.link), 100, subsequent_indent="    ")):
+            y -= 4.5
+            sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top",
+                        gid=f"law-{n}", obstacle=False)
     skipped = positions_run.skipped
     if skipped:
         for cause in ("no_assembly", "dead_centre"):
@@ -322,4 +331,4 @@ def draw_positions_plan(positions_run, ax=None, *, lang: str = "en", k_l: float 
     -------
     list of matplotlib.artist.Artist
     """
-    return sketch_on(ax, "pos", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l))
+    return sketch_on(ax, "pos", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l, law=True))

@@ -442,11 +442,10 @@ def build_handout(
 
 def _kinematic_pages(scene, positions, count: int, precision, lang: str, law=None, start: str = "output") -> list:
     """The pages of the output link's kinematic diagrams by graphical differentiation (and of their table when it
-    does not fit under them), at the handout's count of positions (12 when it has fewer than 8); none for a
-    mechanism without an output slider or rocker, or not solved at one of those positions."""
-    from ..differentiation import kinematic_diagrams
-    from ..drawing.kinematic_diagrams import draw_kinematic_pages
-    from ..errors import PlansError
+    does not fit under them), at the handout's count of positions (12 when it has fewer than 8); a mechanism
+    without an output slider or rocker, or not solved at one of those positions, gets a page that says so."""
+    from ..differentiation import DiagramsError, kinematic_diagrams
+    from ..drawing.kinematic_diagrams import draw_kinematic_pages, draw_unavailable_page
 
     if isinstance(positions, int):
         count = positions
@@ -454,8 +453,8 @@ def _kinematic_pages(scene, positions, count: int, precision, lang: str, law=Non
         count = 12
     try:
         diagrams = kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
-    except PlansError:
-        return []
+    except DiagramsError as exc:  # said on a page of its own, in the reader's language
+        return [draw_unavailable_page(exc, title=scene.title_in(lang), lang=lang)]
     return draw_kinematic_pages(diagrams, title=scene.title_in(lang), lang=lang)
 
 
