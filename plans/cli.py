@@ -252,7 +252,7 @@ def build_parser() -> argparse.ArgumentParser:
     forces.add_argument(
         "-o", "--output", metavar="DIR",
         help="also draw the free bodies, each group's force plan, the driver's and Joukowski's lever into DIR "
-             "(DIR/position-K/ for each of an --at list), all or none",
+             "(DIR/position-K/ for each of an --at list), all or none; lengths read to 0.1 mm unless --precision says",
     )
     forces.add_argument("--format", choices=["svg", "pdf", "png"], default="svg", help="format of the drawings written into DIR (default svg)")
     _language_argument(forces)
@@ -545,13 +545,26 @@ def _force_drawings(args, runs) -> None:
     from ._files import replace_all
     from .drawing.force_drawing import force_drawing_files
 
+    from .forces.force_plans import force_plans
+    from .forces.lever import LeverError, joukowski_lever
+    from .graphical import construct
+    from .positions import at_page_precision
+
     directory = Path(args.output)
     contents: dict = {}
     for k, run in enumerate(runs):
-        if run.force_plans is None:
-            raise SceneError("the force plans are not available: nothing to draw")
+        graphical, plans, lever = run.graphical, run.force_plans, run.lever
+        if graphical.precision is None and args.precision != 0:
+            # a drawing reads its lengths to 0.1 mm unless told (as plans draw's sheets): drawn again at that precision
+            scene = at_page_precision(run.scene, None)
+            graphical = construct(scene, k_l=graphical.scales["k_l"], k_v=graphical.scales["k_v"], k_a=graphical.scales.get("k_a"), check_scales=False)
+            plans = force_plans(graphical)
+            try:
+                lever = joukowski_lever(graphical)
+            except LeverError:
+                lever = None
         where = directory if len(runs) == 1 else directory / f"position-{k}"
-        contents.update(force_drawing_files(run.force_plans, where, lang=args.lang, formats=(args.format,), lever=run.lever))
+        contents.update(force_drawing_files(plans, where, lang=args.lang, formats=(args.format,), lever=lever))
     for path in replace_all(contents):
         print(path, file=sys.stderr)
 

@@ -150,3 +150,34 @@ def test_files_all_formats_and_deterministic(worked, tmp_path):
     assert root.get("width").endswith("mm") or root.get("width").endswith("pt")
     again = render_svg(force_figures(worked)[1][1])
     assert again == svg
+
+
+def test_lever_forces_stand_at_their_turned_images():
+    from plans.drawing.force_drawing import draw_lever
+    from plans.forces.lever import joukowski_lever
+
+    g = construct(load(example_path("slider-crank-loads")), precision=0.1)
+    lever = joukowski_lever(g)
+    artists = draw_lever(lever)
+    # F_b at the turned image of the crank pin A: i·(image a on the velocity plan), ⊥ OA
+    shaft = _by_gid(artists, "lever-force-F_b")
+    xs, ys = shaft.get_data()
+    assert complex(xs[0], ys[0]) == pytest.approx(1j * g.velocity_plan.images["a"], abs=1e-9)
+    oa = g.positions["A"] - g.positions["O"]
+    direction = complex(xs[-1] - xs[0], ys[-1] - ys[0])
+    assert abs((direction * oa.conjugate()).real) <= 1e-9 * abs(direction) * abs(oa)
+    texts = _texts(artists)
+    assert "M_{\\mathrm{b}}" in texts["lever-result"] and "620" in texts["lever-result"]  # §11: 620.218316 N·m
+    assert not any("−0.0 mm" in t for t in texts.values())
+
+
+#: domain.md §11's table, typed here: the heading of a force plan in each language
+FORCE_PLAN_WORDS = {"en": "Force plan", "sr": "План сила", "ru": "План сил", "bg": "План на силите", "sl": "Načrt sil"}
+
+
+@pytest.mark.parametrize("lang", sorted(FORCE_PLAN_WORDS))
+def test_the_heading_is_the_textbooks_word(lang):
+    texts = _texts(draw_force_plan(TRIANGLE, lang=lang))
+    assert texts["fplan-heading"] == f"{FORCE_PLAN_WORDS[lang]}: RRR(1,2)"
+    decimal = "," if lang != "en" else "."
+    assert texts["fplan-reading-R_12"] == rf"$R_{{\mathrm{{12}}}}$ = 40{decimal}0 mm · 10 N/mm = 400 N"

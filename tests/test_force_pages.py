@@ -98,3 +98,14 @@ def test_handout_with_forces_has_the_kinetostatic_pages():
     names = [name for name, _ in pages]
     assert names[-2:] == ["forces-0", "forces-0-2"]  # the plans' page, then the lever's
     assert "Joukowski's lever" in " ".join(_texts(pages[-1][1]))
+
+
+def test_forces_drawings_read_to_a_tenth_of_a_millimetre_unless_told(tmp_path, capsys):
+    """As plans draw's sheets: without --precision the table is exact, the drawings read lengths to 0.1 mm."""
+    assert main(["forces", "--example", "slider-crank-loads", "-o", str(tmp_path / "a")]) == 0
+    assert main(["forces", "--example", "slider-crank-loads", "-o", str(tmp_path / "b"), "--precision", "0"]) == 0
+    capsys.readouterr()
+    read = (tmp_path / "a" / "force-plan-driver.svg").read_text(encoding="utf-8")
+    exact = (tmp_path / "b" / "force-plan-driver.svg").read_text(encoding="utf-8")
+    assert re.search(r"= 96\.4 mm · 100 N/mm = 9640 N", read)  # R_02 = 9646.4 N of §11 read to 0.1 mm at 100 N/mm
+    assert re.search(r"= 96\.46 mm · 100 N/mm = 9646 N", exact)

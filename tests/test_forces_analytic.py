@@ -20,7 +20,7 @@ import plans
 from plans.analytic import solve
 from plans.errors import PlansError, SceneError
 from plans.forces import solve_forces
-from plans.forces.analytic import forces_from
+from plans.forces.analytic import load_power
 from plans.scene import FRAME, Crank, example_names, example_path, load, loads
 
 LOADED = example_names(loads=True)
@@ -218,8 +218,6 @@ def test_the_mean_driving_power_equals_the_mean_resistance_power_over_a_turn():
         driving = np.mean(result.driving_power())
         external = [item for item in result.loads if item.kind in ("force", "resistance", "moment")]
         inertia = [item for item in result.loads if item.kind not in ("force", "resistance", "moment")]
-        from plans.forces.analytic import load_power
-
         resisting = np.mean(load_power(external, result.kinematics))
         assert driving > 0 and resisting < 0
         assert driving == pytest.approx(-resisting, rel=1e-6), name

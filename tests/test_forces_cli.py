@@ -168,5 +168,53 @@ def test_near_a_dead_centre_a_warning_and_at_it_a_refusal(capsys):
     limit = math.degrees(math.acos((0.01 + 0.49 - 0.4225) / 0.14))
     status, out, err = run(capsys, "forces", "--example", "rocker-limit-loads", "--at", f"{limit - 1e-4!r} deg", "--analytic-only")
     assert status == 0 and "near a dead centre" in err and "RRR(3,4)" in err
+    doc = json.loads(run(capsys, "forces", "--example", "rocker-limit-loads", "--at", f"{limit - 1e-4!r} deg", "--analytic-only", "--json")[1])
+    assert any("near a dead centre" in warning for warning in doc["warnings"])
     status, out, err = run(capsys, "forces", "--example", "rocker-limit-loads", "--at", f"{limit!r} deg", "--analytic-only")
     assert status == 2 and out == "" and "dead centre" in err
+
+
+def test_the_force_plans_hook_puts_their_numbers_beside_the_analytic(capsys):
+    """The contract for the graphical force plans: an object with ``balancing`` and ``reactions`` (label ->
+    an object with ``force``); here a stand-in that is off by known amounts, so the differences are known."""
+    from dataclasses import replace
+    from types import SimpleNamespace
+
+    import plans
+    from plans.forces.compare import compare_forces, kinetostatics
+    from plans.forces.report import forces_json, forces_table
+
+    run_ = kinetostatics(plans.load(example_path("slider-crank-loads")))
+    exact = {label: complex(r.force[0]) for label, r in run_.analytic.reactions.items()}
+    stand_in = SimpleNamespace(
+        balancing=M_B + 0.5,
+        reactions={label: SimpleNamespace(force=force + 2.0) for label, force in exact.items() if label != "R_04"},
+    )
+    rows = compare_forces(run_.analytic, run_.lever, stand_in)
+    assert [(row.quantity, row.method) for row in rows] == [("M_b", "force_plans"), ("M_b", "lever"), ("R_02", "force_plans"),
+                                                           ("R_23", "force_plans"), ("R_34", "force_plans")]
+    assert rows[0].abs_error == pytest.approx(0.5, abs=1e-6) and rows[2].abs_error == pytest.approx(2.0, rel=1e-12)
+    assert rows[3].rel_error == pytest.approx(2.0 / 8353.55006, rel=1e-6)
+    run_ = replace(run_, force_plans=stand_in, comparisons=rows)
+    doc = forces_json(run_)
+    assert doc["balancing"]["force_plans"]["value"] == pytest.approx(M_B + 0.5, abs=1e-6)
+    assert doc["reactions"]["R_23"]["force_plans"]["abs_error"] == pytest.approx(2.0, rel=1e-12)
+    assert "force_plans" not in doc["reactions"]["R_04"]
+    table = forces_table(run_, "ru")
+    assert "планы сил" in table and f"{M_B + 0.5:16.9g}".strip() in table
+
+
+def test_the_kinetostatics_never_imports_matplotlib():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "from plans.cli import main\n"
+        "assert main(['forces', '--example', 'slider-crank-loads', '--json']) == 0\n"
+        "import plans\n"
+        "plans.forces(plans.load(plans.example_path('six-bar-loads')))\n"
+        "print('matplotlib' in sys.modules, file=sys.stderr)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert done.stderr.strip() == "False"

@@ -126,3 +126,24 @@ def test_with_the_driver_at_rest_the_lever_is_refused_and_the_cli_says_why(tmp_p
     expected = (potential(scene.driver.phi + h) - potential(scene.driver.phi - h)) / (2 * h)
     assert float(plans.forces(scene).balancing[0]) == pytest.approx(expected, rel=1e-7)
     assert f"{expected:16.9g}".strip()[:6] in out
+
+
+@pytest.mark.parametrize("name", ["slider-crank-loads", "six-bar-loads", "linear-arm-loads"])
+def test_at_a_drafting_precision_every_arm_and_reading_is_within_half_of_it(name):
+    """What "within drafting precision" means for the lever: each arm measured to ±p/2 of the exact one, each
+    inertia force read to ±m·k_a·p/2 of the analytic −m·a_S (its length on the plan rounded to p)."""
+    p = 0.1
+    scene = load(example_path(name))
+    graphical = construct(scene, precision=p)
+    lever = joukowski_lever(graphical)
+    for force in lever.forces + (lever.balancing_force,):
+        exact = (force.point.real * force.force.imag - force.point.imag * force.force.real) / abs(force.force)
+        assert abs(force.arm - exact) <= p / 2 + 1e-9, (force.name, force.image)
+    analytic = {item.name: item for item in plans.forces(scene).loads}
+    k_a = graphical.acceleration_plan.scale
+    for item in lever.loads:
+        if item.kind == "inertia force":
+            mass = scene.masses[item.body].mass
+            assert abs(item.force - complex(analytic[item.name].force[0])) <= mass * k_a * p / 2 * (1 + 1e-9), item.name
+        if item.kind == "weight":
+            assert item.force == analytic[item.name].force

@@ -1,6 +1,7 @@
 """Drawings of a graphical solution: the mechanism, its plans, and a one-page sheet, as SVG;
 the plan of positions and the sheets of a multi-position run, cycle diagrams,
-and the A4 pages of a handout (SVG or PDF with the fonts embedded).
+the kinetostatics (force plans, free bodies, Joukowski's lever), and the A4
+pages of a handout (SVG or PDF with the fonts embedded).
 
 Everything is drawn true to scale: the SVG declares its size in millimetres,
 and one millimetre of plan (or k_l metres of mechanism) is one millimetre of
@@ -35,6 +36,10 @@ def __getattr__(name: str):
         from .positions_plan import draw_positions_plan
 
         return draw_positions_plan
+    if name in ("draw_force_plan", "draw_free_bodies", "draw_lever", "write_force_drawings"):
+        from . import force_drawing
+
+        return getattr(force_drawing, name)
     if name in ("draw_cycle_diagrams", "write_cycle_diagrams"):
         from . import diagrams
 
@@ -56,4 +61,8 @@ __all__ = [
     "write_cycle_diagrams",
     "render_pdf",
     "save_figure",
+    "draw_force_plan",
+    "draw_free_bodies",
+    "draw_lever",
+    "write_force_drawings",
 ]

@@ -262,7 +262,7 @@ def draw_force_legend_into(sketch: Sketch, kinds, lines: bool, lang: str, x: flo
 def draw_free_bodies(forces, ax=None, *, lang: str = "en") -> list:
     """The groups and the driver, cut apart, with their loads and the reactions on them.
 
-    Each is drawn at the mechanism's k_l, side by side in the order of the
+    Each is drawn at one k_l (see :func:`draw_free_bodies_into`), side by side in the order of the
     force plans (the last group first, the driver last); every force is an
     arrow of :data:`FREE_ARROW_MM` at its point of application (a load from
     its point, a reaction into its joint), every couple an arc.
@@ -271,10 +271,21 @@ def draw_free_bodies(forces, ax=None, *, lang: str = "en") -> list:
 
 
 def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True, k_l: float | None = None, per_row: int | None = None) -> None:
-    """Draw the free bodies into *sketch* (see :func:`draw_free_bodies`), at *k_l* [m/mm] (by default the solution's),
-    *per_row* of them in a row (by default all in one), each row under the one before."""
+    """Draw the free bodies into *sketch* (see :func:`draw_free_bodies`), at *k_l* [m/mm], *per_row* of them in a
+    row (by default all in one), each row under the one before.
+
+    By default k_l is the round value that draws the largest free body 60–120 mm across (a group is
+    smaller than the mechanism: its links drawn at the mechanism's k_l would crowd their arrows).
+    """
     g = forces.graphical
-    k_l = k_l or g.scales["k_l"]
+    if k_l is None:
+        from ..graphical.scales import round_scale
+
+        spans = []
+        for plan in forces.plans:
+            zs = [g.positions[n] for body in plan.links for n in g.scene.bodies[body].points]
+            spans.append(max(max(z.real for z in zs) - min(z.real for z in zs), max(z.imag for z in zs) - min(z.imag for z in zs)))
+        k_l = round_scale(max(spans), fallback=g.scales["k_l"])
     per_row = per_row or len(forces.plans)
     bodies = []
     for plan in forces.plans:
@@ -605,7 +616,8 @@ def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
         if abs(f.force) == 0:
             continue
         y -= row
-        line = (f"{force_math(f.name)}: {_number(abs(f.force), lang)} N · {localised(f'{f.arm:.1f}', lang)} mm = "
+        arm = f.arm if abs(f.arm) >= 0.05 else 0.0  # no "−0.0"
+        line = (f"{force_math(f.name)}: {_number(abs(f.force), lang)} N · {localised(f'{arm:.1f}', lang)} mm = "
                 f"{_number(f.moment, lang)} N·mm")
         sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(f.name)}", obstacle=False, math=True)
     for c in lever.couples:

@@ -41,7 +41,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..scene import FRAME, Crank, LinearDriver, Scene
+from ..errors import SceneError
+from ..scene import FRAME, Crank, LinearDriver, Prismatic, Scene
 from ..structure import Group, Joint, Structure
 from .loads import AppliedLoad, applied_loads
 
@@ -248,8 +249,6 @@ def forces_from(kinematics) -> AnalyticForces:
         With accelerations (a scene with ``accelerations = false`` has no
         inertia loads to find: refused).
     """
-    from ..errors import SceneError
-
     scene, structure = kinematics.scene, kinematics.structure
     if not scene.accelerations:
         raise SceneError(
@@ -617,10 +616,8 @@ def _driver(kinematics, sums: _Sums):
         return -M, _revolute(FRAME, link, joint, "driver", -F, kinematics)
     assert isinstance(driver, LinearDriver)
     P = kinematics.points[driver.point].r
-    u = np.exp(1j * scene.frame.lines[driver.guide].angle) + 0 * P
+    u = complex(np.exp(1j * scene.frame.lines[driver.guide].angle))
     F, M = sums.about(link, P)
-    from ..structure import Prismatic
-
     joint = Joint("P", (link, FRAME), prismatic=Prismatic(f"{driver.point}:{FRAME}.{driver.guide}", link, "", FRAME, driver.guide))
     balancing = -_dot(F, u)
     N = -_dot(F, 1j * u)

@@ -18,7 +18,7 @@ import importlib
 import importlib.util
 from dataclasses import dataclass
 
-from .analytic import AnalyticForces, solve_forces
+from .analytic import AnalyticForces
 
 __all__ = ["ForceComparison", "KinetostaticRun", "compare_forces", "kinetostatics", "METHODS", "force_plans_available"]
 

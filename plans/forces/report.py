@@ -84,7 +84,7 @@ def forces_json(run: KinetostaticRun) -> dict:
         },
         "lever": None,
         "scales": dict(run.graphical.scales) if run.graphical is not None else None,
-        "warnings": list(run.notes),
+        "warnings": [str(warning) for warning in analytic.kinematics.warnings] + list(run.notes),
     }
     for load in analytic.loads:
         doc["loads"].append({
