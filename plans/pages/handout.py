@@ -59,12 +59,9 @@ TEXT_WIDTH = PAGE[0] - TEXT_LEFT - TEXT_RIGHT
 TEXT_HEIGHT = PAGE[1] - TEXT_TOP - TEXT_BOTTOM
 GUTTER = 5.0
 #: the boxes [mm] the drawings are fitted to: the plan of positions (under the data), a velocity plan
-#: (two across, three down a page), an acceleration plan (two down a page); one position's plans larger
+#: (two across, three down a page; one position's larger); the acceleration plans' cells: :func:`_acceleration_cells`
 POSITIONS_BOX = (TEXT_WIDTH, 150.0)
-MECHANISM_BOX = (TEXT_WIDTH, 120.0)
 VELOCITY_CELL = ((TEXT_WIDTH - GUTTER) / 2, 62.0)
-VELOCITY_ALONE = (TEXT_WIDTH, 105.0)
-ACCELERATION_CELL = (TEXT_WIDTH, 100.0)
 TEXT_PT = 9.5
 SMALL_PT = 8.0
 
@@ -180,14 +177,40 @@ def _output_sense(run) -> float:
     return 0.0
 
 
-def choose_accelerations(runs, asked) -> list[int]:
+def stroke_phases(run) -> dict[int, tuple[str, float]]:
+    """Position index -> (``"working"`` or ``"idle"``, how far into that stroke, 0…1), for a crank turning fully
+    under a turning law (:class:`plans.motion.Strokes`: the working stroke starts at the output's extreme
+    position 0 and runs the working arc in the sense of motion); empty where the strokes are not known so
+    (a rocker input, a linear driver): then the sense of the output's motion tells them apart."""
+    import math as m
+
+    st = getattr(run, "strokes", None)
+    if st is None or not st.law.crank or st.law.kind == "harmonic" or not (st.working_arc > 0 and st.return_arc > 0):
+        return {}
+    out = {}
+    turn = 2 * m.pi
+    for r in run.runs:
+        if not r.ok:
+            continue
+        phase = ((float(r.position) - st.law.x0) * st.law.sense) % turn
+        into = (phase - st.start_phase) % turn
+        if into < st.working_arc:
+            out[r.index] = ("working", into / st.working_arc)
+        else:
+            out[r.index] = ("idle", (into - st.working_arc) / st.return_arc)
+    return out
+
+
+def choose_accelerations(run, asked) -> list[int]:
     """The indices of the positions whose acceleration plans are drawn.
 
-    *asked*: ``"all"``, a list of indices, or None — then two: the middle
-    position of the working stroke and of the idle stroke, told apart by
-    the sense of the output's motion (the working stroke the longer run of
-    positions); one position when the output never turns back.
+    *asked*: ``"all"``, a list of indices, or None — then two: the position
+    nearest the middle of the working stroke and the one nearest the middle
+    of the idle stroke (:func:`stroke_phases`; without them, the strokes told
+    apart by the sense of the output's motion, the working one the longer
+    run of positions); one of each third when the output never turns back.
     """
+    runs = run.runs
     solved = [r for r in runs if r.ok and r.graphical is not None and r.graphical.acceleration_plan is not None]
     if asked == "all":
         return [r.index for r in solved]
@@ -196,6 +219,15 @@ def choose_accelerations(runs, asked) -> list[int]:
         return [k for k in asked if k in known]
     if len(solved) <= ACCELERATIONS_DEFAULT:
         return [r.index for r in solved]
+    phases = stroke_phases(run)
+    if phases:
+        chosen = []
+        for stroke in ("working", "idle"):
+            here = [r for r in solved if phases.get(r.index, ("", 0))[0] == stroke]
+            if here:
+                chosen.append(min(here, key=lambda r: abs(phases[r.index][1] - 0.5)).index)
+        if len(chosen) == 2:
+            return sorted(chosen)
     plus = [r for r in solved if _output_sense(r) > 0]
     minus = [r for r in solved if _output_sense(r) < 0]
     strokes = sorted([s for s in (plus, minus) if s], key=len, reverse=True)
@@ -204,8 +236,19 @@ def choose_accelerations(runs, asked) -> list[int]:
     return sorted(s[len(s) // 2].index for s in strokes)
 
 
-def _stroke(run, working_sign: float, lang: str) -> str:
-    sense = _output_sense(run)
+def _first_page_room(scene, lang: str, r) -> float:
+    """The height [mm] the first page of a one-position handout leaves its two drawings (the mechanism and the
+    velocity plan): the text height less the data, the headings and the velocity equations, line by line."""
+    lines = len(data_lines(scene, lang)) + 2  # the data, the structural formula and the assembly
+    equations = sum(len(step.equations) for step in r.graphical.velocity_plan.steps)
+    return TEXT_HEIGHT - (12.0 + 5.0 * lines) - 12.0 - (16.0 + 6.4 * equations) - 20.0 - 8.0
+
+
+def _stroke(r, working_sign: float, lang: str, phases=None) -> str:
+    """The stroke a position is in, in words (empty when not known)."""
+    if phases and r.index in phases:
+        return term("working_stroke" if phases[r.index][0] == "working" else "idle_stroke", lang)
+    sense = _output_sense(r)
     if not sense or not working_sign:
         return ""
     return term("working_stroke" if sense * working_sign > 0 else "idle_stroke", lang)
@@ -278,19 +321,25 @@ def build_handout(
         extent = _bbox(zs)
         k_l_plate, first = _fitted(lambda k: positions_svg(run, k, lang), extent, POSITIONS_BOX, k_l0, given["k_l"])
     else:
+        # one position: the mechanism and its velocity plan share the first page under the data and the equations
+        room = _first_page_room(scene, lang, solved[0])
         extent = _bbox(solved[0].graphical.positions.values())
-        k_l_plate, first = _fitted(lambda k: mechanism_svg(scaled(solved[0], "k_l", k).graphical, lang), extent, MECHANISM_BOX, k_l0, given["k_l"])
+        k_l_plate, first = _fitted(lambda k: mechanism_svg(scaled(solved[0], "k_l", k).graphical, lang), extent,
+                                   (TEXT_WIDTH, max(room * 0.55, 60.0)), k_l0, given["k_l"])
+        velocity_alone = (TEXT_WIDTH, max(room - first.height, 50.0))
 
     # --- one k_v over every position: the largest plan fills a cell
-    cell_v = VELOCITY_CELL if len(solved) > 1 else VELOCITY_ALONE
-    chosen = choose_accelerations(run.runs, accelerations) if scene.accelerations else []
+    cell_v = VELOCITY_CELL if len(solved) > 1 else velocity_alone
+    chosen = choose_accelerations(run, accelerations) if scene.accelerations else []
+    phases = stroke_phases(run)
+    accel_columns, cell_a = _acceleration_cells([r for r in solved if r.index in chosen])
     per_position = {}
     if scales == "per-position":
         for r in solved:
             ks = {"k_l": k_l_plate}
             ks["k_v"], _ = _fitted(lambda k, r=r: plan_svg(scaled(r, "k_v", k).graphical.velocity_plan, lang), _plan_extent(r.graphical.velocity_plan), cell_v, r.graphical.scales["k_v"], given["k_v"])
             if r.index in chosen:
-                ks["k_a"], _ = _fitted(lambda k, r=r: plan_svg(scaled(r, "k_a", k).graphical.acceleration_plan, lang), _plan_extent(r.graphical.acceleration_plan), ACCELERATION_CELL, r.graphical.scales["k_a"], given["k_a"])
+                ks["k_a"], _ = _fitted(lambda k, r=r: plan_svg(scaled(r, "k_a", k).graphical.acceleration_plan, lang), _plan_extent(r.graphical.acceleration_plan), cell_a, r.graphical.scales["k_a"], given["k_a"])
             else:
                 ks["k_a"] = r.graphical.scales.get("k_a")
             per_position[r.index] = ks
@@ -301,8 +350,8 @@ def build_handout(
         plate = {"k_l": k_l_plate, "k_v": k_v_plate}
         accel = [r for r in solved if r.index in chosen]
         if accel:
-            largest_a = max(accel, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.acceleration_plan), ACCELERATION_CELL)))
-            plate["k_a"], _ = _fitted(lambda k: plan_svg(scaled(largest_a, "k_a", k).graphical.acceleration_plan, lang), _plan_extent(largest_a.graphical.acceleration_plan), ACCELERATION_CELL, largest_a.graphical.scales["k_a"], given["k_a"])
+            largest_a = max(accel, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.acceleration_plan), cell_a)))
+            plate["k_a"], _ = _fitted(lambda k: plan_svg(scaled(largest_a, "k_a", k).graphical.acceleration_plan, lang), _plan_extent(largest_a.graphical.acceleration_plan), cell_a, largest_a.graphical.scales["k_a"], given["k_a"])
         else:
             plate["k_a"] = solved[0].graphical.scales.get("k_a")
         per_position = {r.index: dict(plate) for r in solved}
@@ -348,7 +397,7 @@ def build_handout(
             if not r.ok:
                 entry += f"  ({term('not_solved', lang)})"
             elif r.index in chosen:
-                stroke = _stroke(r, working, lang)
+                stroke = _stroke(r, working, lang, phases)
                 entry += f"  ({stroke})" if stroke else ""
             entries.append(entry)
         doc.listing(term("positions_list", lang), entries)
@@ -357,12 +406,9 @@ def build_handout(
     doc.heading(f"{term('vector_equations', lang)}: {term('velocity_plan', lang).lower()}", level=2)
     doc.equations([s for s in sample.graphical.velocity_plan.steps], name)
     doc.section("velocity-plans")
-    doc.heading(term("velocity_plans", lang) + (f" ({term('each_from_its_pole', lang)})" if multi else ""), level=2)
-    if scales != "per-position":
-        doc.scale_line("k_v", plate["k_v"])
-    else:
-        doc.line(term("scales_each_position", lang), size=SMALL_PT)
-    doc.figure("legend-v", legend_v)
+    doc.headed_legend(term("velocity_plans", lang) + (f" ({term('each_from_its_pole', lang)})" if multi else ""),
+                      doc.scale_markup("k_v", plate["k_v"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
+                      "legend-v", legend_v)
     cells = []
     for r in run.runs:
         caption = f"{term('position', lang)} {r.index}:  {r.label}" if multi else r.label
@@ -378,18 +424,17 @@ def build_handout(
         doc.heading(f"{term('vector_equations', lang)}: {term('acceleration_plan', lang).lower()}", level=2, new_page=True)
         doc.equations([s for s in here[chosen[0]].graphical.acceleration_plan.steps], name)
         doc.section("acceleration-plans")
-        doc.heading(term("acceleration_plans", lang), level=2)
-        if scales != "per-position":
-            doc.scale_line("k_a", plate["k_a"])
-        doc.figure("legend-a", legend_a)
+        doc.headed_legend(term("acceleration_plans", lang),
+                          doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
+                          "legend-a", legend_a)
         cells = []
         for k in chosen:
             r = here[k]
-            stroke = _stroke(r, working, lang)
+            stroke = _stroke(r, working, lang, phases)
             caption = (f"{term('position', lang)} {k}:  {r.label}" if multi else r.label) + (f"  ({stroke})" if stroke and multi else "")
             extra = f"$k_a$ = {per_position[k]['k_a']:g}" if scales == "per-position" else ""
             cells.append((caption, (f"a-{k}", acceleration_blocks[k]), extra))
-        doc.grid(cells, columns=1)
+        doc.grid(cells, columns=accel_columns)
 
     doc.section("tables")
     doc.heading(term("comparison", lang), level=2, new_page=True)
@@ -440,6 +485,30 @@ def build_handout(
     return Handout(doc.source(), doc.images, plate, per_position, doc.order, chosen, doc.sizes, list(here.values()))
 
 
+#: room [mm] the acceleration plans' page gives its equations, legend and headings (the rest holds the plans)
+ACCELERATION_PAGE_TEXT = 95.0
+#: what a plan's drawing takes beyond its geometry, reckoned before it is drawn [mm] (labels, margin, caption)
+PLAN_FIXED = (14.0, 20.0)
+
+
+def _acceleration_cells(runs) -> tuple[int, tuple[float, float]]:
+    """(columns, cell [mm]) for the acceleration plans of *runs*: one above the other or side by side,
+    whichever draws the largest of them largest (two fill the page under the equations; more go two
+    across, as many down a page as fit)."""
+    if not runs:
+        return 1, (TEXT_WIDTH, 100.0)
+    room = TEXT_HEIGHT - ACCELERATION_PAGE_TEXT
+    n = len(runs)
+    options = []
+    for columns in (1, 2):
+        rows = max(1, min(-(-n // columns), 2))
+        cell = ((TEXT_WIDTH - (columns - 1) * GUTTER) / columns, room / rows - 6.0)
+        need = max(max(e / max(c - f, 10.0) for e, c, f in zip(_plan_extent(r.graphical.acceleration_plan), cell, PLAN_FIXED)) for r in runs)
+        options.append((need, columns, cell))
+    need, columns, cell = min(options)
+    return columns, cell
+
+
 def _kinematic_pages(scene, positions, count: int, precision, lang: str, law=None, start: str = "output") -> list:
     """The pages of the output link's kinematic diagrams by graphical differentiation (and of their table when it
     does not fit under them), at the handout's count of positions (12 when it has fewer than 8); a mechanism
@@ -484,7 +553,7 @@ def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
     except PlansError as exc:
         doc.line(str(exc), size=TEXT_PT)
         return
-    box = (TEXT_WIDTH, 125.0)
+    box = (TEXT_WIDTH, 150.0)
     k = k_l
     block = centres_svg(result, k, lang)
     for _ in range(8):
@@ -492,7 +561,6 @@ def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
             break
         k = round_up(k * max(block.width / box[0], block.height / box[1], 1.0001))
         block = centres_svg(result, k, lang)
-    doc.scale_line("k_l", k)
     doc.figure(f"centres-{h.index}", block)
     doc.line(f"{term('centres_legend', lang)};  {term('centres_edge_legend', lang)}", size=SMALL_PT)
     diagram = circle_diagram_svg(result, lang)
@@ -538,19 +606,30 @@ class _Document:
             self.body.append("#pagebreak(weak: true)")
         self.body.append("=" * level + " " + text(words))
 
+    def line_markup(self, words: str, size: float = TEXT_PT) -> str:
+        return f"#text(size: {size}pt)[{self.words(words)}]"
+
     def line(self, words: str, size: float = TEXT_PT) -> None:
-        self.body.append(f"#text(size: {size}pt)[{self.words(words)}]\n")
+        self.body.append(self.line_markup(words, size) + "\n")
+
+    def headed_legend(self, heading: str, under: str, key: str, legend) -> None:
+        """A heading and a line under it on the left, a drawing's legend on the right (one band across the page)."""
+        self.body.append(f"#grid(columns: (1fr, auto), column-gutter: {GUTTER}mm, align: (left + top, right + top),\n"
+                         f"  [#heading(level: 2, {string(heading)})\n{under}], [#{self.add_image(key, legend)}])\n")
 
     def lines(self, lines, size: float = TEXT_PT) -> None:
         for line in lines:
             self.line(line, size)
 
-    def scale_line(self, key: str, value: float) -> None:
+    def scale_markup(self, key: str, value: float) -> str:
         from ..drawing._canvas import fmt_number
         from ..drawing.numerals import scale_caption
 
         unit = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}[key]
-        self.line(scale_caption(key, fmt_number(value), unit, self.lang), size=TEXT_PT)
+        return self.line_markup(scale_caption(key, fmt_number(value), unit, self.lang), size=TEXT_PT)
+
+    def scale_line(self, key: str, value: float) -> None:
+        self.body.append(self.scale_markup(key, value) + "\n")
 
     def listing(self, heading: str, entries) -> None:
         cells = ", ".join(f"[{self.words(e)}]" for e in entries)
