@@ -357,15 +357,39 @@ def build_handout(
         per_position = {r.index: dict(plate) for r in solved}
 
     # --- every position at the plate's factors, its plans drawn
+    # (a plan never runs out of its cell: one whose enlarged detail would is drawn without it, its notes kept;
+    # one still too wide makes the factor of its kind coarser for every position, so that it stays one)
     here = {}
     velocity_blocks, acceleration_blocks = {}, {}
-    for n, r in enumerate(solved, start=1):
-        say(f"{term('position', lang)} {n}/{len(solved)}")
-        h = at(r, per_position[r.index])
-        here[r.index] = h
-        velocity_blocks[r.index] = plan_svg(h.graphical.velocity_plan, lang)
-        if r.index in chosen and h.graphical.acceleration_plan is not None:
-            acceleration_blocks[r.index] = plan_svg(h.graphical.acceleration_plan, lang)
+
+    def fitting(plan, cell):
+        block = plan_svg(plan, lang)
+        if block.width > cell[0] + 0.5:
+            block = plan_svg(plan, lang, detail=False)
+        return block
+
+    for attempt in range(4):
+        wider = {}
+        for n, r in enumerate(solved, start=1):
+            say(f"{term('position', lang)} {n}/{len(solved)}")
+            h = at(r, per_position[r.index])
+            here[r.index] = h
+            velocity_blocks[r.index] = fitting(h.graphical.velocity_plan, cell_v)
+            if velocity_blocks[r.index].width > cell_v[0] + 0.5:
+                wider["k_v"] = max(wider.get("k_v", 1.0), velocity_blocks[r.index].width / cell_v[0])
+            if r.index in chosen and h.graphical.acceleration_plan is not None:
+                acceleration_blocks[r.index] = fitting(h.graphical.acceleration_plan, cell_a)
+                if acceleration_blocks[r.index].width > cell_a[0] + 0.5:
+                    wider["k_a"] = max(wider.get("k_a", 1.0), acceleration_blocks[r.index].width / cell_a[0])
+        wider = {key: f for key, f in wider.items() if given[key] is None}
+        if not wider:
+            break
+        for ks in per_position.values():
+            for key, f in wider.items():
+                ks[key] = round_up(ks[key] * f * 1.0001)
+        for key, f in wider.items():
+            if key in plate:
+                plate[key] = round_up(plate[key] * f * 1.0001)
     legend_v = legend_svg([h.graphical.velocity_plan for h in here.values()], lang)
     legend_a = legend_svg([here[k].graphical.acceleration_plan for k in acceleration_blocks], lang) if acceleration_blocks else None
 
