@@ -329,7 +329,7 @@ def build_handout(
         velocity_alone = (TEXT_WIDTH, max(room - first.height, 50.0))
 
     # --- one k_v over every position: the largest plan fills a cell
-    cell_v = VELOCITY_CELL if len(solved) > 1 else velocity_alone
+    cell_v = VELOCITY_CELL if multi else velocity_alone
     chosen = choose_accelerations(run, accelerations) if scene.accelerations else []
     phases = stroke_phases(run)
     accel_columns, cell_a = _acceleration_cells([r for r in solved if r.index in chosen])
@@ -563,7 +563,7 @@ def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
     when the page cannot hold it), the circle diagram, the rules and the table."""
     from ..centres import instant_centres
     from ..compare import compare_centres
-    from ..drawing.centres_page import centres_page_table
+    from ..drawing.centres_page import ROOM_MIN, centres_page_table, centres_rules
     from ..drawing.svgblocks import centres_svg, circle_diagram_svg
     from ..errors import PlansError
 
@@ -579,18 +579,16 @@ def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
         return
     box = (TEXT_WIDTH, 150.0)
     k = k_l
-    block = centres_svg(result, k, lang)
+    block = centres_svg(result, k, lang, room_min=ROOM_MIN)
     for _ in range(8):
         if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
             break
         k = round_up(k * max(block.width / box[0], block.height / box[1], 1.0001))
-        block = centres_svg(result, k, lang)
+        block = centres_svg(result, k, lang, room_min=ROOM_MIN)
     doc.figure(f"centres-{h.index}", block)
     doc.line(f"{term('centres_legend', lang)};  {term('centres_edge_legend', lang)}", size=SMALL_PT)
     diagram = circle_diagram_svg(result, lang)
-    doc.beside((f"circle-{h.index}", diagram), centres_page_table(result, comparisons, lang),
-               [f"{term('centres_omega_rule', lang)}:  $\\omega_j / \\omega_k = P_{{1k}}P_{{jk}} / P_{{1j}}P_{{jk}}$",
-                f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{1j}}M$"])
+    doc.beside((f"circle-{h.index}", diagram), centres_page_table(result, comparisons, lang), centres_rules(lang))
 
 
 def data_lines(scene, lang: str) -> list[str]:

@@ -238,4 +238,16 @@ def compile_document(source: str, images: dict | None = None, fmt: str = "pdf", 
         raise TypesetError(f"the typesetter refused a page: {exc}") from None
     if fmt == "pdf":
         return out
-    return list(out) if isinstance(out, list) else [out]
+    pages = list(out) if isinstance(out, list) else [out]
+    return [_svg_in_mm(page) for page in pages] if fmt == "svg" else pages
+
+
+_ROOT_PT = re.compile(rb'(<svg\b[^>]*?)\bwidth="([0-9.]+)pt" height="([0-9.]+)pt"')
+
+
+def _svg_in_mm(data: bytes) -> bytes:
+    """An SVG page with its root size in millimetres (a viewer or printer at 100 % reproduces the scale factors)."""
+    def mm(pt: bytes) -> bytes:
+        return f"{float(pt) * 25.4 / 72:.3f}".rstrip("0").rstrip(".").encode() + b"mm"
+
+    return _ROOT_PT.sub(lambda m: m.group(1) + b'width="' + mm(m.group(2)) + b'" height="' + mm(m.group(3)) + b'"', data, count=1)
