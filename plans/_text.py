@@ -64,7 +64,7 @@ _CYRILLIC_UNITS = {"rad/s²": "рад/с²", "rad/s": "рад/с", "m/s²": "м/
                    "m": "м", "[s]": "[с]", " s": " с"}
 _UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad|m)(?![\w}])|(\[s\])|(?<=[0-9])( s)(?![\w])")
 #: the same without a bare "m" (a drawing's labels: the image m of a point M stays)
-_DRAWN_UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad)(?![\w}])|(\[s\])")
+_DRAWN_UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad)(?![\w}])|(\[s\])|(?<=[0-9])( s)(?![\w])")
 
 
 def course_units(line: str, lang: str, drawn: bool = False) -> str:

@@ -244,6 +244,15 @@ def _first_page_room(scene, lang: str, r) -> float:
     return TEXT_HEIGHT - (12.0 + 5.0 * lines) - 12.0 - (16.0 + 6.4 * equations) - 20.0 - 8.0
 
 
+def _reason(r, lang: str) -> str:
+    """Why a position is not solved, in the reader's words and numbers, the group named as the course names it."""
+    from ..i18n import reason_text
+    from .words import group_words
+
+    words = reason_text(str(r.error), lang, r.cause)
+    return re.sub(r"\b[RP]{3}\([^,()]+,[^,()]+\)", lambda m: group_words(m.group(0), lang), words)
+
+
 def _stroke(r, working_sign: float, lang: str, phases=None) -> str:
     """The stroke a position is in, in words (empty when not known)."""
     if phases and r.index in phases:
@@ -437,7 +446,7 @@ def build_handout(
     for r in run.runs:
         caption = f"{term('position', lang)} {r.index}:  {r.label}" if multi else r.label
         if not r.ok:
-            cells.append((caption, None, f"{term('not_solved', lang)}: {r.brief(lang)}"))
+            cells.append((caption, None, f"{term('not_solved', lang)}: {_reason(r, lang)}"))
             continue
         extra = f"$k_v$ = {per_position[r.index]['k_v']:g}" if scales == "per-position" else ""
         cells.append((caption, (f"v-{r.index}", velocity_blocks[r.index]), extra))
@@ -601,6 +610,10 @@ def data_lines(scene, lang: str) -> list[str]:
 # --- the Typst document -------------------------------------------------------------------------
 
 
+#: a symbol with a subscript written in plain text (``t_w``), or a ``$…$`` part left as it is
+_SUBSCRIPTED = re.compile(r"\$[^$]*\$|(?<![\w\\])([A-Za-zα-ωΑ-Ω])_([A-Za-z0-9]+)(?!\w)")
+
+
 class _Document:
     """Typst source built section by section: text, equations, tables and drawings (SVG inputs)."""
 
@@ -618,6 +631,7 @@ class _Document:
         """A line of the program's text (with ``$…$`` math) as markup in the page's language, names and units."""
         for name in self.scene.names:
             line = re.sub(rf"(?<![\w.]){re.escape(name)}(?!\w)", lambda m: self.scene.name_in(name, self.lang), line)
+        line = _SUBSCRIPTED.sub(lambda m: m.group(0) if m.group(0).startswith("$") else f"${m.group(1)}_{{{m.group(2)}}}$", line)
         return mixed(units(decimal_comma(line, self.lang), self.lang))
 
     def section(self, name: str) -> None:
@@ -626,7 +640,7 @@ class _Document:
     def heading(self, words: str, level: int = 2, new_page: bool = False) -> None:
         if new_page and self.body:
             self.body.append("#pagebreak(weak: true)")
-        self.body.append("=" * level + " " + text(words))
+        self.body.append("=" * level + " " + self.words(words))
 
     def line_markup(self, words: str, size: float = TEXT_PT) -> str:
         return f"#text(size: {size}pt)[{self.words(words)}]"

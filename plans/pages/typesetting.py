@@ -108,7 +108,8 @@ def math(body: str) -> str:
                         j += 1
                     inner = body[k + 1:j] if k < n and body[k] == "{" else ""
                     k = j + 1
-                    out.append(_math_string(inner.replace("\\,", " ").replace("\\ ", " ")) + " ")
+                    inner = inner.replace("\\,", " ").replace("\\ ", " ").replace("^{2}", "²").replace("^2", "²").replace("^{3}", "³").replace("^3", "³")
+                    out.append(_math_string(inner) + " ")
                     after_script = False
                     continue
                 if name in ("dot", "ddot", "vec", "bar", "overline", "underline", "hat"):
@@ -159,8 +160,10 @@ def math(body: str) -> str:
             k += 1
             continue
         if ch.isdigit():
-            m = re.match(r"[0-9]+(?:\.[0-9]+)?", body[k:])
+            m = re.match(r"[0-9]+(?:[.,][0-9]+)?", body[k:])
             token = m.group(0)
+            if "," in token:  # a decimal comma: one number, not a list (Typst math spaces a comma)
+                token = _math_string(token)
             if after_script and len(token) > 1:
                 token = f"({token})"
             out.append(token + " ")
