@@ -313,7 +313,7 @@ def build_handout(
         return at(r, ks)
 
     # --- one k_l: the plan of positions (one position: its mechanism) fills its box
-    say(term("positions_plan", lang))
+    say(term("positions_plan" if multi else "mechanism", lang))
     if not solved:
         from ..errors import PlansError
 
