@@ -18,15 +18,12 @@ equations.  Every page has a frame, a binding margin and a title block.
 
 from __future__ import annotations
 
-import math
-from dataclasses import replace
 from pathlib import Path
 
-from ._text import subscript
 from .errors import PlansError
 from .i18n import check_language, term
 from .pages.words import cycle_lines, scene_data_lines  # noqa: F401 (the handout API)
-from .scene import FRAME, Crank, Scene
+from .scene import Scene
 
 __all__ = ["HandoutError", "write_handout", "handout", "scene_data_lines", "cycle_lines"]
 

@@ -458,8 +458,6 @@ TERMS: dict[str, dict[str, str]] = {
     "date": {"en": "Date", "sr": "Датум", "ru": "Дата", "bg": "Дата", "sl": "Datum"},
     "sheet": {"en": "Sheet", "sr": "Лист", "ru": "Лист", "bg": "Лист", "sl": "List"},
     "of_sheets": {"en": "of", "sr": "од", "ru": "из", "bg": "от", "sl": "od"},
-    "scales_heading": {"en": "Scales", "sr": "Размере", "ru": "Масштабы", "bg": "Мащаби", "sl": "Merila"},
-    "plate_data": {"en": "Data", "sr": "Подаци", "ru": "Исходные данные", "bg": "Изходни данни", "sl": "Podatki"},
     "underlines": {
         "en": "underlined once: direction known; twice: magnitude and direction known",
         "sr": "подвучено једном: познат правац; двапут: познати интензитет и правац",
@@ -486,7 +484,6 @@ TERMS: dict[str, dict[str, str]] = {
     "idle_stroke": {"en": "idle stroke", "sr": "повратни ход", "ru": "холостой ход", "bg": "празен ход", "sl": "povratni hod"},
     "assembly": {"en": "Assembly of the groups", "sr": "Склоп група", "ru": "Сборка групп", "bg": "Сглобяване на групите", "sl": "Sestav skupin"},
     "group": {"en": "group", "sr": "група", "ru": "группа", "bg": "група", "sl": "skupina"},
-    "guide": {"en": "guide", "sr": "вођица", "ru": "направляющая", "bg": "водач", "sl": "vodilo"},
     "assembly_side": {
         "en": "{c} to the {side} of the line {b}{d}, looking from {b} towards {d}",
         "sr": "{c} {side} од праве {b}{d}, гледано од {b} ка {d}",
@@ -527,7 +524,6 @@ TERMS: dict[str, dict[str, str]] = {
                       "bg": "отворен шарнирен четиризвенник", "sl": "odprti štirizgibni mehanizem"},
     "crossed_four_bar": {"en": "crossed four-bar", "sr": "укрштени зглавкасти четвороугао", "ru": "перекрещенный шарнирный четырёхзвенник",
                          "bg": "кръстосан шарнирен четиризвенник", "sl": "prekrižani štirizgibni mehanizem"},
-    "chosen_positions": {"en": "positions", "sr": "положаји", "ru": "положения", "bg": "положения", "sl": "lege"},
     "comparison": {
         "en": "Graphical and analytic values",
         "sr": "Графичке и аналитичке вредности",
@@ -535,7 +531,6 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "Графични и аналитични стойности",
         "sl": "Grafične in analitične vrednosti",
     },
-    "binding": {"en": "binding margin", "sr": "поље за повез", "ru": "поле подшивки", "bg": "поле за подвързване", "sl": "rob za vezavo"},
     # --- kinematic diagrams ---
     "kinematic_diagrams": {
         "en": "Kinematic diagrams of the output link",

@@ -40,7 +40,7 @@ from ..graphical.scales import round_up
 from ..i18n import term
 from .._text import decimal_comma
 from .equations import step_lines
-from .typesetting import compile_document, image, math as tex, mixed, string, text
+from .typesetting import compile_document, image, mixed, string, text
 from .words import assembly_lines, formula_words, namer, units
 
 __all__ = ["Handout", "build_handout", "ORDER", "ACCELERATIONS_DEFAULT"]
@@ -416,7 +416,7 @@ def build_handout(
 
     doc.lines([formula_words(line) for line in data_lines(scene, lang) + (cycle_lines(run, lang) if multi else [])], size=TEXT_PT)
     doc.line(f"{term('structural_formula', lang)}:  {formula_words(run.structure.formula)}", size=TEXT_PT)
-    branch_words = assembly_lines(sample.analytic.branches, scene, lang)
+    branch_words = assembly_lines(sample.analytic.branches, scene, lang, sample.graphical.positions)
     if branch_words:
         doc.line(f"{term('assembly', lang)}: " + ";  ".join(branch_words), size=TEXT_PT)
     doc.section("positions")
@@ -771,7 +771,7 @@ class _Document:
             f"table(columns: (1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
             f" table.cell(colspan: 2)[#text(size: 10pt, weight: \"bold\")[{text(term('plate_title', lang))}] — #text(size: 10pt)[{text(self.scene.title_in(lang))}]],"
             f" [#text(size: 9pt)[{sheet}]],"
-            f" table.cell(colspan: 3)[#text(size: 8.5pt)[{text(term('scales_heading', lang))}: {scale_text}]],"
+            f" table.cell(colspan: 3)[#text(size: 8.5pt)[{text(term('scale_factors', lang))}: {scale_text}]],"
             f" [#text(size: 8pt)[{text(term('drawn_by', lang))}:]], [#text(size: 8pt)[{text(term('checked_by', lang))}:]], [#text(size: 8pt)[{text(term('date', lang))}:]])"
         )
         inner_w = PAGE[0] - FRAME[0] - FRAME[1]

@@ -18,7 +18,7 @@ from ..i18n import term
 from .._text import subscript
 from ..scene import FRAME, Crank, Scene
 
-__all__ = ["scene_data_lines", "cycle_lines", "namer", "assembly_lines", "group_words", "assembly_text", "units", "formula_words", "KINDS"]
+__all__ = ["scene_data_lines", "cycle_lines", "four_bar_kind", "namer", "assembly_lines", "group_words", "assembly_text", "units", "formula_words", "KINDS"]
 
 
 def namer(scene, lang: str):
@@ -57,14 +57,49 @@ def _side(angle: float, sign: int, lang: str) -> str | None:
     return None
 
 
-def assembly_text(branch, scene, lang: str) -> str | None:
-    """One group's assembly in words, or None for a group with one assembly (or a form not known here)."""
+def _crosses(p: complex, q: complex, r: complex, s: complex) -> bool:
+    """Whether the segments pq and rs cross (touching ends do not count)."""
+    def side(a, b, c):
+        return ((b - a).conjugate() * (c - a)).imag
+
+    return side(p, q, r) * side(p, q, s) < 0 and side(r, s, p) * side(r, s, q) < 0
+
+
+def four_bar_kind(scene, b: str, c: str, d: str, positions) -> str | None:
+    """``"open_four_bar"`` or ``"crossed_four_bar"`` for an RRR group B–C–D closing a four-bar with the crank
+    (O, B on the crank, D on the frame, or the other way round): crossed when the loop O–B–C–D crosses
+    itself; None for any other group or without *positions* (point name -> position [m])."""
+    driver = scene.driver
+    if not positions or not hasattr(driver, "pivot"):
+        return None
+    crank = scene.bodies[driver.link].points
+    frame = scene.bodies[FRAME].points
+    if b in crank and d in frame:
+        loop = (driver.pivot, b, c, d)
+    elif d in crank and b in frame:
+        loop = (driver.pivot, d, c, b)
+    else:
+        return None
+    if not all(p in positions for p in loop):
+        return None
+    o, x, y, z = (complex(positions[p]) for p in loop)
+    return "crossed_four_bar" if _crosses(o, x, y, z) or _crosses(x, y, z, o) else "open_four_bar"
+
+
+def assembly_text(branch, scene, lang: str, positions=None) -> str | None:
+    """One group's assembly in words, or None for a group with one assembly (or a form not known here).
+
+    *positions* (point name -> position [m]), when given, lets a group that
+    closes a four-bar with the crank be called open or crossed.
+    """
     name = namer(scene, lang)
     words = branch.words.strip()
     m = re.fullmatch(rf"({_NAME}) to the (left|right) of ({_NAME})→({_NAME})", words)
     if m:
         c, side, b, d = m.groups()
-        return term("assembly_side", lang).format(c=c, side=term(side, lang), b=b, d=d)
+        text = term("assembly_side", lang).format(c=c, side=term(side, lang), b=b, d=d)
+        kind = four_bar_kind(scene, b, c, d, positions)
+        return f"{term(kind, lang)}, {text}" if kind else text
     m = re.fullmatch(rf"({_NAME}) at the intersection (further along|nearer the start of) ({_NAME}(?:\.{_NAME})?) \(of the two the circle about ({_NAME}) meets\)", words)
     if m:
         c, how, key, b = m.groups()
@@ -86,13 +121,13 @@ def _frame_line(scene, key: str) -> float | None:
     return line.angle if line is not None else None
 
 
-def assembly_lines(branches, scene, lang: str) -> list[str]:
-    """The assembly of every group that has two, one line each: ``group 3–4: C to the left of the line BD, …``."""
+def assembly_lines(branches, scene, lang: str, positions=None) -> list[str]:
+    """The assembly of every group that has two, one line each: ``group 3–4: open four-bar, C to the left of …``."""
     out = []
     for b in branches or ():
         if not b.sign:
             continue
-        words = assembly_text(b, scene, lang)
+        words = assembly_text(b, scene, lang, positions)
         if words:
             out.append(f"{group_words(b.group, lang)}: {words}")
     return out
