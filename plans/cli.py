@@ -233,6 +233,11 @@ def build_parser() -> argparse.ArgumentParser:
     handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg / FILE.png for a file per page")
     handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
     handout.add_argument("--centres", action="store_true", help="a page more per position: the instant centres (Kennedy's theorem) and the velocities from them against analytic")
+    handout.add_argument("--accelerations", type=_accelerations, metavar="WHICH",
+                         help="the positions whose acceleration plans are drawn: 'all' or numbers such as 0,6 "
+                              "(default: two, the middle of the working and of the idle stroke)")
+    handout.add_argument("--scales", choices=("plate", "per-position"), default="plate",
+                         help="plate (default): one k_l, k_v, k_a over the whole handout; per-position: k_v, k_a chosen for each position")
     handout.add_argument("--forces", action="store_true", help="the kinetostatic pages per position: free bodies, force plans, Joukowski's lever (the scene needs masses or loads)")
     handout.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr (shown only when stderr is a terminal)")
     _law_arguments(handout)
@@ -845,6 +850,19 @@ def _is_file(output: str) -> bool:
     return Path(output).suffix.lower() in (".svg", ".pdf", ".png") and not Path(output).is_dir()
 
 
+def _accelerations(text: str):
+    """``all`` or position numbers ``0,6`` (for --accelerations)."""
+    if text.strip().lower() == "all":
+        return "all"
+    try:
+        numbers = [int(part) for part in text.split(",") if part.strip()]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected 'all' or position numbers such as 0,6, got {text!r}") from None
+    if not numbers or any(n < 0 for n in numbers):
+        raise argparse.ArgumentTypeError(f"expected 'all' or position numbers such as 0,6, got {text!r}")
+    return numbers
+
+
 def _handout(args) -> int:
     from ._files import batch
     from .handout import write_handout
@@ -872,6 +890,8 @@ def _handout(args) -> int:
             progress=_progress(args),
             law=args.law,
             start=args.start,
+            accelerations=args.accelerations,
+            scales=args.scales,
         )
     _progress_done(args)
     for path in paths:

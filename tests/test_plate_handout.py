@@ -219,3 +219,28 @@ def test_a_bad_title_or_name_is_refused_naming_its_key(text, key):
     with pytest.raises(plans.errors.PlansError) as caught:
         loads(text + "\n" + BASE)
     assert key in str(caught.value)
+
+
+# --- the command line -------------------------------------------------------------------------------
+
+
+def test_accelerations_on_request_and_a_position_not_there_refused(tmp_path, capsys):
+    from plans.cli import main
+
+    doc = handout(plans.load(example_path("six-bar")), positions=4, accelerations="all")
+    assert sorted(doc.accelerations) == [0, 1, 2, 3] and len([k for k in doc.images if k.startswith("a-")]) == 4
+    assert len({r.graphical.scales["k_a"] for r in doc.runs}) == 1  # all of them at one k_a
+    assert main(["handout", "--example", "six-bar", "--positions", "4", "--accelerations", "0,3", "-o", str(tmp_path / "h.pdf"), "-q"]) == 0
+    assert main(["handout", "--example", "six-bar", "--positions", "4", "--accelerations", "0,9", "-o", str(tmp_path / "x.pdf"), "-q"]) == 2
+    err = capsys.readouterr().err
+    assert "position 9 is not one of the handout's solved positions (0, 1, 2, 3)" in err
+    assert not (tmp_path / "x.pdf").exists()
+
+
+def test_per_position_scales_on_the_command_line_say_so(tmp_path):
+    from plans.cli import main
+
+    assert main(["handout", "--example", "quick-return", "--positions", "4", "--scales", "per-position", "--lang", "sr",
+                 "-o", str(tmp_path / "h.pdf"), "-q"]) == 0
+    text = " ".join(" ".join(_pages((tmp_path / "h.pdf").read_bytes())).split())
+    assert "размере изабране за сваки положај" in text

@@ -216,7 +216,13 @@ def choose_accelerations(run, asked) -> list[int]:
         return [r.index for r in solved]
     if asked is not None:
         known = {r.index for r in solved}
-        return [k for k in asked if k in known]
+        unknown = [k for k in asked if k not in known]
+        if unknown:
+            from ..errors import PlansError
+
+            raise PlansError(f"accelerations: position {unknown[0]} is not one of the handout's solved positions "
+                             f"({', '.join(str(k) for k in sorted(known)) or 'none'}); give 'all' or some of those")
+        return list(dict.fromkeys(asked))
     if len(solved) <= ACCELERATIONS_DEFAULT:
         return [r.index for r in solved]
     phases = stroke_phases(run)
