@@ -442,8 +442,7 @@ def build_handout(
         doc.listing(term("positions_list", lang), entries)
 
     doc.section("velocity-equations")
-    doc.heading(f"{term('vector_equations', lang)}: {term('velocity_plan', lang).lower()}", level=2)
-    doc.equations([s for s in sample.graphical.velocity_plan.steps], name)
+    doc.equations(f"{term('vector_equations', lang)}: {term('velocity_plan', lang).lower()}", sample.graphical.velocity_plan.steps, name)
     doc.section("velocity-plans")
     doc.headed_legend(term("velocity_plans", lang) + (f" ({term('each_from_its_pole', lang)})" if multi else ""),
                       doc.scale_markup("k_v", plate["k_v"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
@@ -460,8 +459,8 @@ def build_handout(
 
     if acceleration_blocks:
         doc.section("acceleration-equations")
-        doc.heading(f"{term('vector_equations', lang)}: {term('acceleration_plan', lang).lower()}", level=2, new_page=True)
-        doc.equations([s for s in here[chosen[0]].graphical.acceleration_plan.steps], name)
+        doc.equations(f"{term('vector_equations', lang)}: {term('acceleration_plan', lang).lower()}", here[chosen[0]].graphical.acceleration_plan.steps,
+                      name, new_page=True)
         doc.section("acceleration-plans")
         doc.headed_legend(term("acceleration_plans", lang),
                           doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
@@ -707,10 +706,13 @@ class _Document:
             items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts[:-1] + [parts[-1]]) + "]")
         self.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 4mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
 
-    def equations(self, steps, name) -> None:
+    def equations(self, heading: str, steps, name, new_page: bool = False) -> None:
+        """The vector equations of the plans' steps under *heading*, with the note on the underlines: one block,
+        never parted from its heading."""
         from .words import group_words
 
-        self.body.append(f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]\n")
+        if new_page and self.body:
+            self.body.append("#pagebreak(weak: true)")
         rows = []
         for step in steps:
             if not step.equations:
@@ -720,8 +722,10 @@ class _Document:
                 first = f"[{text(who)}]" if k == 0 else "[]"
                 cond_cell = f"[${cond}$]" if cond else "[]"
                 rows.append(f"{first}, [${eq}$], {cond_cell}")
-        self.body.append(f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.3mm), align: left + horizon,\n  "
-                         + ",\n  ".join(rows) + ")]\n")
+        self.body.append(f"#block(breakable: false)[#heading(level: 2)[{self.words(heading)}]\n"
+                         f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]\n\n"
+                         f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.3mm), align: left + horizon,\n  "
+                         + ",\n  ".join(rows) + ")]]\n")
 
     def tables(self, tables) -> None:
         """Tables of values, two columns of them on a page."""
