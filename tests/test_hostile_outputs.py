@@ -102,12 +102,12 @@ def test_sweep_writes_no_csv_when_a_diagram_fails(capsys, tmp_path, monkeypatch)
 
 
 def test_handout_that_fails_to_render_creates_no_directory(capsys, tmp_path, monkeypatch):
-    from plans.drawing import formats
+    from plans.pages import handout as pages
 
     def broken(*args, **kwargs):
         raise OSError(5, "Input/output error")
 
-    monkeypatch.setattr(formats, "render_pdf", broken)
+    monkeypatch.setattr(pages, "compile_document", broken)  # the typesetter
     status, _, _ = run(capsys, "handout", "--example", "four-bar", "-o", str(tmp_path / "a" / "b" / "h.pdf"))
     assert status == 2
     assert snapshot(tmp_path) == {}

@@ -300,20 +300,22 @@ def _finite(values, valid) -> np.ndarray:
     return v
 
 
-def _page(title: str, subtitle: str, rows: int) -> tuple[Figure, list]:
-    fig = Figure(figsize=(A4[0] / 25.4, A4[1] / 25.4), dpi=72)
+def _page(title: str, subtitle: str, rows: int, size=A4) -> tuple[Figure, list]:
+    """A page of *size* [mm] (A4 by default; a handout passes its text area, so that the page prints at 100 %)."""
+    fig = Figure(figsize=(size[0] / 25.4, size[1] / 25.4), dpi=72)
+    fig.plans_size = tuple(size)
     from matplotlib.backends.backend_svg import FigureCanvasSVG
 
     FigureCanvasSVG(fig)
     import textwrap
 
-    fig.text(11 / A4[0], 1 - 11 / A4[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
+    fig.text(11 / size[0], 1 - 11 / size[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
     lines = [w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)]
-    fig.text(11 / A4[0], 1 - 19 / A4[1], "\n".join(lines), fontsize=9, ha="left", va="top", linespacing=1.3)
+    fig.text(11 / size[0], 1 - 19 / size[1], "\n".join(lines), fontsize=9, ha="left", va="top", linespacing=1.3)
     # the axes below the subtitle's lines (9 pt at 1.3 line spacing, 4.13 mm a line) and the positions' numbers
-    top = 1 - max(36.0, 19.0 + 4.13 * len(lines) + 9.0) / A4[1]
-    bottom = 26 / A4[1]
-    axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / A4[0], "right": 1 - 40 / A4[0], "top": top, "bottom": bottom, "hspace": 0.2})
+    top = 1 - max(36.0, 19.0 + 4.13 * len(lines) + 9.0) / size[1]
+    bottom = 26 / size[1]
+    axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / size[0], "right": 1 - 40 / size[0], "top": top, "bottom": bottom, "hspace": 0.2})
     return fig, list(np.atleast_1d(axes))
 
 
@@ -330,7 +332,8 @@ def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: b
     if has_clipped:
         handles.append(Line2D([], [], color="#000000", ls="none", marker="^", ms=3.5, label=term("clipped", lang)))
     if handles:
-        fig.legend(handles=handles, loc="lower left", bbox_to_anchor=(24 / A4[0], 5 / A4[1]), ncol=2, fontsize=TEXT, frameon=False)
+        size = getattr(fig, "plans_size", A4)
+        fig.legend(handles=handles, loc="lower left", bbox_to_anchor=(24 / size[0], 5 / size[1]), ncol=2, fontsize=TEXT, frameon=False)
 
 
 @dataclass
@@ -516,7 +519,7 @@ def _name(symbol: str, sub: str) -> str:
     return rf"${symbol}_{{\mathrm{{{safe}}}}}$"
 
 
-def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None) -> list[tuple[str, Figure]]:
+def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None, size=A4) -> list[tuple[str, Figure]]:
     """The cycle diagrams as (name, Figure) pairs: ``links``, ``points`` and, if any, ``sliders``.
 
     Parameters
@@ -533,6 +536,8 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     cycle : plans.motion.Cycle, optional
         The law the sweep was solved under (``cycle.solve()``): stated under
         the title; a rocker input's swing is drawn against time.
+    size : (float, float)
+        The page [mm]: A4 portrait by default; a handout gives its text area.
     """
     scene = analytic.scene
     start = float(analytic.driver[0])  # position 0's angle, for the note φ₂ = start + Δφ
@@ -554,7 +559,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         for quantity, ylabel, unit in quantities:
             panel = _quantity_panel(analytic, quantity, valid, lang, unit, start=start, swing=_swing(cycle))
             panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang) if quantity == "phi" else [panel])]
-        fig, axes = _page(title, subtitle + "\n" + words, len(panels))
+        fig, axes = _page(title, subtitle + "\n" + words, len(panels), size)
         clipped = False
         for ax, (panel, ylabel, unit) in zip(axes, panels):
             _plot_panel(ax, x, panel, ylabel, marks)

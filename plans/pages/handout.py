@@ -43,7 +43,7 @@ from .equations import step_lines
 from .typesetting import compile_document, image, mixed, string, text
 from .words import assembly_lines, formula_words, namer, units
 
-__all__ = ["Handout", "build_handout", "ORDER", "ACCELERATIONS_DEFAULT"]
+__all__ = ["Handout", "build_handout", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
 
 #: The sections of a multi-position handout, in the plate's order (names as :attr:`Handout.order` lists them).
 ORDER = ("data", "positions", "velocity-equations", "velocity-plans", "acceleration-equations", "acceleration-plans",
@@ -62,6 +62,8 @@ GUTTER = 5.0
 #: (two across, three down a page; one position's larger); the acceleration plans' cells: :func:`_acceleration_cells`
 POSITIONS_BOX = (TEXT_WIDTH, 150.0)
 VELOCITY_CELL = ((TEXT_WIDTH - GUTTER) / 2, 62.0)
+#: the page of cycle diagrams [mm]: the text area (a little short of it), so that it prints at 100 %, its 8 pt type 8 pt
+DIAGRAM_PAGE = (TEXT_WIDTH, TEXT_HEIGHT - 4.0)
 TEXT_PT = 9.5
 SMALL_PT = 8.0
 
@@ -477,6 +479,19 @@ def build_handout(
     doc.section("tables")
     doc.heading(term("comparison", lang), level=2, new_page=True)
     doc.tables([(f"{term('position', lang)} {h.index}:  {h.label}" if multi else h.label, _table(h, lang)) for h in here.values()])
+    # what a student measures on the plans of the chosen positions and what it gives (segment, mm, × k, = value)
+    from ..drawing.blocks import plan_readings
+
+    readings = []
+    for k in chosen or [sample.index]:
+        h = here[k]
+        where = f"{term('position', lang)} {h.index}: " if multi else ""
+        for kind in ("velocity", "acceleration"):
+            rows = plan_readings(h.graphical, kind, lang)
+            if rows:
+                readings.append((f"{where}{term(kind + '_plan', lang)}: {term('readings', lang)}", rows))
+    if readings:
+        doc.tables(readings, aligns="(left, left, right, left, right)")
 
     loops_of = [here[k] for k in chosen] or [sample]
     doc.section("loops")
@@ -496,7 +511,8 @@ def build_handout(
 
         doc.section("diagrams")
         marked = run.motion if run.motion is not None else run.positions
-        for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense):
+        for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense,
+                                                  size=DIAGRAM_PAGE):
             doc.full_page(f"diagram-{page_name}", figure_svg(fig, lang))
         for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
             doc.full_page(f"kinematic-{number}", figure_svg(fig, lang))
@@ -727,8 +743,8 @@ class _Document:
                          f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.3mm), align: left + horizon,\n  "
                          + ",\n  ".join(rows) + ")]]\n")
 
-    def tables(self, tables) -> None:
-        """Tables of values, two columns of them on a page."""
+    def tables(self, tables, aligns: str = "(left, right, right, right, right)") -> None:
+        """Tables of values, two columns of them on a page (*aligns*: Typst's alignment of the columns)."""
         parts = []
         for heading, rows in tables:
             if not rows:
@@ -741,7 +757,7 @@ class _Document:
                 weight = "bold" if i == 0 else "regular"
                 body.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in cells))
             parts.append(f"block(breakable: false)[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{self.words(heading)}] \\\n"
-                         f"#table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: (left, right, right, right, right),"
+                         f"#table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns},"
                          f" table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]")
         self.body.append(f"#text(size: {SMALL_PT}pt)[#columns(2, gutter: {GUTTER}mm)[" + "\n".join("#" + p for p in parts) + "]]\n")
 
