@@ -215,8 +215,10 @@ def cycle_lines(run, lang: str = "en") -> list[str]:
     from ..motion import four_bar_loops
 
     lines = []
-    if run.motion is not None:
-        lines.append(run.motion.law.describe(lang, run.scene.driver.link))
+    if run.motion is not None:  # a long law in lines a page's width (about 110 characters), the rest indented
+        import textwrap
+
+        lines += textwrap.wrap(run.motion.law.describe(lang, run.scene.driver.link), 110, subsequent_indent="    ")
     for loop in four_bar_loops(run.scene, run.structure):
         turning = loop.turning_links()
         turns = f"{', '.join(turning)}: {term('turn_fully', lang)}" if turning else term("none_turns", lang)
