@@ -62,6 +62,8 @@ GUTTER = 5.0
 #: (two across, three down a page; one position's larger); the acceleration plans' cells: :func:`_acceleration_cells`
 POSITIONS_BOX = (TEXT_WIDTH, 150.0)
 VELOCITY_CELL = ((TEXT_WIDTH - GUTTER) / 2, 62.0)
+#: room [mm] a centres page keeps for its heading (two lines), Kennedy's statement and the legend (two lines)
+CENTRES_PAGE_TEXT = 42.0
 #: the page of cycle diagrams [mm]: the text area (a little short of it), so that it prints at 100 %, its 8 pt type 8 pt
 DIAGRAM_PAGE = (TEXT_WIDTH, TEXT_HEIGHT - 4.0)
 TEXT_PT = 9.5
@@ -607,7 +609,9 @@ def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
     except PlansError as exc:
         doc.line(str(exc), size=TEXT_PT)
         return
-    box = (TEXT_WIDTH, 150.0)
+    # the drawing gets what the page leaves beside its heading, the legend and the circle diagram with the table
+    diagram = circle_diagram_svg(result, lang)
+    box = (TEXT_WIDTH, min(150.0, TEXT_HEIGHT - CENTRES_PAGE_TEXT - max(diagram.height, 55.0)))
     k = k_l
     block = centres_svg(result, k, lang, room_min=ROOM_MIN)
     for _ in range(8):
@@ -617,7 +621,6 @@ def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
         block = centres_svg(result, k, lang, room_min=ROOM_MIN)
     doc.figure(f"centres-{h.index}", block)
     doc.line(f"{term('centres_legend', lang)};  {term('centres_edge_legend', lang)}", size=SMALL_PT)
-    diagram = circle_diagram_svg(result, lang)
     doc.beside((f"circle-{h.index}", diagram), centres_page_table(result, comparisons, lang), centres_rules(lang))
 
 
