@@ -418,12 +418,14 @@ def _solve(args) -> int:
         scenes = [scene.at(value) for value in _listed_positions(scene, args.at)]
     else:
         scenes = [scene]
-    from .motion import cycle_summary, cycle_text
-
-    cycle = cycle_summary(args.loaded_scene)  # the law, Grashof classes, strokes: the scene file's, at every position asked for
     documents, tables, solutions = [], [], []
+    cycle: dict = {}  # the law, Grashof classes, strokes: the scene file's, the same at every position asked for (filled below)
     for k, one in enumerate(scenes):
         analytic = solve(one, warn_condition=args.warn_condition)
+        if not cycle:  # after the scene's own errors (solve's): what the cycle says of the scene file
+            from .motion import cycle_summary
+
+            cycle.update(cycle_summary(args.loaded_scene))
         graphical = comparisons = None
         if not args.analytic_only:
             from .compare import compare
@@ -452,6 +454,8 @@ def _solve(args) -> int:
     if args.json:
         text = format_json(documents[0] if len(scenes) == 1 else documents)
     else:
+        from .motion import cycle_text
+
         text = "\n".join(tables) + cycle_text(cycle)
     for analytic, graphical in solutions:
         _warn_solution(analytic, graphical)
@@ -615,9 +619,15 @@ def _sweep(args) -> int:
         raise _nowhere(scene, positions)
     if lost:
         _warn(f"the mechanism is not solved at {lost} of {args.steps} positions; their rows have assembled = 0 and empty cells")
-    if cycle.law.kind != "harmonic":  # a swing runs there and back over the same angles: its limits are not losses
-        for message in analyse_sweep(analytic, args.warn_condition).messages():
-            _warn(message)
+    report = analyse_sweep(analytic, args.warn_condition)
+    crossed = report.crossed
+    if cycle.law.kind == "harmonic":  # a swing turns back at its limit positions, where its limiting group lines up
+        limits = cycle.law.limits
+        step = 2 * math.pi * max(limits.swing, 1e-9) / len(positions)  # (a grid step of the swing, in crank angle, generously)
+        crossed = tuple(c for c in crossed if not (c.group == limits.group and min(
+            abs(math.remainder(c.nearest - x, 2 * math.pi)) for x in (limits.lo, limits.hi)) <= step))
+    for message in [str(x) for x in report.lost] + [str(x) for x in crossed]:
+        _warn(message)
     stated = [cycle.law.describe(args.lang, driver.link)]
     found = strokes(scene, args.law, analytic.structure)
     if found is not None:
@@ -633,13 +643,13 @@ def _sweep(args) -> int:
             if args.format == "svg":
                 from .drawing.diagrams import write_cycle_diagrams
 
-                paths = write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components, cycle=cycle)
+                paths = write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components, cycle=cycle, extremes=found)
             else:
                 from ._files import replace_all
                 from .drawing.diagrams import draw_cycle_diagrams
                 from .drawing.formats import render
 
-                figures = draw_cycle_diagrams(analytic, marked=marked, lang=args.lang, components=args.components, cycle=cycle)
+                figures = draw_cycle_diagrams(analytic, marked=marked, lang=args.lang, components=args.components, cycle=cycle, extremes=found)
                 paths = replace_all({Path(args.plot) / f"{name}.{args.format}": render(fig, args.format) for name, fig in figures})
             paths = list(paths) + _kinematic_diagrams(scene, args)
     if not args.output:

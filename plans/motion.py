@@ -58,7 +58,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .errors import SceneError
+from .errors import PlansError, SceneError
 from .scene import FRAME, Crank, Scene
 
 __all__ = [
@@ -1191,7 +1191,8 @@ def cycle_summary(scene: Scene, law: str | None = None, structure=None) -> dict:
     """What ``plans solve --json`` states of the scene's cycle (key ``"cycle"``), SI units with the unit in the key.
 
     ``law``: the kind, where it came from and its words (None with ``law_error``,
-    the reason, when the driver cannot follow one: a driver at rest);
+    the reason, when the driver cannot follow one: a driver at rest; ``strokes_error``
+    likewise when the strokes cannot be timed under it);
     ``limits_deg``: a rocker input's limit angles, else None;
     ``four_bar_loops``: per loop its group, links, lengths [m], Grashof class
     and the links that turn fully; ``strokes``: :meth:`Strokes.as_dict` or None.
@@ -1204,7 +1205,7 @@ def cycle_summary(scene: Scene, law: str | None = None, structure=None) -> dict:
     try:
         the_law = driver_law(scene, law, structure)
         out["law"] = {"kind": the_law.kind, "source": the_law.source, "words": the_law.describe("en", scene.driver.link)}
-    except SceneError as exc:
+    except PlansError as exc:  # a driver at rest has no cycle; the instant is still solved
         out["law_error"] = str(exc)
     limits = the_law.limits if the_law is not None else None
     out["limits_deg"] = None if limits is None else [math.degrees(limits.lo), math.degrees(limits.hi)]
@@ -1223,8 +1224,8 @@ def cycle_summary(scene: Scene, law: str | None = None, structure=None) -> dict:
     if the_law is not None:
         try:
             found = strokes(scene, law, structure, _law=the_law)
-        except SceneError:
-            found = None
+        except PlansError as exc:  # (a uniform law that cannot cover a stroke): said, not silently left out
+            out["strokes_error"] = str(exc)
     out["strokes"] = None if found is None else found.as_dict()
     return out
 
@@ -1234,6 +1235,8 @@ def cycle_text(summary: dict) -> str:
     lines = ["", "cycle"]
     law = summary.get("law")
     lines.append(f"  {law['words']}" if law else f"  driver law: none ({summary.get('law_error', '')})")
+    if summary.get("strokes_error"):
+        lines.append(f"  strokes not stated: {summary['strokes_error']}")
     if summary["limits_deg"] is not None:
         lo, hi = summary["limits_deg"]
         lines.append(f"  the input link cannot turn fully: it swings between its limit positions {lo:.2f}° and {hi:.2f}°".replace("-", "−"))

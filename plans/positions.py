@@ -187,7 +187,38 @@ def cycle_sweep(scene: Scene, structure=None, steps: int = CYCLE_STEPS, *, law: 
     if not _is_crank(scene) and scene.driver.stroke is None:
         return solve(scene, np.asarray([scene.driver.s], dtype=float), structure, allow_partial=True)
     count = steps if _is_crank(scene) else steps + 1
-    return driver_cycle(scene, count, law=law, start=start, structure=structure).solve(structure)
+    return _geometric_cycle(scene, structure, count, law, start, closed=False)[0].solve(structure)
+
+
+def _geometric_cycle(scene: Scene, structure, count: int, law, start: str, *, closed: bool):
+    """(Cycle, strokes) of the driver's law; for a drawing of the scene's own instant, whose slots, guides and frame
+    need only where the mechanism goes, a driver that cannot follow a law over a cycle (at rest, or stopping under a
+    uniform law) moves over its cycle at the scene's own rates instead, positions from the scene's own (strokes None)."""
+    from .motion import driver_cycle, strokes
+
+    try:
+        return driver_cycle(scene, count, law=law, start=start, closed=closed, structure=structure), strokes(scene, law, structure)
+    except SceneError:
+        if _is_crank(scene):
+            n = count + 1 if closed else count
+            at = [scene.driver.phi + _sense(scene) * 2 * math.pi * k / count for k in range(n)]
+        else:
+            a, b = _stroke(scene)
+            at = [a + (b - a) * k / (count - 1) for k in range(count)] if count > 1 else [a]
+        return _held_cycle(scene, at), None
+
+
+def _held_cycle(scene: Scene, at: list):
+    """A Cycle at positions *at* with the scene's own rates held (geometry only: its t is NaN)."""
+    from .motion import Cycle, DriverLaw
+
+    d = scene.driver
+    crank = _is_crank(scene)
+    rate, acc = (d.omega, d.epsilon) if crank else (d.velocity, d.acceleration)
+    x0 = d.phi if crank else d.s
+    n = len(at)
+    law = DriverLaw("constant", crank, x0, rate, acc, source="scene")
+    return Cycle(scene, law, np.asarray(at, dtype=float), np.full(n, np.nan), np.full(n, float(rate)), np.full(n, float(acc)))
 
 
 #: Positions of a cycle the scheme's frame is chosen over (every 5° of a crank's turn).
@@ -461,7 +492,7 @@ class PositionsRun:
     def diagrams(self, *, lang: str = "en", components: bool = False) -> "Diagrams":
         """The kinematic diagrams over the cycle, the positions of the run marked."""
         return Diagrams(self.cycle, marked=self.motion if self.motion is not None else self.positions, lang=lang,
-                        components=components, cycle=self.dense)
+                        components=components, cycle=self.dense, extremes=self.strokes)
 
     def plot(self, ax=None, *, lang: str = "en"):
         """Draw the plan of positions into *ax* (a new figure when None); returns the Axes."""
@@ -491,18 +522,20 @@ class Diagrams:
     >>> d.plot("omega")                                   # doctest: +SKIP
     """
 
-    def __init__(self, analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None):
+    def __init__(self, analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None, extremes=None):
         self.analytic = analytic
         self.marked = marked
         self.lang = lang
         self.components = components
         self.cycle = cycle  # the law the sweep was solved under (plans.motion.Cycle), stated on the diagrams
+        self.extremes = extremes  # the output's extreme positions (plans.motion.Strokes): 0′ marked
 
     def figures(self) -> list:
         """(name, Figure) pairs: ``links``, ``points`` and, with prismatic pairs, ``sliders``."""
         from .drawing.diagrams import draw_cycle_diagrams
 
-        return draw_cycle_diagrams(self.analytic, marked=self.marked, lang=self.lang, components=self.components, cycle=self.cycle)
+        return draw_cycle_diagrams(self.analytic, marked=self.marked, lang=self.lang, components=self.components, cycle=self.cycle,
+                                   extremes=self.extremes)
 
     def plot(self, quantity: str = "omega", ax=None):
         """One diagram (``"omega"``, ``"v"``, ``"coriolis"`` …) into *ax* (a new figure when None); returns the Axes."""
@@ -685,9 +718,12 @@ def run_positions(
         sweep = motion.solve(structure)
     if _is_crank(scene) or scene.driver.stroke is not None:
         count = cycle_steps if _is_crank(scene) else cycle_steps + 1
-        dense = driver_cycle(scene, count, law=law, start=start, closed=_is_crank(scene), structure=structure)
+        if motion is not None:  # a cycle of positions: the law must cover it (its errors name the key)
+            dense = driver_cycle(scene, count, law=law, start=start, closed=_is_crank(scene), structure=structure)
+            found = strokes(scene, law, structure)
+        else:  # the scene's own instant: the cycle only for where the mechanism goes (slots, guides, the frame)
+            dense, found = _geometric_cycle(scene, structure, count, law, start, closed=_is_crank(scene))
         cycle = dense.solve(structure)
-        found = strokes(scene, law, structure)
     else:
         cycle = solve(scene, np.asarray(values, dtype=float), structure, allow_partial=True)
 

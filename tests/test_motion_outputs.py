@@ -138,3 +138,30 @@ def test_output_key_in_a_scene(tmp_path):
     assert strokes(scene).output.link == "4"
     with pytest.raises(plans.SceneError, match="output.point.*unknown key 'point'; allowed keys: link"):
         plans.loads(plans.example_path("six-bar").read_text() + '\n[output]\npoint = "C"\n')
+
+
+def test_the_other_extreme_position_is_marked_0_prime():
+    """four-bar: position 0 at the rocker's extreme (36.11°), 0′ at the other (240.1°): 204.0° turned from 0 (θ = 23.97°)."""
+    scene = plans.load(plans.example_path("four-bar"))
+    run = run_positions(scene, 12)
+    figures = dict(run.diagrams().figures())
+    top = figures["links"].axes[0]
+    assert "0′" in [t.get_text() for t in top.texts]
+    dotted = [line for line in top.get_lines() if line.get_linestyle() == ":" and len(set(line.get_xdata())) == 1]
+    assert [float(line.get_xdata()[0]) for line in dotted] == pytest.approx([math.degrees(run.strokes.working_arc)])
+    assert math.degrees(run.strokes.working_arc) == pytest.approx(180 + 23.9749, abs=1e-3)
+    # the output is at rest there: ω₄ = 0 at 0′
+    other = plans.solve(scene, [run.strokes.other_position], rates=(10.0, 0.0))
+    assert abs(float(other.links["4"].omega[0])) < 1e-9
+
+
+def test_a_driver_at_rest_draws_its_instant_but_has_no_cycle(capsys, tmp_path):
+    scene = tmp_path / "rest.toml"
+    scene.write_text(plans.example_path("four-bar").read_text().replace('omega = "10 rad/s"', "omega = 0").replace('epsilon = "5 rad/s^2"', "epsilon = 0"))
+    status, out, _ = _run(capsys, "draw", str(scene), "-o", str(tmp_path / "one"))
+    assert status == 0 and (tmp_path / "one" / "sheet.svg").exists()  # the instant: all its plans at the pole
+    status, out, err = _run(capsys, "draw", str(scene), "--positions", "4", "-o", str(tmp_path / "four"))
+    assert status == 2 and "driver.law" in err and "does not move" in err and not (tmp_path / "four").exists()
+    status, out, _ = _run(capsys, "solve", str(scene), "--json", "--analytic-only")
+    cycle = json.loads(out)["cycle"]
+    assert cycle["law"] is None and "does not move" in cycle["law_error"] and cycle["four_bar_loops"][0]["grashof_class"] == "crank-rocker"

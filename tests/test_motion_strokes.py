@@ -212,3 +212,27 @@ def test_quick_return_by_hand():
     assert st.theta == pytest.approx(math.pi - short, abs=1e-8)
     assert st.K == pytest.approx((2 * math.pi - short) / short, rel=1e-8)
     assert st.travel == pytest.approx(2 * lever * r / d, rel=1e-9)
+
+
+def test_solver_rates_and_branches_arguments():
+    """plans.solve(..., rates=(ω, ε)) per position: velocities scale with ω, accelerations are ω²·(ε = 0 part) + ε·(ω = 1
+    velocity part) — checked against two solves of the scene at its own rates; bad shapes and groups are refused."""
+    scene = plans.load(plans.example_path("four-bar"))
+    phi = np.radians([10.0, 80.0, 200.0, 300.0, 350.0])
+    omega, epsilon = np.array([1.0, -2.0, 3.0, 0.5, 7.0]), np.array([0.0, 4.0, -1.0, 2.0, 0.3])
+    got = plans.solve(scene, phi, rates=(omega, epsilon))
+    unit = plans.solve(replace(scene, driver=replace(scene.driver, omega=1.0, epsilon=0.0)), phi)
+    tangential = plans.solve(replace(scene, driver=replace(scene.driver, omega=0.0, epsilon=1.0)), phi)
+    for name in ("B", "M"):
+        assert got.points[name].v == pytest.approx(omega * unit.points[name].v, rel=1e-12, abs=1e-15)
+        expected = omega**2 * unit.points[name].a + epsilon * tangential.points[name].a
+        assert got.points[name].a == pytest.approx(expected, rel=1e-11, abs=1e-13)
+    with pytest.raises(ValueError, match="one value per position"):
+        plans.solve(scene, phi, rates=(omega[:3], 0.0))
+    with pytest.raises(ValueError, match="no group 'RRR\\(4,5\\)'"):
+        plans.solve(scene, phi, branches={"RRR(4,5)": -1})
+    # the other branch of the four-bar: B mirrored in the line A–D
+    other = plans.solve(scene, phi, branches={"RRR(3,4)": np.array([-1, 1, -1, 1, -1])})
+    A, B, D = np.asarray(got.points["A"].r), np.asarray(got.points["B"].r), 0.22 + 0j
+    mirrored = A + (D - A) * np.conj((B - A) / (D - A))
+    assert np.asarray(other.points["B"].r) == pytest.approx(np.where([True, False, True, False, True], mirrored, B), abs=1e-12)

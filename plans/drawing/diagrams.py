@@ -88,6 +88,8 @@ NEAR = {"facecolor": "none", "edgecolor": "#000000", "hatch": "\\\\\\\\"}
 MARK = {"color": "#202020", "lw": 0.45, "ls": "--"}
 #: Size [pt] of every text in a diagram but the page's title and subtitle: tick labels, legends, notes, position numbers.
 TEXT = 8.0
+#: The label of the output's other extreme position (the course's 0′), marked dotted beside the numbered positions.
+OTHER_EXTREME = "0′"
 
 
 def _number(value: float, lang: str, digits: int = 3) -> str:
@@ -281,7 +283,7 @@ def _decorate(ax, x, invalid, near, marks, lang, *, numbers: bool, limits: tuple
         grow = max(0.0, widest - (b - a)) / 2
         ax.axvspan(a - grow, b + grow, linewidth=0.0, zorder=0.4, **NEAR)
     for k, xm in marks:
-        ax.axvline(xm, zorder=0.6, **MARK)
+        ax.axvline(xm, zorder=0.6, **(MARK if k != OTHER_EXTREME else {**MARK, "ls": ":"}))
         ax.plot([xm], [1.0], marker="v", ms=3.5, color=MARK["color"], transform=ax.get_xaxis_transform(), clip_on=False, zorder=3, label="_mark")
         if numbers:
             ax.text(xm, 1.025, str(k), transform=ax.get_xaxis_transform(), ha="center", va="bottom", fontsize=TEXT, color="#202020")
@@ -519,7 +521,20 @@ def _name(symbol: str, sub: str) -> str:
     return rf"${symbol}_{{\mathrm{{{safe}}}}}$"
 
 
-def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None, size=A4) -> list[tuple[str, Figure]]:
+def _other_extreme(cycle, extremes, x, start: float) -> list[tuple[str, float]]:
+    """The mark of the output's other extreme position 0′ (:class:`plans.motion.Strokes`) on the axis x of a cycle."""
+    if cycle is None or extremes is None or cycle.start != "output" or not len(x):
+        return []
+    if _swing(cycle):
+        at = ((extremes.other_phase - float(cycle.phase[0])) % (2 * math.pi)) / cycle.law.frequency
+    elif cycle.law.crank:
+        at = math.degrees(cycle.law.sense * (extremes.other_position - start)) % 360.0
+    else:
+        at = extremes.other_position * 1e3
+    return [(OTHER_EXTREME, float(at))] if float(np.nanmin(x)) <= at <= float(np.nanmax(x)) else []
+
+
+def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None, extremes=None, size=A4) -> list[tuple[str, Figure]]:
     """The cycle diagrams as (name, Figure) pairs: ``links``, ``points`` and, if any, ``sliders``.
 
     Parameters
@@ -536,12 +551,18 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     cycle : plans.motion.Cycle, optional
         The law the sweep was solved under (``cycle.solve()``): stated under
         the title; a rocker input's swing is drawn against time.
+    extremes : plans.motion.Strokes, optional
+        With a cycle that starts at the output's extreme position: its other
+        extreme position is marked 0′ (dotted).
     size : (float, float)
         The page [mm]: A4 portrait by default; a handout gives its text area.
     """
     scene = analytic.scene
     start = float(analytic.driver[0])  # position 0's angle, for the note φ₂ = start + Δφ
     analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked, cycle)
+    if not rolled:  # 0′ dotted, unless it falls on a numbered position's line (within 1.2 % of the axis: it reads as that)
+        span = limits[1] - limits[0]
+        marks = marks + [m for m in _other_extreme(cycle, extremes, x, start) if all(abs(m[1] - xm) > 0.012 * span for _, xm in marks)]
     valid = np.asarray(analytic.valid, dtype=bool)
     invalid = ~valid
     near = _near_dead(analytic, ring=rolled)
@@ -613,7 +634,7 @@ def _unwrap_nan(phi, valid) -> np.ndarray:
     return out
 
 
-def write_cycle_diagrams(analytic, directory, *, marked=None, lang: str = "en", components: bool = False, cycle=None) -> list[Path]:
+def write_cycle_diagrams(analytic, directory, *, marked=None, lang: str = "en", components: bool = False, cycle=None, extremes=None) -> list[Path]:
     """Write ``links.svg``, ``points.svg`` and (with prismatic pairs) ``sliders.svg`` into *directory*, atomically.
 
     Parameters are those of :func:`draw_cycle_diagrams`.
@@ -625,7 +646,7 @@ def write_cycle_diagrams(analytic, directory, *, marked=None, lang: str = "en", 
     from .svg import render_svg
 
     directory = Path(directory)
-    contents = {directory / f"{name}.svg": render_svg(fig) for name, fig in draw_cycle_diagrams(analytic, marked=marked, lang=lang, components=components, cycle=cycle)}
+    contents = {directory / f"{name}.svg": render_svg(fig) for name, fig in draw_cycle_diagrams(analytic, marked=marked, lang=lang, components=components, cycle=cycle, extremes=extremes)}
     return replace_all(contents)  # creates the directory
 
 

@@ -443,6 +443,10 @@ def build_handout(
                 stroke = _stroke(r, working, lang, phases)
                 entry += f"  ({stroke})" if stroke else ""
             entries.append(entry)
+        if run.strokes is not None and run.motion is not None and run.motion.start == "output" and run.strokes.law.crank:
+            from ..positions import position_text
+
+            entries.append(f"0′:  {position_text(run.scene, run.strokes.other_position)}")  # the other extreme position
         doc.listing(term("positions_list", lang), entries)
 
     doc.section("velocity-equations")
@@ -514,7 +518,7 @@ def build_handout(
         doc.section("diagrams")
         marked = run.motion if run.motion is not None else run.positions
         for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense,
-                                                  size=DIAGRAM_PAGE):
+                                                  extremes=run.strokes, size=DIAGRAM_PAGE):
             doc.full_page(f"diagram-{page_name}", figure_svg(fig, lang))
         for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
             doc.full_page(f"kinematic-{number}", figure_svg(fig, lang))
