@@ -178,8 +178,13 @@ def test_the_same_pdf_every_time(four_bar_en):
 
 
 def test_every_example_gives_its_title_and_names_in_five_languages():
-    for name in plans.scene.example_names():
-        scene = plans.load(example_path(name))
+    from pathlib import Path
+
+    paths = [example_path(name) for name in plans.scene.example_names()]
+    paths += sorted((Path(plans.__file__).parent / "examples" / "loaded").glob("*.toml"))  # the loaded ones too
+    assert len(paths) >= 18
+    for path in paths:
+        scene, name = plans.load(path), Path(path).stem
         assert set(scene.titles) == {"en", "sr", "ru", "bg", "sl"}, name
         assert not re.search(r"\((?:E\d|[RP]{3})\)", scene.title), scene.title
         guides = {line for body in scene.bodies.values() if not body.block for line in body.lines}
