@@ -180,7 +180,7 @@ def test_sweep_plot_without_output_prints_the_csv(capsys, tmp_path):
     assert status == 0
     rows = out.splitlines()
     assert rows[0].startswith("driver_phi_deg,") and len(rows) == 9
-    assert sorted(os.listdir(tmp_path / "d")) == ["links.svg", "points.svg"]
+    assert sorted(os.listdir(tmp_path / "d")) == ["kinematic.svg", "links.svg", "points.svg"]  # and the output link's kinematic diagrams (cycle-diagrams)
 
 
 def test_draw_positions_removes_only_sheets_plans_wrote(capsys, tmp_path):
