@@ -123,6 +123,9 @@ def step_lines(step, name=lambda word: word) -> list[tuple[str, str]]:
     for text in step.equations:
         text = guide_names(text)
         main, _, rest = text.partition("  (")
+        if not rest and text.endswith(")") and " (" in text:  # one space before the conditions (a linear driver's)
+            cut = text.rfind(" (")
+            main, rest = text[:cut], text[cut + 2:]
         condition = rest[:-1] if rest.endswith(")") else rest
         out.append((equation_math(main.strip(), known, found, name), condition_math(condition, name) if condition else ""))
     return out
