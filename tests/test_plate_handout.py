@@ -249,3 +249,30 @@ def test_per_position_scales_on_the_command_line_say_so(tmp_path):
                  "-o", str(tmp_path / "h.pdf"), "-q"]) == 0
     text = " ".join(" ".join(_pages((tmp_path / "h.pdf").read_bytes())).split())
     assert "размере изабране за сваки положај" in text
+
+
+def _centre(svg: str, gid: str) -> complex:
+    """The centre of a drawn circle (its path's points averaged), SVG y turned up."""
+    import re
+
+    m = re.search(rf'id="{gid}"[^>]*>\s*<path d="([^"]+)"', svg)
+    assert m, gid
+    nums = [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?", m.group(1))]
+    xs, ys = nums[0::2], nums[1::2]
+    return complex((max(xs) + min(xs)) / 2, -(max(ys) + min(ys)) / 2)
+
+
+def test_the_plan_of_positions_draws_the_other_extreme_position(quick_return_sr):
+    """Position 0 is the output's extreme that starts the working stroke; 0′, the other, is drawn dash-dotted and
+    numbered (A₀′): the crank pin there lies at the crank angle plans.motion gives for 0′, as seen from O."""
+    import cmath
+    import math
+
+    from plans.motion import strokes
+
+    doc, _ = quick_return_sr
+    svg = doc.images["positions"].decode()
+    assert 'id="positions-link-extreme-2"' in svg and "A₀′" in svg
+    other = strokes(doc.runs[0].scene).other_position  # the crank angle of 0′ [rad]
+    drawn = _centre(svg, "positions-mark-extreme-A") - _centre(svg, "positions-pin-O")
+    assert math.degrees(abs(cmath.phase(drawn / cmath.exp(1j * other)))) < 1.0

@@ -101,11 +101,13 @@ def legend_svg(plans, lang: str = "en") -> SvgBlock:
     return _sketched("legend", draw, lang)
 
 
-def positions_svg(positions_run, k_l: float, lang: str = "en") -> SvgBlock:
-    """The plan of positions of a multi-position run at *k_l*: every position and the paths of the points."""
+def positions_svg(positions_run, k_l: float, lang: str = "en", extremes: dict | None = None) -> SvgBlock:
+    """The plan of positions of a multi-position run at *k_l*: every position and the paths of the points (and the
+    output's other extreme position, *extremes* ``{"0′": GraphicalSolution}``)."""
     from .positions_plan import draw_positions_into
 
-    return _sketched("positions", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l, heading=False), lang)
+    return _sketched("positions", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l, heading=False,
+                                                                     extremes=extremes), lang)
 
 
 def centres_svg(result, k_l: float, lang: str = "en", room_min: float | None = None) -> SvgBlock:
