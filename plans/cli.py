@@ -147,7 +147,7 @@ DESCRIPTIONS = {
     "linear-arm": "a slide carrying an arm; a rod in a sleeve welded to a rocker; a block on the moving rod",
     "wedge": "a wedge pushed along the floor lifts a follower sliding in a vertical guide",
     "scotch-yoke": "a crank whose pin slides in the slot of a yoke that moves straight back and forth",
-    "rocker-limit": "a non-Grashof four-bar whose input cannot turn fully: it swings between its two limit positions",
+    "rocker-limit": "a four-bar whose input cannot turn fully: it swings between its two limit positions",
 }
 
 

@@ -141,6 +141,8 @@ def test_the_handout_source_underlines_the_four_bar_equations(four_bar_en):
 
 
 def _english(text: str, allowed=()) -> set[str]:
+    # the unit mm (as the course writes it) runs into the next label in the PDF's text ("51 mmP₁₃"): split there
+    text = re.sub(r"mm(?=[A-Z])", "mm ", text)
     return {w for w in re.findall(r"[A-Za-z]{3,}", text) if w.lower() not in allowed}
 
 

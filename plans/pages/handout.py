@@ -619,6 +619,7 @@ def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
     when the page cannot hold it), the circle diagram, the rules and the table."""
     from ..centres import instant_centres
     from ..compare import compare_centres
+    from ..drawing.centres import CentresSizer
     from ..drawing.centres_page import ROOM_MIN, centres_page_table, centres_rules
     from ..drawing.svgblocks import centres_svg, circle_diagram_svg
     from ..errors import PlansError
@@ -636,9 +637,17 @@ def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
     # the drawing gets what the page leaves beside its heading, the legend and the circle diagram with the table
     diagram = circle_diagram_svg(result, lang)
     box = (TEXT_WIDTH, min(150.0, TEXT_HEIGHT - CENTRES_PAGE_TEXT - max(diagram.height, 55.0)))
+    # the plate's k_l, coarser only where the page cannot hold it: sizes from geometry (two drawings of the
+    # mechanism alone, plans.drawing.centres.CentresSizer), the page drawn at the k_l chosen
+    sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
     k = k_l
+    for _ in range(24):
+        width, height = sizer.size(k)
+        if width <= box[0] + 0.5 and height <= box[1] + 0.5:
+            break
+        k = round_up(k * max(width / box[0], height / box[1], 1.0001))
     block = centres_svg(result, k, lang, room_min=ROOM_MIN)
-    for _ in range(8):
+    for _ in range(4):  # the sizer is exact at its own two scales, close elsewhere: coarser while the drawing runs over
         if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
             break
         k = round_up(k * max(block.width / box[0], block.height / box[1], 1.0001))
