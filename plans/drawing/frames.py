@@ -34,6 +34,7 @@ from __future__ import annotations
 import re
 
 import numpy as np
+from matplotlib.text import Text
 
 from ..graphical.plan import KINDS
 from ..i18n import term
@@ -46,7 +47,7 @@ from .plan_drawing import draw_plan_into, kinds_drawn, legend_row, legend_words
 from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, MARGIN_MM
 from .svg import drawing_rc, new_figure, render_svg
 
-__all__ = ["CycleFrames", "draw_cursor_diagrams", "draw_plan_legend", "frame_svg_text", "PANELS", "GAP_MM", "HEAD_MM", "CURSOR_COLOUR"]
+__all__ = ["CycleFrames", "draw_cursor_diagrams", "draw_plan_legend", "frame_svg_text", "PANELS", "GAP_MM", "HEAD_MM", "CURSOR_COLOUR", "LECTURE_TEXT_SCALE"]
 
 #: The drawings of a frame, left to right: the scheme, the velocity plan, the acceleration plan.
 PANELS = ("mechanism", "velocity", "acceleration")
@@ -57,6 +58,10 @@ _SCALE = {"mechanism": ("k_l", "m/mm"), "velocity": ("k_v", "(m/s)/mm"), "accele
 GAP_MM = 10.0
 #: Height [mm] of the heading band above each drawing (its name and its scale factor).
 HEAD_MM = 13.0
+#: How much larger the texts of a lecture page's frames are than on a sheet (:class:`CycleFrames`' ``text_scale``):
+#: a frame of three drawings some 450 mm wide fills a screen 1280 px wide, about 2.5 px a millimetre, at which a
+#: sheet's 10 pt label would be 9 px tall; 1.6 times it reads from the back of a lecture room.
+LECTURE_TEXT_SCALE = 1.6
 #: The cursor of the cycle diagrams.
 CURSOR_COLOUR = "#c0392b"
 
@@ -74,6 +79,10 @@ class CycleFrames:
         Solved at one set of scale factors (``run.scales``).
     lang : str
         Language of the headings and of the reasons (see :mod:`plans.i18n`).
+    text_scale : float
+        Every text of the drawings (labels, link numbers, ω of the driver, headings) is this many times the
+        size it has on a sheet: a frame is shown on a screen or a projector the width of the whole frame,
+        smaller than a sheet's millimetres (see :data:`LECTURE_TEXT_SCALE`); the drawings keep their scales.
 
     Attributes
     ----------
@@ -88,9 +97,10 @@ class CycleFrames:
         For a run in which no position is solved (nothing to draw).
     """
 
-    def __init__(self, run, *, lang: str = "en"):
+    def __init__(self, run, *, lang: str = "en", text_scale: float = 1.0):
         self.run = run
         self.lang = lang
+        self.text_scale = float(text_scale)
         solved = [r for r in run.runs if r.ok]
         if not solved:
             raise ValueError("no position of the run is solved: there is nothing to draw")
@@ -110,6 +120,10 @@ class CycleFrames:
                             MechanismDrawing(sketch, r.graphical, lang=lang, caption=False).draw()
                         elif _plan(r.graphical, kind) is not None:
                             draw_plan_into(sketch, _plan(r.graphical, kind), lang=lang, caption=False, detail=False)
+                    if self.text_scale != 1.0:
+                        for artist in sketch.artists:
+                            if isinstance(artist, Text):
+                                artist.set_fontsize(artist.get_fontsize() * self.text_scale)
                     sketches[kind] = sketch
                 self.figures.append(fig)
                 self._sketches.append(sketches)
@@ -118,6 +132,8 @@ class CycleFrames:
     # -- one canvas for all frames -------------------------------------------------------
 
     def _lay_out(self) -> None:
+        scale = self.text_scale
+        margin, head = MARGIN_MM * scale, HEAD_MM * scale  # room for the enlarged texts at the drawings' edges
         boxes = {}
         for kind in self.panels:
             union = Bounds()
@@ -128,12 +144,12 @@ class CycleFrames:
             if union.empty:
                 union.add(0.0, 0.0)
             heading, caption = self._heading(kind)
-            need = max(text_size(heading, HEADING_PT, "bold")[0], text_size(caption, CAPTION_PT, math=True)[0])
-            if union.width + 2 * MARGIN_MM < need:
-                union.add(union.xmin + need - 2 * MARGIN_MM, union.ymin)
+            need = max(text_size(heading, HEADING_PT * scale, "bold")[0], text_size(caption, CAPTION_PT * scale, math=True)[0])
+            if union.width + 2 * margin < need:
+                union.add(union.xmin + need - 2 * margin, union.ymin)
             boxes[kind] = union
-        widths = {k: b.width + 2 * MARGIN_MM for k, b in boxes.items()}
-        heights = {k: b.height + 2 * MARGIN_MM + HEAD_MM for k, b in boxes.items()}
+        widths = {k: b.width + 2 * margin for k, b in boxes.items()}
+        heights = {k: b.height + 2 * margin + head for k, b in boxes.items()}
         width = sum(widths.values()) + GAP_MM * (len(self.panels) - 1)
         height = max(heights.values())
         self.size_mm = (width, height)
@@ -147,17 +163,18 @@ class CycleFrames:
                     w, h = widths[kind], heights[kind]
                     ax = sketch.ax
                     ax.set_position([x / width, (height - h) / height, w / width, h / height])
-                    ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
-                    ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM + HEAD_MM)
+                    ax.set_xlim(b.xmin - margin, b.xmax + margin)
+                    ax.set_ylim(b.ymin - margin, b.ymax + margin + head)
                     ax.set_aspect("auto")
                     heading, caption = self._heading(kind)
-                    left, top = complex(b.xmin - MARGIN_MM + 1.0, 0), b.ymax + MARGIN_MM + HEAD_MM - 1.0
-                    sketch.text(left + 1j * top, heading, size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
-                    sketch.text(left + 1j * (top - 6.0), caption, size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+                    left, top = complex(b.xmin - margin + 1.0, 0), b.ymax + margin + head - 1.0
+                    sketch.text(left + 1j * top, heading, size=HEADING_PT * scale, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+                    sketch.text(left + 1j * (top - 6.0 * scale), caption, size=CAPTION_PT * scale, ha="left", va="top", gid="scale", obstacle=False,
+                                math=True)
                     if not r.ok and kind == "mechanism":
                         centre = complex((b.xmin + b.xmax) / 2, (b.ymin + b.ymax) / 2)
-                        sketch.text(centre, term("not_solved", self.lang), size=LABEL_PT, weight="bold", gid="not-solved", obstacle=False)
-                        sketch.text(centre - 6j, user_text(r.brief(self.lang)), size=CAPTION_PT, gid="not-solved", obstacle=False)
+                        sketch.text(centre, term("not_solved", self.lang), size=LABEL_PT * scale, weight="bold", gid="not-solved", obstacle=False)
+                        sketch.text(centre - 6j * scale, user_text(r.brief(self.lang)), size=CAPTION_PT * scale, gid="not-solved", obstacle=False)
                     x += w + GAP_MM
 
     def _heading(self, kind: str) -> tuple[str, str]:
@@ -248,6 +265,7 @@ def draw_cursor_diagrams(run, quantities, *, lang: str = "en", columns: int = 2,
             left, bottom = col * cw + 17.0, height - (row + 1) * ch + 11.0
             ax = fig.add_axes([left / width, bottom / height, (cw - 17.0 - 32.0) / width, (ch - 17.0) / height])
             plot_cycle(run.cycle, quantity, ax, lang=lang, cycle=run.dense)
+            _room_for_notes(ax)
             ticks = ax.get_xticks()
             if len(ticks) > 7:  # every 60° rather than 30°: a diagram of the page is narrower than a handout's
                 ax.set_xticks(ticks[::2])
@@ -262,6 +280,19 @@ def draw_cursor_diagrams(run, quantities, *, lang: str = "en", columns: int = 2,
             origin = float(ax.transData.transform((first, 0.0))[0])
             cursors[gid] = [None if x is None else round(float(ax.transData.transform((x, 0.0))[0]) - origin, 3) for x in shown]
     return fig, cursors
+
+
+#: The share of a diagram's height kept free above its curves for the notes written in it.
+NOTE_ROOM = 0.22
+
+
+def _room_for_notes(ax) -> None:
+    """Raise the top of *ax* so that the notes :func:`plans.drawing.diagrams.plot_cycle` writes across the top of
+    the plotting area (ω₂ = 6 rad/s …, what is clipped) stand above the curves rather than hide them."""
+    notes = [t for t in ax.texts if t.get_transform() == ax.transAxes and t.get_position()[1] >= 0.8 and 0.0 <= t.get_position()[0] <= 1.0]
+    if notes:
+        bottom, top = ax.get_ylim()
+        ax.set_ylim(bottom, top + NOTE_ROOM / (1.0 - NOTE_ROOM) * (top - bottom))
 
 
 def draw_plan_legend(run, *, lang: str = "en"):
