@@ -272,6 +272,29 @@ def test_a_screenshot_of_the_page_shows_the_drawings(browser, page, tmp_path):
     assert dark > 2000  # ink of the drawings, not a blank stage
 
 
+def test_on_a_projector_1280_px_wide_the_labels_read_and_the_page_has_no_empty_band(browser, page):
+    size = browser.get_window_size()
+    browser.set_window_size(1280, 800)
+    try:
+        _open(browser, page, "#position=5")
+        heights = browser.execute_script(
+            "return Array.from(document.querySelectorAll('#frame [id^=\"mech-point-\"] text, #frame [id^=\"vel-image-\"] text,"
+            " #frame [id^=\"mech-number-\"] text')).map(function (t) { return t.getBoundingClientRect().height; })"
+        )
+        assert len(heights) >= 8
+        assert min(heights) >= 10.0, heights  # px: the smallest (a link's number) still reads from the back of a room
+        width = browser.execute_script("return document.querySelector('#frame svg').getBoundingClientRect().width")
+        assert width >= 1200  # the drawings take the stage's whole width
+        # the header's line wraps within the page; the diagrams follow the controls without a gap
+        assert browser.execute_script("return document.documentElement.scrollWidth <= window.innerWidth")
+        gap = browser.execute_script(
+            "return document.getElementById('lower').getBoundingClientRect().top - document.getElementById('keys').getBoundingClientRect().bottom"
+        )
+        assert gap < 40, gap
+    finally:
+        browser.set_window_size(size["width"], size["height"])
+
+
 def test_in_a_notebook_the_page_plays_inside_its_frame(browser, tmp_path):
     import plans
 

@@ -224,3 +224,87 @@ def test_a_cycle_with_no_position_solved_is_refused_naming_the_scene():
     scene = plans.load(plans.example_path("rocker-limit"))  # its input swings between about ±56°
     with pytest.raises(plans.PlansError, match=r"rocker-limit\.toml: the mechanism is not solved at any of the 2 positions"):
         animate(scene, "100,120 deg")
+
+
+# --- what a teacher would project: the header, the table, the drawings' size, the diagrams' curves ---------------
+
+
+@pytest.fixture(scope="module")
+def slider_crank_animation():
+    return animate(plans.load(plans.example_path("slider-crank")), 4)
+
+
+def _header(text: str) -> str:
+    return re.search(r"<header>(.*?)</header>", text, flags=re.S).group(1)
+
+
+def test_the_header_typesets_the_scale_factors_with_their_units(animation):
+    header = _header(animation.html)
+    assert "_" not in re.sub(r"<[^>]+>", "", header)  # no k_l typed as in a program
+    k = animation.run.scales
+    for letter, unit in (("l", "m/mm"), ("v", "(m/s)/mm"), ("a", "(m/s²)/mm")):
+        assert f"<span>k<sub>{letter}</sub> = {k['k_' + letter]:g} {unit}</span>" in header
+    assert "flex-wrap:wrap" in re.search(r"#subtitle\{[^}]*\}", animation.html).group(0)  # the line wraps, not runs off
+
+
+def test_a_row_zero_at_every_position_is_left_out(slider_crank_animation):
+    rows = re.findall(r"<tr><td>(.*?)</td><td class=\"graphical\">", slider_crank_animation.html)
+    # the slider runs on the frame's guide, which does not turn: no Coriolis acceleration at any position;
+    # the crank turns at constant speed: ε₂ = 0 (the header says the law)
+    assert not any("a<sup>k</sup>" in row for row in rows) and "ε<sub>2</sub>" not in rows
+    assert any("v<sup>r</sup>" in row for row in rows) and "ω<sub>2</sub>" in rows  # constant, not zero: kept
+
+
+def test_each_row_keeps_its_decimals_and_the_plans_reading_precision(animation, data):
+    rows = re.findall(r"<tr><td>(.*?)</td><td class=\"graphical\">", animation.html)
+
+    def decimals(text):
+        return len(text.partition(".")[2])
+
+    for n, row in enumerate(rows):
+        shown = {decimals(data["values"][k][n][0]) for k in range(N)}
+        assert len(shown) == 1, (row, shown)  # the digits do not jump from one position to the next
+        if row.startswith("|v<sub>"):  # 0.1 mm of the velocity plan is 0.1·k_v m/s: the last digit shown is no finer
+            step = 0.1 * animation.run.scales["k_v"]
+            (places,) = shown
+            assert 10.0 ** -places <= step + 1e-12 < 10.0 ** -(places - 1), row
+        if row.startswith("|a<sub>"):
+            step = 0.1 * animation.run.scales["k_a"]
+            (places,) = shown
+            assert 10.0 ** -places <= step + 1e-12 < 10.0 ** -(places - 1), row
+
+
+def test_the_sign_of_the_relative_motion_is_defined_under_the_table(slider_crank_animation):
+    text = slider_crank_animation.html
+    scene = slider_crank_animation.run.scene
+    (pair,) = scene.prismatics
+    notes = re.search(r'<section id="values-box">.*?</section>', text, flags=re.S).group(0)
+    assert f"vʳ, aʳ of {pair.name}" in notes and f"“{pair.guide_line}” of link {pair.guide}" in notes
+    assert "(0.1 mm of a plan)" in notes
+
+
+def test_each_plan_fills_its_panel_at_its_largest_frame(animation):
+    frames = animation.frames
+    for kind in ("velocity", "acceleration"):
+        box = frames.boxes[kind]
+        largest = max(max((e[kind][2] - e[kind][0]) / box.width, (e[kind][3] - e[kind][1]) / box.height) for e in frames.extents if e[kind])
+        # a plan turns about its pole, which stays put: the panel holds every frame, the largest spans most of it
+        assert largest >= 0.6, (kind, largest)
+    assert frames.text_scale >= 1.5  # labels legible when a frame ~450 mm wide fills a 1280 px screen
+
+
+def test_the_diagrams_curves_stand_below_the_notes_written_across_their_top(animation):
+    from plans.drawing.frames import NOTE_ROOM, draw_cursor_diagrams
+    from plans.lecture import diagram_quantities
+
+    fig, _ = draw_cursor_diagrams(animation.run, diagram_quantities(animation.run))
+    noted = 0
+    for ax in fig.axes:
+        bottom, top = ax.get_ylim()
+        ys = np.concatenate([np.asarray(line.get_ydata(), dtype=float) for line in ax.get_lines() if not line.get_label().startswith("_")] or [np.zeros(0)])
+        ys = ys[np.isfinite(ys)]
+        assert ys.size == 0 or (ys.min() >= bottom and ys.max() <= top), ax.get_ylabel()  # the whole curve inside
+        if any(t.get_transform() == ax.transAxes and t.get_position()[1] >= 0.8 for t in ax.texts):
+            noted += 1
+            assert ys.size == 0 or ys.max() <= bottom + (1 - NOTE_ROOM) * (top - bottom) + 1e-9, ax.get_ylabel()
+    assert noted >= 1  # ω₂ = const is written in the ω diagram

@@ -90,6 +90,12 @@ class CycleFrames:
         The drawings of each frame (``"acceleration"`` only when the run has acceleration plans).
     size_mm : tuple of float
         (width, height) of every frame [mm]; one data unit of each drawing is one millimetre of it.
+    extents : list of dict
+        For each frame, each drawing's extent as drawn there, ``(xmin, ymin, xmax, ymax)`` [mm of the drawing,
+        its pole or the frame's origin at 0], None where nothing is drawn.
+    boxes : dict
+        Each drawing's box (:class:`plans.drawing._canvas.Bounds`): the union of its extents over all frames,
+        without the margins and the heading band.
 
     Raises
     ------
@@ -132,6 +138,11 @@ class CycleFrames:
     # -- one canvas for all frames -------------------------------------------------------
 
     def _lay_out(self) -> None:
+        self.extents = [
+            {kind: None if sketches[kind].bounds.empty else tuple(float(v) for v in (b.xmin, b.ymin, b.xmax, b.ymax)) for kind, b in
+             ((kind, sketches[kind].bounds) for kind in self.panels)}
+            for sketches in self._sketches
+        ]
         scale = self.text_scale
         margin, head = MARGIN_MM * scale, HEAD_MM * scale  # room for the enlarged texts at the drawings' edges
         boxes = {}
