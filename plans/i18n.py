@@ -706,6 +706,13 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "vʳ, aʳ в {pair}: движението на плъзгача спрямо водача, положително по линията „{line}“ на звено {guide} в нейната посока (под {angle}° спрямо оста x на звеното, както е зададена в сцената)",
         "sl": "vʳ, aʳ v {pair}: gibanje drsnika glede na vodilo, pozitivno vzdolž vodilne črte »{line}« člena {guide} v njeni smeri (pod {angle}° glede na os x člena, kot jo podaja scena)",
     },
+    "lecture_relative_sign_frame": {
+        "en": "vʳ, aʳ of {pair}: the slider's motion relative to its guide, positive along the frame's guide line “{line}” in the line's own direction (at {angle}° to the x axis)",
+        "sr": "vʳ, aʳ у {pair}: кретање клизача у односу на вођицу, позитивно дуж линије вођења „{line}” постоља у њеном смеру (под {angle}° према оси x)",
+        "ru": "vʳ, aʳ в {pair}: движение ползуна относительно направляющей, положительно вдоль линии «{line}» стойки в её направлении (под {angle}° к оси x)",
+        "bg": "vʳ, aʳ в {pair}: движението на плъзгача спрямо водача, положително по линията „{line}“ на стойката в нейната посока (под {angle}° спрямо оста x)",
+        "sl": "vʳ, aʳ v {pair}: gibanje drsnika glede na vodilo, pozitivno vzdolž vodilne črte »{line}« ogrodja v njeni smeri (pod {angle}° glede na os x)",
+    },
     "lecture_digits": {
         "en": "graphical values to the plans' reading precision ({precision} mm of a plan)",
         "sr": "графичке вредности на тачност очитавања планова ({precision} mm плана)",

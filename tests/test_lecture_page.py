@@ -278,8 +278,9 @@ def test_the_sign_of_the_relative_motion_is_defined_under_the_table(slider_crank
     text = slider_crank_animation.html
     scene = slider_crank_animation.run.scene
     (pair,) = scene.prismatics
-    notes = re.search(r'<section id="values-box">.*?</section>', text, flags=re.S).group(0)
-    assert f"vʳ, aʳ of {pair.name}" in notes and f"“{pair.guide_line}” of link {pair.guide}" in notes
+    notes = html.unescape(re.search(r'<section id="values-box">.*?</section>', text, flags=re.S).group(0))
+    assert scene.bodies[pair.guide].is_frame  # the slider-crank's slider runs on the frame
+    assert f"vʳ, aʳ of {pair.name}" in notes and f"the frame's guide line “{pair.guide_line}”" in notes
     assert "(0.1 mm of a plan)" in notes
 
 

@@ -155,7 +155,8 @@ def value_notes(run, rows: list[Row], lang: str = "en") -> list[str]:
         pair = pairs[name]
         line = run.scene.bodies[pair.guide].lines[pair.guide_line]
         angle = decimal_comma(f"{math.degrees(line.angle) % 360.0:.1f}", lang)
-        notes.append(term("lecture_relative_sign", lang).format(pair=name, line=pair.guide_line, guide=pair.guide, angle=angle))
+        key = "lecture_relative_sign_frame" if run.scene.bodies[pair.guide].is_frame else "lecture_relative_sign"
+        notes.append(term(key, lang).format(pair=name, line=pair.guide_line, guide=pair.guide, angle=angle))
     return notes
 
 
