@@ -286,7 +286,7 @@ def test_on_a_projector_1280_px_wide_the_labels_read_and_the_page_has_no_empty_b
         width = browser.execute_script("return document.querySelector('#frame svg').getBoundingClientRect().width")
         assert width >= 1200  # the drawings take the stage's whole width
         # the header's line wraps within the page; the diagrams follow the controls without a gap
-        assert browser.execute_script("return document.documentElement.scrollWidth <= window.innerWidth")
+        assert browser.execute_script("return document.documentElement.scrollWidth <= document.documentElement.clientWidth")
         gap = browser.execute_script(
             "return document.getElementById('lower').getBoundingClientRect().top - document.getElementById('keys').getBoundingClientRect().bottom"
         )

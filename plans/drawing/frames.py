@@ -183,9 +183,11 @@ class CycleFrames:
                     sketch.text(left + 1j * (top - 6.0 * scale), caption, size=CAPTION_PT * scale, ha="left", va="top", gid="scale", obstacle=False,
                                 math=True)
                     if not r.ok and kind == "mechanism":
-                        centre = complex((b.xmin + b.xmax) / 2, (b.ymin + b.ymax) / 2)
-                        sketch.text(centre, term("not_solved", self.lang), size=LABEL_PT * scale, weight="bold", gid="not-solved", obstacle=False)
-                        sketch.text(centre - 6j * scale, user_text(r.brief(self.lang)), size=CAPTION_PT * scale, gid="not-solved", obstacle=False)
+                        # from the frame's left edge: the words may be wider than the scheme's panel, and the
+                        # plans' panels beside it are empty at this position
+                        at = complex(b.xmin - margin + 1.0, (b.ymin + b.ymax) / 2)
+                        sketch.text(at, term("not_solved", self.lang), size=LABEL_PT * scale, ha="left", weight="bold", gid="not-solved", obstacle=False)
+                        sketch.text(at - 6j * scale, user_text(r.brief(self.lang)), size=CAPTION_PT * scale, ha="left", gid="not-solved", obstacle=False)
                     x += w + GAP_MM
 
     def _heading(self, kind: str) -> tuple[str, str]:

@@ -52,7 +52,8 @@ h1{font-size:1.1rem;margin:0 0 0.1rem}
 #slider{flex:1 1 12rem;min-width:8rem}
 #position{font-weight:bold;min-width:14rem}
 #keys{color:#555;font-size:0.78rem;margin:0}
-#side{flex:0 1 25rem;display:flex;flex-direction:column;gap:0.5rem;min-width:0}
+#side{flex:0 1 auto;display:flex;flex-direction:column;gap:0.5rem;min-width:0;max-width:100%}
+#values-box{overflow-x:auto}
 #legend-box{padding:0.2rem 0.5rem}
 #lower{display:flex;flex-wrap:wrap;gap:0.8rem;align-items:flex-start;margin-top:0.5rem}
 section{background:#fff;border:1px solid #ccc;padding:0.4rem 0.6rem}
