@@ -309,3 +309,9 @@ def test_the_diagrams_curves_stand_below_the_notes_written_across_their_top(anim
             noted += 1
             assert ys.size == 0 or ys.max() <= bottom + (1 - NOTE_ROOM) * (top - bottom) + 1e-9, ax.get_ylabel()
     assert noted >= 1  # ω₂ = const is written in the ω diagram
+
+
+def test_the_two_plans_poles_stand_on_one_level_in_every_frame(data):
+    for svg in data["frames"]:
+        ys = {gid: float(re.search(rf'<g id="{gid}">\s*<path d="M [-0-9.]+ ([-0-9.]+)', svg).group(1)) for gid in ("vel-pole", "acc-pole")}
+        assert ys["vel-pole"] == pytest.approx(ys["acc-pole"], abs=0.01)

@@ -7,7 +7,8 @@ one size on a canvas that is the same for all frames, so the plans' growth
 and shrinking is what the eye sees:
 
 * the mechanism's frame pivots and each plan's pole stay where they are from
-  frame to frame (each drawing's box is the union of its boxes over the cycle);
+  frame to frame (each drawing's box is the union of its boxes over the cycle),
+  and the two plans' poles are on one level;
 * each drawing is headed by its name and scale factor, once for all frames;
 * a position that cannot be solved gets a frame with the headings and the
   reason, in the reader's language.
@@ -160,9 +161,12 @@ class CycleFrames:
                 union.add(union.xmin + need - 2 * margin, union.ymin)
             boxes[kind] = union
         widths = {k: b.width + 2 * margin for k, b in boxes.items()}
-        heights = {k: b.height + 2 * margin + head for k, b in boxes.items()}
+        # every panel is the frame's height, its heading at the top; the plans' poles (0, 0 of a plan) on one
+        # level, so that the two plans read side by side; the scheme from the top
+        pole_depth = max((b.ymax + margin + head for k, b in boxes.items() if k != "mechanism"), default=0.0)
+        tops = {k: pole_depth if k != "mechanism" else b.ymax + margin + head for k, b in boxes.items()}
+        height = max(tops[k] - (b.ymin - margin) for k, b in boxes.items())
         width = sum(widths.values()) + GAP_MM * (len(self.panels) - 1)
-        height = max(heights.values())
         self.size_mm = (width, height)
         self.boxes = boxes
         with drawing_rc():
@@ -171,14 +175,14 @@ class CycleFrames:
                 x = 0.0
                 for kind in self.panels:
                     b, sketch = boxes[kind], sketches[kind]
-                    w, h = widths[kind], heights[kind]
+                    w = widths[kind]
                     ax = sketch.ax
-                    ax.set_position([x / width, (height - h) / height, w / width, h / height])
+                    ax.set_position([x / width, 0.0, w / width, 1.0])
                     ax.set_xlim(b.xmin - margin, b.xmax + margin)
-                    ax.set_ylim(b.ymin - margin, b.ymax + margin + head)
+                    ax.set_ylim(tops[kind] - height, tops[kind])
                     ax.set_aspect("auto")
                     heading, caption = self._heading(kind)
-                    left, top = complex(b.xmin - margin + 1.0, 0), b.ymax + margin + head - 1.0
+                    left, top = complex(b.xmin - margin + 1.0, 0), tops[kind] - 1.0
                     sketch.text(left + 1j * top, heading, size=HEADING_PT * scale, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
                     sketch.text(left + 1j * (top - 6.0 * scale), caption, size=CAPTION_PT * scale, ha="left", va="top", gid="scale", obstacle=False,
                                 math=True)
