@@ -244,10 +244,16 @@ class CycleFrames:
 _AUTOMATIC_ID = re.compile(r' id="((?:figure|axes|patch|text|line2d|legend|xtick|ytick|matplotlib\.axis|PathCollection|PolyCollection|LineCollection|QuadMesh)_\d+)"')
 
 
+#: The ids matplotlib derives from a hash of what it defines (markers ``m…``, clip paths ``p…``), and the references to
+#: them: two SVGs of one page that draw the same marker would share the id.
+_HASHED_ID = re.compile(r'(id="|href="#|url\(#)([mp][0-9a-f]{10})(?=[")])')
+
+
 def frame_svg_text(data: bytes, name: str | None = None) -> str:
     """An SVG of :mod:`plans.drawing.svg` as text to put inside a page: no XML declaration, DOCTYPE or metadata;
     with *name*, matplotlib's own ids (``figure_1`` …) prefixed by it, so that SVGs side by side on one page do not
-    share an id (the ids of plans' drawings, ``mech-…``, ``vel-…``, and those referred to are kept)."""
+    share an id (the ids of plans' drawings, ``mech-…``, ``vel-…``, are kept; the markers' and clip paths' ids are
+    prefixed too, with the references to them)."""
     text = data.decode("utf-8")
     start = text.index("<svg")
     text = text[start:]
@@ -256,6 +262,7 @@ def frame_svg_text(data: bytes, name: str | None = None) -> str:
         text = head + rest.partition("</metadata>")[2]
     if name:
         text = _AUTOMATIC_ID.sub(lambda m: f' id="{name}-{m.group(1)}"', text)
+        text = _HASHED_ID.sub(lambda m: f"{m.group(1)}{name}-{m.group(2)}", text)
     return text.strip()
 
 

@@ -131,7 +131,12 @@ class Animation:
         frames = self.frames
         svgs = [frame_svg_text(frames.svg(k), "frame") for k in range(len(frames))]
         quantities = diagram_quantities(self.run)
-        diagrams, cursors = draw_cursor_diagrams(self.run, quantities, lang=self.lang) if quantities else (None, {})
+        # one SVG a diagram: the page sets them two or three a row, as wide as the screen allows
+        diagrams, cursors = [], {}
+        for quantity in quantities:
+            figure, moves = draw_cursor_diagrams(self.run, [quantity], lang=self.lang, columns=1)
+            diagrams.append(frame_svg_text(render_svg(figure), f"diagram-{quantity}"))
+            cursors.update(moves)
         rows = value_rows(self.run)
         from .._text import decimal_comma
 
@@ -148,7 +153,7 @@ class Animation:
             rows=rows,
             values=position_values(self.run, rows, self.lang),
             heads=column_heads(self.lang),
-            diagrams=frame_svg_text(render_svg(diagrams), "diagrams") if diagrams is not None else None,
+            diagrams=diagrams,
             cursors=cursors,
             legend=frame_svg_text(render_svg(draw_plan_legend(self.run, lang=self.lang)), "legend"),
             scales=scales,

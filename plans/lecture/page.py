@@ -43,7 +43,7 @@ h1{font-size:1.1rem;margin:0 0 0.1rem}
 #subtitle span{overflow-wrap:anywhere}
 #top{margin-top:0.4rem}
 #stage{background:#fff;border:1px solid #ccc;padding:0.3rem}
-#frame svg{display:block;width:100%;height:auto;max-height:72vh}
+#frame svg{display:block;width:100%;height:auto;max-height:66vh}
 #bar{display:flex;flex-wrap:wrap;gap:0.4rem 1.2rem;align-items:flex-start;justify-content:space-between}
 #bar-left{flex:1 1 34rem;min-width:0}
 #controls{display:flex;flex-wrap:wrap;align-items:center;gap:0.5rem;margin:0.4rem 0 0.2rem}
@@ -65,6 +65,7 @@ h2{font-size:0.95rem;margin:0 0 0.3rem}
 #values td.unit{text-align:left;color:#555}
 #diagrams-box{flex:1 1 40rem;min-width:0}
 #values-box .note{max-width:25rem}
+#diagrams{display:grid;grid-template-columns:repeat(auto-fill,minmax(26rem,1fr));gap:0.2rem 0.6rem}
 #diagrams svg{display:block;width:100%;height:auto}
 #legend svg{display:block;max-width:100%;height:auto}
 .note{color:#555;font-size:0.78rem;margin:0.2rem 0 0}
@@ -195,7 +196,7 @@ def lecture_html(
     rows: list,
     values: list,
     heads: list[str],
-    diagrams: str | None,
+    diagrams: list[str],
     cursors: dict,
     legend: str | None,
     scales: list[tuple[str, str, str, str]] = (),
@@ -208,7 +209,7 @@ def lecture_html(
     table's footnotes (plain text).  *frames* are SVG texts (one per position), *labels* the words of each
     position, *rows* the table's rows (:func:`plans.lecture.values.value_rows`) and
     *values* their cells per position, *heads* the table's column heads,
-    *diagrams* the SVG of the cycle diagrams whose *cursors* move (gid → a
+    *diagrams* the SVGs of the cycle diagrams (one each) whose *cursors* move (gid → a
     shift per position, None where hidden), *legend* the SVG of the plans' legend.
     """
     words = {k: term(f"lecture_{k}", lang) for k in ("play", "pause")}
@@ -222,7 +223,7 @@ def lecture_html(
         f'<option value="{s:g}"{" selected" if s == 1.0 else ""}>×{esc(_speed_text(s, lang))}</option>' for s in SPEEDS
     )
     diagrams_box = (
-        f'<section id="diagrams-box"><h2>{esc(term("cycle_diagrams", lang))}</h2><div id="diagrams">{diagrams}</div>'
+        f'<section id="diagrams-box"><h2>{esc(term("cycle_diagrams", lang))}</h2><div id="diagrams">{"".join(f"<div>{d}</div>" for d in diagrams)}</div>'
         f'<p class="note">{esc(term("lecture_cursor", lang))}</p></section>'
         if diagrams
         else ""
