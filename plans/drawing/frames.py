@@ -48,7 +48,7 @@ from .plan_drawing import draw_plan_into, kinds_drawn, legend_row, legend_words
 from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, MARGIN_MM
 from .svg import drawing_rc, new_figure, render_svg
 
-__all__ = ["CycleFrames", "draw_cursor_diagrams", "draw_plan_legend", "frame_svg_text", "PANELS", "GAP_MM", "HEAD_MM", "CURSOR_COLOUR", "LECTURE_TEXT_SCALE"]
+__all__ = ["CycleFrames", "draw_cursor_diagrams", "draw_plan_legend", "frame_svg_text", "PANELS", "GAP_MM", "HEAD_MM", "CURSOR_COLOUR", "LECTURE_TEXT_SCALE", "NOTE_ROOM"]
 
 #: The drawings of a frame, left to right: the scheme, the velocity plan, the acceleration plan.
 PANELS = ("mechanism", "velocity", "acceleration")

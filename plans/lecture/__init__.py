@@ -36,7 +36,7 @@ from .._files import write_atomic
 from ..errors import OutputError, PlansError
 from ..i18n import check_language, term
 
-__all__ = ["animate", "Animation", "SUFFIXES", "DEFAULT_POSITIONS", "SLIDE_WIDTH_PX", "diagram_quantities"]
+__all__ = ["animate", "Animation", "SUFFIXES", "DEFAULT_POSITIONS", "SLIDE_WIDTH_PX", "SCALE_UNITS", "diagram_quantities"]
 
 #: Positions over the cycle when none are asked for.
 DEFAULT_POSITIONS = 36
