@@ -785,6 +785,27 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "червената линия е показаното положение",
         "sl": "rdeča črta je prikazana lega",
     },
+    "lecture_relative_sign": {
+        "en": "vʳ, aʳ of {pair}: the slider's motion relative to its guide, positive along the guide line “{line}” of link {guide} in the line's own direction (at {angle}° to the link's x axis, as the scene gives it)",
+        "sr": "vʳ, aʳ у {pair}: кретање клизача у односу на вођицу, позитивно дуж линије вођења „{line}” члана {guide} у њеном смеру (под {angle}° према x оси члана, како је задата у сцени)",
+        "ru": "vʳ, aʳ в {pair}: движение ползуна относительно направляющей, положительно вдоль линии «{line}» звена {guide} в её направлении (под {angle}° к оси x звена, как задано в сцене)",
+        "bg": "vʳ, aʳ в {pair}: движението на плъзгача спрямо водача, положително по линията „{line}“ на звено {guide} в нейната посока (под {angle}° спрямо оста x на звеното, както е зададена в сцената)",
+        "sl": "vʳ, aʳ v {pair}: gibanje drsnika glede na vodilo, pozitivno vzdolž vodilne črte »{line}« člena {guide} v njeni smeri (pod {angle}° glede na os x člena, kot jo podaja scena)",
+    },
+    "lecture_relative_sign_frame": {
+        "en": "vʳ, aʳ of {pair}: the slider's motion relative to its guide, positive along the frame's guide line “{line}” in the line's own direction (at {angle}° to the x axis)",
+        "sr": "vʳ, aʳ у {pair}: кретање клизача у односу на вођицу, позитивно дуж линије вођења „{line}” постоља у њеном смеру (под {angle}° према оси x)",
+        "ru": "vʳ, aʳ в {pair}: движение ползуна относительно направляющей, положительно вдоль линии «{line}» стойки в её направлении (под {angle}° к оси x)",
+        "bg": "vʳ, aʳ в {pair}: движението на плъзгача спрямо водача, положително по линията „{line}“ на стойката в нейната посока (под {angle}° спрямо оста x)",
+        "sl": "vʳ, aʳ v {pair}: gibanje drsnika glede na vodilo, pozitivno vzdolž vodilne črte »{line}« ogrodja v njeni smeri (pod {angle}° glede na os x)",
+    },
+    "lecture_digits": {
+        "en": "graphical values to the plans' reading precision ({precision} mm of a plan)",
+        "sr": "графичке вредности на тачност очитавања планова ({precision} mm плана)",
+        "ru": "графические значения с точностью отсчёта по планам ({precision} mm плана)",
+        "bg": "графичните стойности с точността на отчитане от плановете ({precision} mm от плана)",
+        "sl": "grafične vrednosti na natančnost odčitavanja z načrtov ({precision} mm načrta)",
+    },
     # --- cycle law ---
     "driver_law": {"en": "driver law", "sr": "закон кретања погонског члана", "ru": "закон движения ведущего звена",
                    "bg": "закон на движение на водещото звено", "sl": "zakon gibanja pogonskega člena"},
