@@ -588,7 +588,8 @@ def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = 
         else:
             groups.append((z, [(image_text(label), f"image-{label}")]))
     for at, pieces in groups:
-        place_label(sketch, at, pieces, size=LABEL_PT, gaps=GAPS, leader_from=4.0)
+        rivals = tuple(q for q, _ in groups if q != at)
+        place_label(sketch, at, pieces, size=LABEL_PT, gaps=GAPS, leader_from=4.0, rivals=rivals)
     for f in everything:
         if abs(f.force) == 0:
             continue

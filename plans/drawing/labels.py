@@ -69,6 +69,7 @@ def place_label(
     zorder: float = 6.0,
     mathtext: bool = False,
     leader_from: float | None = None,
+    rivals: tuple[complex, ...] = (),
 ) -> list:
     """Place one label (several names written ``"p, o, d"``) near *anchor*.
 
@@ -94,6 +95,10 @@ def place_label(
     leader_from : float, optional
         A label placed at a gap of at least this [mm] is joined to its point
         by a thin leader line (where points crowd, a label may sit further off).
+    rivals : tuple of complex
+        Other labelled points [mm]: a place whose centre is nearer one of them
+        than *anchor* costs as much as an overlap (a label must read as its
+        own point's, not its neighbour's).
 
     Returns
     -------
@@ -155,7 +160,8 @@ def place_label(
                 np.minimum.at(clear, i, shapely.distance(boxes[i], shapes[j]))
         for (center, gap, turn), c in zip(ring, clear):
             c = float(c)
-            score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - gap - 0.15 * turn - 1e-6 * order
+            astray = any(abs(center - q) < abs(center - anchor) for q in rivals)
+            score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - (OVERLAP_MM if astray else 0.0) - gap - 0.15 * turn - 1e-6 * order
             order += 1
             if best is None or score > best[0]:
                 best = (score, center, gap, c)
