@@ -66,3 +66,71 @@ def test_every_image_label_stands_nearest_its_own_image(name):
         assert abs(nearest - z) < 1e-6, f"{label}: its label is nearer another image ({nearest}) than its own ({z})"
         checked += 1
     assert checked >= 3
+
+
+def _arrows(artists) -> dict[str, tuple[complex, complex, str]]:
+    """gid of a force arrow's shaft -> (tail, tip of its head, colour)."""
+    out = {}
+    by_gid = {a.get_gid(): a for a in artists if a.get_gid()}
+    for gid, a in by_gid.items():
+        if gid.startswith("lever-force-") and not gid.startswith("lever-force-label-") and not gid.endswith("-head"):
+            xs, ys = a.get_data()
+            head = by_gid[gid + "-head"]
+            tip = complex(*head.get_xy()[0])
+            out[gid] = (complex(xs[0], ys[0]), tip, a.get_color())
+    return out
+
+
+@pytest.mark.parametrize("name", ["quick-return-loads", "six-bar-loads"])
+def test_every_arrow_starts_at_its_image_and_carries_its_own_label_in_its_colour(name):
+    from matplotlib.colors import to_hex
+
+    scene = load(example_path(name))
+    lever = joukowski_lever(construct(scene, precision=0.1))
+    truth = _analytic_images(scene, lever.k_v)
+    artists = draw_lever(lever)
+    arrows = _arrows(artists)
+    centres = _label_centres(artists)
+    texts = {a.get_gid(): a for a in artists if a.get_gid() and hasattr(a, "get_text")}
+    assert len(arrows) == len([f for f in lever.forces + (lever.balancing_force,) if abs(f.force)])
+    tails = list(complex(f.point) for f in lever.forces + (lever.balancing_force,) if abs(f.force))
+    for gid, (tail, tip, colour) in arrows.items():
+        # the arm is the arrow's place: it starts exactly at an image, not beside it
+        assert min(abs(tail - t) for t in tails) < 1e-9, gid
+        label_gid = gid.replace("lever-force-", "lever-force-label-")
+        assert to_hex(texts[label_gid].get_color()) == to_hex(colour), gid
+        nearest = min(arrows.values(), key=lambda a: abs(a[1] - centres[label_gid]))
+        assert nearest[1] == tip, f"{label_gid} stands nearer another arrow's head than its own"
+    # at e (= s6 on the quick-return lever) the weight G6 starts at e itself: i·v_E/k_v
+    if name == "quick-return-loads":
+        tail, _, _ = arrows["lever-force-G_6"]
+        assert tail == pytest.approx(truth["e"], abs=1e-6)
+
+
+def test_a_couple_on_the_lever_is_its_pair_of_forces_named_and_valued():
+    scene = load(example_path("six-bar-loads"))
+    lever = joukowski_lever(construct(scene, precision=0.1))
+    artists = draw_lever(lever)
+    texts = {a.get_gid(): a.get_text() for a in artists if a.get_gid() and hasattr(a, "get_text")}
+    assert texts["lever-force-label-Fp_Phi3"].startswith("$F′_") and texts["lever-force-label-Fpp_Phi3"].startswith("$F″_")
+    assert "lever-force-label-Fp_Phi3" in texts and "lever-force-label-Fpp_Phi3" in texts
+    assert not any(g.startswith("lever-force-label-M_") for g in texts)
+    # link 3: A–C = 0.6 m; M_Φ3 = J_S3·ε3 read here from the pair's own force: F = M/l
+    line = texts["lever-moment-Fp_Phi3"]
+    assert "/$l_{\\mathrm{" in line and "0.6 m" in line
+    # the block's couple M_Φ6 enters as its moment, said so
+    assert "without an arm" in texts["lever-moment-M_Phi6"]
+
+
+@pytest.mark.parametrize("lang", ["en", "sr", "ru", "bg", "sl"])
+def test_the_balancing_moment_states_its_sense_and_the_turn_is_stated(lang):
+    from plans.i18n import term
+
+    scene = load(example_path("six-bar-loads"))
+    exact = float(plans.forces(scene).balancing[0])
+    lever = joukowski_lever(construct(scene, precision=0.1))
+    texts = {a.get_gid(): a.get_text() for a in draw_lever(lever, lang=lang) if a.get_gid() and hasattr(a, "get_text")}
+    assert texts["lever-result"].split("N·m", 1)[1].startswith(" ↺" if exact > 0 else " ↻")
+    assert "↺" in texts["lever-scale"] and "90°" in texts["lever-scale"]  # TURN = +i: counter-clockwise
+    assert texts["lever-arm-rule"] == term("lever_arm_rule", lang)
+    assert "−" not in texts["lever-moment-F_b"].split("·", 1)[1].split("=")[0].replace("(−", "")  # a negative arm in brackets

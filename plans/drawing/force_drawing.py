@@ -83,8 +83,8 @@ def _beside(drawn: list, tail: complex, u: complex) -> complex:
 
 
 def _gid(label: str) -> str:
-    """A label as a gid (ASCII): ``"F_Φ3"`` → ``"F_Phi3"``."""
-    return label.replace("Φ", "Phi")
+    """A label as a gid (ASCII): ``"F_Φ3"`` → ``"F_Phi3"``, ``"F′_Φ3"`` → ``"Fp_Phi3"``, ``"F″_Φ3"`` → ``"Fpp_Phi3"``."""
+    return label.replace("Φ", "Phi").replace("″", "pp").replace("′", "p")
 
 
 def _escape(text: str) -> str:
@@ -203,7 +203,8 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
     """Heading, μ_F, the reactions read off the plan, the legend: below the plan."""
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
-    what = term("driver", lang) if plan.group == "driver" else plan.group
+    crank = not any(v.label == "F_b" for v in plan.vectors)  # a linear driver's plan carries F_b; a crank's M_b is a couple
+    what = driving_link_words(plan.links[0], crank, lang) if plan.group == "driver" else plan.group
     sketch.text(complex(x, y), f"{term('force_plan', lang)}: {what}", size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
     sketch.text(complex(x, y), scale_caption(r"\mu_F", fmt_number(plan.scale), "N/mm", lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
@@ -227,7 +228,7 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
         cursor += w + 3.0
     if balancing_moment is not None:
         y -= row
-        sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(balancing_moment, lang)} N·m ({_lower(term('balancing_moment', lang))})",
+        sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(abs(balancing_moment), lang)} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})",
                     size=CAPTION_PT, ha="left", va="top", gid="reading-M_b", obstacle=False, math=True)
     if not legend:
         return
@@ -324,7 +325,7 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
             tops.append(max(z.imag for z in zs) + FREE_ARROW_MM + 5.0)
         for (plan, links, shift, _, _), top in zip(row, [max(tops)] * len(row)):
             xs = [g.positions[n].real / k_l + shift.real for body in links for n in g.scene.bodies[body].points]
-            what = term("driver", lang) if plan.group == "driver" else plan.group
+            what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else plan.group
             sketch.text(complex(min(xs), top), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
     if caption:
         b = sketch.bounds
@@ -568,17 +569,23 @@ def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = 
     for label, z in images.items():
         if abs(z) > 1e-6:
             sketch.circle(z, 0.45, fc=INK, lw=0, gid=f"dot-{label}", zorder=4.0, obstacle=False)
-    drawn: list = []
+    names = lever_names(lever)
+    tips: list[complex] = []
     for f in everything:
         size = abs(f.force)
         if size == 0:
+            tips.append(complex(f.point))
             continue
         kind = _LEVER_KIND.get(f.kind, "external")
         color, lw, dashes, head = FORCE_STYLE[kind]
         u = f.force / size
-        tail = complex(f.point)
-        tail += _beside(drawn, tail, u)
-        sketch.arrow(tail, tail + u * LEVER_ARROW_MM, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.name)}", zorder=5.0)
+        tail = complex(f.point)  # on a lever an arrow's place is its arm: every arrow starts at its point's image
+        # an arrow along one drawn before at the same image is drawn longer, so that both heads show
+        along = sum(1 for g, t in zip(everything, tips) if abs(g.force) and abs(complex(g.point) - tail) < 0.5
+                    and (g.force / abs(g.force) * u.conjugate()).real > 0.98)
+        tip = tail + u * LEVER_ARROW_MM * (1 + 0.55 * along)
+        tips.append(tip)
+        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(names[id(f)])}", zorder=5.0)
     groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [("p", "pole-label")])]
     for label, z in images.items():
         for at, pieces in groups:
@@ -590,15 +597,53 @@ def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = 
     for at, pieces in groups:
         rivals = tuple(q for q, _ in groups if q != at)
         place_label(sketch, at, pieces, size=LABEL_PT, gaps=GAPS, leader_from=4.0, rivals=rivals)
-    for f in everything:
+    for f, tip in zip(everything, tips):
         if abs(f.force) == 0:
             continue
         u = f.force / abs(f.force)
         kind = _LEVER_KIND.get(f.kind, "external")
-        place_label(sketch, complex(f.point) + u * LEVER_ARROW_MM, [(force_math(f.name), f"force-label-{_gid(f.name)}")], size=LABEL_PT,
+        place_label(sketch, tip, [(force_math(names[id(f)]), f"force-label-{_gid(names[id(f)])}")], size=LABEL_PT,
                     prefer=u, gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, leader_from=4.0, color=FORCE_STYLE[kind][0] if kind != "reaction" else INK)
     if caption:
         _lever_caption(sketch, lever, lang)
+
+
+def driving_link_words(link: str, crank: bool, lang: str) -> str:
+    """``"driving link 2 (crank)"`` in *lang* (``(slider)`` for a linear driver)."""
+    return term("driving_link", lang).format(link=link, kind=term("crank_kind" if crank else "slider_kind", lang))
+
+
+def _is_crank(scene) -> bool:
+    from ..scene import Crank
+
+    return isinstance(scene.driver, Crank)
+
+
+def sense_arrow(value: float) -> str:
+    """The sense of a moment as the arc arrow the plans draw for ω and ε: ``" ↺"`` counter-clockwise (> 0), ``" ↻"`` clockwise."""
+    return "" if value == 0 else (" ↺" if value > 0 else " ↻")
+
+
+def couple_pair_name(name: str, second: bool) -> str:
+    """The name of one force of the pair that stands for a couple: ``"M_Φ3"`` → ``"F′_Φ3"``, ``"F″_Φ3"``."""
+    mark = "″" if second else "′"
+    head, sep, sub = name.partition("_")
+    if head == "M":
+        return f"F{mark}{sep}{sub}"
+    return f"{head}{mark}{sep}{sub}"
+
+
+def lever_names(lever) -> dict[int, str]:
+    """id(force) -> the name written at it: a couple's pair as F′, F″ (its first and second point), the rest by their own name."""
+    names: dict[int, str] = {}
+    seen: dict[str, int] = {}
+    for f in list(lever.forces) + [lever.balancing_force]:
+        if f.kind in ("inertia couple", "moment"):
+            names[id(f)] = couple_pair_name(f.name, seen.get(f.name, 0) > 0)
+            seen[f.name] = seen.get(f.name, 0) + 1
+        else:
+            names[id(f)] = f.name
+    return names
 
 
 def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
@@ -607,28 +652,50 @@ def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
     x, y = b.xmin, b.ymin - 3.0
     sketch.text(complex(x, y), term("joukowski_lever", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
-    sketch.text(complex(x, y), scale_caption("k_v", fmt_number(lever.k_v), "(m/s)/mm", lang) + ";  " + term("lever_turned", lang),
+    sketch.text(complex(x, y), scale_caption("k_v", fmt_number(lever.k_v), "(m/s)/mm", lang) + ";  " + term("lever_turned_ccw", lang),
                 size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     row = text_size("lp", CAPTION_PT)[1] + 0.9
     y -= row + 0.6
-    sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$", size=CAPTION_PT, ha="left", va="top",
-                gid="equation", obstacle=False, math=True)
+    sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$",
+                size=CAPTION_PT, ha="left", va="top", gid="equation", obstacle=False, math=True)
+    y -= row
+    color, lw, dashes = CONSTRUCTION_STYLE  # the legend of the arm lines drawn from p
+    middle = y - text_size("lp", CAPTION_PT)[1] / 2
+    sketch.line([complex(x, middle), complex(x + 8.0, middle)], color=color, lw=lw, dashes=dashes, gid="legend-arm", obstacle=False)
+    sketch.text(complex(x + 10.0, y), term("lever_arm_rule", lang), size=CAPTION_PT, ha="left", va="top", gid="arm-rule", obstacle=False)
+    names = lever_names(lever)
+    moments = {(load.name, load.body): float(load.moment) for load in lever.loads if load.is_couple}
+    pairs: dict[tuple[str, str], list] = {}
+    for f in lever.forces:
+        if f.kind in ("inertia couple", "moment"):
+            pairs.setdefault((f.name, f.body), []).append(f)
     for f in list(lever.forces) + [lever.balancing_force]:
         if abs(f.force) == 0:
             continue
         y -= row
         arm = f.arm if abs(f.arm) >= 0.05 else 0.0  # no "−0.0"
-        line = (f"{force_math(f.name)}: {_number(abs(f.force), lang)} N · {localised(f'{arm:.1f}', lang)} mm = "
-                f"{_number(f.moment, lang)} N·mm")
-        sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(f.name)}", obstacle=False, math=True)
+        h = localised(f"{arm:.1f}", lang) + " mm"
+        if arm < 0:
+            h = f"({h})"
+        name = force_math(names[id(f)])
+        given = f"{name}: {_number(abs(f.force), lang)} N"
+        pair = pairs.get((f.name, f.body), [])
+        if len(pair) == 2 and (f.name, f.body) in moments:
+            ends = [q.image.upper() for q in pair]
+            couple = moments[(f.name, f.body)]
+            length = abs(couple) / abs(f.force)  # the distance between the pair's points [m]
+            given = (f"{name} = {force_math(f.name)}/$l_{{\\mathrm{{{_escape(''.join(ends))}}}}}$ = {_number(abs(couple), lang)} N·m / "
+                     f"{localised(f'{length:.4g}', lang)} m = {_number(abs(f.force), lang)} N ({f.image}; {term('lever_pair', lang).format(points=', '.join(q.image for q in pair))})")
+        line = f"{given} · {h} = {_number(f.moment, lang)} N·mm"
+        sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(names[id(f)])}", obstacle=False, math=True)
     for c in lever.couples:
         y -= row
-        sketch.text(complex(x, y), f"{force_math(c.name)}: {_number(c.moment, lang)} N·mm", size=CAPTION_PT, ha="left", va="top",
-                    gid=f"moment-{_gid(c.name)}", obstacle=False, math=True)
+        sketch.text(complex(x, y), f"{force_math(c.name)} = {_number(c.couple, lang)} N·m → {_number(c.moment, lang)} N·mm ({term('lever_block_couple', lang)})",
+                    size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(c.name)}", obstacle=False, math=True)
     y -= row
     if lever.balancing_kind == "moment":
         result = (f"$M_{{\\mathrm{{b}}}}$ = $F_{{\\mathrm{{b}}}}$·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force), lang)} N · "
-                  f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(lever.balancing, lang)} N·m ({_lower(term('balancing_moment', lang))})")
+                  f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(abs(lever.balancing), lang)} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))})")
     else:
         result = f"$F_{{\\mathrm{{b}}}}$ = {_number(lever.balancing, lang)} N ({_lower(term('balancing_force', lang))})"
     sketch.text(complex(x, y), result, size=CAPTION_PT, ha="left", va="top", gid="result", obstacle=False, math=True)
