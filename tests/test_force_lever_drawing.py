@@ -134,3 +134,64 @@ def test_the_balancing_moment_states_its_sense_and_the_turn_is_stated(lang):
     assert "↺" in texts["lever-scale"] and "90°" in texts["lever-scale"]  # TURN = +i: counter-clockwise
     assert texts["lever-arm-rule"] == term("lever_arm_rule", lang)
     assert "−" not in texts["lever-moment-F_b"].split("·", 1)[1].split("=")[0].replace("(−", "")  # a negative arm in brackets
+
+
+def _segment_distance(z: complex, a: complex, b: complex) -> float:
+    d = b - a
+    t = min(1.0, max(0.0, ((z - a) * d.conjugate()).real / abs(d) ** 2)) if abs(d) else 0.0
+    return abs(z - (a + t * d))
+
+
+def _twins(v, w) -> bool:
+    dv, dw = complex(v.tip - v.tail), complex(w.tip - w.tail)
+    middle = complex(v.tail + v.tip) / 2
+    return abs((dv * dw.conjugate()).imag) <= 0.15 * abs(dv) * abs(dw) and _segment_distance(middle, complex(w.tail), complex(w.tip)) < 2.5
+
+
+@pytest.fixture(scope="module")
+def six_bar_plans():
+    from plans.forces.force_plans import construct_force_plans
+
+    return construct_force_plans(construct(load(example_path("six-bar-loads")), precision=0.1))
+
+
+@pytest.mark.parametrize("name", ["six-bar-loads", "quick-return-loads"])
+def test_every_force_plan_label_stands_by_its_own_vector(name):
+    from plans.drawing.force_drawing import draw_force_plan
+    from plans.forces.force_plans import construct_force_plans
+
+    forces = construct_force_plans(construct(load(example_path(name)), precision=0.1))
+    for plan in forces.plans:
+        artists = draw_force_plan(plan)
+        centres = _label_centres(artists)
+        vectors = [v for v in plan.vectors if v.length >= 3.0]
+        for v in vectors:
+            gid = "fplan-label-" + v.label.replace("Φ", "Phi").replace("^", "_")
+            match = [g for g in centres if g.replace("^", "_") == gid]
+            assert match, (gid, sorted(centres))
+            c = centres[match[0]]
+            own = _segment_distance(c, complex(v.tail), complex(v.tip))
+            for w in vectors:
+                # a vector all but retracing another (R^n_14 along R_14): its label stands by both; it is placed
+                # along it, away from the other's (checked below)
+                if w is not v and abs(complex(w.tip) - complex(w.tail)) > 1e-9 and not _twins(v, w):
+                    assert own <= _segment_distance(c, complex(w.tail), complex(w.tip)) + 1e-9, f"{plan.group}: {v.label}'s label nearer {w.label}"
+                elif w is not v and _twins(v, w):
+                    other = [g for g in centres if g.replace("^", "_") == "fplan-label-" + w.label.replace("Φ", "Phi").replace("^", "_")]
+                    assert abs(centres[other[0]] - c) > 4.0, f"{plan.group}: {v.label} and {w.label} labelled at one place"
+
+
+def test_a_force_plan_lists_its_known_loads_with_newtons_and_drawn_millimetres(six_bar_plans):
+    from plans.drawing.force_drawing import draw_force_plan, found_scales
+
+    plan = next(p for p in six_bar_plans.plans if p.group == "RRR(3,4)")
+    texts = {a.get_gid(): a.get_text() for a in draw_force_plan(plan, found_at=found_scales(six_bar_plans.plans)) if a.get_gid() and hasattr(a, "get_text")}
+    # G_3 = m3·g = 3 kg · 9.81 m/s² = 29.43 N, at μ_F = 2 N/mm: 14.7 mm
+    assert "29.4 N" in texts["fplan-known-G_3"] and "14.7 mm" in texts["fplan-known-G_3"]
+    assert "carried" in texts["fplan-known-R_53"]
+    assert "found first" in texts["fplan-found-first"] and texts["fplan-reading-R_t_23"].endswith(" mm") and "14.0 N" in texts["fplan-reading-R_t_23"]
+    assert texts["fplan-short-R_t_14"].endswith(" N)")  # a vector under 3 mm: its value in N too
+    driver = next(p for p in six_bar_plans.plans if p.group == "driver")
+    texts = {a.get_gid(): a.get_text() for a in draw_force_plan(driver, found_at=found_scales(six_bar_plans.plans)) if a.get_gid() and hasattr(a, "get_text")}
+    # R_32 found as R_23 on RRR(3,4) at 2 N/mm, redrawn on the driver's plan at its own μ_F
+    assert driver.scale != plan.scale and r"$\mu_F$ = 2 N/mm" in texts["fplan-known-R_32"]

@@ -140,17 +140,38 @@ def _number(value: float, lang: str, digits: int = 4) -> str:
 # --- a force plan ----------------------------------------------------------------------
 
 
-def draw_force_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, balancing_moment: float | None = None) -> list:
+def draw_force_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, balancing_moment: float | None = None, found_at: dict | None = None) -> list:
     """Draw one force plan (:class:`plans.forces.force_plans.ForcePlan`), one data unit = 1 mm.
 
     *balancing_moment* [N·m], given for the driver's plan, is stated under it.
+    *found_at* (:func:`found_scales`): reaction -> μ_F [N/mm] of the plan that
+    found it, so that a reaction carried to this plan at another μ_F says so.
+    Under the plan: the known loads (N and drawn mm), the components Rᵗ found
+    first, the reactions read off it.
     Returns the artists; a new true-to-scale figure is ``artists[0].figure``.
     """
-    return sketch_on(ax, "fplan", lambda sketch: draw_force_plan_into(sketch, plan, lang=lang, legend=legend, balancing_moment=balancing_moment))
+    return sketch_on(ax, "fplan", lambda sketch: draw_force_plan_into(sketch, plan, lang=lang, legend=legend, balancing_moment=balancing_moment, found_at=found_at))
 
 
-def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool = True, caption: bool = True, balancing_moment: float | None = None) -> None:
-    """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch."""
+def found_scales(plans) -> dict[str, float]:
+    """Reaction label -> μ_F [N/mm] of the plan that found it (and of its opposite R_ji, the same force reversed)."""
+    out: dict[str, float] = {}
+    for plan in plans:
+        for label in plan.found:
+            out.setdefault(label, plan.scale)
+            head, sep, sub = label.partition("_")
+            if head == "R" and len(sub) == 2:
+                out.setdefault(f"R_{sub[::-1]}", plan.scale)
+    return out
+
+
+def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool = True, caption: bool = True, balancing_moment: float | None = None,
+                         found_at: dict | None = None, known: bool = True) -> None:
+    """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch.
+
+    *known*: list the known loads and the components Rᵗ under the plan (a page that states them
+    in its own tables leaves them out).
+    """
     vectors = [v for v in plan.vectors if v.length > 1e-9]
     for v in vectors:
         for z in (v.tail, v.tip):
@@ -177,14 +198,36 @@ def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool
     sketch.circle(0j, 0.55, fc=INK, lw=0, gid="start", zorder=4.0)
     for name, z in plan.points.items():
         sketch.circle(complex(z), 0.35, fc=INK, lw=0, gid=f"vertex-{name}", zorder=4.0, obstacle=False)
-    centre = sum(complex(z) for z in plan.points.values()) / max(1, len(plan.points))
-    for v in vectors:
-        middle = (complex(v.tail) + complex(v.tip)) / 2
-        across = unit(middle - centre) if abs(middle - centre) > 1e-6 else 1j * unit(v.tip - v.tail)
+    segments = [(complex(v.tail), complex(v.tip)) for v in vectors]
+    for k, v in enumerate(vectors):
+        tail, tip = segments[k]
+        middle = (tail + tip) / 2
+        # a vector another one all but retraces (R_23 and R_34 nearly along each other): its label a third of the way
+        # along instead of at the middle, the other's at two thirds, so that each stands by its own
+        twins = [j for j, seg in enumerate(segments) if j != k and _retraces(segments[k], seg)]
+        if twins:
+            middle = tail + (tip - tail) * (0.32 if k < twins[0] else 0.68)
+        across = 1j * unit(tip - tail)  # a label stands beside its own vector, at its middle,
+        others = [q for j, seg in enumerate(segments) if j != k for q in (seg[0], (seg[0] + seg[1]) / 2, seg[1])]
+        if others and sum(abs(middle + across - q) for q in others) < sum(abs(middle - across - q) for q in others):
+            across = -across  # on the side away from the other vectors
+        rivals = tuple(seg for j, seg in enumerate(segments) if j != k and abs(seg[1] - seg[0]) > 1e-9)
         place_label(sketch, middle, [(force_math(v.label), f"label-{_gid(v.label)}")], size=LABEL_PT if v.length >= 6 else SMALL_PT,
-                    prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK)
+                    prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK,
+                    own=(tail, tip), rival_segments=rivals)
     if caption:
-        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment)
+        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment, found_at or {}, known)
+
+
+def _retraces(a: tuple[complex, complex], b: tuple[complex, complex], near: float = 2.5) -> bool:
+    """Whether segment *b* runs within *near* mm of *a*'s middle, nearly parallel to it (the two would share a label's place)."""
+    da, db = a[1] - a[0], b[1] - b[0]
+    if abs(da) < 1e-9 or abs(db) < 1e-9:
+        return False
+    parallel = abs((da * db.conjugate()).imag) <= 0.15 * abs(da) * abs(db)
+    middle = (a[0] + a[1]) / 2
+    t = min(1.0, max(0.0, ((middle - b[0]) * db.conjugate()).real / abs(db) ** 2))
+    return parallel and abs(middle - (b[0] + t * db)) < near
 
 
 def _closing_point(plan):
@@ -199,7 +242,7 @@ def _closing_point(plan):
     return p1 + t * d1
 
 
-def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None) -> None:
+def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None, found_at: dict, known_loads: bool = True) -> None:
     """Heading, μ_F, the reactions read off the plan, the legend: below the plan."""
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
@@ -209,23 +252,59 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
     y -= 5.0
     sketch.text(complex(x, y), scale_caption(r"\mu_F", fmt_number(plan.scale), "N/mm", lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     row = text_size("lp", CAPTION_PT)[1] + 0.9
+    mu = localised(fmt_number(plan.scale), lang)
+    width = max(b.width, 50.0)
+
+    def flow(notes: list[tuple[str, str]], y: float, indent: float = 0.0) -> float:
+        """Notes (text, gid) side by side as far as the plan is wide (at least 50 mm), rows downwards from *y*; the last row's y."""
+        cursor = None
+        for note, gid in notes:
+            w = text_size(note, CAPTION_PT, math=True)[0]
+            if cursor is None or cursor + w > x + width:
+                y -= row
+                cursor = x + indent
+            sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=gid, obstacle=False, math=True)
+            cursor += w + 3.0
+        return y
+
+    # what is known before the plan is drawn: every load (and a reaction carried from a plan before), N and drawn mm
+    y -= row if known_loads else 0.0
+    if known_loads:
+        sketch.text(complex(x, y), term("known_loads", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="known-heading", obstacle=False)
+    known, carried_notes = [], []
+    for v in vectors:
+        if v.label in plan.found or v.kind in ("normal", "tangential"):
+            continue
+        line = f"{force_math(v.label)} = {_reading(v.value, _step(plan), lang)} N → {_reading(v.length, plan.precision, lang)} mm"
+        carried = found_at.get(v.label) if v.kind == "reaction" else None
+        if carried is not None:
+            note = term("carried", lang)
+            if abs(carried - plan.scale) > 1e-12 * plan.scale:
+                note = term("carried_rescaled", lang).format(there=localised(fmt_number(carried), lang), here=mu).replace("μ_F", r"$\mu_F$")
+            carried_notes.append((f"{line} ({note})", f"known-{_gid(v.label)}"))
+        else:
+            known.append((line + ";", f"known-{_gid(v.label)}"))
+    if known:
+        known[-1] = (known[-1][0].rstrip(";"), known[-1][1])
+    if known_loads:
+        y = flow(known, y, 2.0)
+        y = flow(carried_notes, y, 2.0)
+    # the tangential components, found first (from the moments about the middle joint)
+    tangential = [v for v in vectors if v.kind == "tangential"] if known_loads else []
+    if tangential:
+        y -= row
+        sketch.text(complex(x, y), term("found_first", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="found-first", obstacle=False)
+        y = flow([(f"{force_math(v.label)} = {_reading(v.value, _step(plan), lang)} N → {_reading(v.length, plan.precision, lang)} mm",
+                   f"reading-{_gid(v.label)}") for v in tangential], y, 2.0)
     for v in vectors:
         if v.label not in plan.found:
             continue
         y -= row
-        line = f"{force_math(v.label)} = {_reading(v.length, plan.precision, lang)} mm · {localised(fmt_number(plan.scale), lang)} N/mm = {_reading(v.value, _step(plan), lang)} N"
+        line = f"{force_math(v.label)} = {_reading(v.length, plan.precision, lang)} mm · {mu} N/mm = {_reading(v.value, _step(plan), lang)} N"
         sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"reading-{_gid(v.label)}", obstacle=False, math=True)
-    # notes on vectors too short for an arrow, side by side as far as the plan is wide (at least 50 mm)
-    width = max(b.width, 50.0)
-    cursor = None
-    for v in (v for v in vectors if v.length < SHORT_MM):
-        note = f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm"
-        w = text_size(note, CAPTION_PT, math=True)[0]
-        if cursor is None or cursor + w > x + width:
-            y -= row
-            cursor = x
-        sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=f"short-{_gid(v.label)}", obstacle=False, math=True)
-        cursor += w + 3.0
+    # notes on vectors too short for an arrow (their value in N too)
+    y = flow([(f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm ({_reading(v.value, _step(plan), lang)} N)", f"short-{_gid(v.label)}")
+              for v in vectors if v.length < SHORT_MM], y)
     if balancing_moment is not None:
         y -= row
         sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(abs(balancing_moment), lang)} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})",
@@ -467,15 +546,16 @@ def force_figures(forces, *, lang: str = "en", lever=None) -> list[tuple[str, ob
     Joukowski's lever (:func:`plans.forces.lever.joukowski_lever`) is given.
     """
     out = [("free-bodies", draw_free_bodies(forces, lang=lang)[0].figure)]
+    found_at = found_scales(forces.plans)
     number = 0
     for plan in forces.plans:
         if plan.group == "driver":
             name = "force-plan-driver"
-            artists = draw_force_plan(plan, lang=lang, balancing_moment=forces.balancing_moment)
+            artists = draw_force_plan(plan, lang=lang, balancing_moment=forces.balancing_moment, found_at=found_at)
         else:
             number += 1
             name = f"force-plan-{number}"
-            artists = draw_force_plan(plan, lang=lang)
+            artists = draw_force_plan(plan, lang=lang, found_at=found_at)
         out.append((name, artists[0].figure))
     if lever is not None:
         out.append(("lever", draw_lever(lever, lang=lang)[0].figure))
