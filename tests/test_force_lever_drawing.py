@@ -195,3 +195,71 @@ def test_a_force_plan_lists_its_known_loads_with_newtons_and_drawn_millimetres(s
     texts = {a.get_gid(): a.get_text() for a in draw_force_plan(driver, found_at=found_scales(six_bar_plans.plans)) if a.get_gid() and hasattr(a, "get_text")}
     # R_32 found as R_23 on RRR(3,4) at 2 N/mm, redrawn on the driver's plan at its own μ_F
     assert driver.scale != plan.scale and r"$\mu_F$ = 2 N/mm" in texts["fplan-known-R_32"]
+
+
+def _free(name):
+    from plans.drawing.force_drawing import draw_free_bodies
+    from plans.forces.force_plans import construct_force_plans
+
+    forces = construct_force_plans(construct(load(example_path(name)), precision=0.1))
+    return forces, draw_free_bodies(forces)
+
+
+def _inside_polygon(z: complex, corners) -> bool:
+    from shapely.geometry import Point, Polygon
+
+    return Polygon([(c[0], c[1]) for c in corners]).buffer(1e-9).contains(Point(z.real, z.imag))
+
+
+def test_the_ram_is_drawn_to_its_centre_of_mass_and_no_arrow_hides_in_a_block():
+    forces, artists = _free("quick-return-loads")
+    by_gid = {a.get_gid(): a for a in artists if a.get_gid()}
+    ram = by_gid["fbody-link-6"].get_xy()
+    s6 = complex(*by_gid["fbody-centre-6"].center)
+    assert _inside_polygon(s6, ram)  # S6 is on the ram's body, not floating beside a small block at E
+    block = by_gid["fbody-link-3"].get_xy()  # the block on the crank pin A
+    tip = complex(*by_gid["fbody-force-R_23-head"].get_xy()[0])
+    assert not _inside_polygon(tip, block)  # R_23's head outside the block
+    a = complex(*by_gid["fbody-pin-A"].center)
+    assert abs(tip - a) > 2.0
+
+
+def test_an_arrow_along_a_bar_is_drawn_beside_it():
+    forces, artists = _free("six-bar-loads")
+    by_gid = {a.get_gid(): a for a in artists if a.get_gid()}
+    xs, ys = by_gid["fbody-link-5"].get_data()
+    b, m = complex(xs[0], ys[0]), complex(xs[-1], ys[-1])
+    sx, sy = by_gid["fbody-force-R_35"].get_data()
+    for z in (complex(sx[0], sy[0]), complex(sx[-1], sy[-1])):
+        assert _segment_distance(z, b, m) >= 1.0  # R_35 (almost along rod 5) not on top of the rod
+
+
+@pytest.mark.parametrize("name", ["six-bar-loads", "quick-return-loads"])
+def test_free_body_labels_stand_clear_of_each_other_and_of_the_arrows(name):
+    from shapely.geometry import LineString, box
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    forces, artists = _free(name)
+    fig = artists[0].figure
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    inverse = fig.axes[0].transData.inverted()
+    boxes = []
+    for a in artists:
+        gid = a.get_gid() or ""
+        if hasattr(a, "get_text") and ("label" in gid or "point-" in gid):
+            (x0, y0), (x1, y1) = inverse.transform(a.get_window_extent(renderer).get_points())
+            boxes.append((gid, x0, y0, x1, y1))
+    assert len(boxes) > 10
+    for k, (g1, a0, b0, a1, b1) in enumerate(boxes):
+        for g2, c0, d0, c1, d1 in boxes[k + 1:]:
+            overlap = min(a1, c1) - max(a0, c0) > 0.1 and min(b1, d1) - max(b0, d0) > 0.1
+            assert not overlap, (g1, g2)
+    shafts = {}
+    for a in artists:
+        gid = a.get_gid() or ""
+        if gid.startswith("fbody-force-") and not gid.startswith("fbody-force-label") and not gid.endswith("-head"):
+            xs, ys = a.get_data()
+            shafts[gid] = LineString(list(zip(xs, ys)))
+    for g1, x0, y0, x1, y1 in boxes:
+        for g2, shaft in shafts.items():
+            assert not box(x0, y0, x1, y1).buffer(-0.2).intersects(shaft), (g1, g2)

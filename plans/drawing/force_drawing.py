@@ -425,32 +425,43 @@ def _inside(label: str, links) -> bool:
 
 
 def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, couples, lang: str, k_l: float) -> None:
+    """One free body: its links (a block as its body, a ram reaching to its centre of mass), then every arrow and couple,
+    and only then the labels, placed clear of all of them and of each other (as the plans place theirs)."""
     g = forces.graphical
     edge, _, fill = FIGURE_STYLE
 
     def at(z: complex) -> complex:
         return z / k_l + shift
 
+    labels: list = []  # (anchor, pieces, keywords) placed after every mark is drawn
+    segments: list[tuple[complex, complex]] = []  # the links drawn as bars [mm]
+    blocks: dict[str, tuple[complex, float]] = {}  # a block's pin -> (centre, its half diagonal) [mm]
     labelled: set[str] = set()
     for body in links:
         names = list(g.scene.bodies[body].points)
         zs = [at(g.positions[n]) for n in names]
         block = g.scene.bodies[body].block
         if block or len(zs) == 1:
-            _block(sketch, forces, body, zs[0], at)
+            centre = forces.centres.get(body)
+            reach = _block(sketch, forces, body, zs[0], at, at(centre.at) if centre is not None else None)
+            for n in names:
+                blocks[n] = (zs[0], reach)
         else:
             far = max(((a, b) for a in zs for b in zs), key=lambda ab: abs(ab[0] - ab[1]))
             if len(zs) >= 3:
                 sketch.polygon(_hull(zs), fc=fill, ec=INK, lw=1.4, gid=f"link-{body}", zorder=1.5)
+                hull = _hull(zs)
+                segments += [(hull[k], hull[(k + 1) % len(hull)]) for k in range(len(hull))]
             else:
                 sketch.line(list(far), color=INK, lw=2.2, gid=f"link-{body}", zorder=1.5, capstyle="round")
+                segments.append(far)
         for n, z in zip(names, zs):
             if n in labelled:
                 continue
             labelled.add(n)
             if len(g.scene.bodies_with(n)) > 1:
                 sketch.circle(z, 1.1, fc="white", ec=INK, lw=0.8, gid=f"pin-{n}", zorder=4.5)
-            place_label(sketch, z, [(n, f"point-{n}")], size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0))
+            labels.append((z, [(n, f"point-{n}")], dict(size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0), leader_from=4.0)))
     for body in links:
         centre = forces.centres.get(body)
         if centre is not None:
@@ -458,7 +469,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             sketch.circle(c, 1.0, fc="white", ec=INK, lw=0.7, gid=f"centre-{body}", zorder=4.6)
             sketch.polygon([c + 1.0, c + 1.0j, c - 1.0, c - 1.0j], fc=INK, ec=INK, lw=0.1, gid=f"centre-mark-{body}", zorder=4.7, obstacle=False)
             if not any(abs(centre.at - g.positions[n]) <= 1e-9 * (1 + abs(centre.at)) for n in g.scene.bodies[body].points):
-                place_label(sketch, c, [(f"S{_digits(body)}", f"centre-label-{body}")], size=SMALL_PT, gaps=(1.4, 2.4, 3.6))
+                labels.append((c, [(f"S{_digits(body)}", f"centre-label-{body}")], dict(size=SMALL_PT, gaps=(1.4, 2.4, 3.6), leader_from=4.0)))
     drawn: list = []
     for f in acting:
         size = abs(f.force)
@@ -471,16 +482,27 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             x.kind != "reaction" and abs(x.at - f.at) <= 1e-9 * (1 + abs(f.at)) and abs(x.force) > 0 and ((x.force / abs(x.force)) * u.conjugate()).real < -0.9
             for x in acting
         )
+        # an arrow along a bar through its point would hide the bar: it is drawn beside it
+        along = next((b - a for a, b in segments if _on_segment(point, a, b) and abs(((b - a) / abs(b - a) * u.conjugate()).imag) < 0.15), None)
+        if along is not None:
+            side = 1j * along / abs(along)
+            point = point + side * 1.8
         if into:
-            tail, tip = point - u * FREE_ARROW_MM, point - u * 1.2
+            stop = 1.2
+            near_block = next((b for n, b in blocks.items() if abs(at(g.positions[n]) - at(f.at)) < 1e-6), None)
+            if near_block is not None:
+                stop = near_block[1] + 0.4  # the head stays outside the block, its pin and letter in view
+            tail, tip = point - u * (FREE_ARROW_MM + stop - 1.2), point - u * stop
         else:
             point = point + _beside(drawn, point, u)
             tail, tip = point, point + u * FREE_ARROW_MM
         color, lw, dashes, head = FORCE_STYLE[f.kind]
         sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0)
+        sketch.obstacles.append(_segment_shape(tail, tip))
         end = tail if into else tip
-        place_label(sketch, end, [(force_math(f.label), f"force-label-{_gid(f.label)}")], size=LABEL_PT, prefer=-u if into else u,
-                    gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, color=color if f.kind != "reaction" else INK)
+        labels.append((end, [(force_math(f.label), f"force-label-{_gid(f.label)}")],
+                       dict(size=LABEL_PT, prefer=-u if into else u, gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, leader_from=4.0,
+                            color=color if f.kind != "reaction" else INK)))
     for c in couples:
         if c.moment == 0:
             continue
@@ -489,11 +511,36 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             where = at(_pivot(g, c.body))
         else:
             where = at(body_centre.at)
+        radius = COUPLE_R_MM
+        near_block = next((b for b in blocks.values() if abs(b[0] - where) < b[1]), None)
+        if near_block is not None:
+            radius = max(radius, abs(where - near_block[0]) + near_block[1] + 1.0)  # round the block, not through it
         sweep = math.radians(250) * (1 if c.moment > 0 else -1)
         color = FORCE_STYLE["balancing" if c.kind == "balancing" else "inertia" if c.kind == "inertia" else "external"][0]
-        sketch.arc_arrow(where, COUPLE_R_MM, math.radians(145), sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
-        place_label(sketch, where + COUPLE_R_MM * cmath.exp(1j * math.radians(145)), [(force_math(c.label), f"couple-label-{_gid(c.label)}")],
-                    size=LABEL_PT, prefer=cmath.exp(1j * math.radians(145)), gaps=(0.8, 1.8, 3.0), mathtext=True, color=color)
+        # the arc starts (and its name stands) where it is farthest from the other points of the free body
+        marks = [z for z, _, _ in labels if abs(z - where) > 1e-6]
+        start = max((math.radians(145 + 45 * k) for k in range(8)),
+                    key=lambda a: (round(min((abs(where + (radius + 3.0) * cmath.exp(1j * a) - z) for z in marks), default=0.0), 1), -abs(a - math.radians(145))))
+        sketch.arc_arrow(where, radius, start, sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
+        labels.append((where + radius * cmath.exp(1j * start), [(force_math(c.label), f"couple-label-{_gid(c.label)}")],
+                       dict(size=LABEL_PT, prefer=cmath.exp(1j * start), gaps=(0.8, 1.8, 3.0), mathtext=True, leader_from=4.0, color=color)))
+    for anchor, pieces, options in labels:
+        place_label(sketch, anchor, pieces, **options)
+
+
+def _on_segment(z: complex, a: complex, b: complex, tolerance: float = 0.3) -> bool:
+    """Whether *z* lies on the segment a–b (within *tolerance* mm)."""
+    d = b - a
+    if abs(d) < 1e-9:
+        return False
+    t = ((z - a) * d.conjugate()).real / abs(d) ** 2
+    return -0.01 <= t <= 1.01 and abs(z - (a + t * d)) <= tolerance
+
+
+def _segment_shape(a: complex, b: complex):
+    from shapely.geometry import LineString
+
+    return LineString([(a.real, a.imag), (b.real, b.imag)]).buffer(0.3)
 
 
 def _pivot(g, body: str) -> complex:
@@ -510,8 +557,9 @@ def _digits(body: str) -> str:
     return subscript(body)
 
 
-def _block(sketch: Sketch, forces, body: str, centre: complex, at) -> None:
-    """A slider block: a rectangle along the line it slides on."""
+def _block(sketch: Sketch, forces, body: str, centre: complex, at, mass_centre: complex | None = None) -> float:
+    """A slider block: a rectangle along the line it slides on, reaching to its centre of mass *mass_centre* [mm]
+    when that lies off the block (a ram); returns the largest distance [mm] from *centre* to a corner."""
     g = forces.graphical
     scene = g.scene
     angle = g.poses[body][0]
@@ -522,8 +570,16 @@ def _block(sketch: Sketch, forces, body: str, centre: complex, at) -> None:
             break
     u = cmath.exp(1j * angle)
     w, h = 4.5, 2.7
-    corners = [centre + u * (sx * w + sy * h * 1j) for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-    sketch.polygon(corners, fc="white", ec=INK, lw=1.2, gid=f"link-{body}", zorder=1.6)
+    x0, x1, y0, y1 = -w, w, -h, h
+    if mass_centre is not None:
+        local = (mass_centre - centre) / u
+        x0, x1 = min(x0, local.real - 3.0), max(x1, local.real + 3.0)
+        y0, y1 = min(y0, local.imag - 2.5), max(y1, local.imag + 2.5)
+    corners = [centre + u * complex(x, y) for x, y in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))]
+    ram = mass_centre is not None and (x0, x1, y0, y1) != (-w, w, -h, h)
+    # a ram reaching to its centre of mass is drawn open, the bars it carries seen through it
+    sketch.polygon(corners, fc="none" if ram else "white", ec=INK, lw=1.0 if ram else 1.2, gid=f"link-{body}", zorder=1.4 if ram else 1.6)
+    return max(abs(z - centre) for z in corners) if mass_centre is None else math.hypot(w, h)
 
 
 def _hull(zs):
