@@ -131,7 +131,7 @@ def test_the_balancing_moment_states_its_sense_and_the_turn_is_stated(lang):
     lever = joukowski_lever(construct(scene, precision=0.1))
     texts = {a.get_gid(): a.get_text() for a in draw_lever(lever, lang=lang) if a.get_gid() and hasattr(a, "get_text")}
     assert texts["lever-result"].split("N·m", 1)[1].startswith(" ↺" if exact > 0 else " ↻")
-    assert "↺" in texts["lever-scale"] and "90°" in texts["lever-scale"]  # TURN = +i: counter-clockwise
+    assert "↺" in texts["lever-turn"] and "90°" in texts["lever-turn"]  # TURN = +i: counter-clockwise
     assert texts["lever-arm-rule"] == term("lever_arm_rule", lang)
     assert "−" not in texts["lever-moment-F_b"].split("·", 1)[1].split("=")[0].replace("(−", "")  # a negative arm in brackets
 

@@ -788,9 +788,11 @@ def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
     x, y = b.xmin, b.ymin - 3.0
     sketch.text(complex(x, y), term("joukowski_lever", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
-    sketch.text(complex(x, y), scale_caption("k_v", fmt_number(lever.k_v), "(m/s)/mm", lang) + ";  " + term("lever_turned_ccw", lang),
-                size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     row = text_size("lp", CAPTION_PT)[1] + 0.9
+    sketch.text(complex(x, y), scale_caption("k_v", fmt_number(lever.k_v), "(m/s)/mm", lang) + ";", size=CAPTION_PT, ha="left", va="top", gid="scale",
+                obstacle=False, math=True)
+    y -= row
+    sketch.text(complex(x, y), term("lever_turned_ccw", lang), size=CAPTION_PT, ha="left", va="top", gid="turn", obstacle=False)
     y -= row + 0.6
     sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$",
                 size=CAPTION_PT, ha="left", va="top", gid="equation", obstacle=False, math=True)
@@ -821,7 +823,8 @@ def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
             couple = moments[(f.name, f.body)]
             length = abs(couple) / abs(f.force)  # the distance between the pair's points [m]
             given = (f"{name} = {force_math(f.name)}/$l_{{\\mathrm{{{_escape(''.join(ends))}}}}}$ = {_number(abs(couple), lang)} N·m / "
-                     f"{localised(f'{length:.4g}', lang)} m = {_number(abs(f.force), lang)} N ({f.image}; {term('lever_pair', lang).format(points=', '.join(q.image for q in pair))})")
+                     f"{localised(f'{length:.4g}', lang)} m = {_number(abs(f.force), lang)} N ({f.image}"
+                     + (f"; {term('lever_pair', lang).format(points=', '.join(q.image for q in pair))})" if f is pair[0] else ")"))
         line = f"{given} · {h} = {_number(f.moment, lang)} N·mm"
         sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(names[id(f)])}", obstacle=False, math=True)
     for c in lever.couples:
