@@ -182,12 +182,13 @@ def test_every_force_plan_label_stands_by_its_own_vector(name):
 
 
 def test_a_force_plan_lists_its_known_loads_with_newtons_and_drawn_millimetres(six_bar_plans):
-    from plans.drawing.force_drawing import draw_force_plan, found_scales
+    from plans.drawing.force_drawing import draw_force_plan, found_scales, given_loads
 
     plan = next(p for p in six_bar_plans.plans if p.group == "RRR(3,4)")
-    texts = {a.get_gid(): a.get_text() for a in draw_force_plan(plan, found_at=found_scales(six_bar_plans.plans)) if a.get_gid() and hasattr(a, "get_text")}
+    artists = draw_force_plan(plan, found_at=found_scales(six_bar_plans.plans), given=given_loads(six_bar_plans))
+    texts = {a.get_gid(): a.get_text() for a in artists if a.get_gid() and hasattr(a, "get_text")}
     # G_3 = m3·g = 3 kg · 9.81 m/s² = 29.43 N, at μ_F = 2 N/mm: 14.7 mm
-    assert "29.4 N" in texts["fplan-known-G_3"] and "14.7 mm" in texts["fplan-known-G_3"]
+    assert "29.43 N" in texts["fplan-known-G_3"] and "14.7 mm" in texts["fplan-known-G_3"]
     assert "carried" in texts["fplan-known-R_53"]
     assert "found first" in texts["fplan-found-first"] and texts["fplan-reading-R_t_23"].endswith(" mm") and "14.0 N" in texts["fplan-reading-R_t_23"]
     assert texts["fplan-short-R_t_14"].endswith(" N)")  # a vector under 3 mm: its value in N too

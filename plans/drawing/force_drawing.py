@@ -140,17 +140,28 @@ def _number(value: float, lang: str, digits: int = 4) -> str:
 # --- a force plan ----------------------------------------------------------------------
 
 
-def draw_force_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, balancing_moment: float | None = None, found_at: dict | None = None) -> list:
+def draw_force_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, balancing_moment: float | None = None, found_at: dict | None = None,
+                    given: dict | None = None) -> list:
     """Draw one force plan (:class:`plans.forces.force_plans.ForcePlan`), one data unit = 1 mm.
 
     *balancing_moment* [N·m], given for the driver's plan, is stated under it.
     *found_at* (:func:`found_scales`): reaction -> μ_F [N/mm] of the plan that
     found it, so that a reaction carried to this plan at another μ_F says so.
+    *given* (:func:`given_loads`): load -> its magnitude [N] as the kinetostatics
+    gives it (the plan's own value is the drawn length read back).
     Under the plan: the known loads (N and drawn mm), the components Rᵗ found
     first, the reactions read off it.
     Returns the artists; a new true-to-scale figure is ``artists[0].figure``.
     """
-    return sketch_on(ax, "fplan", lambda sketch: draw_force_plan_into(sketch, plan, lang=lang, legend=legend, balancing_moment=balancing_moment, found_at=found_at))
+    return sketch_on(ax, "fplan", lambda sketch: draw_force_plan_into(sketch, plan, lang=lang, legend=legend, balancing_moment=balancing_moment, found_at=found_at, given=given))
+
+
+def given_loads(forces) -> dict[str, float]:
+    """Load label -> its magnitude [N] (weights, inertia forces, given forces) on every moving link of *forces*."""
+    out: dict[str, float] = {}
+    for f in forces.loads:
+        out.setdefault(f.label, float(abs(f.force)))
+    return out
 
 
 def found_scales(plans) -> dict[str, float]:
@@ -166,7 +177,7 @@ def found_scales(plans) -> dict[str, float]:
 
 
 def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool = True, caption: bool = True, balancing_moment: float | None = None,
-                         found_at: dict | None = None, known: bool = True) -> None:
+                         found_at: dict | None = None, known: bool = True, given: dict | None = None) -> None:
     """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch.
 
     *known*: list the known loads and the components Rᵗ under the plan (a page that states them
@@ -216,7 +227,7 @@ def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool
                     prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK,
                     own=(tail, tip), rival_segments=rivals)
     if caption:
-        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment, found_at or {}, known)
+        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment, found_at or {}, known, given or {})
 
 
 def _retraces(a: tuple[complex, complex], b: tuple[complex, complex], near: float = 2.5) -> bool:
@@ -242,7 +253,7 @@ def _closing_point(plan):
     return p1 + t * d1
 
 
-def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None, found_at: dict, known_loads: bool = True) -> None:
+def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None, found_at: dict, known_loads: bool = True, given: dict | None = None) -> None:
     """Heading, μ_F, the reactions read off the plan, the legend: below the plan."""
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
@@ -275,7 +286,8 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
     for v in vectors:
         if v.label in plan.found or v.kind in ("normal", "tangential"):
             continue
-        line = f"{force_math(v.label)} = {_reading(v.value, _step(plan), lang)} N → {_reading(v.length, plan.precision, lang)} mm"
+        value = _number(given[v.label], lang) if given and v.label in given else _reading(v.value, _step(plan), lang)
+        line = f"{force_math(v.label)} = {value} N → {_reading(v.length, plan.precision, lang)} mm"
         carried = found_at.get(v.label) if v.kind == "reaction" else None
         if carried is not None:
             note = term("carried", lang)
@@ -303,7 +315,8 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
         line = f"{force_math(v.label)} = {_reading(v.length, plan.precision, lang)} mm · {mu} N/mm = {_reading(v.value, _step(plan), lang)} N"
         sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"reading-{_gid(v.label)}", obstacle=False, math=True)
     # notes on vectors too short for an arrow (their value in N too)
-    y = flow([(f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm ({_reading(v.value, _step(plan), lang)} N)", f"short-{_gid(v.label)}")
+    y = flow([(f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm "
+               f"({_number(given[v.label], lang) if given and v.label in given else _reading(v.value, _step(plan), lang)} N)", f"short-{_gid(v.label)}")
               for v in vectors if v.length < SHORT_MM], y)
     if balancing_moment is not None:
         y -= row
@@ -603,15 +616,16 @@ def force_figures(forces, *, lang: str = "en", lever=None) -> list[tuple[str, ob
     """
     out = [("free-bodies", draw_free_bodies(forces, lang=lang)[0].figure)]
     found_at = found_scales(forces.plans)
+    given = given_loads(forces)
     number = 0
     for plan in forces.plans:
         if plan.group == "driver":
             name = "force-plan-driver"
-            artists = draw_force_plan(plan, lang=lang, balancing_moment=forces.balancing_moment, found_at=found_at)
+            artists = draw_force_plan(plan, lang=lang, balancing_moment=forces.balancing_moment, found_at=found_at, given=given)
         else:
             number += 1
             name = f"force-plan-{number}"
-            artists = draw_force_plan(plan, lang=lang, found_at=found_at)
+            artists = draw_force_plan(plan, lang=lang, found_at=found_at, given=given)
         out.append((name, artists[0].figure))
     if lever is not None:
         out.append(("lever", draw_lever(lever, lang=lang)[0].figure))
