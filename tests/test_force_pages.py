@@ -71,7 +71,8 @@ def test_the_page_states_the_worked_example(lang):
     texts = " ".join(_texts(pages[0]))
     assert term("free_bodies", lang) in texts
     assert f"{term('force_plan', lang)}: RRP(3,4)" in texts
-    assert f"{term('force_plan', lang)}: {term('driver', lang)}" in texts
+    # the driver's plan names the driving link and what it is, in the reader's words (typed here)
+    assert f"{term('force_plan', lang)}: " + {"en": "driving link 2 (crank)", "ru": "ведущее звено 2 (кривошип)"}[lang] in texts
     # R_12 read on the page at its own μ_F, within the page's drafting precision of §11's
     mu = pages[0].force_scales["driver"]
     found = re.search(r"R_\{\\mathrm\{12\}\}\$ = ([0-9.,]+) mm · [0-9.,]+ N/mm = ([0-9.,]+) N", texts)
