@@ -473,7 +473,7 @@ class DriverLaw:
 
         head = term("driver_law", lang)
         if self.kind == "constant":
-            body = f"{term('law_constant', lang)}: {r}{sub} = {num(self.rate0)} {unit_r}, {a}{sub} = 0"
+            body = f"{term('law_constant_angular' if self.crank else 'law_constant', lang)}: {r}{sub} = {num(self.rate0)} {unit_r}, {a}{sub} = 0"
         elif self.kind == "uniform":
             body = (f"{term('law_uniform', lang)}: {r}{sub}² = {r}₀² + 2{a}{sub}({x}{sub} − {x}₀), "
                     f"{r}₀ = {num(self.rate0)} {unit_r} {term('law_at', lang)} {x}₀ = {where(self.x0)}, {a}{sub} = {num(self.acceleration)} {unit_a}")

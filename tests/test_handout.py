@@ -72,7 +72,7 @@ def test_the_pages_of_a_multi_position_handout(russian):
         assert "RRR(3,4)" in texts[check] and "величина" in texts[check]
     assert "Кинематические диаграммы за цикл" in texts[7] and "Звенья" in texts[7]
     for page in (0, 7, 8):  # the driver's law over the cycle, on the cover and the diagrams (issue 19)
-        assert "закон движения ведущего звена: постоянная скорость" in texts[page]
+        assert "закон движения ведущего звена: постоянная угловая скорость" in texts[page]
     assert "Точки: скорость и ускорение" in texts[8]
     # the output link's kinematic diagrams by graphical differentiation (12 positions: fewer than 8 asked), then their table
     assert "Кинематические диаграммы выходного звена" in texts[9] and "методом хорд" in texts[9]

@@ -82,7 +82,7 @@ COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#0
 STYLES = ("-", "--", "-.", ":")
 MARKERS = ("o", "s", "^", "D", "v", "x", "+", "*")
 NO_ASSEMBLY = {"facecolor": "#d4d4d4", "edgecolor": "#6e6e6e", "hatch": "///"}
-NEAR = {"facecolor": "none", "edgecolor": "#000000", "hatch": "\\\\\\\\"}
+NEAR = {"facecolor": "none", "edgecolor": "#5a5a5a", "hatch": "\\\\"}
 #: The positions' lines: thin (ISO 128's 0.18 mm), so that a screen or pdftoppm up to 150 dpi draws every one a
 #: single pixel wide (0.7 pt fell one or two pixels wide by where it lay: the line at 90° read heavier).
 MARK = {"color": "#202020", "lw": 0.45, "ls": "--"}
@@ -327,16 +327,19 @@ def _page(title: str, subtitle: str, rows: int) -> tuple[Figure, list]:
     return fig, list(np.atleast_1d(axes))
 
 
-def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: bool, has_clipped: bool) -> None:
+def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: bool, has_clipped: bool, has_extremes: bool = False) -> None:
     from matplotlib.patches import Patch
 
     handles = []
     if has_invalid:
         handles.append(Patch(label=term("no_assembly", lang), **NO_ASSEMBLY))
     if has_near:
-        handles.append(Patch(label=f"{term('near_dead_centre', lang)} (|sin| < {localised(f'{NEAR_DEAD_CENTRE:g}', lang)})", **NEAR))
+        handles.append(Patch(label=f"{term('near_dead_centre', lang)}: |sin γ| < {localised(f'{NEAR_DEAD_CENTRE:g}', lang)},\n"
+                                   f"γ — {term('construction_lines_angle', lang)}", **NEAR))
     if has_marks:
         handles.append(Line2D([], [], marker="v", ms=3.5, label=term("sheet_positions", lang), **MARK))
+    if has_extremes:
+        handles.append(Line2D([], [], marker="v", ms=3.5, label=f"0, {OTHER_EXTREME} — {term('output_extremes', lang)}", **{**MARK, "ls": ":"}))
     if has_clipped:
         handles.append(Line2D([], [], color="#000000", ls="none", marker="^", ms=3.5, label=term("clipped", lang)))
     if handles:
@@ -508,9 +511,20 @@ def _plot_panel(ax, x, panel: _Panel, ylabel: str, marks=()) -> None:
     ax.set_ylabel(ylabel, fontsize=TEXT)
     if panel.curves:
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=TEXT, frameon=False, borderaxespad=0.0, handlelength=3.0)
-    if panel.notes:
-        ax.text(0.01, 0.97, "\n".join(panel.notes), transform=ax.transAxes, ha="left", va="top", fontsize=TEXT,
-                bbox={"facecolor": "white", "edgecolor": "none", "pad": 1.0}, zorder=5)
+    if panel.notes:  # (a quantity constant by the scene) in the legend's column beside the axes, at its foot: never over the data
+        ax.text(1.015, 0.0, "\n".join(_wrapped(n) for n in panel.notes), transform=ax.transAxes, ha="left", va="bottom",
+                fontsize=TEXT, linespacing=1.25)
+
+
+#: Characters a line of a note in the legend's column holds (the column beside the axes is about 38 mm wide).
+NOTE_LINE = 22
+
+
+def _wrapped(note: str) -> str:
+    """A panel's note broken into the legend column's lines."""
+    import textwrap
+
+    return "\n".join(textwrap.wrap(note, NOTE_LINE, break_long_words=False))
 
 
 def _name(symbol: str, sub: str) -> str:
@@ -560,9 +574,14 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     scene = analytic.scene
     start = float(analytic.driver[0])  # position 0's angle, for the note φ₂ = start + Δφ
     analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked, cycle)
+    others = [] if rolled else _other_extreme(cycle, extremes, x, start)
+    drawn = bool(marks)  # positions with sheets
+    if others and not marks:  # no positions drawn: position 0 (the output's first extreme) marked beside 0′
+        marks = [(0, float(x[0]))]
     if not rolled:  # 0′ dotted, unless it falls on a numbered position's line (within 1.2 % of the axis: it reads as that)
         span = limits[1] - limits[0]
-        marks = marks + [m for m in _other_extreme(cycle, extremes, x, start) if all(abs(m[1] - xm) > 0.012 * span for _, xm in marks)]
+        marks = marks + [m for m in others if all(abs(m[1] - xm) > 0.012 * span for _, xm in marks)]
+    period = None if rolled else _period(x, cycle, hasattr(scene.driver, "omega"))
     valid = np.asarray(analytic.valid, dtype=bool)
     invalid = ~valid
     near = _near_dead(analytic, ring=rolled)
@@ -575,22 +594,31 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         subtitle += "\n" + cycle.law.describe(lang, scene.driver.link)
     out = []
 
+    xs, invalid_s, near_s, good_s = (x, invalid, near, good) if period is None else (
+        np.append(x, x[0] + period), *(np.append(a, a[0]) for a in (invalid, near, good)))
+
     def page(name, words, quantities):
-        panels = []
+        panels, dropped = [], []
         for quantity, ylabel, unit in quantities:
             panel = _quantity_panel(analytic, quantity, valid, lang, unit, start=start, swing=_swing(cycle))
+            if quantity == "coriolis" and not panel.curves:  # a slider on a guide that does not turn: no panel of zeros
+                dropped.append(term("coriolis_zero", lang))
+                continue
+            if period is not None:
+                panel = _closed(panel, quantity)
             panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang) if quantity == "phi" else [panel])]
-        fig, axes = _page(title, subtitle + "\n" + words, len(panels))
+        fig, axes = _page(title, subtitle + "\n" + words + "".join("\n" + d for d in dropped), len(panels))
         clipped = False
         for ax, (panel, ylabel, unit) in zip(axes, panels):
-            _plot_panel(ax, x, panel, ylabel, marks)
-            _decorate(ax, x, invalid, near, marks, lang, numbers=ax is axes[0], limits=limits)
-            clipped |= _clip(ax, x, panel, good, lang, unit)
+            _plot_panel(ax, xs, panel, ylabel, marks)
+            _decorate(ax, xs, invalid_s, near_s, marks, lang, numbers=ax is axes[0], limits=limits)
+            clipped |= _clip(ax, xs, panel, good_s, lang, unit)
         axes[-1].set_xlabel(f"{xlabel}  —  {xwords}", fontsize=TEXT + 1)
         if ticks is not None:
             axes[-1].set_xticks(ticks)
             axes[-1].set_xlim(*limits)
-        _legend_note(fig, lang, bool(invalid.any()), bool((near & ~invalid).any()), bool(marks), clipped)
+        extremes_marked = any(k == OTHER_EXTREME for k, _ in marks)
+        _legend_note(fig, lang, bool(invalid.any()), bool((near & ~invalid).any()), drawn, clipped, extremes_marked)
         out.append((name, fig))
 
     with drawing_rc():
@@ -617,6 +645,37 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
                 ]
             page("sliders", term("sliders_motion", lang), panels)
     return out
+
+
+def _period(x: np.ndarray, cycle, crank: bool) -> float | None:
+    """The period of the horizontal axis when the sweep is one whole cycle that repeats, its last sample one
+    step before the first one again (a crank's turn at constant ω: 360°; a swing there and back: T); else None.
+    The diagrams are then closed: the first sample drawn again one period on."""
+    if len(x) < 3:
+        return None
+    step = float(x[1] - x[0])
+    if _swing(cycle):
+        period = float(cycle.period)
+    elif crank and (cycle is None or cycle.law.kind == "constant"):
+        period = 360.0
+    else:
+        return None
+    steps = np.diff(x)
+    if not np.allclose(steps, step, rtol=1e-6, atol=1e-9) or abs(float(x[-1]) + step - float(x[0]) - period) > 1e-6 * period:
+        return None
+    return period
+
+
+def _closed(panel: _Panel, quantity: str) -> _Panel:
+    """The panel with each curve's first value appended, one period on (an angle: whole turns added where
+    the link turned them over the cycle)."""
+    curves = []
+    for name, y in panel.curves:
+        first = float(y[0])
+        if quantity == "phi" and np.isfinite(first) and np.isfinite(y[-1]):
+            first += 360.0 * round((float(y[-1]) - first) / 360.0)
+        curves.append((name, np.append(y, first)))
+    return _Panel(curves, panel.notes, panel.styles)
 
 
 def _unwrap_nan(phi, valid) -> np.ndarray:

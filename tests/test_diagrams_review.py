@@ -1,0 +1,120 @@
+"""A mechanisms teacher's review of the sweep's diagrams: legible scale symbols, curves closed over the cycle,
+notes beside the axes (never over the data), positions 0 and 0′ marked and explained, no panel of zeros,
+the crank's law in angular words."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import plans
+from plans.drawing.diagrams import draw_cycle_diagrams
+from plans.drawing.style import MM_PER_PT
+from plans.drawing.typeset import runs, text_width
+from plans.i18n import term
+from plans.motion import driver_cycle, strokes
+
+
+def _drawn(name, steps=72, lang="en"):
+    scene = plans.load(plans.example_path(name))
+    cycle = driver_cycle(scene, steps)
+    analytic = cycle.solve(warn_condition=math.inf)
+    found = strokes(scene, None, analytic.structure)
+    return cycle, dict(draw_cycle_diagrams(analytic, lang=lang, cycle=cycle, extremes=found))
+
+
+@pytest.fixture(scope="module")
+def four_bar():
+    return _drawn("four-bar")
+
+
+def _curves(ax):
+    return [line for line in ax.get_lines() if not line.get_label().startswith("_")]
+
+
+@pytest.mark.parametrize("symbol", ["t", "s", "v", "a", "\\omega", "\\varepsilon"])
+def test_a_subscript_of_mu_clears_its_foot(symbol):
+    # set at μ's advance, a subscript touches the foot of DejaVu's μ and μₜ reads as "ɥ": a gap of a tenth of the size
+    (mu, sub), _, _ = runs(f"$\\mu_{{{symbol}}}$", 8.0)
+    assert mu[0] == "μ"
+    assert sub[1] - (mu[1] + text_width("μ", 8.0)) >= 0.09 * 8.0 * MM_PER_PT
+
+
+def test_a_turn_is_closed_at_360_degrees(four_bar):
+    _, figures = four_bar
+    for name in ("links", "points"):
+        for ax in figures[name].axes:
+            for line in _curves(ax):
+                x, y = (np.asarray(a, dtype=float) for a in line.get_data())
+                assert x[-1] == pytest.approx(360.0)  # not 355°: the cycle repeats
+                assert x[-2] == pytest.approx(355.0)
+                assert y[-1] == pytest.approx(y[0], abs=1e-9 * max(1.0, float(np.nanmax(np.abs(y)))))
+
+
+def test_a_swing_is_closed_at_its_period():
+    cycle, figures = _drawn("rocker-limit")
+    period = 2 * math.pi / cycle.law.frequency
+    for ax in figures["links"].axes:
+        for line in _curves(ax):
+            x, y = (np.asarray(a, dtype=float) for a in line.get_data())
+            assert x[-1] == pytest.approx(period)
+            assert y[-1] == pytest.approx(y[0])
+
+
+def test_the_constant_notes_stand_beside_the_axes(four_bar):
+    _, figures = four_bar
+    omega = figures["links"].axes[-2]
+    notes = [t for t in omega.texts if "ω₂" in t.get_text()]
+    assert notes, "ω₂ = 10 rad/s is written in the ω panel"
+    for note in notes:
+        x, _ = note.get_position()
+        assert note.get_transform() == omega.transAxes and x > 1.0  # in the legend's column, right of the plotting area
+
+
+def test_positions_0_and_0_prime_are_marked_and_explained(four_bar):
+    _, figures = four_bar
+    ax = figures["links"].axes[0]
+    lines = [line for line in ax.get_lines() if line.get_linestyle() in ("--", ":") and len(line.get_xdata()) == 2
+             and line.get_xdata()[0] == line.get_xdata()[1]]
+    xs = sorted(float(line.get_xdata()[0]) for line in lines)
+    assert xs[0] == pytest.approx(0.0)  # position 0, where the sweep starts (the output's extreme)
+    assert len(xs) == 2 and 150.0 < xs[1] < 250.0  # 0′: the four-bar's other extreme, after ~200° of the crank
+    labels = [t.get_text() for legend in figures["links"].legends for t in legend.get_texts()]
+    assert "0, 0′ — extreme positions of the output link" in labels
+    assert [t.get_text() for t in ax.texts if t.get_text() in ("0", "0′")] == ["0", "0′"]
+
+
+def test_a_coriolis_panel_of_zeros_is_dropped_with_a_note():
+    _, figures = _drawn("slider-crank", lang="sr")
+    sliders = figures["sliders"]
+    assert len(sliders.axes) == 3  # s, vʳ, aʳ: the slider's guide is the frame, aᵏ ≡ 0
+    assert not any("ᵏ" in ax.get_ylabel() for ax in sliders.axes)
+    page = " ".join(t.get_text() for t in sliders.texts)
+    assert "Кориолисово убрзање aᵏ = 0 у сваком положају" in page
+
+
+def test_the_near_dead_centre_hatch_says_the_sine_of_what():
+    # rocker-limit over a whole turn (the scene's ω held): intervals near a dead centre
+    scene = plans.load(plans.example_path("rocker-limit"))
+    analytic = plans.solve(scene, scene.driver.phi + 2 * np.pi * np.arange(73) / 72, allow_partial=True)
+    links = dict(draw_cycle_diagrams(analytic, lang="sl"))["links"]
+    labels = " ".join(t.get_text() for legend in links.legends for t in legend.get_texts())
+    assert "|sin γ| < 0,1" in labels and "γ — kot med konstrukcijskima premicama skupine" in labels
+
+
+@pytest.mark.parametrize("lang, crank, linear", [
+    ("sr", "константна угаона брзина", "константна брзина"),
+    ("ru", "постоянная угловая скорость", "постоянная скорость"),
+    ("bg", "постоянна ъглова скорост", "постоянна скорост"),
+    ("sl", "konstantna kotna hitrost", "konstantna hitrost"),
+    ("en", "constant angular velocity", "constant speed"),
+])
+def test_a_crank_at_constant_rate_turns_at_constant_angular_velocity(lang, crank, linear):
+    four_bar = driver_cycle(plans.load(plans.example_path("four-bar")), 12).law
+    arm = driver_cycle(plans.load(plans.example_path("linear-arm")), 12).law
+    assert arm.kind == "constant" and four_bar.kind == "constant"
+    assert f": {crank}:" in four_bar.describe(lang, "2")
+    assert f": {linear}:" in arm.describe(lang, "2") and crank not in arm.describe(lang, "2")
+    assert term("law_constant", lang) == linear
