@@ -731,6 +731,8 @@ TERMS: dict[str, dict[str, str]] = {
                     "bg": "равноускорително", "sl": "enakomerno pospešeno"},
     "law_harmonic": {"en": "harmonic swing between", "sr": "хармонијско љуљање између", "ru": "гармоническое качание между",
                      "bg": "хармонично люлеене между", "sl": "harmonično nihanje med"},
+    "scene_instant": {"en": "the scene's instant", "sr": "тренутак сцене", "ru": "момент сцены", "bg": "моментът на сцената",
+                      "sl": "trenutek scene"},
     "law_at": {"en": "at", "sr": "при", "ru": "при", "bg": "при", "sl": "pri"},
     "law_at_limits": {"en": "at the limit positions", "sr": "у граничним положајима", "ru": "в крайних положениях",
                       "bg": "в крайните положения", "sl": "v mejnih legah"},

@@ -118,3 +118,43 @@ def test_a_crank_at_constant_rate_turns_at_constant_angular_velocity(lang, crank
     assert f": {crank}:" in four_bar.describe(lang, "2")
     assert f": {linear}:" in arm.describe(lang, "2") and crank not in arm.describe(lang, "2")
     assert term("law_constant", lang) == linear
+
+
+def test_a_swings_law_is_stated_as_plotted():
+    # the stated law, read back from its words, gives the plotted positions and rates at the plotted times
+    import re
+
+    cycle, figures = _drawn("rocker-limit")
+    law = cycle.law.describe("en", "2", phase=float(cycle.phase[0]))
+    found = re.search(r"φ₂ = φc − A·cos Ω\(t \+ t₀\), t₀ = ([0-9.]+) s, φc = (−?[0-9.]+)°, A = ([0-9.]+)°, Ω = ([0-9.]+) rad/s", law)
+    assert found, law
+    t0, centre, amplitude, omega = (float(g.replace("−", "-")) for g in found.groups())
+    t = np.asarray(cycle.t)
+    phi = np.radians(centre) - np.radians(amplitude) * np.cos(omega * (t + t0))
+    assert np.allclose(phi, cycle.positions, atol=2e-3)  # to the 4 digits stated
+    rate = np.radians(amplitude) * omega * np.sin(omega * (t + t0))
+    assert rate[0] == pytest.approx(cycle.rate[0], rel=2e-3) and abs(rate[0]) > 5.0  # at t = 0 the input moves
+    assert "the scene's instant: |ω₂| = 10 rad/s at φ₀ = 30°" in law
+    page = " ".join(t.get_text() for t in figures["links"].texts)
+    assert "Ω(t + t₀)" in page
+
+
+def test_a_swings_angles_are_drawn_as_they_are():
+    cycle, figures = _drawn("rocker-limit")
+    labels = [line.get_label() for ax in figures["links"].axes for line in _curves(ax)]
+    assert not any("°" in label for label in labels)  # no "φ₂ − 360.0°": no offsets on a swing, for every link alike
+    phi2 = next(line for ax in figures["links"].axes for line in _curves(ax) if line.get_label() == "φ₂")
+    x, y = (np.asarray(a, dtype=float) for a in phi2.get_data())
+    assert np.allclose(y[:len(cycle.positions)], np.degrees(cycle.positions))  # −56° … 56°, as the law states it
+
+
+def test_a_swings_input_stops_at_its_limit_positions():
+    # the sweep's diagrams sample the limit positions at their times: |v_A| of the swinging input reaches 0 there
+    scene = plans.load(plans.example_path("rocker-limit"))
+    cycle = driver_cycle(scene, 72, limits=True)
+    assert len(cycle.positions) == 74  # the two limit positions added, at ψ = kπ
+    limit = np.abs(np.sin(np.asarray(cycle.phase))) < 1e-3
+    assert limit.sum() == 2 and np.all(np.abs(cycle.rate[limit]) < 2e-4 * np.max(np.abs(cycle.rate)))  # (1e-4 of phase past them)
+    figures = dict(draw_cycle_diagrams(cycle.solve(warn_condition=math.inf), cycle=cycle))
+    v_a = next(line for line in _curves(figures["points"].axes[0]) if "A" in line.get_label())
+    assert float(np.nanmin(v_a.get_ydata())) < 1e-3  # not ~0.05 m/s: the limit positions are sampled exactly

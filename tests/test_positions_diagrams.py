@@ -102,7 +102,7 @@ def test_the_bands_read_in_black_and_white(rocker_limit):
     near = [p for p in ax.patches if p.get_hatch() and "\\" in p.get_hatch()]
     assert len(near) == 2  # entering and leaving the interval without assembly
     for patch in near:
-        assert max(patch.get_edgecolor()[:3]) <= 0.4  # a dark hatch, not a pale fill (dark grey: the data stays visible)
+        assert max(patch.get_edgecolor()[:3]) <= 0.45  # a dark hatch, not a pale fill (dark grey: the data stays visible)
         assert patch.get_facecolor()[3] == 0.0
         lo, hi = ax.get_xlim()
         assert patch.get_width() >= 0.008 * (hi - lo) - 1e-9  # wide enough to see (0.8 % of the axis)

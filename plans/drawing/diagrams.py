@@ -82,7 +82,7 @@ COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#0
 STYLES = ("-", "--", "-.", ":")
 MARKERS = ("o", "s", "^", "D", "v", "x", "+", "*")
 NO_ASSEMBLY = {"facecolor": "#d4d4d4", "edgecolor": "#6e6e6e", "hatch": "///"}
-NEAR = {"facecolor": "none", "edgecolor": "#5a5a5a", "hatch": "\\\\"}
+NEAR = {"facecolor": "none", "edgecolor": "#6a6a6a", "hatch": "\\\\"}
 #: The positions' lines: thin (ISO 128's 0.18 mm), so that a screen or pdftoppm up to 150 dpi draws every one a
 #: single pixel wide (0.7 pt fell one or two pixels wide by where it lay: the line at 90° read heavier).
 MARK = {"color": "#202020", "lw": 0.45, "ls": "--"}
@@ -386,11 +386,14 @@ def _panel(series, valid, lang: str, unit: str, extra_notes=()) -> _Panel:
 SHARE = 0.5
 
 
-def _angle_panels(panel: _Panel, lang: str) -> list[_Panel]:
+def _angle_panels(panel: _Panel, lang: str, offsets: bool = True) -> list[_Panel]:
     """The angle panel split so that every angle's swing is readable: links whose swings are alike share a
     panel, each drawn as its change from the middle of its swing (named ``φ₄ − 112,3°``); a link that
     swings much less (or much more) than the others gets a panel of its own, drawn as it is.  The notes
-    (the crank's φ, constant angles) go into the first panel."""
+    (the crank's φ, constant angles) go into the first panel.
+
+    Without *offsets* (a swing: every angle, the driver's too, within a half turn of 0) each angle is drawn
+    as it is, and links share a panel where their angles themselves lie alike."""
     if len(panel.curves) < 2:
         return [panel]
 
@@ -399,7 +402,7 @@ def _angle_panels(panel: _Panel, lang: str) -> list[_Panel]:
 
     groups: list[list[tuple[str, np.ndarray, float]]] = []
     for name, y in sorted(panel.curves, key=lambda c: -swing(c[1])):
-        middle = round((float(np.nanmax(y)) + float(np.nanmin(y))) / 2, 1)
+        middle = round((float(np.nanmax(y)) + float(np.nanmin(y))) / 2, 1) if offsets else 0.0
         entry = (name, y, middle)
         for group in groups:
             trial = group + [entry]
@@ -420,7 +423,8 @@ def _angle_panels(panel: _Panel, lang: str) -> list[_Panel]:
             curves: list = []  # links that turn together swing alike: one curve with both names
             styles = []
             for name, y, m in group:
-                label, d = f"{name} {MINUS if m >= 0 else '+'} {localised(f'{abs(m):.1f}', lang)}°", y - m
+                label = f"{name} {MINUS if m >= 0 else '+'} {localised(f'{abs(m):.1f}', lang)}°" if offsets else name
+                d = y - m
                 same = [c for c in curves if np.array_equal(np.isfinite(c[1]), np.isfinite(d)) and np.allclose(c[1][np.isfinite(d)], d[np.isfinite(d)], atol=1e-9)]
                 if same:
                     same[0][0].append(label)
@@ -591,7 +595,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     title = term("cycle_diagrams", lang)
     subtitle = user_text(scene.title)
     if cycle is not None:
-        subtitle += "\n" + cycle.law.describe(lang, scene.driver.link)
+        subtitle += "\n" + cycle.law.describe(lang, scene.driver.link, **({"phase": float(cycle.phase[0])} if _swing(cycle) else {}))
     out = []
 
     xs, invalid_s, near_s, good_s = (x, invalid, near, good) if period is None else (
@@ -606,7 +610,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
                 continue
             if period is not None:
                 panel = _closed(panel, quantity)
-            panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang) if quantity == "phi" else [panel])]
+            panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang, offsets=not _swing(cycle)) if quantity == "phi" else [panel])]
         fig, axes = _page(title, subtitle + "\n" + words + "".join("\n" + d for d in dropped), len(panels))
         clipped = False
         for ax, (panel, ylabel, unit) in zip(axes, panels):
@@ -661,6 +665,9 @@ def _period(x: np.ndarray, cycle, crank: bool) -> float | None:
     else:
         return None
     steps = np.diff(x)
+    if _swing(cycle):  # (its limit positions may lie between the equal steps): the last step short of T at most one step
+        rest = float(x[0]) + period - float(x[-1])
+        return period if 1e-9 * period < rest <= float(steps.max()) * (1 + 1e-6) else None
     if not np.allclose(steps, step, rtol=1e-6, atol=1e-9) or abs(float(x[-1]) + step - float(x[0]) - period) > 1e-6 * period:
         return None
     return period
@@ -678,8 +685,9 @@ def _closed(panel: _Panel, quantity: str) -> _Panel:
     return _Panel(curves, panel.notes, panel.styles)
 
 
-def _unwrap_nan(phi, valid) -> np.ndarray:
-    """φ in degrees, unwrapped continuously over every valid position (across gaps too), starting in [0°, 360°).
+def _unwrap_nan(phi, valid, centred: bool = False) -> np.ndarray:
+    """φ in degrees, unwrapped continuously over every valid position (across gaps too), starting in [0°, 360°)
+    (*centred*, a swing's angles: the middle of its range within (−180°, 180°]).
 
     It differs from the angle in [0, 360) of the CSV by whole turns only.
     """
@@ -688,7 +696,11 @@ def _unwrap_nan(phi, valid) -> np.ndarray:
     ok = valid & np.isfinite(phi)
     if ok.any():
         turned = np.degrees(np.unwrap(phi[ok]))
-        out[ok] = turned - 360.0 * math.floor(turned[0] / 360.0)
+        if centred:
+            middle = (float(turned.max()) + float(turned.min())) / 2
+            out[ok] = turned - 360.0 * math.ceil((middle - 180.0) / 360.0)
+        else:
+            out[ok] = turned - 360.0 * math.floor(turned[0] / 360.0)
     return out
 
 
@@ -728,7 +740,7 @@ def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start:
     input's swing drawn against time, its own angle a curve like the others."""
     scene = analytic.scene
     extra = []
-    series = _series(analytic, quantity, valid)
+    series = _series(analytic, quantity, valid, swing)
     if quantity == "phi" and hasattr(scene.driver, "omega") and not swing:
         link = scene.driver.link
         start = _number(math.degrees(float(analytic.driver[0] if start is None else start)) % 360.0, lang, 4)
@@ -738,13 +750,13 @@ def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start:
     return _panel(series, valid, lang, unit, extra)
 
 
-def _series(analytic, quantity: str, valid) -> list[tuple[str, np.ndarray]]:
+def _series(analytic, quantity: str, valid, swing: bool = False) -> list[tuple[str, np.ndarray]]:
     scene = analytic.scene
     if quantity in ("phi", "omega", "epsilon"):
         links = [n for n in scene.links if not scene.bodies[n].block]
         symbol = {"phi": "φ", "omega": "ω", "epsilon": "ε"}[quantity]
         if quantity == "phi":
-            return [(_name(symbol, n), _unwrap_nan(analytic.links[n].phi, valid)) for n in links]
+            return [(_name(symbol, n), _unwrap_nan(analytic.links[n].phi, valid, centred=swing)) for n in links]
         return [(_name(symbol, n), _finite(getattr(analytic.links[n], quantity), valid)) for n in links]
     points = [p for p in scene.report if p in analytic.points]
     if quantity in ("v", "a"):
