@@ -641,7 +641,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         page("points", term("points_motion", lang), panels)
 
         if any(p.name in analytic.sliders for p in scene.prismatics):
-            panels = [("s", f"s [mm]\n({term('travel', lang)})", "mm"), ("v_rel", f"vʳ [m/s]\n({term('relative_velocity_short', lang)})", "m/s")]
+            panels = [("s", f"s [mm]\n({term('guide_position', lang)})", "mm"), ("v_rel", f"vʳ [m/s]\n({term('relative_velocity_short', lang)})", "m/s")]
             if scene.accelerations:
                 panels += [
                     ("a_rel", f"aʳ [m/s²]\n({term('relative_acceleration_short', lang)})", "m/s²"),
