@@ -158,3 +158,76 @@ def test_a_swings_input_stops_at_its_limit_positions():
     figures = dict(draw_cycle_diagrams(cycle.solve(warn_condition=math.inf), cycle=cycle))
     v_a = next(line for line in _curves(figures["points"].axes[0]) if "A" in line.get_label())
     assert float(np.nanmin(v_a.get_ydata())) < 1e-3  # not ~0.05 m/s: the limit positions are sampled exactly
+
+
+def test_the_cranks_rate_reads_the_same_in_the_panel_and_the_law():
+    _, figures = _drawn("slider-crank", lang="sr")
+    points = figures["points"]
+    page = " ".join(t.get_text() for t in points.texts)
+    assert "ω₂ = 209,4 rad/s" in page  # the law under the title: 2000 rpm = 209.44 rad/s
+    links = figures["links"]
+    notes = " ".join(t.get_text().replace("\n", " ") for ax in links.axes for t in ax.texts)
+    assert "ω₂ = 209,4 rad/s" in notes and "209 rad/s" not in notes
+
+
+def test_five_digit_numbers_are_grouped_with_a_thin_space():
+    from matplotlib.figure import Figure
+
+    from plans.drawing.diagrams import _Ticks, _number
+
+    ax = Figure().add_subplot()
+    ax.set_ylim(-5000.0, 16000.0)
+    ticks = _Ticks("sr")
+    ax.yaxis.set_major_formatter(ticks)
+    ticks.set_locs([-5000.0, 0.0, 15000.0])
+    assert ticks(15000.0) == "15\u2009000"
+    assert ticks(-5000.0) == "−5000"  # four digits stay whole
+    assert _number(15000.0, "sr", 4) == "15\u2009000" and _number(0.123456, "en", 4) == "0.1235"
+
+
+@pytest.fixture(scope="module")
+def sheets():
+    from plans.differentiation import kinematic_diagrams
+
+    return {name: kinematic_diagrams(plans.load(plans.example_path(name)), 12) for name in ("four-bar", "rocker-limit", "slider-crank")}
+
+
+def _page_text(fig):
+    from plans.drawing.typeset import TypesetText
+
+    return " ".join(a.get_text() for a in fig.findobj(TypesetText))
+
+
+def test_the_kinematic_sheet_defines_its_displacement(sheets):
+    from plans.drawing.kinematic_diagrams import header_lines
+
+    rocker = " ".join(header_lines(sheets["four-bar"], "en"))
+    assert "ψ₄ = φ₄ − φ₄(0): measured from position 0, an extreme position of the output link, counter-clockwise positive" in rocker
+    assert "Δt = T/12 = 0.05236 s" in rocker and "equal time steps" in rocker  # 2π/10 rad/s over 12
+    slider = " ".join(header_lines(sheets["slider-crank"], "sr"))
+    assert "мери се од положаја 0, крајњег положаја излазног члана, позитивно у смеру вођице" in slider
+    swing = " ".join(header_lines(sheets["rocker-limit"], "en"))
+    assert "Ω(t + t₀)" in swing and "the scene's instant" in swing
+
+
+def test_the_kinematic_table_is_numbered_in_the_readers_words(sheets):
+    from plans.drawing.kinematic_diagrams import diagrams_table
+
+    assert diagrams_table(sheets["four-bar"], "en")[0][0] == "No."
+    assert diagrams_table(sheets["four-bar"], "ru")[0][0] == "№"
+
+
+def test_the_swings_table_fits_under_its_diagrams(sheets):
+    from plans.drawing.kinematic_diagrams import draw_kinematic_pages
+
+    for name in ("four-bar", "rocker-limit", "slider-crank"):
+        assert len(draw_kinematic_pages(sheets[name], title=name, lang="en")) == 1, name
+
+
+@pytest.mark.parametrize("lo, hi", [(-6.8, 4.3), (-3.5, 7.0), (-120.0, 110.0)])
+def test_an_ordinate_across_0_has_a_tick_on_each_side(lo, hi):
+    from plans.drawing.kinematic_diagrams import _ticks
+
+    values = _ticks(lo, hi, 28.0)
+    assert (values > 0).any() and (values < 0).any()
+    assert np.min(np.diff(values)) / (hi - lo) * 28.0 >= 4.0  # still legible: 4 mm apart at least

@@ -99,11 +99,28 @@ def _number(value: float, lang: str, digits: int = 3) -> str:
         return "0" if value == 0 else "?"
     if 1e-3 <= abs(value) < 1e6:
         decimals = max(0, digits - 1 - int(math.floor(math.log10(abs(value)))))
-        text = f"{value:.{decimals}f}"
+        text = _grouped(f"{value:.{decimals}f}")
     else:
         mantissa, exponent = f"{value:.{digits - 1}e}".split("e")
         text = f"{mantissa}·10" + str(int(exponent)).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
     return localised(text, lang)
+
+
+def _stated(value: float, lang: str) -> str:
+    """A value of the scene (the crank's ω) as the driver's law states it: four significant digits, trailing zeros
+    dropped (``209,4``, ``−10``), so that the panel and the law under the title read the same."""
+    text = _number(value, lang, 4)
+    mark = "," if lang in ("sr", "ru", "bg", "sl") else "."
+    if mark in text and "·" not in text:
+        text = text.rstrip("0").rstrip(mark)
+    return text
+
+
+def _grouped(text: str) -> str:
+    """Digits of a whole part of five or more grouped by three with a thin space (ISO 80000-1): ``15 000``."""
+    import re
+
+    return re.sub(r"(?<![\d.,])(\d{5,})", lambda m: f"{int(m.group(1)):,}".replace(",", "\u2009"), text)
 
 
 class _Ticks(ScalarFormatter):
@@ -115,7 +132,7 @@ class _Ticks(ScalarFormatter):
         self.lang = lang
 
     def __call__(self, x, pos=None):
-        return localised(super().__call__(x, pos).replace(MINUS, "-"), self.lang)
+        return localised(_grouped(super().__call__(x, pos).replace(MINUS, "-")), self.lang)
 
     def get_offset(self):
         return localised(super().get_offset().replace(MINUS, "-"), self.lang)
@@ -368,7 +385,7 @@ def _panel(series, valid, lang: str, unit: str, extra_notes=()) -> _Panel:
         scale = max(float(np.max(np.abs(values))), 1e-300)
         if float(np.ptp(values)) <= 1e-9 * scale:
             value = float(values[0]) if abs(float(values[0])) > 1e-12 * scale else 0.0
-            notes.append(f"{name} = {_number(value, lang)}{(' ' + unit) if unit and value else ''}")
+            notes.append(f"{name} = {_stated(value, lang)}{(' ' + unit) if unit and value else ''}")
             continue
         for curve in curves:
             other = curve[1]
@@ -490,9 +507,13 @@ def _clip(ax, x, panel: _Panel, good, lang: str, unit: str) -> bool:
             extreme = float(np.nanmax(y[over])) if marker == "^" else float(np.nanmin(y[over]))
             extremes.setdefault(name, []).append(_number(extreme, lang))
     beyond = [f"{name}: {' / '.join(values)}" for name, values in extremes.items()]
-    if beyond:
-        ax.text(0.99, 0.97, f"{term('clipped', lang)}: " + ", ".join(beyond) + (f" {unit}" if unit else ""), transform=ax.transAxes,
-                ha="right", va="top", fontsize=TEXT, bbox={"facecolor": "white", "edgecolor": "none", "pad": 1.0}, zorder=5)
+    if beyond:  # in the legend's column beside the axes, under the panel's other notes: never over the data
+        note = _wrapped(f"{term('clipped', lang)}: " + ", ".join(beyond) + (f" {unit}" if unit else ""))
+        notes = [t for t in ax.texts if t.get_gid() == "panel-notes"]
+        if notes:
+            notes[0].set_text(notes[0].get_text() + "\n" + note)
+        else:
+            ax.text(1.015, 0.0, note, transform=ax.transAxes, ha="left", va="bottom", fontsize=TEXT, linespacing=1.25, gid="panel-notes")
     return bool(beyond)
 
 
@@ -517,7 +538,7 @@ def _plot_panel(ax, x, panel: _Panel, ylabel: str, marks=()) -> None:
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=TEXT, frameon=False, borderaxespad=0.0, handlelength=3.0)
     if panel.notes:  # (a quantity constant by the scene) in the legend's column beside the axes, at its foot: never over the data
         ax.text(1.015, 0.0, "\n".join(_wrapped(n) for n in panel.notes), transform=ax.transAxes, ha="left", va="bottom",
-                fontsize=TEXT, linespacing=1.25)
+                fontsize=TEXT, linespacing=1.25, gid="panel-notes")
 
 
 #: Characters a line of a note in the legend's column holds (the column beside the axes is about 38 mm wide).
