@@ -231,3 +231,19 @@ def test_an_ordinate_across_0_has_a_tick_on_each_side(lo, hi):
     values = _ticks(lo, hi, 28.0)
     assert (values > 0).any() and (values < 0).any()
     assert np.min(np.diff(values)) / (hi - lo) * 28.0 >= 4.0  # still legible: 4 mm apart at least
+
+
+def test_a_single_diagrams_note_stands_above_it():
+    # the lecture page's diagrams (plot_cycle) have no legend column: the note goes above the axes, not over the data
+    from plans.drawing.diagrams import plot_cycle
+
+    scene = plans.load(plans.example_path("four-bar"))
+    cycle = driver_cycle(scene, 72)
+    ax = plot_cycle(cycle.solve(), "omega", cycle=cycle, marked=driver_cycle(scene, 6))[0].axes
+    notes = [t for t in ax.texts if "ω₂" in t.get_text()]
+    assert len(notes) == 1
+    ax.figure.canvas.draw()
+    box = notes[0].get_window_extent().transformed(ax.transAxes.inverted())
+    assert box.y0 > 1.0  # above the plotting area
+    numbers = [t for t in ax.texts if t.get_text() in {"0", "1", "2", "3", "4", "5"}]
+    assert len(numbers) == 6 and all(not box.overlaps(n.get_window_extent().transformed(ax.transAxes.inverted())) for n in numbers)

@@ -509,11 +509,11 @@ def _clip(ax, x, panel: _Panel, good, lang: str, unit: str) -> bool:
     beyond = [f"{name}: {' / '.join(values)}" for name, values in extremes.items()]
     if beyond:  # in the legend's column beside the axes, under the panel's other notes: never over the data
         note = _wrapped(f"{term('clipped', lang)}: " + ", ".join(beyond) + (f" {unit}" if unit else ""))
-        notes = [t for t in ax.texts if t.get_gid() == "panel-notes"]
+        notes = _side_notes(ax)
         if notes:
             notes[0].set_text(notes[0].get_text() + "\n" + note)
         else:
-            ax.text(1.015, 0.0, note, transform=ax.transAxes, ha="left", va="bottom", fontsize=TEXT, linespacing=1.25, gid="panel-notes")
+            ax.text(1.015, 0.0, note, transform=ax.transAxes, ha="left", va="bottom", fontsize=TEXT, linespacing=1.25)
     return bool(beyond)
 
 
@@ -538,7 +538,7 @@ def _plot_panel(ax, x, panel: _Panel, ylabel: str, marks=()) -> None:
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=TEXT, frameon=False, borderaxespad=0.0, handlelength=3.0)
     if panel.notes:  # (a quantity constant by the scene) in the legend's column beside the axes, at its foot: never over the data
         ax.text(1.015, 0.0, "\n".join(_wrapped(n) for n in panel.notes), transform=ax.transAxes, ha="left", va="bottom",
-                fontsize=TEXT, linespacing=1.25, gid="panel-notes")
+                fontsize=TEXT, linespacing=1.25)
 
 
 #: Characters a line of a note in the legend's column holds (the column beside the axes is about 38 mm wide).
@@ -550,6 +550,31 @@ def _wrapped(note: str) -> str:
     import textwrap
 
     return "\n".join(textwrap.wrap(note, NOTE_LINE, break_long_words=False))
+
+
+def _side_notes(ax) -> list:
+    """The panel's notes beside the axes (see :func:`_plot_panel`): texts placed in axes coordinates right of them."""
+    return [t for t in ax.texts if t.get_transform() == ax.transAxes and t.get_position()[0] > 1.0]
+
+
+def _notes_above(ax, raised: bool = False) -> None:
+    """A single diagram's notes (see :func:`_plot_panel`) moved from beside the axes to above them, as wide as the
+    axes: a diagram of a page (the lecture's) has no legend column to hold them; never over the data.
+    *raised*: above the positions' numbers too."""
+    import textwrap
+
+    from matplotlib.transforms import offset_copy
+
+    width_mm = ax.get_position().width * ax.figure.get_figwidth() * 25.4
+    for note in _side_notes(ax):
+        words = "; ".join(" ".join(part.split("\n")) for part in note.get_text().split("\n\n"))
+        lines = textwrap.wrap(" ".join(words.split("\n")), max(20, int(width_mm / 1.55)), break_long_words=False)
+        note.set_text("\n".join(lines))
+        note.set_position((0.0, 1.02))
+        if raised:
+            note.set_transform(offset_copy(ax.transAxes, ax.figure, y=TEXT * 1.4, units="points"))
+        note.set_horizontalalignment("left")
+        note.set_verticalalignment("bottom")
 
 
 def _name(symbol: str, sub: str) -> str:
@@ -815,11 +840,12 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
             from matplotlib.backends.backend_svg import FigureCanvasSVG
 
             FigureCanvasSVG(fig)
-            ax = fig.add_axes([0.12, 0.16, 0.72, 0.76])
+            ax = fig.add_axes([0.12, 0.16, 0.72, 0.68])  # (room above for the positions' numbers and a note)
         panel = _quantity_panel(analytic, quantity, valid, lang, _UNITS[quantity], start=start, swing=_swing(cycle))
         _plot_panel(ax, x, panel, QUANTITIES[quantity], marks)
         _decorate(ax, x, ~valid, near, marks, lang, numbers=True, limits=limits)
         _clip(ax, x, panel, _well_conditioned(analytic), lang, _UNITS[quantity])
+        _notes_above(ax, raised=bool(marks))
         if ticks is not None:
             ax.set_xticks(ticks)
             ax.set_xlim(*limits)
