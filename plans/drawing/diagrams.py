@@ -23,12 +23,19 @@ Conventions, the same as :mod:`plans.positions` and ``plans sweep``:
   Each angle is drawn over its own swing: links whose swings are alike share a
   panel, each as its change from the middle of its swing (``φ₄ − 112,3°`` in
   the legend); a link that swings less than :data:`SHARE` of the panel's range
-  gets a panel of its own, drawn as it is (see :func:`_angle_panels`).
+  gets a panel of its own, drawn as it is (see :func:`_angle_panels`).  A
+  rocker input's swing: every angle (the input's too) drawn as it is, the
+  middle of its range within (−180°, 180°], without offsets.
+* A cycle that repeats (a crank's turn at constant ω, a swing there and
+  back) is closed: its first sample drawn again at 360° (or T).
+* Positions 0 and 0′ (the output's extreme positions) are marked and said
+  in the legend; a Coriolis panel that would be zero everywhere is left out,
+  a line under the title says so.
 * Every text of a diagram (ticks, legends, notes, position numbers) is
   :data:`TEXT` pt; the positions' lines are one thin width (:data:`MARK`).
 * A quantity constant by the scene (the crank's ω and ε, the angle of a
-  linear driver, |aᵏ| on a guide that does not turn) is not drawn as a flat
-  curve but written in the panel; curves equal at every position (links
+  linear driver) is not drawn as a flat curve but written beside the panel,
+  under its legend (never over the data; a single diagram: above it); curves equal at every position (links
   that turn together: ω₃ ≡ ω₄) are drawn once, with both names.
 * Near a dead centre the values run off to infinity: each panel's vertical
   range is that of the well-conditioned positions (not near a dead centre);
