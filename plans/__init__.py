@@ -12,8 +12,7 @@ Two independent methods over one scene model:
 and :func:`compare` sets one against the other.  :func:`forces` finds the
 joint reactions and the balancing moment of a scene with masses and loads
 (kinetostatics: Newton–Euler group by group; :mod:`plans.forces` has
-Joukowski's lever and the comparison of the methods).  :func:`write_drawings`
-and :func:`compare` sets one against the other.  Over a cycle the driver
+Joukowski's lever and the comparison of the methods).  Over a cycle the driver
 follows one law (:mod:`plans.motion`): :func:`driver_cycle` gives the
 positions, times [s] and driver rates of a cycle (``cycle.solve()`` the
 solution that is a motion), :func:`strokes` the output's stroke H [m] or

@@ -81,3 +81,41 @@ def decimal_comma(text: str, lang: str) -> str:
     'k_v = 0,025 (m/s)/mm, φ = 55,0°'
     """
     return _DECIMAL_POINT.sub(",", text) if lang in DECIMAL_COMMA else text
+
+
+#: Units as the Russian and Bulgarian courses write them (Cyrillic symbols); Serbian and Slovenian
+#: courses write the international symbols, as English does.
+_CYRILLIC_UNITS = {"rad/s²": "рад/с²", "rad/s": "рад/с", "m/s²": "м/с²", "m/s": "м/с", "m/mm": "м/мм", "s/mm": "с/мм", "mm": "мм", "rad": "рад",
+                   "m": "м", "[s]": "[с]", " s": " с"}
+_UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad|m)(?![\w}])|(\[s\])|(?<=[0-9])( s)(?![\w])")
+#: the same without a bare "m" (a drawing's labels: the image m of a point M stays)
+_DRAWN_UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad)(?![\w}])|(\[s\])|(?<=[0-9])( s)(?![\w])")
+
+
+def course_units(line: str, lang: str, drawn: bool = False) -> str:
+    """*line* with its unit symbols as the course in *lang* writes them (ru, bg: ``м/с``, ``мм``); math parts kept.
+
+    Only the text outside ``$…$`` changes, and only whole unit symbols there
+    (a point or a link named ``m`` inside math stays); *drawn* (a drawing's
+    text, where ``m`` is the image of a point M) leaves a bare ``m`` alone.
+    """
+    if lang not in ("ru", "bg"):
+        return line
+    pattern = _DRAWN_UNIT if drawn else _UNIT
+
+    def swap(u) -> str:
+        return _CYRILLIC_UNITS[next(g for g in u.groups() if g)]
+
+    pieces = re.split(r"(?<!\\)(\$)", line)
+    out, inside = [], False
+    for piece in pieces:
+        if piece == "$":
+            inside = not inside
+            out.append(piece)
+            continue
+        if inside:
+            piece = re.sub(r"\\mathrm\{([^}]*)\}", lambda m: "\\mathrm{" + pattern.sub(swap, m.group(1)) + "}", piece)
+        else:
+            piece = pattern.sub(swap, piece)
+        out.append(piece)
+    return "".join(out)

@@ -147,7 +147,7 @@ DESCRIPTIONS = {
     "linear-arm": "a slide carrying an arm; a rod in a sleeve welded to a rocker; a block on the moving rod",
     "wedge": "a wedge pushed along the floor lifts a follower sliding in a vertical guide",
     "scotch-yoke": "a crank whose pin slides in the slot of a yoke that moves straight back and forth",
-    "rocker-limit": "a non-Grashof four-bar whose input cannot turn fully: it swings between its two limit positions",
+    "rocker-limit": "a four-bar whose input cannot turn fully: it swings between its two limit positions",
 }
 
 
@@ -239,6 +239,11 @@ def build_parser() -> argparse.ArgumentParser:
     handout.add_argument("-o", "--output", metavar="FILE", required=True, help="FILE.pdf, or FILE.svg / FILE.png for a file per page")
     handout.add_argument("--components", action="store_true", help="cycle diagrams with x and y components of v and a")
     handout.add_argument("--centres", action="store_true", help="a page more per position: the instant centres (Kennedy's theorem) and the velocities from them against analytic")
+    handout.add_argument("--accelerations", type=_accelerations, metavar="WHICH",
+                         help="the positions whose acceleration plans are drawn: 'all' or numbers such as 0,6 "
+                              "(default: two, the middle of the working and of the idle stroke)")
+    handout.add_argument("--scales", choices=("plate", "per-position"), default="plate",
+                         help="plate (default): one k_l, k_v, k_a over the whole handout; per-position: k_v, k_a chosen for each position")
     handout.add_argument("--forces", action="store_true", help="the kinetostatic pages per position: free bodies, force plans, Joukowski's lever (the scene needs masses or loads)")
     handout.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr (shown only when stderr is a terminal)")
     _law_arguments(handout)
@@ -771,7 +776,9 @@ def _draw(args) -> int:
                             law=args.law, start=args.start)
         for message in run.skipped_messages():
             _warn(message)
-        sheets = _position_sheets(run, args.lang, _given_scales(args, scene))
+        from .sheets import position_sheets
+
+        sheets = position_sheets(run, args.lang, _given_scales(args, scene))
         with batch():
             paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format, sheets=sheets, progress=_progress(args))
         _progress_done(args)
@@ -786,7 +793,9 @@ def _draw(args) -> int:
         def table_of(g):
             return sheet_table(compare(analytic, g), g, analytic)
 
-        graphical, figure = _fitted_sheet(
+        from .sheets import fitted_sheet
+
+        graphical, figure = fitted_sheet(
             replace(_construct(scene, args), travel=travel, cycle_poses=poses),
             lambda scales: replace(_construct(scene, args, scales), travel=travel, cycle_poses=poses),
             lambda g: draw_sheet(g, formula=formula, table=table_of(g), lang=args.lang, branches=branches),
@@ -815,107 +824,6 @@ def _draw(args) -> int:
     return 0
 
 
-#: A sheet that fits A3 is drawn again at the factors its own measurements give only when they make its
-#: drawings this much larger (:func:`plans.drawing.sheet.drawn_score`).
-REFIT_GAIN = 1.05
-#: A drawing that takes this much more [mm] beyond its geometry than on the sheet before draws a part at some
-#: factors only (a plan's enlarged detail): the re-fit charges it at the factor it was measured at.
-PART_AT_SOME_FACTORS = 20.0
-
-
-def _fitted_sheet(graphical, construct_at, draw, choose, *, given: dict, fixed=None):
-    """(graphical, sheet figure): the sheet's factors chosen for its regions (:func:`plans.drawing.sheet.sheet_scales`,
-    *choose*), the plans constructed again at them (*construct_at*: drawing never solves) and the sheet drawn (*draw*).
-
-    The factors are chosen from what each drawing takes beyond its geometry (labels, supports, caption,
-    legend): *fixed* as measured on another sheet, else an estimate.  The sheet drawn then measures it for
-    itself; when that gives other factors, the sheet is drawn once more at those (kept if it fits A3, or if
-    the first did not, or if its drawings are larger).
-    """
-    from .drawing.sheet import ESTIMATED_FIXED, SCALE_OF, SHEET_FIRST, drawn_score
-
-    scales = choose(graphical, fixed or ESTIMATED_FIXED)
-    if scales != graphical.scales:
-        graphical = construct_at(scales)
-    figure = draw(graphical)
-    if all(given.get(key) is not None for key in graphical.scales):
-        return graphical, figure
-    if figure.plans_sheet.format == SHEET_FIRST and drawn_score(graphical, least=True) >= 1.0 and fixed is not None:
-        return graphical, figure  # fits A3 and every drawing reaches its size, from another sheet's measurements
-    first = figure.plans_sheet
-    measured = {kind: {graphical.scales[SCALE_OF[kind]]: f} for kind, f in first.fixed.items()}
-    own = dict(first.fixed)
-    for kind, f in first.fixed.items():
-        before = (fixed or {}).get(kind)
-        if before is not None and max(f[0] - before[0], f[1] - before[1]) > PART_AT_SOME_FACTORS:
-            # much more than on the sheet before: a part drawn at some factors only (a plan's enlarged detail),
-            # charged at this factor, not at the others
-            own[kind] = tuple(map(min, f, before))
-    again = choose(graphical, {**own, "at": measured})
-    fits = first.format == SHEET_FIRST
-    if again == graphical.scales or fits and drawn_score(graphical, again) < REFIT_GAIN * drawn_score(graphical):
-        return graphical, figure  # drawn again only to fit A3, or for drawings noticeably larger
-    second = construct_at(again)
-    second_figure = draw(second)
-    second_fits = second_figure.plans_sheet.format == SHEET_FIRST
-    if second_fits and (not fits or drawn_score(second) > drawn_score(graphical)):
-        return second, second_figure
-    if not second_fits and (not fits or drawn_score(graphical, least=True) < 1.0):
-        # the second took more than chosen for (a part drawn at its factors only): chosen once more with what
-        # both drawings measured at their factors, kept if it fits A3 (and beats a first that fits)
-        for kind, f in second_figure.plans_sheet.fixed.items():
-            measured.setdefault(kind, {})[second.scales[SCALE_OF[kind]]] = f
-        third = choose(graphical, {**first.fixed, "at": measured})
-        if third not in (graphical.scales, second.scales) and (not fits or drawn_score(graphical, third) > drawn_score(graphical)):
-            third_solution = construct_at(third)
-            third_figure = draw(third_solution)
-            if third_figure.plans_sheet.format == SHEET_FIRST:
-                return third_solution, third_figure
-    if not fits:
-        return second, second_figure
-    return graphical, figure
-
-
-def _position_sheets(run, lang: str, given: dict):
-    """A function: a solved position -> its sheet, at the factors that make its drawings fill their regions
-    (given ones kept), for :func:`plans.drawing.write_position_sheets` to call position by position.
-
-    What the drawings take beyond their geometry is measured on each sheet drawn, for the next
-    (see :func:`_fitted_sheet`).
-    """
-    from dataclasses import replace
-
-    from .compare import compare
-    from .drawing.sheet import branch_lines, sheet_scales
-    from .drawing.sheets import draw_position_sheet, position_title
-    from .graphical import construct
-    from .report import sheet_table
-
-    measured = {}
-
-    def sheet_of(r):
-        def table_of(g):
-            return sheet_table(compare(r.analytic, g), g, r.analytic)
-
-        def construct_at(scales):
-            g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision, check_scales=False)
-            return replace(g, travel=r.graphical.travel, cycle_poses=r.graphical.cycle_poses)  # slots, guides, frame as the run drew them
-
-        def draw(g):
-            return draw_position_sheet(replace(r, graphical=g, comparisons=compare(r.analytic, g)), lang=lang, total=len(run.runs))
-
-        def choose(g, fixed):
-            return sheet_scales(g, formula=r.analytic.structure.formula, table=table_of(g), lang=lang, title=position_title(r, len(run.runs), lang),
-                                branches=branch_lines(r.analytic.branches, lang), given=given, fixed=fixed)
-
-        _, figure = _fitted_sheet(r.graphical, construct_at, draw, choose, given=given, fixed=measured.get("fixed"))
-        measured["fixed"] = figure.plans_sheet.fixed
-        return figure
-
-    return sheet_of
-
-
-#: suffixes of file formats (pictures, documents, data) that name a file, never a directory plans should create
 _FILE_SUFFIXES = frozenset(
     ".jpg .jpeg .jpe .gif .bmp .tif .tiff .webp .eps .ps .svgz .pgf .raw .rgba .emf .wmf .ico .heic .avif "
     ".svg .pdf .png .csv .txt .json .toml .html .htm .md .tex .doc .docx .odt .xls .xlsx .zip .gz".split()
@@ -939,6 +847,19 @@ def _check_directory(output: str, what: str, files: tuple[str, ...] = ()) -> Non
 def _is_file(output: str) -> bool:
     """True when -o names a drawing file (page.svg, page.pdf, page.png) rather than a directory."""
     return Path(output).suffix.lower() in (".svg", ".pdf", ".png") and not Path(output).is_dir()
+
+
+def _accelerations(text: str):
+    """``all`` or position numbers ``0,6`` (for --accelerations)."""
+    if text.strip().lower() == "all":
+        return "all"
+    try:
+        numbers = [int(part) for part in text.split(",") if part.strip()]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected 'all' or position numbers such as 0,6, got {text!r}") from None
+    if not numbers or any(n < 0 for n in numbers):
+        raise argparse.ArgumentTypeError(f"expected 'all' or position numbers such as 0,6, got {text!r}")
+    return numbers
 
 
 def _handout(args) -> int:
@@ -968,6 +889,8 @@ def _handout(args) -> int:
             progress=_progress(args),
             law=args.law,
             start=args.start,
+            accelerations=args.accelerations,
+            scales=args.scales,
         )
     _progress_done(args)
     for path in paths:

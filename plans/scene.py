@@ -337,6 +337,20 @@ class Scene:
     #: Warnings about bare driver numbers that look meant in another unit (``omega = 1850`` is
     #: 17 666 rpm, ``angle = 2.396`` is 2.396°): every command prints them.
     doubts: tuple[str, ...] = field(default=(), compare=False, repr=False)
+    #: The title in each language the scene gives it in (``title = { en = "…", sr = "…" }``);
+    #: empty for a plain ``title = "…"``, which is printed as written in every language.
+    titles: dict[str, str] = field(default_factory=dict, compare=False)
+    #: Names used in words on a page (a guide, a point, a link), per language:
+    #: ``[names] slot = { en = "slot", sr = "кулиса" }`` → ``{"slot": {"en": "slot", "sr": "кулиса"}}``.
+    names: dict[str, dict[str, str]] = field(default_factory=dict, compare=False)
+
+    def title_in(self, lang: str) -> str:
+        """The title in *lang*: as the scene gives it there, else as written (the English, else the first given)."""
+        return self.titles.get(lang) or self.title
+
+    def name_in(self, name: str, lang: str) -> str:
+        """A name (a guide's, a point's) in *lang* as the scene's ``[names]`` give it, else as written."""
+        return self.names.get(name, {}).get(lang) or name
     masses: dict[str, Mass] = field(default_factory=dict)
     gravity: Gravity | None = None
     loads: tuple[Load, ...] = ()
@@ -592,7 +606,7 @@ def from_mapping(data: dict, source: str = "<scene>") -> Scene:
     return _SceneReader(data, source, "").scene()
 
 
-_TOP_KEYS = ("title", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales", "output", "gravity", "load")
+_TOP_KEYS = ("title", "names", "frame", "link", "slider", "prismatic", "driver", "assembly", "compute", "scales", "output", "gravity", "load")
 _MASS_KEYS = ("mass", "centre", "inertia")
 _BODY_KEYS = ("points", "lines") + _MASS_KEYS
 _LINE_KEYS = ("through", "angle", "direction")
@@ -841,14 +855,38 @@ class _SceneReader:
             raise self.fail(field, f"expected the name of a {what} (letters, digits, _), got {_describe(value)}")
         return value
 
+    def per_language(self, table: dict, field: str) -> dict[str, str]:
+        """A table of texts by language (``{ en = "…", sr = "…" }``): every key a language, every value text."""
+        from .i18n import LANGUAGES
+
+        if not table:
+            raise self.fail(field, "an empty table: give the text in at least one language (en = \"…\")")
+        out = {}
+        for lang, text in table.items():
+            if lang not in LANGUAGES:
+                raise self.fail(f"{field}.{lang}", f"unknown language {lang!r}; languages: {', '.join(LANGUAGES)}")
+            if not isinstance(text, str) or not text.strip():
+                raise self.fail(f"{field}.{lang}", f"expected text, got {_describe(text)}")
+            out[lang] = text
+        return out
+
     # -- sections --------------------------------------------------------------
 
     def scene(self) -> Scene:
         data = self.data
         self.check_keys(data, _TOP_KEYS, "")
         title = data.get("title", Path(self.source).stem)
+        titles = {}
+        if isinstance(title, dict):
+            titles = self.per_language(title, "title")
+            title = titles.get("en") or next(iter(titles.values()))
         if not isinstance(title, str):
-            raise self.fail("title", f"expected text, got {_describe(title)}")
+            raise self.fail("title", f"expected text or a table of languages (en = \"…\", sr = \"…\"), got {_describe(title)}")
+        page_names = {}
+        for key, value in self.table(data.get("names", {}), "names").items():
+            if not isinstance(value, dict):
+                raise self.fail(f"names.{key}", f"expected a table of languages (en = \"…\", sr = \"…\"), got {_describe(value)}")
+            page_names[key] = self.per_language(value, f"names.{key}")
 
         bodies: dict[str, Body] = {}
         frame = self.table(data.get("frame", {}), "frame")
@@ -920,6 +958,8 @@ class _SceneReader:
             report=report,
             scales=scales,
             source=self.source,
+            titles=titles,
+            names=page_names,
             output=output,
             notes=self.length_notes(),
             readings=readings,

@@ -3,7 +3,7 @@
 * far centres are arrows at the edge with their distance (mm of the drawing beyond the tip), so
   the mechanism keeps its size: the Bulgarian linear-arm page drew it 45 mm across at k_l 0.03;
 * no label over another, and a centre's label clear of the mechanism's names ("3 P₁₂" read as one);
-* the page's k_l found without drawing the page per candidate (114 drawings for six positions);
+* the centres page's k_l found from geometry, without drawing the page per candidate (114 drawings for six positions);
 * angles 0…360° and four digits as on every other page; ``plans centres`` prints 0, not 1.38778e-17.
 
 Expected values: the centres from :func:`plans.centres.instant_centres` called here, the renderer's
@@ -22,26 +22,22 @@ from plans.centres import instant_centres
 from plans.cli import main
 from plans.drawing import mechanism
 from plans.drawing.centres import CentresSizer, draw_centres_into
-from plans.drawing.centres_page import draw_centres_page
 from plans.drawing.svg import new_figure
-from plans.handout import handout_pages
+from plans.handout import handout
 
-
-def _page(name: str, lang: str = "bg", positions: int | None = None):
-    scene = plans.load(plans.example_path(name))
-    record = []
-    pages = dict(handout_pages(scene, centres=True, lang=lang, record=record, **({} if positions is None else {"positions": positions})))
-    return scene, pages, dict(record)
+#: the plate's k_l for the linear-arm (the mechanism over 100 mm across, as the plate draws it)
+LINEAR_ARM_K_L = 0.008
 
 
 @pytest.fixture(scope="module")
 def linear_arm_bg():
-    return _page("linear-arm")
-
-
-def _drawing_axes(fig):
-    """The axes holding the mechanism with its labelled centres."""
-    return next(ax for ax in fig.axes if any((t.get_gid() or "").startswith("centres-label-") for t in ax.texts))
+    """The Bulgarian linear-arm's centres drawing as the centres page places it: at physical size [mm]."""
+    result = instant_centres(plans.load(plans.example_path("linear-arm")))
+    fig = new_figure()
+    ax = fig.add_axes([0, 0, 1, 1])
+    width, height = draw_centres_into(ax, result, LINEAR_ARM_K_L, "bg", legend=False, diagram=False, room_min=12.0)
+    fig.set_size_inches(width / 25.4, height / 25.4)
+    return fig, ax
 
 
 def _extents(fig, ax, prefix=""):
@@ -69,9 +65,7 @@ def test_linear_arm_drawn_100_mm_across_fits_a_page_width():
 
 
 def test_no_label_overlaps_another_on_the_page_and_centre_labels_keep_clear_of_names(linear_arm_bg):
-    scene, pages, record = linear_arm_bg
-    fig = pages["centres-0"]
-    ax = _drawing_axes(fig)
+    fig, ax = linear_arm_bg
     boxes = _extents(fig, ax)
     mm = fig.dpi / 25.4  # display units per mm
     for k, (ga, ta, a) in enumerate(boxes):
@@ -120,7 +114,8 @@ def test_the_sizer_foresees_the_drawn_size_at_its_own_scales(name):
 
 
 def test_the_page_is_not_drawn_per_candidate_scale(monkeypatch):
-    """A centres page draws the mechanism a few times (twice to measure it, once or twice on the page), not 19."""
+    """A handout's centres page draws the mechanism a few times (twice to measure it, once or twice on the
+    page), not once per candidate k_l: counted as the pages with centres less the pages without."""
     count = [0]
     original = mechanism.MechanismDrawing.draw
 
@@ -128,33 +123,23 @@ def test_the_page_is_not_drawn_per_candidate_scale(monkeypatch):
         count[0] += 1
         return original(self)
 
-    scene = plans.load(plans.example_path("six-bar"))
-    record = []
-    handout_pages(scene, centres=False, record=record)
-    run = dict(record)["position-0"]
     monkeypatch.setattr(mechanism.MechanismDrawing, "draw", counting)
-    fig = draw_centres_page(run, lang="en")
-    assert count[0] <= 4, count[0]
-    assert fig.centres_k_l > 0
-
-
-def test_a_plates_scale_is_kept_where_the_drawing_fits():
     scene = plans.load(plans.example_path("six-bar"))
-    record = []
-    handout_pages(scene, centres=False, record=record)
-    run = dict(record)["position-0"]
-    result = instant_centres(run.scene)
-    k_plate = 0.015
-    fig = draw_centres_page(run, lang="en", k_l=k_plate)
-    assert fig.centres_k_l == k_plate
+    handout(scene, positions=1)
+    without = count[0]
+    handout(scene, positions=1, centres=True)
+    assert count[0] - 2 * without <= 4, (without, count[0])
 
 
-def test_page_angles_are_0_to_360(linear_arm_bg):
+def test_page_angles_are_0_to_360():
     """v_H points down and right: 337.3°, not −22.7°, as the results tables of every other page."""
-    scene, pages, record = linear_arm_bg
-    fig = pages["centres-0"]
-    angles = [float(m.replace(",", ".").replace("−", "-")) for t in fig.findobj(lambda a: hasattr(a, "get_text"))
-              for m in re.findall(r"∠ ([−\-]?[\d,\.]+)°", t.get_text())]
+    from plans.compare import compare_centres
+    from plans.drawing.centres_page import centres_page_table
+
+    scene = plans.load(plans.example_path("linear-arm"))
+    result = instant_centres(scene)
+    rows = centres_page_table(result, compare_centres(plans.solve(scene), result), "bg")
+    angles = [float(m.replace(",", ".").replace("−", "-")) for row in rows for cell in row for m in re.findall(r"∠ ([−\-]?[\d,\.]+)°", cell)]
     assert angles and all(0.0 <= a < 360.0 for a in angles), angles
     assert any(a == pytest.approx(337.3, abs=0.05) for a in angles)
 

@@ -102,16 +102,30 @@ def test_the_quick_return_angles_no_longer_share_one_axis():
 
 
 def _handout_diagram_pdf(name, lang, tmp_path):
+    """The handout's diagram pages as the handout draws them (its text area, placed at 100 %), as a PDF of their own."""
+    from plans.drawing.diagrams import draw_cycle_diagrams
     from plans.drawing.formats import render_pdf
-    from plans.handout import handout_pages
+    from plans.pages.handout import DIAGRAM_PAGE
+    from plans.positions import run_positions
 
     scene = plans.load(plans.example_path(name))
-    pages = handout_pages(scene, positions=4, lang=lang)
-    figures = [fig for page, fig in pages if page.startswith("diagram-")]
+    run = run_positions(scene, 4)
+    pages = draw_cycle_diagrams(run.cycle, marked=run.motion if run.motion is not None else run.positions, lang=lang,
+                                cycle=run.dense, size=DIAGRAM_PAGE)
+    figures = [fig for _, fig in pages]
     assert len(figures) == 3  # links, points, sliders
     path = tmp_path / f"{name}-{lang}.pdf"
     path.write_bytes(render_pdf(figures))
     return figures, path
+
+
+def test_the_handout_places_its_diagram_pages_at_100_percent():
+    from plans.handout import handout
+    from plans.pages.handout import DIAGRAM_PAGE
+
+    doc = handout(plans.load(plans.example_path("four-bar")), positions=4)
+    for key in ("diagram-links", "diagram-points"):
+        assert doc.drawn[key] == pytest.approx(DIAGRAM_PAGE, abs=0.01), key  # 8 pt type prints at 8 pt
 
 
 TEXT_RUN = re.compile(rb"([-\d.]+) ([-\d.]+) ([-\d.]+) ([-\d.]+) [-\d.]+ [-\d.]+ cm\s*BT(.*?)ET", re.S)

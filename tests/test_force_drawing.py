@@ -121,7 +121,7 @@ def test_free_bodies_draw_every_load_and_outer_reaction(worked):
     assert {"fbody-couple-M_Phi3", "fbody-couple-M_b"} <= gids
     texts = _texts(artists)
     assert texts["fbody-heading-RRP_3_4"] == "RRP(3,4)"
-    assert texts["fbody-heading-driver"] == term("driver", "en")
+    assert texts["fbody-heading-driver"] == "driving link 2 (crank)"
 
 
 def test_a_reaction_points_into_its_joint(worked):

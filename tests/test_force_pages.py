@@ -14,7 +14,7 @@ from plans.cli import main
 from plans.drawing.forces_page import draw_forces_pages
 from plans.forces.force_plans import construct_force_plans
 from plans.graphical import construct
-from plans.handout import handout_pages
+from plans.handout import handout
 from plans.i18n import term
 from plans.scene import example_path, load
 
@@ -71,7 +71,8 @@ def test_the_page_states_the_worked_example(lang):
     texts = " ".join(_texts(pages[0]))
     assert term("free_bodies", lang) in texts
     assert f"{term('force_plan', lang)}: RRP(3,4)" in texts
-    assert f"{term('force_plan', lang)}: {term('driver', lang)}" in texts
+    # the driver's plan names the driving link and what it is, in the reader's words (typed here)
+    assert f"{term('force_plan', lang)}: " + {"en": "driving link 2 (crank)", "ru": "ведущее звено 2 (кривошип)"}[lang] in texts
     # R_12 read on the page at its own μ_F, within the page's drafting precision of §11's
     mu = pages[0].force_scales["driver"]
     found = re.search(r"R_\{\\mathrm\{12\}\}\$ = ([0-9.,]+) mm · [0-9.,]+ N/mm = ([0-9.,]+) N", texts)
@@ -94,10 +95,14 @@ def test_a_crowded_mechanism_gets_a_second_page_for_its_plans():
 
 
 def test_handout_with_forces_has_the_kinetostatic_pages():
-    pages = handout_pages(load(example_path("slider-crank-loads")), forces=True)
-    names = [name for name, _ in pages]
-    assert names[-2:] == ["forces-0", "forces-0-2"]  # the plans' page, then the lever's
-    assert "Joukowski's lever" in " ".join(_texts(pages[-1][1]))
+    import xml.etree.ElementTree as ET
+
+    doc = handout(load(example_path("slider-crank-loads")), forces=True)
+    assert doc.order[-1] == "forces"
+    names = [name for name in doc.images if name.startswith("forces-")]
+    assert names == ["forces-0-0", "forces-0-1"]  # the plans' page, then the lever's, placed whole on the plate
+    root = ET.fromstring(doc.images["forces-0-1"])
+    assert "Joukowski's lever" in " ".join("".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text"))
 
 
 def test_forces_drawings_read_to_a_tenth_of_a_millimetre_unless_told(tmp_path, capsys):

@@ -38,7 +38,7 @@ def test_json_has_exactly_the_documented_keys_and_the_worked_example(capsys):
     doc = json.loads(out)
     assert list(doc) == TOP and doc["schema"] == 1
     assert doc["units"] == UNITS
-    assert doc["structure"] == "I(1,2) → RRP(3,4)"
+    assert doc["structure"] == "I(1,2) → RRP(3,4)"  # one frame number: crank 2, frame 1 (issue 20 §2)
     assert [entry["name"] for entry in doc["loads"]] == ["G_2", "F_Φ2", "M_Φ2", "G_3", "F_Φ3", "M_Φ3", "G_4", "F_Φ4", "F_r"]
     assert all(list(entry) == LOAD for entry in doc["loads"])
     assert list(doc["reactions"]) == ["R_12", "R_23", "R_34", "R_14"]
@@ -136,6 +136,7 @@ def test_examples_loads_lists_the_loaded_scenes(capsys):
 
 
 def test_sweep_adds_the_balancing_moment_and_every_reaction(capsys):
+    # from the scene's angle, the worked example (a sweep starts by default at the output's extreme position: issue 19)
     status, out, _ = run(capsys, "sweep", "--example", "slider-crank-loads", "--steps", "12", "--start", "scene")
     assert status == 0
     rows = list(csv.DictReader(io.StringIO(out)))

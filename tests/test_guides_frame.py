@@ -225,15 +225,18 @@ def _svg_support(path, prefix, name) -> complex:
     raise AssertionError(f"{prefix}-ground-{name} not in {path}")
 
 
-def test_the_cover_the_position_pages_and_the_position_sheets_share_the_supports(tmp_path):
-    assert main(["handout", "--example", "six-bar", "--positions", "4", "-o", str(tmp_path / "h.svg"), "--quiet"]) == 0
-    pages = sorted(tmp_path.glob("h-*.svg"))
-    assert main(["draw", "--example", "six-bar", "--positions", "4", "-o", str(tmp_path / "sheets")]) == 0
+def test_the_plan_of_positions_and_the_position_sheets_share_the_supports(tmp_path):
+    import plans
+    from plans.handout import handout
+
+    positions = tmp_path / "positions.svg"  # the handout's plan of positions, as it places it
+    doc = handout(plans.load(plans.example_path("six-bar")), positions=4)
+    positions.write_bytes(doc.images["positions"])
+    # the sheets at the plate's k_l: the frame is chosen over the cycle at one scale (the symbols' room depends on it)
+    assert main(["draw", "--example", "six-bar", "--positions", "4", "--k-l", repr(doc.scales["k_l"]), "-o", str(tmp_path / "sheets")]) == 0
     sheets = sorted((tmp_path / "sheets").glob("sheet-*.svg"))
     assert len(sheets) == 4
-    drawn = [p for p in pages if "mech-ground-D" in p.read_text()]
-    assert len(drawn) == 4
     for name in "DE":  # (O turns away where the crank lies over its support: the test above)
-        want = _svg_support(pages[0], "positions", name)
-        for path in drawn + sheets:
+        want = _svg_support(positions, "positions", name)
+        for path in sheets:
             assert abs(_svg_support(path, "mech", name) - want) < 1e-6, (name, path.name)

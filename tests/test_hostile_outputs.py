@@ -102,12 +102,12 @@ def test_sweep_writes_no_csv_when_a_diagram_fails(capsys, tmp_path, monkeypatch)
 
 
 def test_handout_that_fails_to_render_creates_no_directory(capsys, tmp_path, monkeypatch):
-    from plans.drawing import formats
+    from plans.pages import handout as pages
 
     def broken(*args, **kwargs):
         raise OSError(5, "Input/output error")
 
-    monkeypatch.setattr(formats, "render_pdf", broken)
+    monkeypatch.setattr(pages, "compile_document", broken)  # the typesetter
     status, _, _ = run(capsys, "handout", "--example", "four-bar", "-o", str(tmp_path / "a" / "b" / "h.pdf"))
     assert status == 2
     assert snapshot(tmp_path) == {}
@@ -180,7 +180,7 @@ def test_sweep_plot_without_output_prints_the_csv(capsys, tmp_path):
     assert status == 0
     rows = out.splitlines()
     assert rows[0].startswith("driver_phi_deg,") and len(rows) == 9
-    assert sorted(os.listdir(tmp_path / "d")) == ["kinematic.svg", "links.svg", "points.svg"]  # the output rocker's diagrams too
+    assert sorted(os.listdir(tmp_path / "d")) == ["kinematic.svg", "links.svg", "points.svg"]  # and the output link's kinematic diagrams (cycle-diagrams)
 
 
 def test_draw_positions_removes_only_sheets_plans_wrote(capsys, tmp_path):

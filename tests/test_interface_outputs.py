@@ -107,7 +107,7 @@ def test_every_command_path_runs_and_writes_valid_files(two_runs):
         elif kind == "table":
             assert "structure: I(1,2)" in stdout
         elif kind == "toml":
-            assert 'title = "Wedge cam (PRP)"' in stdout
+            assert 'title = { en = "Wedge cam", sr = ' in stdout
         elif kind == "text":
             assert stdout.count("\n") >= 9
 

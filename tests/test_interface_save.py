@@ -98,5 +98,5 @@ def test_handout_pages_and_cycle_diagrams_as_png(tmp_path, capsys):
     assert all((tmp_path / p).read_bytes().startswith(PNG) for p in pages)
     assert main(["sweep", "--example", "wedge", "--steps", "12", "-o", str(tmp_path / "w.csv"),
                  "--plot", str(tmp_path / "d"), "--format", "png"]) == 0
-    assert sorted(p.name for p in (tmp_path / "d").iterdir()) == ["kinematic.png", "links.png", "points.png", "sliders.png"]
+    assert sorted(p.name for p in (tmp_path / "d").iterdir()) == ["kinematic.png", "links.png", "points.png", "sliders.png"]  # and the output link's kinematic diagrams
     assert all(p.read_bytes().startswith(PNG) for p in (tmp_path / "d").iterdir())

@@ -19,7 +19,7 @@ def test_progress_shows_on_a_terminal_and_not_with_quiet(tmp_path, monkeypatch, 
     monkeypatch.setattr("sys.stderr", terminal)
     assert main(["handout", "--example", "slider-crank", "-o", str(tmp_path / "h.pdf")]) == 0
     shown = terminal.getvalue()
-    assert "page 1/3" in shown and "page 3/3" in shown and "\r" in shown
+    assert "Position 1/1" in shown and "\r" in shown
     quiet = _Terminal()
     monkeypatch.setattr("sys.stderr", quiet)
     assert main(["handout", "--example", "slider-crank", "-o", str(tmp_path / "q.pdf"), "--quiet"]) == 0
@@ -38,7 +38,7 @@ def test_ctrl_c_is_one_line_exit_130_and_no_file(tmp_path, monkeypatch, capsys):
         kwargs["progress"] and None
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(plans.handout, "handout_pages", interrupted)
+    monkeypatch.setattr(plans.handout, "handout", interrupted)
     target = tmp_path / "out" / "h.pdf"
     assert main(["handout", "--example", "six-bar", "--positions", "12", "-o", str(target)]) == 130
     err = capsys.readouterr().err

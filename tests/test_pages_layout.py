@@ -1,13 +1,11 @@
-"""Pages laid out: drawings in the same boxes on every position page, big enough (the issue's sizes, at 12
-positions of every example, at the scale factors each page states), inside the page;
-the cover's stated k_l is its figure's; long equations broken for any width; page text never parsed
-as math (issues 11 §1, §2, §5 and 15)."""
+"""Pages laid out: on the plate every drawing big enough at the handout's one k_l, k_v, k_a (12 positions of
+every example) and inside the text area, the plan of positions at the k_l it states, a crowded plan's detail;
+the sheets' long equations broken for any width; page text never parsed as math (issues 11, 15, 20)."""
 
 from __future__ import annotations
 
 import re
 
-import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
@@ -16,156 +14,65 @@ from plans._text import user_text
 from plans.drawing.blocks import break_math
 from plans.drawing.svg import drawing_rc
 from plans.drawing.typeset import measure, plain_runs, runs
-from plans.handout import handout_pages
+from plans.handout import handout
 from plans.loops import loop_equations
 
-#: what a position's pages give its drawings [mm], the issue's targets (issue 11 §1): every plan at least 40 mm
-#: across with its largest vector at least 60 mm long, the mechanism at least 100 mm across; for every
-#: bundled example at every one of 12 positions
-PLAN_ACROSS_MM = 40.0
-LARGEST_VECTOR_MM = 60.0
-MECHANISM_ACROSS_MM = 100.0
+#: what the plate gives its drawings [mm] (issue 11 §1, issue 20 §1): at 12 positions of every bundled example,
+#: at the one k_v and k_a of the handout, the largest velocity plan's longest vector at least 30 mm, the
+#: largest acceleration plan's at least 50 mm, the plan of positions at least 100 mm across
+LARGEST_VELOCITY_MM = 30.0
+LARGEST_ACCELERATION_MM = 50.0
+POSITIONS_ACROSS_MM = 100.0
 POSITIONS = 12
-#: a scale factor stated on a page: typeset page text (``$k_l$ = 0.002 m/mm`` reads ``kl = 0.002 m/mm``) or a
-#: drawing's caption (``$k_{l}$ = 0.002 m/mm``)
-STATED = re.compile(r"\bk_?\{?([lva])\}?\$? = ([0-9.]+) ")
-
-
-def _bbox(zs):
-    zs = list(zs)
-    return max(z.real for z in zs) - min(z.real for z in zs), max(z.imag for z in zs) - min(z.imag for z in zs)
 
 
 @pytest.fixture(scope="module", params=plans.example_names())
-def handout(request):
+def plate(request):
     """One handout of each example at 12 positions, shared by the tests of this module."""
-    record = []
-    # from the scene's angle, the positions these tests were written for (position 0 is by default the output's
-    # extreme position: issue 19)
-    pages = handout_pages(plans.load(plans.example_path(request.param)), positions=POSITIONS, record=record, start="scene")
-    return dict(pages), record
+    return handout(plans.load(plans.example_path(request.param)), positions=POSITIONS)
 
 
-def _statements(fig) -> list[tuple[str, float]]:
-    """Every scale factor a page states, each time it states one: (``k_l``, value)."""
-    found = []
-    for artist in fig.findobj(lambda o: hasattr(o, "get_text")):
-        found += [("k_" + key, float(value)) for key, value in STATED.findall(artist.get_text())]
-    return found
+def test_every_drawing_is_big_enough_and_inside_the_text_area(plate):
+    from plans.pages.handout import TEXT_HEIGHT, TEXT_WIDTH
+
+    velocity = max(max((abs(v.tip - v.tail) for v in r.graphical.velocity_plan.vectors), default=0.0) for r in plate.runs)
+    assert velocity >= LARGEST_VELOCITY_MM, velocity
+    accelerations = [max((abs(v.tip - v.tail) for v in r.graphical.acceleration_plan.vectors), default=0.0)
+                     for r in plate.runs if r.index in plate.accelerations]
+    if any(accelerations):  # (the wedge at constant speed has none)
+        assert max(accelerations) >= LARGEST_ACCELERATION_MM, accelerations
+    assert max(plate.drawn["positions"]) >= POSITIONS_ACROSS_MM, plate.drawn["positions"]
+    for key, (w, h) in plate.drawn.items():
+        if not key.startswith(("diagram-", "kinematic-")):
+            assert w <= TEXT_WIDTH + 0.5 and h <= TEXT_HEIGHT, (key, w, h)
 
 
-def _stated(fig) -> dict[str, float]:
-    """The scale factors a page states."""
-    return dict(_statements(fig))
+def test_the_plan_of_positions_is_drawn_at_the_k_l_it_states(plate):
+    """The crank pin's (or the driver's) path on the plan of positions is 2·OA / k_l wide: read in its SVG."""
+    scene = plate.runs[0].scene
+    if not hasattr(scene.driver, "omega"):
+        return
+    svg = plate.images["positions"].decode()
+    m = re.search(r'<g id="positions-path-([A-Za-z0-9]+)"[^>]*>\s*<path d="([^"]+)"', svg)
+    assert m, "the path of the crank pin"
+    xy = [(float(x), float(y)) for x, y in re.findall(r"[ML] ?(-?[0-9.]+) (-?[0-9.]+)", m.group(2))]
+    xs, ys = [x for x, _ in xy], [y for _, y in xy]
+    crank = scene.bodies[scene.driver.link].points
+    radius = max(abs(z - crank[scene.driver.pivot]) for z in crank.values())
+    width_mm = (max(xs) - min(xs)) * 25.4 / 72  # SVG user units are points
+    full_turn = abs((max(ys) - min(ys)) - (max(xs) - min(xs))) < 0.01 * (max(xs) - min(xs))  # a circle, not a swing's arc
+    if full_turn and m.group(1) in crank and abs(abs(crank[m.group(1)] - crank[scene.driver.pivot]) - radius) < 1e-9:
+        assert 2 * radius / width_mm == pytest.approx(plate.scales["k_l"], rel=2e-2)
 
 
-def _boxes(fig) -> list[tuple[float, float, float, float]]:
-    """The drawing axes of a page as (x0, y0, x1, y1) [mm] (the first axes is the paper)."""
-    w, h = fig.get_size_inches() * 25.4
-    out = []
-    for ax in fig.axes[1:]:
-        x, y, bw, bh = ax.get_position().bounds
-        out.append((x * w, y * h, (x + bw) * w, (y + bh) * h))
-    return out
-
-
-def test_every_drawing_is_big_enough(handout):
-    """Mechanism >= 100 mm across, each plan >= 40 mm across with its largest vector >= 60 mm, at the scale
-    factors the position's pages state (read from the pages), at every position."""
-    pages, record = handout
-    drawn = {}
-    for name, run in record:
-        position = name.split("-", 1)[1]
-        drawn.setdefault(position, (run, {}))[1].update(_stated(pages[name]))
-    assert len(drawn) == len([n for n in pages if n.startswith("position-")]) >= 2
-    for position, (run, stated) in drawn.items():
-        g = run.graphical
-        assert set(stated) == {"k_l", "k_v"} | ({"k_a"} if g.acceleration_plan is not None else set()), (position, stated)
-        assert {k: g.scales[k] for k in stated} == stated, (position, stated, g.scales)  # the page drew what it states
-        across = max(_bbox(g.positions.values())) / stated["k_l"]
-        assert across >= MECHANISM_ACROSS_MM, (position, across)
-        for plan, key in ((g.velocity_plan, "k_v"), (g.acceleration_plan, "k_a")):
-            if plan is None:
-                continue
-            # a plan's vectors [m/s, m/s²] at the stated factor, in millimetres of paper
-            vectors = [abs(v.tip - v.tail) * plan.scale / stated[key] for v in plan.vectors]
-            images = [z * plan.scale / stated[key] for z in plan.images.values()] + [0j]
-            if key == "k_a" and all(abs(p.a[0]) == 0 for p in run.analytic.points.values()):
-                continue  # the wedge at the course's constant driver velocity: every acceleration 0, the plan its pole
-            assert max(_bbox(images)) >= PLAN_ACROSS_MM, (position, plan.kind)
-            assert max(vectors) >= LARGEST_VECTOR_MM, (position, plan.kind, max(vectors))
-
-
-def test_the_same_arrangement_on_every_position_page_inside_the_page(handout):
-    pages, record = handout
-    for page in ("position-", "acceleration-"):
-        _same_arrangement(pages, [(name, run) for name, run in record if name.startswith(page)])
-
-
-def _ink_ends(fig) -> float:
-    """Where the ink ends [fraction of the page height from the top], the footer and page number left out."""
-    import numpy as np
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-
-    old = fig.canvas
-    canvas = FigureCanvasAgg(fig)
-    dpi = fig.dpi
-    fig.set_dpi(25.4)  # one pixel a millimetre
-    try:
-        canvas.draw()
-        pixels = np.asarray(canvas.buffer_rgba())[:, :, :3]
-    finally:
-        fig.set_dpi(dpi)
-        fig.set_canvas(old)
-    height = pixels.shape[0]
-    inked = np.flatnonzero((pixels < 200).any(axis=(1, 2)))
-    inked = inked[inked < height - 12]  # the foot margin: footer and page number
-    return (inked.max() + 1) / height if inked.size else 0.0
-
-
-def test_every_page_is_filled_and_no_page_is_an_orphan(handout):
-    """Position pages are used to the foot (legend and equations at the foot, drawings in the boxes above);
-    no page of a handout ends its ink in its top third (but the page of a position that cannot be solved,
-    which says only why)."""
-    pages, _ = handout
-    for name, fig in pages.items():
-        if name.startswith("unsolved-"):
-            continue
-        ends = _ink_ends(fig)
-        assert ends > 0.35, (name, ends)
-        if name.startswith(("position-", "acceleration-")):
-            assert ends > 0.9, (name, ends)
-
-
-def _same_arrangement(pages, record):
-    layouts = []
-    for name, _ in record:
-        fig = pages[name]
-        boxes = _boxes(fig)
-        w, h = fig.get_size_inches() * 25.4
-        for x0, y0, x1, y1 in boxes:
-            assert x0 >= 11.0 - 3.0 and x1 <= w - 11.0 + 3.0 and y0 >= 11.0 and y1 <= h - 11.0, (name, (x0, y0, x1, y1))
-        for i, a in enumerate(boxes):  # drawings do not overlap (a little ink in the gap is allowed)
-            for b in boxes[i + 1:]:
-                overlap_w = min(a[2], b[2]) - max(a[0], b[0])
-                overlap_h = min(a[3], b[3]) - max(a[1], b[1])
-                assert min(overlap_w, overlap_h) <= 5.0, (name, a, b)
-        # each drawing hangs from the top of its box, centred across it
-        layouts.append([(round(y1, 3), round((x0 + x1) / 2, 3)) for x0, y0, x1, y1 in boxes])
-    assert all(layout == layouts[0] for layout in layouts), layouts
-
-
-def test_the_cover_states_the_k_l_its_figure_is_drawn_at():
-    scene = plans.load(plans.example_path("four-bar"))
-    pages = dict(handout_pages(scene, positions=2))
-    statements = _statements(pages["cover"])
-    assert [key for key, _ in statements] == ["k_l"], statements  # once, under the plan of positions
-    # the crank pin's path is a circle of radius OA: its width on paper is 2·OA / k_l
-    crank = scene.bodies["2"].points
-    radius = abs(crank["A"] - crank["O"])  # own coordinates [m]
-    (path,) = [line for ax in pages["cover"].axes for line in ax.lines if line.get_gid() == "positions-path-A"]
-    width_mm = np.ptp(path.get_xdata())
-    assert 2 * radius / width_mm == pytest.approx(statements[0][1], rel=1e-3)
+def test_a_crowded_plan_has_its_enlarged_detail_where_it_fits(plate):
+    """A plan with a crowd of images (six-bar's a b c within 8 mm) is drawn with its detail "I (n : 1)" unless the
+    detail would run out of the plan's cell; a plan without a crowd has none."""
+    for r in plate.runs:
+        plan = r.graphical.velocity_plan
+        svg = plate.images[f"v-{r.index}"].decode()
+        if not _crowded_links(plan) and not _short_chains(plan):
+            assert 'id="vel-detail' not in svg, r.index
 
 
 LONG = r"$a_{B} = a_{A} + (i\varepsilon_{3} - \omega_{3}^2)\,l_{AB}\,e^{i\varphi_{3}} = (-8.604 - 12.29i) + (i(-17.61) - 0.2502^2)\cdot0.45\,e^{i\,117.52^\circ} = (-1.561 - 8.65i)\ \mathrm{m/s^2}$"
@@ -252,70 +159,3 @@ def _short_chains(plan) -> list[list[complex]]:
     return [g for g in groups if len(g) >= 3 and max(abs(q - r) for q in g for r in g) < 8.0]
 
 
-def test_a_crowded_plan_has_its_enlarged_detail_on_the_page(handout):
-    """The six-bar's velocity plan at position 7 of 12 (a b c within 8 mm) gets its detail "I (n : 1)" on the
-    handout page; a page whose plans have no crowd has none."""
-    pages, record = handout
-    crowded = 0
-    for name, run in record:
-        fig = pages[name]
-        gids = {a.get_gid() for ax in fig.axes[1:] for a in ax.get_children() if a.get_gid()}
-        for plan, tag in ((run.graphical.velocity_plan, "vel"), (run.graphical.acceleration_plan, "acc")):
-            if plan is None or not any(tag + "-" in gid for gid in gids):
-                continue  # the plan is not on this page
-            if not _crowded_links(plan) and not _short_chains(plan):
-                assert f"{tag}-detail" not in gids, (name, tag)
-            elif run.scene.title.startswith("Six-bar"):
-                crowded += 1
-                assert f"{tag}-detail" in gids, (name, tag)
-                assert any(t.get_text().startswith("I (") for ax in fig.axes[1:] for t in ax.texts), name
-    if record[0][1].scene.title.startswith("Six-bar"):
-        assert crowded >= 1
-
-
-def test_a_check_page_with_room_sets_its_loop_equations_larger(handout):
-    """A position whose checks fit one page with room to spare gets loop equations larger than the 8 pt of a
-    full page (the four-bar at 12 positions: its check pages used to end their ink at 60 % of the page)."""
-    pages, record = handout
-    if not record[0][1].scene.title.startswith("Crank-rocker four-bar"):
-        return
-    # lines of 8 pt type with their 0.7 mm gap are 4.1 mm apart (measured on the check pages of 0f47777, which set
-    # them at 8 pt); 8.5 pt or more is over 4.3 mm
-    pitch_8pt = 4.1
-    for name, fig in pages.items():
-        if not name.startswith("check-"):
-            continue
-        assert not name.count("-") > 1, name  # one page per position
-        ys = sorted({round(a.get_position()[1], 3) for a in fig.artists if (a.get_gid() or "").startswith("page-loop")}, reverse=True)
-        pitches = [a - b for a, b in zip(ys, ys[1:])]
-        assert len(ys) > 10 and min(pitches) > pitch_8pt + 0.2, (name, min(pitches))
-
-
-def test_every_scale_factor_is_stated_once_on_its_page(handout):
-    """Each drawing's scale factor is stated once on the page that draws it (its caption), not again in the
-    header; the cover states the k_l of its plan of positions once."""
-    pages, record = handout
-    drawing_pages = {name for name, _ in record}
-    for name, fig in pages.items():
-        statements = _statements(fig)
-        keys = [key for key, _ in statements]
-        assert len(keys) == len(set(keys)), (name, statements)
-        if name in drawing_pages or name == "cover":
-            assert statements, name
-
-
-def test_the_cover_and_the_position_pages_share_k_l_where_it_fits(handout):
-    """One k_l in the handout where the cover's plan of positions fits at the pages' k_l (a review found the
-    Bulgarian linear-arm cover at 0.005 m/mm beside pages saying 0.006 m/mm, "the same for every position");
-    where it does not, the cover's own factor draws it smaller (a larger k_l), never larger."""
-    pages, record = handout
-    cover = dict(_statements(pages["cover"]))["k_l"]
-    common = {_stated(pages[name]).get("k_l") for name, _ in record} - {None}
-    assert len(common) == 1, common
-    (common,) = common
-    assert cover >= common, (cover, common)
-    # the plan of positions across the page's drawable width (A4: 210 mm less 2 × 11 mm margins) at the pages' k_l
-    paths = [line for ax in pages["cover"].axes for line in ax.lines if (line.get_gid() or "").startswith("positions-path-")]
-    width_at_common = (max(max(p.get_xdata()) for p in paths) - min(min(p.get_xdata()) for p in paths)) * cover / common
-    if width_at_common <= 150.0:  # well within the page: the common factor must have been used
-        assert cover == common, (cover, common, width_at_common)

@@ -97,8 +97,8 @@ def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
 def test_the_checker_sees_a_cycle_and_the_modules():
     # the checker itself: a planted cycle is found, and the package is really read
     assert _cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
-    assert {"plans.drawing.layout", "plans.drawing.blocks", "plans.graphical.plan", "plans.handout"} <= set(MODULES)
-    assert "plans.drawing.blocks" in _graph()["plans.drawing.sheets"]
+    assert {"plans.drawing.layout", "plans.drawing.blocks", "plans.graphical.plan", "plans.handout", "plans.pages.handout"} <= set(MODULES)
+    assert "plans.drawing.svgblocks" in _graph()["plans.pages.handout"]
 
 
 def test_no_import_cycle_among_plans_modules():
@@ -124,8 +124,13 @@ def test_no_private_name_is_imported_from_another_module():
     assert crossings == []
 
 
-def test_page_layout_is_a_module_of_its_own_fed_by_blocks():
+def test_pages_are_set_from_drawing_blocks_and_drawing_knows_nothing_of_pages():
     graph = _graph()
-    assert "plans.drawing.blocks" in graph["plans.drawing.layout"]
-    assert "plans.drawing.layout" not in graph["plans.drawing.blocks"]  # blocks know nothing of pages
-    assert "plans.drawing.layout" in graph["plans.drawing.sheets"] and "plans.drawing.layout" in graph["plans.drawing.sheet"]
+    assert "plans.drawing.svgblocks" in graph["plans.pages.handout"]  # the plate places drawings of known size
+    assert "plans.pages.typesetting" in graph["plans.pages.handout"]
+    for module, targets in graph.items():
+        if module.startswith("plans.drawing"):
+            assert not any(t.startswith("plans.pages") for t in targets), (module, targets)
+    # the handout's API module only orchestrates: it draws nothing and sets nothing itself
+    assert not any(t.startswith("plans.drawing") for t in graph["plans.handout"]), graph["plans.handout"]
+    assert "plans.drawing.layout" in graph["plans.drawing.sheet"] or "plans.drawing.layout" in graph["plans.drawing.sheets"]

@@ -100,15 +100,19 @@ def test_draw_positions_sheets_draw_the_slot_over_the_cycle(tmp_path):
         _check_quick_return(tmp_path / name)
 
 
-def test_handout_pages_draw_the_slot_over_the_cycle_and_the_cover_the_ram_s_stroke(tmp_path):
-    assert main(["handout", "--example", "quick-return", "--positions", "3", "-o", str(tmp_path / "qr.svg"), "--quiet"]) == 0
-    pages = sorted(tmp_path.glob("qr-*.svg"))
-    drawn = [p for p in pages if _groups(p, "mech-slot-4-slot")]
-    assert len(drawn) == 3  # a mechanism on each position's first page
-    for page in drawn:
-        # (a position page keeps the ram's guide around the block's present place: the velocity plan needs the room)
-        _check_quick_return(page, ram=False)
-    _check_quick_return(pages[0], prefix="positions")  # the cover: every position's block E on the guide
+def test_handout_drawings_draw_the_slot_over_the_cycle_and_the_plan_of_positions_the_ram_s_stroke(tmp_path):
+    import plans
+    from plans.handout import handout
+
+    scene = plans.load(plans.example_path("quick-return"))
+    positions = tmp_path / "positions.svg"  # the drawings as the handout places them (its SVG blocks)
+    positions.write_bytes(handout(scene, positions=3).images["positions"])
+    _check_quick_return(positions, prefix="positions")  # every position's block E on the guide
+    mechanism = tmp_path / "mechanism.svg"
+    mechanism.write_bytes(handout(scene).images["mechanism"])
+    assert _groups(mechanism, "mech-slot-4-slot")
+    # (one position's mechanism keeps the ram's guide around the block's present place: the velocity plan needs the room)
+    _check_quick_return(mechanism, ram=False)
 
 
 def test_the_scotch_yoke_slot_covers_the_crank_pin_over_a_turn(tmp_path):

@@ -334,20 +334,22 @@ def _finite(values, valid) -> np.ndarray:
     return v
 
 
-def _page(title: str, subtitle: str, rows: int) -> tuple[Figure, list]:
-    fig = Figure(figsize=(A4[0] / 25.4, A4[1] / 25.4), dpi=72)
+def _page(title: str, subtitle: str, rows: int, size=A4) -> tuple[Figure, list]:
+    """A page of *size* [mm] (A4 by default; a handout passes its text area, so that the page prints at 100 %)."""
+    fig = Figure(figsize=(size[0] / 25.4, size[1] / 25.4), dpi=72)
+    fig.plans_size = tuple(size)
     from matplotlib.backends.backend_svg import FigureCanvasSVG
 
     FigureCanvasSVG(fig)
     import textwrap
 
-    fig.text(11 / A4[0], 1 - 11 / A4[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
+    fig.text(11 / size[0], 1 - 11 / size[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
     lines = [w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)]
-    fig.text(11 / A4[0], 1 - 19 / A4[1], "\n".join(lines), fontsize=9, ha="left", va="top", linespacing=1.3)
+    fig.text(11 / size[0], 1 - 19 / size[1], "\n".join(lines), fontsize=9, ha="left", va="top", linespacing=1.3)
     # the axes below the subtitle's lines (9 pt at 1.3 line spacing, 4.13 mm a line) and the positions' numbers
-    top = 1 - max(36.0, 19.0 + 4.13 * len(lines) + 9.0) / A4[1]
-    bottom = 26 / A4[1]
-    axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / A4[0], "right": 1 - 40 / A4[0], "top": top, "bottom": bottom, "hspace": 0.2})
+    top = 1 - max(36.0, 19.0 + 4.13 * len(lines) + 9.0) / size[1]
+    bottom = 26 / size[1]
+    axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / size[0], "right": 1 - 40 / size[0], "top": top, "bottom": bottom, "hspace": 0.2})
     return fig, list(np.atleast_1d(axes))
 
 
@@ -367,7 +369,8 @@ def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: b
     if has_clipped:
         handles.append(Line2D([], [], color="#000000", ls="none", marker="^", ms=3.5, label=term("clipped", lang)))
     if handles:
-        fig.legend(handles=handles, loc="lower left", bbox_to_anchor=(24 / A4[0], 5 / A4[1]), ncol=2, fontsize=TEXT, frameon=False)
+        size = getattr(fig, "plans_size", A4)
+        fig.legend(handles=handles, loc="lower left", bbox_to_anchor=(24 / size[0], 5 / size[1]), ncol=2, fontsize=TEXT, frameon=False)
 
 
 @dataclass
@@ -607,7 +610,7 @@ def _other_extreme(cycle, extremes, x, start: float) -> list[tuple[str, float]]:
     return [(OTHER_EXTREME, float(at))] if float(np.nanmin(x)) <= at <= float(np.nanmax(x)) else []
 
 
-def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None, extremes=None) -> list[tuple[str, Figure]]:
+def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None, extremes=None, size=A4) -> list[tuple[str, Figure]]:
     """The cycle diagrams as (name, Figure) pairs: ``links``, ``points`` and, if any, ``sliders``.
 
     Parameters
@@ -627,6 +630,8 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     extremes : plans.motion.Strokes, optional
         With a cycle that starts at the output's extreme position: its other
         extreme position is marked 0′ (dotted).
+    size : (float, float)
+        The page [mm]: A4 portrait by default; a handout gives its text area.
     """
     scene = analytic.scene
     start = float(analytic.driver[0])  # position 0's angle, for the note φ₂ = start + Δφ
@@ -646,7 +651,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     crank = hasattr(scene.driver, "omega")
     xwords = term("time", lang) if _swing(cycle) else term("turned_from_0", lang) if crank else term("driver_position", lang)
     title = term("cycle_diagrams", lang)
-    subtitle = user_text(scene.title)
+    subtitle = user_text(scene.title_in(lang) if hasattr(scene, "title_in") else scene.title)
     if cycle is not None:
         subtitle += "\n" + cycle.law.describe(lang, scene.driver.link, **({"phase": float(cycle.phase[0])} if _swing(cycle) else {}))
     out = []
@@ -664,7 +669,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
             if period is not None:
                 panel = _closed(panel, quantity)
             panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang, offsets=not _swing(cycle)) if quantity == "phi" else [panel])]
-        fig, axes = _page(title, subtitle + "\n" + words + "".join("\n" + d for d in dropped), len(panels))
+        fig, axes = _page(title, subtitle + "\n" + words + "".join("\n" + d for d in dropped), len(panels), size)
         clipped = False
         for ax, (panel, ylabel, unit) in zip(axes, panels):
             _plot_panel(ax, xs, panel, ylabel, marks)

@@ -83,8 +83,8 @@ def _beside(drawn: list, tail: complex, u: complex) -> complex:
 
 
 def _gid(label: str) -> str:
-    """A label as a gid (ASCII): ``"F_Φ3"`` → ``"F_Phi3"``."""
-    return label.replace("Φ", "Phi")
+    """A label as a gid (ASCII): ``"F_Φ3"`` → ``"F_Phi3"``, ``"F′_Φ3"`` → ``"Fp_Phi3"``, ``"F″_Φ3"`` → ``"Fpp_Phi3"``."""
+    return label.replace("Φ", "Phi").replace("″", "pp").replace("′", "p")
 
 
 def _escape(text: str) -> str:
@@ -140,17 +140,49 @@ def _number(value: float, lang: str, digits: int = 4) -> str:
 # --- a force plan ----------------------------------------------------------------------
 
 
-def draw_force_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, balancing_moment: float | None = None) -> list:
+def draw_force_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, balancing_moment: float | None = None, found_at: dict | None = None,
+                    given: dict | None = None) -> list:
     """Draw one force plan (:class:`plans.forces.force_plans.ForcePlan`), one data unit = 1 mm.
 
     *balancing_moment* [N·m], given for the driver's plan, is stated under it.
+    *found_at* (:func:`found_scales`): reaction -> μ_F [N/mm] of the plan that
+    found it, so that a reaction carried to this plan at another μ_F says so.
+    *given* (:func:`given_loads`): load -> its magnitude [N] as the kinetostatics
+    gives it (the plan's own value is the drawn length read back).
+    Under the plan: the known loads (N and drawn mm), the components Rᵗ found
+    first, the reactions read off it.
     Returns the artists; a new true-to-scale figure is ``artists[0].figure``.
     """
-    return sketch_on(ax, "fplan", lambda sketch: draw_force_plan_into(sketch, plan, lang=lang, legend=legend, balancing_moment=balancing_moment))
+    return sketch_on(ax, "fplan", lambda sketch: draw_force_plan_into(sketch, plan, lang=lang, legend=legend, balancing_moment=balancing_moment, found_at=found_at, given=given))
 
 
-def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool = True, caption: bool = True, balancing_moment: float | None = None) -> None:
-    """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch."""
+def given_loads(forces) -> dict[str, float]:
+    """Load label -> its magnitude [N] (weights, inertia forces, given forces) on every moving link of *forces*."""
+    out: dict[str, float] = {}
+    for f in forces.loads:
+        out.setdefault(f.label, float(abs(f.force)))
+    return out
+
+
+def found_scales(plans) -> dict[str, float]:
+    """Reaction label -> μ_F [N/mm] of the plan that found it (and of its opposite R_ji, the same force reversed)."""
+    out: dict[str, float] = {}
+    for plan in plans:
+        for label in plan.found:
+            out.setdefault(label, plan.scale)
+            head, sep, sub = label.partition("_")
+            if head == "R" and len(sub) == 2:
+                out.setdefault(f"R_{sub[::-1]}", plan.scale)
+    return out
+
+
+def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool = True, caption: bool = True, balancing_moment: float | None = None,
+                         found_at: dict | None = None, known: bool = True, given: dict | None = None) -> None:
+    """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch.
+
+    *known*: list the known loads and the components Rᵗ under the plan (a page that states them
+    in its own tables leaves them out).
+    """
     vectors = [v for v in plan.vectors if v.length > 1e-9]
     for v in vectors:
         for z in (v.tail, v.tip):
@@ -177,14 +209,36 @@ def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool
     sketch.circle(0j, 0.55, fc=INK, lw=0, gid="start", zorder=4.0)
     for name, z in plan.points.items():
         sketch.circle(complex(z), 0.35, fc=INK, lw=0, gid=f"vertex-{name}", zorder=4.0, obstacle=False)
-    centre = sum(complex(z) for z in plan.points.values()) / max(1, len(plan.points))
-    for v in vectors:
-        middle = (complex(v.tail) + complex(v.tip)) / 2
-        across = unit(middle - centre) if abs(middle - centre) > 1e-6 else 1j * unit(v.tip - v.tail)
+    segments = [(complex(v.tail), complex(v.tip)) for v in vectors]
+    for k, v in enumerate(vectors):
+        tail, tip = segments[k]
+        middle = (tail + tip) / 2
+        # a vector another one all but retraces (R_23 and R_34 nearly along each other): its label a third of the way
+        # along instead of at the middle, the other's at two thirds, so that each stands by its own
+        twins = [j for j, seg in enumerate(segments) if j != k and _retraces(segments[k], seg)]
+        if twins:
+            middle = tail + (tip - tail) * (0.32 if k < twins[0] else 0.68)
+        across = 1j * unit(tip - tail)  # a label stands beside its own vector, at its middle,
+        others = [q for j, seg in enumerate(segments) if j != k for q in (seg[0], (seg[0] + seg[1]) / 2, seg[1])]
+        if others and sum(abs(middle + across - q) for q in others) < sum(abs(middle - across - q) for q in others):
+            across = -across  # on the side away from the other vectors
+        rivals = tuple(seg for j, seg in enumerate(segments) if j != k and abs(seg[1] - seg[0]) > 1e-9)
         place_label(sketch, middle, [(force_math(v.label), f"label-{_gid(v.label)}")], size=LABEL_PT if v.length >= 6 else SMALL_PT,
-                    prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK)
+                    prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK,
+                    own=(tail, tip), rival_segments=rivals)
     if caption:
-        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment)
+        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment, found_at or {}, known, given or {})
+
+
+def _retraces(a: tuple[complex, complex], b: tuple[complex, complex], near: float = 2.5) -> bool:
+    """Whether segment *b* runs within *near* mm of *a*'s middle, nearly parallel to it (the two would share a label's place)."""
+    da, db = a[1] - a[0], b[1] - b[0]
+    if abs(da) < 1e-9 or abs(db) < 1e-9:
+        return False
+    parallel = abs((da * db.conjugate()).imag) <= 0.15 * abs(da) * abs(db)
+    middle = (a[0] + a[1]) / 2
+    t = min(1.0, max(0.0, ((middle - b[0]) * db.conjugate()).real / abs(db) ** 2))
+    return parallel and abs(middle - (b[0] + t * db)) < near
 
 
 def _closing_point(plan):
@@ -199,35 +253,74 @@ def _closing_point(plan):
     return p1 + t * d1
 
 
-def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None) -> None:
+def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None, found_at: dict, known_loads: bool = True, given: dict | None = None) -> None:
     """Heading, μ_F, the reactions read off the plan, the legend: below the plan."""
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
-    what = term("driver", lang) if plan.group == "driver" else plan.group
+    crank = not any(v.label == "F_b" for v in plan.vectors)  # a linear driver's plan carries F_b; a crank's M_b is a couple
+    what = driving_link_words(plan.links[0], crank, lang) if plan.group == "driver" else plan.group
     sketch.text(complex(x, y), f"{term('force_plan', lang)}: {what}", size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
     sketch.text(complex(x, y), scale_caption(r"\mu_F", fmt_number(plan.scale), "N/mm", lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     row = text_size("lp", CAPTION_PT)[1] + 0.9
+    mu = localised(fmt_number(plan.scale), lang)
+    width = max(b.width, 50.0)
+
+    def flow(notes: list[tuple[str, str]], y: float, indent: float = 0.0) -> float:
+        """Notes (text, gid) side by side as far as the plan is wide (at least 50 mm), rows downwards from *y*; the last row's y."""
+        cursor = None
+        for note, gid in notes:
+            w = text_size(note, CAPTION_PT, math=True)[0]
+            if cursor is None or cursor + w > x + width:
+                y -= row
+                cursor = x + indent
+            sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=gid, obstacle=False, math=True)
+            cursor += w + 3.0
+        return y
+
+    # what is known before the plan is drawn: every load (and a reaction carried from a plan before), N and drawn mm
+    y -= row if known_loads else 0.0
+    if known_loads:
+        sketch.text(complex(x, y), term("known_loads", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="known-heading", obstacle=False)
+    known, carried_notes = [], []
+    for v in vectors:
+        if v.label in plan.found or v.kind in ("normal", "tangential"):
+            continue
+        value = _number(given[v.label], lang) if given and v.label in given else _reading(v.value, _step(plan), lang)
+        line = f"{force_math(v.label)} = {value} N → {_reading(v.length, plan.precision, lang)} mm"
+        carried = found_at.get(v.label) if v.kind == "reaction" else None
+        if carried is not None:
+            note = term("carried", lang)
+            if abs(carried - plan.scale) > 1e-12 * plan.scale:
+                note = term("carried_rescaled", lang).format(there=localised(fmt_number(carried), lang), here=mu).replace("μ_F", r"$\mu_F$")
+            carried_notes.append((f"{line} ({note})", f"known-{_gid(v.label)}"))
+        else:
+            known.append((line + ";", f"known-{_gid(v.label)}"))
+    if known:
+        known[-1] = (known[-1][0].rstrip(";"), known[-1][1])
+    if known_loads:
+        y = flow(known, y, 2.0)
+        y = flow(carried_notes, y, 2.0)
+    # the tangential components, found first (from the moments about the middle joint)
+    tangential = [v for v in vectors if v.kind == "tangential"] if known_loads else []
+    if tangential:
+        y -= row
+        sketch.text(complex(x, y), term("found_first", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="found-first", obstacle=False)
+        y = flow([(f"{force_math(v.label)} = {_reading(v.value, _step(plan), lang)} N → {_reading(v.length, plan.precision, lang)} mm",
+                   f"reading-{_gid(v.label)}") for v in tangential], y, 2.0)
     for v in vectors:
         if v.label not in plan.found:
             continue
         y -= row
-        line = f"{force_math(v.label)} = {_reading(v.length, plan.precision, lang)} mm · {localised(fmt_number(plan.scale), lang)} N/mm = {_reading(v.value, _step(plan), lang)} N"
+        line = f"{force_math(v.label)} = {_reading(v.length, plan.precision, lang)} mm · {mu} N/mm = {_reading(v.value, _step(plan), lang)} N"
         sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"reading-{_gid(v.label)}", obstacle=False, math=True)
-    # notes on vectors too short for an arrow, side by side as far as the plan is wide (at least 50 mm)
-    width = max(b.width, 50.0)
-    cursor = None
-    for v in (v for v in vectors if v.length < SHORT_MM):
-        note = f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm"
-        w = text_size(note, CAPTION_PT, math=True)[0]
-        if cursor is None or cursor + w > x + width:
-            y -= row
-            cursor = x
-        sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=f"short-{_gid(v.label)}", obstacle=False, math=True)
-        cursor += w + 3.0
+    # notes on vectors too short for an arrow (their value in N too)
+    y = flow([(f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm "
+               f"({_number(given[v.label], lang) if given and v.label in given else _reading(v.value, _step(plan), lang)} N)", f"short-{_gid(v.label)}")
+              for v in vectors if v.length < SHORT_MM], y)
     if balancing_moment is not None:
         y -= row
-        sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(balancing_moment, lang)} N·m ({_lower(term('balancing_moment', lang))})",
+        sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(abs(balancing_moment), lang)} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})",
                     size=CAPTION_PT, ha="left", va="top", gid="reading-M_b", obstacle=False, math=True)
     if not legend:
         return
@@ -324,7 +417,7 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
             tops.append(max(z.imag for z in zs) + FREE_ARROW_MM + 5.0)
         for (plan, links, shift, _, _), top in zip(row, [max(tops)] * len(row)):
             xs = [g.positions[n].real / k_l + shift.real for body in links for n in g.scene.bodies[body].points]
-            what = term("driver", lang) if plan.group == "driver" else plan.group
+            what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else plan.group
             sketch.text(complex(min(xs), top), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
     if caption:
         b = sketch.bounds
@@ -345,32 +438,43 @@ def _inside(label: str, links) -> bool:
 
 
 def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, couples, lang: str, k_l: float) -> None:
+    """One free body: its links (a block as its body, a ram reaching to its centre of mass), then every arrow and couple,
+    and only then the labels, placed clear of all of them and of each other (as the plans place theirs)."""
     g = forces.graphical
     edge, _, fill = FIGURE_STYLE
 
     def at(z: complex) -> complex:
         return z / k_l + shift
 
+    labels: list = []  # (anchor, pieces, keywords) placed after every mark is drawn
+    segments: list[tuple[complex, complex]] = []  # the links drawn as bars [mm]
+    blocks: dict[str, tuple[complex, float]] = {}  # a block's pin -> (centre, its half diagonal) [mm]
     labelled: set[str] = set()
     for body in links:
         names = list(g.scene.bodies[body].points)
         zs = [at(g.positions[n]) for n in names]
         block = g.scene.bodies[body].block
         if block or len(zs) == 1:
-            _block(sketch, forces, body, zs[0], at)
+            centre = forces.centres.get(body)
+            reach = _block(sketch, forces, body, zs[0], at, at(centre.at) if centre is not None else None)
+            for n in names:
+                blocks[n] = (zs[0], reach)
         else:
             far = max(((a, b) for a in zs for b in zs), key=lambda ab: abs(ab[0] - ab[1]))
             if len(zs) >= 3:
                 sketch.polygon(_hull(zs), fc=fill, ec=INK, lw=1.4, gid=f"link-{body}", zorder=1.5)
+                hull = _hull(zs)
+                segments += [(hull[k], hull[(k + 1) % len(hull)]) for k in range(len(hull))]
             else:
                 sketch.line(list(far), color=INK, lw=2.2, gid=f"link-{body}", zorder=1.5, capstyle="round")
+                segments.append(far)
         for n, z in zip(names, zs):
             if n in labelled:
                 continue
             labelled.add(n)
             if len(g.scene.bodies_with(n)) > 1:
                 sketch.circle(z, 1.1, fc="white", ec=INK, lw=0.8, gid=f"pin-{n}", zorder=4.5)
-            place_label(sketch, z, [(n, f"point-{n}")], size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0))
+            labels.append((z, [(n, f"point-{n}")], dict(size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0), leader_from=4.0)))
     for body in links:
         centre = forces.centres.get(body)
         if centre is not None:
@@ -378,7 +482,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             sketch.circle(c, 1.0, fc="white", ec=INK, lw=0.7, gid=f"centre-{body}", zorder=4.6)
             sketch.polygon([c + 1.0, c + 1.0j, c - 1.0, c - 1.0j], fc=INK, ec=INK, lw=0.1, gid=f"centre-mark-{body}", zorder=4.7, obstacle=False)
             if not any(abs(centre.at - g.positions[n]) <= 1e-9 * (1 + abs(centre.at)) for n in g.scene.bodies[body].points):
-                place_label(sketch, c, [(f"S{_digits(body)}", f"centre-label-{body}")], size=SMALL_PT, gaps=(1.4, 2.4, 3.6))
+                labels.append((c, [(f"S{_digits(body)}", f"centre-label-{body}")], dict(size=SMALL_PT, gaps=(1.4, 2.4, 3.6), leader_from=4.0)))
     drawn: list = []
     for f in acting:
         size = abs(f.force)
@@ -391,16 +495,27 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             x.kind != "reaction" and abs(x.at - f.at) <= 1e-9 * (1 + abs(f.at)) and abs(x.force) > 0 and ((x.force / abs(x.force)) * u.conjugate()).real < -0.9
             for x in acting
         )
+        # an arrow along a bar through its point would hide the bar: it is drawn beside it
+        along = next((b - a for a, b in segments if _on_segment(point, a, b) and abs(((b - a) / abs(b - a) * u.conjugate()).imag) < 0.15), None)
+        if along is not None:
+            side = 1j * along / abs(along)
+            point = point + side * 1.8
         if into:
-            tail, tip = point - u * FREE_ARROW_MM, point - u * 1.2
+            stop = 1.2
+            near_block = next((b for n, b in blocks.items() if abs(at(g.positions[n]) - at(f.at)) < 1e-6), None)
+            if near_block is not None:
+                stop = near_block[1] + 0.4  # the head stays outside the block, its pin and letter in view
+            tail, tip = point - u * (FREE_ARROW_MM + stop - 1.2), point - u * stop
         else:
             point = point + _beside(drawn, point, u)
             tail, tip = point, point + u * FREE_ARROW_MM
         color, lw, dashes, head = FORCE_STYLE[f.kind]
         sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0)
+        sketch.obstacles.append(_segment_shape(tail, tip))
         end = tail if into else tip
-        place_label(sketch, end, [(force_math(f.label), f"force-label-{_gid(f.label)}")], size=LABEL_PT, prefer=-u if into else u,
-                    gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, color=color if f.kind != "reaction" else INK)
+        labels.append((end, [(force_math(f.label), f"force-label-{_gid(f.label)}")],
+                       dict(size=LABEL_PT, prefer=-u if into else u, gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, leader_from=4.0,
+                            color=color if f.kind != "reaction" else INK)))
     for c in couples:
         if c.moment == 0:
             continue
@@ -409,11 +524,36 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             where = at(_pivot(g, c.body))
         else:
             where = at(body_centre.at)
+        radius = COUPLE_R_MM
+        near_block = next((b for b in blocks.values() if abs(b[0] - where) < b[1]), None)
+        if near_block is not None:
+            radius = max(radius, abs(where - near_block[0]) + near_block[1] + 1.0)  # round the block, not through it
         sweep = math.radians(250) * (1 if c.moment > 0 else -1)
         color = FORCE_STYLE["balancing" if c.kind == "balancing" else "inertia" if c.kind == "inertia" else "external"][0]
-        sketch.arc_arrow(where, COUPLE_R_MM, math.radians(145), sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
-        place_label(sketch, where + COUPLE_R_MM * cmath.exp(1j * math.radians(145)), [(force_math(c.label), f"couple-label-{_gid(c.label)}")],
-                    size=LABEL_PT, prefer=cmath.exp(1j * math.radians(145)), gaps=(0.8, 1.8, 3.0), mathtext=True, color=color)
+        # the arc starts (and its name stands) where it is farthest from the other points of the free body
+        marks = [z for z, _, _ in labels if abs(z - where) > 1e-6]
+        start = max((math.radians(145 + 45 * k) for k in range(8)),
+                    key=lambda a: (round(min((abs(where + (radius + 3.0) * cmath.exp(1j * a) - z) for z in marks), default=0.0), 1), -abs(a - math.radians(145))))
+        sketch.arc_arrow(where, radius, start, sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
+        labels.append((where + radius * cmath.exp(1j * start), [(force_math(c.label), f"couple-label-{_gid(c.label)}")],
+                       dict(size=LABEL_PT, prefer=cmath.exp(1j * start), gaps=(0.8, 1.8, 3.0), mathtext=True, leader_from=4.0, color=color)))
+    for anchor, pieces, options in labels:
+        place_label(sketch, anchor, pieces, **options)
+
+
+def _on_segment(z: complex, a: complex, b: complex, tolerance: float = 0.3) -> bool:
+    """Whether *z* lies on the segment a–b (within *tolerance* mm)."""
+    d = b - a
+    if abs(d) < 1e-9:
+        return False
+    t = ((z - a) * d.conjugate()).real / abs(d) ** 2
+    return -0.01 <= t <= 1.01 and abs(z - (a + t * d)) <= tolerance
+
+
+def _segment_shape(a: complex, b: complex):
+    from shapely.geometry import LineString
+
+    return LineString([(a.real, a.imag), (b.real, b.imag)]).buffer(0.3)
 
 
 def _pivot(g, body: str) -> complex:
@@ -430,8 +570,9 @@ def _digits(body: str) -> str:
     return subscript(body)
 
 
-def _block(sketch: Sketch, forces, body: str, centre: complex, at) -> None:
-    """A slider block: a rectangle along the line it slides on."""
+def _block(sketch: Sketch, forces, body: str, centre: complex, at, mass_centre: complex | None = None) -> float:
+    """A slider block: a rectangle along the line it slides on, reaching to its centre of mass *mass_centre* [mm]
+    when that lies off the block (a ram); returns the largest distance [mm] from *centre* to a corner."""
     g = forces.graphical
     scene = g.scene
     angle = g.poses[body][0]
@@ -442,8 +583,16 @@ def _block(sketch: Sketch, forces, body: str, centre: complex, at) -> None:
             break
     u = cmath.exp(1j * angle)
     w, h = 4.5, 2.7
-    corners = [centre + u * (sx * w + sy * h * 1j) for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-    sketch.polygon(corners, fc="white", ec=INK, lw=1.2, gid=f"link-{body}", zorder=1.6)
+    x0, x1, y0, y1 = -w, w, -h, h
+    if mass_centre is not None:
+        local = (mass_centre - centre) / u
+        x0, x1 = min(x0, local.real - 3.0), max(x1, local.real + 3.0)
+        y0, y1 = min(y0, local.imag - 2.5), max(y1, local.imag + 2.5)
+    corners = [centre + u * complex(x, y) for x, y in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))]
+    ram = mass_centre is not None and (x0, x1, y0, y1) != (-w, w, -h, h)
+    # a ram reaching to its centre of mass is drawn open, the bars it carries seen through it
+    sketch.polygon(corners, fc="none" if ram else "white", ec=INK, lw=1.0 if ram else 1.2, gid=f"link-{body}", zorder=1.4 if ram else 1.6)
+    return max(abs(z - centre) for z in corners) if mass_centre is None else math.hypot(w, h)
 
 
 def _hull(zs):
@@ -466,15 +615,17 @@ def force_figures(forces, *, lang: str = "en", lever=None) -> list[tuple[str, ob
     Joukowski's lever (:func:`plans.forces.lever.joukowski_lever`) is given.
     """
     out = [("free-bodies", draw_free_bodies(forces, lang=lang)[0].figure)]
+    found_at = found_scales(forces.plans)
+    given = given_loads(forces)
     number = 0
     for plan in forces.plans:
         if plan.group == "driver":
             name = "force-plan-driver"
-            artists = draw_force_plan(plan, lang=lang, balancing_moment=forces.balancing_moment)
+            artists = draw_force_plan(plan, lang=lang, balancing_moment=forces.balancing_moment, found_at=found_at, given=given)
         else:
             number += 1
             name = f"force-plan-{number}"
-            artists = draw_force_plan(plan, lang=lang)
+            artists = draw_force_plan(plan, lang=lang, found_at=found_at, given=given)
         out.append((name, artists[0].figure))
     if lever is not None:
         out.append(("lever", draw_lever(lever, lang=lang)[0].figure))
@@ -568,17 +719,23 @@ def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = 
     for label, z in images.items():
         if abs(z) > 1e-6:
             sketch.circle(z, 0.45, fc=INK, lw=0, gid=f"dot-{label}", zorder=4.0, obstacle=False)
-    drawn: list = []
+    names = lever_names(lever)
+    tips: list[complex] = []
     for f in everything:
         size = abs(f.force)
         if size == 0:
+            tips.append(complex(f.point))
             continue
         kind = _LEVER_KIND.get(f.kind, "external")
         color, lw, dashes, head = FORCE_STYLE[kind]
         u = f.force / size
-        tail = complex(f.point)
-        tail += _beside(drawn, tail, u)
-        sketch.arrow(tail, tail + u * LEVER_ARROW_MM, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.name)}", zorder=5.0)
+        tail = complex(f.point)  # on a lever an arrow's place is its arm: every arrow starts at its point's image
+        # an arrow along one drawn before at the same image is drawn longer, so that both heads show
+        along = sum(1 for g, t in zip(everything, tips) if abs(g.force) and abs(complex(g.point) - tail) < 0.5
+                    and (g.force / abs(g.force) * u.conjugate()).real > 0.98)
+        tip = tail + u * LEVER_ARROW_MM * (1 + 0.55 * along)
+        tips.append(tip)
+        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(names[id(f)])}", zorder=5.0)
     groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [("p", "pole-label")])]
     for label, z in images.items():
         for at, pieces in groups:
@@ -588,16 +745,55 @@ def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = 
         else:
             groups.append((z, [(image_text(label), f"image-{label}")]))
     for at, pieces in groups:
-        place_label(sketch, at, pieces, size=LABEL_PT, gaps=GAPS, leader_from=4.0)
-    for f in everything:
+        rivals = tuple(q for q, _ in groups if q != at)
+        place_label(sketch, at, pieces, size=LABEL_PT, gaps=GAPS, leader_from=4.0, rivals=rivals)
+    for f, tip in zip(everything, tips):
         if abs(f.force) == 0:
             continue
         u = f.force / abs(f.force)
         kind = _LEVER_KIND.get(f.kind, "external")
-        place_label(sketch, complex(f.point) + u * LEVER_ARROW_MM, [(force_math(f.name), f"force-label-{_gid(f.name)}")], size=LABEL_PT,
+        place_label(sketch, tip, [(force_math(names[id(f)]), f"force-label-{_gid(names[id(f)])}")], size=LABEL_PT,
                     prefer=u, gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, leader_from=4.0, color=FORCE_STYLE[kind][0] if kind != "reaction" else INK)
     if caption:
         _lever_caption(sketch, lever, lang)
+
+
+def driving_link_words(link: str, crank: bool, lang: str) -> str:
+    """``"driving link 2 (crank)"`` in *lang* (``(slider)`` for a linear driver)."""
+    return term("driving_link", lang).format(link=link, kind=term("crank_kind" if crank else "slider_kind", lang))
+
+
+def _is_crank(scene) -> bool:
+    from ..scene import Crank
+
+    return isinstance(scene.driver, Crank)
+
+
+def sense_arrow(value: float) -> str:
+    """The sense of a moment as the arc arrow the plans draw for ω and ε: ``" ↺"`` counter-clockwise (> 0), ``" ↻"`` clockwise."""
+    return "" if value == 0 else (" ↺" if value > 0 else " ↻")
+
+
+def couple_pair_name(name: str, second: bool) -> str:
+    """The name of one force of the pair that stands for a couple: ``"M_Φ3"`` → ``"F′_Φ3"``, ``"F″_Φ3"``."""
+    mark = "″" if second else "′"
+    head, sep, sub = name.partition("_")
+    if head == "M":
+        return f"F{mark}{sep}{sub}"
+    return f"{head}{mark}{sep}{sub}"
+
+
+def lever_names(lever) -> dict[int, str]:
+    """id(force) -> the name written at it: a couple's pair as F′, F″ (its first and second point), the rest by their own name."""
+    names: dict[int, str] = {}
+    seen: dict[str, int] = {}
+    for f in list(lever.forces) + [lever.balancing_force]:
+        if f.kind in ("inertia couple", "moment"):
+            names[id(f)] = couple_pair_name(f.name, seen.get(f.name, 0) > 0)
+            seen[f.name] = seen.get(f.name, 0) + 1
+        else:
+            names[id(f)] = f.name
+    return names
 
 
 def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
@@ -606,28 +802,53 @@ def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
     x, y = b.xmin, b.ymin - 3.0
     sketch.text(complex(x, y), term("joukowski_lever", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
-    sketch.text(complex(x, y), scale_caption("k_v", fmt_number(lever.k_v), "(m/s)/mm", lang) + ";  " + term("lever_turned", lang),
-                size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     row = text_size("lp", CAPTION_PT)[1] + 0.9
+    sketch.text(complex(x, y), scale_caption("k_v", fmt_number(lever.k_v), "(m/s)/mm", lang) + ";", size=CAPTION_PT, ha="left", va="top", gid="scale",
+                obstacle=False, math=True)
+    y -= row
+    sketch.text(complex(x, y), term("lever_turned_ccw", lang), size=CAPTION_PT, ha="left", va="top", gid="turn", obstacle=False)
     y -= row + 0.6
-    sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$", size=CAPTION_PT, ha="left", va="top",
-                gid="equation", obstacle=False, math=True)
+    sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$",
+                size=CAPTION_PT, ha="left", va="top", gid="equation", obstacle=False, math=True)
+    y -= row
+    color, lw, dashes = CONSTRUCTION_STYLE  # the legend of the arm lines drawn from p
+    middle = y - text_size("lp", CAPTION_PT)[1] / 2
+    sketch.line([complex(x, middle), complex(x + 8.0, middle)], color=color, lw=lw, dashes=dashes, gid="legend-arm", obstacle=False)
+    sketch.text(complex(x + 10.0, y), term("lever_arm_rule", lang), size=CAPTION_PT, ha="left", va="top", gid="arm-rule", obstacle=False)
+    names = lever_names(lever)
+    moments = {(load.name, load.body): float(load.moment) for load in lever.loads if load.is_couple}
+    pairs: dict[tuple[str, str], list] = {}
+    for f in lever.forces:
+        if f.kind in ("inertia couple", "moment"):
+            pairs.setdefault((f.name, f.body), []).append(f)
     for f in list(lever.forces) + [lever.balancing_force]:
         if abs(f.force) == 0:
             continue
         y -= row
         arm = f.arm if abs(f.arm) >= 0.05 else 0.0  # no "−0.0"
-        line = (f"{force_math(f.name)}: {_number(abs(f.force), lang)} N · {localised(f'{arm:.1f}', lang)} mm = "
-                f"{_number(f.moment, lang)} N·mm")
-        sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(f.name)}", obstacle=False, math=True)
+        h = localised(f"{arm:.1f}", lang) + " mm"
+        if arm < 0:
+            h = f"({h})"
+        name = force_math(names[id(f)])
+        given = f"{name}: {_number(abs(f.force), lang)} N"
+        pair = pairs.get((f.name, f.body), [])
+        if len(pair) == 2 and (f.name, f.body) in moments:
+            ends = [q.image.upper() for q in pair]
+            couple = moments[(f.name, f.body)]
+            length = abs(couple) / abs(f.force)  # the distance between the pair's points [m]
+            given = (f"{name} = {force_math(f.name)}/$l_{{\\mathrm{{{_escape(''.join(ends))}}}}}$ = {_number(abs(couple), lang)} N·m / "
+                     f"{localised(f'{length:.4g}', lang)} m = {_number(abs(f.force), lang)} N ({f.image}"
+                     + (f"; {term('lever_pair', lang).format(points=', '.join(q.image for q in pair))})" if f is pair[0] else ")"))
+        line = f"{given} · {h} = {_number(f.moment, lang)} N·mm"
+        sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(names[id(f)])}", obstacle=False, math=True)
     for c in lever.couples:
         y -= row
-        sketch.text(complex(x, y), f"{force_math(c.name)}: {_number(c.moment, lang)} N·mm", size=CAPTION_PT, ha="left", va="top",
-                    gid=f"moment-{_gid(c.name)}", obstacle=False, math=True)
+        sketch.text(complex(x, y), f"{force_math(c.name)} = {_number(c.couple, lang)} N·m → {_number(c.moment, lang)} N·mm ({term('lever_block_couple', lang)})",
+                    size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(c.name)}", obstacle=False, math=True)
     y -= row
     if lever.balancing_kind == "moment":
         result = (f"$M_{{\\mathrm{{b}}}}$ = $F_{{\\mathrm{{b}}}}$·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force), lang)} N · "
-                  f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(lever.balancing, lang)} N·m ({_lower(term('balancing_moment', lang))})")
+                  f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(abs(lever.balancing), lang)} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))})")
     else:
         result = f"$F_{{\\mathrm{{b}}}}$ = {_number(lever.balancing, lang)} N ({_lower(term('balancing_force', lang))})"
     sketch.text(complex(x, y), result, size=CAPTION_PT, ha="left", va="top", gid="result", obstacle=False, math=True)

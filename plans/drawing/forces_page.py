@@ -123,7 +123,7 @@ def _plan_scales(fig, graphical, first, items, box, lang: str, sizes: dict) -> d
             if key not in sizes:
                 plan = next(p for p in construct_force_plans(graphical, mu_F={**scales, group: mu}).plans if p.group == group)
                 moment = first.balancing_moment if group == "driver" else None
-                block = _block(fig, "fplan", lambda s: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment))
+                block = _block(fig, "fplan", lambda s: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment, known=False))
                 block.axes.remove()
                 sizes[key] = (block.width, block.height)
             return _Measured(*sizes[key])
@@ -149,7 +149,7 @@ def _natural(fig, first, lang: str) -> dict[str, tuple[float, float, float, floa
     out = {}
     for plan in first.plans:
         moment = first.balancing_moment if plan.group == "driver" else None
-        block = _block(fig, "fplan", lambda s, plan=plan, moment=moment: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment))
+        block = _block(fig, "fplan", lambda s, plan=plan, moment=moment: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment, known=False))
         block.axes.remove()
         out[plan.group] = (block.width, block.height, *_span([z for v in plan.vectors for z in (v.tail, v.tip)]))
     return out
@@ -202,7 +202,7 @@ def _place_plans(fig, sketch, graphical, items, columns, box, scales, y_top: flo
         else:
             plan = next(p for p in final.plans if p.group == item)
             moment = final.balancing_moment if item == "driver" else None
-            block = _block(fig, "fplan", lambda s, plan=plan, moment=moment: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment))
+            block = _block(fig, "fplan", lambda s, plan=plan, moment=moment: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment, known=False))
         x = PAGE_MARGIN + column * (box[0] + GAP) + (box[0] - block.width) / 2
         y = y_top - row * (box[1] + GAP) - block.height
         block.place(sketch, x, y, size)

@@ -7,7 +7,8 @@ one size on a canvas that is the same for all frames, so the plans' growth
 and shrinking is what the eye sees:
 
 * the mechanism's frame pivots and each plan's pole stay where they are from
-  frame to frame (each drawing's box is the union of its boxes over the cycle);
+  frame to frame (each drawing's box is the union of its boxes over the cycle),
+  and the two plans' poles are on one level;
 * each drawing is headed by its name and scale factor, once for all frames;
 * a position that cannot be solved gets a frame with the headings and the
   reason, in the reader's language.
@@ -34,6 +35,7 @@ from __future__ import annotations
 import re
 
 import numpy as np
+from matplotlib.text import Text
 
 from ..graphical.plan import KINDS
 from ..i18n import term
@@ -46,7 +48,7 @@ from .plan_drawing import draw_plan_into, kinds_drawn, legend_row, legend_words
 from .style import CAPTION_PT, HEADING_PT, INK, LABEL_PT, MARGIN_MM
 from .svg import drawing_rc, new_figure, render_svg
 
-__all__ = ["CycleFrames", "draw_cursor_diagrams", "draw_plan_legend", "frame_svg_text", "PANELS", "GAP_MM", "HEAD_MM", "CURSOR_COLOUR"]
+__all__ = ["CycleFrames", "draw_cursor_diagrams", "draw_plan_legend", "frame_svg_text", "PANELS", "GAP_MM", "HEAD_MM", "CURSOR_COLOUR", "LECTURE_TEXT_SCALE", "NOTE_ROOM"]
 
 #: The drawings of a frame, left to right: the scheme, the velocity plan, the acceleration plan.
 PANELS = ("mechanism", "velocity", "acceleration")
@@ -57,6 +59,10 @@ _SCALE = {"mechanism": ("k_l", "m/mm"), "velocity": ("k_v", "(m/s)/mm"), "accele
 GAP_MM = 10.0
 #: Height [mm] of the heading band above each drawing (its name and its scale factor).
 HEAD_MM = 13.0
+#: How much larger the texts of a lecture page's frames are than on a sheet (:class:`CycleFrames`' ``text_scale``):
+#: a frame of three drawings some 450 mm wide fills a screen 1280 px wide, about 2.5 px a millimetre, at which a
+#: sheet's 10 pt label would be 9 px tall; 1.6 times it reads from the back of a lecture room.
+LECTURE_TEXT_SCALE = 1.6
 #: The cursor of the cycle diagrams.
 CURSOR_COLOUR = "#c0392b"
 
@@ -74,6 +80,10 @@ class CycleFrames:
         Solved at one set of scale factors (``run.scales``).
     lang : str
         Language of the headings and of the reasons (see :mod:`plans.i18n`).
+    text_scale : float
+        Every text of the drawings (labels, link numbers, ω of the driver, headings) is this many times the
+        size it has on a sheet: a frame is shown on a screen or a projector the width of the whole frame,
+        smaller than a sheet's millimetres (see :data:`LECTURE_TEXT_SCALE`); the drawings keep their scales.
 
     Attributes
     ----------
@@ -81,6 +91,12 @@ class CycleFrames:
         The drawings of each frame (``"acceleration"`` only when the run has acceleration plans).
     size_mm : tuple of float
         (width, height) of every frame [mm]; one data unit of each drawing is one millimetre of it.
+    extents : list of dict
+        For each frame, each drawing's extent as drawn there, ``(xmin, ymin, xmax, ymax)`` [mm of the drawing,
+        its pole or the frame's origin at 0], None where nothing is drawn.
+    boxes : dict
+        Each drawing's box (:class:`plans.drawing._canvas.Bounds`): the union of its extents over all frames,
+        without the margins and the heading band.
 
     Raises
     ------
@@ -88,9 +104,10 @@ class CycleFrames:
         For a run in which no position is solved (nothing to draw).
     """
 
-    def __init__(self, run, *, lang: str = "en"):
+    def __init__(self, run, *, lang: str = "en", text_scale: float = 1.0):
         self.run = run
         self.lang = lang
+        self.text_scale = float(text_scale)
         solved = [r for r in run.runs if r.ok]
         if not solved:
             raise ValueError("no position of the run is solved: there is nothing to draw")
@@ -110,6 +127,10 @@ class CycleFrames:
                             MechanismDrawing(sketch, r.graphical, lang=lang, caption=False).draw()
                         elif _plan(r.graphical, kind) is not None:
                             draw_plan_into(sketch, _plan(r.graphical, kind), lang=lang, caption=False, detail=False)
+                    if self.text_scale != 1.0:
+                        for artist in sketch.artists:
+                            if isinstance(artist, Text):
+                                artist.set_fontsize(artist.get_fontsize() * self.text_scale)
                     sketches[kind] = sketch
                 self.figures.append(fig)
                 self._sketches.append(sketches)
@@ -118,6 +139,13 @@ class CycleFrames:
     # -- one canvas for all frames -------------------------------------------------------
 
     def _lay_out(self) -> None:
+        self.extents = [
+            {kind: None if sketches[kind].bounds.empty else tuple(float(v) for v in (b.xmin, b.ymin, b.xmax, b.ymax)) for kind, b in
+             ((kind, sketches[kind].bounds) for kind in self.panels)}
+            for sketches in self._sketches
+        ]
+        scale = self.text_scale
+        margin, head = MARGIN_MM * scale, HEAD_MM * scale  # room for the enlarged texts at the drawings' edges
         boxes = {}
         for kind in self.panels:
             union = Bounds()
@@ -128,14 +156,17 @@ class CycleFrames:
             if union.empty:
                 union.add(0.0, 0.0)
             heading, caption = self._heading(kind)
-            need = max(text_size(heading, HEADING_PT, "bold")[0], text_size(caption, CAPTION_PT, math=True)[0])
-            if union.width + 2 * MARGIN_MM < need:
-                union.add(union.xmin + need - 2 * MARGIN_MM, union.ymin)
+            need = max(text_size(heading, HEADING_PT * scale, "bold")[0], text_size(caption, CAPTION_PT * scale, math=True)[0])
+            if union.width + 2 * margin < need:
+                union.add(union.xmin + need - 2 * margin, union.ymin)
             boxes[kind] = union
-        widths = {k: b.width + 2 * MARGIN_MM for k, b in boxes.items()}
-        heights = {k: b.height + 2 * MARGIN_MM + HEAD_MM for k, b in boxes.items()}
+        widths = {k: b.width + 2 * margin for k, b in boxes.items()}
+        # every panel is the frame's height, its heading at the top; the plans' poles (0, 0 of a plan) on one
+        # level, so that the two plans read side by side; the scheme from the top
+        pole_depth = max((b.ymax + margin + head for k, b in boxes.items() if k != "mechanism"), default=0.0)
+        tops = {k: pole_depth if k != "mechanism" else b.ymax + margin + head for k, b in boxes.items()}
+        height = max(tops[k] - (b.ymin - margin) for k, b in boxes.items())
         width = sum(widths.values()) + GAP_MM * (len(self.panels) - 1)
-        height = max(heights.values())
         self.size_mm = (width, height)
         self.boxes = boxes
         with drawing_rc():
@@ -144,20 +175,23 @@ class CycleFrames:
                 x = 0.0
                 for kind in self.panels:
                     b, sketch = boxes[kind], sketches[kind]
-                    w, h = widths[kind], heights[kind]
+                    w = widths[kind]
                     ax = sketch.ax
-                    ax.set_position([x / width, (height - h) / height, w / width, h / height])
-                    ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
-                    ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM + HEAD_MM)
+                    ax.set_position([x / width, 0.0, w / width, 1.0])
+                    ax.set_xlim(b.xmin - margin, b.xmax + margin)
+                    ax.set_ylim(tops[kind] - height, tops[kind])
                     ax.set_aspect("auto")
                     heading, caption = self._heading(kind)
-                    left, top = complex(b.xmin - MARGIN_MM + 1.0, 0), b.ymax + MARGIN_MM + HEAD_MM - 1.0
-                    sketch.text(left + 1j * top, heading, size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
-                    sketch.text(left + 1j * (top - 6.0), caption, size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+                    left, top = complex(b.xmin - margin + 1.0, 0), tops[kind] - 1.0
+                    sketch.text(left + 1j * top, heading, size=HEADING_PT * scale, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+                    sketch.text(left + 1j * (top - 6.0 * scale), caption, size=CAPTION_PT * scale, ha="left", va="top", gid="scale", obstacle=False,
+                                math=True)
                     if not r.ok and kind == "mechanism":
-                        centre = complex((b.xmin + b.xmax) / 2, (b.ymin + b.ymax) / 2)
-                        sketch.text(centre, term("not_solved", self.lang), size=LABEL_PT, weight="bold", gid="not-solved", obstacle=False)
-                        sketch.text(centre - 6j, user_text(r.brief(self.lang)), size=CAPTION_PT, gid="not-solved", obstacle=False)
+                        # from the frame's left edge: the words may be wider than the scheme's panel, and the
+                        # plans' panels beside it are empty at this position
+                        at = complex(b.xmin - margin + 1.0, (b.ymin + b.ymax) / 2)
+                        sketch.text(at, term("not_solved", self.lang), size=LABEL_PT * scale, ha="left", weight="bold", gid="not-solved", obstacle=False)
+                        sketch.text(at - 6j * scale, user_text(r.brief(self.lang)), size=CAPTION_PT * scale, ha="left", gid="not-solved", obstacle=False)
                     x += w + GAP_MM
 
     def _heading(self, kind: str) -> tuple[str, str]:
@@ -210,10 +244,16 @@ class CycleFrames:
 _AUTOMATIC_ID = re.compile(r' id="((?:figure|axes|patch|text|line2d|legend|xtick|ytick|matplotlib\.axis|PathCollection|PolyCollection|LineCollection|QuadMesh)_\d+)"')
 
 
+#: The ids matplotlib derives from a hash of what it defines (markers ``m…``, clip paths ``p…``), and the references to
+#: them: two SVGs of one page that draw the same marker would share the id.
+_HASHED_ID = re.compile(r'(id="|href="#|url\(#)([mp][0-9a-f]{10})(?=[")])')
+
+
 def frame_svg_text(data: bytes, name: str | None = None) -> str:
     """An SVG of :mod:`plans.drawing.svg` as text to put inside a page: no XML declaration, DOCTYPE or metadata;
     with *name*, matplotlib's own ids (``figure_1`` …) prefixed by it, so that SVGs side by side on one page do not
-    share an id (the ids of plans' drawings, ``mech-…``, ``vel-…``, and those referred to are kept)."""
+    share an id (the ids of plans' drawings, ``mech-…``, ``vel-…``, are kept; the markers' and clip paths' ids are
+    prefixed too, with the references to them)."""
     text = data.decode("utf-8")
     start = text.index("<svg")
     text = text[start:]
@@ -222,6 +262,7 @@ def frame_svg_text(data: bytes, name: str | None = None) -> str:
         text = head + rest.partition("</metadata>")[2]
     if name:
         text = _AUTOMATIC_ID.sub(lambda m: f' id="{name}-{m.group(1)}"', text)
+        text = _HASHED_ID.sub(lambda m: f"{m.group(1)}{name}-{m.group(2)}", text)
     return text.strip()
 
 
@@ -248,6 +289,7 @@ def draw_cursor_diagrams(run, quantities, *, lang: str = "en", columns: int = 2,
             left, bottom = col * cw + 17.0, height - (row + 1) * ch + 11.0
             ax = fig.add_axes([left / width, bottom / height, (cw - 17.0 - 32.0) / width, (ch - 17.0) / height])
             plot_cycle(run.cycle, quantity, ax, lang=lang, cycle=run.dense)
+            _room_for_notes(ax)
             ticks = ax.get_xticks()
             if len(ticks) > 7:  # every 60° rather than 30°: a diagram of the page is narrower than a handout's
                 ax.set_xticks(ticks[::2])
@@ -262,6 +304,19 @@ def draw_cursor_diagrams(run, quantities, *, lang: str = "en", columns: int = 2,
             origin = float(ax.transData.transform((first, 0.0))[0])
             cursors[gid] = [None if x is None else round(float(ax.transData.transform((x, 0.0))[0]) - origin, 3) for x in shown]
     return fig, cursors
+
+
+#: The share of a diagram's height kept free above its curves for the notes written in it.
+NOTE_ROOM = 0.22
+
+
+def _room_for_notes(ax) -> None:
+    """Raise the top of *ax* so that the notes :func:`plans.drawing.diagrams.plot_cycle` writes across the top of
+    the plotting area (ω₂ = 6 rad/s …, what is clipped) stand above the curves rather than hide them."""
+    notes = [t for t in ax.texts if t.get_transform() == ax.transAxes and t.get_position()[1] >= 0.8 and 0.0 <= t.get_position()[0] <= 1.0]
+    if notes:
+        bottom, top = ax.get_ylim()
+        ax.set_ylim(bottom, top + NOTE_ROOM / (1.0 - NOTE_ROOM) * (top - bottom))
 
 
 def draw_plan_legend(run, *, lang: str = "en"):

@@ -40,6 +40,16 @@ FARTHEST_MM = 30.0
 _SEPARATOR = ", "
 
 
+def _to_segment(z: complex, segment: tuple[complex, complex]) -> float:
+    """Distance [mm] from *z* to the segment."""
+    a, b = segment
+    d = b - a
+    if abs(d) == 0:
+        return abs(z - a)
+    t = min(1.0, max(0.0, ((z - a) * d.conjugate()).real / abs(d) ** 2))
+    return abs(z - (a + t * d))
+
+
 def _leader(sketch: Sketch, anchor: complex, center: complex, w: float, h: float) -> None:
     """A thin line from just off *anchor* to the nearest side of the label's box."""
     from shapely.ops import nearest_points
@@ -69,6 +79,9 @@ def place_label(
     zorder: float = 6.0,
     mathtext: bool = False,
     leader_from: float | None = None,
+    rivals: tuple[complex, ...] = (),
+    own: tuple[complex, complex] | None = None,
+    rival_segments: tuple[tuple[complex, complex], ...] = (),
 ) -> list:
     """Place one label (several names written ``"p, o, d"``) near *anchor*.
 
@@ -94,6 +107,13 @@ def place_label(
     leader_from : float, optional
         A label placed at a gap of at least this [mm] is joined to its point
         by a thin leader line (where points crowd, a label may sit further off).
+    rivals : tuple of complex
+        Other labelled points [mm]: a place whose centre is nearer one of them
+        than *anchor* costs as much as an overlap (a label must read as its
+        own point's, not its neighbour's).
+    own, rival_segments : segments (tail, tip) [mm]
+        A vector's label: a place nearer one of *rival_segments* than its own
+        vector *own* costs as much as an overlap.
 
     Returns
     -------
@@ -155,7 +175,9 @@ def place_label(
                 np.minimum.at(clear, i, shapely.distance(boxes[i], shapes[j]))
         for (center, gap, turn), c in zip(ring, clear):
             c = float(c)
-            score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - gap - 0.15 * turn - 1e-6 * order
+            mine = _to_segment(center, own) if own is not None else abs(center - anchor)
+            astray = any(abs(center - q) < mine for q in rivals) or any(_to_segment(center, seg) < mine for seg in rival_segments)
+            score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - (OVERLAP_MM if astray else 0.0) - gap - 0.15 * turn - 1e-6 * order
             order += 1
             if best is None or score > best[0]:
                 best = (score, center, gap, c)

@@ -12,7 +12,9 @@
 
 from __future__ import annotations
 
-__all__ = ["DECIMAL_COMMA", "MINUS", "localised", "scale_caption"]
+__all__ = ["DECIMAL_COMMA", "MINUS", "localised", "scale_caption", "course_units"]
+
+from .._text import course_units  # noqa: E402 (re-exported: the drawings' unit symbols)
 
 #: Languages written with a decimal comma.
 DECIMAL_COMMA = ("sr", "ru", "bg", "sl")

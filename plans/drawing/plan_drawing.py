@@ -288,11 +288,13 @@ def _check(z: complex, what: str) -> complex:
     return z
 
 
-def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True, detail: bool = True) -> None:
+def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True, detail: bool = True,
+                   heading: bool = True) -> None:
     """Draw *plan* into *sketch* (one data unit = 1 mm): what :func:`draw_plan` does on a page's own Sketch.
 
     *caption* False leaves out the heading, scale and legend; *legend* False only the legend;
-    *detail* False the enlarged detail of crowded images.
+    *detail* False the enlarged detail of crowded images; *heading* False the heading and the
+    scale factor only (a page that states them itself keeps the notes on short vectors).
     """
     images = {name: _check(z, f"image {name}") for name, z in plan.images.items()}
     vectors = vectors_drawn(plan)
@@ -393,7 +395,8 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             in_detail.setdefault(label, name)
 
     if caption:
-        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label), in_detail.get(v.label)) for v in shorts], along=alongside(plan))
+        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label), in_detail.get(v.label)) for v in shorts],
+                 along=alongside(plan), heading=heading)
 
 
 def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[str]]]:
@@ -766,15 +769,19 @@ def along_note(plan, v, w, lang: str = "en") -> str:
     return f"∠ {pole}{_tip_text(plan, v)} = {angle(v)}°,  ∠ {pole}{_tip_text(plan, w)} = {angle(w)}°"
 
 
-def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True, notes=(), along=()) -> None:
-    """Heading, scale factor, notes on vectors too short to draw and on vectors that lie one along the other, and the legend, below the plan."""
+def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True, notes=(), along=(), heading: bool = True) -> None:
+    """Heading, scale factor, notes on vectors too short to draw and on vectors that lie one along the other, and the legend, below the plan
+    (*heading* False: no heading and scale)."""
     symbol, units = _UNITS[plan.kind]
-    heading = term("velocity_plan" if plan.kind == "velocity" else "acceleration_plan", lang)
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
-    sketch.text(complex(x, y), heading, size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
-    y -= 5.0
-    sketch.text(complex(x, y), scale_caption(symbol, fmt_number(plan.scale), units, lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    if heading:
+        words = term("velocity_plan" if plan.kind == "velocity" else "acceleration_plan", lang)
+        sketch.text(complex(x, y), words, size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+        y -= 5.0
+        sketch.text(complex(x, y), scale_caption(symbol, fmt_number(plan.scale), units, lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    else:
+        y += 4.6
     # notes on vectors too short to draw, side by side as far as the plan is wide
     # (a plan with many of them grows by a line, not by a line each)
     width = max(b.width, 60.0)

@@ -89,8 +89,12 @@ def _segments(values: np.ndarray) -> list[np.ndarray]:
     return [r for r in runs if len(r) >= 2]
 
 
-def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l: float | None = None, law: bool = False) -> None:
-    """Draw the plan of positions into a sketch (one data unit = 1 mm)."""
+def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l: float | None = None, law: bool = False,
+                        heading: bool = True, extremes: dict | None = None) -> None:
+    """Draw the plan of positions into a sketch (one data unit = 1 mm); *heading* False leaves out the heading and
+    k_l (a page that states them), keeping the legend of the paths; *law* states the driver's law under it;
+    *extremes* (label -> GraphicalSolution, ``{"0′": …}``) adds the output's other extreme position, dash-dotted,
+    its points numbered with the label (``E₀′``)."""
     runs = [r for r in positions_run.runs if r.ok]
     if not runs:
         raise ValueError("no position of the run could be solved: there is nothing to draw")
@@ -133,6 +137,16 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
                 continue
             sketch.circle(complex(z) / k_l, 0.55, fc="white", ec=GHOST, lw=0.5, gid=f"joint-{run.index}-{p}", zorder=1.4, obstacle=False)
 
+    # the output's other extreme position (0′), dash-dotted over the thin ones
+    for label, g in (extremes or {}).items():
+        for body_name, body in scene.bodies.items():
+            if body_name == FRAME:
+                continue
+            pts = [complex(g.positions[p]) / k_l for p in body.points if p in g.positions]
+            if len(pts) >= 2:
+                ring = pts if len(pts) == 2 else _hull(pts) + _hull(pts)[:1]
+                sketch.line(ring, color="#000000", lw=GHOST_PT, dashes=(5.0, 1.2, 1.0, 1.2), gid=f"link-extreme-{body_name}", zorder=1.3, obstacle=False)
+
     # a mark at every numbered point of every position, all of them obstacles before any label is placed
     numbered = numbered_points(scene)
     marks = []
@@ -153,13 +167,23 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     for index, p, at in sorted(marks, key=lambda m: (m[0] != runs[0].index, m[0], numbered.index(m[1]))):
         away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
         place_number(sketch, at, f"{p}{_sub(index)}", gid=f"position-{index}-{p}", size=NUMBER_PT, prefer=away)
+    for label, g in (extremes or {}).items():
+        for p in numbered:
+            if p in g.positions:
+                at = complex(g.positions[p]) / k_l
+                sketch.circle(at, MARK_R, fc="#000000", lw=0, gid=f"mark-extreme-{p}", zorder=4.5, obstacle=True)
+                away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
+                place_number(sketch, at, f"{p}{label.translate(SUBSCRIPT)}", gid=f"position-extreme-{p}", size=NUMBER_PT, prefer=away)
 
     # caption
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 2.5
-    sketch.text(complex(x, y), term("positions_plan", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
-    y -= 5.0
-    sketch.text(complex(x, y), f"$k_l$ = {localised(fmt_number(k_l), lang)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    if heading:
+        sketch.text(complex(x, y), term("positions_plan", lang), size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
+        y -= 5.0
+        sketch.text(complex(x, y), f"$k_l$ = {localised(fmt_number(k_l), lang)} m/mm", size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+    else:
+        y += 5.0
     motion = getattr(positions_run, "motion", None)
     if law and motion is not None:  # the driver's law over the cycle (the handout's cover states it in its header)
         import textwrap

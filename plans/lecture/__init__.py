@@ -36,12 +36,14 @@ from .._files import write_atomic
 from ..errors import OutputError, PlansError
 from ..i18n import check_language, term
 
-__all__ = ["animate", "Animation", "SUFFIXES", "DEFAULT_POSITIONS", "SLIDE_WIDTH_PX", "diagram_quantities"]
+__all__ = ["animate", "Animation", "SUFFIXES", "DEFAULT_POSITIONS", "SLIDE_WIDTH_PX", "SCALE_UNITS", "diagram_quantities"]
 
 #: Positions over the cycle when none are asked for.
 DEFAULT_POSITIONS = 36
 #: What :meth:`Animation.save` writes, by the suffix of the path.
 SUFFIXES = (".html", ".htm", ".gif", ".mp4")
+#: The unit of each scale factor (one millimetre of the drawing stands for k of it).
+SCALE_UNITS = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}
 #: Width [px] of the frames of a GIF or an MP4 (a slide's width).
 SLIDE_WIDTH_PX = 1600
 
@@ -108,16 +110,15 @@ class Animation:
     @cached_property
     def frames(self):
         """The frames (:class:`plans.drawing.frames.CycleFrames`), drawn on first use."""
-        from ..drawing.frames import CycleFrames
+        from ..drawing.frames import LECTURE_TEXT_SCALE, CycleFrames
 
-        return CycleFrames(self.run, lang=self.lang)
+        return CycleFrames(self.run, lang=self.lang, text_scale=LECTURE_TEXT_SCALE)
 
     def labels(self) -> list[str]:
-        """The words of each position: ``"Position 5 (6/36): φ₂ = 105.0°"`` in the reader's language."""
+        """The words of each position: ``"Position 5: φ₂ = 105.0°"`` in the reader's language."""
         from .._text import decimal_comma
 
-        total = len(self.run.runs)
-        return [decimal_comma(f"{term('position', self.lang)} {r.index} ({r.index + 1}/{total}): {r.label}", self.lang) for r in self.run.runs]
+        return [decimal_comma(f"{term('position', self.lang)} {r.index}: {r.label}", self.lang) for r in self.run.runs]
 
     @cached_property
     def html(self) -> str:
@@ -125,19 +126,24 @@ class Animation:
         from ..drawing.frames import draw_cursor_diagrams, draw_plan_legend, frame_svg_text
         from ..drawing.svg import render_svg
         from .page import lecture_html
-        from .values import column_heads, position_values, value_rows
+        from .values import column_heads, position_values, value_notes, value_rows
 
         frames = self.frames
         svgs = [frame_svg_text(frames.svg(k), "frame") for k in range(len(frames))]
         quantities = diagram_quantities(self.run)
-        diagrams, cursors = draw_cursor_diagrams(self.run, quantities, lang=self.lang) if quantities else (None, {})
+        # one SVG a diagram: the page sets them two or three a row, as wide as the screen allows
+        diagrams, cursors = [], {}
+        for quantity in quantities:
+            figure, moves = draw_cursor_diagrams(self.run, [quantity], lang=self.lang, columns=1)
+            diagrams.append(frame_svg_text(render_svg(figure), f"diagram-{quantity}"))
+            cursors.update(moves)
         rows = value_rows(self.run)
-        scales = ", ".join(f"{key} = {value:g}" for key, value in self.run.scales.items())
         from .._text import decimal_comma
 
-        subtitle = decimal_comma(f"{self.run.structure.formula} · {len(self.run.runs)} {term('positions', self.lang)} · {scales}", self.lang)
+        scales = [("k", key.partition("_")[2], decimal_comma(f"{value:g}", self.lang), SCALE_UNITS[key]) for key, value in self.run.scales.items()]
+        subtitle = [self.run.structure.formula, f"{len(self.run.runs)} {term('positions', self.lang)}"]
         if self.run.motion is not None:  # the driver's law over the cycle, in its own words and numbers
-            subtitle += " · " + self.run.motion.law.describe(self.lang, self.run.scene.driver.link)
+            subtitle.append(self.run.motion.law.describe(self.lang, self.run.scene.driver.link))
         return lecture_html(
             title=self.run.scene.title,
             subtitle=subtitle,
@@ -147,9 +153,11 @@ class Animation:
             rows=rows,
             values=position_values(self.run, rows, self.lang),
             heads=column_heads(self.lang),
-            diagrams=frame_svg_text(render_svg(diagrams), "diagrams") if diagrams is not None else None,
+            diagrams=diagrams,
             cursors=cursors,
             legend=frame_svg_text(render_svg(draw_plan_legend(self.run, lang=self.lang)), "legend"),
+            scales=scales,
+            notes=value_notes(self.run, rows, self.lang),
         )
 
     def _pixels(self, width_px: int) -> list:

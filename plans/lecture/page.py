@@ -39,26 +39,33 @@ STYLE = """
 *{box-sizing:border-box}
 body{margin:0;padding:0.5rem 0.9rem;font-family:"DejaVu Sans","Segoe UI",Arial,sans-serif;color:#111;background:#f6f6f4}
 h1{font-size:1.1rem;margin:0 0 0.1rem}
-header p{margin:0;color:#444;font-size:0.82rem}
-#top{display:flex;flex-wrap:wrap;gap:0.8rem;align-items:flex-start;margin-top:0.4rem}
-#left{flex:1 1 56rem;min-width:0}
+#subtitle{margin:0;color:#444;font-size:0.9rem;display:flex;flex-wrap:wrap;column-gap:0.9rem;row-gap:0.1rem}
+#subtitle span{overflow-wrap:anywhere}
+#top{margin-top:0.4rem}
 #stage{background:#fff;border:1px solid #ccc;padding:0.3rem}
-#frame svg{display:block;width:100%;height:auto;max-height:68vh}
+#frame svg{display:block;width:100%;height:auto;max-height:66vh}
+#bar{display:flex;flex-wrap:wrap;gap:0.4rem 1.2rem;align-items:flex-start;justify-content:space-between}
+#bar-left{flex:1 1 34rem;min-width:0}
 #controls{display:flex;flex-wrap:wrap;align-items:center;gap:0.5rem;margin:0.4rem 0 0.2rem}
 #controls button{font:inherit;font-size:1rem;min-width:2.6rem;padding:0.25rem 0.6rem;cursor:pointer}
 #play{min-width:7.5rem}
 #slider{flex:1 1 12rem;min-width:8rem}
 #position{font-weight:bold;min-width:14rem}
 #keys{color:#555;font-size:0.78rem;margin:0}
-#lower{display:flex;flex-wrap:wrap;gap:0.8rem;align-items:flex-start;margin-top:0.8rem}
+#side{flex:0 1 auto;display:flex;flex-direction:column;gap:0.5rem;min-width:0;max-width:100%}
+#values-box{overflow-x:auto}
+#legend-box{padding:0.2rem 0.5rem}
+#lower{display:flex;flex-wrap:wrap;gap:0.8rem;align-items:flex-start;margin-top:0.5rem}
 section{background:#fff;border:1px solid #ccc;padding:0.4rem 0.6rem}
 h2{font-size:0.95rem;margin:0 0 0.3rem}
-#values-box{flex:0 0 auto}
+
 #values{border-collapse:collapse;font-size:0.85rem}
 #values th,#values td{padding:0.08rem 0.5rem;border-bottom:1px solid #e4e4e4;text-align:right;white-space:nowrap}
 #values th:first-child,#values td:first-child{text-align:left}
 #values td.unit{text-align:left;color:#555}
-#diagrams-box{flex:1 1 36rem}
+#diagrams-box{flex:1 1 40rem;min-width:0}
+#values-box .note{max-width:25rem}
+#diagrams{display:grid;grid-template-columns:repeat(auto-fill,minmax(26rem,1fr));gap:0.2rem 0.6rem}
 #diagrams svg{display:block;width:100%;height:auto}
 #legend svg{display:block;max-width:100%;height:auto}
 .note{color:#555;font-size:0.78rem;margin:0.2rem 0 0}
@@ -182,23 +189,27 @@ def _json_for_script(value) -> str:
 def lecture_html(
     *,
     title: str,
-    subtitle: str,
+    subtitle: list[str],
     lang: str,
     frames: list[str],
     labels: list[str],
     rows: list,
     values: list,
     heads: list[str],
-    diagrams: str | None,
+    diagrams: list[str],
     cursors: dict,
     legend: str | None,
+    scales: list[tuple[str, str, str, str]] = (),
+    notes: list[str] = (),
 ) -> str:
     """The page as text.
 
-    *frames* are SVG texts (one per position), *labels* the words of each
+    *subtitle* is the header's parts (plain text, each kept whole when the line wraps), *scales* the
+    scale factors as ``(letter, subscript, value, unit)`` (typeset k<sub>l</sub> = 0.005 m/mm), *notes* the
+    table's footnotes (plain text).  *frames* are SVG texts (one per position), *labels* the words of each
     position, *rows* the table's rows (:func:`plans.lecture.values.value_rows`) and
     *values* their cells per position, *heads* the table's column heads,
-    *diagrams* the SVG of the cycle diagrams whose *cursors* move (gid → a
+    *diagrams* the SVGs of the cycle diagrams (one each) whose *cursors* move (gid → a
     shift per position, None where hidden), *legend* the SVG of the plans' legend.
     """
     words = {k: term(f"lecture_{k}", lang) for k in ("play", "pause")}
@@ -212,12 +223,17 @@ def lecture_html(
         f'<option value="{s:g}"{" selected" if s == 1.0 else ""}>×{esc(_speed_text(s, lang))}</option>' for s in SPEEDS
     )
     diagrams_box = (
-        f'<section id="diagrams-box"><h2>{esc(term("cycle_diagrams", lang))}</h2><div id="diagrams">{diagrams}</div>'
+        f'<section id="diagrams-box"><h2>{esc(term("cycle_diagrams", lang))}</h2><div id="diagrams">{"".join(f"<div>{d}</div>" for d in diagrams)}</div>'
         f'<p class="note">{esc(term("lecture_cursor", lang))}</p></section>'
         if diagrams
         else ""
     )
     legend_box = f'<section id="legend-box"><h2>{esc(term("lecture_legend", lang))}</h2><div id="legend">{legend}</div></section>' if legend else ""
+    head_parts = [esc(term("lecture_title", lang))] + [esc(part) for part in subtitle[:1]]
+    head_parts += [f"{esc(letter)}<sub>{esc(sub)}</sub> = {esc(value)} {esc(unit)}" for letter, sub, value, unit in scales]
+    head_parts += [esc(part) for part in subtitle[1:]]
+    header_line = "".join(f"<span>{part}</span>" for part in head_parts)
+    notes_html = "".join(f'<p class="note">{esc(note)}</p>' for note in notes)
     page_title = f"{user_text(title)} — {term('lecture_title', lang)}"
     return f"""<!DOCTYPE html>
 <html lang="{esc(lang)}">
@@ -232,12 +248,13 @@ def lecture_html(
 <body>
 <header>
 <h1>{esc(user_text(title))}</h1>
-<p>{esc(term("lecture_title", lang))} · {esc(subtitle)}</p>
+<p id="subtitle">{header_line}</p>
 </header>
 <main>
 <div id="top">
-<div id="left">
 <div id="stage"><div id="frame" aria-live="off"></div></div>
+<div id="bar">
+<div id="bar-left">
 <div id="controls">
 <button id="previous" type="button" title="{esc(term("lecture_previous", lang))}" aria-label="{esc(term("lecture_previous", lang))}">◀</button>
 <button id="play" type="button" aria-pressed="false">{esc(words["play"])}</button>
@@ -248,15 +265,18 @@ def lecture_html(
 </div>
 <p id="keys">{esc(term("lecture_keys", lang))}</p>
 </div>
+</div>
+</div>
+<div id="lower">
+{diagrams_box}
+<div id="side">
+{legend_box}
 <section id="values-box"><h2>{esc(term("lecture_values", lang))}</h2>
 <table id="values"><thead><tr>{"".join(f"<th>{esc(h)}</th>" for h in heads)}</tr></thead>
 <tbody>
 {body_rows}
-</tbody></table></section>
+</tbody></table>{notes_html}</section>
 </div>
-<div id="lower">
-{diagrams_box}
-{legend_box}
 </div>
 </main>
 <script type="application/json" id="plans-data">{_json_for_script(data)}</script>

@@ -1,0 +1,145 @@
+"""Drawings as SVG blocks of known physical size, for a typesetter to place at 100 %.
+
+Each function draws one thing with matplotlib, one data unit one millimetre
+of paper, and returns an :class:`SvgBlock`: the SVG bytes (root width and
+height in mm, :func:`plans.drawing.svg.render_svg`) and that size.  A page
+(:mod:`plans.pages`) places the block at its width, so the scale factor the
+page states holds on the printed paper.
+
+* :func:`mechanism_svg` — the kinematic scheme at k_l (no heading: the page states k_l);
+* :func:`plan_svg` — a velocity or acceleration plan (no heading, no legend;
+  notes on vectors too short to draw and the enlarged detail kept);
+* :func:`legend_svg` — one legend for the plans of a page;
+* :func:`positions_svg` — the plan of positions at k_l (paths of the points);
+* :func:`centres_svg`, :func:`circle_diagram_svg` — the mechanism with its instant
+  centres, and the circle diagram;
+* :func:`figure_svg` — a whole matplotlib figure (a page of cycle diagrams).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from ._canvas import Sketch, fit_axes
+from .style import MARGIN_MM
+from .svg import drawing_rc, new_figure, render_svg
+
+__all__ = ["SvgBlock", "mechanism_svg", "plan_svg", "legend_svg", "positions_svg", "centres_svg", "circle_diagram_svg", "figure_svg"]
+
+
+@dataclass(frozen=True)
+class SvgBlock:
+    """A drawing as SVG bytes and its size [mm] on paper (width, height)."""
+
+    svg: bytes
+    width: float
+    height: float
+
+
+def _units(svg: bytes, lang: str) -> bytes:
+    """The drawing's unit symbols as the course in *lang* writes them (``м/с`` on a Russian or Bulgarian page).
+
+    Every drawing writes the international symbols; the text nodes of its SVG
+    are rewritten here, whole symbols only (a plan's image ``m`` stays).
+    """
+    if lang not in ("ru", "bg"):
+        return svg
+    from .._text import course_units
+
+    text = svg.decode("utf-8")
+    text = re.sub(r">([^<>]+)<", lambda m: ">" + course_units(m.group(1), lang, drawn=True) + "<", text)
+    return text.encode("utf-8")
+
+
+def _sketched(tag: str, draw, lang: str) -> SvgBlock:
+    """Run ``draw(sketch)`` on a new figure sized to what it drew plus the margin."""
+    with drawing_rc():
+        fig = new_figure()
+        ax = fig.add_axes([0, 0, 1, 1])
+        sketch = Sketch(ax, tag)
+        draw(sketch)
+        width, height = fit_axes(ax, sketch.bounds, MARGIN_MM)
+        return SvgBlock(_units(render_svg(fig), lang), width, height)
+
+
+def mechanism_svg(graphical, lang: str = "en") -> SvgBlock:
+    """The kinematic scheme of a :class:`plans.graphical.GraphicalSolution` at its k_l, without heading and scale."""
+    from .mechanism import MechanismDrawing
+
+    return _sketched("mech", lambda sketch: MechanismDrawing(sketch, graphical, lang=lang, caption=False).draw(), lang)
+
+
+def plan_svg(plan, lang: str = "en", detail: bool = True) -> SvgBlock:
+    """A velocity or acceleration plan at its own scale, without heading, scale and legend (the page states them)."""
+    from .plan_drawing import draw_plan_into
+
+    tag = "vel" if plan.kind == "velocity" else "acc"
+    return _sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang)
+
+
+def legend_svg(plans, lang: str = "en") -> SvgBlock:
+    """One legend for *plans* (Plan objects): every kind of vector drawn on any of them, and construction lines."""
+    from ..graphical.plan import KINDS
+    from .plan_drawing import kinds_drawn, legend_row, legend_words
+
+    words: dict[str, list[str]] = {}
+    for plan in plans:
+        drawn = kinds_drawn(plan)
+        for kind in KINDS:
+            if kind in drawn:
+                text = legend_words(plan.kind, kind, lang)
+                if text not in words.setdefault(kind, []):
+                    words[kind].append(text)
+    entries = [(kind, " / ".join(words[kind])) for kind in KINDS if kind in words]
+    entries.append(("construction", legend_words("velocity", "construction", lang)))
+
+    def draw(sketch):
+        for k, (kind, text) in enumerate(entries):
+            legend_row(sketch, kind, text, 0.0, -4.2 * k, text_gid="legend-text")
+
+    return _sketched("legend", draw, lang)
+
+
+def positions_svg(positions_run, k_l: float, lang: str = "en", extremes: dict | None = None) -> SvgBlock:
+    """The plan of positions of a multi-position run at *k_l*: every position and the paths of the points (and the
+    output's other extreme position, *extremes* ``{"0′": GraphicalSolution}``)."""
+    from .positions_plan import draw_positions_into
+
+    return _sketched("positions", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l, heading=False,
+                                                                     extremes=extremes), lang)
+
+
+def centres_svg(result, k_l: float, lang: str = "en", room_min: float | None = None) -> SvgBlock:
+    """The mechanism at *k_l* with every instant centre (a :class:`plans.centres.CentresResult`), without the circle diagram."""
+    from .centres import ROOM_MIN, draw_centres_into
+
+    with drawing_rc():
+        fig = new_figure()
+        ax = fig.add_axes([0, 0, 1, 1])
+        width, height = draw_centres_into(ax, result, k_l, lang, legend=False, diagram=False, room_min=ROOM_MIN if room_min is None else room_min)
+        return _fitted(fig, ax, width, height, lang)
+
+
+def circle_diagram_svg(result, lang: str = "en") -> SvgBlock:
+    """The circle diagram of the instant centres."""
+    from .centres import draw_circle_diagram_into
+
+    with drawing_rc():
+        fig = new_figure()
+        ax = fig.add_axes([0, 0, 1, 1])
+        width, height = draw_circle_diagram_into(ax, result, lang)
+        return _fitted(fig, ax, width, height, lang)
+
+
+def _fitted(fig, ax, width: float, height: float, lang: str) -> SvgBlock:
+    fig.set_size_inches(width / 25.4, height / 25.4)
+    ax.set_position([0.0, 0.0, 1.0, 1.0])
+    return SvgBlock(_units(render_svg(fig), lang), width, height)
+
+
+def figure_svg(fig, lang: str = "en") -> SvgBlock:
+    """A whole figure (drawn for a page in *lang*) as a block of its own size."""
+    width, height = (x * 25.4 for x in fig.get_size_inches())
+    with drawing_rc():
+        return SvgBlock(_units(render_svg(fig), lang), width, height)

@@ -1,0 +1,131 @@
+"""The vector equations of the plans as a textbook writes them, known parts marked.
+
+A construction step (:class:`plans.graphical.plan.Step`) holds its equations
+as text (``"v_A4 = v_C + v_A4C  (v_A4C ⊥ CA)"``), the components it knew in
+full before the intersection (``step.known``) and those it found there,
+whose direction alone was known (``step.found``).  On the page every vector
+carries an arrow and the known parts are underlined as the course marks
+them: **twice** where magnitude and direction are known (every term on the
+right that the step did not find: a known point's velocity, a normal or
+Coriolis component), **once** where only the direction is (what the
+intersection gives).  The sought vector on the left is not underlined.
+
+>>> print(equation_math("v_C = v_B + v_CB", found={"v_CB"}))
+arrow(v)_(C) = underline(underline(arrow(v)_(B))) + underline(arrow(v)_(C B))
+"""
+
+from __future__ import annotations
+
+import re
+
+from .typesetting import string
+
+__all__ = ["equation_math", "condition_math", "step_lines", "VECTOR"]
+
+#: a vector as the graphical method names it: ``v_B``, ``a^n_CB``, ``v_A4A3``
+VECTOR = re.compile(r"(?<![\w^])([a-z])(?:\^([a-z]+))?_([A-Za-z0-9′]+)")
+_RATE = re.compile(r"([α-ωΑ-Ω])(\d+|²)")
+_WORD = re.compile(r"[^\W\d_]+[0-9]*")
+
+
+def _letters(sub: str) -> str:
+    """A subscript of point names, one token each for Typst: ``A4C`` → ``A 4 C``."""
+    return " ".join(re.findall(r"[0-9]+|′|[^\W\d_]", sub))
+
+
+def vector_math(symbol: str, sup: str | None, sub: str) -> str:
+    """``a``, ``n``, ``CB`` → ``arrow(a)^n_(C B)``."""
+    return f"arrow({symbol})" + (f"^{sup}" if sup else "") + f"_({_letters(sub)})"
+
+
+def _greek(ch: str) -> str:
+    from .typesetting import math
+
+    return math(ch)
+
+
+def _plain_math(part: str, name) -> str:
+    """Text between vectors as Typst math: ω2 → ω₂, point pairs (``CA``) italic, other words as names in text."""
+    out = []
+    k = 0
+    while k < len(part):
+        m = _RATE.match(part, k)
+        if m:
+            out.append(f"{m.group(1)}^2" if m.group(2) == "²" else f"{m.group(1)}_{m.group(2)}")
+            k = m.end()
+            continue
+        m = _WORD.match(part, k)
+        if m:
+            word = m.group(0)
+            if re.fullmatch(r"(?:[A-Z][0-9]*′?)+", word) or len(word) == 1:
+                out.append(_letters(word))
+            else:
+                out.append(string(name(word)))
+            k = m.end()
+            continue
+        ch = part[k]
+        if ch.isspace():
+            out.append(" ")
+        elif ch.isdigit() or ch in ".+-=()|,×·∥⊥":
+            out.append({"·": " dot.op ", "×": " times ", "∥": " parallel ", "⊥": " perp ", "|": " |"}.get(ch, ch))
+        else:
+            out.append(string(ch))
+        k += 1
+    return " ".join("".join(out).split())
+
+
+def condition_math(text: str, name=lambda word: word) -> str:
+    """The conditions of an equation (``v_A4C ⊥ CA, |ω2|·OA``) as Typst math; *name* gives a word in the reader's language."""
+    out = []
+    last = 0
+    for m in VECTOR.finditer(text):
+        out.append(_plain_math(text[last:m.start()], name))
+        out.append(vector_math(*m.groups()))
+        last = m.end()
+    out.append(_plain_math(text[last:], name))
+    return " ".join(piece for piece in out if piece)
+
+
+def equation_math(equation: str, known=(), found=(), name=lambda word: word) -> str:
+    """One vector equation ``lhs = t1 + t2 …`` as Typst math with the known parts underlined (see the module)."""
+    lhs, eq, rhs = equation.partition(" = ")
+    if not eq:
+        return condition_math(equation, name)
+    known, found = set(known), set(found)
+
+    def term(piece: str, right: bool) -> str:
+        m = VECTOR.fullmatch(piece.strip())
+        if not m:
+            return condition_math(piece.strip(), name)
+        body = vector_math(*m.groups())
+        label = m.group(0)
+        if label in found:
+            return f"underline({body})"
+        if right or label in known:
+            return f"underline(underline({body}))"
+        return body
+
+    terms = [term(t, True) for t in rhs.split(" + ")]
+    return f"{term(lhs, False)} = " + " + ".join(terms)
+
+
+def step_lines(step, name=lambda word: word) -> list[tuple[str, str]]:
+    """The equations of a construction step as ``(equation, conditions)`` pairs of Typst math.
+
+    Conditions are what the text gives in brackets after the equation (the
+    direction of each unknown, a zero); empty when there are none.
+    """
+    from ..drawing.sheet import guide_names
+
+    known = {v.label for v in step.known}
+    found = {v.label for v in step.found}
+    out = []
+    for text in step.equations:
+        text = guide_names(text)
+        main, _, rest = text.partition("  (")
+        if not rest and text.endswith(")") and " (" in text:  # one space before the conditions (a linear driver's)
+            cut = text.rfind(" (")
+            main, rest = text[:cut], text[cut + 2:]
+        condition = rest[:-1] if rest.endswith(")") else rest
+        out.append((equation_math(main.strip(), known, found, name), condition_math(condition, name) if condition else ""))
+    return out

@@ -1,0 +1,856 @@
+"""The handout as the course project's plate, set by Typst (:mod:`plans.pages.typesetting`).
+
+What the handout holds, in the order a student draws the plate (domain.md §10):
+
+1. the data, the structural formula, the assembly of the groups and the
+   plan of positions (every position at one k_l, the paths of the points);
+2. the vector equations of the velocity plans, the known parts underlined;
+3. the velocity plans of every position at one k_v, each from its own pole,
+   several to a page;
+4. the vector equations of the acceleration plans and the acceleration
+   plans of the chosen positions (by default two: one of the working and one
+   of the idle stroke) at one k_a;
+5. the tables comparing the graphical values with the analytic ones, and
+   the complex-number loop equations of the chosen positions;
+6. the kinematic diagrams over the cycle; with ``centres``, a page of
+   instant centres for every position.
+
+One k_l, one k_v, one k_a over the whole handout (each the round factor
+with which the largest of its drawings fills the room a page gives it; a
+factor the user or the scene gives is kept); ``scales="per-position"``
+gives each position its own k_v and k_a, and says so.  Every page has a
+frame with a binding margin and a title block: plate name, scales, sheet
+n of m, drawn by / checked by / date.
+
+The drawings are matplotlib SVG blocks of known size
+(:mod:`plans.drawing.svgblocks`) placed at 100 %; everything else — text,
+tables, equations, headings, pagination — is Typst's.  A page in another
+language than English holds no English word: the scene's title and names are
+taken in the page's language where the scene gives them
+(:mod:`plans.pages.words`).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field, replace
+
+from ..graphical.scales import round_up
+from ..i18n import term
+from .._text import decimal_comma
+from .equations import step_lines
+from .typesetting import compile_document, image, mixed, string, text
+from .words import assembly_lines, formula_words, namer, units
+
+__all__ = ["Handout", "build_handout", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
+
+#: The sections of a multi-position handout, in the plate's order (names as :attr:`Handout.order` lists them).
+ORDER = ("data", "positions", "velocity-equations", "velocity-plans", "acceleration-equations", "acceleration-plans",
+         "tables", "loops", "diagrams", "forces", "centres")
+#: How many acceleration plans a handout draws unless asked: one of the working stroke, one of the idle.
+ACCELERATIONS_DEFAULT = 2
+
+# page geometry [mm]: A4 portrait, a frame 20 mm from the bound edge, 5 mm from the others, a title block inside it
+PAGE = (210.0, 297.0)
+FRAME = (20.0, 5.0)
+TEXT_LEFT, TEXT_RIGHT, TEXT_TOP, TEXT_BOTTOM = 25.0, 10.0, 10.0, 36.0
+TEXT_WIDTH = PAGE[0] - TEXT_LEFT - TEXT_RIGHT
+TEXT_HEIGHT = PAGE[1] - TEXT_TOP - TEXT_BOTTOM
+GUTTER = 5.0
+#: the boxes [mm] the drawings are fitted to: the plan of positions (under the data), a velocity plan
+#: (two across, three down a page; one position's larger); the acceleration plans' cells: :func:`_acceleration_cells`
+POSITIONS_BOX = (TEXT_WIDTH, 150.0)
+VELOCITY_CELL = ((TEXT_WIDTH - GUTTER) / 2, 62.0)
+#: room [mm] a centres page keeps for its heading (two lines), Kennedy's statement and the legend (two lines)
+CENTRES_PAGE_TEXT = 42.0
+#: the page of cycle diagrams [mm]: the text area (a little short of it), so that it prints at 100 %, its 8 pt type 8 pt
+DIAGRAM_PAGE = (TEXT_WIDTH, TEXT_HEIGHT - 4.0)
+TEXT_PT = 9.5
+SMALL_PT = 8.0
+
+
+@dataclass
+class Handout:
+    """A handout ready to compile: Typst source, the SVG inputs, and what it holds (for callers and tests).
+
+    Attributes
+    ----------
+    source : str
+        The Typst document.
+    images : dict[str, bytes]
+        Input key -> SVG of a drawing (placed at its physical size).
+    scales : dict[str, float]
+        The plate's k_l, k_v, k_a (per position: ``per_position``).
+    per_position : dict[int, dict[str, float]]
+        Position index -> its scale factors (the same for all unless ``scales="per-position"``).
+    order : list[str]
+        The sections in the order they are set (names of :data:`ORDER`).
+    accelerations : list[int]
+        The positions whose acceleration plans are drawn.
+    drawn : dict[str, tuple[float, float]]
+        Input key -> size [mm] of the drawing.
+    """
+
+    source: str
+    images: dict[str, bytes]
+    scales: dict[str, float]
+    per_position: dict[int, dict[str, float]] = field(default_factory=dict)
+    order: list[str] = field(default_factory=list)
+    accelerations: list[int] = field(default_factory=list)
+    drawn: dict[str, tuple[float, float]] = field(default_factory=dict)
+    runs: list = field(default_factory=list, repr=False)
+
+    def pdf(self) -> bytes:
+        """The handout as one PDF (deterministic)."""
+        return compile_document(self.source, self.images, "pdf")
+
+    def pages(self, fmt: str = "svg", ppi: float = 110.0) -> list[bytes]:
+        """The handout as SVG or PNG pages."""
+        return compile_document(self.source, self.images, fmt, ppi=ppi)
+
+
+# --- scales -------------------------------------------------------------------------------------
+
+
+def _bbox(points) -> tuple[float, float]:
+    zs = list(points)
+    if not zs:
+        return 0.0, 0.0
+    xs = [z.real for z in zs]
+    ys = [z.imag for z in zs]
+    return max(xs) - min(xs), max(ys) - min(ys)
+
+
+def _plan_extent(plan) -> tuple[float, float]:
+    """The plan's extent in physical units [m/s or m/s²] (its images and the pole)."""
+    return _bbox([z * plan.scale for z in plan.images.values()] + [0j])
+
+
+def _fit(extent, box, fixed) -> float:
+    """The round factor with which a drawing of *extent* (physical) plus *fixed* [mm] fits *box* [mm]."""
+    need = 0.0
+    for e, b, f in zip(extent, box, fixed):
+        if e > 0:
+            need = max(need, e / max(b - f, 0.25 * b))
+    return round_up(need) if need > 0 and math.isfinite(need) else 0.0
+
+
+def _fitted(draw, extent, box, k0: float, given: float | None):
+    """(k, block): the round factor with which ``draw(k)`` fits *box*, measured (at most a few drawings), and the drawing at it.
+
+    The part that does not scale (labels, margins, supports) is what the
+    first drawing takes beyond ``extent / k``; the factor is then the
+    smallest round one that gives the rest to the geometry, larger ones
+    while the drawing still runs over the box.
+    """
+    if given is not None:
+        return given, draw(given)
+    block = draw(k0)
+    fixed = (block.width - extent[0] / k0, block.height - extent[1] / k0)
+    k = _fit(extent, box, fixed) or k0
+    for _ in range(6):
+        if k != k0:
+            block = draw(k)
+        if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
+            break
+        k0, k = k, round_up(k * 1.0001)
+    return k, block
+
+
+# --- the handout --------------------------------------------------------------------------------
+
+
+def _output_sense(run) -> float:
+    """The sense of the output's motion at a position: the velocity of the last group's slider along its frame
+    guide, else ω of the last group's link; 0 when it is at rest."""
+    from ..scene import FRAME as GROUND
+
+    a = run.analytic
+    groups = a.structure.groups
+    if not groups:
+        return 0.0
+    last = groups[-1]
+    for p in run.scene.prismatics:
+        if GROUND in (p.slider, p.guide) and (p.slider in last.links or p.guide in last.links) and p.name in a.sliders:
+            return float(a.sliders[p.name].v_rel[0])
+    for link in last.links:
+        motion = a.links.get(link)
+        if motion is not None and not run.scene.bodies[link].block:
+            return float(motion.omega[0])
+    return 0.0
+
+
+def stroke_phases(run) -> dict[int, tuple[str, float]]:
+    """Position index -> (``"working"`` or ``"idle"``, how far into that stroke, 0…1), for a crank turning fully
+    under a turning law (:class:`plans.motion.Strokes`: the working stroke starts at the output's extreme
+    position 0 and runs the working arc in the sense of motion); empty where the strokes are not known so
+    (a rocker input, a linear driver): then the sense of the output's motion tells them apart."""
+    import math as m
+
+    st = getattr(run, "strokes", None)
+    if st is None or not st.law.crank or st.law.kind == "harmonic" or not (st.working_arc > 0 and st.return_arc > 0):
+        return {}
+    out = {}
+    turn = 2 * m.pi
+    for r in run.runs:
+        if not r.ok:
+            continue
+        phase = ((float(r.position) - st.law.x0) * st.law.sense) % turn
+        into = (phase - st.start_phase) % turn
+        if into < st.working_arc:
+            out[r.index] = ("working", into / st.working_arc)
+        else:
+            out[r.index] = ("idle", (into - st.working_arc) / st.return_arc)
+    return out
+
+
+def choose_accelerations(run, asked) -> list[int]:
+    """The indices of the positions whose acceleration plans are drawn.
+
+    *asked*: ``"all"``, a list of indices, or None — then two: the position
+    nearest the middle of the working stroke and the one nearest the middle
+    of the idle stroke (:func:`stroke_phases`; without them, the strokes told
+    apart by the sense of the output's motion, the working one the longer
+    run of positions); one of each third when the output never turns back.
+    """
+    runs = run.runs
+    solved = [r for r in runs if r.ok and r.graphical is not None and r.graphical.acceleration_plan is not None]
+    if asked == "all":
+        return [r.index for r in solved]
+    if asked is not None:
+        known = {r.index for r in solved}
+        unknown = [k for k in asked if k not in known]
+        if unknown:
+            from ..errors import PlansError
+
+            raise PlansError(f"accelerations: position {unknown[0]} is not one of the handout's solved positions "
+                             f"({', '.join(str(k) for k in sorted(known)) or 'none'}); give 'all' or some of those")
+        return list(dict.fromkeys(asked))
+    if len(solved) <= ACCELERATIONS_DEFAULT:
+        return [r.index for r in solved]
+    phases = stroke_phases(run)
+    if phases:
+        chosen = []
+        for stroke in ("working", "idle"):
+            here = [r for r in solved if phases.get(r.index, ("", 0))[0] == stroke]
+            if here:
+                chosen.append(min(here, key=lambda r: abs(phases[r.index][1] - 0.5)).index)
+        if len(chosen) == 2:
+            return sorted(chosen)
+    plus = [r for r in solved if _output_sense(r) > 0]
+    minus = [r for r in solved if _output_sense(r) < 0]
+    strokes = sorted([s for s in (plus, minus) if s], key=len, reverse=True)
+    if len(strokes) < 2:
+        return [solved[len(solved) // 3].index, solved[(2 * len(solved)) // 3].index]
+    return sorted(s[len(s) // 2].index for s in strokes)
+
+
+def _first_page_room(scene, lang: str, r) -> float:
+    """The height [mm] the first page of a one-position handout leaves its two drawings (the mechanism and the
+    velocity plan): the text height less the data, the headings and the velocity equations, line by line."""
+    lines = len(data_lines(scene, lang)) + 2  # the data, the structural formula and the assembly
+    equations = sum(len(step.equations) for step in r.graphical.velocity_plan.steps)
+    return TEXT_HEIGHT - (12.0 + 5.0 * lines) - 12.0 - (16.0 + 6.4 * equations) - 20.0 - 8.0
+
+
+def _reason(r, lang: str) -> str:
+    """Why a position is not solved, in the reader's words and numbers, the group named as the course names it."""
+    from ..i18n import reason_text
+    from .words import group_words
+
+    words = reason_text(str(r.error), lang, r.cause)
+    return re.sub(r"\b[RP]{3}\([^,()]+,[^,()]+\)", lambda m: group_words(m.group(0), lang), words)
+
+
+def _stroke(r, working_sign: float, lang: str, phases=None) -> str:
+    """The stroke a position is in, in words (empty when not known)."""
+    if phases and r.index in phases:
+        return term("working_stroke" if phases[r.index][0] == "working" else "idle_stroke", lang)
+    sense = _output_sense(r)
+    if not sense or not working_sign:
+        return ""
+    return term("working_stroke" if sense * working_sign > 0 else "idle_stroke", lang)
+
+
+def build_handout(
+    scene,
+    *,
+    positions=None,
+    lang: str = "en",
+    k_l: float | None = None,
+    k_v: float | None = None,
+    k_a: float | None = None,
+    precision: float | None = None,
+    components: bool = False,
+    progress=None,
+    centres: bool = False,
+    accelerations=None,
+    scales: str = "plate",
+    forces: bool = False,
+    law: str | None = None,
+    start: str = "output",
+) -> Handout:
+    """The handout of *scene* (see the module); arguments as :func:`plans.handout.write_handout`."""
+    from ..compare import compare
+    from ..graphical import construct
+    from ..positions import at_page_precision, run_positions
+    from ..drawing.svgblocks import legend_svg, mechanism_svg, plan_svg, positions_svg
+
+    say = progress or (lambda words: None)
+    scene = at_page_precision(scene, precision)
+    given = {"k_l": k_l if k_l is not None else scene.scales.k_l,
+             "k_v": k_v if k_v is not None else scene.scales.k_v,
+             "k_a": k_a if k_a is not None else scene.scales.k_a}
+    run = run_positions(scene, positions, k_l=given["k_l"], k_v=given["k_v"], k_a=given["k_a"], precision=None, law=law, start=start)
+    # a frame guide (a ram's guideway) around the block's present place: the plan of positions draws the stroke
+    run = replace(run, runs=tuple(
+        replace(r, graphical=replace(r.graphical, travel={k: t for k, t in r.graphical.travel.items() if not k.startswith("frame.")}))
+        if r.graphical is not None else r for r in run.runs))
+    multi = positions is not None
+    solved = [r for r in run.runs if r.ok]
+    name = namer(scene, lang)
+    doc = _Document(scene, lang)
+
+    def at(r, ks):
+        g = construct(r.scene, run.structure, k_l=ks["k_l"], k_v=ks["k_v"], k_a=ks.get("k_a"), precision=run.precision, check_scales=False)
+        g = replace(g, travel=r.graphical.travel, cycle_poses=r.graphical.cycle_poses)
+        return replace(r, graphical=g, comparisons=compare(r.analytic, g))
+
+    def scaled(r, key, k):
+        ks = dict(r.graphical.scales)
+        ks[key] = k
+        return at(r, ks)
+
+    # --- one k_l: the plan of positions (one position: its mechanism) fills its box
+    say(term("positions_plan" if multi else "mechanism", lang))
+    if not solved:
+        from ..errors import PlansError
+
+        raise PlansError("no position of the handout could be solved: " + "; ".join(r.brief("en") for r in run.runs))
+    k_l0 = solved[0].graphical.scales["k_l"]
+    if multi:
+        zs = [z for r in solved for z in r.graphical.positions.values()]
+        import numpy as np
+
+        for p in scene.report:
+            if p in run.cycle.points:
+                path = np.asarray(run.cycle.points[p].r)
+                zs.extend(complex(z) for z in path[np.isfinite(path.real) & np.isfinite(path.imag)])
+        extremes = _other_extreme(run, scene)
+        zs += [z for g in extremes.values() for z in g.positions.values()]
+        extent = _bbox(zs)
+        k_l_plate, first = _fitted(lambda k: positions_svg(run, k, lang, extremes), extent, POSITIONS_BOX, k_l0, given["k_l"])
+    else:
+        # one position: the mechanism and its velocity plan share the first page under the data and the equations
+        room = _first_page_room(scene, lang, solved[0])
+        extent = _bbox(solved[0].graphical.positions.values())
+        k_l_plate, first = _fitted(lambda k: mechanism_svg(scaled(solved[0], "k_l", k).graphical, lang), extent,
+                                   (TEXT_WIDTH, max(room * 0.55, 60.0)), k_l0, given["k_l"])
+        velocity_alone = (TEXT_WIDTH, max(room - first.height, 50.0))
+
+    # --- one k_v over every position: the largest plan fills a cell
+    cell_v = VELOCITY_CELL if multi else velocity_alone
+    chosen = choose_accelerations(run, accelerations) if scene.accelerations else []
+    phases = stroke_phases(run)
+    accel_columns, cell_a = _acceleration_cells([r for r in solved if r.index in chosen])
+    per_position = {}
+    if scales == "per-position":
+        for r in solved:
+            ks = {"k_l": k_l_plate}
+            ks["k_v"], _ = _fitted(lambda k, r=r: plan_svg(scaled(r, "k_v", k).graphical.velocity_plan, lang), _plan_extent(r.graphical.velocity_plan), cell_v, r.graphical.scales["k_v"], given["k_v"])
+            if r.index in chosen:
+                ks["k_a"], _ = _fitted(lambda k, r=r: plan_svg(scaled(r, "k_a", k).graphical.acceleration_plan, lang), _plan_extent(r.graphical.acceleration_plan), cell_a, r.graphical.scales["k_a"], given["k_a"])
+            else:
+                ks["k_a"] = r.graphical.scales.get("k_a")
+            per_position[r.index] = ks
+        plate = {"k_l": k_l_plate}
+    else:
+        largest_v = max(solved, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.velocity_plan), cell_v)))
+        k_v_plate, _ = _fitted(lambda k: plan_svg(scaled(largest_v, "k_v", k).graphical.velocity_plan, lang), _plan_extent(largest_v.graphical.velocity_plan), cell_v, largest_v.graphical.scales["k_v"], given["k_v"])
+        plate = {"k_l": k_l_plate, "k_v": k_v_plate}
+        accel = [r for r in solved if r.index in chosen]
+        if accel:
+            largest_a = max(accel, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.acceleration_plan), cell_a)))
+            plate["k_a"], _ = _fitted(lambda k: plan_svg(scaled(largest_a, "k_a", k).graphical.acceleration_plan, lang), _plan_extent(largest_a.graphical.acceleration_plan), cell_a, largest_a.graphical.scales["k_a"], given["k_a"])
+        else:
+            plate["k_a"] = solved[0].graphical.scales.get("k_a")
+        per_position = {r.index: dict(plate) for r in solved}
+
+    # --- every position at the plate's factors, its plans drawn
+    # (a plan never runs out of its cell: one whose enlarged detail would is drawn without it, its notes kept;
+    # one still too wide makes the factor of its kind coarser for every position, so that it stays one)
+    here = {}
+    velocity_blocks, acceleration_blocks = {}, {}
+
+    def fitting(plan, cell):
+        block = plan_svg(plan, lang)
+        if block.width > cell[0] + 0.5:
+            block = plan_svg(plan, lang, detail=False)
+        return block
+
+    for attempt in range(4):
+        wider = {}
+        for n, r in enumerate(solved, start=1):
+            say(f"{term('position', lang)} {n}/{len(solved)}")
+            h = at(r, per_position[r.index])
+            here[r.index] = h
+            velocity_blocks[r.index] = fitting(h.graphical.velocity_plan, cell_v)
+            if velocity_blocks[r.index].width > cell_v[0] + 0.5:
+                wider["k_v"] = max(wider.get("k_v", 1.0), velocity_blocks[r.index].width / cell_v[0])
+            if r.index in chosen and h.graphical.acceleration_plan is not None:
+                acceleration_blocks[r.index] = fitting(h.graphical.acceleration_plan, cell_a)
+                if acceleration_blocks[r.index].width > cell_a[0] + 0.5:
+                    wider["k_a"] = max(wider.get("k_a", 1.0), acceleration_blocks[r.index].width / cell_a[0])
+        wider = {key: f for key, f in wider.items() if given[key] is None}
+        if not wider:
+            break
+        for ks in per_position.values():
+            for key, f in wider.items():
+                ks[key] = round_up(ks[key] * f * 1.0001)
+        for key, f in wider.items():
+            if key in plate:
+                plate[key] = round_up(plate[key] * f * 1.0001)
+    legend_v = legend_svg([h.graphical.velocity_plan for h in here.values()], lang)
+    legend_a = legend_svg([here[k].graphical.acceleration_plan for k in acceleration_blocks], lang) if acceleration_blocks else None
+
+    # --- the document
+    doc.plate = plate
+    doc.per_position = per_position if scales == "per-position" else None
+    sample = here[solved[0].index]
+    senses = [_output_sense(r) for r in solved]
+    plus, minus = sum(1 for s in senses if s > 0), sum(1 for s in senses if s < 0)
+    working = (1.0 if plus >= minus else -1.0) if plus and minus else 0.0
+
+    doc.section("data")
+    doc.heading(f"{term('plate_title', lang)}: {scene.title_in(lang)}", level=1)
+    from .words import cycle_lines
+
+    doc.lines([formula_words(line) for line in data_lines(scene, lang) + (cycle_lines(run, lang) if multi else [])], size=TEXT_PT)
+    doc.line(f"{term('structural_formula', lang)}:  {formula_words(run.structure.formula)}", size=TEXT_PT)
+    branch_words = assembly_lines(sample.analytic.branches, scene, lang, sample.graphical.positions)
+    if branch_words:
+        doc.line(f"{term('assembly', lang)}: " + ";  ".join(branch_words), size=TEXT_PT)
+    doc.section("positions")
+    doc.heading(term("positions_plan", lang) if multi else term("mechanism", lang), level=2)
+    doc.scale_line("k_l", k_l_plate)
+    doc.figure("positions" if multi else "mechanism", first)
+    if multi:
+        entries = []
+        for r in run.runs:
+            entry = f"{r.index}:  {r.label}"
+            if not r.ok:
+                entry += f"  ({term('not_solved', lang)})"
+            elif r.index in chosen:
+                stroke = _stroke(r, working, lang, phases)
+                entry += f"  ({stroke})" if stroke else ""
+            entries.append(entry)
+        if run.strokes is not None and run.motion is not None and run.motion.start == "output" and run.strokes.law.crank:
+            from ..positions import position_text
+
+            entries.append(f"0′:  {position_text(run.scene, run.strokes.other_position)}")  # the other extreme position
+        doc.listing(term("positions_list", lang), entries)
+
+    doc.section("velocity-equations")
+    doc.equations(f"{term('vector_equations', lang)}: {term('velocity_plan', lang).lower()}", sample.graphical.velocity_plan.steps, name)
+    doc.section("velocity-plans")
+    doc.headed_legend(term("velocity_plans", lang) + (f" ({term('each_from_its_pole', lang)})" if multi else ""),
+                      doc.scale_markup("k_v", plate["k_v"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
+                      "legend-v", legend_v)
+    cells = []
+    for r in run.runs:
+        caption = f"{term('position', lang)} {r.index}:  {r.label}" if multi else r.label
+        if not r.ok:
+            cells.append((caption, None, f"{term('not_solved', lang)}: {_reason(r, lang)}"))
+            continue
+        extra = f"$k_v$ = {per_position[r.index]['k_v']:g}" if scales == "per-position" else ""
+        cells.append((caption, (f"v-{r.index}", velocity_blocks[r.index]), extra))
+    doc.grid(cells, columns=2 if len(run.runs) > 1 else 1)
+
+    if acceleration_blocks:
+        doc.section("acceleration-equations")
+        doc.equations(f"{term('vector_equations', lang)}: {term('acceleration_plan', lang).lower()}", here[chosen[0]].graphical.acceleration_plan.steps,
+                      name, new_page=True)
+        doc.section("acceleration-plans")
+        doc.headed_legend(term("acceleration_plans", lang),
+                          doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
+                          "legend-a", legend_a)
+        cells = []
+        for k in chosen:
+            r = here[k]
+            stroke = _stroke(r, working, lang, phases)
+            caption = (f"{term('position', lang)} {k}:  {r.label}" if multi else r.label) + (f"  ({stroke})" if stroke and multi else "")
+            extra = f"$k_a$ = {per_position[k]['k_a']:g}" if scales == "per-position" else ""
+            cells.append((caption, (f"a-{k}", acceleration_blocks[k]), extra))
+        doc.grid(cells, columns=accel_columns)
+
+    doc.section("tables")
+    doc.heading(term("comparison", lang), level=2, new_page=True)
+    doc.tables([(f"{term('position', lang)} {h.index}:  {h.label}" if multi else h.label, _table(h, lang)) for h in here.values()])
+    # what a student measures on the plans of the chosen positions and what it gives (segment, mm, × k, = value)
+    from ..drawing.blocks import plan_readings
+
+    readings = []
+    for k in chosen or [sample.index]:
+        h = here[k]
+        where = f"{term('position', lang)} {h.index}: " if multi else ""
+        for kind in ("velocity", "acceleration"):
+            rows = plan_readings(h.graphical, kind, lang)
+            if rows:
+                readings.append((f"{where}{term(kind + '_plan', lang)}: {term('readings', lang)}", rows))
+    if readings:
+        doc.tables(readings, aligns="(left, left, right, left, right)")
+
+    loops_of = [here[k] for k in chosen] or [sample]
+    doc.section("loops")
+    doc.heading(term("loop_equations", lang), level=2)
+    from ..loops import loop_equations
+
+    for h in loops_of:
+        if multi:
+            doc.heading(f"{term('position', lang)} {h.index}:  {h.label}", level=3)
+        for block in loop_equations(h.analytic):
+            doc.loop_block(block)
+
+    if multi:
+        say(term("cycle_diagrams", lang))
+        from ..drawing.diagrams import draw_cycle_diagrams
+        from ..drawing.svgblocks import figure_svg
+
+        doc.section("diagrams")
+        marked = run.motion if run.motion is not None else run.positions
+        for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense,
+                                                  extremes=run.strokes, size=DIAGRAM_PAGE):
+            doc.full_page(f"diagram-{page_name}", figure_svg(fig, lang))
+        for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
+            doc.full_page(f"kinematic-{number}", figure_svg(fig, lang))
+    if forces:
+        from ..drawing.forces_page import draw_forces_pages
+        from ..drawing.svgblocks import figure_svg
+        from ..forces.lever import LeverError, joukowski_lever
+
+        doc.section("forces")
+        for k in chosen or [sample.index]:
+            h = here[k]
+            try:
+                lever = joukowski_lever(h.graphical)
+            except LeverError:
+                lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
+            where = [f"{term('position', lang)} {h.index}:  {h.label}"] if multi else []
+            for n, page in enumerate(draw_forces_pages(h.graphical, lang=lang, header_lines=where, lever=lever)):
+                doc.full_page(f"forces-{h.index}-{n}", figure_svg(page, lang))
+    if centres:
+        doc.section("centres")
+        for n, h in enumerate(here.values(), start=1):
+            say(f"{term('instant_centres', lang)} {n}/{len(here)}")
+            _centres_page(doc, h, k_l_plate, lang, multi)
+    return Handout(doc.source(), doc.images, plate, per_position, doc.order, chosen, doc.sizes, list(here.values()))
+
+
+#: room [mm] the acceleration plans' page gives its equations, legend and headings (the rest holds the plans)
+ACCELERATION_PAGE_TEXT = 95.0
+#: what a plan's drawing takes beyond its geometry, reckoned before it is drawn [mm] (labels, margin, caption)
+PLAN_FIXED = (14.0, 20.0)
+
+
+def _acceleration_cells(runs) -> tuple[int, tuple[float, float]]:
+    """(columns, cell [mm]) for the acceleration plans of *runs*: one above the other or side by side,
+    whichever draws the largest of them largest (two fill the page under the equations; more go two
+    across, as many down a page as fit)."""
+    if not runs:
+        return 1, (TEXT_WIDTH, 100.0)
+    room = TEXT_HEIGHT - ACCELERATION_PAGE_TEXT
+    n = len(runs)
+    options = []
+    for columns in (1, 2):
+        rows = max(1, min(-(-n // columns), 2))
+        cell = ((TEXT_WIDTH - (columns - 1) * GUTTER) / columns, room / rows - 6.0)
+        need = max(max(e / max(c - f, 10.0) for e, c, f in zip(_plan_extent(r.graphical.acceleration_plan), cell, PLAN_FIXED)) for r in runs)
+        options.append((need, columns, cell))
+    need, columns, cell = min(options)
+    return columns, cell
+
+
+def _other_extreme(run, scene) -> dict:
+    """``{"0′": GraphicalSolution}``: the mechanism at the output's other extreme position, for the plan of positions,
+    when the positions start at the output's extreme (a crank's, :class:`plans.motion.Strokes`); else empty."""
+    from ..errors import PlansError
+    from ..positions import run_positions
+
+    st = getattr(run, "strokes", None)
+    motion = getattr(run, "motion", None)
+    if st is None or motion is None or motion.start != "output" or not st.law.crank:
+        return {}
+    try:
+        other = run_positions(scene, [float(st.other_position)], precision=None, start="scene")
+    except PlansError:
+        return {}
+    solved = [r for r in other.runs if r.ok]
+    return {"0′": solved[0].graphical} if solved else {}
+
+
+def _kinematic_pages(scene, positions, count: int, precision, lang: str, law=None, start: str = "output") -> list:
+    """The pages of the output link's kinematic diagrams by graphical differentiation (and of their table when it
+    does not fit under them), at the handout's count of positions (12 when it has fewer than 8); a mechanism
+    without an output slider or rocker, or not solved at one of those positions, gets a page that says so."""
+    from ..differentiation import DiagramsError, kinematic_diagrams
+    from ..drawing.kinematic_diagrams import draw_kinematic_pages, draw_unavailable_page
+
+    if isinstance(positions, int):
+        count = positions
+    if count < 8:  # a course project differentiates over 8 or more
+        count = 12
+    try:
+        diagrams = kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
+    except DiagramsError as exc:  # said on a page of its own, in the reader's language
+        return [draw_unavailable_page(exc, title=scene.title_in(lang), lang=lang)]
+    return draw_kinematic_pages(diagrams, title=scene.title_in(lang), lang=lang)
+
+
+def _table(h, lang: str) -> list[list[str]]:
+    from ..drawing.sheet import translate_table
+    from ..report import sheet_table
+
+    return translate_table(sheet_table(h.comparisons, h.graphical, h.analytic), lang)
+
+
+def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
+    """A page of instant centres for the position *h*: the mechanism with its centres at k_l (coarser only
+    when the page cannot hold it), the circle diagram, the rules and the table."""
+    from ..centres import instant_centres
+    from ..compare import compare_centres
+    from ..drawing.centres import CentresSizer
+    from ..drawing.centres_page import ROOM_MIN, centres_page_table, centres_rules
+    from ..drawing.svgblocks import centres_svg, circle_diagram_svg
+    from ..errors import PlansError
+
+    title = f"{term('centres_page', lang)}" + (f" — {term('position', lang)} {h.index}:  {h.label}" if multi else "")
+    doc.heading(title, level=2, new_page=True)
+    kennedy = term("kennedy_theorem", lang)
+    doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=SMALL_PT)
+    try:
+        result = instant_centres(h.scene, h.analytic.structure)
+        comparisons = compare_centres(h.analytic, result)
+    except PlansError as exc:
+        doc.line(str(exc), size=TEXT_PT)
+        return
+    # the drawing gets what the page leaves beside its heading, the legend and the circle diagram with the table
+    diagram = circle_diagram_svg(result, lang)
+    box = (TEXT_WIDTH, min(150.0, TEXT_HEIGHT - CENTRES_PAGE_TEXT - max(diagram.height, 55.0)))
+    # the plate's k_l, coarser only where the page cannot hold it: sizes from geometry (two drawings of the
+    # mechanism alone, plans.drawing.centres.CentresSizer), the page drawn at the k_l chosen
+    sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
+    k = k_l
+    for _ in range(24):
+        width, height = sizer.size(k)
+        if width <= box[0] + 0.5 and height <= box[1] + 0.5:
+            break
+        k = round_up(k * max(width / box[0], height / box[1], 1.0001))
+    block = centres_svg(result, k, lang, room_min=ROOM_MIN)
+    for _ in range(4):  # the sizer is exact at its own two scales, close elsewhere: coarser while the drawing runs over
+        if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
+            break
+        k = round_up(k * max(block.width / box[0], block.height / box[1], 1.0001))
+        block = centres_svg(result, k, lang, room_min=ROOM_MIN)
+    doc.figure(f"centres-{h.index}", block)
+    doc.line(f"{term('centres_legend', lang)};  {term('centres_edge_legend', lang)}", size=SMALL_PT)
+    doc.beside((f"circle-{h.index}", diagram), centres_page_table(result, comparisons, lang), centres_rules(lang, result.scene.frame_number))
+
+
+def data_lines(scene, lang: str) -> list[str]:
+    """The scene's data as a few lines of text in *lang*: driver, link lengths, fixed points (names in *lang*)."""
+    from .words import scene_data_lines
+
+    return scene_data_lines(scene, lang)
+
+
+# --- the Typst document -------------------------------------------------------------------------
+
+
+#: a symbol with a subscript written in plain text (``t_w``), or a ``$…$`` part left as it is
+_SUBSCRIPTED = re.compile(r"\$[^$]*\$|(?<![\w\\])([A-Za-zα-ωΑ-Ω])_([A-Za-z0-9]+)(?!\w)")
+
+
+class _Document:
+    """Typst source built section by section: text, equations, tables and drawings (SVG inputs)."""
+
+    def __init__(self, scene, lang: str):
+        self.scene, self.lang = scene, lang
+        self.body: list[str] = []
+        self.images: dict[str, bytes] = {}
+        self.sizes: dict[str, tuple[float, float]] = {}
+        self.order: list[str] = []
+        self.plate: dict = {}
+        self.per_position = None
+
+    # words
+    def words(self, line: str) -> str:
+        """A line of the program's text (with ``$…$`` math) as markup in the page's language, names and units."""
+        for name in self.scene.names:
+            line = re.sub(rf"(?<![\w.]){re.escape(name)}(?!\w)", lambda m: self.scene.name_in(name, self.lang), line)
+        line = _SUBSCRIPTED.sub(lambda m: m.group(0) if m.group(0).startswith("$") else f"${m.group(1)}_{{{m.group(2)}}}$", line)
+        return mixed(units(decimal_comma(line, self.lang), self.lang))
+
+    def section(self, name: str) -> None:
+        self.order.append(name)
+
+    def heading(self, words: str, level: int = 2, new_page: bool = False) -> None:
+        if new_page and self.body:
+            self.body.append("#pagebreak(weak: true)")
+        self.body.append("=" * level + " " + self.words(words))
+
+    def line_markup(self, words: str, size: float = TEXT_PT) -> str:
+        return f"#text(size: {size}pt)[{self.words(words)}]"
+
+    def line(self, words: str, size: float = TEXT_PT) -> None:
+        self.body.append(self.line_markup(words, size) + "\n")
+
+    def headed_legend(self, heading: str, under: str, key: str, legend) -> None:
+        """A heading and a line under it on the left, a drawing's legend on the right (one band across the page)."""
+        self.body.append(f"#grid(columns: (1fr, auto), column-gutter: {GUTTER}mm, align: (left + top, right + top),\n"
+                         f"  [#heading(level: 2, {string(heading)})\n{under}], [#{self.add_image(key, legend)}])\n")
+
+    def lines(self, lines, size: float = TEXT_PT) -> None:
+        for line in lines:
+            self.line(line, size)
+
+    def scale_markup(self, key: str, value: float) -> str:
+        from ..drawing._canvas import fmt_number
+        from ..drawing.numerals import scale_caption
+
+        unit = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}[key]
+        return self.line_markup(scale_caption(key, fmt_number(value), unit, self.lang), size=TEXT_PT)
+
+    def scale_line(self, key: str, value: float) -> None:
+        self.body.append(self.scale_markup(key, value) + "\n")
+
+    def listing(self, heading: str, entries) -> None:
+        cells = ", ".join(f"[{self.words(e)}]" for e in entries)
+        self.body.append(f"#text(weight: \"bold\")[{text(heading)}]\n#text(size: {SMALL_PT}pt)[#grid(columns: 3, column-gutter: 6mm, row-gutter: 1.6mm, {cells})]\n")
+
+    def add_image(self, key: str, block) -> str:
+        self.images[key] = block.svg
+        self.sizes[key] = (block.width, block.height)
+        return image(key, block.width)
+
+    def figure(self, key: str, block) -> None:
+        if block is None:
+            return
+        self.body.append(f"#align(center)[#{self.add_image(key, block)}]\n")
+
+    def full_page(self, key: str, block) -> None:
+        """A drawing that is a page of its own (a page of diagrams), fitted to the text area."""
+        scale = min(TEXT_WIDTH / block.width, TEXT_HEIGHT / block.height, 1.0)
+        self.images[key] = block.svg
+        self.sizes[key] = (block.width * scale, block.height * scale)
+        self.body.append(f"#pagebreak(weak: true)\n#align(center)[#image(bytes(sys.inputs.at({string(key)})), format: \"svg\", width: {block.width * scale:.3f}mm)]\n")
+
+    def grid(self, cells, columns: int) -> None:
+        """Drawings with captions, *columns* across, flowing over pages (a cell never split)."""
+        items = []
+        for caption, drawing, extra in cells:
+            parts = [f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(caption)}]"]
+            if extra:
+                parts.append(f"#text(size: {SMALL_PT}pt)[{self.words(extra)}]")
+            if drawing is not None:
+                key, block = drawing
+                parts.append(f"#align(center)[#{self.add_image(key, block)}]")
+            items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts[:-1] + [parts[-1]]) + "]")
+        self.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 4mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
+
+    def equations(self, heading: str, steps, name, new_page: bool = False) -> None:
+        """The vector equations of the plans' steps under *heading*, with the note on the underlines: one block,
+        never parted from its heading."""
+        from .words import group_words
+
+        if new_page and self.body:
+            self.body.append("#pagebreak(weak: true)")
+        rows = []
+        for step in steps:
+            if not step.equations:
+                continue
+            who = f"{term('driver', self.lang)}" if step.group == "driver" else group_words(step.group, self.lang)
+            for k, (eq, cond) in enumerate(step_lines(step, name)):
+                first = f"[{text(who)}]" if k == 0 else "[]"
+                cond_cell = f"[${cond}$]" if cond else "[]"
+                rows.append(f"{first}, [${eq}$], {cond_cell}")
+        self.body.append(f"#block(breakable: false)[#heading(level: 2)[{self.words(heading)}]\n"
+                         f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]\n\n"
+                         f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.3mm), align: left + horizon,\n  "
+                         + ",\n  ".join(rows) + ")]]\n")
+
+    def tables(self, tables, aligns: str = "(left, right, right, right, right)") -> None:
+        """Tables of values, two columns of them on a page (*aligns*: Typst's alignment of the columns)."""
+        parts = []
+        for heading, rows in tables:
+            if not rows:
+                continue
+            header = rows[0]
+            ncol = len(header)
+            body = []
+            for i, row in enumerate(rows):
+                cells = list(row) + [""] * (ncol - len(row))
+                weight = "bold" if i == 0 else "regular"
+                body.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in cells))
+            parts.append(f"block(breakable: false)[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{self.words(heading)}] \\\n"
+                         f"#table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns},"
+                         f" table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]")
+        self.body.append(f"#text(size: {SMALL_PT}pt)[#columns(2, gutter: {GUTTER}mm)[" + "\n".join("#" + p for p in parts) + "]]\n")
+
+    def loop_block(self, block) -> None:
+        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(formula_words(block.title))}]\n")
+        for line in block.lines:
+            self.body.append(f"#text(size: {SMALL_PT}pt)[{self.words(line)}]\n")
+
+    def beside(self, drawing, table, lines) -> None:
+        key, block = drawing
+        rows = []
+        for i, row in enumerate(table):
+            weight = "bold" if i == 0 else "regular"
+            rows.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in row))
+        ncol = len(table[0]) if table else 1
+        tab = (f"table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: (left, left, right, right, right), table.hline(stroke: 0.7pt), "
+               + ", table.hline(stroke: 0.4pt), ".join([rows[0], ", ".join(rows[1:])]) + ", table.hline(stroke: 0.7pt))") if rows else "[]"
+        words = " \\\n".join(self.words(line) for line in lines)
+        self.body.append(f"#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {self.add_image(key, block)}, "
+                         f"text(size: {SMALL_PT}pt)[#{tab} \\\n{words}])\n")
+
+    # the whole
+    def source(self) -> str:
+        from ..drawing._canvas import fmt_number
+
+        lang = self.lang
+        scales = []
+        symbols = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}
+        for key in ("k_l", "k_v", "k_a"):
+            if self.plate.get(key) is not None:
+                scales.append(f"${key[0]}_{{{key[2]}}}$ = {fmt_number(self.plate[key])} {symbols[key]}")
+        scale_text = self.words(";   ".join(scales) if scales else "—")
+        if self.per_position is not None:
+            scale_text += " " + text("(" + term("scales_each_position", lang) + ")")
+        sheet = f"{text(term('sheet', lang))} #context counter(page).get().first() {text(term('of_sheets', lang))} #context counter(page).final().first()"
+        title_block = (
+            f"table(columns: (1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
+            f" table.cell(colspan: 2)[#text(size: 10pt, weight: \"bold\")[{text(term('plate_title', lang))}] — #text(size: 10pt)[{text(self.scene.title_in(lang))}]],"
+            f" [#text(size: 9pt)[{sheet}]],"
+            f" table.cell(colspan: 3)[#text(size: 8.5pt)[{text(term('scale_factors', lang))}: {scale_text}]],"
+            f" [#text(size: 8pt)[{text(term('drawn_by', lang))}:]], [#text(size: 8pt)[{text(term('checked_by', lang))}:]], [#text(size: 8pt)[{text(term('date', lang))}:]])"
+        )
+        inner_w = PAGE[0] - FRAME[0] - FRAME[1]
+        inner_h = PAGE[1] - 2 * FRAME[1]
+        head = f"""#set document(date: none)
+#set page(width: {PAGE[0]}mm, height: {PAGE[1]}mm, margin: (left: {TEXT_LEFT}mm, right: {TEXT_RIGHT}mm, top: {TEXT_TOP}mm, bottom: {TEXT_BOTTOM}mm),
+  background: place(top + left, dx: {FRAME[0]}mm, dy: {FRAME[1]}mm, rect(width: {inner_w}mm, height: {inner_h}mm, stroke: 0.8pt)),
+  foreground: place(bottom + left, dx: {FRAME[0]}mm, dy: -{FRAME[1]}mm, block(width: {inner_w}mm, {title_block})))
+#set text(font: {string(_FONT)}, size: {TEXT_PT}pt, lang: {string(lang)})
+#show math.equation: set text(font: {string(_MATH)})
+#set par(leading: 0.5em, spacing: 0.7em)
+#show heading: set block(above: 1.1em, below: 0.6em)
+#show heading.where(level: 1): set text(size: 13pt)
+#show heading.where(level: 2): set text(size: 11pt)
+#show heading.where(level: 3): set text(size: 9.5pt)
+"""
+        return head + "\n".join(self.body)
+
+
+from .typesetting import FONT as _FONT, MATH_FONT as _MATH  # noqa: E402
