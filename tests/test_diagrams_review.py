@@ -93,6 +93,8 @@ def test_a_coriolis_panel_of_zeros_is_dropped_with_a_note():
     assert not any("ᵏ" in ax.get_ylabel() for ax in sliders.axes)
     page = " ".join(t.get_text() for t in sliders.texts)
     assert "Кориолисово убрзање aᵏ = 0 у сваком положају" in page
+    assert "Клизни парови: положај на вођици, релативна брзина и убрзање" in page  # not "… и Кориолисово убрзање"
+    assert "положај на вођици" in sliders.axes[0].get_ylabel()  # s named alike on the page and its axis
 
 
 def test_the_near_dead_centre_hatch_says_the_sine_of_what():

@@ -669,6 +669,8 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
             if period is not None:
                 panel = _closed(panel, quantity)
             panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang, offsets=not _swing(cycle)) if quantity == "phi" else [panel])]
+        if dropped and name == "sliders":  # the page's words without the Coriolis acceleration it does not draw
+            words = term("sliders_motion_relative", lang)
         fig, axes = _page(title, subtitle + "\n" + words + "".join("\n" + d for d in dropped), len(panels), size)
         clipped = False
         for ax, (panel, ylabel, unit) in zip(axes, panels):
