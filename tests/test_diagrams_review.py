@@ -216,7 +216,7 @@ def test_the_kinematic_table_is_numbered_in_the_readers_words(sheets):
     from plans.drawing.kinematic_diagrams import diagrams_table
 
     assert diagrams_table(sheets["four-bar"], "en")[0][0] == "No."
-    assert diagrams_table(sheets["four-bar"], "ru")[0][0] == "№"
+    assert diagrams_table(sheets["four-bar"], "ru")[0][0] == "№ п/п"
 
 
 def test_the_swings_table_fits_under_its_diagrams(sheets):
