@@ -32,6 +32,7 @@ from .._text import user_text
 from ..i18n import term
 from .layout import A4
 from .numerals import localised
+from .svg import drawing_rc
 
 __all__ = ["draw_force_diagrams", "round_scale", "TEXT"]
 
@@ -91,6 +92,11 @@ def draw_force_diagrams(cf, *, lang: str = "en", title: str = "", size=A4) -> Fi
     title : str
         The page's title (plain text); empty: the scene's title in *lang*.
     """
+    with drawing_rc():  # (path.simplify off: every position's point drawn)
+        return _draw(cf, lang, title, size)
+
+
+def _draw(cf, lang: str, title: str, size) -> Figure:
     from matplotlib.backends.backend_svg import FigureCanvasSVG
 
     scene = cf.forces.scene
@@ -176,7 +182,7 @@ def _moment_diagram(cf, fig, top: float, lang: str, size) -> float:
                             fontsize=TEXT, ha="center", va="bottom" if b >= cf.mean or not math.isfinite(cf.mean) else "top")
     words = term("driving_moment" if cf.crank else "driving_force", lang)
     x_scale = rf"$\mu_{{\varphi}}$ = {_scale_text(mu_x, lang)} °/mm" if cf.crank else rf"$\mu_{{s}}$ = {_scale_text(mu_x, lang)} mm/mm"
-    y_scale = rf"$\mu_{{{names['symbol']}}}$ = {_scale_text(mu_y, lang)} ({unit})/mm"
+    y_scale = rf"$\mu_{{{names['symbol']}}}$ = {_scale_text(mu_y, lang)} {f'({unit})' if '·' in unit else unit}/mm"
     fig.text(LEFT / size[0], (bottom + height + 9.5) / size[1], f"{words} {label} ({term('ccw_positive', lang)})" if cf.crank else f"{words} {label}",
              fontsize=9, ha="left", va="bottom", gid="M_b-title")
     fig.text(LEFT / size[0], (bottom + height + 4.5) / size[1], f"{x_scale},  {y_scale}", fontsize=9, ha="left", va="bottom", gid="M_b-scales")

@@ -27,7 +27,7 @@ import numpy as np
 from ..scene import FRAME, Crank, Scene
 from .analytic import AnalyticForces, Reaction, forces_from
 
-__all__ = ["CycleForces", "forces_over_cycle", "mean_over_cycle"]
+__all__ = ["CycleForces", "forces_over_cycle", "cycle_forces", "mean_over_cycle"]
 
 
 def mean_over_cycle(values, positions, crank: bool = True) -> float:
