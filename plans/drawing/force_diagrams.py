@@ -57,8 +57,11 @@ def round_scale(need: float) -> float:
 
 
 def _number(value: float, lang: str, decimals: int = 1) -> str:
-    """A value for a note: grouped thousands by a thin space, *decimals* decimals, the language's decimal mark."""
+    """A value for a note: grouped thousands by a thin space, *decimals* decimals, the language's decimal mark (no −0)."""
+    value = round(float(value), decimals) + 0.0
     text = f"{value:,.{decimals}f}".replace(",", "\u2009")
+    if float(text.replace("\u2009", "")) == 0:
+        text = text.lstrip("-")
     return localised(text, lang)
 
 
@@ -104,13 +107,16 @@ def _draw(cf, lang: str, title: str, size) -> Figure:
     fig.plans_size = tuple(size)
     FigureCanvasSVG(fig)
     title = title or scene.title_in(lang)
-    fig.text(11 / size[0], 1 - 11 / size[1], user_text(title), fontsize=13.5, weight="bold", ha="left", va="top")
-    law = cf.cycle.law.describe(lang, scene.driver.link) if hasattr(cf.cycle.law, "describe") else ""
     import textwrap
 
-    subtitle = user_text(term("forces_cycle_title", lang)) + (f"; {user_text(law)}" if law else "")
-    fig.text(11 / size[0], 1 - 19 / size[1], "\n".join(textwrap.wrap(subtitle, 100)), fontsize=9, ha="left", va="top", linespacing=1.3)
-    top = size[1] - 47.0  # the upper edge of the first box [mm from the bottom]
+    title_lines = textwrap.wrap(user_text(title), 62) or [""]
+    fig.text(11 / size[0], 1 - 11 / size[1], "\n".join(title_lines), fontsize=13.5, weight="bold", ha="left", va="top", linespacing=1.15)
+    below = 6.5 * (len(title_lines) - 1)  # [mm] each further line of the title
+    law = cf.cycle.law.describe(lang, scene.driver.link) if hasattr(cf.cycle.law, "describe") else ""
+    what = term("forces_cycle_title", lang) if cf.bearing is not None else term("driving_force", lang)
+    subtitle = user_text(what) + (f"; {user_text(law)}" if law else "")
+    fig.text(11 / size[0], 1 - (19 + below) / size[1], "\n".join(textwrap.wrap(subtitle, 100)), fontsize=9, ha="left", va="top", linespacing=1.3)
+    top = size[1] - 47.0 - below  # the upper edge of the first box [mm from the bottom]
     height = _moment_diagram(cf, fig, top, lang, size)
     if cf.bearing is not None:
         _polar_diagram(cf, fig, top - height - 30.0 - POLAR_HEIGHT, lang, size)
@@ -143,8 +149,8 @@ def _moment_diagram(cf, fig, top: float, lang: str, size) -> float:
     finite = values[np.isfinite(values)]
     lo = min(0.0, float(finite.min())) if finite.size else -1.0
     hi = max(0.0, float(finite.max())) if finite.size else 1.0
-    mu_y = round_scale(max(hi - lo, 1e-9) / (MOMENT_HEIGHT - 10.0))
-    ylo = math.floor((lo - 4.0 * mu_y) / mu_y / 5.0) * 5.0 * mu_y  # the box's lower edge on a 5 mm line
+    mu_y = round_scale(max(hi - lo, 1e-9) / (MOMENT_HEIGHT - 20.0))  # room for the margins below (7 mm) and above (5 mm), rounded to 5 mm
+    ylo = math.floor((lo - 7.0 * mu_y) / mu_y / 5.0) * 5.0 * mu_y  # the box's lower edge on a 5 mm line
     height = min(MOMENT_HEIGHT, math.ceil((hi - ylo) / mu_y / 5.0 - 1e-9) * 5.0 + 5.0)
     bottom = top - height
     ax = _box(fig, LEFT, bottom, width, height, size)
@@ -178,8 +184,9 @@ def _moment_diagram(cf, fig, top: float, lang: str, size) -> float:
         ax.plot(xm, ym, ls="none", marker="o", ms=3.0, color="#0072B2", gid="M_b-points")
         for k, (a, b) in enumerate(zip(xm, ym)):
             if math.isfinite(b):
-                ax.annotate(str(k), (a, b), xytext=(0, 4 if b >= cf.mean or not math.isfinite(cf.mean) else -4), textcoords="offset points",
-                            fontsize=TEXT, ha="center", va="bottom" if b >= cf.mean or not math.isfinite(cf.mean) else "top")
+                up = not math.isfinite(cf.mean) or b >= cf.mean - 1e-9 * max(1.0, abs(cf.mean))
+                ax.annotate(str(k), (a, b), xytext=(0, 4 if up else -4), textcoords="offset points", fontsize=TEXT, ha="center",
+                            va="bottom" if up else "top")
     words = term("driving_moment" if cf.crank else "driving_force", lang)
     x_scale = rf"$\mu_{{\varphi}}$ = {_scale_text(mu_x, lang)} °/mm" if cf.crank else rf"$\mu_{{s}}$ = {_scale_text(mu_x, lang)} mm/mm"
     y_scale = rf"$\mu_{{{names['symbol']}}}$ = {_scale_text(mu_y, lang)} {f'({unit})' if '·' in unit else unit}/mm"
