@@ -224,7 +224,22 @@ def _polar_diagram(cf, fig, bottom: float, lang: str, size) -> None:
     ax.plot([0.0], [0.0], ls="none", marker="o", ms=3.5, mfc="white", mec="#000000", gid="R-pole")
     ax.annotate(term("pole", lang), (0.0, 0.0), xytext=(-3, -3), textcoords="offset points", fontsize=TEXT, ha="right", va="top")
     closed = np.append(force, force[:1]) if cf.crank else force
-    ax.plot(closed.real, closed.imag, color="#0072B2", lw=1.0, gid="R-hodograph")
+    # a load that switches (a resistance against the velocity, reversed at a dead centre; a force over the working
+    # stroke only) makes R jump between two positions: the jump is drawn dotted, not as a stretch of the curve
+    steps = np.abs(np.diff(closed))
+    finite_steps = steps[np.isfinite(steps)]
+    jumps = np.zeros(len(steps), dtype=bool)
+    if finite_steps.size > 2:  # a step far longer than both its neighbours' (a fast but smooth stretch has long neighbours too)
+        around = np.maximum(np.roll(steps, 1), np.roll(steps, -1))
+        jumps = np.isfinite(steps) & (steps > 5.0 * np.nan_to_num(around, nan=np.inf)) & (steps > 0.02 * float(np.nanmax(np.abs(closed))))
+    curve = closed.astype(complex)
+    pieces = []
+    for k in np.flatnonzero(jumps)[::-1]:  # a gap (NaN) between the two ends of each jump
+        curve = np.insert(curve, k + 1, complex(np.nan, np.nan))
+        pieces.append(closed[k:k + 2])
+    ax.plot(curve.real, curve.imag, color="#0072B2", lw=1.0, gid="R-hodograph")
+    for piece in pieces:
+        ax.plot(piece.real, piece.imag, color="#0072B2", lw=0.6, ls=":", gid=None)
     k_max = int(np.nanargmax(np.abs(np.where(ok, force, np.nan))))
     f_max = complex(force[k_max])
     ax.annotate("", (f_max.real, f_max.imag), (0.0, 0.0), arrowprops={"arrowstyle": "-|>", "color": "#D55E00", "lw": 0.9, "shrinkA": 0, "shrinkB": 0})
