@@ -238,3 +238,24 @@ def test_the_python_api_states_its_mean_in_newton_metres():
     cycle = plans.forces.forces_over_cycle(plans.load(plans.example_path("slider-crank-loads")), steps=36, positions=0)
     assert cycle.bearing == "R_12" and cycle.marked is None
     assert cycle.mean == pytest.approx(1500.0 * 2 * stroke() / (2 * math.pi), rel=3e-3)  # 36 samples of a |v| with kinks
+
+
+def test_the_hodograph_is_every_r12_and_breaks_only_where_the_resistance_reverses(swept):
+    rows, svg = swept["output"]
+    _, _, mu_f = scales(svg)
+    (px, py), = marker_points(svg, "R-pole")
+    d = group(svg, "R-hodograph").find(f"{SVG}path").get("d")
+    pieces = [p for p in re.split(r"(?=M )", d.strip()) if p]
+    vertices = []
+    breaks = []
+    for piece in pieces:
+        numbers = [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?", piece)]
+        if vertices:
+            breaks.append(len(vertices))
+        vertices += list(zip(numbers[0::2], numbers[1::2]))
+    assert len(vertices) == STEPS + 1  # the turn closed
+    for k, (x, y) in enumerate(vertices):
+        assert math.hypot(x - px, y - py) * PT == pytest.approx(float(rows[k % STEPS]["R_12.magnitude"]) / mu_f, abs=0.01)
+    # F_r = 1500 N against v_B jumps by 3000 N where v_B changes sign (at the dead centres): there, and only there
+    signs = [float(r["B.vx"]) > 0 for r in rows] + [float(rows[0]["B.vx"]) > 0]
+    assert breaks == [k + 1 for k in range(STEPS) if signs[k] != signs[k + 1]]
