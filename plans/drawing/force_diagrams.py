@@ -31,6 +31,7 @@ from matplotlib.figure import Figure
 from .._text import user_text
 from ..i18n import term
 from .layout import A4
+from ..forces.cycle import is_swing
 from .numerals import localised
 from .svg import drawing_rc
 
@@ -123,9 +124,13 @@ def _draw(cf, lang: str, title: str, size) -> Figure:
     return fig
 
 
-def _x_of(cf, positions) -> np.ndarray:
-    """The horizontal coordinate: the crank angle turned from position 0 in the sense of ω [°], or s [mm]."""
+def _x_of(cf, positions, phase=None) -> np.ndarray:
+    """The horizontal coordinate: the crank angle turned from position 0 in the sense of ω [°], or s [mm];
+    a harmonic swing's time from position 0 [s] (from the *phase* of the positions)."""
     p = np.asarray(positions, dtype=float)
+    if is_swing(cf.cycle):
+        psi = np.asarray(phase, dtype=float)
+        return ((psi - float(cf.cycle.phase[0])) % (2 * math.pi)) / cf.cycle.law.frequency
     if cf.crank:
         start = float(cf.cycle.positions[0])
         sense = -1.0 if getattr(cf.forces.scene.driver, "omega", 0.0) < 0 else 1.0
@@ -137,8 +142,14 @@ def _moment_diagram(cf, fig, top: float, lang: str, size) -> float:
     """Draw M_b (F_b) with its box's upper edge at *top* [mm from the page's bottom]; returns the box's height [mm]."""
     names = _names(cf, lang)
     values = np.asarray(cf.forces.balancing, dtype=float)
-    x = _x_of(cf, cf.cycle.positions)
-    if cf.crank:
+    swing = is_swing(cf.cycle)
+    x = _x_of(cf, cf.cycle.positions, cf.cycle.phase)
+    if swing:
+        period = 2 * math.pi / cf.cycle.law.frequency
+        x = np.append(x, period)  # there and back: position 0 a period on
+        values = np.append(values, values[0])
+        x0, span = 0.0, period
+    elif cf.crank:
         x = np.append(x, 360.0)  # the turn closed: position 0 a turn on
         values = np.append(values, values[0])
         x0, span = 0.0, 360.0
@@ -169,8 +180,11 @@ def _moment_diagram(cf, fig, top: float, lang: str, size) -> float:
         ax.text(x0 + span, cf.mean, f"{term('mean_value', lang)} {bar} = {_number(cf.mean, lang, 2)} {unit}", fontsize=TEXT, color="#D55E00",
                 ha="right", va="bottom", gid="M_b-mean-text", bbox={"facecolor": "white", "edgecolor": "none", "pad": 0.5, "alpha": 0.85})
     else:
-        ax.text(0.5, 0.02, term("no_mean_moment", lang), transform=ax.transAxes, fontsize=TEXT, ha="center", va="bottom")
-    if cf.crank:
+        ax.text(0.5, 0.02, term("no_mean_swing" if swing else "no_mean_moment", lang), transform=ax.transAxes, fontsize=TEXT, ha="center",
+                va="bottom")
+    if swing:
+        ax.set_xlabel("t [s]", fontsize=TEXT)
+    elif cf.crank:
         ax.set_xticks(np.arange(0.0, 360.0 + 1e-9, 30.0))
         ax.set_xlabel("Δφ [°]", fontsize=TEXT)
     else:
@@ -179,7 +193,7 @@ def _moment_diagram(cf, fig, top: float, lang: str, size) -> float:
     ax.xaxis.set_major_formatter(_Formatter(lang))
     ax.yaxis.set_major_formatter(_Formatter(lang))
     if cf.marked is not None:  # the numbered positions on the curve
-        xm = _x_of(cf, cf.marked_cycle.positions)
+        xm = _x_of(cf, cf.marked_cycle.positions, cf.marked_cycle.phase)
         ym = np.asarray(cf.marked.balancing, dtype=float)
         ax.plot(xm, ym, ls="none", marker="o", ms=3.0, color="#0072B2", gid="M_b-points")
         for k, (a, b) in enumerate(zip(xm, ym)):
@@ -188,7 +202,7 @@ def _moment_diagram(cf, fig, top: float, lang: str, size) -> float:
                 ax.annotate(str(k), (a, b), xytext=(0, 4 if up else -4), textcoords="offset points", fontsize=TEXT, ha="center",
                             va="bottom" if up else "top")
     words = term("driving_moment" if cf.crank else "driving_force", lang)
-    x_scale = rf"$\mu_{{\varphi}}$ = {_scale_text(mu_x, lang)} °/mm" if cf.crank else rf"$\mu_{{s}}$ = {_scale_text(mu_x, lang)} mm/mm"
+    x_scale = rf"$\mu_{{t}}$ = {_scale_text(mu_x, lang)} s/mm" if swing else rf"$\mu_{{\varphi}}$ = {_scale_text(mu_x, lang)} °/mm" if cf.crank else rf"$\mu_{{s}}$ = {_scale_text(mu_x, lang)} mm/mm"
     y_scale = rf"$\mu_{{{names['symbol']}}}$ = {_scale_text(mu_y, lang)} {f'({unit})' if '·' in unit else unit}/mm"
     fig.text(LEFT / size[0], (bottom + height + 9.5) / size[1], f"{words} {label} ({term('ccw_positive', lang)})" if cf.crank else f"{words} {label}",
              fontsize=9, ha="left", va="bottom", gid="M_b-title")
@@ -223,7 +237,7 @@ def _polar_diagram(cf, fig, bottom: float, lang: str, size) -> None:
     ax.text(0.0, cy + height * mu / 2, " y", fontsize=TEXT, ha="left", va="top")
     ax.plot([0.0], [0.0], ls="none", marker="o", ms=3.5, mfc="white", mec="#000000", gid="R-pole")
     ax.annotate(term("pole", lang), (0.0, 0.0), xytext=(-3, -3), textcoords="offset points", fontsize=TEXT, ha="right", va="top")
-    closed = np.append(force, force[:1]) if cf.crank else force
+    closed = np.append(force, force[:1]) if cf.crank else force  # (a swing, too, comes back to position 0)
     # a load that switches (a resistance against the velocity, reversed at a dead centre; a force over the working
     # stroke only) makes R jump between two positions: the jump is drawn dotted, not as a stretch of the curve
     steps = np.abs(np.diff(closed))
@@ -244,10 +258,11 @@ def _polar_diagram(cf, fig, bottom: float, lang: str, size) -> None:
     f_max = complex(force[k_max])
     ax.annotate("", (f_max.real, f_max.imag), (0.0, 0.0), arrowprops={"arrowstyle": "-|>", "color": "#D55E00", "lw": 0.9, "shrinkA": 0, "shrinkB": 0})
     ax.plot([0.0, f_max.real], [0.0, f_max.imag], color="#D55E00", lw=0.0, gid="R-max")
-    at = _x_of(cf, [cf.cycle.positions[k_max]])[0]
+    at = _x_of(cf, [cf.cycle.positions[k_max]], [cf.cycle.phase[k_max]])[0]
     angle = math.degrees(math.atan2(f_max.imag, f_max.real))
+    where = f"t = {_number(at, lang, 4)} s" if is_swing(cf.cycle) else f"Δφ = {_number(at, lang, 0)}°"
     ax.text(0.01, 0.01, f"|{symbol}|" + r"$_{\mathrm{max}}$" + f" = {_number(abs(f_max), lang, 0)} N  "
-            f"({term('at_crank_angle', lang)} Δφ = {_number(at, lang, 0)}°, {term('direction', lang)} {_number(angle, lang, 1)}°)",
+            f"({term('at_crank_angle', lang)} {where}, {term('direction', lang)} {_number(angle, lang, 1)}°)",
             transform=ax.transAxes, fontsize=TEXT, color="#D55E00", ha="left", va="bottom", gid="R-max-text")
     if cf.marked is not None:
         points = np.asarray(cf.reaction(marked=True).force)

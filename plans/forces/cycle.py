@@ -27,7 +27,7 @@ import numpy as np
 from ..scene import FRAME, Crank, Scene
 from .analytic import AnalyticForces, Reaction, forces_from
 
-__all__ = ["CycleForces", "forces_over_cycle", "cycle_forces", "mean_over_cycle"]
+__all__ = ["CycleForces", "forces_over_cycle", "cycle_forces", "mean_over_cycle", "is_swing"]
 
 
 def mean_over_cycle(values, positions, crank: bool = True) -> float:
@@ -66,7 +66,8 @@ class CycleForces:
         At the numbered positions 0, 1, … (:attr:`marked_cycle`).
     marked_cycle : plans.motion.Cycle or None
     mean : float
-        M_b,mean [N·m] (or F_b,mean [N]); NaN when the mechanism does not assemble over the whole cycle.
+        M_b,mean [N·m] (or F_b,mean [N]); NaN when the mechanism does not assemble over the whole cycle,
+        or for a harmonic swing (no turn to average over).
     bearing : str or None
         The label of the frame's reaction on the crank (``"R_12"``); None for a linear driver.
     """
@@ -103,6 +104,11 @@ class CycleForces:
         return display_function("save_pages")([("", self.page(lang=lang, title=title))], path)
 
 
+def is_swing(cycle) -> bool:
+    """The cycle is a rocker input's harmonic swing there and back (:mod:`plans.motion`), not a turn or a stroke."""
+    return getattr(getattr(cycle, "law", None), "kind", "") == "harmonic"
+
+
 def _bearing(forces: AnalyticForces) -> str | None:
     driver = forces.scene.driver
     if not isinstance(driver, Crank):
@@ -117,7 +123,8 @@ def cycle_forces(forces: AnalyticForces, cycle, marked: AnalyticForces | None = 
     """:class:`CycleForces` from kinetostatics already solved over *cycle* (and at *marked_cycle*)."""
     crank = forces.balancing_kind == "moment"
     positions = cycle.positions
-    mean = mean_over_cycle(forces.balancing, positions, crank=crank)
+    # a rocker input's harmonic swing turns back: no turn to average over (the page says so)
+    mean = math.nan if is_swing(cycle) else mean_over_cycle(forces.balancing, positions, crank=crank)
     return CycleForces(forces, cycle, marked, marked_cycle, mean, _bearing(forces))
 
 
