@@ -47,7 +47,8 @@ def swept(tmp_path_factory):
 def group(svg: bytes, gid: str):
     root = ET.fromstring(svg)
     found = [g for g in root.iter(f"{SVG}g") if g.get("id") == gid]
-    assert len(found) == 1, gid
+    if len(found) != 1:
+        raise ValueError(f"{len(found)} groups {gid!r}")
     return found[0]
 
 
@@ -259,3 +260,17 @@ def test_the_hodograph_is_every_r12_and_breaks_only_where_the_resistance_reverse
     # F_r = 1500 N against v_B jumps by 3000 N where v_B changes sign (at the dead centres): there, and only there
     signs = [float(r["B.vx"]) > 0 for r in rows] + [float(rows[0]["B.vx"]) > 0]
     assert breaks == [k + 1 for k in range(STEPS) if signs[k] != signs[k + 1]]
+
+
+def test_a_swing_is_drawn_against_time_and_has_no_mean():
+    import plans
+    from plans.drawing.svg import render_svg
+
+    cycle = plans.forces.forces_over_cycle(plans.load(plans.example_path("rocker-limit-loads")), steps=40, positions=4)
+    assert math.isnan(cycle.mean)
+    svg = render_svg(cycle.page(lang="sl"))
+    words = all_text(svg)
+    assert "ni srednje vrednosti: pogonski člen niha tja in nazaj, ne vrti se" in words
+    assert "t [s]" in words and "Δφ [°]" not in words
+    with pytest.raises(ValueError):
+        group(svg, "M_b-mean")  # no mean line drawn
