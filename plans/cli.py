@@ -361,6 +361,8 @@ def _at(scene: Scene, text: str) -> Scene:
 #: A crank angle given with --at must lie within this many turns of 0 (beyond
 #: it, the angle's own round-off passes a thousandth of a degree).
 MAX_TURNS = 100
+#: Positions of the sweep the cycle diagrams of ``plans sweep --plot`` are drawn from (at least; the CSV keeps --steps).
+DRAWN_STEPS = 360
 #: A linear driver's position given with --at must lie within this many times
 #: the scene's size (the largest distance between two of its points).
 MAX_TRAVEL = 1000
@@ -686,10 +688,16 @@ def _sweep(args) -> int:
             abs(math.remainder(c.nearest - x, 2 * math.pi)) for x in (limits.lo, limits.hi)) <= step))
     for message in [str(x) for x in report.lost] + [str(x) for x in crossed]:
         _warn(message)
-    stated = [cycle.law.describe(args.lang, driver.link)]
+    stated = [cycle.law.describe(args.lang, driver.link, **({"phase": float(cycle.phase[0])} if cycle.law.kind == "harmonic" else {}))]
     found = strokes(scene, args.law, analytic.structure)
     if found is not None:
         stated += found.summary(args.lang)
+    drawn, drawn_cycle = analytic, cycle
+    if args.plot and cycle.law.kind in ("constant", "harmonic") and cycle.law.crank:
+        # the diagrams' curves from a denser sweep (a magnitude's minimum not cut off between samples), a swing's
+        # limit positions at their times (the input's ω = 0 there): the CSV keeps the steps asked for
+        drawn_cycle = driver_cycle(scene, max(args.steps, DRAWN_STEPS), law=args.law, start=args.start, limits=True)
+        drawn = drawn_cycle.solve(warn_condition=math.inf)
     marked = None
     if args.plot and args.positions:
         marked = driver_cycle(scene, args.positions, law=args.law, start=args.start)
@@ -701,13 +709,13 @@ def _sweep(args) -> int:
             if args.format == "svg":
                 from .drawing.diagrams import write_cycle_diagrams
 
-                paths = write_cycle_diagrams(analytic, args.plot, marked=marked, lang=args.lang, components=args.components, cycle=cycle, extremes=found)
+                paths = write_cycle_diagrams(drawn, args.plot, marked=marked, lang=args.lang, components=args.components, cycle=drawn_cycle, extremes=found)
             else:
                 from ._files import replace_all
                 from .drawing.diagrams import draw_cycle_diagrams
                 from .drawing.formats import render
 
-                figures = draw_cycle_diagrams(analytic, marked=marked, lang=args.lang, components=args.components, cycle=cycle, extremes=found)
+                figures = draw_cycle_diagrams(drawn, marked=marked, lang=args.lang, components=args.components, cycle=drawn_cycle, extremes=found)
                 paths = replace_all({Path(args.plot) / f"{name}.{args.format}": render(fig, args.format) for name, fig in figures})
             paths = list(paths) + _kinematic_diagrams(scene, args)
             if forces is not None:

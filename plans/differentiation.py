@@ -417,6 +417,12 @@ class KinematicDiagrams:
     positions : array (n,) or None
         The driver's position at each row: crank angle [rad] (running on in
         the sense of motion, not wrapped) or linear-driver position [m].
+    start_phase : float or None
+        A swing's phase ψ [rad] at position 0 (t = 0): the law's time origin
+        (:meth:`plans.motion.DriverLaw.describe`).
+    start : str or None
+        Position 0: ``"output"`` (an extreme position of the output link) or
+        ``"scene"`` (the scene's own), as :attr:`plans.motion.Cycle.start`.
     """
 
     motion: OutputMotion
@@ -437,6 +443,8 @@ class KinematicDiagrams:
     precision: float | None = None
     driver: str | None = None
     positions: np.ndarray | None = None
+    start_phase: float | None = None
+    start: str | None = None
 
     def errors(self) -> dict[str, np.ndarray]:
         """Errors against the analytic values, in % of the largest analytic |v| (|a|) over the positions.
@@ -695,7 +703,8 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, st
     result = kinematic_diagrams_of(motion, v_plans=plans_v, a_plans=plans_a, v_analytic=rates, a_analytic=accelerations,
                                    scales=scales_d, reference=reference)
     return replace(result, law=cycle.law, plan_scales=dict(scales), precision=precision, driver=scene.driver.link,
-                   positions=np.asarray(cycle.positions, dtype=float))
+                   positions=np.asarray(cycle.positions, dtype=float),
+                   start_phase=float(cycle.phase[0]) if cycle.law.kind == "harmonic" else None, start=cycle.start)
 
 
 def rescaled(diagrams: KinematicDiagrams, height: float) -> KinematicDiagrams:

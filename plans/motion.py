@@ -456,8 +456,11 @@ class DriverLaw:
             return self.sense * np.sqrt(np.maximum(square, 0.0))
         raise ValueError("a harmonic swing's rate depends on the stroke: use Cycle.rate")
 
-    def describe(self, lang: str = "en", link: str | None = None) -> str:
-        """The law in a few words of *lang*, with its numbers: ``"driver law: constant ω₂ = 10 rad/s (ε₂ = 0)"``."""
+    def describe(self, lang: str = "en", link: str | None = None, phase: float | None = None) -> str:
+        """The law in a few words of *lang*, with its numbers: ``"driver law: constant ω₂ = 10 rad/s (ε₂ = 0)"``.
+
+        *phase*: a swing's phase ψ [rad] at t = 0 of the diagrams it heads (:attr:`Cycle.phase` of their first
+        position): the law is then stated with that time origin, φ = φc − A·cos Ω(t + t₀), t₀ = ψ/Ω."""
         from ._text import subscript
         from .i18n import term
 
@@ -473,15 +476,22 @@ class DriverLaw:
 
         head = term("driver_law", lang)
         if self.kind == "constant":
-            body = f"{term('law_constant', lang)}: {r}{sub} = {num(self.rate0)} {unit_r}, {a}{sub} = 0"
+            body = f"{term('law_constant_angular' if self.crank else 'law_constant', lang)}: {r}{sub} = {num(self.rate0)} {unit_r}, {a}{sub} = 0"
         elif self.kind == "uniform":
             body = (f"{term('law_uniform', lang)}: {r}{sub}² = {r}₀² + 2{a}{sub}({x}{sub} − {x}₀), "
                     f"{r}₀ = {num(self.rate0)} {unit_r} {term('law_at', lang)} {x}₀ = {where(self.x0)}, {a}{sub} = {num(self.acceleration)} {unit_a}")
         else:
             lim = self.limits
-            body = (f"{term('law_harmonic', lang)} {where(lim.lo)} … {where(lim.hi)}: {x}{sub} = {x}c − A·cos Ωt, "
-                    f"Ω = {num(self.frequency)} rad/s, |{r}{sub}| = {num(abs(self.rate0))} {unit_r} {term('law_at', lang)} "
-                    f"{x}₀ = {where(self.x0)}, {r}{sub} = 0 {term('law_at_limits', lang)}")
+            centre, amplitude = 0.5 * (lim.lo + lim.hi), 0.5 * lim.swing
+            centre = 0.0 if abs(centre) < 1e-9 * max(amplitude, 1e-300) else centre  # (a swing about 0: its round-off)
+            if phase is None:
+                formula = f"{x}{sub} = {x}c − A·cos Ωt"
+            else:
+                formula = f"{x}{sub} = {x}c − A·cos Ω(t + t₀), t₀ = {num(float(phase) % _TURN / self.frequency)} s"
+            body = (f"{term('law_harmonic', lang)} {where(lim.lo)} … {where(lim.hi)}: {formula}, "
+                    f"{x}c = {where(centre)}, A = {where(amplitude)}, Ω = {num(self.frequency)} rad/s; "
+                    f"{term('scene_instant', lang)}: |{r}{sub}| = {num(abs(self.rate0))} {unit_r} {term('law_at', lang)} "
+                    f"{x}₀ = {where(self.x0)}; {r}{sub} = 0 {term('law_at_limits', lang)}")
         return f"{head}: {body}"
 
 
@@ -781,6 +791,7 @@ def driver_cycle(
     start: str = "output",
     closed: bool = False,
     structure=None,
+    limits: bool = False,
 ) -> Cycle:
     """*count* driver positions over one cycle under the driver's law (see the module's docstring).
 
@@ -800,6 +811,10 @@ def driver_cycle(
     closed : bool
         A crank's or a swing's list ends with position 0 one cycle later
         (count + 1 entries), so that a curve drawn through it closes.
+    limits : bool
+        A swing's list also holds its two limit positions, at the times the
+        law reaches them (a curve drawn through the positions then reaches
+        the input's ω = 0 there); the others stay equally spaced in time.
 
     Raises
     ------
@@ -836,6 +851,11 @@ def driver_cycle(
         psi0 = _scene_phase(the_law) if first is None else first.start_phase
         n = count + 1 if closed else count
         phases = psi0 + _TURN * np.arange(n) / count
+        if limits:  # the limit positions: ψ = kπ, within the cycle
+            ends = math.pi * np.arange(math.ceil(psi0 / math.pi), math.floor((psi0 + _TURN) / math.pi) + 1)
+            ends = ends[(ends > psi0) & (ends < psi0 + _TURN)]
+            ends = ends[np.min(np.abs(phases[:, None] - ends[None, :]), axis=0) > 1e-9]  # not one of the positions already
+            phases = np.sort(np.concatenate([phases, ends]))
         return _swing(scene, the_law, phases, "output" if first is not None else "scene")
     x_start = the_law.x0 if first is None else first.start_position
     xs = _path_positions(the_law, x_start, count, closed, _TURN)

@@ -100,7 +100,7 @@ def test_sweep_writes_one_row_per_position(capsys, tmp_path):
     target = tmp_path / "sweep.csv"
     status, out, _ = run(capsys, "sweep", "--example", "six-bar", "--steps", "36", "-o", str(target), "--start", "scene")
     assert status == 0
-    assert "driver law: constant speed: ω₂ = −10 rad/s, ε₂ = 0" in out  # the law stated beside the file written
+    assert "driver law: constant angular velocity: ω₂ = −10 rad/s, ε₂ = 0" in out  # the law stated beside the file written
     rows = list(csv.DictReader(io.StringIO(target.read_text())))
     assert len(rows) == 36
     assert float(rows[0]["driver_phi_deg"]) == pytest.approx(55.0)

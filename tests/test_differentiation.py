@@ -302,7 +302,7 @@ def test_handout_has_the_page_in_serbian(scene):
     # no English words: none of the block's English terms, and no Latin word beyond units, symbols and the user's title
     english = {w.lower() for key in ("kinematic_diagrams", "chord", "ray", "displacement", "diagrams_table", "diagram_error_note",
                                      "chords_curve", "analytic_curve", "method_of_tangents", "cycle_time", "abscissa_length", "velocity",
-                                     "acceleration", "output_slider", "positions", "driver_law", "law_constant")
+                                     "acceleration", "output_slider", "positions", "driver_law", "law_constant", "law_constant_angular")
                for w in re.findall(r"[A-Za-z]{4,}", TERMS[key]["en"])}
     latin = {w.lower() for w in re.findall(r"[A-Za-z]{4,}", page)} - {w.lower() for w in re.findall(r"[A-Za-z]+", scene.title)}
     latin -= {"plans"}  # the footer: the program's name and the user's title

@@ -100,8 +100,8 @@ def test_positions_start_at_the_output_extreme_with_the_laws_rates():
     assert omega == pytest.approx(list(np.sqrt(100 + 10 * (np.asarray(uniform.positions) - math.radians(60)))))
 
 
-@pytest.mark.parametrize("lang, words", [("en", "driver law: constant speed: ω₂ = 10 rad/s, ε₂ = 0"),
-                                         ("bg", "закон на движение на водещото звено: постоянна скорост: ω₂ = 10 rad/s, ε₂ = 0")])
+@pytest.mark.parametrize("lang, words", [("en", "driver law: constant angular velocity: ω₂ = 10 rad/s, ε₂ = 0"),
+                                         ("bg", "закон на движение на водещото звено: постоянна ъглова скорост: ω₂ = 10 rad/s, ε₂ = 0")])
 def test_diagrams_state_the_law_in_the_readers_language(lang, words):
     scene = plans.load(plans.example_path("four-bar"))
     cycle = driver_cycle(scene, 72)

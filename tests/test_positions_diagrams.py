@@ -48,7 +48,7 @@ def _curves(ax):
 
 
 def _notes(ax):
-    return " ".join(t.get_text() for t in ax.texts)
+    return " ".join(t.get_text().replace("\n", " ") for t in ax.texts)  # (a note is broken into the legend column's lines)
 
 
 def test_a_spike_near_a_dead_centre_does_not_set_the_axis(rocker_limit):
@@ -70,7 +70,7 @@ def test_a_spike_near_a_dead_centre_does_not_set_the_axis(rocker_limit):
     clipped = [line for line in ax.get_lines() if line.get_label() == "_clipped"]
     assert any(line.get_marker() == "^" and line.get_ydata()[0] == pytest.approx(high) for line in clipped)
     assert "beyond the axis near a dead centre" in _notes(ax)
-    assert f"ε₄: {biggest:.0f}" in _notes(ax).replace("\u2212", "-")
+    assert f"ε₄: {biggest:,.0f}".replace(",", "\u2009") in _notes(ax).replace("\u2212", "-")  # 35 000: grouped by a thin space
 
 
 def test_angles_are_continuous_and_the_csvs_up_to_whole_turns(rocker_limit, capsys, tmp_path):
@@ -102,7 +102,7 @@ def test_the_bands_read_in_black_and_white(rocker_limit):
     near = [p for p in ax.patches if p.get_hatch() and "\\" in p.get_hatch()]
     assert len(near) == 2  # entering and leaving the interval without assembly
     for patch in near:
-        assert patch.get_edgecolor()[:3] == (0.0, 0.0, 0.0)  # black hatch, not a pale fill
+        assert max(patch.get_edgecolor()[:3]) <= 0.45  # a dark hatch, not a pale fill (dark grey: the data stays visible)
         assert patch.get_facecolor()[3] == 0.0
         lo, hi = ax.get_xlim()
         assert patch.get_width() >= 0.008 * (hi - lo) - 1e-9  # wide enough to see (0.8 % of the axis)
@@ -132,7 +132,7 @@ def test_constants_of_the_scene_are_written_not_drawn():
     links = dict(draw_cycle_diagrams(six.cycle))["links"]
     omega_axis, epsilon_axis = links.axes[-2:]  # (the angles take one panel or more: ω and ε are the last two)
     assert "ω₂" not in _curves(omega_axis) and "ε₂" not in _curves(epsilon_axis) and not any(k.startswith("φ₂") for ax in links.axes[:-2] for k in _curves(ax))
-    assert "ω₂ = \u221210.0 rad/s  (the same at every position)" in _notes(omega_axis)  # ω = −10 rad/s in six-bar.toml
+    assert "ω₂ = \u221210 rad/s  (the same at every position)" in _notes(omega_axis)  # ω = −10 rad/s in six-bar.toml
     assert "φ₂ = 55.00° \u2212 Δφ" in _notes(links.axes[0])  # clockwise from 55°
     arm = _sweep("linear-arm", 40)
     figures = dict(draw_cycle_diagrams(arm.cycle))

@@ -23,12 +23,19 @@ Conventions, the same as :mod:`plans.positions` and ``plans sweep``:
   Each angle is drawn over its own swing: links whose swings are alike share a
   panel, each as its change from the middle of its swing (``φ₄ − 112,3°`` in
   the legend); a link that swings less than :data:`SHARE` of the panel's range
-  gets a panel of its own, drawn as it is (see :func:`_angle_panels`).
+  gets a panel of its own, drawn as it is (see :func:`_angle_panels`).  A
+  rocker input's swing: every angle (the input's too) drawn as it is, the
+  middle of its range within (−180°, 180°], without offsets.
+* A cycle that repeats (a crank's turn at constant ω, a swing there and
+  back) is closed: its first sample drawn again at 360° (or T).
+* Positions 0 and 0′ (the output's extreme positions) are marked and said
+  in the legend; a Coriolis panel that would be zero everywhere is left out,
+  a line under the title says so.
 * Every text of a diagram (ticks, legends, notes, position numbers) is
   :data:`TEXT` pt; the positions' lines are one thin width (:data:`MARK`).
 * A quantity constant by the scene (the crank's ω and ε, the angle of a
-  linear driver, |aᵏ| on a guide that does not turn) is not drawn as a flat
-  curve but written in the panel; curves equal at every position (links
+  linear driver) is not drawn as a flat curve but written beside the panel,
+  under its legend (never over the data; a single diagram: above it); curves equal at every position (links
   that turn together: ω₃ ≡ ω₄) are drawn once, with both names.
 * Near a dead centre the values run off to infinity: each panel's vertical
   range is that of the well-conditioned positions (not near a dead centre);
@@ -82,7 +89,7 @@ COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#0
 STYLES = ("-", "--", "-.", ":")
 MARKERS = ("o", "s", "^", "D", "v", "x", "+", "*")
 NO_ASSEMBLY = {"facecolor": "#d4d4d4", "edgecolor": "#6e6e6e", "hatch": "///"}
-NEAR = {"facecolor": "none", "edgecolor": "#000000", "hatch": "\\\\\\\\"}
+NEAR = {"facecolor": "none", "edgecolor": "#6a6a6a", "hatch": "\\\\"}
 #: The positions' lines: thin (ISO 128's 0.18 mm), so that a screen or pdftoppm up to 150 dpi draws every one a
 #: single pixel wide (0.7 pt fell one or two pixels wide by where it lay: the line at 90° read heavier).
 MARK = {"color": "#202020", "lw": 0.45, "ls": "--"}
@@ -99,11 +106,28 @@ def _number(value: float, lang: str, digits: int = 3) -> str:
         return "0" if value == 0 else "?"
     if 1e-3 <= abs(value) < 1e6:
         decimals = max(0, digits - 1 - int(math.floor(math.log10(abs(value)))))
-        text = f"{value:.{decimals}f}"
+        text = _grouped(f"{value:.{decimals}f}")
     else:
         mantissa, exponent = f"{value:.{digits - 1}e}".split("e")
         text = f"{mantissa}·10" + str(int(exponent)).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
     return localised(text, lang)
+
+
+def _stated(value: float, lang: str) -> str:
+    """A value of the scene (the crank's ω) as the driver's law states it: four significant digits, trailing zeros
+    dropped (``209,4``, ``−10``), so that the panel and the law under the title read the same."""
+    text = _number(value, lang, 4)
+    mark = "," if lang in ("sr", "ru", "bg", "sl") else "."
+    if mark in text and "·" not in text:
+        text = text.rstrip("0").rstrip(mark)
+    return text
+
+
+def _grouped(text: str) -> str:
+    """Digits of a whole part of five or more grouped by three with a thin space (ISO 80000-1): ``15 000``."""
+    import re
+
+    return re.sub(r"(?<![\d.,])(\d{5,})", lambda m: f"{int(m.group(1)):,}".replace(",", "\u2009"), text)
 
 
 class _Ticks(ScalarFormatter):
@@ -115,7 +139,7 @@ class _Ticks(ScalarFormatter):
         self.lang = lang
 
     def __call__(self, x, pos=None):
-        return localised(super().__call__(x, pos).replace(MINUS, "-"), self.lang)
+        return localised(_grouped(super().__call__(x, pos).replace(MINUS, "-")), self.lang)
 
     def get_offset(self):
         return localised(super().get_offset().replace(MINUS, "-"), self.lang)
@@ -329,16 +353,19 @@ def _page(title: str, subtitle: str, rows: int, size=A4) -> tuple[Figure, list]:
     return fig, list(np.atleast_1d(axes))
 
 
-def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: bool, has_clipped: bool) -> None:
+def _legend_note(fig, lang: str, has_invalid: bool, has_near: bool, has_marks: bool, has_clipped: bool, has_extremes: bool = False) -> None:
     from matplotlib.patches import Patch
 
     handles = []
     if has_invalid:
         handles.append(Patch(label=term("no_assembly", lang), **NO_ASSEMBLY))
     if has_near:
-        handles.append(Patch(label=f"{term('near_dead_centre', lang)} (|sin| < {localised(f'{NEAR_DEAD_CENTRE:g}', lang)})", **NEAR))
+        handles.append(Patch(label=f"{term('near_dead_centre', lang)}: |sin γ| < {localised(f'{NEAR_DEAD_CENTRE:g}', lang)},\n"
+                                   f"γ — {term('construction_lines_angle', lang)}", **NEAR))
     if has_marks:
         handles.append(Line2D([], [], marker="v", ms=3.5, label=term("sheet_positions", lang), **MARK))
+    if has_extremes:
+        handles.append(Line2D([], [], marker="v", ms=3.5, label=f"0, {OTHER_EXTREME} — {term('output_extremes', lang)}", **{**MARK, "ls": ":"}))
     if has_clipped:
         handles.append(Line2D([], [], color="#000000", ls="none", marker="^", ms=3.5, label=term("clipped", lang)))
     if handles:
@@ -368,7 +395,7 @@ def _panel(series, valid, lang: str, unit: str, extra_notes=()) -> _Panel:
         scale = max(float(np.max(np.abs(values))), 1e-300)
         if float(np.ptp(values)) <= 1e-9 * scale:
             value = float(values[0]) if abs(float(values[0])) > 1e-12 * scale else 0.0
-            notes.append(f"{name} = {_number(value, lang)}{(' ' + unit) if unit and value else ''}")
+            notes.append(f"{name} = {_stated(value, lang)}{(' ' + unit) if unit and value else ''}")
             continue
         for curve in curves:
             other = curve[1]
@@ -386,11 +413,14 @@ def _panel(series, valid, lang: str, unit: str, extra_notes=()) -> _Panel:
 SHARE = 0.5
 
 
-def _angle_panels(panel: _Panel, lang: str) -> list[_Panel]:
+def _angle_panels(panel: _Panel, lang: str, offsets: bool = True) -> list[_Panel]:
     """The angle panel split so that every angle's swing is readable: links whose swings are alike share a
     panel, each drawn as its change from the middle of its swing (named ``φ₄ − 112,3°``); a link that
     swings much less (or much more) than the others gets a panel of its own, drawn as it is.  The notes
-    (the crank's φ, constant angles) go into the first panel."""
+    (the crank's φ, constant angles) go into the first panel.
+
+    Without *offsets* (a swing: every angle, the driver's too, within a half turn of 0) each angle is drawn
+    as it is, and links share a panel where their angles themselves lie alike."""
     if len(panel.curves) < 2:
         return [panel]
 
@@ -399,7 +429,7 @@ def _angle_panels(panel: _Panel, lang: str) -> list[_Panel]:
 
     groups: list[list[tuple[str, np.ndarray, float]]] = []
     for name, y in sorted(panel.curves, key=lambda c: -swing(c[1])):
-        middle = round((float(np.nanmax(y)) + float(np.nanmin(y))) / 2, 1)
+        middle = round((float(np.nanmax(y)) + float(np.nanmin(y))) / 2, 1) if offsets else 0.0
         entry = (name, y, middle)
         for group in groups:
             trial = group + [entry]
@@ -420,7 +450,8 @@ def _angle_panels(panel: _Panel, lang: str) -> list[_Panel]:
             curves: list = []  # links that turn together swing alike: one curve with both names
             styles = []
             for name, y, m in group:
-                label, d = f"{name} {MINUS if m >= 0 else '+'} {localised(f'{abs(m):.1f}', lang)}°", y - m
+                label = f"{name} {MINUS if m >= 0 else '+'} {localised(f'{abs(m):.1f}', lang)}°" if offsets else name
+                d = y - m
                 same = [c for c in curves if np.array_equal(np.isfinite(c[1]), np.isfinite(d)) and np.allclose(c[1][np.isfinite(d)], d[np.isfinite(d)], atol=1e-9)]
                 if same:
                     same[0][0].append(label)
@@ -486,9 +517,13 @@ def _clip(ax, x, panel: _Panel, good, lang: str, unit: str) -> bool:
             extreme = float(np.nanmax(y[over])) if marker == "^" else float(np.nanmin(y[over]))
             extremes.setdefault(name, []).append(_number(extreme, lang))
     beyond = [f"{name}: {' / '.join(values)}" for name, values in extremes.items()]
-    if beyond:
-        ax.text(0.99, 0.97, f"{term('clipped', lang)}: " + ", ".join(beyond) + (f" {unit}" if unit else ""), transform=ax.transAxes,
-                ha="right", va="top", fontsize=TEXT, bbox={"facecolor": "white", "edgecolor": "none", "pad": 1.0}, zorder=5)
+    if beyond:  # in the legend's column beside the axes, under the panel's other notes: never over the data
+        note = _wrapped(f"{term('clipped', lang)}: " + ", ".join(beyond) + (f" {unit}" if unit else ""))
+        notes = _side_notes(ax)
+        if notes:
+            notes[0].set_text(notes[0].get_text() + "\n" + note)
+        else:
+            ax.text(1.015, 0.0, note, transform=ax.transAxes, ha="left", va="bottom", fontsize=TEXT, linespacing=1.25)
     return bool(beyond)
 
 
@@ -511,9 +546,45 @@ def _plot_panel(ax, x, panel: _Panel, ylabel: str, marks=()) -> None:
     ax.set_ylabel(ylabel, fontsize=TEXT)
     if panel.curves:
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=TEXT, frameon=False, borderaxespad=0.0, handlelength=3.0)
-    if panel.notes:
-        ax.text(0.01, 0.97, "\n".join(panel.notes), transform=ax.transAxes, ha="left", va="top", fontsize=TEXT,
-                bbox={"facecolor": "white", "edgecolor": "none", "pad": 1.0}, zorder=5)
+    if panel.notes:  # (a quantity constant by the scene) in the legend's column beside the axes, at its foot: never over the data
+        ax.text(1.015, 0.0, "\n".join(_wrapped(n) for n in panel.notes), transform=ax.transAxes, ha="left", va="bottom",
+                fontsize=TEXT, linespacing=1.25)
+
+
+#: Characters a line of a note in the legend's column holds (the column beside the axes is about 38 mm wide).
+NOTE_LINE = 22
+
+
+def _wrapped(note: str) -> str:
+    """A panel's note broken into the legend column's lines."""
+    import textwrap
+
+    return "\n".join(textwrap.wrap(note, NOTE_LINE, break_long_words=False))
+
+
+def _side_notes(ax) -> list:
+    """The panel's notes beside the axes (see :func:`_plot_panel`): texts placed in axes coordinates right of them."""
+    return [t for t in ax.texts if t.get_transform() == ax.transAxes and t.get_position()[0] > 1.0]
+
+
+def _notes_above(ax, raised: bool = False) -> None:
+    """A single diagram's notes (see :func:`_plot_panel`) moved from beside the axes to above them, as wide as the
+    axes: a diagram of a page (the lecture's) has no legend column to hold them; never over the data.
+    *raised*: above the positions' numbers too."""
+    import textwrap
+
+    from matplotlib.transforms import offset_copy
+
+    width_mm = ax.get_position().width * ax.figure.get_figwidth() * 25.4
+    for note in _side_notes(ax):
+        words = "; ".join(" ".join(part.split("\n")) for part in note.get_text().split("\n\n"))
+        lines = textwrap.wrap(" ".join(words.split("\n")), max(20, int(width_mm / 1.55)), break_long_words=False)
+        note.set_text("\n".join(lines))
+        note.set_position((0.0, 1.02))
+        if raised:
+            note.set_transform(offset_copy(ax.transAxes, ax.figure, y=TEXT * 1.4, units="points"))
+        note.set_horizontalalignment("left")
+        note.set_verticalalignment("bottom")
 
 
 def _name(symbol: str, sub: str) -> str:
@@ -565,9 +636,14 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     scene = analytic.scene
     start = float(analytic.driver[0])  # position 0's angle, for the note φ₂ = start + Δφ
     analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked, cycle)
+    others = [] if rolled else _other_extreme(cycle, extremes, x, start)
+    drawn = bool(marks)  # positions with sheets
+    if others and not marks:  # no positions drawn: position 0 (the output's first extreme) marked beside 0′
+        marks = [(0, float(x[0]))]
     if not rolled:  # 0′ dotted, unless it falls on a numbered position's line (within 1.2 % of the axis: it reads as that)
         span = limits[1] - limits[0]
-        marks = marks + [m for m in _other_extreme(cycle, extremes, x, start) if all(abs(m[1] - xm) > 0.012 * span for _, xm in marks)]
+        marks = marks + [m for m in others if all(abs(m[1] - xm) > 0.012 * span for _, xm in marks)]
+    period = None if rolled else _period(x, cycle, hasattr(scene.driver, "omega"))
     valid = np.asarray(analytic.valid, dtype=bool)
     invalid = ~valid
     near = _near_dead(analytic, ring=rolled)
@@ -577,25 +653,36 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     title = term("cycle_diagrams", lang)
     subtitle = user_text(scene.title_in(lang) if hasattr(scene, "title_in") else scene.title)
     if cycle is not None:
-        subtitle += "\n" + cycle.law.describe(lang, scene.driver.link)
+        subtitle += "\n" + cycle.law.describe(lang, scene.driver.link, **({"phase": float(cycle.phase[0])} if _swing(cycle) else {}))
     out = []
 
+    xs, invalid_s, near_s, good_s = (x, invalid, near, good) if period is None else (
+        np.append(x, x[0] + period), *(np.append(a, a[0]) for a in (invalid, near, good)))
+
     def page(name, words, quantities):
-        panels = []
+        panels, dropped = [], []
         for quantity, ylabel, unit in quantities:
             panel = _quantity_panel(analytic, quantity, valid, lang, unit, start=start, swing=_swing(cycle))
-            panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang) if quantity == "phi" else [panel])]
-        fig, axes = _page(title, subtitle + "\n" + words, len(panels), size)
+            if quantity == "coriolis" and not panel.curves:  # a slider on a guide that does not turn: no panel of zeros
+                dropped.append(term("coriolis_zero", lang))
+                continue
+            if period is not None:
+                panel = _closed(panel, quantity)
+            panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang, offsets=not _swing(cycle)) if quantity == "phi" else [panel])]
+        if dropped and name == "sliders":  # the page's words without the Coriolis acceleration it does not draw
+            words = term("sliders_motion_relative", lang)
+        fig, axes = _page(title, subtitle + "\n" + words + "".join("\n" + d for d in dropped), len(panels), size)
         clipped = False
         for ax, (panel, ylabel, unit) in zip(axes, panels):
-            _plot_panel(ax, x, panel, ylabel, marks)
-            _decorate(ax, x, invalid, near, marks, lang, numbers=ax is axes[0], limits=limits)
-            clipped |= _clip(ax, x, panel, good, lang, unit)
+            _plot_panel(ax, xs, panel, ylabel, marks)
+            _decorate(ax, xs, invalid_s, near_s, marks, lang, numbers=ax is axes[0], limits=limits)
+            clipped |= _clip(ax, xs, panel, good_s, lang, unit)
         axes[-1].set_xlabel(f"{xlabel}  —  {xwords}", fontsize=TEXT + 1)
         if ticks is not None:
             axes[-1].set_xticks(ticks)
             axes[-1].set_xlim(*limits)
-        _legend_note(fig, lang, bool(invalid.any()), bool((near & ~invalid).any()), bool(marks), clipped)
+        extremes_marked = any(k == OTHER_EXTREME for k, _ in marks)
+        _legend_note(fig, lang, bool(invalid.any()), bool((near & ~invalid).any()), drawn, clipped, extremes_marked)
         out.append((name, fig))
 
     with drawing_rc():
@@ -614,7 +701,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         page("points", term("points_motion", lang), panels)
 
         if any(p.name in analytic.sliders for p in scene.prismatics):
-            panels = [("s", f"s [mm]\n({term('travel', lang)})", "mm"), ("v_rel", f"vʳ [m/s]\n({term('relative_velocity_short', lang)})", "m/s")]
+            panels = [("s", f"s [mm]\n({term('guide_position', lang)})", "mm"), ("v_rel", f"vʳ [m/s]\n({term('relative_velocity_short', lang)})", "m/s")]
             if scene.accelerations:
                 panels += [
                     ("a_rel", f"aʳ [m/s²]\n({term('relative_acceleration_short', lang)})", "m/s²"),
@@ -624,9 +711,43 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     return out
 
 
+def _period(x: np.ndarray, cycle, crank: bool) -> float | None:
+    """The period of the horizontal axis when the sweep is one whole cycle that repeats, its last sample one
+    step before the first one again (a crank's turn at constant ω: 360°; a swing there and back: T); else None.
+    The diagrams are then closed: the first sample drawn again one period on."""
+    if len(x) < 3:
+        return None
+    step = float(x[1] - x[0])
+    if _swing(cycle):
+        period = float(cycle.period)
+    elif crank and (cycle is None or cycle.law.kind == "constant"):
+        period = 360.0
+    else:
+        return None
+    steps = np.diff(x)
+    if _swing(cycle):  # (its limit positions may lie between the equal steps): the last step short of T at most one step
+        rest = float(x[0]) + period - float(x[-1])
+        return period if 1e-9 * period < rest <= float(steps.max()) * (1 + 1e-6) else None
+    if not np.allclose(steps, step, rtol=1e-6, atol=1e-9) or abs(float(x[-1]) + step - float(x[0]) - period) > 1e-6 * period:
+        return None
+    return period
 
-def _unwrap_nan(phi, valid) -> np.ndarray:
-    """φ in degrees, unwrapped continuously over every valid position (across gaps too), starting in [0°, 360°).
+
+def _closed(panel: _Panel, quantity: str) -> _Panel:
+    """The panel with each curve's first value appended, one period on (an angle: whole turns added where
+    the link turned them over the cycle)."""
+    curves = []
+    for name, y in panel.curves:
+        first = float(y[0])
+        if quantity == "phi" and np.isfinite(first) and np.isfinite(y[-1]):
+            first += 360.0 * round((float(y[-1]) - first) / 360.0)
+        curves.append((name, np.append(y, first)))
+    return _Panel(curves, panel.notes, panel.styles)
+
+
+def _unwrap_nan(phi, valid, centred: bool = False) -> np.ndarray:
+    """φ in degrees, unwrapped continuously over every valid position (across gaps too), starting in [0°, 360°)
+    (*centred*, a swing's angles: the middle of its range within (−180°, 180°]).
 
     It differs from the angle in [0, 360) of the CSV by whole turns only.
     """
@@ -635,7 +756,11 @@ def _unwrap_nan(phi, valid) -> np.ndarray:
     ok = valid & np.isfinite(phi)
     if ok.any():
         turned = np.degrees(np.unwrap(phi[ok]))
-        out[ok] = turned - 360.0 * math.floor(turned[0] / 360.0)
+        if centred:
+            middle = (float(turned.max()) + float(turned.min())) / 2
+            out[ok] = turned - 360.0 * math.ceil((middle - 180.0) / 360.0)
+        else:
+            out[ok] = turned - 360.0 * math.floor(turned[0] / 360.0)
     return out
 
 
@@ -675,7 +800,7 @@ def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start:
     input's swing drawn against time, its own angle a curve like the others."""
     scene = analytic.scene
     extra = []
-    series = _series(analytic, quantity, valid)
+    series = _series(analytic, quantity, valid, swing)
     if quantity == "phi" and hasattr(scene.driver, "omega") and not swing:
         link = scene.driver.link
         start = _number(math.degrees(float(analytic.driver[0] if start is None else start)) % 360.0, lang, 4)
@@ -685,13 +810,13 @@ def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start:
     return _panel(series, valid, lang, unit, extra)
 
 
-def _series(analytic, quantity: str, valid) -> list[tuple[str, np.ndarray]]:
+def _series(analytic, quantity: str, valid, swing: bool = False) -> list[tuple[str, np.ndarray]]:
     scene = analytic.scene
     if quantity in ("phi", "omega", "epsilon"):
         links = [n for n in scene.links if not scene.bodies[n].block]
         symbol = {"phi": "φ", "omega": "ω", "epsilon": "ε"}[quantity]
         if quantity == "phi":
-            return [(_name(symbol, n), _unwrap_nan(analytic.links[n].phi, valid)) for n in links]
+            return [(_name(symbol, n), _unwrap_nan(analytic.links[n].phi, valid, centred=swing)) for n in links]
         return [(_name(symbol, n), _finite(getattr(analytic.links[n], quantity), valid)) for n in links]
     points = [p for p in scene.report if p in analytic.points]
     if quantity in ("v", "a"):
@@ -729,11 +854,12 @@ def plot_cycle(analytic, quantity: str = "omega", ax=None, *, marked=None, lang:
             from matplotlib.backends.backend_svg import FigureCanvasSVG
 
             FigureCanvasSVG(fig)
-            ax = fig.add_axes([0.12, 0.16, 0.72, 0.76])
+            ax = fig.add_axes([0.12, 0.16, 0.72, 0.68])  # (room above for the positions' numbers and a note)
         panel = _quantity_panel(analytic, quantity, valid, lang, _UNITS[quantity], start=start, swing=_swing(cycle))
         _plot_panel(ax, x, panel, QUANTITIES[quantity], marks)
         _decorate(ax, x, ~valid, near, marks, lang, numbers=True, limits=limits)
         _clip(ax, x, panel, _well_conditioned(analytic), lang, _UNITS[quantity])
+        _notes_above(ax, raised=bool(marks))
         if ticks is not None:
             ax.set_xticks(ticks)
             ax.set_xlim(*limits)

@@ -60,7 +60,7 @@ GRID = "#b0b0b0"
 #: How far [share of its constructed range] the analytic curve may widen a diagram; beyond, it is cut off.
 REFERENCE_ROOM = 0.25
 #: The shortest [mm] the diagrams are drawn to leave the table room under them on the same page.
-SHORTEST = 32.0
+SHORTEST = 24.0
 
 
 def _num(value: float, lang: str, digits: int = 4) -> str:
@@ -108,8 +108,17 @@ def diagram_words(d: KinematicDiagrams, lang: str = "en") -> dict[str, str]:
 
 def _ticks(lo: float, hi: float, drawn: float) -> np.ndarray:
     """Round values between *lo* and *hi* (physical units) for an ordinate *drawn* mm tall, at least 7 mm apart."""
-    values = MaxNLocator(nbins=max(1, min(6, int(drawn / 7.0))), steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi)
-    return values[(values >= lo - 1e-12 * abs(hi - lo)) & (values <= hi + 1e-12 * abs(hi - lo))]
+    bins = max(1, min(6, int(drawn / 7.0)))
+    best = None
+    for more in range(0, 7):  # finer, until a range on both sides of 0 has a tick on each (as long as they stay 4 mm apart)
+        values = MaxNLocator(nbins=bins + more, steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi)
+        values = values[(values >= lo - 1e-12 * abs(hi - lo)) & (values <= hi + 1e-12 * abs(hi - lo))]
+        if best is not None and len(values) > 1 and float(np.min(np.diff(values))) / (hi - lo) * drawn < 4.0:
+            break
+        best = values
+        if (hi <= 0 or (values > 0).any()) and (lo >= 0 or (values < 0).any()):
+            break
+    return best
 
 
 def _range(*arrays, pad: float = 2.0) -> tuple[float, float]:
@@ -321,7 +330,7 @@ def diagrams_table(d: KinematicDiagrams, lang: str = "en") -> list[list[str]]:
     words = diagram_words(d, lang)
     e = d.errors()
     diagram, plans, analytic = term("from_diagram", lang), term("from_plans", lang), term("from_analytic", lang)
-    head = ["№", "t [s]", f"{words['s']} [{words['s_unit']}]"]
+    head = [term("position_no", lang), "t [s]", f"{words['s']} [{words['s_unit']}]"]
     for key in ("v", "a"):
         symbol = words[key]
         head += [f"{symbol} {diagram}", f"{symbol} {plans}", f"{symbol} {analytic}", f"δ {diagram}", f"δ {plans}"]
@@ -360,7 +369,7 @@ def comparison_block(d: KinematicDiagrams, lang: str = "en", *, size: float = TE
     diagram, plans, analytic = term("from_diagram", lang), term("from_plans", lang), term("from_analytic", lang)
     methods = [diagram, plans, analytic, f"δ {diagram}", f"δ {plans}"]
     second = ["", "[s]", f"[{words['s_unit']}]"] + methods + methods
-    first = ["№", "t", words["s"]]
+    first = [term("position_no", lang), "t", words["s"]]
     groups = [(3, f"{words['v']} [{words['v_unit']}]"), (8, f"{words['a']} [{words['a_unit']}]")]
     widths = [max([measure(r[c], size)[0] for r in body] + [measure(second[c], size, "bold")[0]] +
                   ([measure(first[c], size, "bold")[0]] if c < 3 else [])) + 2 * pad for c in range(columns)]
@@ -424,7 +433,7 @@ def _notes(d: KinematicDiagrams, lang: str) -> list[str]:
         f"{v} {term('from_plans', lang)} {pct(largest(e['v_plans']))},  {a} {term('from_plans', lang)} {pct(largest(e['a_plans']))}.",
         f"{term('method_of_tangents', lang)}:  max |δ| {v} {pct(largest(e['v_tangents']))},  {a} {pct(largest(e['a_tangents']))}.",
         term("chords_order", lang) + ".",
-    ]
+    ] + ([term("kd_extreme_reading", lang).format(v=v) + "."] if d.start == "output" else [])
 
 
 def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
@@ -434,12 +443,35 @@ def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
     count = len(set(d.motion.numbers))  # an open turn ends at position 0 again
     duration = d.motion.duration
     width = A4[0] - 2 * PAGE_MARGIN
+    law = ""
+    if d.law is not None:
+        law = f";  {d.law.describe(lang, d.driver, **({'phase': d.start_phase} if d.start_phase is not None else {}))}"
+    steps = even = ""
+    if d.law is not None and d.law.kind in ("constant", "harmonic") and d.motion.period is not None:
+        steps = f",  Δt = T/{d.motion.intervals} = {_num(duration / d.motion.intervals, lang, 4)} s"
+        even = f" ({term('equal_time_steps', lang)} Δt)"
     return [
         "§" + f"{term('kinematic_diagrams', lang)}: {term('graphical_differentiation', lang)}",
-        *_wrap(f"{words['output']};  {term('positions', lang)}: {count}" + (f";  {d.law.describe(lang, d.driver)}" if d.law is not None else ""), width),
-        f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}),  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
-        f"$\\mu_{{t}}$ = T/L = {_short(sc.mu_t, lang)} s/mm",
+        *_wrap(f"{words['output']};  {term('positions', lang)}: {count}{even}" + law, width),
+        *_wrap(f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}){steps},  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
+               f"$\\mu_{{t}}$ = T/L = {_short(sc.mu_t, lang)} s/mm", width),
+        *_wrap(origin_line(d, lang), width),
     ]
+
+
+def origin_line(d: KinematicDiagrams, lang: str = "en") -> str:
+    """What s (or ψ) is: its origin, position 0 (which one), and its positive sense."""
+    words = diagram_words(d, lang)
+    name = d.motion.name
+    if d.motion.kind == "slider":
+        definition = f"s = $s_{{\\mathrm{{{name}}}}}$ − $s_{{\\mathrm{{{name}}}}}$(0)"
+        sense = term("positive_along_guide", lang)
+    else:
+        sub = subscript(name)
+        definition = f"{words['s']} = φ{sub} − φ{sub}(0)"
+        sense = term("positive_ccw", lang)
+    origin = term("from_position_0_extreme" if d.start == "output" else "from_position_0", lang)
+    return f"{definition}: {origin}, {sense}"
 
 
 def _wrap(text: str, width: float, size: float = 8.0) -> list[str]:
@@ -469,7 +501,7 @@ def draw_kinematic_pages(d: KinematicDiagrams, *, title: str, lang: str = "en", 
     room = height - header_height(lines) - PAGE_MARGIN - 8.0
     # the diagrams as tall as their scales allow, down to SHORTEST mm, so that the table fits under them
     together = False
-    for tallest in (ORDINATE_MAX, 36.0, 34.0, SHORTEST):
+    for tallest in (ORDINATE_MAX, 36.0, 34.0, 32.0, 30.0, 28.0, 26.0, SHORTEST):
         block = diagrams_block(rescaled(d, tallest), lang)
         if block.height + GAP + table.height + notes_h <= room:
             together = True

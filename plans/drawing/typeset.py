@@ -46,6 +46,9 @@ MIN_SCRIPT_PT = 6.0
 MATH_LINE = 1.22
 SUP_RISE = 0.40  # × the size of the text carrying the script
 SUB_DROP = 0.20
+#: Space [× the base's size] between a base and its subscript for letters whose foot reaches out to the right
+#: (DejaVu's μ: a subscript set at its advance touches the foot, and μₜ reads as "ɥ").
+SUB_KERN = {"μ": 0.10, "µ": 0.10}
 
 _SYMBOLS = {
     "cdot": "·", "times": "×", "Rightarrow": "⇒", "rightarrow": "→", "to": "→", "pm": "±", "mp": "∓",
@@ -242,11 +245,23 @@ class _Layout:
                     self.nodes(sup, rise + SUP_RISE * size * MM_PER_PT, small, False)
                     ends.append(self.x)
                 if sub:
-                    self.x = start
+                    self.x = start + SUB_KERN.get(_last_char(base), 0.0) * size * MM_PER_PT
                     self.nodes(sub, rise - SUB_DROP * size * MM_PER_PT, small, False)
                     ends.append(self.x)
                 self.x = max(ends, default=start)
                 self.last = "atom"
+
+
+def _last_char(nodes) -> str | None:
+    """The last character of a base (through groups), or None."""
+    while nodes:
+        node = nodes[-1]
+        if node[0] == "char":
+            return node[1]
+        if node[0] != "group":
+            return None
+        nodes = node[1]
+    return None
 
 
 _DOLLAR = re.compile(r"(?<!\\)\$")
