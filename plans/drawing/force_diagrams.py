@@ -113,7 +113,7 @@ def _draw(cf, lang: str, title: str, size) -> Figure:
     title_lines = textwrap.wrap(user_text(title), 62) or [""]
     fig.text(11 / size[0], 1 - 11 / size[1], "\n".join(title_lines), fontsize=13.5, weight="bold", ha="left", va="top", linespacing=1.15)
     below = 6.5 * (len(title_lines) - 1)  # [mm] each further line of the title
-    law = cf.cycle.law.describe(lang, scene.driver.link) if hasattr(cf.cycle.law, "describe") else ""
+    law = cf.cycle.law.describe(lang, scene.driver.link, **({"phase": float(cf.cycle.phase[0])} if is_swing(cf.cycle) else {}))
     what = term("forces_cycle_title", lang) if cf.bearing is not None else term("driving_force", lang)
     subtitle = user_text(what) + (f"; {user_text(law)}" if law else "")
     fig.text(11 / size[0], 1 - (19 + below) / size[1], "\n".join(textwrap.wrap(subtitle, 100)), fontsize=9, ha="left", va="top", linespacing=1.3)
