@@ -180,8 +180,8 @@ def _moment_diagram(cf, fig, top: float, lang: str, size) -> float:
         ax.text(x0 + span, cf.mean, f"{term('mean_value', lang)} {bar} = {_number(cf.mean, lang, 2)} {unit}", fontsize=TEXT, color="#D55E00",
                 ha="right", va="bottom", gid="M_b-mean-text", bbox={"facecolor": "white", "edgecolor": "none", "pad": 0.5, "alpha": 0.85})
     else:
-        ax.text(0.5, 0.02, term("no_mean_swing" if swing else "no_mean_moment", lang), transform=ax.transAxes, fontsize=TEXT, ha="center",
-                va="bottom")
+        fig.text(LEFT / size[0], (bottom - 10.5) / size[1], term("no_mean_swing" if swing else "no_mean_moment", lang), fontsize=TEXT,
+                 ha="left", va="top", gid="M_b-no-mean")
     if swing:
         ax.set_xlabel("t [s]", fontsize=TEXT)
     elif cf.crank:
@@ -280,7 +280,7 @@ def _polar_diagram(cf, fig, bottom: float, lang: str, size) -> None:
              gid="R-scale")
     import textwrap
 
-    fig.text(LEFT / size[0], (bottom - 4.0) / size[1], "\n".join(textwrap.wrap(term("polar_note", lang), 110)), fontsize=TEXT, ha="left", va="top")
+    fig.text(LEFT / size[0], (bottom - 4.0) / size[1], "\n".join(textwrap.wrap(term("polar_note", lang), 95)), fontsize=TEXT, ha="left", va="top")
     ax.plans_scale = mu
 
 
