@@ -116,7 +116,9 @@ def _draw(cf, lang: str, title: str, size) -> Figure:
     law = cf.cycle.law.describe(lang, scene.driver.link, **({"phase": float(cf.cycle.phase[0])} if is_swing(cf.cycle) else {}))
     what = term("forces_cycle_title", lang) if cf.bearing is not None else term("driving_force", lang)
     subtitle = user_text(what) + (f"; {user_text(law)}" if law else "")
-    fig.text(11 / size[0], 1 - (19 + below) / size[1], "\n".join(textwrap.wrap(subtitle, 100)), fontsize=9, ha="left", va="top", linespacing=1.3)
+    sub_lines = textwrap.wrap(subtitle, 100)
+    fig.text(11 / size[0], 1 - (19 + below) / size[1], "\n".join(sub_lines), fontsize=9, ha="left", va="top", linespacing=1.3)
+    below += 4.2 * max(0, len(sub_lines) - 3)  # a fourth line of the subtitle and on push the diagrams down
     top = size[1] - 47.0 - below  # the upper edge of the first box [mm from the bottom]
     height = _moment_diagram(cf, fig, top, lang, size)
     if cf.bearing is not None:
