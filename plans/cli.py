@@ -204,7 +204,9 @@ def build_parser() -> argparse.ArgumentParser:
         "--plot",
         metavar="DIR",
         help="also draw the cycle diagrams (links.svg, points.svg, sliders.svg) and the output link's kinematic diagrams "
-        "by graphical differentiation (kinematic.svg, at --positions positions, 12 by default) into DIR "
+        "by graphical differentiation (kinematic.svg, at --positions positions, 12 by default) into DIR; "
+        "a scene with masses or loads also the driving moment M_b(φ) (F_b(s)) and the polar diagram of the crank "
+        "bearing's reaction on one page (forces.svg) "
         "(without -o the CSV still goes to standard output, the diagrams' names to standard error)",
     )
     sweep.add_argument("--components", action="store_true", help="with --plot: x and y components of v and a too")
@@ -716,6 +718,8 @@ def _sweep(args) -> int:
                 figures = draw_cycle_diagrams(drawn, marked=marked, lang=args.lang, components=args.components, cycle=drawn_cycle, extremes=found)
                 paths = replace_all({Path(args.plot) / f"{name}.{args.format}": render(fig, args.format) for name, fig in figures})
             paths = list(paths) + _kinematic_diagrams(scene, args)
+            if forces is not None:
+                paths.append(_force_diagrams(scene, args, forces, cycle))
     if not args.output:
         sys.stdout.write(text)
     for line in stated:  # the law and the strokes, once everything is written: on stdout beside the files, on stderr beside the CSV
@@ -737,6 +741,24 @@ def _kinematic_diagrams(scene: Scene, args) -> list:
         _warn(f"no kinematic diagrams of the output link: {exc}")
         return []
     return diagrams.save(Path(args.plot) / f"kinematic.{args.format}", lang=args.lang, title=scene.title)
+
+
+def _force_diagrams(scene: Scene, args, forces, cycle) -> Path:
+    """``plans sweep --plot DIR`` of a scene with masses or loads: M_b(φ) (a linear driver: F_b(s)) and the polar
+    diagram of the crank bearing's reaction on one page, DIR/forces.FORMAT, numbered at ``--positions`` positions
+    (12 by default) from position 0 of the sweep."""
+    from ._files import replace_all
+    from .drawing.force_diagrams import draw_force_diagrams
+    from .drawing.formats import render
+    from .forces.analytic import forces_from
+    from .forces.cycle import cycle_forces
+    from .motion import driver_cycle
+
+    marked_cycle = driver_cycle(scene, args.positions or 12, law=args.law, start=args.start)
+    marked = forces_from(marked_cycle.solve(warn_condition=math.inf))
+    page = draw_force_diagrams(cycle_forces(forces, cycle, marked, marked_cycle), lang=args.lang)
+    path = Path(args.plot) / f"forces.{args.format}"
+    return replace_all({path: render(page, args.format)})[0]
 
 
 def _nowhere(scene: Scene, positions) -> PlansError:

@@ -115,6 +115,13 @@ def kinematic_pages(diagrams, *, lang: str = "en", title: str = "") -> list:
     return draw_kinematic_pages(diagrams, title=title, lang=lang)
 
 
+def force_cycle_page(cycle_forces, *, lang: str = "en", title: str = ""):
+    """The page of :class:`plans.forces.cycle.CycleForces` (:func:`plans.drawing.force_diagrams.draw_force_diagrams`)."""
+    from .drawing.force_diagrams import draw_force_diagrams
+
+    return draw_force_diagrams(cycle_forces, lang=lang, title=title)
+
+
 def save_pages(pages, path) -> list:
     """Named figures written to *path* by its suffix (:func:`plans.drawing.formats.save_pages`)."""
     from pathlib import Path
@@ -131,4 +138,4 @@ def svg_of_figure(fig) -> str:
     return render_svg(fig).decode("utf-8")
 
 
-DISPLAY.update(plot=plot, save=save, sheet=sheet, kinematic_pages=kinematic_pages, save_pages=save_pages, svg_of_figure=svg_of_figure, animate=animate, animate_run=animate_run)
+DISPLAY.update(plot=plot, save=save, sheet=sheet, kinematic_pages=kinematic_pages, force_cycle_page=force_cycle_page, save_pages=save_pages, svg_of_figure=svg_of_figure, animate=animate, animate_run=animate_run)

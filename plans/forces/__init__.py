@@ -6,6 +6,9 @@
   turned by 90°, the loads (their inertia loads from the graphical plans) at
   the images of their points, M_b from the moments about the pole;
 * the force plans of each group from the graphical plans (a module of their own);
+* over the cycle, :mod:`plans.forces.cycle` — M_b(φ), its mean and the crank
+  bearing's reaction at every position (``forces_over_cycle``; drawn by
+  :mod:`plans.drawing.force_diagrams`);
 
 sharing the scene model and :mod:`plans.forces.loads` (what loads act where,
 from each method's own kinematics) and nothing else.  The power balance
@@ -24,9 +27,11 @@ import sys
 import types
 
 from .analytic import AnalyticForces, Reaction, forces_from, solve_forces
+from .cycle import CycleForces, forces_over_cycle, mean_over_cycle
 from .loads import AppliedLoad, applied_loads
 
-__all__ = ["solve_forces", "forces_from", "AnalyticForces", "Reaction", "AppliedLoad", "applied_loads"]
+__all__ = ["solve_forces", "forces_from", "AnalyticForces", "Reaction", "AppliedLoad", "applied_loads", "CycleForces", "forces_over_cycle",
+           "mean_over_cycle"]
 
 
 class _CallableModule(types.ModuleType):
