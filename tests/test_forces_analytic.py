@@ -277,3 +277,18 @@ def test_the_frame_goes_by_the_scenes_number_in_every_reaction_label():
     assert abs(analytic.reactions["R_03"].force[0]) == pytest.approx(2077.57014, abs=1e-5)  # §11's guide on slider
     graphical = construct(scene)
     assert set(construct_force_plans(graphical).reactions) >= {"R_01", "R_12", "R_23", "R_03"}
+
+
+def test_a_working_stroke_load_acts_on_the_slower_stroke_of_the_output():
+    # the shaper's cutting force acts on the working stroke, the slow one, which a cycle's positions start
+    # (0 → 0′, plans.motion), and not on the quick return; 48 positions: the return is the last ~120° of the turn
+    from plans.forces.analytic import forces_from
+    from plans.motion import driver_cycle
+
+    scene = load(example_path("quick-return-loads"))
+    cycle = driver_cycle(scene, 48)
+    result = forces_from(cycle.solve())
+    cutting = next(load for load in result.loads if load.name == "F_c")
+    on = np.abs(np.asarray(cutting.force)) > 0
+    assert on[1:30].all(), "the cutting force acts over the working stroke"
+    assert not on[-12:].any(), "no cutting force on the return stroke"

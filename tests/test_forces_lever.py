@@ -97,11 +97,11 @@ def test_a_resistance_off_its_working_stroke_is_not_on_the_lever():
     ram = plans.solve(scene).points["E"].v[0].real
     lever = joukowski_lever(construct(scene))
     names = [f.name for f in lever.forces]
-    assert ("F_c" in names) == (ram > 0)  # the cutting force acts while the ram moves towards +x
+    assert ("F_c" in names) == (ram < 0)  # the cutting force acts while the ram moves towards −x (the slow working stroke)
     turned = scene.at(scene.driver.phi + math.pi)
     ram_turned = plans.solve(turned).points["E"].v[0].real
     assert (ram > 0) != (ram_turned > 0)
-    assert ("F_c" in [f.name for f in joukowski_lever(construct(turned)).forces]) == (ram_turned > 0)
+    assert ("F_c" in [f.name for f in joukowski_lever(construct(turned)).forces]) == (ram_turned < 0)
 
 
 ATREST = example_path("slider-crank-loads").read_text().replace('omega = "150 rad/s"', 'omega = 0')
