@@ -59,6 +59,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import rounding
 from .errors import PlansError
 
 __all__ = [
@@ -105,14 +106,8 @@ class DiagramsError(PlansError, ValueError):
 
 
 def round_up(need: float, mantissas=TIME_MANTISSAS) -> float:
-    """The smallest m·10ⁿ (m in *mantissas*) not below *need* (as the nearest float to that decimal)."""
-    n = math.floor(math.log10(need)) - 1
-    while True:
-        for m in mantissas:
-            value = float(f"{m}e{n}")
-            if value >= need * (1 - 1e-12):
-                return value
-        n += 1
+    """The smallest m·10ⁿ (m in *mantissas*, the textbook's by default) not below *need* (:func:`plans.rounding.round_up`)."""
+    return rounding.round_up(need, mantissas)
 
 
 def _extended(t: np.ndarray, y: np.ndarray, period: float | None) -> tuple[np.ndarray, np.ndarray]:

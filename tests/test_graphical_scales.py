@@ -110,3 +110,11 @@ def test_given_scales_override_the_scene_which_overrides_auto():
     assert solution.scales["k_v"] == 0.05
     assert solution.scales["k_l"] == 0.004
     assert mantissa(solution.scales["k_a"]) in ROUND_MANTISSAS
+
+
+@pytest.mark.parametrize("need, up, down", [(0.0123, 0.02, 0.01), (0.5, 0.5, 0.5), (7.0, 10.0, 5.0), (2.2e-7, 2.5e-7, 2e-7)])
+def test_the_textbooks_round_values_by_hand(need, up, down):
+    # 1, 2, 2.5, 5 × 10ⁿ, worked by hand; the pages' finer set is the same rule with more mantissas
+    from plans.rounding import round_down, round_up
+
+    assert round_up(need) == up and round_down(need) == down

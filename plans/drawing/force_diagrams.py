@@ -29,6 +29,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from .._text import user_text
+from ..rounding import round_up
 from ..i18n import term
 from .layout import A4
 from ..forces.cycle import is_swing
@@ -47,14 +48,10 @@ ROUND = (1.0, 2.0, 2.5, 5.0)
 
 
 def round_scale(need: float) -> float:
-    """The smallest round scale (1, 2, 2.5 or 5 × 10ᵏ) not below *need* (units per mm)."""
+    """The smallest round scale (1, 2, 2.5 or 5 × 10ᵏ) not below *need* (units per mm); 1 when there is nothing to draw."""
     if not need > 0 or not math.isfinite(need):
         return 1.0
-    k = math.floor(math.log10(need))
-    for r in ROUND + (10.0,):
-        if r * 10.0**k >= need * (1 - 1e-12):
-            return r * 10.0**k
-    return 10.0 ** (k + 1)
+    return round_up(need, ROUND)
 
 
 def _number(value: float, lang: str, decimals: int = 1) -> str:

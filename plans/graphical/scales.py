@@ -27,6 +27,8 @@ from __future__ import annotations
 import math
 import sys
 
+from .. import rounding
+
 __all__ = [
     "MANTISSAS",
     "PAGE_MANTISSAS",
@@ -59,25 +61,13 @@ _UNITS = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}
 
 
 def round_up(need: float, mantissas=PAGE_MANTISSAS) -> float:
-    """The smallest m·10ⁿ (m in *mantissas*) not below *need* (as the nearest float to that decimal)."""
-    n = math.floor(math.log10(need)) - 1
-    while True:
-        for m in mantissas:
-            value = float(f"{m}e{n}")
-            if value >= need * (1 - 1e-12):
-                return value
-        n += 1
+    """The smallest m·10ⁿ (m in *mantissas*, the pages' by default) not below *need* (:func:`plans.rounding.round_up`)."""
+    return rounding.round_up(need, mantissas)
 
 
 def round_down(below: float, mantissas=PAGE_MANTISSAS) -> float:
-    """The largest m·10ⁿ (m in *mantissas*) not above *below* (as the nearest float to that decimal)."""
-    n = math.floor(math.log10(below)) + 1
-    while True:
-        for m in reversed(mantissas):
-            value = float(f"{m}e{n}")
-            if value <= below * (1 + 1e-12):
-                return value
-        n -= 1
+    """The largest m·10ⁿ (m in *mantissas*, the pages' by default) not above *below* (:func:`plans.rounding.round_down`)."""
+    return rounding.round_down(below, mantissas)
 
 
 def round_scale(largest: float, fallback: float = 1.0) -> float:
