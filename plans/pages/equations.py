@@ -10,6 +10,14 @@ right that the step did not find: a known point's velocity, a normal or
 Coriolis component), **once** where only the direction is (what the
 intersection gives).  The sought vector on the left is not underlined.
 
+Whether a term is the step's unknown is read from the equation itself, not
+only from ``step.found`` (which leaves out a vector of zero length, at a
+dead centre): a term whose direction alone the conditions give (``v_ED ⊥
+DE``, ``a^r_EE0 ∥ ram``) is underlined once unless it is a normal or a
+Coriolis component (``a^n``, ``a^k``: magnitude and direction known).  A
+driver's equation (no vector on its right: ``v_A = ω2 × OA``, ``a_A = a``)
+gives its left side in full: twice.
+
 >>> print(equation_math("v_C = v_B + v_CB", found={"v_CB"}))
 arrow(v)_(C) = underline(underline(arrow(v)_(B))) + underline(arrow(v)_(C B))
 """
@@ -86,12 +94,29 @@ def condition_math(text: str, name=lambda word: word) -> str:
     return " ".join(piece for piece in out if piece)
 
 
-def equation_math(equation: str, known=(), found=(), name=lambda word: word) -> str:
-    """One vector equation ``lhs = t1 + t2 …`` as Typst math with the known parts underlined (see the module)."""
+def direction_only(condition: str) -> set[str]:
+    """The vectors whose direction alone *condition* gives (``v_ED ⊥ DE`` → ``{"v_ED"}``); normal and Coriolis components excepted."""
+    out = set()
+    for m in VECTOR.finditer(condition):
+        if m.group(2) in ("n", "k"):
+            continue
+        if re.match(r"\s*[⊥∥]", condition[m.end():]):
+            out.add(m.group(0))
+    return out
+
+
+def equation_math(equation: str, known=(), found=(), name=lambda word: word, condition: str = "") -> str:
+    """One vector equation ``lhs = t1 + t2 …`` as Typst math with the known parts underlined (see the module).
+
+    *condition* is the text in brackets after the equation; a vector whose
+    direction alone it gives is underlined once, as a vector in *found*.
+    """
     lhs, eq, rhs = equation.partition(" = ")
     if not eq:
         return condition_math(equation, name)
-    known, found = set(known), set(found)
+    known, found = set(known), set(found) | direction_only(condition)
+    if not any(VECTOR.fullmatch(t.strip()) for t in rhs.split(" + ")):
+        known.add(lhs.strip())  # a driver's equation: the left side given in full
 
     def term(piece: str, right: bool) -> str:
         m = VECTOR.fullmatch(piece.strip())
@@ -127,5 +152,5 @@ def step_lines(step, name=lambda word: word) -> list[tuple[str, str]]:
             cut = text.rfind(" (")
             main, rest = text[:cut], text[cut + 2:]
         condition = rest[:-1] if rest.endswith(")") else rest
-        out.append((equation_math(main.strip(), known, found, name), condition_math(condition, name) if condition else ""))
+        out.append((equation_math(main.strip(), known, found, name, condition), condition_math(condition, name) if condition else ""))
     return out

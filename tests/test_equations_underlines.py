@@ -1,0 +1,74 @@
+"""The underlines of the plans' vector equations (issue review, pf-equations).
+
+Hand-worked expectations: in a step ``v_E = v_D + v_ED (v_ED ⊥ DE)`` the
+point D's velocity is known in full before the step (twice), v_ED only in
+direction (once), whatever its length at the position (zero at a dead
+centre); the sought v_E on the left carries no underline.
+"""
+
+import pytest
+
+from plans.pages.equations import equation_math, step_lines
+from plans.positions import run_positions
+from plans.scene import example_path, load
+
+TWICE = "underline(underline({}))"
+ONCE = "underline({})"
+
+
+def _marks(math: str, body: str) -> int:
+    """How many underlines wrap *body* in *math* (0, 1 or 2)."""
+    if TWICE.format(body) in math:
+        return 2
+    if ONCE.format(body) in math:
+        return 1
+    assert body in math
+    return 0
+
+
+def test_four_bar_textbook():
+    m = equation_math("v_C = v_B + v_CB", condition="v_CB ⊥ BC")
+    assert _marks(m, "arrow(v)_(B)") == 2
+    assert _marks(m, "arrow(v)_(C B)") == 1
+    assert m.startswith("arrow(v)_(C) =")  # the sought vector: no underline
+
+
+def test_normal_and_coriolis_twice_tangential_relative_once():
+    m = equation_math("a_A4 = a_A3 + a^k_A4A3 + a^r_A4A3", condition="a^k_A4A3 = 2 ω3 × v_A4A3, a^r_A4A3 ∥ 4.slot")
+    assert _marks(m, "arrow(a)^k_(A 4 A 3)") == 2 and _marks(m, "arrow(a)^r_(A 4 A 3)") == 1
+    m = equation_math("a_E = a_D + a^n_ED + a^t_ED", condition="a^n_ED ∥ ED, a^t_ED ⊥ DE")
+    assert _marks(m, "arrow(a)^n_(E D)") == 2 and _marks(m, "arrow(a)^t_(E D)") == 1
+
+
+def test_linear_driver_acceleration_is_known():
+    assert equation_math("a_A = a") == "underline(underline(arrow(a)_(A))) = a"
+
+
+def _steps(example, n, k):
+    run = run_positions(load(example_path(example)), n)
+    return run.runs[k].graphical
+
+
+@pytest.mark.parametrize("k", [0, 3])
+def test_quick_return_ram_step(k):
+    g = _steps("quick-return", 12, k)
+    lines = [e for st in g.velocity_plan.steps for e, _ in step_lines(st)]
+    (ed,) = [e for e in lines if "arrow(v)_(E D)" in e]
+    (ee0,) = [e for e in lines if "arrow(v)_(E E 0)" in e]
+    assert _marks(ed, "arrow(v)_(E D)") == 1 and _marks(ed, "arrow(v)_(D)") == 2
+    assert _marks(ee0, "arrow(v)_(E E 0)") == 1 and _marks(ee0, "arrow(v)_(E 0)") == 2
+    (a4c,) = [e for e in lines if "arrow(v)_(A 4 C)" in e]
+    assert _marks(a4c, "arrow(v)_(C)") == 2 and _marks(a4c, "arrow(v)_(A 4 C)") == 1
+
+
+def test_six_bar_e5b_once():
+    g = _steps("six-bar", 12, 0)
+    lines = [e for st in g.velocity_plan.steps for e, _ in step_lines(st)]
+    (e5b,) = [e for e in lines if "arrow(v)_(E 5 B)" in e]
+    assert _marks(e5b, "arrow(v)_(E 5 B)") == 1 and _marks(e5b, "arrow(v)_(B)") == 2
+
+
+def test_linear_arm_driver_steps():
+    g = _steps("linear-arm", 8, 1)
+    first = [step_lines(p.steps[0])[0][0] for p in (g.velocity_plan, g.acceleration_plan)]
+    assert all(e.startswith("underline(underline(arrow(") for e in first)
