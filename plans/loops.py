@@ -455,11 +455,15 @@ def _driver_block(b: _Builder) -> LoopBlock:
     else:
         guide = scene.frame.lines[driver.guide]
         s = float(b.sol.driver[b.k])  # this position's travel, not the scene's own
-        lines.append(
-            rf"$s = {_num(s)}\ \mathrm{{m}},\ \dot{{s}} = {_num(driver.velocity)}\ \mathrm{{m/s}},\ "
-            rf"\ddot{{s}} = {_num(driver.acceleration)}\ \mathrm{{m/s^2}},\ u = e^{{i\,{_deg(guide.angle)}}}$"
-        )
         m = b.sol.points[driver.point]
+        # this position's rates (the driver's law over the cycle), as its solution used them: ṡ = v·ū, s̈ = a·ū
+        unit = cmath.exp(1j * guide.angle)
+        s_dot = float((complex(m.v[b.k]) / unit).real)
+        s_ddot = float((complex(m.a[b.k]) / unit).real)
+        lines.append(
+            rf"$s = {_num(s)}\ \mathrm{{m}},\ \dot{{s}} = {_num(s_dot)}\ \mathrm{{m/s}},\ "
+            rf"\ddot{{s}} = {_num(s_ddot)}\ \mathrm{{m/s^2}},\ u = e^{{i\,{_deg(guide.angle)}}}$"
+        )
         p = _sub(driver.point)
         e = rf"e^{{i\,{_deg(guide.angle)}}}"
         q = complex(guide.origin)
@@ -468,9 +472,9 @@ def _driver_block(b: _Builder) -> LoopBlock:
         q_label = _sub(q_label) if q_label else rf"Q_{{{_sub(guide.name)}}}"
         start = f"{_cplx(q)} + " if q != 0 else ""
         lines.append(rf"$z_{{{p}}} = z_{{{q_label}}} + s\,u = {start}{_paren(s)}\,{e} = {_cplx(m.r[b.k], True)}\ \mathrm{{m}}$")
-        lines.append(rf"$v_{{{p}}} = \dot{{s}}\,u = {_paren(driver.velocity)}\,{e} = {_cplx(m.v[b.k], True)}\ \mathrm{{m/s}}$")
+        lines.append(rf"$v_{{{p}}} = \dot{{s}}\,u = {_paren(s_dot)}\,{e} = {_cplx(m.v[b.k], True)}\ \mathrm{{m/s}}$")
         if scene.accelerations:
-            lines.append(rf"$a_{{{p}}} = \ddot{{s}}\,u = {_paren(driver.acceleration)}\,{e} = {_cplx(m.a[b.k], True)}\ \mathrm{{m/s^2}}$")
+            lines.append(rf"$a_{{{p}}} = \ddot{{s}}\,u = {_paren(s_ddot)}\,{e} = {_cplx(m.a[b.k], True)}\ \mathrm{{m/s^2}}$")
         joints = {driver.point: body.points[driver.point]}
         lines += _point_lines(b, link, joints, {driver.point})
     return LoopBlock(f"I({scene.frame_number},{link})", tuple(lines))
