@@ -8,19 +8,17 @@ centre); the sought v_E on the left carries no underline.
 
 import pytest
 
-from plans.pages.equations import equation_math, step_lines
+from plans.pages.equations import equation_math, once, step_lines, twice
 from plans.positions import run_positions
 from plans.scene import example_path, load
 
-TWICE = "underline(underline({}))"
-ONCE = "underline({})"
 
 
 def _marks(math: str, body: str) -> int:
     """How many underlines wrap *body* in *math* (0, 1 or 2)."""
-    if TWICE.format(body) in math:
+    if twice(body) in math:
         return 2
-    if ONCE.format(body) in math:
+    if once(body) in math:
         return 1
     assert body in math
     return 0
@@ -41,7 +39,7 @@ def test_normal_and_coriolis_twice_tangential_relative_once():
 
 
 def test_linear_driver_acceleration_is_known():
-    assert equation_math("a_A = a") == "underline(underline(arrow(a)_(A))) = a"
+    assert equation_math("a_A = a") == twice("arrow(a)_(A)") + " = a"
 
 
 def _steps(example, n, k):
@@ -71,4 +69,16 @@ def test_six_bar_e5b_once():
 def test_linear_arm_driver_steps():
     g = _steps("linear-arm", 8, 1)
     first = [step_lines(p.steps[0])[0][0] for p in (g.velocity_plan, g.acceleration_plan)]
-    assert all(e.startswith("underline(underline(arrow(") for e in first)
+    assert [e.partition(" = ")[0] for e in first] == [twice("arrow(v)_(A)"), twice("arrow(a)_(A)")]
+
+
+def test_double_underline_rules_apart():
+    """The Typst source of a double underline: a thin second rule with a clear gap ≥ 0.6 pt below the first."""
+    import re
+
+    src = twice("arrow(v)_(B)")
+    stroke = float(re.search(r"stroke: \(bottom: ([0-9.]+)pt\)", src).group(1))
+    offset = float(re.search(r"outset: \(bottom: ([0-9.]+)pt\)", src).group(1))
+    assert stroke <= 0.5  # thin
+    assert offset - stroke / 2 >= 0.6  # the clear gap below the bounds of the first rule
+    assert 'bottom-edge: "bounds"' in src and "$underline(arrow(v)_(B))$" in src

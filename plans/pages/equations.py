@@ -18,8 +18,14 @@ Coriolis component (``a^n``, ``a^k``: magnitude and direction known).  A
 driver's equation (no vector on its right: ``v_A = ω2 × OA``, ``a_A = a``)
 gives its left side in full: twice.
 
+The second line of a double underline is a thin rule (:data:`DOUBLE_STROKE_PT`)
+drawn :data:`DOUBLE_GAP_PT` below the bounds of the first (the math font's
+own underline), so the two stay apart on a screen at 70 dpi and in print
+(Typst's nested ``underline(underline(…))`` sets them about one rule apart:
+one thick bar).
+
 >>> print(equation_math("v_C = v_B + v_CB", found={"v_CB"}))
-arrow(v)_(C) = underline(underline(arrow(v)_(B))) + underline(arrow(v)_(C B))
+arrow(v)_(C) = #box(stroke: (bottom: 0.4pt), outset: (bottom: 0.9pt), {set text(bottom-edge: "bounds"); $underline(arrow(v)_(B))$}) + underline(arrow(v)_(C B))
 """
 
 from __future__ import annotations
@@ -28,7 +34,23 @@ import re
 
 from .typesetting import string
 
-__all__ = ["equation_math", "condition_math", "step_lines", "VECTOR"]
+__all__ = ["equation_math", "condition_math", "step_lines", "VECTOR", "once", "twice", "DOUBLE_GAP_PT", "DOUBLE_STROKE_PT"]
+
+#: the stroke [pt] of a double underline's second rule (thin, as the math font's own rule, about 0.04 em)
+DOUBLE_STROKE_PT = 0.4
+#: how far [pt] the second rule's middle lies below the bounds of the first underline (its clear gap ≥ this − half the stroke)
+DOUBLE_GAP_PT = 0.9
+
+
+def once(body: str) -> str:
+    """Typst math of *body* underlined once (direction known)."""
+    return f"underline({body})"
+
+
+def twice(body: str) -> str:
+    """Typst math of *body* underlined twice (magnitude and direction known), the two rules clearly apart (see the module)."""
+    return (f"#box(stroke: (bottom: {DOUBLE_STROKE_PT}pt), outset: (bottom: {DOUBLE_GAP_PT}pt), "
+            f'{{set text(bottom-edge: "bounds"); ${once(body)}$}})')
 
 #: a vector as the graphical method names it: ``v_B``, ``a^n_CB``, ``v_A4A3``
 VECTOR = re.compile(r"(?<![\w^])([a-z])(?:\^([a-z]+))?_([A-Za-z0-9′]+)")
@@ -125,9 +147,9 @@ def equation_math(equation: str, known=(), found=(), name=lambda word: word, con
         body = vector_math(*m.groups())
         label = m.group(0)
         if label in found:
-            return f"underline({body})"
+            return once(body)
         if right or label in known:
-            return f"underline(underline({body}))"
+            return twice(body)
         return body
 
     terms = [term(t, True) for t in rhs.split(" + ")]
