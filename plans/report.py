@@ -434,6 +434,13 @@ _SYMBOL = {"v": "v", "a": "a", "omega": r"\omega", "epsilon": r"\varepsilon", "v
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
+#: A table value at most this fraction of the largest of its kind at the same position (velocities,
+#: accelerations, ω, ε) is round-off of a zero (a dead centre's v = 0): printed 0, its relative error :data:`NO_ERROR`.
+TABLE_ROUNDOFF = 1e-9
+#: The relative error of a quantity that is zero: not defined.
+NO_ERROR = "—"
+
+
 def table_number(value: float, digits: int = 4) -> str:
     """*value* to *digits* significant digits as printed in a table: true minus sign, no ``e`` notation.
 
@@ -553,7 +560,18 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
     rest) are left out, as they are left off the plans.
     """
     rows = [["quantity", "graphical", "analytic", "rel. error"]]
-    for label, row in _by_link_number(drawn_rows(comparisons, graphical, analytic, position)):
+    drawn = drawn_rows(comparisons, graphical, analytic, position)
+    # the scale of each kind at this position: the largest analytic value of that kind in the table
+    scale: dict[str, float] = {}
+    for _, row in drawn:
+        kind = _KIND.get(row.quantity, row.quantity)
+        if math.isfinite(abs(row.analytic)):
+            scale[kind] = max(scale.get(kind, 0.0), abs(row.analytic))
+
+    def noise(value, kind: str) -> bool:
+        return abs(value) <= TABLE_ROUNDOFF * scale.get(kind, 0.0)
+
+    for label, row in _by_link_number(drawn):
         if row.quantity not in PLAN_QUANTITIES:  # a sheet tabulates what is read off its plans
             continue
         if row.analytic == 0 and row.graphical == 0:
@@ -562,7 +580,12 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
             text = f"${_SYMBOL[row.quantity]}$ slider {row.name} [{_UNITS[row.quantity]}]"
         else:
             text = f"{_symbol(label)} [{_UNITS[row.quantity]}]"
-        rows.append([text, _magnitude(row.graphical), _magnitude(row.analytic), table_error(row.rel_error)])
+        kind = _KIND.get(row.quantity, row.quantity)
+        zero_a, zero_g = noise(row.analytic, kind), noise(row.graphical, kind)
+        a_text = "0" if zero_a else _magnitude(row.analytic)
+        g_text = "0" if zero_g else _magnitude(row.graphical)
+        # a relative error is not defined for a zero quantity
+        rows.append([text, g_text, a_text, NO_ERROR if zero_a else table_error(row.rel_error)])
     return rows
 
 
