@@ -82,3 +82,13 @@ def test_double_underline_rules_apart():
     assert stroke <= 0.5  # thin
     assert offset - stroke / 2 >= 0.6  # the clear gap below the bounds of the first rule
     assert 'bottom-edge: "bounds"' in src and "$underline(arrow(v)_(B))$" in src
+
+
+def test_legend_states_the_left_side_convention():
+    """The legend line says the sought vector is not underlined, in every language, and the equations keep to it."""
+    from plans.i18n import term
+
+    words = {"en": "not underlined", "sr": "није подвучен", "ru": "не подчёркнут", "bg": "не е подчертан", "sl": "ni podčrtan"}
+    for lang, w in words.items():
+        assert w in term("underlines", lang)
+    assert equation_math("a_C = a_B + a^n_CB + a^t_CB", condition="a^n_CB ∥ CB, a^t_CB ⊥ BC").startswith("arrow(a)_(C) = ")
