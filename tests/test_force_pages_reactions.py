@@ -36,12 +36,17 @@ def pages(request):
         if name.startswith("forces-"):
             by_position.setdefault(name.split("-")[1], []).append(_texts(svg))
     assert len(by_position) == 2  # the two positions whose acceleration plans are drawn
+    by_position["source"] = doc.source
     return by_position
+
+
+def _positions(pages):
+    return {k: v for k, v in pages.items() if k != "source"}
 
 
 def test_a_reaction_carried_to_the_next_plan_equals_the_one_found(pages):
     carried_seen = 0
-    for position, texts in pages.items():
+    for position, texts in _positions(pages).items():
         found, carried = {}, []
         for page in texts:
             for t in page:
@@ -60,8 +65,17 @@ def test_a_reaction_carried_to_the_next_plan_equals_the_one_found(pages):
 
 
 def test_one_force_scale_per_position_stated_in_the_heading(pages):
-    for position, texts in pages.items():
+    for position, texts in _positions(pages).items():
         stated = [float(t.split()[1]) for page in texts for t in page if t.startswith("mu_F ")]
         assert len(stated) == 1, (position, stated)  # once, on the plans' page
         used = {float(m[3]) for page in texts for t in page if (m := FOUND.match(t))}
         assert used == {stated[0]}, (position, used, stated)
+
+
+def test_the_title_block_of_a_plans_page_states_its_force_scale(pages):
+    """Each plans' page leaves its μ_F for the title block, which adds the note found on its own page."""
+    source = pages["source"]
+    stated = [float(t.split()[1]) for texts in _positions(pages).values() for page in texts for t in page if t.startswith("mu_F ")]
+    notes = [float(m[1]) for m in re.finditer(r'#metadata\(\[\$μ_\(F ?\)\$#" = ([0-9.]+) N/mm"\]\) <plans-page-scale>', source)]
+    assert notes == stated
+    assert "query(<plans-page-scale>)" in source and "here().page()" in source
