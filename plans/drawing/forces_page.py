@@ -2,8 +2,10 @@
 
 One A4 page after a position's pages: the free bodies of the groups and the
 driver with their loads and reactions (at a page k_l), then every force plan
-in construction order (the last group first, the driver's last), each at its
-own round μ_F chosen so that it fills its box, with its readings and M_b;
+in construction order (the last group first, the driver's last), all at the
+page's one round μ_F (the smallest with which every plan fits its box, so the
+largest fills it), stated once in the heading, with its readings and M_b; a
+reaction carried to the next plan is stated there as R_ji = −R_ij with the value found;
 Joukowski's lever, when one is given, on a page of its own at its velocity plan's k_v.
 
 The force plans are constructed here at the page's μ_F (so that what the
@@ -219,7 +221,7 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
 
     One page: the free bodies across the top, the force plans under them,
     one legend at the foot.  Where the plans would be drawn too small there
-    (a plan at more than :data:`CRAMPED` times its own μ_F), two: the free
+    (the page's μ_F more than :data:`CRAMPED` times the largest plan's own), two: the free
     bodies and the legend, then the plans on a page of their own.
 
     Parameters
@@ -236,7 +238,7 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
     Returns
     -------
     list of matplotlib.figure.Figure
-        Each with ``force_scales``: group -> the μ_F [N/mm] its plan is drawn at (on that page).
+        Each with ``force_scales``: group -> the μ_F [N/mm] its plan is drawn at (on that page; one value for all).
     """
     from ..forces.force_plans import construct_force_plans
 
