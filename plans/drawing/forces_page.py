@@ -2,8 +2,10 @@
 
 One A4 page after a position's pages: the free bodies of the groups and the
 driver with their loads and reactions (at a page k_l), then every force plan
-in construction order (the last group first, the driver's last), each at its
-own round μ_F chosen so that it fills its box, with its readings and M_b;
+in construction order (the last group first, the driver's last), all at the
+page's one round μ_F (the smallest with which every plan fits its box, so the
+largest fills it), stated once in the heading, with its readings and M_b; a
+reaction carried to the next plan is stated there as R_ji = −R_ij with the value found;
 Joukowski's lever, when one is given, on a page of its own at its velocity plan's k_v.
 
 The force plans are constructed here at the page's μ_F (so that what the
@@ -19,7 +21,9 @@ from ..graphical.scales import round_down, round_up
 from ..i18n import term
 from .blocks import Block
 from .force_drawing import draw_force_legend_into, draw_force_plan_into, draw_free_bodies_into, draw_lever_into, legend_kinds
-from .layout import A4, GAP, PAGE_MARGIN, footer as page_footer, header, new_page
+from .layout import A4, GAP, PAGE_MARGIN, footer as page_footer, header, header_height, new_page
+from .numerals import scale_caption
+from ._canvas import fmt_number
 from .svg import drawing_rc
 from ._canvas import sketch_on
 
@@ -107,36 +111,37 @@ class _Measured:
 
 
 def _plan_scales(fig, graphical, first, items, box, lang: str, sizes: dict) -> dict[str, float]:
-    """Group -> the round μ_F [N/mm] that draws its plan largest within *box*, in construction order.
+    """Group -> the page's one round μ_F [N/mm]: the smallest with which every plan fits *box*.
 
-    *sizes* keeps every plan drawing measured, by (group, μ_F, the μ_F of the plans before it), for
-    the next layout tried.
+    Each plan is fitted alone (the round μ_F that draws it largest within *box*); the largest of
+    those is the page's, so that the plan that needs it fills its box and the others fit
+    (a plan of small forces is then drawn small: that is what it is at the page's μ_F).
+    *sizes* keeps every plan drawing measured, by (group, μ_F), for the next layout tried.
     """
     from ..forces.force_plans import construct_force_plans
 
-    scales: dict[str, float] = {}
-    for group in (item for item in items if item != "lever"):
-        plan0 = next(p for p in first.plans if p.group == group)
+    groups = [item for item in items if item != "lever"]
 
-        def make(mu, group=group):
-            key = (group, mu, tuple(sorted(scales.items())))
-            if key not in sizes:
-                plan = next(p for p in construct_force_plans(graphical, mu_F={**scales, group: mu}).plans if p.group == group)
-                moment = first.balancing_moment if group == "driver" else None
-                block = _block(fig, "fplan", lambda s: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment, known=False))
-                block.axes.remove()
-                sizes[key] = (block.width, block.height)
-            return _Measured(*sizes[key])
+    def measured(group: str, mu: float) -> "_Measured":
+        key = (group, mu, box[0])
+        if key not in sizes:
+            plans = construct_force_plans(graphical, mu_F=mu)
+            plan = next(p for p in plans.plans if p.group == group)
+            moment = plans.balancing_moment if group == "driver" else None
+            block = _block(fig, "fplan", lambda s: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment, known=False, scale=False,
+                                                                  caption_width=box[0] - 2.0))
+            block.axes.remove()
+            sizes[key] = (block.width, block.height)
+        return _Measured(*sizes[key])
 
-        ends = [z for v in plan0.vectors for z in (v.tail, v.tip)]
-
-        def extent(mu, ends=ends, mu0=plan0.scale):
-            w, h = _span(ends)
-            return w * mu0 / mu, h * mu0 / mu
-
-        scales[group], block = _largest_fitting(make, box, plan0.scale, extent)
-        block.axes.remove()
-    return scales
+    # the round values upwards from half the largest plan's own μ_F (which draws it 60–120 mm long): the first with which
+    # every plan fits is the page's (measured at each; a plan's captions are not monotonic in μ_F: short vectors get notes)
+    mu = round_down(max(p.scale for p in first.plans if p.group in groups) / 2.0)
+    for _ in range(24):
+        if all(_fits(measured(group, mu), box) for group in groups):
+            break
+        mu = round_up(mu * 1.001)
+    return {group: mu for group in groups}
 
 
 #: A plan drawn at more than this times its own round μ_F on a shared page (under a third of its
@@ -144,25 +149,27 @@ def _plan_scales(fig, graphical, first, items, box, lang: str, sizes: dict) -> d
 CRAMPED = 2.5
 
 
-def _natural(fig, first, lang: str) -> dict[str, tuple[float, float, float, float]]:
-    """Group -> (width, height [mm] of its drawing, of its polygon) at its own μ_F: the fixed part of each plan's size."""
+def _natural(fig, first, lang: str) -> dict[str, tuple[float, float, float, float, float]]:
+    """Group -> (width, height [mm] of its drawing, of its polygon, its own μ_F [N/mm]): the fixed part of each plan's size."""
     out = {}
     for plan in first.plans:
         moment = first.balancing_moment if plan.group == "driver" else None
-        block = _block(fig, "fplan", lambda s, plan=plan, moment=moment: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment, known=False))
+        block = _block(fig, "fplan", lambda s, plan=plan, moment=moment: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment, known=False, scale=False))
         block.axes.remove()
-        out[plan.group] = (block.width, block.height, *_span([z for v in plan.vectors for z in (v.tail, v.tip)]))
+        out[plan.group] = (block.width, block.height, *_span([z for v in plan.vectors for z in (v.tail, v.tip)]), plan.scale)
     return out
 
 
 def _shrink(natural, box) -> float:
-    """The largest factor by which a plan must be drawn smaller than at its own μ_F to fit *box*, by the size model (inf: never)."""
+    """How many times the largest plan's own μ_F the page's one μ_F must be for every plan to fit *box*, by the size model (inf: never)."""
+    largest = max(mu for *_, mu in natural.values())
     worst = 1.0
-    for w, h, pw, ph in natural.values():
+    for w, h, pw, ph, mu in natural.values():
         for drawn, scaled, room in ((w, pw, box[0]), (h, ph, box[1])):
             if scaled > 0:
                 fixed = drawn - scaled
-                worst = max(worst, scaled / (room - fixed) if room - fixed > 1.0 else float("inf"))
+                need = scaled / (room - fixed) if room - fixed > 1.0 else float("inf")
+                worst = max(worst, need * mu / largest)
     return worst
 
 
@@ -183,7 +190,7 @@ def _layout(fig, graphical, first, items, room: float, width: float, lang: str, 
         growth = 1.0
         for plan in first.plans:
             growth *= plan.scale / scales[plan.group]
-        worst = max(scales[plan.group] / plan.scale for plan in first.plans)
+        worst = max(scales.values()) / max(plan.scale for plan in first.plans)  # the largest plan against its own μ_F
         if best is None or growth > best[0] * 1.0001:
             best = (growth, worst, columns, box, scales)
     if best is None:
@@ -194,7 +201,7 @@ def _layout(fig, graphical, first, items, room: float, width: float, lang: str, 
 def _place_plans(fig, sketch, graphical, items, columns, box, scales, y_top: float, width: float, size, lang: str, lever) -> None:
     from ..forces.force_plans import construct_force_plans
 
-    final = construct_force_plans(graphical, mu_F=scales)
+    final = construct_force_plans(graphical, mu_F=next(iter(scales.values())) if scales else None)
     for n, item in enumerate(items):
         column, row = n % columns, n // columns
         if item == "lever":
@@ -202,7 +209,8 @@ def _place_plans(fig, sketch, graphical, items, columns, box, scales, y_top: flo
         else:
             plan = next(p for p in final.plans if p.group == item)
             moment = final.balancing_moment if item == "driver" else None
-            block = _block(fig, "fplan", lambda s, plan=plan, moment=moment: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment, known=False))
+            block = _block(fig, "fplan", lambda s, plan=plan, moment=moment: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment, known=False, scale=False,
+                                                                                      caption_width=box[0] - 2.0))
         x = PAGE_MARGIN + column * (box[0] + GAP) + (box[0] - block.width) / 2
         y = y_top - row * (box[1] + GAP) - block.height
         block.place(sketch, x, y, size)
@@ -213,7 +221,7 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
 
     One page: the free bodies across the top, the force plans under them,
     one legend at the foot.  Where the plans would be drawn too small there
-    (a plan at more than :data:`CRAMPED` times its own μ_F), two: the free
+    (the page's μ_F more than :data:`CRAMPED` times the largest plan's own), two: the free
     bodies and the legend, then the plans on a page of their own.
 
     Parameters
@@ -230,18 +238,19 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
     Returns
     -------
     list of matplotlib.figure.Figure
-        Each with ``force_scales``: group -> the μ_F [N/mm] its plan is drawn at (on that page).
+        Each with ``force_scales``: group -> the μ_F [N/mm] its plan is drawn at (on that page; one value for all).
     """
     from ..forces.force_plans import construct_force_plans
 
     size = A4
     width = size[0] - 2 * PAGE_MARGIN
-    lines = [decimal_comma(line, lang) for line in header_lines] + ["§" + term("kinetostatics_page", lang)]
+    where = [decimal_comma(line, lang) for line in header_lines]
     first = construct_force_plans(graphical)
     items = [plan.group for plan in first.plans]
     with drawing_rc():
         fig, sketch = new_page(size)
-        top = header(sketch, size, title or graphical.scene.title, lines)
+        # the header is drawn once the page's μ_F is known (it states it); its height is the same
+        top = size[1] - header_height(where + [_heading(lang, ("free_bodies", "force_plans"), 1.0)])
         bottom = PAGE_MARGIN + 4.0
         # one legend for every plan, at the foot of the page
         kinds, closing = legend_kinds(first.plans)
@@ -274,29 +283,55 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
         shared = _layout(fig, graphical, first, items, room - free.height - GAP, width, lang, sizes, natural, limit=CRAMPED * 1.5)
         if shared is not None and shared[0] <= CRAMPED:
             _, columns, box, scales = shared
+            header(sketch, size, title or graphical.scene.title, where + [_heading(lang, ("free_bodies", "force_plans"), _one(scales))])
             free.place(sketch, PAGE_MARGIN + (width - free.width) / 2, top - free.height, size)
             _place_plans(fig, sketch, graphical, items, columns, box, scales, top - free.height - GAP, width, size, lang, lever)
             page_footer(sketch, footer)
             fig.force_scales = dict(scales)
-            return [fig] + _lever_page(graphical, lever, lang, title, lines, footer)
+            return [fig] + _lever_page(graphical, lever, lang, title, where, footer)
         # two pages: the free bodies larger on the first, the plans and their legend on the second
         free.axes.remove()
         legend.axes.remove()
+        header(sketch, size, title or graphical.scene.title, where + [_heading(lang, ("free_bodies",))])
+        top = size[1] - header_height(where + [_heading(lang, ("free_bodies",))])
         room = top - bottom
         free = free_bodies(1.0)
         free.place(sketch, PAGE_MARGIN + (width - free.width) / 2, top - free.height, size)
         page_footer(sketch, footer)
         fig.force_scales = {}
         second, sketch2 = new_page(size)
-        top2 = header(sketch2, size, title or graphical.scene.title, lines)
+        top2 = size[1] - header_height(where + [_heading(lang, ("force_plans",), 1.0)])
         legend = _block(second, "flegend", lambda s: draw_force_legend_into(s, kinds, closing, lang))
         legend.place(sketch2, PAGE_MARGIN, bottom, size)
         room2 = top2 - bottom - legend.height - GAP
         _, columns, box, scales = _layout(second, graphical, first, items, room2, width, lang, sizes)
+        header(sketch2, size, title or graphical.scene.title, where + [_heading(lang, ("force_plans",), _one(scales))])
         _place_plans(second, sketch2, graphical, items, columns, box, scales, top2, width, size, lang, lever)
         page_footer(sketch2, footer)
         second.force_scales = dict(scales)
-    return [fig, second] + _lever_page(graphical, lever, lang, title, lines, footer)
+    return [fig, second] + _lever_page(graphical, lever, lang, title, where, footer)
+
+
+def _one(scales: dict) -> float | None:
+    """The page's one μ_F [N/mm] (every plan's)."""
+    values = set(scales.values())
+    if len(values) > 1:
+        raise ValueError(f"the force plans of one page are drawn at one μ_F, got {sorted(values)}")
+    return values.pop() if values else None
+
+
+def _heading(lang: str, parts, mu: float | None = None) -> str:
+    """The page's bold heading: "Kinetostatic analysis — <what the page holds>" and, with plans, their one μ_F [N/mm]."""
+    words = "; ".join(_lower(term(part, lang)) if n else term(part, lang) for n, part in enumerate(parts))
+    line = f"§{term('kinetostatics', lang)} — {words}"
+    if mu is not None:
+        line += "; " + scale_caption(r"\mu_F", fmt_number(mu), "N/mm", lang)
+    return line
+
+
+def _lower(words: str) -> str:
+    """A term's first letter in lower case (it continues a line), unless the second is a capital too."""
+    return words[:1].lower() + words[1:] if words[1:2].islower() else words
 
 
 def _lever_page(graphical, lever, lang: str, title, lines, footer: str) -> list:
@@ -307,7 +342,7 @@ def _lever_page(graphical, lever, lang: str, title, lines, footer: str) -> list:
     width = size[0] - 2 * PAGE_MARGIN
     with drawing_rc():
         fig, sketch = new_page(size)
-        top = header(sketch, size, title or graphical.scene.title, lines)
+        top = header(sketch, size, title or graphical.scene.title, list(lines) + [_heading(lang, ("joukowski_lever",))])
         block = _block(fig, "lever", lambda s: draw_lever_into(s, lever, lang=lang))
         block.place(sketch, PAGE_MARGIN + max(0.0, (width - block.width) / 2), top - block.height, size)
         page_footer(sketch, footer)

@@ -524,8 +524,10 @@ class _Builder:
         largest = max((abs(tip - tail) for tail, tip, *_ in poly.vectors), default=0.0)
         given = self.d.mu_F.get(group) if isinstance(self.d.mu_F, dict) else self.d.mu_F
         mu = given if given is not None else round_scale(largest)
+        carried = {f.label for body in links for f in self.passed.get(body, [])}
+        # a reaction carried from a plan before is the force read there (its value as found, not read again here)
         vectors = tuple(
-            PlanForce(tail / mu, tip / mu, kind, label, abs(self.d.read(tip - tail, mu)))
+            PlanForce(tail / mu, tip / mu, kind, label, abs(tip - tail) if label in carried else abs(self.d.read(tip - tail, mu)))
             for tail, tip, kind, label in poly.vectors
         )
         lines = tuple(ConstructionLine(through / mu, direction, label) for through, direction, label in poly.lines)
@@ -534,8 +536,7 @@ class _Builder:
             for z in (v.tail, v.tip):
                 if not any(abs(z - w) <= 1e-9 * max(1.0, abs(w)) for w in points.values()):
                     points[chr(ord("a") + len(points))] = z
-        known = {f.label for body in links for f in self.passed.get(body, [])}
-        found = tuple(v.label for v in vectors if v.kind in ("reaction", "balancing") and v.label not in known)
+        found = tuple(v.label for v in vectors if v.kind in ("reaction", "balancing") and v.label not in carried)
         self.plans.append(ForcePlan(group, tuple(links), mu, vectors, lines, tuple(equations), points, sine, found, self.d.precision))
         return mu
 

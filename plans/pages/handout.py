@@ -525,6 +525,7 @@ def build_handout(
         for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
             doc.full_page(f"kinematic-{number}", figure_svg(fig, lang))
     if forces:
+        from ..drawing._canvas import fmt_number
         from ..drawing.forces_page import draw_forces_pages
         from ..drawing.svgblocks import figure_svg
         from ..forces.lever import LeverError, joukowski_lever
@@ -538,7 +539,9 @@ def build_handout(
                 lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
             where = [f"{term('position', lang)} {h.index}:  {h.label}"] if multi else []
             for n, page in enumerate(draw_forces_pages(h.graphical, lang=lang, header_lines=where, lever=lever)):
-                doc.full_page(f"forces-{h.index}-{n}", figure_svg(page, lang))
+                mu_f = set(page.force_scales.values())
+                note = f"$μ_{{F}}$ = {fmt_number(mu_f.pop())} N/mm" if len(mu_f) == 1 else None
+                doc.full_page(f"forces-{h.index}-{n}", figure_svg(page, lang), scale_note=note)
     if centres:
         doc.section("centres")
         for n, h in enumerate(here.values(), start=1):
@@ -738,12 +741,16 @@ class _Document:
             return
         self.body.append(f"#align(center)[#{self.add_image(key, block)}]\n")
 
-    def full_page(self, key: str, block) -> None:
-        """A drawing that is a page of its own (a page of diagrams), fitted to the text area."""
+    def full_page(self, key: str, block, scale_note: str | None = None) -> None:
+        """A drawing that is a page of its own (a page of diagrams), fitted to the text area.
+
+        *scale_note*: a scale the page's drawing adds to the title block's (a force plans' μ_F).
+        """
         scale = min(TEXT_WIDTH / block.width, TEXT_HEIGHT / block.height, 1.0)
         self.images[key] = block.svg
         self.sizes[key] = (block.width * scale, block.height * scale)
-        self.body.append(f"#pagebreak(weak: true)\n#align(center)[#image(bytes(sys.inputs.at({string(key)})), format: \"svg\", width: {block.width * scale:.3f}mm)]\n")
+        note = f"#metadata([{self.words(scale_note)}]) <plans-page-scale>\n" if scale_note else ""
+        self.body.append(f"#pagebreak(weak: true)\n{note}#align(center)[#image(bytes(sys.inputs.at({string(key)})), format: \"svg\", width: {block.width * scale:.3f}mm)]\n")
 
     def grid(self, cells, columns: int) -> None:
         """Drawings with captions, *columns* across, flowing over pages (a cell never split)."""
@@ -826,6 +833,9 @@ class _Document:
             if self.plate.get(key) is not None:
                 scales.append(f"${key[0]}_{{{key[2]}}}$ = {fmt_number(self.plate[key])} {symbols[key]}")
         scale_text = self.words(";   ".join(scales) if scales else "—")
+        # a page that states a scale of its own (a force plans' μ_F) adds it here
+        scale_text += ("#context { let page = here().page(); let notes = query(<plans-page-scale>).filter(m => m.location().page() == page);"
+                       " if notes.len() > 0 [;   #notes.first().value] }")
         if self.per_position is not None:
             scale_text += " " + text("(" + term("scales_each_position", lang) + ")")
         sheet = f"{text(term('sheet', lang))} #context counter(page).get().first() {text(term('of_sheets', lang))} #context counter(page).final().first()"
