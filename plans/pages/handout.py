@@ -6,11 +6,16 @@ What the handout holds, in the order a student draws the plate (domain.md §10):
    plan of positions (every position at one k_l, the paths of the points);
 2. the vector equations of the velocity plans, the known parts underlined;
 3. the velocity plans of every position at one k_v, each from its own pole,
-   several to a page;
+   two across a page; when only a few positions' plans are far larger than
+   the rest (a quick return), those take a row of their own and k_v is the
+   one with which the largest fills that row, so that the rest are drawn
+   large enough to measure;
 4. the vector equations of the acceleration plans and the acceleration
    plans of the chosen positions (by default two: one of the working and one
    of the idle stroke) at one k_a;
-5. the tables comparing the graphical values with the analytic ones, and
+5. the tables comparing the graphical values with the analytic ones (the
+   graphical accelerations only of the positions whose acceleration plans
+   are drawn: the others' tables hold their velocities), and
    the complex-number loop equations of the chosen positions;
 6. the kinematic diagrams over the cycle; with ``centres``, a page of
    instant centres for every position.
@@ -61,7 +66,12 @@ GUTTER = 5.0
 #: the boxes [mm] the drawings are fitted to: the plan of positions (under the data), a velocity plan
 #: (two across, three down a page; one position's larger); the acceleration plans' cells: :func:`_acceleration_cells`
 POSITIONS_BOX = (TEXT_WIDTH, 150.0)
-VELOCITY_CELL = ((TEXT_WIDTH - GUTTER) / 2, 62.0)
+VELOCITY_CELL = ((TEXT_WIDTH - GUTTER) / 2, 70.0)
+#: a velocity plan too large for a half cell at the plate's k_v takes a row of its own (three rows to a page)
+VELOCITY_WIDE = (TEXT_WIDTH, 70.0)
+#: at most this share of the positions may take a row of their own (else every plan goes two across, the
+#: largest filling a half cell): the wide rows are for the few positions whose plans are large
+WIDE_SHARE = 1 / 3
 #: room [mm] a centres page keeps for its heading (two lines), Kennedy's statement and the legend (two lines)
 CENTRES_PAGE_TEXT = 42.0
 #: the page of cycle diagrams [mm]: the text area (a little short of it), so that it prints at 100 %, its 8 pt type 8 pt
@@ -368,6 +378,14 @@ def build_handout(
     else:
         largest_v = max(solved, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.velocity_plan), cell_v)))
         k_v_plate, _ = _fitted(lambda k: plan_svg(scaled(largest_v, "k_v", k).graphical.velocity_plan, lang), _plan_extent(largest_v.graphical.velocity_plan), cell_v, largest_v.graphical.scales["k_v"], given["k_v"])
+        if multi and given["k_v"] is None and len(solved) > 1:
+            # the largest plan given a row of its own: kept when only a few plans need one (they are then far
+            # larger than the rest, which a half cell would leave small)
+            largest_wide = max(solved, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.velocity_plan), VELOCITY_WIDE)))
+            k_wide, _ = _fitted(lambda k: plan_svg(scaled(largest_wide, "k_v", k).graphical.velocity_plan, lang),
+                                _plan_extent(largest_wide.graphical.velocity_plan), VELOCITY_WIDE, largest_wide.graphical.scales["k_v"], None)
+            if k_wide < k_v_plate and sum(_wide(r.graphical.velocity_plan, k_wide) for r in solved) <= WIDE_SHARE * len(solved):
+                k_v_plate = k_wide
         plate = {"k_l": k_l_plate, "k_v": k_v_plate}
         accel = [r for r in solved if r.index in chosen]
         if accel:
@@ -389,15 +407,23 @@ def build_handout(
             block = plan_svg(plan, lang, detail=False)
         return block
 
+    wide = set()  # the positions whose velocity plans take a row of their own
     for attempt in range(4):
         wider = {}
+        wide = set()
         for n, r in enumerate(solved, start=1):
             say(f"{term('position', lang)} {n}/{len(solved)}")
             h = at(r, per_position[r.index])
             here[r.index] = h
             velocity_blocks[r.index] = fitting(h.graphical.velocity_plan, cell_v)
-            if velocity_blocks[r.index].width > cell_v[0] + 0.5:
-                wider["k_v"] = max(wider.get("k_v", 1.0), velocity_blocks[r.index].width / cell_v[0])
+            block = velocity_blocks[r.index]
+            if multi and scales != "per-position" and (block.width > cell_v[0] + 0.5 or block.height > cell_v[1] + 0.5):
+                wide.add(r.index)
+                velocity_blocks[r.index] = block = fitting(h.graphical.velocity_plan, VELOCITY_WIDE)
+                if block.width > VELOCITY_WIDE[0] + 0.5:
+                    wider["k_v"] = max(wider.get("k_v", 1.0), block.width / VELOCITY_WIDE[0])
+            elif block.width > cell_v[0] + 0.5:
+                wider["k_v"] = max(wider.get("k_v", 1.0), block.width / cell_v[0])
             if r.index in chosen and h.graphical.acceleration_plan is not None:
                 acceleration_blocks[r.index] = fitting(h.graphical.acceleration_plan, cell_a)
                 if acceleration_blocks[r.index].width > cell_a[0] + 0.5:
@@ -464,14 +490,15 @@ def build_handout(
             cells.append((caption, None, f"{term('not_solved', lang)}: {_reason(r, lang)}"))
             continue
         extra = f"$k_v$ = {per_position[r.index]['k_v']:g}" if scales == "per-position" else ""
-        cells.append((caption, (f"v-{r.index}", velocity_blocks[r.index]), extra))
+        cells.append((caption, (f"v-{r.index}", velocity_blocks[r.index]), extra, r.index in wide))
     doc.grid(cells, columns=2 if len(run.runs) > 1 else 1)
 
     if acceleration_blocks:
         doc.section("acceleration-equations")
         doc.equations(f"{term('vector_equations', lang)}: {term('acceleration_plan', lang).lower()}", here[chosen[0]].graphical.acceleration_plan.steps,
-                      name, new_page=True)
+                      name)
         doc.section("acceleration-plans")
+        doc.body.append("#pagebreak(weak: true)")  # the equations fill what the velocity plans leave; the plans get a page
         doc.headed_legend(term("acceleration_plans", lang),
                           doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
                           "legend-a", legend_a)
@@ -486,7 +513,7 @@ def build_handout(
 
     doc.section("tables")
     doc.heading(term("comparison", lang), level=2, new_page=True)
-    doc.tables([(f"{term('position', lang)} {h.index}:  {h.label}" if multi else h.label, _table(h, lang)) for h in here.values()])
+    doc.tables([(f"{term('position', lang)} {h.index}:  {h.label}" if multi else h.label, _table(h, lang, h.index in acceleration_blocks)) for h in here.values()])
     # what a student measures on the plans of the chosen positions and what it gives (segment, mm, × k, = value)
     from ..drawing.blocks import plan_readings
 
@@ -550,10 +577,17 @@ def build_handout(
     return Handout(doc.source(), doc.images, plate, per_position, doc.order, chosen, doc.sizes, list(here.values()))
 
 
-#: room [mm] the acceleration plans' page gives its equations, legend and headings (the rest holds the plans)
-ACCELERATION_PAGE_TEXT = 95.0
+#: room [mm] the acceleration plans' page gives its heading, scale and legend (the rest holds the plans; their
+#: vector equations go under the velocity plans)
+ACCELERATION_PAGE_TEXT = 45.0
 #: what a plan's drawing takes beyond its geometry, reckoned before it is drawn [mm] (labels, margin, caption)
 PLAN_FIXED = (14.0, 20.0)
+
+
+def _wide(plan, k_v: float) -> bool:
+    """Whether the velocity *plan* drawn at *k_v* [(m/s)/mm] runs over a half cell (reckoned from its extent and
+    :data:`PLAN_FIXED`, before it is drawn)."""
+    return any(e / k_v + f > c for e, f, c in zip(_plan_extent(plan), PLAN_FIXED, VELOCITY_CELL))
 
 
 def _acceleration_cells(runs) -> tuple[int, tuple[float, float]]:
@@ -610,11 +644,18 @@ def _kinematic_pages(scene, positions, count: int, precision, lang: str, law=Non
     return draw_kinematic_pages(diagrams, title=scene.title_in(lang), lang=lang)
 
 
-def _table(h, lang: str) -> list[list[str]]:
+#: the quantities read off a velocity plan (a position without its acceleration plan on the plate tabulates only these)
+VELOCITY_QUANTITIES = ("v", "omega", "v_rel")
+
+
+def _table(h, lang: str, accelerations: bool = True) -> list[list[str]]:
+    """The comparison table of the position *h*; without *accelerations* (its acceleration plan is not on the
+    plate) only what its velocity plan gives: no graphical acceleration with no plan behind it."""
     from ..drawing.sheet import translate_table
     from ..report import sheet_table
 
-    return translate_table(sheet_table(h.comparisons, h.graphical, h.analytic), lang)
+    comparisons = h.comparisons if accelerations else [c for c in h.comparisons if c.quantity in VELOCITY_QUANTITIES]
+    return translate_table(sheet_table(comparisons, h.graphical, h.analytic), lang)
 
 
 def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
@@ -755,14 +796,23 @@ class _Document:
     def grid(self, cells, columns: int) -> None:
         """Drawings with captions, *columns* across, flowing over pages (a cell never split)."""
         items = []
-        for caption, drawing, extra in cells:
+        column = 0  # where the next cell falls in its row (a cell across the page starts a row of its own)
+        for caption, drawing, extra, *across in cells:
             parts = [f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(caption)}]"]
             if extra:
                 parts.append(f"#text(size: {SMALL_PT}pt)[{self.words(extra)}]")
             if drawing is not None:
                 key, block = drawing
                 parts.append(f"#align(center)[#{self.add_image(key, block)}]")
-            items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts[:-1] + [parts[-1]]) + "]")
+            cell = "block(breakable: false, width: 100%)[" + " \\\n".join(parts[:-1] + [parts[-1]]) + "]"
+            if across and across[0]:
+                if column:
+                    items.append(f"grid.cell(colspan: {columns - column})[]")
+                items.append(f"grid.cell(colspan: {columns})[#{cell}]")
+                column = 0
+            else:
+                items.append(cell)
+                column = (column + 1) % columns
         self.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 4mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
 
     def equations(self, heading: str, steps, name, new_page: bool = False) -> None:
