@@ -74,3 +74,35 @@ def test_graphical_accelerations_only_where_their_plan_is_drawn(plates):
                 with_accelerations.add(index)
         assert with_accelerations == set(doc.accelerations), name
         assert {k[2:] for k in doc.images if k.startswith("a-")} == {str(k) for k in doc.accelerations}
+
+
+# --- the instant centres' pages: one k_l ---------------------------------------------------------
+
+
+def test_one_k_l_over_the_centres_pages_stated_in_their_title_block():
+    """The quick-return's centres pages need a coarser k_l than its plan of positions (the centres at the
+    pin of the ram lie far off): one for all of them, the coarsest, and their title blocks say it; the other
+    sheets keep the plate's."""
+    import io
+    import unicodedata
+
+    from pypdf import PdfReader
+
+    doc = handout(plans.load(example_path("quick-return")), positions=4, lang="sr", centres=True)
+    pages = [unicodedata.normalize("NFKC", p.extract_text() or "") for p in PdfReader(io.BytesIO(doc.pdf())).pages]
+    title_block = [re.findall(r"Размере:\s*k\s*l\s*=\s*([0-9,]+)", p) for p in pages]
+    assert all(len(t) == 1 for t in title_block), title_block
+    centres = [n for n, p in enumerate(pages) if "Кенеди" in p and "тренутн" in p.lower()]
+    assert len(centres) == 4
+    on_centres = {title_block[n][0] for n in centres}
+    elsewhere = {title_block[n][0] for n in range(len(pages)) if n not in centres}
+    plate = f"{doc.scales['k_l']:g}".replace(".", ",")
+    assert elsewhere == {plate}
+    assert len(on_centres) == 1
+    k_centres = float(on_centres.pop().replace(",", "."))
+    assert k_centres >= doc.scales["k_l"]
+    for n in centres:  # the drawing on the page states the same k_l
+        drawing = re.sub(r"\s+", "", pages[n].split("Размере")[0])
+        assert f"kl={k_centres:g}".replace(".", ",") in drawing
+    widths = {doc.drawn[f"centres-{r.index}"][0] for r in doc.runs}
+    assert all(w <= TEXT_WIDTH + 0.5 for w in widths)

@@ -18,7 +18,8 @@ What the handout holds, in the order a student draws the plate (domain.md §10):
    are drawn: the others' tables hold their velocities), and
    the complex-number loop equations of the chosen positions;
 6. the kinematic diagrams over the cycle; with ``centres``, a page of
-   instant centres for every position.
+   instant centres for every position, all at one k_l (the plate's, or the
+   coarsest any of them needs), which their title block states.
 
 One k_l, one k_v, one k_a over the whole handout (each the round factor
 with which the largest of its drawings fills the room a page gives it; a
@@ -571,9 +572,7 @@ def build_handout(
                 doc.full_page(f"forces-{h.index}-{n}", figure_svg(page, lang), scale_note=note)
     if centres:
         doc.section("centres")
-        for n, h in enumerate(here.values(), start=1):
-            say(f"{term('instant_centres', lang)} {n}/{len(here)}")
-            _centres_page(doc, h, k_l_plate, lang, multi)
+        _centres_pages(doc, list(here.values()), k_l_plate, lang, multi, say)
     return Handout(doc.source(), doc.images, plate, per_position, doc.order, chosen, doc.sizes, list(here.values()))
 
 
@@ -658,45 +657,71 @@ def _table(h, lang: str, accelerations: bool = True) -> list[list[str]]:
     return translate_table(sheet_table(comparisons, h.graphical, h.analytic), lang)
 
 
-def _centres_page(doc, h, k_l: float, lang: str, multi: bool) -> None:
-    """A page of instant centres for the position *h*: the mechanism with its centres at k_l (coarser only
-    when the page cannot hold it), the circle diagram, the rules and the table."""
+def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambda words: None) -> float | None:
+    """A page of instant centres for every position of *positions*: the mechanism with its centres at one k_l
+    for all the pages (the plate's, or the coarsest any of them needs to hold its drawing), stated on each page
+    and in their title block; the circle diagram, the rules and the table.  Returns that k_l (None: no page
+    has a drawing)."""
     from ..centres import instant_centres
     from ..compare import compare_centres
     from ..drawing.centres import CentresSizer
-    from ..drawing.centres_page import ROOM_MIN, centres_page_table, centres_rules
+    from ..drawing.centres_page import ROOM_MIN
     from ..drawing.svgblocks import centres_svg, circle_diagram_svg
     from ..errors import PlansError
 
+    pages = []  # (h, result, comparisons, diagram, box) or (h, error)
+    k = k_l
+    for n, h in enumerate(positions, start=1):
+        say(f"{term('instant_centres', lang)} {n}/{len(positions)}")
+        try:
+            result = instant_centres(h.scene, h.analytic.structure)
+            comparisons = compare_centres(h.analytic, result)
+        except PlansError as exc:
+            pages.append((h, exc))
+            continue
+        # the drawing gets what the page leaves beside its heading, the legend and the circle diagram with the table
+        diagram = circle_diagram_svg(result, lang)
+        box = (TEXT_WIDTH, min(150.0, TEXT_HEIGHT - CENTRES_PAGE_TEXT - max(diagram.height, 55.0)))
+        # sizes from geometry (two drawings of the mechanism alone, plans.drawing.centres.CentresSizer)
+        sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
+        for _ in range(24):
+            width, height = sizer.size(k)
+            if width <= box[0] + 0.5 and height <= box[1] + 0.5:
+                break
+            k = round_up(k * max(width / box[0], height / box[1], 1.0001))
+        pages.append((h, result, comparisons, diagram, box))
+    drawn = [p for p in pages if len(p) > 2]
+    blocks = {}
+    for _ in range(4):  # the sizer is exact at its own two scales, close elsewhere: coarser while a drawing runs over
+        over = 1.0
+        for h, result, _, _, box in drawn:
+            if h.index not in blocks or blocks[h.index][0] != k:
+                blocks[h.index] = (k, centres_svg(result, k, lang, room_min=ROOM_MIN))
+            block = blocks[h.index][1]
+            over = max(over, block.width / (box[0] + 0.5), block.height / (box[1] + 0.5))
+        if over <= 1.0:
+            break
+        k = round_up(k * over * 1.0001)
+    for page in pages:
+        _centres_page(doc, page, k, blocks, lang, multi)
+    return k if drawn else None
+
+
+def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
+    """The page of instant centres of one position (:func:`_centres_pages`)."""
+    from ..drawing.centres_page import centres_page_table, centres_rules
+
+    h = page[0]
     title = f"{term('centres_page', lang)}" + (f" — {term('position', lang)} {h.index}:  {h.label}" if multi else "")
     doc.heading(title, level=2, new_page=True)
+    doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k)}])")  # the title block of the centres' pages
     kennedy = term("kennedy_theorem", lang)
     doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=SMALL_PT)
-    try:
-        result = instant_centres(h.scene, h.analytic.structure)
-        comparisons = compare_centres(h.analytic, result)
-    except PlansError as exc:
-        doc.line(str(exc), size=TEXT_PT)
+    if len(page) == 2:
+        doc.line(str(page[1]), size=TEXT_PT)
         return
-    # the drawing gets what the page leaves beside its heading, the legend and the circle diagram with the table
-    diagram = circle_diagram_svg(result, lang)
-    box = (TEXT_WIDTH, min(150.0, TEXT_HEIGHT - CENTRES_PAGE_TEXT - max(diagram.height, 55.0)))
-    # the plate's k_l, coarser only where the page cannot hold it: sizes from geometry (two drawings of the
-    # mechanism alone, plans.drawing.centres.CentresSizer), the page drawn at the k_l chosen
-    sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
-    k = k_l
-    for _ in range(24):
-        width, height = sizer.size(k)
-        if width <= box[0] + 0.5 and height <= box[1] + 0.5:
-            break
-        k = round_up(k * max(width / box[0], height / box[1], 1.0001))
-    block = centres_svg(result, k, lang, room_min=ROOM_MIN)
-    for _ in range(4):  # the sizer is exact at its own two scales, close elsewhere: coarser while the drawing runs over
-        if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
-            break
-        k = round_up(k * max(block.width / box[0], block.height / box[1], 1.0001))
-        block = centres_svg(result, k, lang, room_min=ROOM_MIN)
-    doc.figure(f"centres-{h.index}", block)
+    _, result, comparisons, diagram, _ = page
+    doc.figure(f"centres-{h.index}", blocks[h.index][1])
     doc.line(f"{term('centres_legend', lang)};  {term('centres_edge_legend', lang)}", size=SMALL_PT)
     doc.beside((f"circle-{h.index}", diagram), centres_page_table(result, comparisons, lang), centres_rules(lang, result.scene.frame_number))
 
@@ -764,6 +789,13 @@ class _Document:
 
         unit = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}[key]
         return self.line_markup(scale_caption(key, fmt_number(value), unit, self.lang), size=TEXT_PT)
+
+    def scale_words(self, key: str, value: float) -> str:
+        """``k_l = 0,006 m/mm`` as markup (the title block's words for a scale factor)."""
+        from ..drawing._canvas import fmt_number
+
+        unit = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}[key]
+        return self.words(f"${key[0]}_{{{key[2]}}}$ = {fmt_number(value)} {unit}")
 
     def scale_line(self, key: str, value: float) -> None:
         self.body.append(self.scale_markup(key, value) + "\n")
@@ -874,15 +906,15 @@ class _Document:
 
     # the whole
     def source(self) -> str:
-        from ..drawing._canvas import fmt_number
 
         lang = self.lang
-        scales = []
-        symbols = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}
-        for key in ("k_l", "k_v", "k_a"):
-            if self.plate.get(key) is not None:
-                scales.append(f"${key[0]}_{{{key[2]}}}$ = {fmt_number(self.plate[key])} {symbols[key]}")
-        scale_text = self.words(";   ".join(scales) if scales else "—")
+        scales = [self.scale_words(key, self.plate[key]) for key in ("k_v", "k_a") if self.plate.get(key) is not None]
+        # k_l from a state: the instant centres' pages may draw at a coarser one (and say so on the page)
+        plate_kl = self.scale_words("k_l", self.plate["k_l"]) if self.plate.get("k_l") is not None else ""
+        if plate_kl:
+            scale_text = "#context plate-kl.get()" + (self.words(";   ") + self.words(";   ").join(scales) if scales else "")
+        else:
+            scale_text = self.words(";   ").join(scales) if scales else self.words("—")
         # a page that states a scale of its own (a force plans' μ_F) adds it here
         scale_text += ("#context { let page = here().page(); let notes = query(<plans-page-scale>).filter(m => m.location().page() == page);"
                        " if notes.len() > 0 [;   #notes.first().value] }")
@@ -899,6 +931,7 @@ class _Document:
         inner_w = PAGE[0] - FRAME[0] - FRAME[1]
         inner_h = PAGE[1] - 2 * FRAME[1]
         head = f"""#set document(date: none)
+#let plate-kl = state("plate-kl", [{plate_kl}])
 #set page(width: {PAGE[0]}mm, height: {PAGE[1]}mm, margin: (left: {TEXT_LEFT}mm, right: {TEXT_RIGHT}mm, top: {TEXT_TOP}mm, bottom: {TEXT_BOTTOM}mm),
   background: place(top + left, dx: {FRAME[0]}mm, dy: {FRAME[1]}mm, rect(width: {inner_w}mm, height: {inner_h}mm, stroke: 0.8pt)),
   foreground: place(bottom + left, dx: {FRAME[0]}mm, dy: -{FRAME[1]}mm, block(width: {inner_w}mm, {title_block})))
