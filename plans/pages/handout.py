@@ -69,7 +69,7 @@ GUTTER = 5.0
 POSITIONS_BOX = (TEXT_WIDTH, 150.0)
 VELOCITY_CELL = ((TEXT_WIDTH - GUTTER) / 2, 70.0)
 #: a velocity plan too large for a half cell at the plate's k_v takes a row of its own (three rows to a page)
-VELOCITY_WIDE = (TEXT_WIDTH, 70.0)
+VELOCITY_WIDE = (TEXT_WIDTH, 80.0)
 #: at most this share of the positions may take a row of their own (else every plan goes two across, the
 #: largest filling a half cell): the wide rows are for the few positions whose plans are large
 WIDE_SHARE = 1 / 3
@@ -385,8 +385,14 @@ def build_handout(
             largest_wide = max(solved, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.velocity_plan), VELOCITY_WIDE)))
             k_wide, _ = _fitted(lambda k: plan_svg(scaled(largest_wide, "k_v", k).graphical.velocity_plan, lang),
                                 _plan_extent(largest_wide.graphical.velocity_plan), VELOCITY_WIDE, largest_wide.graphical.scales["k_v"], None)
-            if k_wide < k_v_plate and sum(_wide(r.graphical.velocity_plan, k_wide) for r in solved) <= WIDE_SHARE * len(solved):
-                k_v_plate = k_wide
+            # the finest round factor (from the largest's row up) with which only a few need a row
+            k = min(k_wide, round_up(k_v_plate / 2))
+            while k < k_v_plate:
+                if (k >= k_wide or not any(_wide(r.graphical.velocity_plan, k, VELOCITY_WIDE) for r in solved)) and \
+                        sum(_wide(r.graphical.velocity_plan, k) for r in solved) <= WIDE_SHARE * len(solved):
+                    k_v_plate = k
+                    break
+                k = round_up(k * 1.0001)
         plate = {"k_l": k_l_plate, "k_v": k_v_plate}
         accel = [r for r in solved if r.index in chosen]
         if accel:
@@ -583,10 +589,10 @@ ACCELERATION_PAGE_TEXT = 45.0
 PLAN_FIXED = (14.0, 20.0)
 
 
-def _wide(plan, k_v: float) -> bool:
-    """Whether the velocity *plan* drawn at *k_v* [(m/s)/mm] runs over a half cell (reckoned from its extent and
-    :data:`PLAN_FIXED`, before it is drawn)."""
-    return any(e / k_v + f > c for e, f, c in zip(_plan_extent(plan), PLAN_FIXED, VELOCITY_CELL))
+def _wide(plan, k_v: float, cell=VELOCITY_CELL) -> bool:
+    """Whether the velocity *plan* drawn at *k_v* [(m/s)/mm] runs over *cell* [mm] (a half cell by default;
+    reckoned from its extent and :data:`PLAN_FIXED`, before it is drawn)."""
+    return any(e / k_v + f > c for e, f, c in zip(_plan_extent(plan), PLAN_FIXED, cell))
 
 
 def _acceleration_cells(runs) -> tuple[int, tuple[float, float]]:
