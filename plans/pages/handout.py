@@ -912,7 +912,6 @@ class _Document:
 
     # the whole
     def source(self) -> str:
-
         lang = self.lang
         scales = [self.scale_words(key, self.plate[key]) for key in ("k_v", "k_a") if self.plate.get(key) is not None]
         # k_l from a state: the instant centres' pages may draw at a coarser one (and say so on the page)
