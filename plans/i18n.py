@@ -963,6 +963,8 @@ TERMS: dict[str, dict[str, str]] = {
                           "bg": "крайни положения", "sl": "skrajni legi"},
     "working_stroke": {"en": "working stroke", "sr": "радни ход", "ru": "рабочий ход", "bg": "работен ход", "sl": "delovni hod"},
     "time": {"en": "time", "sr": "време", "ru": "время", "bg": "време", "sl": "čas"},
+    "four_bar_loop": {"en": "four-bar", "sr": "зглавкасти четвороугао", "ru": "шарнирный четырёхзвенник", "bg": "шарнирен четиризвенник",
+                      "sl": "štirizgibni mehanizem"},
     "grashof_class": {"en": "Grashof class", "sr": "Грасхофова класа", "ru": "класс по Грасгофу", "bg": "клас по Грасхоф",
                       "sl": "Grashofov razred"},
     "crank-rocker": {"en": "crank-rocker", "sr": "кривајно-клацкајући", "ru": "кривошипно-коромысловый",

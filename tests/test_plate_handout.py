@@ -278,3 +278,11 @@ def test_the_plan_of_positions_draws_the_other_extreme_position(quick_return_sr)
     other = strokes(doc.runs[0].scene).other_position  # the crank angle of 0′ [rad]
     drawn = _centre(svg, "positions-mark-extreme-A") - _centre(svg, "positions-pin-O")
     assert math.degrees(abs(cmath.phase(drawn / cmath.exp(1j * other)))) < 1.0
+
+
+def test_the_grashof_line_names_the_four_bar_by_its_links():
+    # the course names a four-bar by its links (frame first), not by its Assur group's notation
+    pdf = handout(plans.load(example_path("four-bar")), positions=2, lang="en").pdf()
+    text = " ".join(" ".join(_pages(pdf)).split())
+    assert "Grashof class (four-bar 1–2–3–4): crank-rocker" in text
+    assert "Grashof class II" not in text and "Grashof class RRR" not in text

@@ -222,7 +222,9 @@ def cycle_lines(run, lang: str = "en") -> list[str]:
     for loop in four_bar_loops(run.scene, run.structure):
         turning = loop.turning_links()
         turns = f"{', '.join(turning)}: {term('turn_fully', lang)}" if turning else term("none_turns", lang)
-        lines.append(f"{term('grashof_class', lang)} {loop.group}: {term(loop.grashof.kind, lang)} ({turns})")
+        # the loop named by its links, frame first (1–2–3–4), as the course names a four-bar: not by its group's notation
+        bars = "–".join((run.scene.frame_number, loop.input, loop.coupler_link, loop.output))
+        lines.append(f"{term('grashof_class', lang)} ({term('four_bar_loop', lang)} {bars}): {term(loop.grashof.kind, lang)} ({turns})")
     if run.strokes is not None:
         lines += run.strokes.summary(lang)
     return lines
