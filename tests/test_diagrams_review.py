@@ -249,3 +249,16 @@ def test_a_single_diagrams_note_stands_above_it():
     assert box.y0 > 1.0  # above the plotting area
     numbers = [t for t in ax.texts if t.get_text() in {"0", "1", "2", "3", "4", "5"}]
     assert len(numbers) == 6 and all(not box.overlaps(n.get_window_extent().transformed(ax.transAxes.inverted())) for n in numbers)
+
+
+def test_a_sliders_name_in_the_diagrams_is_the_scenes_word_in_the_pages_language(tmp_path):
+    # linear-arm's pair "sleeve" is [names] sleeve = { bg = "втулка", … }: a Bulgarian legend says s_втулка
+    from plans.drawing.diagrams import draw_cycle_diagrams
+
+    scene = plans.load(plans.example_path("linear-arm"))
+    run = plans.solve(scene, np.linspace(*scene.driver.stroke, 9), allow_partial=True)
+    texts = []
+    for name, fig in draw_cycle_diagrams(run, lang="bg"):
+        texts += [t.get_text() for t in fig.findobj(lambda a: hasattr(a, "get_text"))]
+    joined = " ".join(texts)
+    assert "втулка" in joined and "sleeve" not in joined

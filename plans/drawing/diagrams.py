@@ -800,7 +800,7 @@ def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start:
     input's swing drawn against time, its own angle a curve like the others."""
     scene = analytic.scene
     extra = []
-    series = _series(analytic, quantity, valid, swing)
+    series = _series(analytic, quantity, valid, swing, lang)
     if quantity == "phi" and hasattr(scene.driver, "omega") and not swing:
         link = scene.driver.link
         start = _number(math.degrees(float(analytic.driver[0] if start is None else start)) % 360.0, lang, 4)
@@ -810,7 +810,7 @@ def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start:
     return _panel(series, valid, lang, unit, extra)
 
 
-def _series(analytic, quantity: str, valid, swing: bool = False) -> list[tuple[str, np.ndarray]]:
+def _series(analytic, quantity: str, valid, swing: bool = False, lang: str = "en") -> list[tuple[str, np.ndarray]]:
     scene = analytic.scene
     if quantity in ("phi", "omega", "epsilon"):
         links = [n for n in scene.links if not scene.bodies[n].block]
@@ -825,12 +825,14 @@ def _series(analytic, quantity: str, valid, swing: bool = False) -> list[tuple[s
         part = "real" if quantity[1] == "x" else "imag"
         return [(_name(quantity[0], f"{p},{quantity[1]}"), _finite(getattr(getattr(analytic.points[p], quantity[0]), part), valid)) for p in points]
     pairs = [p.name for p in scene.prismatics if p.name in analytic.sliders]
+    # a pair named in words by the scene (a sleeve) in the page's language ([names]), as written otherwise
+    called = {n: scene.name_in(n, lang) if hasattr(scene, "name_in") else n for n in pairs}
     if quantity == "s":
-        return [(_name("s", n), _finite(np.asarray(analytic.sliders[n].s) * 1e3, valid)) for n in pairs]
+        return [(_name("s", called[n]), _finite(np.asarray(analytic.sliders[n].s) * 1e3, valid)) for n in pairs]
     if quantity == "coriolis":
-        return [(_abs(_name("a^k", n)), _finite(np.abs(analytic.sliders[n].coriolis), valid)) for n in pairs]
+        return [(_abs(_name("a^k", called[n])), _finite(np.abs(analytic.sliders[n].coriolis), valid)) for n in pairs]
     symbol = {"v_rel": "v^r", "a_rel": "a^r"}[quantity]
-    return [(_name(symbol, n), _finite(getattr(analytic.sliders[n], quantity), valid)) for n in pairs]
+    return [(_name(symbol, called[n]), _finite(getattr(analytic.sliders[n], quantity), valid)) for n in pairs]
 
 
 def _abs(name: str) -> str:
