@@ -127,7 +127,7 @@ def test_the_handout_cover_states_law_class_and_strokes():
     run = run_positions(plans.load(plans.example_path("rocker-limit")), 4)
     text = "\n".join(cycle_lines(run, "ru"))
     assert "закон движения ведущего звена: гармоническое качание между −56,39° … 56,39°" in text
-    assert "класс по Грасгофу RRR(3,4): трёхкоромысловый (не Грасгофов) (ни одно звено не проворачивается)" in text
+    assert "класс по Грасгофу (шарнирный четырёхзвенник 1–2–3–4): трёхкоромысловый (не Грасгофов) (ни одно звено не проворачивается)" in text
     assert "выходное звено 4: угол качания ψ₄ = 71,32°" in text
     assert all(len(line) <= 110 for line in cycle_lines(run, "en"))  # a cover's width
 
