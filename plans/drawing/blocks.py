@@ -20,12 +20,11 @@ from __future__ import annotations
 import math
 import re
 
-from ..graphical.plan import KINDS
 from ..i18n import term
 from .._text import decimal_comma, math_name, user_text
 from ._canvas import Sketch, text_size
 from .mechanism import draw_mechanism
-from .plan_drawing import SAME_MM, aliases, draw_plan, end_letters, image_text, kinds_drawn, legend_row, legend_words, pole_text, vectors_drawn
+from .plan_drawing import SAME_MM, aliases, draw_plan, end_letters, image_text, legend_entries, legend_row, pole_text, vectors_drawn
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 from .typeset import draw_text, measure
 
@@ -167,19 +166,8 @@ def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT, he
 
 def legend_block(graphical, lang: str, columns: int = 1, plans=("velocity", "acceleration")) -> Block:
     """One legend for the *plans* (both by default): each kind of vector drawn, and construction lines (in *columns*, filled down)."""
-    words: dict[str, list[str]] = {}
-    for plan in (graphical.velocity_plan, graphical.acceleration_plan):
-        if plan is None or plan.kind not in plans:
-            continue
-        kinds = kinds_drawn(plan)  # a kind drawn only as notes (every vector under 3 mm) is not listed
-        for kind in KINDS:
-            if kind in kinds:
-                text = legend_words(plan.kind, kind, lang)
-                if text not in words.setdefault(kind, []):
-                    words[kind].append(text)
-    # one row per style: "absolute velocity / absolute acceleration"
-    entries = [(kind, " / ".join(words[kind])) for kind in KINDS if kind in words]
-    entries.append(("construction", legend_words("velocity", "construction", lang)))
+    drawn = [plan for plan in (graphical.velocity_plan, graphical.acceleration_plan) if plan is not None and plan.kind in plans]
+    entries = legend_entries(drawn, lang)
     row_h = text_size("lp", CAPTION_PT)[1] + 0.8
     column_w = 11.0 + max(text_size(w, CAPTION_PT)[0] for _, w in entries) + 6.0
     per = -(-len(entries) // max(1, columns))

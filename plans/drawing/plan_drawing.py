@@ -54,6 +54,7 @@ __all__ = [
     "vector_math",
     "end_letters",
     "legend_words",
+    "legend_entries",
     "ZERO_MM",
     "SHORT_MM",
 ]
@@ -747,6 +748,23 @@ def legend_words(plan_kind: str, kind: str, lang: str = "en") -> str:
     if kind == "construction":
         return term("construction_line", lang)
     return term(LEGEND_TERMS[plan_kind][kind], lang)
+
+
+def legend_entries(plans, lang: str = "en") -> list[tuple[str, str]]:
+    """One legend for *plans* (Plan objects): ``(kind, words)`` for every kind drawn as an arrow on any of them
+    (a kind drawn only as notes is not listed), one row per style ("absolute velocity / absolute acceleration"),
+    then the construction lines."""
+    words: dict[str, list[str]] = {}
+    for plan in plans:
+        drawn = kinds_drawn(plan)
+        for kind in KINDS:
+            if kind in drawn:
+                text = legend_words(plan.kind, kind, lang)
+                if text not in words.setdefault(kind, []):
+                    words[kind].append(text)
+    entries = [(kind, " / ".join(words[kind])) for kind in KINDS if kind in words]
+    entries.append(("construction", legend_words("velocity", "construction", lang)))
+    return entries
 
 
 def _tip_text(plan, v) -> str:

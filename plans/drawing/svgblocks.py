@@ -80,19 +80,9 @@ def plan_svg(plan, lang: str = "en", detail: bool = True) -> SvgBlock:
 
 def legend_svg(plans, lang: str = "en") -> SvgBlock:
     """One legend for *plans* (Plan objects): every kind of vector drawn on any of them, and construction lines."""
-    from ..graphical.plan import KINDS
-    from .plan_drawing import kinds_drawn, legend_row, legend_words
+    from .plan_drawing import legend_entries, legend_row
 
-    words: dict[str, list[str]] = {}
-    for plan in plans:
-        drawn = kinds_drawn(plan)
-        for kind in KINDS:
-            if kind in drawn:
-                text = legend_words(plan.kind, kind, lang)
-                if text not in words.setdefault(kind, []):
-                    words[kind].append(text)
-    entries = [(kind, " / ".join(words[kind])) for kind in KINDS if kind in words]
-    entries.append(("construction", legend_words("velocity", "construction", lang)))
+    entries = legend_entries(plans, lang)
 
     def draw(sketch):
         for k, (kind, text) in enumerate(entries):
