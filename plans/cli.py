@@ -647,7 +647,6 @@ def _sweep(args) -> int:
     import numpy as np
 
     from ._files import batch, write_atomic
-    from .analytic import solve
     from .report import sweep_csv
     from .sweep import analyse_sweep
 

@@ -530,7 +530,7 @@ def driver_law(scene: Scene, law: str | None = None, structure=None) -> DriverLa
                 "so it must reverse there with ω passing through zero: use law = \"harmonic\" (the default for such a crank)",
                 scene.source, key)
         if rate0 == 0:
-            raise SceneError(f"a swinging crank needs ω ≠ 0 at the scene's angle to set the pace of its swing (driver.omega = 0)",
+            raise SceneError("a swinging crank needs ω ≠ 0 at the scene's angle to set the pace of its swing (driver.omega = 0)",
                              scene.source, "driver.omega")
         half, middle = 0.5 * limits.swing, 0.5 * (limits.lo + limits.hi)
         offset = math.remainder(x0 - middle, _TURN)

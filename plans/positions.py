@@ -182,7 +182,6 @@ def cycle_sweep(scene: Scene, structure=None, steps: int = CYCLE_STEPS, *, law: 
     full turn, a rocker input's swing and back, or a linear driver's stroke, in *steps* positions (the scene's own
     position alone when a linear driver has no stroke)."""
     from .analytic import solve
-    from .motion import driver_cycle
 
     if not _is_crank(scene) and scene.driver.stroke is None:
         return solve(scene, np.asarray([scene.driver.s], dtype=float), structure, allow_partial=True)

@@ -20,7 +20,6 @@ from plans.differentiation import (
     DiagramScales,
     OutputMotion,
     chords,
-    diagram_scales,
     kinematic_diagrams,
     kinematic_diagrams_of,
     smooth,

@@ -8,7 +8,6 @@ plan of a position is drawn at the one μ_F its page's heading states.
 from __future__ import annotations
 
 import re
-import xml.etree.ElementTree as ET
 
 import pytest
 

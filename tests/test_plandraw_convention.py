@@ -27,7 +27,7 @@ from plans.drawing import draw_plan
 from plans.drawing.blocks import plan_readings
 from plans.drawing.style import VECTOR_STYLE
 from plans.graphical import construct
-from plans.scene import example_names, example_path, load, loads
+from plans.scene import example_path, load, loads
 
 
 @pytest.fixture(scope="module")
@@ -168,9 +168,7 @@ def test_a_users_names_are_lettered_as_written_and_no_label_is_shared():
         assert c4 == "c4" + prime  # not c₄, the point C of link 4
         assert "₄" not in "".join(texts.values()) and "₂" not in "".join(texts.values())
         pole = next(a.get_text() for a in artists if a.get_gid() == f"{tag}-pole-label")
-        labels = [t for t in texts.values()]
         # every label on the plan names one thing: the pole, each image (those at the pole share its label)
-        names = [name.strip() for t in labels + [pole] for name in t.split(",")]
         drawn = {a.get_gid(): a.get_text() for a in artists if isinstance(a, Text) and re.match(f"{tag}-(image|end|pole-label)", a.get_gid() or "")}
         assert len(set(drawn.values())) == len(drawn), drawn
         if plan.kind == "velocity":

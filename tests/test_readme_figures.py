@@ -3,7 +3,6 @@
 import re
 from pathlib import Path
 
-import pytest
 
 from plans.cli import main
 from plans.scene import example_names, example_path

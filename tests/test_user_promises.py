@@ -2,7 +2,6 @@
 against its geometry, each language's branch words against the English they translate, and Kennedy's
 theorem taking the best-conditioned pair of lines."""
 
-import cmath
 import math
 import re
 
