@@ -66,7 +66,7 @@ def _texts(fig) -> list[str]:
 @pytest.mark.parametrize("lang", ["en", "ru"])
 def test_the_page_states_the_worked_example(lang):
     g = construct(load(example_path("slider-crank-loads")), precision=0.1)
-    pages = draw_forces_pages(g, lang=lang, header_lines=["φ = 60°"])
+    pages = draw_forces_pages(g, lambda mu: construct_force_plans(g, mu_F=mu), lang=lang, header_lines=["φ = 60°"])
     assert len(pages) == 1  # one group: the free bodies and both plans fit one page
     texts = " ".join(_texts(pages[0]))
     assert term("free_bodies", lang) in texts
@@ -88,7 +88,7 @@ def test_the_page_states_the_worked_example(lang):
 
 def test_a_crowded_mechanism_gets_a_second_page_for_its_plans():
     g = construct(load(example_path("six-bar-loads")), precision=0.1)
-    pages = draw_forces_pages(g, header_lines=["φ"])
+    pages = draw_forces_pages(g, lambda mu: construct_force_plans(g, mu_F=mu), header_lines=["φ"])
     assert len(pages) == 2
     assert pages[0].force_scales == {}
     assert set(pages[1].force_scales) == {"RPR(5,6)", "RRR(3,4)", "driver"}

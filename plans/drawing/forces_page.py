@@ -110,7 +110,7 @@ class _Measured:
         self.axes = self._Gone()
 
 
-def _plan_scales(fig, graphical, first, items, box, lang: str, sizes: dict) -> dict[str, float]:
+def _plan_scales(fig, plans_at, first, items, box, lang: str, sizes: dict) -> dict[str, float]:
     """Group -> the page's one round μ_F [N/mm]: the smallest with which every plan fits *box*.
 
     Each plan is fitted alone (the round μ_F that draws it largest within *box*); the largest of
@@ -118,14 +118,12 @@ def _plan_scales(fig, graphical, first, items, box, lang: str, sizes: dict) -> d
     (a plan of small forces is then drawn small: that is what it is at the page's μ_F).
     *sizes* keeps every plan drawing measured, by (group, μ_F), for the next layout tried.
     """
-    from ..forces.force_plans import construct_force_plans
-
     groups = [item for item in items if item != "lever"]
 
     def measured(group: str, mu: float) -> "_Measured":
         key = (group, mu, box[0])
         if key not in sizes:
-            plans = construct_force_plans(graphical, mu_F=mu)
+            plans = plans_at(mu)
             plan = next(p for p in plans.plans if p.group == group)
             moment = plans.balancing_moment if group == "driver" else None
             block = _block(fig, "fplan", lambda s: draw_force_plan_into(s, plan, lang=lang, legend=False, balancing_moment=moment, known=False, scale=False,
@@ -173,7 +171,7 @@ def _shrink(natural, box) -> float:
     return worst
 
 
-def _layout(fig, graphical, first, items, room: float, width: float, lang: str, sizes: dict, natural=None, limit: float = float("inf")):
+def _layout(fig, plans_at, first, items, room: float, width: float, lang: str, sizes: dict, natural=None, limit: float = float("inf")):
     """(worst shrink, columns, box, scales): the column count that draws the plans largest in *room* [mm].
 
     Layouts whose boxes the size model says shrink a plan more than *limit* (given *natural*) are not tried; None if none is left.
@@ -186,7 +184,7 @@ def _layout(fig, graphical, first, items, room: float, width: float, lang: str, 
         box = ((width - (columns - 1) * GAP) / columns, (room - GAP * (rows - 1)) / rows)
         if box[1] < 25.0 or (natural is not None and _shrink(natural, box) > limit):
             continue
-        scales = _plan_scales(fig, graphical, first, items, box, lang, sizes)
+        scales = _plan_scales(fig, plans_at, first, items, box, lang, sizes)
         growth = 1.0
         for plan in first.plans:
             growth *= plan.scale / scales[plan.group]
@@ -198,10 +196,8 @@ def _layout(fig, graphical, first, items, room: float, width: float, lang: str, 
     return best[1:]
 
 
-def _place_plans(fig, sketch, graphical, items, columns, box, scales, y_top: float, width: float, size, lang: str, lever) -> None:
-    from ..forces.force_plans import construct_force_plans
-
-    final = construct_force_plans(graphical, mu_F=next(iter(scales.values())) if scales else None)
+def _place_plans(fig, sketch, plans_at, items, columns, box, scales, y_top: float, width: float, size, lang: str, lever) -> None:
+    final = plans_at(next(iter(scales.values())) if scales else None)
     for n, item in enumerate(items):
         column, row = n % columns, n // columns
         if item == "lever":
@@ -216,7 +212,7 @@ def _place_plans(fig, sketch, graphical, items, columns, box, scales, y_top: flo
         block.place(sketch, x, y, size)
 
 
-def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: str | None = None, footer: str = "", lever=None) -> list:
+def draw_forces_pages(graphical, plans_at, *, lang: str = "en", header_lines=(), title: str | None = None, footer: str = "", lever=None) -> list:
     """The kinetostatic pages of one position, A4 portrait, from its graphical solution.
 
     One page: the free bodies across the top, the force plans under them,
@@ -228,6 +224,9 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
     ----------
     graphical : plans.graphical.GraphicalSolution
         The position's graphical solution (its scene has masses or loads).
+    plans_at : callable
+        μ_F [N/mm] (None: each plan's own round value) -> the position's force plans constructed at it
+        (:func:`plans.forces.force_plans.construct_force_plans`): the page tries scales, drawing never constructs.
     lang : str
     header_lines : sequence of str
         The page header's data lines (the position, as the other pages).
@@ -240,12 +239,10 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
     list of matplotlib.figure.Figure
         Each with ``force_scales``: group -> the μ_F [N/mm] its plan is drawn at (on that page; one value for all).
     """
-    from ..forces.force_plans import construct_force_plans
-
     size = A4
     width = size[0] - 2 * PAGE_MARGIN
     where = [decimal_comma(line, lang) for line in header_lines]
-    first = construct_force_plans(graphical)
+    first = plans_at(None)
     items = [plan.group for plan in first.plans]
     with drawing_rc():
         fig, sketch = new_page(size)
@@ -280,12 +277,12 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
         free = free_bodies(FREE_BODIES_SHARE)
         sizes: dict = {}
         natural = _natural(fig, first, lang)
-        shared = _layout(fig, graphical, first, items, room - free.height - GAP, width, lang, sizes, natural, limit=CRAMPED * 1.5)
+        shared = _layout(fig, plans_at, first, items, room - free.height - GAP, width, lang, sizes, natural, limit=CRAMPED * 1.5)
         if shared is not None and shared[0] <= CRAMPED:
             _, columns, box, scales = shared
             header(sketch, size, title or graphical.scene.title, where + [_heading(lang, ("free_bodies", "force_plans"), _one(scales))])
             free.place(sketch, PAGE_MARGIN + (width - free.width) / 2, top - free.height, size)
-            _place_plans(fig, sketch, graphical, items, columns, box, scales, top - free.height - GAP, width, size, lang, lever)
+            _place_plans(fig, sketch, plans_at, items, columns, box, scales, top - free.height - GAP, width, size, lang, lever)
             page_footer(sketch, footer)
             fig.force_scales = dict(scales)
             return [fig] + _lever_page(graphical, lever, lang, title, where, footer)
@@ -304,9 +301,9 @@ def draw_forces_pages(graphical, *, lang: str = "en", header_lines=(), title: st
         legend = _block(second, "flegend", lambda s: draw_force_legend_into(s, kinds, closing, lang))
         legend.place(sketch2, PAGE_MARGIN, bottom, size)
         room2 = top2 - bottom - legend.height - GAP
-        _, columns, box, scales = _layout(second, graphical, first, items, room2, width, lang, sizes)
+        _, columns, box, scales = _layout(second, plans_at, first, items, room2, width, lang, sizes)
         header(sketch2, size, title or graphical.scene.title, where + [_heading(lang, ("force_plans",), _one(scales))])
-        _place_plans(second, sketch2, graphical, items, columns, box, scales, top2, width, size, lang, lever)
+        _place_plans(second, sketch2, plans_at, items, columns, box, scales, top2, width, size, lang, lever)
         page_footer(sketch2, footer)
         second.force_scales = dict(scales)
     return [fig, second] + _lever_page(graphical, lever, lang, title, where, footer)

@@ -562,6 +562,7 @@ def build_handout(
         from ..drawing._canvas import fmt_number
         from ..drawing.forces_page import draw_forces_pages
         from ..drawing.svgblocks import figure_svg
+        from ..forces.force_plans import construct_force_plans
         from ..forces.lever import LeverError, joukowski_lever
 
         doc.section("forces")
@@ -572,7 +573,10 @@ def build_handout(
             except LeverError:
                 lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
             where = [f"{term('position', lang)} {h.index}:  {h.label}"] if multi else []
-            for n, page in enumerate(draw_forces_pages(h.graphical, lang=lang, header_lines=where, lever=lever)):
+            def plans_at(mu_F, graphical=h.graphical):
+                return construct_force_plans(graphical, mu_F=mu_F)
+
+            for n, page in enumerate(draw_forces_pages(h.graphical, plans_at, lang=lang, header_lines=where, lever=lever)):
                 mu_f = set(page.force_scales.values())
                 note = f"$μ_{{F}}$ = {fmt_number(mu_f.pop())} N/mm" if len(mu_f) == 1 else None
                 doc.full_page(f"forces-{h.index}-{n}", figure_svg(page, lang), scale_note=note)
