@@ -85,7 +85,7 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
     return [[decimal_comma(cell, lang) for cell in row] for row in rows]
 
 
-def centres_rules(lang: str, frame: str = "1") -> list[str]:
+def centres_rules(lang: str, frame: str) -> list[str]:
     """The two rules of the method, each with its formula (``$…$``): ω from the centres, v of a point from its link's centre.
 
     *frame*: the frame's number (:attr:`plans.scene.Scene.frame_number`), as the centres' labels write it.

@@ -826,7 +826,7 @@ def _series(analytic, quantity: str, valid, swing: bool = False, lang: str = "en
         return [(_name(quantity[0], f"{p},{quantity[1]}"), _finite(getattr(getattr(analytic.points[p], quantity[0]), part), valid)) for p in points]
     pairs = [p.name for p in scene.prismatics if p.name in analytic.sliders]
     # a pair named in words by the scene (a sleeve) in the page's language ([names]), as written otherwise
-    called = {n: scene.name_in(n, lang) if hasattr(scene, "name_in") else n for n in pairs}
+    called = {n: scene.name_in(n, lang) for n in pairs}
     if quantity == "s":
         return [(_name("s", called[n]), _finite(np.asarray(analytic.sliders[n].s) * 1e3, valid)) for n in pairs]
     if quantity == "coriolis":
