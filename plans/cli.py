@@ -739,7 +739,7 @@ def _kinematic_diagrams(scene: Scene, args) -> list:
     except PlansError as exc:
         _warn(f"no kinematic diagrams of the output link: {exc}")
         return []
-    return diagrams.save(Path(args.plot) / f"kinematic.{args.format}", lang=args.lang, title=scene.title)
+    return diagrams.save(Path(args.plot) / f"kinematic.{args.format}", lang=args.lang, title=scene.title_in(args.lang))
 
 
 def _force_diagrams(scene: Scene, args, forces, cycle) -> Path:

@@ -541,7 +541,7 @@ def draw_centres(result, k_l: float | None = None, lang: str = "en"):
     k_l = k_l or scene.scales.k_l or round_scale(result.size)
     fig = new_figure()
     ax = fig.add_axes([0, 0, 1, 1])
-    width, height = draw_centres_into(ax, result, k_l, lang, title=f"{term('instant_centres', lang)} — {user_text(scene.title)}")
+    width, height = draw_centres_into(ax, result, k_l, lang, title=f"{term('instant_centres', lang)} — {user_text(scene.title_in(lang))}")
     fig.set_size_inches(width / 25.4, height / 25.4)
     ax.set_position([0.0, 0.0, 1.0, 1.0])
     return fig

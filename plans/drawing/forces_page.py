@@ -280,7 +280,7 @@ def draw_forces_pages(graphical, plans_at, *, lang: str = "en", header_lines=(),
         shared = _layout(fig, plans_at, first, items, room - free.height - GAP, width, lang, sizes, natural, limit=CRAMPED * 1.5)
         if shared is not None and shared[0] <= CRAMPED:
             _, columns, box, scales = shared
-            header(sketch, size, title or graphical.scene.title, where + [_heading(lang, ("free_bodies", "force_plans"), _one(scales))])
+            header(sketch, size, title or graphical.scene.title_in(lang), where + [_heading(lang, ("free_bodies", "force_plans"), _one(scales))])
             free.place(sketch, PAGE_MARGIN + (width - free.width) / 2, top - free.height, size)
             _place_plans(fig, sketch, plans_at, items, columns, box, scales, top - free.height - GAP, width, size, lang, lever)
             page_footer(sketch, footer)
@@ -289,7 +289,7 @@ def draw_forces_pages(graphical, plans_at, *, lang: str = "en", header_lines=(),
         # two pages: the free bodies larger on the first, the plans and their legend on the second
         free.axes.remove()
         legend.axes.remove()
-        header(sketch, size, title or graphical.scene.title, where + [_heading(lang, ("free_bodies",))])
+        header(sketch, size, title or graphical.scene.title_in(lang), where + [_heading(lang, ("free_bodies",))])
         top = size[1] - header_height(where + [_heading(lang, ("free_bodies",))])
         room = top - bottom
         free = free_bodies(1.0)
@@ -302,7 +302,7 @@ def draw_forces_pages(graphical, plans_at, *, lang: str = "en", header_lines=(),
         legend.place(sketch2, PAGE_MARGIN, bottom, size)
         room2 = top2 - bottom - legend.height - GAP
         _, columns, box, scales = _layout(second, plans_at, first, items, room2, width, lang, sizes)
-        header(sketch2, size, title or graphical.scene.title, where + [_heading(lang, ("force_plans",), _one(scales))])
+        header(sketch2, size, title or graphical.scene.title_in(lang), where + [_heading(lang, ("force_plans",), _one(scales))])
         _place_plans(second, sketch2, plans_at, items, columns, box, scales, top2, width, size, lang, lever)
         page_footer(sketch2, footer)
         second.force_scales = dict(scales)
@@ -339,7 +339,7 @@ def _lever_page(graphical, lever, lang: str, title, lines, footer: str) -> list:
     width = size[0] - 2 * PAGE_MARGIN
     with drawing_rc():
         fig, sketch = new_page(size)
-        top = header(sketch, size, title or graphical.scene.title, list(lines) + [_heading(lang, ("joukowski_lever",))])
+        top = header(sketch, size, title or graphical.scene.title_in(lang), list(lines) + [_heading(lang, ("joukowski_lever",))])
         block = _block(fig, "lever", lambda s: draw_lever_into(s, lever, lang=lang))
         block.place(sketch, PAGE_MARGIN + max(0.0, (width - block.width) / 2), top - block.height, size)
         page_footer(sketch, footer)

@@ -667,7 +667,7 @@ def _choose_places(drawings: dict, texts, tb_h: float):
 def _sheet_texts(solution, *, formula, table, equations, lang, title, branches, small: bool = False):
     """The title block's rows and their heights, and the text blocks (equations, readings side by side or stacked, table)."""
     table = [[decimal_comma(cell, lang) for cell in row] for row in translate_table(table, lang)] if table else table
-    title = user_text(title if title is not None else (getattr(solution.scene, "title", "") or ""))
+    title = user_text(title if title is not None else (solution.scene.title_in(lang) if hasattr(solution.scene, "title_in") else getattr(solution.scene, "title", "") or ""))
     # each row broken at spaces into lines that fit the title block (a position sheet's title is long)
     room = TITLE_BLOCK_W - 2 * TITLE_BLOCK_PAD - 2.0
     tb_rows = [(_wrapped(decimal_comma(t, lang) if k else t, size, weight, room), size, weight)

@@ -29,7 +29,7 @@ __all__ = ["write_position_sheets", "draw_position_sheet", "position_title"]
 
 def position_title(run, total: int, lang: str = "en") -> str:
     """The title of a position's sheet: the scene's title, the position's number and its driver position."""
-    return f"{user_text(run.scene.title)} — {term('position', lang)} {run.index} ({run.index + 1}/{total}): {run.label}"
+    return f"{user_text(run.scene.title_in(lang))} — {term('position', lang)} {run.index} ({run.index + 1}/{total}): {run.label}"
 
 
 def draw_position_sheet(run, *, lang: str = "en", total: int | None = None):

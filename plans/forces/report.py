@@ -176,7 +176,7 @@ def forces_table(run: KinetostaticRun, lang: str = "en") -> str:
     rows = _rows(run)
     out = io.StringIO()
     w = out.write
-    w(f"{scene.title}\n")
+    w(f"{scene.title_in(lang)}\n")
     w(f"{term('kinetostatics', lang)}: {analytic.structure.formula}\n")
     driver = scene.driver
     if isinstance(driver, Crank):

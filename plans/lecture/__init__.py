@@ -145,7 +145,7 @@ class Animation:
         if self.run.motion is not None:  # the driver's law over the cycle, in its own words and numbers
             subtitle.append(self.run.motion.law.describe(self.lang, self.run.scene.driver.link))
         return lecture_html(
-            title=self.run.scene.title,
+            title=self.run.scene.title_in(self.lang),
             subtitle=subtitle,
             lang=self.lang,
             frames=svgs,
