@@ -44,10 +44,9 @@ from dataclasses import dataclass, field, replace
 
 from ..graphical.scales import round_up
 from ..i18n import term
-from .._text import decimal_comma
-from .equations import step_lines
-from .typesetting import compile_document, image, mixed, string, text
-from .words import assembly_lines, formula_words, namer, units
+from .document import A4_PORTRAIT, Document, GUTTER, SMALL_PT, TEXT_PT
+from .typesetting import compile_document
+from .words import assembly_lines, formula_words, namer
 
 __all__ = ["Handout", "build_handout", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
 
@@ -57,13 +56,8 @@ ORDER = ("data", "positions", "velocity-equations", "velocity-plans", "accelerat
 #: How many acceleration plans a handout draws unless asked: one of the working stroke, one of the idle.
 ACCELERATIONS_DEFAULT = 2
 
-# page geometry [mm]: A4 portrait, a frame 20 mm from the bound edge, 5 mm from the others, a title block inside it
-PAGE = (210.0, 297.0)
-FRAME = (20.0, 5.0)
-TEXT_LEFT, TEXT_RIGHT, TEXT_TOP, TEXT_BOTTOM = 25.0, 10.0, 10.0, 36.0
-TEXT_WIDTH = PAGE[0] - TEXT_LEFT - TEXT_RIGHT
-TEXT_HEIGHT = PAGE[1] - TEXT_TOP - TEXT_BOTTOM
-GUTTER = 5.0
+# the text area of the handout's A4 page [mm]
+TEXT_WIDTH, TEXT_HEIGHT = A4_PORTRAIT.text_width, A4_PORTRAIT.text_height
 #: the boxes [mm] the drawings are fitted to: the plan of positions (under the data), a velocity plan
 #: (two across, three down a page; one position's larger); the acceleration plans' cells: :func:`_acceleration_cells`
 POSITIONS_BOX = (TEXT_WIDTH, 150.0)
@@ -77,8 +71,6 @@ WIDE_SHARE = 1 / 3
 CENTRES_PAGE_TEXT = 42.0
 #: the page of cycle diagrams [mm]: the text area (a little short of it), so that it prints at 100 %, its 8 pt type 8 pt
 DIAGRAM_PAGE = (TEXT_WIDTH, TEXT_HEIGHT - 4.0)
-TEXT_PT = 9.5
-SMALL_PT = 8.0
 
 
 @dataclass
@@ -321,7 +313,7 @@ def build_handout(
     multi = positions is not None
     solved = [r for r in run.runs if r.ok]
     name = namer(scene, lang)
-    doc = _Document(scene, lang)
+    doc = Document(scene, lang)
 
     def at(r, ks):
         g = construct(r.scene, run.structure, k_l=ks["k_l"], k_v=ks["k_v"], k_a=ks.get("k_a"), precision=run.precision, check_scales=False)
@@ -743,216 +735,3 @@ def data_lines(scene, lang: str) -> list[str]:
     return scene_data_lines(scene, lang)
 
 
-# --- the Typst document -------------------------------------------------------------------------
-
-
-#: a symbol with a subscript written in plain text (``t_w``), or a ``$…$`` part left as it is
-_SUBSCRIPTED = re.compile(r"\$[^$]*\$|(?<![\w\\])([A-Za-zα-ωΑ-Ω])_([A-Za-z0-9]+)(?!\w)")
-
-
-class _Document:
-    """Typst source built section by section: text, equations, tables and drawings (SVG inputs)."""
-
-    def __init__(self, scene, lang: str):
-        self.scene, self.lang = scene, lang
-        self.body: list[str] = []
-        self.images: dict[str, bytes] = {}
-        self.sizes: dict[str, tuple[float, float]] = {}
-        self.order: list[str] = []
-        self.plate: dict = {}
-        self.per_position = None
-
-    # words
-    def words(self, line: str) -> str:
-        """A line of the program's text (with ``$…$`` math) as markup in the page's language, names and units."""
-        for name in self.scene.names:
-            line = re.sub(rf"(?<![\w.]){re.escape(name)}(?!\w)", lambda m: self.scene.name_in(name, self.lang), line)
-        line = _SUBSCRIPTED.sub(lambda m: m.group(0) if m.group(0).startswith("$") else f"${m.group(1)}_{{{m.group(2)}}}$", line)
-        return mixed(units(decimal_comma(line, self.lang), self.lang))
-
-    def section(self, name: str) -> None:
-        self.order.append(name)
-
-    def heading(self, words: str, level: int = 2, new_page: bool = False) -> None:
-        if new_page and self.body:
-            self.body.append("#pagebreak(weak: true)")
-        self.body.append("=" * level + " " + self.words(words))
-
-    def line_markup(self, words: str, size: float = TEXT_PT) -> str:
-        return f"#text(size: {size}pt)[{self.words(words)}]"
-
-    def line(self, words: str, size: float = TEXT_PT) -> None:
-        self.body.append(self.line_markup(words, size) + "\n")
-
-    def headed_legend(self, heading: str, under: str, key: str, legend) -> None:
-        """A heading and a line under it on the left, a drawing's legend on the right (one band across the page)."""
-        self.body.append(f"#grid(columns: (1fr, auto), column-gutter: {GUTTER}mm, align: (left + top, right + top),\n"
-                         f"  [#heading(level: 2, {string(heading)})\n{under}], [#{self.add_image(key, legend)}])\n")
-
-    def lines(self, lines, size: float = TEXT_PT) -> None:
-        for line in lines:
-            self.line(line, size)
-
-    def scale_markup(self, key: str, value: float) -> str:
-        from ..drawing._canvas import fmt_number
-        from ..drawing.numerals import scale_caption
-
-        unit = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}[key]
-        return self.line_markup(scale_caption(key, fmt_number(value), unit, self.lang), size=TEXT_PT)
-
-    def scale_words(self, key: str, value: float) -> str:
-        """``k_l = 0,006 m/mm`` as markup (the title block's words for a scale factor)."""
-        from ..drawing._canvas import fmt_number
-
-        unit = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}[key]
-        return self.words(f"${key[0]}_{{{key[2]}}}$ = {fmt_number(value)} {unit}")
-
-    def scale_line(self, key: str, value: float) -> None:
-        self.body.append(self.scale_markup(key, value) + "\n")
-
-    def listing(self, heading: str, entries) -> None:
-        cells = ", ".join(f"[{self.words(e)}]" for e in entries)
-        self.body.append(f"#text(weight: \"bold\")[{text(heading)}]\n#text(size: {SMALL_PT}pt)[#grid(columns: 3, column-gutter: 6mm, row-gutter: 1.6mm, {cells})]\n")
-
-    def add_image(self, key: str, block) -> str:
-        self.images[key] = block.svg
-        self.sizes[key] = (block.width, block.height)
-        return image(key, block.width)
-
-    def figure(self, key: str, block) -> None:
-        if block is None:
-            return
-        self.body.append(f"#align(center)[#{self.add_image(key, block)}]\n")
-
-    def full_page(self, key: str, block, scale_note: str | None = None) -> None:
-        """A drawing that is a page of its own (a page of diagrams), fitted to the text area.
-
-        *scale_note*: a scale the page's drawing adds to the title block's (a force plans' μ_F).
-        """
-        scale = min(TEXT_WIDTH / block.width, TEXT_HEIGHT / block.height, 1.0)
-        self.images[key] = block.svg
-        self.sizes[key] = (block.width * scale, block.height * scale)
-        note = f"#metadata([{self.words(scale_note)}]) <plans-page-scale>\n" if scale_note else ""
-        self.body.append(f"#pagebreak(weak: true)\n{note}#align(center)[#image(bytes(sys.inputs.at({string(key)})), format: \"svg\", width: {block.width * scale:.3f}mm)]\n")
-
-    def grid(self, cells, columns: int) -> None:
-        """Drawings with captions, *columns* across, flowing over pages (a cell never split)."""
-        items = []
-        column = 0  # where the next cell falls in its row (a cell across the page starts a row of its own)
-        for caption, drawing, extra, *across in cells:
-            parts = [f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(caption)}]"]
-            if extra:
-                parts.append(f"#text(size: {SMALL_PT}pt)[{self.words(extra)}]")
-            if drawing is not None:
-                key, block = drawing
-                parts.append(f"#align(center)[#{self.add_image(key, block)}]")
-            cell = "block(breakable: false, width: 100%)[" + " \\\n".join(parts[:-1] + [parts[-1]]) + "]"
-            if across and across[0]:
-                if column:
-                    items.append(f"grid.cell(colspan: {columns - column})[]")
-                items.append(f"grid.cell(colspan: {columns})[#{cell}]")
-                column = 0
-            else:
-                items.append(cell)
-                column = (column + 1) % columns
-        self.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 4mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
-
-    def equations(self, heading: str, steps, name, new_page: bool = False) -> None:
-        """The vector equations of the plans' steps under *heading*, with the note on the underlines: one block,
-        never parted from its heading."""
-        from .words import group_words
-
-        if new_page and self.body:
-            self.body.append("#pagebreak(weak: true)")
-        rows = []
-        for step in steps:
-            if not step.equations:
-                continue
-            who = f"{term('driver', self.lang)}" if step.group == "driver" else group_words(step.group, self.lang)
-            for k, (eq, cond) in enumerate(step_lines(step, name)):
-                first = f"[{text(who)}]" if k == 0 else "[]"
-                cond_cell = f"[${cond}$]" if cond else "[]"
-                rows.append(f"{first}, [${eq}$], {cond_cell}")
-        self.body.append(f"#block(breakable: false)[#heading(level: 2)[{self.words(heading)}]\n"
-                         f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]\n\n"
-                         f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.3mm), align: left + horizon,\n  "
-                         + ",\n  ".join(rows) + ")]]\n")
-
-    def tables(self, tables, aligns: str = "(left, right, right, right, right)") -> None:
-        """Tables of values, two columns of them on a page (*aligns*: Typst's alignment of the columns)."""
-        parts = []
-        for heading, rows in tables:
-            if not rows:
-                continue
-            header = rows[0]
-            ncol = len(header)
-            body = []
-            for i, row in enumerate(rows):
-                cells = list(row) + [""] * (ncol - len(row))
-                weight = "bold" if i == 0 else "regular"
-                body.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in cells))
-            parts.append(f"block(breakable: false)[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{self.words(heading)}] \\\n"
-                         f"#table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns},"
-                         f" table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]")
-        self.body.append(f"#text(size: {SMALL_PT}pt)[#columns(2, gutter: {GUTTER}mm)[" + "\n".join("#" + p for p in parts) + "]]\n")
-
-    def loop_block(self, block) -> None:
-        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(formula_words(block.title))}]\n")
-        for line in block.lines:
-            self.body.append(f"#text(size: {SMALL_PT}pt)[{self.words(line)}]\n")
-
-    def beside(self, drawing, table, lines) -> None:
-        key, block = drawing
-        rows = []
-        for i, row in enumerate(table):
-            weight = "bold" if i == 0 else "regular"
-            rows.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in row))
-        ncol = len(table[0]) if table else 1
-        tab = (f"table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: (left, left, right, right, right), table.hline(stroke: 0.7pt), "
-               + ", table.hline(stroke: 0.4pt), ".join([rows[0], ", ".join(rows[1:])]) + ", table.hline(stroke: 0.7pt))") if rows else "[]"
-        words = " \\\n".join(self.words(line) for line in lines)
-        self.body.append(f"#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {self.add_image(key, block)}, "
-                         f"text(size: {SMALL_PT}pt)[#{tab} \\\n{words}])\n")
-
-    # the whole
-    def source(self) -> str:
-        lang = self.lang
-        scales = [self.scale_words(key, self.plate[key]) for key in ("k_v", "k_a") if self.plate.get(key) is not None]
-        # k_l from a state: the instant centres' pages may draw at a coarser one (and say so on the page)
-        plate_kl = self.scale_words("k_l", self.plate["k_l"]) if self.plate.get("k_l") is not None else ""
-        if plate_kl:
-            scale_text = "#context plate-kl.get()" + (self.words(";   ") + self.words(";   ").join(scales) if scales else "")
-        else:
-            scale_text = self.words(";   ").join(scales) if scales else self.words("—")
-        # a page that states a scale of its own (a force plans' μ_F) adds it here
-        scale_text += ("#context { let page = here().page(); let notes = query(<plans-page-scale>).filter(m => m.location().page() == page);"
-                       " if notes.len() > 0 [;   #notes.first().value] }")
-        if self.per_position is not None:
-            scale_text += " " + text("(" + term("scales_each_position", lang) + ")")
-        sheet = f"{text(term('sheet', lang))} #context counter(page).get().first() {text(term('of_sheets', lang))} #context counter(page).final().first()"
-        title_block = (
-            f"table(columns: (1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
-            f" table.cell(colspan: 2)[#text(size: 10pt, weight: \"bold\")[{text(term('plate_title', lang))}] — #text(size: 10pt)[{text(self.scene.title_in(lang))}]],"
-            f" [#text(size: 9pt)[{sheet}]],"
-            f" table.cell(colspan: 3)[#text(size: 8.5pt)[{text(term('scale_factors', lang))}: {scale_text}]],"
-            f" [#text(size: 8pt)[{text(term('drawn_by', lang))}:]], [#text(size: 8pt)[{text(term('checked_by', lang))}:]], [#text(size: 8pt)[{text(term('date', lang))}:]])"
-        )
-        inner_w = PAGE[0] - FRAME[0] - FRAME[1]
-        inner_h = PAGE[1] - 2 * FRAME[1]
-        head = f"""#set document(date: none)
-#let plate-kl = state("plate-kl", [{plate_kl}])
-#set page(width: {PAGE[0]}mm, height: {PAGE[1]}mm, margin: (left: {TEXT_LEFT}mm, right: {TEXT_RIGHT}mm, top: {TEXT_TOP}mm, bottom: {TEXT_BOTTOM}mm),
-  background: place(top + left, dx: {FRAME[0]}mm, dy: {FRAME[1]}mm, rect(width: {inner_w}mm, height: {inner_h}mm, stroke: 0.8pt)),
-  foreground: place(bottom + left, dx: {FRAME[0]}mm, dy: -{FRAME[1]}mm, block(width: {inner_w}mm, {title_block})))
-#set text(font: {string(_FONT)}, size: {TEXT_PT}pt, lang: {string(lang)})
-#show math.equation: set text(font: {string(_MATH)})
-#set par(leading: 0.5em, spacing: 0.7em)
-#show heading: set block(above: 1.1em, below: 0.6em)
-#show heading.where(level: 1): set text(size: 13pt)
-#show heading.where(level: 2): set text(size: 11pt)
-#show heading.where(level: 3): set text(size: 9.5pt)
-"""
-        return head + "\n".join(self.body)
-
-
-from .typesetting import FONT as _FONT, MATH_FONT as _MATH  # noqa: E402
