@@ -28,7 +28,7 @@ Example
 >>> import plans
 >>> scene = plans.load(plans.example_path("slider-crank"))
 >>> solution = plans.solve(scene)
->>> round(solution.points["B"].v[0].real, 4)            # m/s
+>>> float(round(solution.points["B"].v[0].real, 4))     # m/s
 -16.0407
 """
 
