@@ -688,6 +688,8 @@ def _sweep(args) -> int:
     for message in [str(x) for x in report.lost] + [str(x) for x in crossed]:
         _warn(message)
     stated = [cycle.law.describe(args.lang, driver.link, **({"phase": float(cycle.phase[0])} if cycle.law.kind == "harmonic" else {}))]
+    if cycle.law.given_note(args.lang, driver.link):  # the scene's own ε (a), not the cycle's: said so beside the law
+        stated[0] += "; " + cycle.law.given_note(args.lang, driver.link)
     found = strokes(scene, args.law, analytic.structure)
     if found is not None:
         stated += found.summary(args.lang)

@@ -428,6 +428,11 @@ class DriverLaw:
     source : str
         Where the law came from: ``"scene"`` (``[driver] law``), ``"option"``
         (a program's or the CLI's ``--law``) or ``"default"``.
+    given_acceleration : float
+        The scene's ε [rad/s²] (or a [m/s²]) at its instant.  Under
+        ``"constant"`` the cycle's acceleration is 0 whatever it is, and a
+        non-zero one is stated beside the law as the given instant's only
+        (:meth:`given_note`), so that a page never shows both unexplained.
     """
 
     kind: str
@@ -438,6 +443,7 @@ class DriverLaw:
     limits: Limits | None = None
     frequency: float = 0.0
     source: str = "default"
+    given_acceleration: float = 0.0
 
     @property
     def sense(self) -> float:
@@ -455,6 +461,20 @@ class DriverLaw:
             square = self.rate0**2 + 2 * self.acceleration * (x - self.x0)
             return self.sense * np.sqrt(np.maximum(square, 0.0))
         raise ValueError("a harmonic swing's rate depends on the stroke: use Cycle.rate")
+
+    def given_note(self, lang: str = "en", link: str | None = None) -> str:
+        """What the scene's own ε (a) is under a law that does not keep it, in *lang*: ``"the given ε₂ = 5 rad/s²
+        holds at the given instant only"`` under ``"constant"`` with a given ε ≠ 0; else empty.  Said beside
+        :meth:`describe` wherever the scene's data are printed with the law (the handout's data, ``plans sweep``)."""
+        if self.kind != "constant" or self.given_acceleration == 0:
+            return ""
+        from ._text import subscript
+        from .i18n import term
+
+        a, unit = ("ε", "rad/s²") if self.crank else ("a", "m/s²")
+        value = f"{self.given_acceleration:.4g}".replace("-", "\u2212")
+        value = value.replace(".", ",") if lang in ("sr", "ru", "bg", "sl") else value
+        return term("law_given_instant_only", lang).format(q=f"{a}{subscript(link) if link else ''} = {value} {unit}")
 
     def describe(self, lang: str = "en", link: str | None = None, phase: float | None = None) -> str:
         """The law in a few words of *lang*, with its numbers: ``"driver law: constant ω₂ = 10 rad/s (ε₂ = 0)"``.
@@ -547,7 +567,7 @@ def driver_law(scene: Scene, law: str | None = None, structure=None) -> DriverLa
             raise SceneError(f"under law = \"constant\" the driver's {what} is the scene's, 0: it does not move and has no cycle; "
                              f"give driver.{'omega' if crank else 'velocity'} ≠ 0, or law = \"uniform\" with an acceleration",
                              scene.source, key)
-        return DriverLaw("constant", crank, x0, rate0, 0.0, source=source)
+        return DriverLaw("constant", crank, x0, rate0, 0.0, source=source, given_acceleration=acceleration)
     if rate0 == 0 and acceleration == 0:
         raise SceneError("under law = \"uniform\" a driver with no rate and no acceleration does not move", scene.source, key)
     return DriverLaw("uniform", crank, x0, rate0, acceleration, source=source)

@@ -55,7 +55,8 @@ def test_the_quick_return_stroke_takes_a_row_of_its_own(plates):
     assert max(lengths) > 2.5 * statistics.median(lengths)
 
 
-_HEADING = re.compile(r'block\(breakable: false\)\[#text\(weight: "bold", size: [0-9.]+pt\)\[#"([^"]*)"\]')
+#: a table's caption (the first cell of its repeated header)
+_HEADING = re.compile(r'table\.cell\(colspan: \d+[^\[]*\)\[#text\(weight: "bold", size: [0-9.]+pt\)\[#"([^"]*)"\]')
 #: a graphical acceleration's row in a table: a, ε, aʳ, aᵏ (typeset symbols)
 _ACCELERATION_ROW = re.compile(r"\$(a_|a\^|epsilon)")
 

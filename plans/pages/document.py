@@ -195,7 +195,12 @@ class Document:
                          + ",\n  ".join(rows) + ")]]\n")
 
     def tables(self, tables, aligns: str = "(left, right, right, right, right)") -> None:
-        """Tables of values, two columns of them on a page (*aligns*: Typst's alignment of the columns)."""
+        """Tables of values, two columns of them on a page (*aligns*: Typst's alignment of the columns).
+
+        A table may break between its rows (at a column's or a page's foot), its caption and its header row
+        repeated above the rest: a table that may not break cannot be set in a column shorter than itself
+        (Typst then sets every row on one line, one over the other), and a column that starts low on a page
+        is that short."""
         parts = []
         for heading, rows in tables:
             if not rows:
@@ -207,9 +212,12 @@ class Document:
                 cells = list(row) + [""] * (ncol - len(row))
                 weight = "bold" if i == 0 else "regular"
                 body.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in cells))
-            parts.append(f"block(breakable: false)[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{self.words(heading)}] \\\n"
-                         f"#table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns},"
-                         f" table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]")
+            caption = (f"table.cell(colspan: {ncol}, align: left, inset: (x: 0mm, y: 0.9mm))"
+                       f"[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{self.words(heading)}]]")
+            rows_after = (", " + ", ".join(body[1:])) if len(body) > 1 else ""
+            parts.append(f"table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns},"
+                         f" table.header({caption}, table.hline(stroke: 0.7pt), {body[0]}, table.hline(stroke: 0.4pt))"
+                         f"{rows_after}, table.hline(stroke: 0.7pt))")
         self.body.append(f"#text(size: {SMALL_PT}pt)[#columns(2, gutter: {GUTTER}mm)[" + "\n".join("#" + p for p in parts) + "]]\n")
 
     def loop_block(self, block) -> None:

@@ -249,6 +249,22 @@ def choose_accelerations(run, asked) -> list[int]:
     return sorted(s[len(s) // 2].index for s in strokes)
 
 
+def _with_given_note(lines: list[str], run, lang: str) -> list[str]:
+    """The cycle's *lines* with the scene's own ε (a) said to be its instant's only, under the law's lines, where
+    the law does not keep it (:meth:`plans.motion.DriverLaw.given_note`): the data above give it, the law a = 0."""
+    note = run.motion.law.given_note(lang, run.scene.driver.link) if run.motion is not None else ""
+    if not note:
+        return lines
+    head = term("driver_law", lang)
+    at = next((i for i, line in enumerate(lines) if line.startswith(head)), None)
+    if at is None:
+        return lines
+    end = at + 1
+    while end < len(lines) and lines[end].startswith("    "):  # the law's wrapped lines
+        end += 1
+    return lines[:end] + [f"    ({note})"] + lines[end:]
+
+
 def _first_page_room(scene, lang: str, r) -> float:
     """The height [mm] the first page of a one-position handout leaves its two drawings (the mechanism and the
     velocity plan): the text height less the data, the headings and the velocity equations, line by line."""
@@ -451,7 +467,8 @@ def build_handout(
     doc.heading(f"{term('plate_title', lang)}: {scene.title_in(lang)}", level=1)
     from .words import cycle_lines
 
-    doc.lines([formula_words(line) for line in data_lines(scene, lang) + (cycle_lines(run, lang) if multi else [])], size=TEXT_PT)
+    doc.lines([formula_words(line) for line in data_lines(scene, lang) + (_with_given_note(cycle_lines(run, lang), run, lang) if multi else [])],
+              size=TEXT_PT)
     doc.line(f"{term('structural_formula', lang)}:  {formula_words(run.structure.formula)}", size=TEXT_PT)
     branch_words = assembly_lines(sample.analytic.branches, scene, lang, sample.graphical.positions)
     if branch_words:

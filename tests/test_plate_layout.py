@@ -1,0 +1,181 @@
+"""The handout's page flow as a teacher reviewed it (issue 20 §1): no overprinted table, no orphaned heading, no
+near-empty page, a single position's drawings large, and data that do not contradict each other.
+
+Expected values come from the pages themselves as a reader sees them (word boxes read from the PDF by
+poppler's ``pdftotext -bbox-layout``) and from the scene files' numbers, not from the code under test.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+import tempfile
+import unicodedata
+from pathlib import Path
+from xml.etree import ElementTree
+
+import pytest
+
+import plans
+from plans.handout import handout
+from plans.motion import driver_cycle
+from plans.pages.document import A4_PORTRAIT, Document
+from plans.pages.typesetting import compile_document
+
+pytestmark = [pytest.mark.filterwarnings("ignore"),
+              pytest.mark.skipif(shutil.which("pdftotext") is None, reason="poppler's pdftotext reads the pages")]
+
+_XHTML = "{http://www.w3.org/1999/xhtml}"
+PT = 25.4 / 72  # mm per PDF point
+
+
+def _lines(pdf: bytes) -> list[list[tuple[float, float, float, float, str]]]:
+    """Every page's text lines as (x0, y0, x1, y1 [pt from the page's top left], words), as poppler finds them."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "h.pdf"
+        path.write_bytes(pdf)
+        out = subprocess.run(["pdftotext", "-bbox-layout", str(path), "-"], capture_output=True, text=True, check=True).stdout
+    root = ElementTree.fromstring(re.sub(r"<!DOCTYPE[^>]*>", "", out))
+    pages = []
+    for page in root.iter(_XHTML + "page"):
+        lines = []
+        for line in page.iter(_XHTML + "line"):
+            words = " ".join(w.text or "" for w in line.iter(_XHTML + "word"))
+            lines.append((float(line.get("xMin")), float(line.get("yMin")), float(line.get("xMax")), float(line.get("yMax")),
+                          unicodedata.normalize("NFKC", words)))
+        pages.append(lines)
+    return pages
+
+
+def _overprinted(lines) -> list:
+    """Pairs of text lines that share a place on the page: their boxes overlap across and more than half of the
+    lower one's height up and down (two rows of a table set on one line)."""
+    bad = []
+    for i, a in enumerate(lines):
+        for b in lines[i + 1:]:
+            if min(a[2], b[2]) - max(a[0], b[0]) <= 1.0:
+                continue
+            if min(a[3], b[3]) - max(a[1], b[1]) > 0.5 * min(a[3] - a[1], b[3] - b[1]):
+                bad.append((a[4], b[4]))
+    return bad
+
+
+# --- a table never overprinted -------------------------------------------------------------------
+
+
+def test_a_table_starting_low_on_a_page_breaks_instead_of_overprinting():
+    """Tables in two columns that start 60 mm above the page's foot, each longer than that: every row on a line
+    of its own (a table that may not break was set with all its rows on one line, one over the other)."""
+    doc = Document(plans.load(plans.example_path("four-bar")), "en")
+    doc.plate = {"k_l": 0.002}
+    doc.body.append(f"#block(height: {A4_PORTRAIT.text_height - 60:.1f}mm, width: 100%)")
+    rows = [["quantity", "graphical", "analytic"]] + [[f"row {i}", f"{i}.5", f"{i}.25"] for i in range(24)]
+    doc.tables([("first table", rows), ("second table", rows)], aligns="(left, right, right)")
+    pages = _lines(compile_document(doc.source(), doc.images, "pdf"))
+    assert len(pages) == 2
+    text = " ".join(line[4] for page in pages for line in page)
+    for i in range(24):
+        assert text.count(f"row {i} ") == 2, i
+    for n, page in enumerate(pages, start=1):
+        assert not _overprinted(page), (n, _overprinted(page)[:3])
+
+
+# --- the three handouts the teacher reviewed -------------------------------------------------------
+
+HANDOUTS = {
+    "quick-return-sr": ("quick-return", 12, "sr"),
+    "linear-arm-bg": ("linear-arm", 8, "bg"),
+    "six-bar-en": ("six-bar", None, "en"),
+}
+
+
+@pytest.fixture(scope="module")
+def reviewed():
+    """name -> (Handout, PDF, lines of every page) of the handouts issue 20 was reviewed on (with centres)."""
+    out = {}
+    for key, (name, positions, lang) in HANDOUTS.items():
+        doc = handout(plans.load(plans.example_path(name)), positions=positions, lang=lang, centres=True)
+        pdf = doc.pdf()
+        out[key] = (doc, pdf, _lines(pdf))
+    return out
+
+
+@pytest.mark.parametrize("key", list(HANDOUTS))
+def test_no_two_text_lines_of_a_handout_page_overlap(reviewed, key):
+    _, _, pages = reviewed[key]
+    for n, page in enumerate(pages, start=1):
+        assert not _overprinted(page), (key, n, _overprinted(page)[:3])
+
+
+# --- the data do not contradict each other ---------------------------------------------------------
+
+
+@pytest.mark.parametrize("lang, given", [("en", "the given a₂ = 2 m/s² holds at the given instant only"),
+                                         ("bg", "зададеното a₂ = 2 m/s² се отнася само за зададения момент"),
+                                         ("sr", "задато a₂ = 2 m/s² важи само у задатом тренутку"),
+                                         ("ru", "заданное a₂ = 2 m/s² относится только к заданному моменту"),
+                                         ("sl", "podani a₂ = 2 m/s² velja le v podanem trenutku")])
+def test_a_given_acceleration_under_the_constant_law_is_said_to_be_its_instants(lang, given):
+    """linear-arm.toml gives v = 0.5 m/s, a = 2 m/s² and no law: the cycle runs at constant speed (the course's
+    assumption, domain.md §10), and the law's line says that the 2 m/s² is the given instant's only."""
+    scene = plans.load(plans.example_path("linear-arm"))
+    assert scene.driver.law is None and scene.driver.acceleration == 2.0  # the file's numbers
+    law = driver_cycle(scene, 8).law
+    assert law.kind == "constant" and law.acceleration == 0.0
+    assert law.describe(lang, "2").endswith("a₂ = 0")
+    assert law.given_note(lang, "2") == given
+
+
+def test_no_such_words_where_the_scene_gives_no_acceleration_or_the_law_keeps_it():
+    quick = driver_cycle(plans.load(plans.example_path("quick-return")), 8).law  # ε not given
+    assert quick.given_note("en", "2") == ""
+    four_bar = plans.load(plans.example_path("four-bar"))  # ε = 5 rad/s²: stated under constant, the law's under uniform
+    assert driver_cycle(four_bar, 8).law.given_note("en", "2") == "the given ε₂ = 5 rad/s² holds at the given instant only"
+    assert driver_cycle(four_bar, 8, law="uniform").law.given_note("en", "2") == ""
+
+
+def test_plans_sweep_says_the_same(tmp_path, capsys):
+    from plans.cli import main
+
+    assert main(["sweep", "--example", "linear-arm", "--steps", "8", "-o", str(tmp_path / "arm.csv"), "--lang", "sr"]) == 0
+    out = capsys.readouterr().out
+    assert "константна брзина: v₂ = 0,5 m/s, a₂ = 0; задато a₂ = 2 m/s² важи само у задатом тренутку" in out
+
+
+def test_the_linear_arm_handout_states_the_given_acceleration_as_its_instants(reviewed):
+    _, _, pages = reviewed["linear-arm-bg"]
+    first = " ".join(line[4] for line in pages[0])  # (NFKC: a₂ reads a2, m/s² m/s2)
+    assert "v = 0,5 м/с, a = 2 м/с2" in first  # the data
+    assert re.search(r"постоянна скорост: v ?2 = 0,5 м/с, a ?2 = 0\s+\(зададеното a ?2 = 2 м/с2 се отнася само за зададения момент\)",
+                     first), first
+
+
+# --- words as the textbooks write them ----------------------------------------------------------------
+
+
+def test_the_centres_pages_speak_as_a_textbook():
+    from plans.i18n import term
+
+    assert term("centres_page", "en") == "Instant centres (Kennedy's theorem): the velocities by the method of instant centres"
+    assert term("centres_legend", "en").startswith("circles: centres at the kinematic pairs;")
+    assert "двоиц" not in term("centres_legend", "bg") + term("circle_diagram_legend", "bg") + term("sliders_motion", "bg")
+    assert "кинематичните двойки" in term("centres_legend", "bg")
+
+
+@pytest.mark.parametrize("lang, once", [("bg", "подчертано веднъж — известно направление"), ("ru", "подчёркнуто один раз — известно направление"),
+                                        ("sr", "подвучено једном: познат правац")])
+def test_a_line_known_is_a_direction_not_a_sense(lang, once):
+    from plans.i18n import term
+
+    assert term("underlines", lang).startswith(once)
+
+
+def test_a_guide_named_in_words_keeps_its_grammar():
+    """The guide's name (a noun of any gender, or a letter) stands beside a word for the guide that agrees with the verb."""
+    from plans.i18n import term
+
+    directed = term("assembly_directed", "bg").format(key="втулка", a="F", b="D")
+    assert directed == "водачът „втулка“ е насочен от F към D"
+    assert term("assembly_along", "bg").format(c="H", where="пред", b="Q", key="прът") == "плъзгач H пред Q по водача „прът“"
+    assert term("assembly_directed", "ru").format(key="стержень", a="B", b="E") == "направляющая стержень направлена от B к E"
