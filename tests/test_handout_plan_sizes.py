@@ -55,16 +55,16 @@ def test_the_quick_return_stroke_takes_a_row_of_its_own(plates):
     assert max(lengths) > 2.5 * statistics.median(lengths)
 
 
-#: a table's caption (the first cell of its repeated header)
-_HEADING = re.compile(r'table\.cell\(colspan: \d+[^\[]*\)\[#text\(weight: "bold", size: [0-9.]+pt\)\[#"([^"]*)"\]')
+#: a table's caption
+_HEADING = re.compile(r'block\(breakable: false, width: 100%\)\[#text\(weight: "bold", size: [0-9.]+pt\)\[#"([^"]*)"\]')
 #: a graphical acceleration's row in a table: a, ε, aʳ, aᵏ (typeset symbols)
 _ACCELERATION_ROW = re.compile(r"\$(a_|a\^|epsilon)")
 
 
 def test_graphical_accelerations_only_where_their_plan_is_drawn(plates):
     for name, doc in plates.items():
-        start = doc.source.find("#columns(2")
-        parts = _HEADING.split(doc.source[start:doc.source.find("#columns(2", start + 1)])
+        start = doc.source.find("#grid(columns: (1fr, 1fr)")  # the comparison tables (the readings' are the next grid)
+        parts = _HEADING.split(doc.source[start:doc.source.find("#grid(columns: (1fr, 1fr)", start + 1)])
         tables = dict(zip(parts[1::2], parts[2::2]))
         assert len(tables) == len(doc.runs), name
         with_accelerations = set()

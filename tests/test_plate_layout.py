@@ -7,6 +7,7 @@ poppler's ``pdftotext -bbox-layout``) and from the scene files' numbers, not fro
 
 from __future__ import annotations
 
+import math
 import re
 import shutil
 import subprocess
@@ -101,6 +102,73 @@ def reviewed():
     return out
 
 
+def _page_use(pdf: bytes, dpi: int = 30) -> list[float]:
+    """Every page's lowest mark in the text area (a dark pixel of pdftoppm's rendering, the frame and the title block
+    outside it), from the text area's top [mm]."""
+    import numpy as np
+
+    g = A4_PORTRAIT
+    left, right, top, bottom = g.margins
+    px = dpi / 25.4
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "h.pdf"
+        path.write_bytes(pdf)
+        subprocess.run(["pdftoppm", "-r", str(dpi), "-gray", str(path), str(Path(tmp) / "p")], check=True)
+        out = []
+        for page in sorted(Path(tmp).glob("p*.pgm")):
+            _, size, _, data = page.read_bytes().split(b"\n", 3)
+            w, h = map(int, size.split())
+            img = np.frombuffer(data, dtype=np.uint8).reshape(h, w)
+            x0, x1 = int((left + 0.5) * px), int((g.size[0] - right - 0.5) * px)
+            y0, y1 = int((top + 0.5) * px), int((g.size[1] - bottom - 0.5) * px)
+            rows = np.flatnonzero((img[y0:y1, x0:x1] < 160).any(axis=1))
+            out.append(0.0 if len(rows) == 0 else (rows[-1] + 1) / px + 0.5)
+        return out
+
+
+def _full_pages(doc) -> set[int]:
+    """The pages that stand alone (a drawing a page of its own: diagrams, kinematic and force pages), as Typst
+    placed them."""
+    from plans.pages.typesetting import query_document
+
+    return set(query_document(doc.source, doc.images, "<plans-full-page>"))
+
+
+@pytest.mark.parametrize("key", list(HANDOUTS))
+def test_no_page_of_the_flow_is_less_than_half_used(reviewed, key):
+    """Every page but the last and those that stand alone has something below half its text height."""
+    doc, pdf, _ = reviewed[key]
+    use = _page_use(pdf)
+    alone = _full_pages(doc)
+    short = [(n, round(u / A4_PORTRAIT.text_height, 2)) for n, u in enumerate(use[:-1], start=1)
+             if n not in alone and u < 0.5 * A4_PORTRAIT.text_height]
+    assert not short, (key, short)
+
+
+#: the headings of a handout's sections, each kept with the first row of what it heads (the words of plans.i18n)
+HEADINGS = ("positions_plan", "mechanism", "velocity_plans", "acceleration_plans", "comparison", "loop_equations", "vector_equations")
+
+
+@pytest.mark.parametrize("key", list(HANDOUTS))
+def test_no_heading_is_left_at_a_pages_foot(reviewed, key):
+    """Under every section heading its page holds at least 25 mm of what it heads (the plans' heading band with
+    its scale and legend is about 20 mm): a heading left at a page's foot has nothing under it."""
+    from plans.i18n import term
+
+    doc, pdf, pages = reviewed[key]
+    lang = HANDOUTS[key][2]
+    use = _page_use(pdf)
+    words = [unicodedata.normalize("NFKC", term(h, lang)) for h in HEADINGS]
+    found = 0
+    for n, lines in enumerate(pages):
+        for x0, y0, x1, y1, line in lines:
+            if any(line.startswith(w) for w in words) and x0 * PT < A4_PORTRAIT.margins[0] + 5:
+                found += 1
+                below = use[n] - (y1 * PT - A4_PORTRAIT.margins[2])
+                assert below >= 25.0, (key, n + 1, line, round(below, 1))
+    assert found >= 5, (key, found)
+
+
 @pytest.mark.parametrize("key", list(HANDOUTS))
 def test_no_two_text_lines_of_a_handout_page_overlap(reviewed, key):
     _, _, pages = reviewed[key]
@@ -179,3 +247,47 @@ def test_a_guide_named_in_words_keeps_its_grammar():
     assert directed == "водачът „втулка“ е насочен от F към D"
     assert term("assembly_along", "bg").format(c="H", where="пред", b="Q", key="прът") == "плъзгач H пред Q по водача „прът“"
     assert term("assembly_directed", "ru").format(key="стержень", a="B", b="E") == "направляющая стержень направлена от B к E"
+
+
+# --- a single position's drawings drawn large --------------------------------------------------------------
+
+#: what a single position's page gives each drawing (issue 20 §1): the mechanism ≥ 100 mm across, the largest
+#: vector of either plan several tens of mm, every ω read off the velocity plan within 1.5 % of the analytic value
+MECHANISM_ACROSS_MM = 100.0
+LARGEST_VECTOR_MM = 60.0
+OMEGA_READ_REL = 0.015
+
+
+def test_a_single_positions_drawings_are_each_drawn_large(reviewed):
+    doc, _, _ = reviewed["six-bar-en"]
+    (r,) = doc.runs
+    assert max(doc.drawn["mechanism"]) >= MECHANISM_ACROSS_MM, doc.drawn["mechanism"]
+    # the largest vectors, from the analytic speeds and accelerations at the plate's factors
+    v = max(abs(complex(p.v[0])) for p in r.analytic.points.values()) / doc.scales["k_v"]
+    a = max(abs(complex(p.a[0])) for p in r.analytic.points.values()) / doc.scales["k_a"]
+    assert v >= LARGEST_VECTOR_MM and a >= LARGEST_VECTOR_MM, (v, a)
+    # the crank OA (0.15 m in six-bar.toml) drawn at least 15 mm long
+    assert 0.15 / doc.scales["k_l"] >= 15.0, doc.scales["k_l"]
+    for key in ("k_l", "k_v", "k_a"):  # round factors: m·10ⁿ, m one of the usual mantissas
+        mantissa = doc.scales[key] / 10 ** math.floor(math.log10(doc.scales[key]) + 1e-9)
+        assert any(abs(mantissa - m) < 1e-9 for m in (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)), (key, doc.scales[key])
+    # ω₃ … ω₆ as the plan gives them (the relative velocity's length at k_v over the link's length) against analytic
+    for name, link in r.analytic.links.items():
+        analytic = float(link.omega[0])
+        graphical = [c for c in r.comparisons if c.quantity == "omega" and c.name == name]
+        if graphical and abs(analytic) > 1e-9:
+            assert abs(graphical[0].graphical - analytic) <= OMEGA_READ_REL * abs(analytic), (name, graphical[0], analytic)
+
+
+def test_a_single_positions_plans_each_have_a_page_region(reviewed):
+    """The mechanism with the velocity equations on page 1, the velocity plan on page 2, the acceleration plan on
+    a page after it: the three drawings never share one page's height."""
+    doc, _, pages = reviewed["six-bar-en"]
+    from plans.i18n import term
+
+    def page_of(words):
+        return next(n for n, lines in enumerate(pages, start=1) if any(line[4].startswith(words) for line in lines))
+
+    assert page_of(term("mechanism", "en")) == 1
+    assert page_of(term("velocity_plans", "en")) == 2
+    assert page_of(term("acceleration_plans", "en")) >= 2

@@ -77,6 +77,8 @@ class Document:
         self.order: list[str] = []
         self.plate: dict = {}
         self.per_position = None
+        #: the size of the loop equations' text against its own (:meth:`loop_block`; a flow fitted to its pages)
+        self.loops_scale = 1.0
 
     # words
     def words(self, line: str) -> str:
@@ -101,9 +103,14 @@ class Document:
         self.body.append(self.line_markup(words, size) + "\n")
 
     def headed_legend(self, heading: str, under: str, key: str, legend) -> None:
-        """A heading and a line under it on the left, a drawing's legend on the right (one band across the page)."""
-        self.body.append(f"#grid(columns: (1fr, auto), column-gutter: {GUTTER}mm, align: (left + top, right + top),\n"
-                         f"  [#heading(level: 2, {string(heading)})\n{under}], [#{self.add_image(key, legend)}])\n")
+        """A heading and a line under it on the left, a drawing's legend on the right (one band across the page),
+        kept with the first row of what follows it (never left at a page's foot)."""
+        self.body.append(f"#block(sticky: true, breakable: false)[#grid(columns: (1fr, auto), column-gutter: {GUTTER}mm, align: (left + top, right + top),\n"
+                         f"  [#heading(level: 2, {string(heading)})\n{under}], [#{self.add_image(key, legend)}])]\n")
+
+    def headed_line(self, heading: str, under: str, level: int = 2) -> None:
+        """A heading with a line under it (its scale), kept with what follows them."""
+        self.body.append(f"#block(sticky: true, breakable: false)[#heading(level: {level}, {string(heading)})\n{under}]\n")
 
     def lines(self, lines, size: float = TEXT_PT) -> None:
         for line in lines:
@@ -128,7 +135,8 @@ class Document:
 
     def listing(self, heading: str, entries) -> None:
         cells = ", ".join(f"[{self.words(e)}]" for e in entries)
-        self.body.append(f"#text(weight: \"bold\")[{text(heading)}]\n#text(size: {SMALL_PT}pt)[#grid(columns: 3, column-gutter: 6mm, row-gutter: 1.6mm, {cells})]\n")
+        self.body.append(f"#block(breakable: false)[#text(weight: \"bold\")[{text(heading)}] \\\n"
+                         f"#text(size: {SMALL_PT}pt)[#grid(columns: 3, column-gutter: 6mm, row-gutter: 1.6mm, {cells})]]\n")
 
     def add_image(self, key: str, block) -> str:
         self.images[key] = block.svg
@@ -149,6 +157,7 @@ class Document:
         self.images[key] = block.svg
         self.sizes[key] = (block.width * scale, block.height * scale)
         note = f"#metadata([{self.words(scale_note)}]) <plans-page-scale>\n" if scale_note else ""
+        note += "#context [#metadata(here().page()) <plans-full-page>]\n"  # (the pages that stand alone, for a reader of the flow)
         self.body.append(f"#pagebreak(weak: true)\n{note}#align(center)[#image(bytes(sys.inputs.at({string(key)})), format: \"svg\", width: {block.width * scale:.3f}mm)]\n")
 
     def grid(self, cells, columns: int) -> None:
@@ -195,12 +204,12 @@ class Document:
                          + ",\n  ".join(rows) + ")]]\n")
 
     def tables(self, tables, aligns: str = "(left, right, right, right, right)") -> None:
-        """Tables of values, two columns of them on a page (*aligns*: Typst's alignment of the columns).
+        """Tables of values, two across the page, each whole under its caption (*aligns*: Typst's alignment of
+        the columns).
 
-        A table may break between its rows (at a column's or a page's foot), its caption and its header row
-        repeated above the rest: a table that may not break cannot be set in a column shorter than itself
-        (Typst then sets every row on one line, one over the other), and a column that starts low on a page
-        is that short."""
+        Set as the cells of a grid, two to a row, a row moving whole to the next page when it does not fit:
+        not in Typst's ``columns``, which sets a table that may not break, in a column starting lower on a page
+        than the table is tall, with every row on one line, one over the other."""
         parts = []
         for heading, rows in tables:
             if not rows:
@@ -212,18 +221,23 @@ class Document:
                 cells = list(row) + [""] * (ncol - len(row))
                 weight = "bold" if i == 0 else "regular"
                 body.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in cells))
-            caption = (f"table.cell(colspan: {ncol}, align: left, inset: (x: 0mm, y: 0.9mm))"
-                       f"[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{self.words(heading)}]]")
-            rows_after = (", " + ", ".join(body[1:])) if len(body) > 1 else ""
-            parts.append(f"table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns},"
-                         f" table.header({caption}, table.hline(stroke: 0.7pt), {body[0]}, table.hline(stroke: 0.4pt))"
-                         f"{rows_after}, table.hline(stroke: 0.7pt))")
-        self.body.append(f"#text(size: {SMALL_PT}pt)[#columns(2, gutter: {GUTTER}mm)[" + "\n".join("#" + p for p in parts) + "]]\n")
+            parts.append(f"block(breakable: false, width: 100%)[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{self.words(heading)}] \\\n"
+                         f"#table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns},"
+                         f" table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]")
+        if parts:
+            self.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (1fr, 1fr), column-gutter: {GUTTER}mm, row-gutter: 3mm, align: left + top,\n  "
+                             + ",\n  ".join(parts) + ")]\n")
 
     def loop_block(self, block) -> None:
-        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(formula_words(block.title))}]\n")
+        """A loop's equations under its title (their size :attr:`loops_scale` of the small text's)."""
+        self.body.append(f"#block(sticky: true)[#text(size: loops-size + 0.5pt, weight: \"bold\")[{self.words(formula_words(block.title))}]]\n")
         for line in block.lines:
-            self.body.append(f"#text(size: {SMALL_PT}pt)[{self.words(line)}]\n")
+            self.body.append(f"#text(size: loops-size)[{self.words(line)}]\n")
+
+    def mark(self, name: str) -> None:
+        """A mark in the flow that the laid-out document reports: its page and its height on the page [mm from
+        the top] (:func:`plans.pages.typesetting.query_document` with ``"<plans-NAME>"``)."""
+        self.body.append(f"#context [#metadata((page: here().page(), y: here().position().y.mm())) <plans-{name}>]\n")
 
     def beside(self, drawing, table, lines) -> None:
         key, block = drawing
@@ -271,6 +285,7 @@ class Document:
   foreground: place(bottom + {g.title_block_side}, dx: {g.title_block_dx}mm, dy: -{g.frame[1]}mm, block(width: {g.title_block_width or (g.size[0] - g.frame[0] - g.frame[1])}mm, {title_block})))
 #set text(font: {string(_FONT)}, size: {TEXT_PT}pt, lang: {string(lang)})
 #show math.equation: set text(font: {string(_MATH)})
+#let loops-size = {SMALL_PT * self.loops_scale:.2f}pt
 #set par(leading: 0.5em, spacing: 0.7em)
 #show heading: set block(above: 1.1em, below: 0.6em)
 #show heading.where(level: 1): set text(size: 13pt)

@@ -265,12 +265,17 @@ def _with_given_note(lines: list[str], run, lang: str) -> list[str]:
     return lines[:end] + [f"    ({note})"] + lines[end:]
 
 
+def _equations_height(plan) -> float:
+    """The height [mm] of a plan's vector equations under their heading (:meth:`Document.equations`), reckoned
+    line by line."""
+    return 16.0 + 6.4 * sum(len(step.equations) for step in plan.steps)
+
+
 def _first_page_room(scene, lang: str, r) -> float:
-    """The height [mm] the first page of a one-position handout leaves its two drawings (the mechanism and the
-    velocity plan): the text height less the data, the headings and the velocity equations, line by line."""
+    """The height [mm] the first page of a one-position handout leaves its mechanism: the text height less the
+    data, the heading with k_l and the velocity equations under it, line by line (:data:`SINGLE_MECHANISM`)."""
     lines = len(data_lines(scene, lang)) + 2  # the data, the structural formula and the assembly
-    equations = sum(len(step.equations) for step in r.graphical.velocity_plan.steps)
-    return TEXT_HEIGHT - (12.0 + 5.0 * lines) - 12.0 - (16.0 + 6.4 * equations) - 20.0 - 8.0
+    return TEXT_HEIGHT - (12.0 + 5.0 * lines) - 14.0 - _equations_height(r.graphical.velocity_plan) - 8.0
 
 
 def _reason(r, lang: str) -> str:
@@ -327,6 +332,7 @@ def build_handout(
         replace(r, graphical=replace(r.graphical, travel={k: t for k, t in r.graphical.travel.items() if not k.startswith("frame.")}))
         if r.graphical is not None else r for r in run.runs))
     multi = positions is not None
+    eq_under_v = True  # (one position: whether the acceleration equations go under the velocity plan)
     solved = [r for r in run.runs if r.ok]
     name = namer(scene, lang)
     doc = Document(scene, lang)
@@ -361,15 +367,16 @@ def build_handout(
         extent = _bbox(zs)
         k_l_plate, first = _fitted(lambda k: positions_svg(run, k, lang, extremes), extent, POSITIONS_BOX, k_l0, given["k_l"])
     else:
-        # one position: the mechanism and its velocity plan share the first page under the data and the equations
+        # one position: each drawing a region of its own, drawn large: the mechanism under the data with the
+        # velocity equations under it (page 1), the velocity plan (page 2), the acceleration plan with its equations
+        # (page 3); each region's height reckoned from the text it shares its page with
         room = _first_page_room(scene, lang, solved[0])
         extent = _bbox(solved[0].graphical.positions.values())
         k_l_plate, first = _fitted(lambda k: mechanism_svg(scaled(solved[0], "k_l", k).graphical, lang), extent,
-                                   (TEXT_WIDTH, max(room * 0.55, 60.0)), k_l0, given["k_l"])
-        velocity_alone = (TEXT_WIDTH, max(room - first.height, 50.0))
+                                   (TEXT_WIDTH, min(max(room, SINGLE_MECHANISM[0]), SINGLE_MECHANISM[1])), k_l0, given["k_l"])
 
     # --- one k_v over every position: the largest plan fills a cell
-    cell_v = VELOCITY_CELL if multi else velocity_alone
+    cell_v = VELOCITY_CELL if multi else SINGLE_VELOCITY
     chosen = choose_accelerations(run, accelerations) if scene.accelerations else []
     phases = stroke_phases(run)
     accel_columns, cell_a = _acceleration_cells([r for r in solved if r.index in chosen])
@@ -386,7 +393,14 @@ def build_handout(
         plate = {"k_l": k_l_plate}
     else:
         largest_v = max(solved, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.velocity_plan), cell_v)))
-        k_v_plate, _ = _fitted(lambda k: plan_svg(scaled(largest_v, "k_v", k).graphical.velocity_plan, lang), _plan_extent(largest_v.graphical.velocity_plan), cell_v, largest_v.graphical.scales["k_v"], given["k_v"])
+        k_v_plate, block_v = _fitted(lambda k: plan_svg(scaled(largest_v, "k_v", k).graphical.velocity_plan, lang), _plan_extent(largest_v.graphical.velocity_plan), cell_v, largest_v.graphical.scales["k_v"], given["k_v"])
+        if not multi and chosen:
+            # one position: the acceleration equations under the velocity plan when they fit there (its page then
+            # holds both, the acceleration plan a page of its own), else on the acceleration plan's page
+            eq_a = _equations_height(solved[0].graphical.acceleration_plan)
+            eq_under_v = VELOCITY_PAGE_TEXT + block_v.height + eq_a <= TEXT_HEIGHT - 10.0
+            if not eq_under_v:
+                cell_a = (TEXT_WIDTH, TEXT_HEIGHT - ACCELERATION_PAGE_TEXT - eq_a)
         if multi and given["k_v"] is None and len(solved) > 1:
             # the largest plan given a row of its own: kept when only a few plans need one (they are then far
             # larger than the rest, which a half cell would leave small)
@@ -474,8 +488,7 @@ def build_handout(
     if branch_words:
         doc.line(f"{term('assembly', lang)}: " + ";  ".join(branch_words), size=TEXT_PT)
     doc.section("positions")
-    doc.heading(term("positions_plan", lang) if multi else term("mechanism", lang), level=2)
-    doc.scale_line("k_l", k_l_plate)
+    doc.headed_line(term("positions_plan", lang) if multi else term("mechanism", lang), doc.scale_markup("k_l", k_l_plate))
     doc.figure("positions" if multi else "mechanism", first)
     if multi:
         entries = []
@@ -511,10 +524,11 @@ def build_handout(
 
     if acceleration_blocks:
         doc.section("acceleration-equations")
+        # the equations fill what the velocity plans leave (one position's: they head its plan's page); the plans
+        # follow, their heading kept with them
         doc.equations(f"{term('vector_equations', lang)}: {term('acceleration_plan', lang).lower()}", here[chosen[0]].graphical.acceleration_plan.steps,
-                      name)
+                      name, new_page=not multi and not eq_under_v)
         doc.section("acceleration-plans")
-        doc.body.append("#pagebreak(weak: true)")  # the equations fill what the velocity plans leave; the plans get a page
         doc.headed_legend(term("acceleration_plans", lang),
                           doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
                           "legend-a", legend_a)
@@ -528,7 +542,7 @@ def build_handout(
         doc.grid(cells, columns=accel_columns)
 
     doc.section("tables")
-    doc.heading(term("comparison", lang), level=2, new_page=True)
+    doc.heading(term("comparison", lang), level=2)
     doc.tables([(f"{term('position', lang)} {h.index}:  {h.label}" if multi else h.label, _table(h, lang, h.index in acceleration_blocks)) for h in here.values()])
     # what a student measures on the plans of the chosen positions and what it gives (segment, mm, × k, = value)
     from ..drawing.blocks import plan_readings
@@ -549,11 +563,13 @@ def build_handout(
     doc.heading(term("loop_equations", lang), level=2)
     from ..loops import loop_equations
 
+    doc.mark("loops-start")
     for h in loops_of:
         if multi:
             doc.heading(f"{term('position', lang)} {h.index}:  {h.label}", level=3)
         for block in loop_equations(h.analytic):
             doc.loop_block(block)
+    doc.mark("loops-end")
 
     if multi:
         say(term("cycle_diagrams", lang))
@@ -592,9 +608,59 @@ def build_handout(
     if centres:
         doc.section("centres")
         _centres_pages(doc, list(here.values()), k_l_plate, lang, multi, say)
+    _fit_loops(doc)
     return Handout(doc.source(), doc.images, plate, per_position, doc.order, chosen, doc.sizes, list(here.values()))
 
 
+#: the share of the text height a page of the flow (not the handout's last, not a page of its own) fills at least
+PAGE_USE_MIN = 0.5
+#: the loop equations' text may be set this much smaller or larger than the small text to fill their last page
+LOOPS_SCALE = (0.9, 1.2)
+
+
+def _fit_loops(doc) -> None:
+    """The loop equations end the flow of text before the pages of their own (diagrams, forces, centres): when they
+    run a few lines onto a page and leave it nearly empty, their text is set a little smaller so that those lines
+    go back onto the page before, or else a little larger so that their last page is at least
+    :data:`PAGE_USE_MIN` filled (within :data:`LOOPS_SCALE`).  Where they end is read from the laid-out document
+    (:meth:`Document.mark`); the handout's last page may stay short."""
+    from .typesetting import query_document
+
+    top, height = doc.page.margins[2], doc.page.text_height
+
+    def measure():
+        doc.body.insert(0, "#context [#metadata(counter(page).final().first()) <plans-pages>]\n")
+        try:
+            source = doc.source()
+        finally:
+            doc.body.pop(0)
+        pages = query_document(source, doc.images, "<plans-pages>")[0]
+        start = query_document(source, doc.images, "<plans-loops-start>")
+        end = query_document(source, doc.images, "<plans-loops-end>")
+        return pages, start[0], end[0]
+
+    pages, start, end = measure()
+    used = (end["y"] - top) / height
+    if end["page"] == pages or used >= PAGE_USE_MIN or end["page"] == start["page"]:
+        return
+    length = (end["page"] - start["page"]) * height + (end["y"] - start["y"])  # the loops' run [mm]
+    tries = [1.0 - (end["y"] - top + 4.0) / length, 1.0 + (PAGE_USE_MIN * height - (end["y"] - top) + 12.0) / length]
+    for scale in tries:
+        if not LOOPS_SCALE[0] <= scale <= LOOPS_SCALE[1]:
+            continue
+        doc.loops_scale = round(scale, 3)
+        pages_now, _, end_now = measure()
+        if end_now["page"] == pages_now or (end_now["y"] - top) / height >= PAGE_USE_MIN:
+            return
+    doc.loops_scale = 1.0
+
+
+#: a one-position handout's regions [mm]: the mechanism's height (at least, at most: what page 1 leaves under the
+#: data and above the velocity equations) and the velocity plan's cell (page 2, under its heading and legend)
+SINGLE_MECHANISM = (100.0, 150.0)
+SINGLE_VELOCITY = (TEXT_WIDTH, 150.0)
+#: what the velocity plan's page gives its heading, scale, legend and caption [mm]
+VELOCITY_PAGE_TEXT = 32.0
 #: room [mm] the acceleration plans' page gives its heading, scale and legend (the rest holds the plans; their
 #: vector equations go under the velocity plans)
 ACCELERATION_PAGE_TEXT = 45.0

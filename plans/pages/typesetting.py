@@ -23,7 +23,7 @@ import unicodedata
 
 from ..errors import PlansError
 
-__all__ = ["string", "text", "math", "mixed", "image", "compile_document", "TypesetError", "FONT", "MATH_FONT"]
+__all__ = ["string", "text", "math", "mixed", "image", "compile_document", "query_document", "TypesetError", "FONT", "MATH_FONT"]
 
 #: the text font of every page (ships with Typst; Latin, Cyrillic, Greek)
 FONT = "Libertinus Serif"
@@ -243,6 +243,22 @@ def compile_document(source: str, images: dict | None = None, fmt: str = "pdf", 
         return out
     pages = list(out) if isinstance(out, list) else [out]
     return [_svg_in_mm(page) for page in pages] if fmt == "svg" else pages
+
+
+def query_document(source: str, images: dict | None, selector: str) -> list:
+    """The values of the ``metadata`` elements *selector* (a label, ``"<name>"``) finds in the laid-out document:
+    where the page's flow put something (a page number, a height), read back to fit the flow."""
+    import json
+
+    import typst
+
+    inputs = {key: (data.decode("utf-8") if isinstance(data, bytes) else data) for key, data in (images or {}).items()}
+    try:
+        out = typst.query(source.encode("utf-8"), selector, field="value", sys_inputs=inputs, font_paths=_font_paths(),
+                          ignore_system_fonts=True)
+    except typst.TypstError as exc:
+        raise TypesetError(f"the typesetter refused a page: {exc}") from None
+    return json.loads(out)
 
 
 _ROOT_PT = re.compile(rb'(<svg\b[^>]*?)\bwidth="([0-9.]+)pt" height="([0-9.]+)pt"')
