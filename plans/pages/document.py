@@ -235,9 +235,9 @@ class Document:
             self.body.append(f"#text(size: loops-size)[{self.words(line)}]\n")
 
     def mark(self, name: str) -> None:
-        """A mark in the flow that the laid-out document reports: its page and its height on the page [mm from
-        the top] (:func:`plans.pages.typesetting.query_document` with ``"<plans-NAME>"``)."""
-        self.body.append(f"#context [#metadata((page: here().page(), y: here().position().y.mm())) <plans-{name}>]\n")
+        """A mark in the flow that the laid-out document reports: its *name*, page and height on the page [mm
+        from the top] (:func:`plans.pages.typesetting.query_document` with ``"<plans-mark>"``)."""
+        self.body.append(f"#context [#metadata((name: {string(name)}, page: here().page(), y: here().position().y.mm())) <plans-mark>]\n")
 
     def beside(self, drawing, table, lines) -> None:
         key, block = drawing

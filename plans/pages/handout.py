@@ -374,9 +374,14 @@ def build_handout(
         extent = _bbox(solved[0].graphical.positions.values())
         k_l_plate, first = _fitted(lambda k: mechanism_svg(scaled(solved[0], "k_l", k).graphical, lang), extent,
                                    (TEXT_WIDTH, min(max(room, SINGLE_MECHANISM[0]), SINGLE_MECHANISM[1])), k_l0, given["k_l"])
+        # the velocity plan under the equations when page 1 leaves it room enough (a flat mechanism), else page 2
+        room_v = room - first.height - VELOCITY_PAGE_TEXT
+        if room_v < SINGLE_VELOCITY_MIN:
+            room_v = TEXT_HEIGHT - VELOCITY_PAGE_TEXT
+        velocity_alone = (TEXT_WIDTH, min(room_v, SINGLE_VELOCITY[1]))
 
     # --- one k_v over every position: the largest plan fills a cell
-    cell_v = VELOCITY_CELL if multi else SINGLE_VELOCITY
+    cell_v = VELOCITY_CELL if multi else velocity_alone
     chosen = choose_accelerations(run, accelerations) if scene.accelerations else []
     phases = stroke_phases(run)
     accel_columns, cell_a = _acceleration_cells([r for r in solved if r.index in chosen])
@@ -398,7 +403,7 @@ def build_handout(
             # one position: the acceleration equations under the velocity plan when they fit there (its page then
             # holds both, the acceleration plan a page of its own), else on the acceleration plan's page
             eq_a = _equations_height(solved[0].graphical.acceleration_plan)
-            eq_under_v = VELOCITY_PAGE_TEXT + block_v.height + eq_a <= TEXT_HEIGHT - 10.0
+            eq_under_v = block_v.height + eq_a <= room_v - 10.0
             if not eq_under_v:
                 cell_a = (TEXT_WIDTH, TEXT_HEIGHT - ACCELERATION_PAGE_TEXT - eq_a)
         if multi and given["k_v"] is None and len(solved) > 1:
@@ -628,16 +633,13 @@ def _fit_loops(doc) -> None:
 
     top, height = doc.page.margins[2], doc.page.text_height
 
-    def measure():
-        doc.body.insert(0, "#context [#metadata(counter(page).final().first()) <plans-pages>]\n")
+    def measure():  # (one layout: the page count and the two marks)
+        doc.body.insert(0, "#context [#metadata((name: \"pages\", page: counter(page).final().first(), y: 0)) <plans-mark>]\n")
         try:
-            source = doc.source()
+            marks = {m["name"]: m for m in query_document(doc.source(), doc.images, "<plans-mark>")}
         finally:
             doc.body.pop(0)
-        pages = query_document(source, doc.images, "<plans-pages>")[0]
-        start = query_document(source, doc.images, "<plans-loops-start>")
-        end = query_document(source, doc.images, "<plans-loops-end>")
-        return pages, start[0], end[0]
+        return marks["pages"]["page"], marks["loops-start"], marks["loops-end"]
 
     pages, start, end = measure()
     used = (end["y"] - top) / height
@@ -659,6 +661,8 @@ def _fit_loops(doc) -> None:
 #: data and above the velocity equations) and the velocity plan's cell (page 2, under its heading and legend)
 SINGLE_MECHANISM = (100.0, 150.0)
 SINGLE_VELOCITY = (TEXT_WIDTH, 150.0)
+#: the least height [mm] page 1 must leave under the mechanism for the velocity plan to be drawn there
+SINGLE_VELOCITY_MIN = 70.0
 #: what the velocity plan's page gives its heading, scale, legend and caption [mm]
 VELOCITY_PAGE_TEXT = 32.0
 #: room [mm] the acceleration plans' page gives its heading, scale and legend (the rest holds the plans; their
