@@ -118,7 +118,8 @@ def test_random_mechanisms_give_a_handout_or_one_clear_line(tmp_path):
         if suffix:
             assert paths and all(p.stat().st_size > 1000 for p in paths), (n, text)
         else:
-            assert len(PdfReader(io.BytesIO(pdf)).pages) >= 3, n  # the mechanism and velocity plan, the acceleration plan, the check
+            # the mechanism and velocity plan; the acceleration plan and the check (flowing on where a page has room)
+            assert len(PdfReader(io.BytesIO(pdf)).pages) >= 2, n
             assert {"mechanism", "v-0"} <= set(document.images), n  # the mechanism and its velocity plan drawn
         written += 1
     assert kinds == set(KINDS)
