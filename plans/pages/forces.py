@@ -28,6 +28,7 @@ runs over its cell.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 
 from ..graphical.scales import round_up
@@ -36,7 +37,7 @@ from .document import GUTTER, SMALL_PT, TEXT_PT, Document
 from .typesetting import string
 from .words import KINDS, group_words
 
-__all__ = ["ForcePages", "force_pages", "force_scale", "force_document", "group_names", "PLAN_ROOM", "FREE_BODIES_BOX"]
+__all__ = ["ForcePages", "force_pages", "force_scale", "force_document", "group_names", "drawn_group_names", "PLAN_ROOM", "FREE_BODIES_BOX"]
 
 #: the height [mm] of the force plans' page the cells share (the rest: heading and legend; the readings under
 #: each plan are taken from it, :func:`_cells`)
@@ -127,9 +128,12 @@ def group_names(plans, lang: str) -> dict[str, str]:
     return out
 
 
+def drawn_group_names(plans, lang: str) -> dict[str, str]:
+    """:func:`group_names` as a drawing writes them (plain text: ``"group 3–4 (II₁)"``, a Unicode subscript)."""
+    return _drawn_names(group_names(plans, lang))
+
+
 def _drawn_names(names: dict) -> dict[str, str]:
-    """The group names as a drawing writes them (plain text: II₁ with a Unicode subscript)."""
-    import re
 
     from .._text import subscript
 
@@ -155,11 +159,11 @@ def _extent(plan) -> tuple[float, float]:
     return (max(xs) - min(xs)) * plan.scale, (max(ys) - min(ys)) * plan.scale
 
 
-def _cells(plans, width: float) -> tuple[int, float, list[float]]:
-    """(columns, the cell's width [mm], the height of the readings under each row [mm]) of the force plans' page:
-    two across (one plan: the whole width)."""
+def _cells(plans, width: float, columns: int) -> tuple[int, float, list[float]]:
+    """(columns, the cell's width [mm], the height of the readings under each row [mm]) of the force plans' page
+    with *columns* plans across."""
     n = len(plans)
-    columns = 1 if n == 1 else 2
+    columns = min(columns, n)
     cell = (width - (columns - 1) * GUTTER) / columns
     # a line of readings runs over into a second where it is longer than the cell is wide (8 pt: ~1.45 mm a character)
     per_line = max(20, int(cell / 1.45))
@@ -173,7 +177,6 @@ def _cells(plans, width: float) -> tuple[int, float, list[float]]:
 
 def _visible(line: str) -> int:
     """How many characters a line of the program's text prints (its math markup left out)."""
-    import re
 
     return len(re.sub(r"\\mathrm|[${}_^\\]", "", line))
 
@@ -190,31 +193,37 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
     from ..forces.force_plans import construct_force_plans
 
     first = construct_force_plans(graphical, mu_F=None)
-    columns, cell, texts = _cells(first.plans, width)
     sizes = []  # (fixed width, fixed height [mm], extent across, up [N]) of each plan
     for plan in first.plans:
         block = force_plan_svg(plan, lang)
         ex, ey = _extent(plan)
         sizes.append((block.width - ex / plan.scale, block.height - ey / plan.scale, ex, ey))
 
-    def fits(mu: float, drawn=None) -> bool:
+    def fits(mu: float, drawn=None, columns: int = 2) -> bool:
+        columns, cell, texts = _cells(first.plans, width, columns)
         wide = [fw + ex / mu for fw, _, ex, _ in sizes] if drawn is None else [b.width for b in drawn]
         tall = [fh + ey / mu for _, fh, _, ey in sizes] if drawn is None else [b.height for b in drawn]
         rows = [max(tall[k:k + columns]) for k in range(0, len(tall), columns)]
         return max(wide) <= cell + 0.5 and sum(rows) + sum(texts) + 5.0 * (len(rows) - 1) <= room + 0.5 and max(tall) <= PLAN_CELL_MAX + 0.5
 
-    mu = round_up(max(ex / max(cell - fw, 0.3 * cell) for fw, _, ex, _ in sizes) or max(p.scale for p in first.plans))
-    for _ in range(60):  # the round values upwards (no drawing: the sizes above)
-        if fits(mu):
-            break
-        mu = round_up(mu * 1.0001)
+    best = None
+    for columns in (1, 2):  # one plan under the other, or two across: whichever draws them larger
+        cell = _cells(first.plans, width, columns)[1]
+        mu = round_up(max(ex / max(cell - fw, 0.3 * cell) for fw, _, ex, _ in sizes) or max(p.scale for p in first.plans))
+        for _ in range(60):  # the round values upwards (no drawing: the sizes above)
+            if fits(mu, columns=columns):
+                break
+            mu = round_up(mu * 1.0001)
+        if best is None or mu < best[0] * 0.999:
+            best = (mu, columns)
+    mu, columns = best
     for _ in range(8):
         plans = construct_force_plans(graphical, mu_F=mu)
         blocks = [force_plan_svg(plan, lang) for plan in plans.plans]
-        if fits(mu, blocks):
+        if fits(mu, blocks, columns):
             break
         mu = round_up(mu * 1.0001)
-    return mu, plans, blocks, columns
+    return mu, plans, blocks, min(columns, len(plans.plans))
 
 
 def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX):
@@ -352,8 +361,8 @@ def _table(doc: Document, rows, aligns: str, heading: str | None = None) -> str:
     body = []
     for i, row in enumerate(rows):
         weight = "bold" if i == 0 else "regular"
-        body.append(", ".join(f"text(weight: \"{weight}\")[{doc.words(str(c))}]" for c in list(row) + [""] * (ncol - len(row))))
-    title = f"#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{doc.words(heading)}] \\\n" if heading else ""
+        body.append(", ".join(f"text(weight: \"{weight}\")[{_words(doc, str(c))}]" for c in list(row) + [""] * (ncol - len(row))))
+    title = f"#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{_words(doc, heading)}] \\\n" if heading else ""
     return (f"#block(breakable: false)[{title}#text(size: {SMALL_PT}pt)[#table(columns: {ncol}, stroke: none, inset: (x: 1.4mm, y: 0.9mm), align: {aligns}, "
             f"table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]]\n")
 
@@ -366,15 +375,32 @@ def _legend(doc: Document, key: str, kinds, lang: str) -> str:
     cells = []
     for kind in kinds:
         words = term("construction_line", lang) if kind == "construction" else term("lever_arm_rule", lang) if kind == "arm" else _lower(term(FORCE_LEGEND[kind], lang))
-        cells.append(f"[#{doc.add_image(f'{key}-key-{kind}', force_key_svg(kind))}], [#text(size: {SMALL_PT}pt)[{doc.words(words)}]]")
+        cells.append(f"[#{doc.add_image(f'{key}-key-{kind}', force_key_svg(kind))}], [#text(size: {SMALL_PT}pt)[{_words(doc, words)}]]")
     columns = 4 if len(kinds) > 2 else 2
     sizes = ", ".join(["auto", "1fr"] * (columns // 2))
     return f"#grid(columns: ({sizes}), column-gutter: 2mm, row-gutter: 1.6mm, align: left + horizon, {', '.join(cells)})\n"
 
 
+#: the newton, as the course in a language writes it (the other units: :func:`plans.pages.words.units`)
+_NEWTON = {"ru": "Н", "bg": "Н"}
+
+
+def _newtons(line: str, lang: str) -> str:
+    """*line* with the unit N (outside its ``$…$`` math) as the course in *lang* writes it."""
+    if lang not in _NEWTON:
+        return line
+    pieces = re.split(r"(?<!\\)(\$[^$]*\$)", line)
+    return "".join(p if p.startswith("$") else re.sub(r"(?<![\w\\{])N(?=[·/ \])\];,]|$)", _NEWTON[lang], p) for p in pieces)
+
+
+def _words(doc: Document, line: str) -> str:
+    """A line of the page's text as markup in its language (:meth:`Document.words`), N as the course writes it."""
+    return doc.words(_newtons(line, doc.lang))
+
+
 def _scale_note(doc: Document, words: str) -> None:
     """The page's own scale for the title block (as :meth:`plans.pages.document.Document.full_page` leaves it)."""
-    doc.body.append(f"#metadata([{doc.words(words)}]) <plans-page-scale>\n")
+    doc.body.append(f"#metadata([{_words(doc, words)}]) <plans-page-scale>\n")
 
 
 def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: str | None = None, key: str = "forces") -> ForcePages:
@@ -401,9 +427,9 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     head = term("kinetostatics", lang)
 
     def heading(what: str) -> None:
-        doc.heading(f"{head} — {what}", level=2, new_page=True)
+        doc.heading(_newtons(f"{head} — {what}", lang), level=2, new_page=True)
         if where:
-            doc.line(where, size=TEXT_PT)
+            doc.line(_newtons(where, lang), size=TEXT_PT)
 
     # 1. the free bodies, the given loads and the legend
     heading(_lower(term("free_bodies", lang)))
@@ -413,7 +439,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     _scale_note(doc, mu_words)
     doc.figure(f"{key}-free-bodies", free)
     pages.images[f"{key}-free-bodies"] = "free-bodies"
-    doc.line(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}", size=SMALL_PT)
+    doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}", lang), size=SMALL_PT)
     doc.body.append(_legend(doc, f"{key}-bodies-legend", _body_kinds(plans), lang))
     doc.body.append(_table(doc, loads, "(left, left, left, right, right)", f"{term('loads', lang)}: {mu_words}"))
 
@@ -429,9 +455,9 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         pages.images[image_key] = f"plan:{plan.group}"
         moment = plans.balancing_moment if plan.group == "driver" else None
         lines = _plan_lines(plan, given, moment, lang)
-        parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{doc.words(_plan_title(plan, names, lang))}]",
+        parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]",
                  f"#align(center)[#{doc.add_image(image_key, block)}]"]
-        parts += [f"#text(size: {SMALL_PT}pt)[{doc.words(line)}]" for line in lines]
+        parts += [f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}]" for line in lines]
         items.append(f"block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]")
     doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
     kinds, closing = legend_kinds(plans.plans)
@@ -442,14 +468,14 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     pages.comparisons = comparisons
     if lever is not None:
         heading(term("joukowski_lever", lang))
-        doc.line(f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", size=SMALL_PT)
-        doc.line(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$", size=TEXT_PT)
+        doc.line(_newtons(f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", lang), size=SMALL_PT)
+        doc.line(_newtons(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$", lang), size=TEXT_PT)
         doc.figure(f"{key}-lever", lever_svg(lever, lang))
         pages.images[f"{key}-lever"] = "lever"
         doc.body.append(_legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang))
         doc.body.append(_table(doc, _lever_rows(lever, lang), "(left, left, right, right, right, left)", term("lever_moments", lang)))
         for line in _lever_result(lever, lang):
-            doc.line(line, size=TEXT_PT)
+            doc.line(_newtons(line, lang), size=TEXT_PT)
     elif comparisons:
         doc.body.append("#v(4mm)")
     if comparisons:
