@@ -235,3 +235,11 @@ def test_six_bar_plans_at_one_mu_stated_on_its_page(six_bar_en):
     used = set(re.findall(r"mm · ([0-9.]+) N/mm", plans_page))
     assert used == {mu}
     assert f"μF = {mu} N/mm" in plans_page[plans_page.rindex("Scale factors"):]
+
+
+def test_the_forces_table_names_the_groups_as_the_course_does(capsys):
+    assert main(["forces", "--example", "six-bar-loads"]) == 0
+    heading = capsys.readouterr().out.splitlines()[1]
+    # six-bar: the four-bar's RRR group (class II, kind 1), then the sleeve's RPR group (kind 3)
+    assert heading == "Kinetostatic analysis: I(1,2) → II₁(3,4) → II₃(5,6)"
+    assert not any(t in heading for t in TOKENS)
