@@ -179,14 +179,9 @@ def found_scales(plans) -> dict[str, float]:
 
 
 def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool = True, caption: bool = True, balancing_moment: float | None = None,
-                         found_at: dict | None = None, known: bool = True, given: dict | None = None, scale: bool = True,
-                         caption_width: float = 50.0, names: dict | None = None) -> None:
-    """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch.
-
-    *known*: list the known loads and the components Rᵗ under the plan (a page that states them
-    in its own tables leaves them out).  *scale*: state μ_F under the plan (a page with one μ_F
-    states it once).  *caption_width* [mm]: the notes under the plan flow side by side at least so wide.
-    """
+                         found_at: dict | None = None, given: dict | None = None, names: dict | None = None) -> None:
+    """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch (*caption*: the
+    words under it; a page set by Typst, :mod:`plans.pages.forces`, sets them itself)."""
     vectors = [v for v in plan.vectors if v.length > 1e-9]
     for v in vectors:
         for z in (v.tail, v.tip):
@@ -231,7 +226,7 @@ def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool
                     prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK,
                     own=(tail, tip), rival_segments=rivals)
     if caption:
-        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment, found_at or {}, known, given or {}, scale, caption_width, names)
+        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment, found_at or {}, given or {}, names)
 
 
 def _retraces(a: tuple[complex, complex], b: tuple[complex, complex], near: float = 2.5) -> bool:
@@ -257,22 +252,19 @@ def _closing_point(plan):
     return p1 + t * d1
 
 
-def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None, found_at: dict, known_loads: bool = True,
-                  given: dict | None = None, scale: bool = True, caption_width: float = 50.0, names: dict | None = None) -> None:
-    """Heading, μ_F (unless the page states it once), the reactions read off the plan, the legend: below the plan."""
+def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None, found_at: dict,
+                  given: dict | None = None, names: dict | None = None) -> None:
+    """Heading, μ_F, the known loads, the reactions read off the plan, the legend: below the plan."""
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
     crank = not any(v.label == "F_b" for v in plan.vectors)  # a linear driver's plan carries F_b; a crank's M_b is a couple
     what = driving_link_words(plan.links[0], crank, lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
     sketch.text(complex(x, y), f"{term('force_plan', lang)}: {what}", size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
-    if scale:
-        sketch.text(complex(x, y), scale_caption(r"\mu_F", fmt_number(plan.scale), "N/mm", lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
-    else:
-        y += 5.0 - (text_size("lp", CAPTION_PT)[1] + 0.9)
+    sketch.text(complex(x, y), scale_caption(r"\mu_F", fmt_number(plan.scale), "N/mm", lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     row = text_size("lp", CAPTION_PT)[1] + 0.9
     mu = localised(fmt_number(plan.scale), lang)
-    width = max(b.width, caption_width)
+    width = max(b.width, 50.0)
 
     def flow(notes: list[tuple[str, str]], y: float, indent: float = 0.0) -> float:
         """Notes (text, gid) side by side as far as the plan is wide (at least 50 mm), rows downwards from *y*; the last row's y."""
@@ -287,20 +279,15 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
         return y
 
     # what is known before the plan is drawn: every load (and a reaction carried from a plan before), N and drawn mm
-    y -= row if known_loads else 0.0
-    if known_loads:
-        sketch.text(complex(x, y), term("known_loads", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="known-heading", obstacle=False)
+    y -= row
+    sketch.text(complex(x, y), term("known_loads", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="known-heading", obstacle=False)
     known, carried_notes = [], []
     for v in vectors:
         if v.label in plan.found or v.kind in ("normal", "tangential"):
             continue
         value = _number(given[v.label], lang) if given and v.label in given else _reading(v.value, _step(plan), lang)
         line = f"{force_math(v.label)} = {value} N → {_reading(v.length, plan.precision, lang)} mm"
-        if v.kind == "reaction" and not known_loads:  # a page that lists the loads elsewhere: the carried reaction's value, short
-            head, _, sub = v.label.partition("_")
-            opposite = f" = −{force_math(f'R_{sub[::-1]}')}" if head == "R" and len(sub) == 2 else ""
-            carried_notes.append((f"{force_math(v.label)}{opposite} = {value} N → {_reading(v.length, plan.precision, lang)} mm", f"known-{_gid(v.label)}"))
-        elif v.kind == "reaction":  # not found here: a reaction carried from a plan before, the value read there
+        if v.kind == "reaction":  # not found here: a reaction carried from a plan before, the value read there
             carried = found_at.get(v.label, plan.scale)
             note = term("carried", lang)
             if abs(carried - plan.scale) > 1e-12 * plan.scale:
@@ -310,11 +297,10 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
             known.append((line + ";", f"known-{_gid(v.label)}"))
     if known:
         known[-1] = (known[-1][0].rstrip(";"), known[-1][1])
-    if known_loads:
-        y = flow(known, y, 2.0)
-    y = flow(carried_notes, y, 2.0 if known_loads else 0.0)  # stated even where the page lists the loads elsewhere
+    y = flow(known, y, 2.0)
+    y = flow(carried_notes, y, 2.0)
     # the tangential components, found first (from the moments about the middle joint)
-    tangential = [v for v in vectors if v.kind == "tangential"] if known_loads else []
+    tangential = [v for v in vectors if v.kind == "tangential"]
     if tangential:
         y -= row
         sketch.text(complex(x, y), term("found_first", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="found-first", obstacle=False)

@@ -34,7 +34,6 @@ from dataclasses import dataclass, field
 from ..graphical.scales import round_up
 from ..i18n import term
 from .document import GUTTER, SMALL_PT, TEXT_PT, Document
-from .typesetting import string
 from .words import KINDS, group_words
 
 __all__ = ["ForcePages", "force_pages", "force_scale", "force_document", "group_names", "drawn_group_names", "PLAN_ROOM", "FREE_BODIES_BOX"]
@@ -170,7 +169,7 @@ def _cells(plans, width: float, columns: int) -> tuple[int, float, list[float]]:
     texts = []
     for r in range(0, n, columns):
         row = plans[r:r + columns]
-        texts.append(max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, p.group == "driver" or None)) + 1 for p in row)
+        texts.append(max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)) + 1 for p in row)
                      * READING_LINE + 4.0)
     return columns, cell, texts
 
@@ -307,7 +306,7 @@ def _loads_table(plans, lang: str) -> list[list[str]]:
         for v in plan.vectors:
             if v.kind in _LOAD_KIND:
                 drawn.setdefault(v.label, (v.length, plan.precision))
-    rows = [["", term("link", lang), term("kind", lang), "N, N·m", f"mm ($μ_F$)"]]
+    rows = [["", term("link", lang), term("kind", lang), "N, N·m", "mm ($μ_F$)"]]
     for f in plans.loads:
         length = drawn.get(f.label)
         rows.append([_math(f.label), f.body, term(_LOAD_KIND.get(f.kind, "external_force"), lang), f"{_number(abs(f.force))} N",
@@ -410,7 +409,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
 
     *where*: the position in words (a line under each heading); *key*: the prefix of the drawings' input keys.
     """
-    from ..drawing.force_blocks import free_bodies_svg, lever_svg
+    from ..drawing.force_blocks import lever_svg
     from ..drawing.force_drawing import given_loads, legend_kinds
     from ..forces.compare import compare_forces
 
@@ -458,7 +457,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]",
                  f"#align(center)[#{doc.add_image(image_key, block)}]"]
         parts += [f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}]" for line in lines]
-        items.append(f"block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]")
+        items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]")
     doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
     kinds, closing = legend_kinds(plans.plans)
     doc.body.append("#v(1fr)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
