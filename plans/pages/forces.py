@@ -38,11 +38,11 @@ from .words import KINDS, group_words
 
 __all__ = ["ForcePages", "force_pages", "force_scale", "force_document", "group_names", "drawn_group_names", "PLAN_ROOM", "FREE_BODIES_BOX"]
 
-#: the height [mm] of the force plans' page the cells share (the rest: heading and legend; the readings under
-#: each plan are taken from it, :func:`_cells`)
+#: the height [mm] the force plans and the readings under them share down their page, by default (a page gives
+#: its text height less its heading and legend, :func:`force_pages`)
 PLAN_ROOM = 218.0
 #: the box [mm] the free bodies are drawn in at most (the text width; the given loads and the legend under
-#: them take what they need of the page's height first, :func:`_free_bodies_box`)
+#: them take what they need of the page's height first, :func:`force_pages`)
 FREE_BODIES_BOX = (175.0, 170.0)
 
 #: the tallest a plan's cell may be [mm] (two plans side by side need not fill the page)
