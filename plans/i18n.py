@@ -980,6 +980,22 @@ TERMS: dict[str, dict[str, str]] = {
                    "bg": "се завъртат изцяло", "sl": "se zavrtijo v celoti"},
     "none_turns": {"en": "no link turns fully", "sr": "ниједан члан се не окреће пуним кругом", "ru": "ни одно звено не проворачивается",
                    "bg": "никое звено не се завърта изцяло", "sl": "noben člen se ne zavrti v celoti"},
+    # --- the force pages set by Typst (plans.pages.forces) ---
+    "image": {"en": "image", "sr": "слика", "ru": "изображение", "bg": "образ", "sl": "slika"},
+    "lever_moments": {
+        "en": "Moments about the pole p",
+        "sr": "Моменти за пол p",
+        "ru": "Моменты относительно полюса p",
+        "bg": "Моменти спрямо полюса p",
+        "sl": "Momenti okoli pola p",
+    },
+    "force_methods": {
+        "en": "The three methods: analytic, force plans, Joukowski's lever (δ: the difference from the analytic value)",
+        "sr": "Три методе: аналитички, планови сила, Жуковљева полуга (δ: разлика од аналитичке вредности)",
+        "ru": "Три метода: аналитически, планы сил, рычаг Жуковского (δ: отличие от аналитического значения)",
+        "bg": "Трите метода: аналитично, планове на силите, лост на Жуковски (δ: разлика от аналитичната стойност)",
+        "sl": "Tri metode: analitično, načrti sil, Žukovskijev vzvod (δ: razlika od analitične vrednosti)",
+    },
 }
 
 

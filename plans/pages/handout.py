@@ -551,27 +551,8 @@ def build_handout(
         for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
             doc.full_page(f"kinematic-{number}", figure_svg(fig, lang))
     if forces:
-        from ..drawing._canvas import fmt_number
-        from ..drawing.forces_page import draw_forces_pages
-        from ..drawing.svgblocks import figure_svg
-        from ..forces.force_plans import construct_force_plans
-        from ..forces.lever import LeverError, joukowski_lever
-
         doc.section("forces")
-        for k in chosen or [sample.index]:
-            h = here[k]
-            try:
-                lever = joukowski_lever(h.graphical)
-            except LeverError:
-                lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
-            where = [f"{term('position', lang)} {h.index}:  {h.label}"] if multi else []
-            def plans_at(mu_F, graphical=h.graphical):
-                return construct_force_plans(graphical, mu_F=mu_F)
-
-            for n, page in enumerate(draw_forces_pages(h.graphical, plans_at, lang=lang, header_lines=where, lever=lever)):
-                mu_f = set(page.force_scales.values())
-                note = f"$μ_{{F}}$ = {fmt_number(mu_f.pop())} N/mm" if len(mu_f) == 1 else None
-                doc.full_page(f"forces-{h.index}-{n}", figure_svg(page, lang), scale_note=note)
+        _forces_pages(doc, [here[k] for k in chosen or [sample.index]], lang, multi)
     if centres:
         doc.section("centres")
         _centres_pages(doc, list(here.values()), k_l_plate, lang, multi, say)
@@ -657,6 +638,22 @@ def _table(h, lang: str, accelerations: bool = True) -> list[list[str]]:
 
     comparisons = h.comparisons if accelerations else [c for c in h.comparisons if c.quantity in VELOCITY_QUANTITIES]
     return translate_table(sheet_table(comparisons, h.graphical, h.analytic), lang)
+
+
+def _forces_pages(doc, positions, lang: str, multi: bool) -> None:
+    """The kinetostatic pages of each of *positions* (:func:`plans.pages.forces.force_pages`): its free bodies, its
+    force plans at one μ_F, Joukowski's lever (not when the driver is at rest) and the three methods side by side."""
+    from ..forces.analytic import forces_from
+    from ..forces.lever import LeverError, joukowski_lever
+    from .forces import force_pages
+
+    for h in positions:
+        try:
+            lever = joukowski_lever(h.graphical)
+        except LeverError:
+            lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
+        where = f"{term('position', lang)} {h.index}:  {h.label}" if multi else None
+        force_pages(doc, h.graphical, lever=lever, analytic=forces_from(h.analytic), where=where, key=f"forces-{h.index}")
 
 
 def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambda words: None) -> float | None:
