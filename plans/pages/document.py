@@ -77,6 +77,10 @@ class Document:
         self.order: list[str] = []
         self.plate: dict = {}
         self.per_position = None
+        #: the plate's name in the title block (an i18n key): a section that is not kinematics (the force pages)
+        #: sets it before its first heading and sets it back after its last page
+        self.plate_name = "plate_title"
+        self._named = "plate_title"
 
     # words
     def words(self, line: str) -> str:
@@ -93,6 +97,10 @@ class Document:
         if new_page and self.body:
             self.body.append("#pagebreak(weak: true)")
         self.body.append("=" * level + " " + self.words(words))
+        if new_page and self.plate_name != self._named:
+            # the title block is set at the page's end: the name changes on the page a section starts
+            self.body.append(f"#plate-name.update({string(term(self.plate_name, self.lang))})")
+            self._named = self.plate_name
 
     def line_markup(self, words: str, size: float = TEXT_PT) -> str:
         return f"#text(size: {size}pt)[{self.words(words)}]"
@@ -248,7 +256,7 @@ class Document:
         sheet = f"{text(term('sheet', lang))} #context counter(page).get().first() {text(term('of_sheets', lang))} #context counter(page).final().first()"
         title_block = (
             f"table(columns: (1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
-            f" table.cell(colspan: 2)[#text(size: 10pt, weight: \"bold\")[{text(term('plate_title', lang))}] — #text(size: 10pt)[{text(self.scene.title_in(lang))}]],"
+            f" table.cell(colspan: 2)[#text(size: 10pt, weight: \"bold\")[#context plate-name.get()] — #text(size: 10pt)[{text(self.scene.title_in(lang))}]],"
             f" [#text(size: 9pt)[{sheet}]],"
             f" table.cell(colspan: 3)[#text(size: 8.5pt)[{text(term('scale_factors', lang))}: {scale_text}]],"
             f" [#text(size: 8pt)[{text(term('drawn_by', lang))}:]], [#text(size: 8pt)[{text(term('checked_by', lang))}:]], [#text(size: 8pt)[{text(term('date', lang))}:]])"
@@ -258,6 +266,7 @@ class Document:
         inner_h = g.size[1] - 2 * g.frame[1]
         head = f"""#set document(date: none)
 #let plate-kl = state("plate-kl", [{plate_kl}])
+#let plate-name = state("plate-name", [{text(term('plate_title', lang))}])
 #set page(width: {g.size[0]}mm, height: {g.size[1]}mm, margin: (left: {g.margins[0]}mm, right: {g.margins[1]}mm, top: {g.margins[2]}mm, bottom: {g.margins[3]}mm),
   background: place(top + left, dx: {g.frame[0]}mm, dy: {g.frame[1]}mm, rect(width: {inner_w}mm, height: {inner_h}mm, stroke: 0.8pt)),
   foreground: place(bottom + {g.title_block_side}, dx: {g.title_block_dx}mm, dy: -{g.frame[1]}mm, block(width: {g.title_block_width or (g.size[0] - g.frame[0] - g.frame[1])}mm, {title_block})))

@@ -544,5 +544,6 @@ def force_document(run, lang: str = "en") -> tuple[Document, ForcePages]:
     with its graphical solution) as a Document of their own: its title block states the run's scales."""
     doc = Document(run.scene, lang)
     doc.plate = dict(run.graphical.scales)
+    doc.plate_name = "kinetostatics"
     pages = force_pages(doc, run.graphical, lever=run.lever, analytic=run.analytic)
     return doc, pages

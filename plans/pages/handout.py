@@ -647,6 +647,7 @@ def _forces_pages(doc, positions, lang: str, multi: bool) -> None:
     from ..forces.lever import LeverError, joukowski_lever
     from .forces import force_pages
 
+    doc.plate_name = "kinetostatics"  # the title block of the force pages
     for h in positions:
         try:
             lever = joukowski_lever(h.graphical)
@@ -654,6 +655,7 @@ def _forces_pages(doc, positions, lang: str, multi: bool) -> None:
             lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
         where = f"{term('position', lang)} {h.index}:  {h.label}" if multi else None
         force_pages(doc, h.graphical, lever=lever, analytic=forces_from(h.analytic), where=where, key=f"forces-{h.index}")
+    doc.plate_name = "plate_title"
 
 
 def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambda words: None) -> float | None:
