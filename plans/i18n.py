@@ -529,6 +529,14 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "скорост на точка от центъра, около който се завърта звеното ѝ",
         "sl": "hitrost točke iz pola, okoli katerega se vrti njen člen",
     },
+    # the handout's words for a sliding driver and its centres' pages (issue 20, plate-words)
+    "centres_omega_rule_linear": {
+        "en": "ω of a link from the driver's velocity, through the centres",
+        "sr": "ω члана из брзине погонског члана, преко полова",
+        "ru": "ω звена по скорости ведущего звена, через центры",
+        "bg": "ω на звеното от скоростта на водещото звено, чрез центровете",
+        "sl": "ω člena iz hitrosti pogonskega člena, prek polov",
+    },
     # readings of a plan (issue 10 §2): what a student measures and computes
     "readings": {
         "en": "readings",

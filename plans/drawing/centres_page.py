@@ -85,12 +85,25 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
     return [[decimal_comma(cell, lang) for cell in row] for row in rows]
 
 
-def centres_rules(lang: str, frame: str) -> list[str]:
+def centres_rules(lang: str, frame: str, driver=None, numbers=None) -> list[str]:
     """The two rules of the method, each with its formula (``$…$``): ω from the centres, v of a point from its link's centre.
 
     *frame*: the frame's number (:attr:`plans.scene.Scene.frame_number`), as the centres' labels write it.
+    *driver* (:class:`plans.scene.LinearDriver`) with *numbers* (body name -> its number in the labels,
+    :attr:`plans.centres.InstantCentres.numbers`): a sliding driver has no ω to start from; the rule then
+    starts from its velocity v_A, as the textbook does: the centre P_dk of the driver d and a link k moves
+    as a point of d with v_A and as a point of k about P_1k, so ω_k = v_A / P_1kP_dk.
     """
+    from ..scene import LinearDriver
+
+    if isinstance(driver, LinearDriver):
+        d = (numbers or {}).get(driver.link, driver.link)
+        point = math_name(driver.point)
+        omega = (f"{term('centres_omega_rule_linear', lang)}:  "
+                 f"$\\omega_k = v_{{{point}}} / P_{{{frame}k}}P_{{{d}k}}$")
+    else:
+        omega = f"{term('centres_omega_rule', lang)}:  $\\omega_j / \\omega_k = P_{{{frame}k}}P_{{jk}} / P_{{{frame}j}}P_{{jk}}$"
     return [
-        f"{term('centres_omega_rule', lang)}:  $\\omega_j / \\omega_k = P_{{{frame}k}}P_{{jk}} / P_{{{frame}j}}P_{{jk}}$",
+        omega,
         f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{{frame}j}}M$",
     ]

@@ -725,7 +725,7 @@ def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
     _, result, comparisons, diagram, _ = page
     doc.figure(f"centres-{h.index}", blocks[h.index][1])
     doc.line(f"{term('centres_legend', lang)};  {term('centres_edge_legend', lang)}", size=SMALL_PT)
-    doc.beside((f"circle-{h.index}", diagram), centres_page_table(result, comparisons, lang), centres_rules(lang, result.scene.frame_number))
+    doc.beside((f"circle-{h.index}", diagram), centres_page_table(result, comparisons, lang), centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
 
 
 def data_lines(scene, lang: str) -> list[str]:
