@@ -537,6 +537,16 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "ω на звеното от скоростта на водещото звено, чрез центровете",
         "sl": "ω člena iz hitrosti pogonskega člena, prek polov",
     },
+    "over_driver_stroke": {"en": "over the driver's stroke", "sr": "током хода погонског члана", "ru": "за ход ведущего звена",
+                           "bg": "за хода на водещото звено", "sl": "med hodom pogonskega člena"},
+    "driver_stroke_ends": {"en": "ends of the driver's stroke", "sr": "крајеви хода погонског члана",
+                           "ru": "концы хода ведущего звена", "bg": "краищата на хода на водещото звено",
+                           "sl": "konca hoda pogonskega člena"},
+    "driver_stroke": {"en": "the driver's stroke", "sr": "ход погонског члана", "ru": "ход ведущего звена",
+                      "bg": "ходът на водещото звено", "sl": "hod pogonskega člena"},
+    "one_way_stroke": {"en": "one way: no return stroke, no K", "sr": "у једном смеру: без повратног хода, без K",
+                       "ru": "в одну сторону: без обратного хода, без K", "bg": "в една посока: без обратен ход, без K",
+                       "sl": "v eno smer: brez povratnega hoda, brez K"},
     # readings of a plan (issue 10 §2): what a student measures and computes
     "readings": {
         "en": "readings",

@@ -5,6 +5,8 @@ positions, the scene's own data (the driver's stroke), the i18n tables only for
 words a test plants a bug in.
 """
 
+import re
+
 import numpy as np
 import pytest
 
@@ -50,3 +52,64 @@ def test_sliding_driver_rule_gives_each_links_omega():
         assert abs(result.links[k]) == pytest.approx(by_differences, rel=1e-5), k  # the value the page's table states
         checked += 1
     assert checked >= 3
+
+
+# --- the three handouts the teacher read (built once) -------------------------------------------------------
+
+import functools
+import io
+
+import plans
+from plans.handout import handout
+from plans.i18n import term
+
+#: (example, positions, language) of the handouts the teacher reviewed
+HANDOUTS = {"quick-return": (12, "sr"), "linear-arm": (8, "bg"), "six-bar": (None, "en")}
+
+
+@functools.lru_cache(maxsize=None)
+def _built(name: str):
+    positions, lang = HANDOUTS[name]
+    return handout(plans.load(example_path(name)), positions=positions, lang=lang, centres=True)
+
+
+@functools.lru_cache(maxsize=None)
+def _page_texts(name: str) -> tuple[str, ...]:
+    from pypdf import PdfReader
+
+    reader = PdfReader(io.BytesIO(_built(name).pdf()))
+    return tuple(page.extract_text() for page in reader.pages)
+
+
+def _own_pages(name: str) -> list[str]:
+    """The page texts of the sections this work owns: not the cycle or kinematic diagrams' pages (nor forces: built
+    without them), told by their headings."""
+    lang = HANDOUTS[name][1]
+    skip = (term("cycle_diagrams", lang), term("kinematic_diagrams", lang))
+    return [text for text in _page_texts(name) if not any(words in text for words in skip)]
+
+
+# --- 2. a sliding driver's cycle is its stroke, one way ---------------------------------------------------
+
+
+def test_a_linear_drivers_pages_speak_of_its_stroke_not_of_the_cranks_strokes():
+    lang = "bg"
+    doc = _built("linear-arm")
+    text = "\n".join(_own_pages("linear-arm"))
+    for crank_words in ("extreme_positions", "working_stroke", "idle_stroke"):
+        assert term(crank_words, lang) not in text, crank_words
+    assert not re.search(r"(?<!\w)K =", text) and "θ =" not in text
+    assert term("driver_stroke_ends", lang) in text
+    stroke = plans.load(example_path("linear-arm")).driver.stroke  # the scene's own stroke [m]
+    length = f"{abs(stroke[1] - stroke[0]) * 1e3:g} мм"
+    assert length in text.replace("\u00a0", " "), length
+    # the acceleration plans: two along the stroke (its thirds), none chosen as an "idle stroke"
+    indices = [r.index for r in doc.runs]
+    assert doc.accelerations == [indices[len(indices) // 3], indices[2 * len(indices) // 3]]
+
+
+def test_a_crank_keeps_its_working_and_idle_strokes():
+    text = "\n".join(_own_pages("quick-return"))
+    for words in ("extreme_positions", "working_stroke", "idle_stroke"):
+        assert term(words, "sr") in text, words
+    assert re.search(r"(?<!\w)K =", text)

@@ -215,7 +215,8 @@ def choose_accelerations(run, asked) -> list[int]:
     nearest the middle of the working stroke and the one nearest the middle
     of the idle stroke (:func:`stroke_phases`; without them, the strokes told
     apart by the sense of the output's motion, the working one the longer
-    run of positions); one of each third when the output never turns back.
+    run of positions); one of each third when the output never turns back,
+    and for a sliding driver (its cycle is its stroke, one way: no idle stroke).
     """
     runs = run.runs
     solved = [r for r in runs if r.ok and r.graphical is not None and r.graphical.acceleration_plan is not None]
@@ -232,6 +233,8 @@ def choose_accelerations(run, asked) -> list[int]:
         return list(dict.fromkeys(asked))
     if len(solved) <= ACCELERATIONS_DEFAULT:
         return [r.index for r in solved]
+    if not _turning_driver(run):  # a sliding driver's cycle is its stroke, one way: two positions along it
+        return [solved[len(solved) // 3].index, solved[(2 * len(solved)) // 3].index]
     phases = stroke_phases(run)
     if phases:
         chosen = []
@@ -266,8 +269,19 @@ def _reason(r, lang: str) -> str:
     return re.sub(r"\b[RP]{3}\([^,()]+,[^,()]+\)", lambda m: group_words(m.group(0), lang), words)
 
 
+def _turning_driver(run) -> bool:
+    """Whether the driver turns (a crank or a rocker): a sliding driver has a stroke, one way, and no working or idle stroke."""
+    from ..scene import LinearDriver
+
+    return not isinstance(run.scene.driver, LinearDriver)
+
+
 def _stroke(r, working_sign: float, lang: str, phases=None) -> str:
-    """The stroke a position is in, in words (empty when not known)."""
+    """The stroke a position is in, in words (empty when not known, or for a sliding driver: its cycle is one stroke)."""
+    from ..scene import LinearDriver
+
+    if isinstance(r.scene.driver, LinearDriver):
+        return ""
     if phases and r.index in phases:
         return term("working_stroke" if phases[r.index][0] == "working" else "idle_stroke", lang)
     sense = _output_sense(r)
