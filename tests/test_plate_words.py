@@ -113,3 +113,40 @@ def test_a_crank_keeps_its_working_and_idle_strokes():
     for words in ("extreme_positions", "working_stroke", "idle_stroke"):
         assert term(words, "sr") in text, words
     assert re.search(r"(?<!\w)K =", text)
+
+
+# --- 3. units as the Russian and Bulgarian courses write them, in the drawings too -------------------------
+
+import base64
+
+#: a Latin unit symbol as a page or a drawing would print it (after a number or in a scale)
+_LATIN_UNIT = re.compile(r"(?<![A-Za-z])(m/mm|m/s²|m/s|rad/s|mm)(?![A-Za-z])")
+
+
+def _drawing_texts(page_svg: bytes) -> list[str]:
+    """The text of every drawing a Typst SVG page embeds (base64 ``data:image/svg+xml``), each drawing's text nodes
+    joined (matplotlib sets a text with math glyph by glyph, one node each)."""
+    out = []
+    for data in re.findall(rb"data:image/svg\+xml;base64,([A-Za-z0-9+/=]+)", page_svg):
+        svg = base64.b64decode(data).decode("utf-8")
+        svg = re.sub(r"<metadata>.*?</metadata>|<style.*?</style>", "", svg, flags=re.S)
+        texts = re.findall(r"<text[^>]*>(.*?)</text>", svg, flags=re.S)  # a plain text, or a math one's tspans
+        out.append("".join(re.sub(r"<[^>]*>|\n\s*", "", t) for t in texts))
+    return out
+
+
+def test_no_latin_unit_on_a_bulgarian_page_nor_in_its_drawings():
+    doc = _built("linear-arm")
+    for number, text in enumerate(_page_texts("linear-arm"), start=1):
+        assert not _LATIN_UNIT.search(text), (number, _LATIN_UNIT.search(text).group(0))
+    pages = doc.pages("svg")
+    seen = 0
+    for number, page in enumerate(pages, start=1):
+        for text in _drawing_texts(page):
+            seen += 1
+            found = _LATIN_UNIT.search(text)
+            assert not found, (number, found.group(0), text[max(0, found.start() - 30):found.end() + 10])
+    assert seen >= 10
+    # and the drawings do say their units, in Cyrillic: the plan's notes, the centres' scale and distances
+    drawn = "".join(t for page in pages for t in _drawing_texts(page))
+    assert "м/мм" in drawn and "мм" in drawn
