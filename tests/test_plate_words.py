@@ -150,3 +150,64 @@ def test_no_latin_unit_on_a_bulgarian_page_nor_in_its_drawings():
     # and the drawings do say their units, in Cyrillic: the plan's notes, the centres' scale and distances
     drawn = "".join(t for page in pages for t in _drawing_texts(page))
     assert "м/мм" in drawn and "мм" in drawn
+
+
+# --- 5. every named point's absolute velocity and acceleration the plans draw, in the results table -------------
+
+from plans.compare import compare
+from plans.graphical import construct
+from plans.report import sheet_table
+
+
+def _point_of_link_by_differences(scene, point: str, link: str, ref: str):
+    """(v, a) of the point of *link* under *point* at the scene's position, by five-point central differences in time
+    of the analytic positions (the driver at constant ω, ε = 0 in these scenes): r(t) = r_R(t) + (r_P(0) − r_R(0))·
+    e^{i(φ(t) − φ(0))}, R a point of the link."""
+    d = scene.driver
+    assert d.epsilon == 0
+    h = 1e-4
+    ts = np.array([-2, -1, 0, 1, 2]) * h
+    sol = solve(scene, d.phi + d.omega * ts)
+    r_ref = np.asarray(sol.points[ref].r)
+    phi = np.unwrap(np.asarray(sol.links[link].phi))
+    arm0 = complex(sol.points[point].r[2]) - complex(r_ref[2])
+    r = r_ref + arm0 * np.exp(1j * (phi - phi[2]))
+    v = (r[0] - 8 * r[1] + 8 * r[3] - r[4]) / (12 * h)
+    a = (-r[0] + 16 * r[1] - 30 * r[2] + 16 * r[3] - r[4]) / (12 * h * h)
+    return complex(v), complex(a)
+
+
+def _vector_cell(text: str) -> complex:
+    """``1.565 ∠ 196.1°`` → the complex number it states."""
+    m = re.fullmatch(r"([0-9.]+) ∠ ([0-9.]+)°", text)
+    assert m, text
+    return float(m.group(1)) * np.exp(1j * np.radians(float(m.group(2))))
+
+
+@pytest.mark.parametrize("example, point, link, ref", [("quick-return", "A", "4", "C"), ("six-bar", "E", "5", "B")])
+def test_results_table_holds_every_drawn_points_absolute_velocity_and_acceleration(example, point, link, ref):
+    scene = plans.load(example_path(example))
+    analytic, graphical = solve(scene), construct(scene)
+    table = sheet_table(compare(analytic, graphical), graphical, analytic, points_of_links=True)
+    cells = {row[0]: row for row in table[1:]}
+    v, a = _point_of_link_by_differences(scene, point, link, ref)
+    for symbol, expected in ((f"$v_{{{point}{link}}}$ [m/s]", v), (f"$a_{{{point}{link}}}$ [m/s²]", a)):
+        assert symbol in cells, (symbol, list(cells))
+        _, drawn, worked, _ = cells[symbol]
+        for value in (_vector_cell(drawn), _vector_cell(worked)):  # 4 significant digits, the angle to 0.1°
+            assert abs(value) == pytest.approx(abs(expected), rel=2e-3), symbol
+            assert abs(np.angle(value / expected, deg=True)) < 0.06, symbol
+    # a position whose acceleration plan is not on the plate: its velocity only
+    velocities = [c for c in compare(analytic, graphical) if c.quantity in ("v", "omega", "v_rel")]
+    rows = [row[0] for row in sheet_table(velocities, graphical, analytic, points_of_links=True)]
+    assert f"$v_{{{point}{link}}}$ [m/s]" in rows and not any(r.startswith("$a") for r in rows)
+
+
+def test_handouts_results_tables_hold_a_A4_and_a_E5():
+    """The handout's table of every position holds v_A4 (quick-return), its acceleration where its plan is drawn;
+    the six-bar's holds a_E5."""
+    qr = _built("quick-return").source
+    moving = [r for r in _built("quick-return").runs if abs(r.analytic.links["4"].omega[0]) > 1e-6]  # at rest: no row
+    assert qr.count('$v_(A 4 )$#" [m/s]"') == len(moving) >= 10
+    assert qr.count('$a_(A 4 )$#" [m/s²]"') == len(_built("quick-return").accelerations)
+    assert _built("six-bar").source.count('$a_(E 5 )$#" [m/s²]"') == 1

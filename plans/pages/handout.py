@@ -670,7 +670,7 @@ def _table(h, lang: str, accelerations: bool = True) -> list[list[str]]:
     from ..report import sheet_table
 
     comparisons = h.comparisons if accelerations else [c for c in h.comparisons if c.quantity in VELOCITY_QUANTITIES]
-    return translate_table(sheet_table(comparisons, h.graphical, h.analytic), lang)
+    return translate_table(sheet_table(comparisons, h.graphical, h.analytic, points_of_links=True), lang)
 
 
 def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambda words: None) -> float | None:
