@@ -81,14 +81,14 @@ def _rendered(fig, lang: str) -> bytes:
     return render_svg(fig)
 
 
-def _sketched(tag: str, draw, lang: str) -> SvgBlock:
-    """Run ``draw(sketch)`` on a new figure sized to what it drew plus the margin."""
+def _sketched(tag: str, draw, lang: str, margin: float = MARGIN_MM) -> SvgBlock:
+    """Run ``draw(sketch)`` on a new figure sized to what it drew plus the *margin* [mm]."""
     with drawing_rc():
         fig = new_figure()
         ax = fig.add_axes([0, 0, 1, 1])
         sketch = Sketch(ax, tag)
         draw(sketch)
-        width, height = fit_axes(ax, sketch.bounds, MARGIN_MM)
+        width, height = fit_axes(ax, sketch.bounds, margin)
         return SvgBlock(_units(_rendered(fig, lang), lang), width, height)
 
 
@@ -99,12 +99,14 @@ def mechanism_svg(graphical, lang: str = "en") -> SvgBlock:
     return _sketched("mech", lambda sketch: MechanismDrawing(sketch, graphical, lang=lang, caption=False).draw(), lang)
 
 
-def plan_svg(plan, lang: str = "en", detail: bool = True) -> SvgBlock:
-    """A velocity or acceleration plan at its own scale, without heading, scale and legend (the page states them)."""
+def plan_svg(plan, lang: str = "en", detail: bool = True, margin: float = MARGIN_MM) -> SvgBlock:
+    """A velocity or acceleration plan at its own scale, without heading, scale and legend (the page states them);
+    *margin* [mm] of white around it (less for a plan across a page, whose edges are the text area's)."""
     from .plan_drawing import draw_plan_into
 
     tag = "vel" if plan.kind == "velocity" else "acc"
-    return _sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang)
+    return _sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang,
+                     margin)
 
 
 def legend_svg(plans, lang: str = "en") -> SvgBlock:

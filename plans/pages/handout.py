@@ -64,6 +64,9 @@ POSITIONS_BOX = (TEXT_WIDTH, 150.0)
 VELOCITY_CELL = ((TEXT_WIDTH - GUTTER) / 2, 70.0)
 #: a velocity plan too large for a half cell at the plate's k_v takes a row of its own (three rows to a page)
 VELOCITY_WIDE = (TEXT_WIDTH, 80.0)
+#: the white margin [mm] of a velocity plan in a row of its own: the text area's edges are its frame (a half cell's
+#: plan keeps the drawings' margin, which parts it from its neighbour)
+WIDE_MARGIN = 1.0
 #: at most this share of the positions may take a row of their own (else every plan goes two across, the
 #: largest filling a half cell): the wide rows are for the few positions whose plans are large
 WIDE_SHARE = 1 / 3
@@ -389,7 +392,7 @@ def build_handout(
             # the largest plan given a row of its own: kept when only a few plans need one (they are then far
             # larger than the rest, which a half cell would leave small)
             largest_wide = max(solved, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.velocity_plan), VELOCITY_WIDE)))
-            k_wide, _ = _fitted(lambda k: plan_svg(scaled(largest_wide, "k_v", k).graphical.velocity_plan, lang),
+            k_wide, _ = _fitted(lambda k: plan_svg(scaled(largest_wide, "k_v", k).graphical.velocity_plan, lang, margin=WIDE_MARGIN),
                                 _plan_extent(largest_wide.graphical.velocity_plan), VELOCITY_WIDE, largest_wide.graphical.scales["k_v"], None)
             # the finest round factor (from the largest's row up) with which only a few need a row
             k = min(k_wide, round_up(k_v_plate / 2))
@@ -414,10 +417,10 @@ def build_handout(
     here = {}
     velocity_blocks, acceleration_blocks = {}, {}
 
-    def fitting(plan, cell):
-        block = plan_svg(plan, lang)
+    def fitting(plan, cell, **margin):
+        block = plan_svg(plan, lang, **margin)
         if block.width > cell[0] + 0.5:
-            block = plan_svg(plan, lang, detail=False)
+            block = plan_svg(plan, lang, detail=False, **margin)
         return block
 
     wide = set()  # the positions whose velocity plans take a row of their own
@@ -432,7 +435,7 @@ def build_handout(
             block = velocity_blocks[r.index]
             if multi and scales != "per-position" and (block.width > cell_v[0] + 0.5 or block.height > cell_v[1] + 0.5):
                 wide.add(r.index)
-                velocity_blocks[r.index] = block = fitting(h.graphical.velocity_plan, VELOCITY_WIDE)
+                velocity_blocks[r.index] = block = fitting(h.graphical.velocity_plan, VELOCITY_WIDE, margin=WIDE_MARGIN)
                 if block.width > VELOCITY_WIDE[0] + 0.5:
                     wider["k_v"] = max(wider.get("k_v", 1.0), block.width / VELOCITY_WIDE[0])
             elif block.width > cell_v[0] + 0.5:
