@@ -211,3 +211,25 @@ def test_handouts_results_tables_hold_a_A4_and_a_E5():
     assert qr.count('$v_(A 4 )$#" [m/s]"') == len(moving) >= 10
     assert qr.count('$a_(A 4 )$#" [m/s²]"') == len(_built("quick-return").accelerations)
     assert _built("six-bar").source.count('$a_(E 5 )$#" [m/s²]"') == 1
+
+
+# --- 7. no program token on a page; a group named one way -------------------------------------------------------
+
+#: what the program writes and a page must not: a group's kind token, an assembly's sign, a guide's key, a name's "_"
+_TOKENS = re.compile(r"\b[RP]{3}\(|\(\+1\)|\(−1\)|\(-1\)|\bframe\.|[A-Za-z]_[A-Za-z0-9]")
+#: a group named as a structural formula names it (II₁(3,4)): only in the structural formula
+_ASSUR = re.compile(r"\bII ?[₁-₅1-5]? ?\(")
+
+
+@pytest.mark.parametrize("name", list(HANDOUTS))
+def test_no_program_token_on_the_plate_pages(name):
+    pages = _own_pages(name)
+    assert len(pages) >= 5
+    lang = HANDOUTS[name][1]
+    formula = term("structural_formula", lang)
+    for number, text in enumerate(pages, start=1):
+        found = _TOKENS.search(text)
+        assert not found, (name, number, text[max(0, found.start() - 60):found.end() + 30])
+        for line in text.splitlines():
+            if _ASSUR.search(line):
+                assert line.startswith(formula), (name, number, line)  # elsewhere a group is "group 3–4"

@@ -18,7 +18,7 @@ from ..i18n import term
 from .._text import decimal_comma
 from .equations import step_lines
 from .typesetting import FONT as _FONT, MATH_FONT as _MATH, image, mixed, string, text
-from .words import formula_words, units
+from .words import block_words, units
 
 __all__ = ["Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "TEXT_PT", "SMALL_PT"]
 
@@ -213,7 +213,7 @@ class Document:
         self.body.append(f"#text(size: {SMALL_PT}pt)[#columns(2, gutter: {GUTTER}mm)[" + "\n".join("#" + p for p in parts) + "]]\n")
 
     def loop_block(self, block) -> None:
-        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(formula_words(block.title))}]\n")
+        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(block_words(block.title, self.lang))}]\n")
         for line in block.lines:
             self.body.append(f"#text(size: {SMALL_PT}pt)[{self.words(line)}]\n")
 
