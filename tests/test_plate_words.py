@@ -233,3 +233,57 @@ def test_no_program_token_on_the_plate_pages(name):
         for line in text.splitlines():
             if _ASSUR.search(line):
                 assert line.startswith(formula), (name, number, line)  # elsewhere a group is "group 3–4"
+
+
+# --- 4. the centres' pages: the circle diagram once, headings of one line, no label over another --------------
+
+from svg_text_boxes import overlaps, text_boxes
+
+
+def _centres_pages(name: str) -> list[str]:
+    lang = HANDOUTS[name][1]
+    pages = _page_texts(name)
+    first = next(k for k, text in enumerate(pages) if text.lstrip().startswith(term("centres_page", lang)))
+    return list(pages[first:])
+
+
+@pytest.mark.parametrize("name", list(HANDOUTS))
+def test_centres_pages_draw_the_circle_diagram_once_and_head_each_page_in_one_line(name):
+    doc = _built(name)
+    lang = HANDOUTS[name][1]
+    assert len([key for key in doc.images if key.startswith("circle-")]) == 1
+    pages = _centres_pages(name)
+    assert len(pages) == len(doc.runs) + 1  # the method's page, then one a position
+    assert pages[0].splitlines()[0].strip() == term("centres_page", lang)
+    for h, text in zip(doc.runs, pages[1:]):
+        heading = text.splitlines()[0]
+        assert heading.startswith(term("instant_centres", lang)), heading
+        if HANDOUTS[name][0] is not None:  # several positions: each page names its own
+            assert f"{term('position', lang)} {h.index}:" in heading, heading
+        number = re.search(r"[−-]?[0-9]+[.,][0-9]+", h.label).group(0).replace(".", "," if lang != "en" else ".")
+        assert number in heading, (heading, h.label)  # the whole heading on its first line: not wrapped
+
+
+@pytest.mark.parametrize("name", list(HANDOUTS))
+def test_no_label_over_another_on_the_centres_and_positions_drawings(name):
+    doc = _built(name)
+    checked = 0
+    for key, svg in doc.images.items():
+        if key.startswith(("centres-", "positions", "circle-")):
+            boxes = text_boxes(svg)
+            assert len(boxes) >= 6, key
+            assert not overlaps(boxes), (name, key, overlaps(boxes)[:3])
+            checked += 1
+    assert checked >= 2
+
+
+def test_centres_drawing_large_enough_to_read():
+    """The linear-arm's centres (bg) were drawn at k_l 0.03 m/mm, the mechanism some 35 mm across under 16 labels:
+    at least 60 mm now (its points' extent at the pages' k_l)."""
+    doc = _built("linear-arm")
+    k = float(re.search(r'plate-kl\.update\(\[\$k_\(l \)\$#" = ([0-9,]+) ', doc.source).group(1).replace(",", "."))
+    for h in doc.runs:
+        zs = list(h.analytic.points.values())
+        xs = [complex(p.r[0]).real for p in zs]
+        ys = [complex(p.r[0]).imag for p in zs]
+        assert max(max(xs) - min(xs), max(ys) - min(ys)) / k >= 60.0, (h.index, k)

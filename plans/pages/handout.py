@@ -70,8 +70,11 @@ WIDE_MARGIN = 1.0
 #: at most this share of the positions may take a row of their own (else every plan goes two across, the
 #: largest filling a half cell): the wide rows are for the few positions whose plans are large
 WIDE_SHARE = 1 / 3
-#: room [mm] a centres page keeps for its heading (two lines), Kennedy's statement and the legend (two lines)
-CENTRES_PAGE_TEXT = 42.0
+#: room [mm] a centres page keeps for its heading (one line), the legend (two lines), the rules (two) and the gaps;
+#: its table takes CENTRES_ROW a row, and the drawing the rest, at most CENTRES_DRAWING_MAX
+CENTRES_PAGE_TEXT = 40.0
+CENTRES_ROW = 4.2
+CENTRES_DRAWING_MAX = 170.0
 #: the page of cycle diagrams [mm]: the text area (a little short of it), so that it prints at 100 %, its 8 pt type 8 pt
 DIAGRAM_PAGE = (TEXT_WIDTH, TEXT_HEIGHT - 4.0)
 
@@ -677,19 +680,21 @@ def _table(h, lang: str, accelerations: bool = True) -> list[list[str]]:
 
 
 def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambda words: None) -> float | None:
-    """A page of instant centres for every position of *positions*: the mechanism with its centres at one k_l
-    for all the pages (the plate's, or the coarsest any of them needs to hold its drawing), stated on each page
-    and in their title block; the circle diagram, the rules and the table.  Returns that k_l (None: no page
-    has a drawing)."""
+    """The instant centres' pages: first the method (its title, Kennedy's theorem and the circle diagram, the same
+    for every position, drawn once), then a page for every position of *positions*: the mechanism with its centres
+    at one k_l for all the pages (the plate's, or the coarsest any of them needs to hold its drawing above its
+    table), stated on each page and in their title block; the table and the rules.  Returns that k_l (None: no
+    page has a drawing)."""
     from ..centres import instant_centres
     from ..compare import compare_centres
     from ..drawing.centres import CentresSizer
-    from ..drawing.centres_page import ROOM_MIN
+    from ..drawing.centres_page import ROOM_MIN, centres_page_table
     from ..drawing.svgblocks import centres_svg, circle_diagram_svg
     from ..errors import PlansError
 
-    pages = []  # (h, result, comparisons, diagram, box) or (h, error)
+    pages = []  # (h, result, comparisons, table, box) or (h, error)
     k = k_l
+    diagram = None
     for n, h in enumerate(positions, start=1):
         say(f"{term('instant_centres', lang)} {n}/{len(positions)}")
         try:
@@ -698,9 +703,11 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         except PlansError as exc:
             pages.append((h, exc))
             continue
-        # the drawing gets what the page leaves beside its heading, the legend and the circle diagram with the table
-        diagram = circle_diagram_svg(result, lang)
-        box = (TEXT_WIDTH, min(150.0, TEXT_HEIGHT - CENTRES_PAGE_TEXT - max(diagram.height, 55.0)))
+        if diagram is None:
+            diagram = (f"circle-{h.index}", circle_diagram_svg(result, lang))
+        # the drawing gets what the page leaves under its heading and the legend, over the table and the rules
+        table = centres_page_table(result, comparisons, lang)
+        box = (TEXT_WIDTH, min(CENTRES_DRAWING_MAX, TEXT_HEIGHT - CENTRES_PAGE_TEXT - CENTRES_ROW * len(table)))
         # sizes from geometry (two drawings of the mechanism alone, plans.drawing.centres.CentresSizer)
         sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
         for _ in range(24):
@@ -708,7 +715,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
             if width <= box[0] + 0.5 and height <= box[1] + 0.5:
                 break
             k = round_up(k * max(width / box[0], height / box[1], 1.0001))
-        pages.append((h, result, comparisons, diagram, box))
+        pages.append((h, result, comparisons, table, box))
     drawn = [p for p in pages if len(p) > 2]
     blocks = {}
     for _ in range(4):  # the sizer is exact at its own two scales, close elsewhere: coarser while a drawing runs over
@@ -721,28 +728,42 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         if over <= 1.0:
             break
         k = round_up(k * over * 1.0001)
+    _centres_method(doc, diagram, k, lang, drawn[0][1] if drawn else None)
     for page in pages:
         _centres_page(doc, page, k, blocks, lang, multi)
     return k if drawn else None
 
 
-def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
-    """The page of instant centres of one position (:func:`_centres_pages`)."""
-    from ..drawing.centres_page import centres_page_table, centres_rules
+def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
+    """The centres' first page: the method's title, Kennedy's theorem, the circle diagram (once: it is the same for
+    every position), the rules and the order of finding the centres (*result*: a position's centres)."""
+    from ..drawing.centres_page import centres_order_table, centres_rules
 
-    h = page[0]
-    title = f"{term('centres_page', lang)}" + (f" — {term('position', lang)} {h.index}:  {h.label}" if multi else "")
-    doc.heading(title, level=2, new_page=True)
+    doc.heading(term("centres_page", lang), level=2, new_page=True)
     doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k)}])")  # the title block of the centres' pages
     kennedy = term("kennedy_theorem", lang)
-    doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=SMALL_PT)
+    doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=TEXT_PT)
+    if diagram is not None and result is not None:
+        doc.beside(diagram, [], [term("centres_legend", lang), term("centres_edge_legend", lang)]
+                   + centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
+        doc.tables([(term("centres_order", lang), centres_order_table(result, lang))], aligns="(left, left)")
+
+
+def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
+    """The page of instant centres of one position (:func:`_centres_pages`), headed by the position in one line."""
+    from ..drawing.centres_page import centres_rules
+
+    h = page[0]
+    where = f"{term('position', lang)} {h.index}:  {h.label}"
+    doc.heading(f"{term('instant_centres', lang)} — {where}" if multi else f"{term('instant_centres', lang)}:  {h.label}",
+                level=2, new_page=True)
     if len(page) == 2:
         doc.line(str(page[1]), size=TEXT_PT)
         return
-    _, result, comparisons, diagram, _ = page
+    _, result, _, table, _ = page
     doc.figure(f"centres-{h.index}", blocks[h.index][1])
     doc.line(f"{term('centres_legend', lang)};  {term('centres_edge_legend', lang)}", size=SMALL_PT)
-    doc.beside((f"circle-{h.index}", diagram), centres_page_table(result, comparisons, lang), centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
+    doc.beside(None, table, centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
 
 
 def data_lines(scene, lang: str) -> list[str]:
