@@ -17,9 +17,11 @@ What the handout holds, in the order a student draws the plate (domain.md §10):
    graphical accelerations only of the positions whose acceleration plans
    are drawn: the others' tables hold their velocities), and
    the complex-number loop equations of the chosen positions;
-6. the kinematic diagrams over the cycle; with ``centres``, a page of
-   instant centres for every position, all at one k_l (the plate's, or the
-   coarsest any of them needs), which their title block states.
+6. the kinematic diagrams over the cycle; with ``centres``, the method's
+   page (Kennedy's theorem, the circle diagram once, the rules, the order of
+   finding the centres) and a page of instant centres for every position,
+   all at one k_l (the plate's, or the coarsest any of them needs), which
+   their title block states.
 
 One k_l, one k_v, one k_a over the whole handout (each the round factor
 with which the largest of its drawings fills the room a page gives it; a
