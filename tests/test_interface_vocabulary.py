@@ -352,6 +352,17 @@ VOCABULARY = {
     "polar_note": {"sr": "Сваки вектор из пола је реакција у једном положају криваје; бројеви су положаји 0, 1, … од крајњег положаја излазног члана.", "ru": "Каждый вектор из полюса — реакция в одном положении кривошипа; числа — положения 0, 1, … от крайнего положения выходного звена.", "bg": "Всеки вектор от полюса е реакцията в едно положение на манивелата; числата са положенията 0, 1, … от крайното положение на изходното звено.", "sl": "Vsak vektor iz pola je reakcija v eni legi ročice; številke so lege 0, 1, … od skrajne lege izhodnega člena."},
     # the plate's data line: a four-bar loop named by its links
     "four_bar_loop": {"sr": "зглавкасти четвороугао", "ru": "шарнирный четырёхзвенник", "bg": "шарнирен четиризвенник", "sl": "štirizgibni mehanizem"},
+    # the words of a sliding driver and of the centres' method page (issue 20)
+    "centres_omega_rule_linear": {"sr": "ω члана из брзине погонског члана, преко полова", "ru": "ω звена по скорости ведущего звена, через центры", "bg": "ω на звеното от скоростта на водещото звено, чрез центровете", "sl": "ω člena iz hitrosti pogonskega člena, prek polov"},
+    "over_driver_stroke": {"sr": "током хода погонског члана", "ru": "за ход ведущего звена", "bg": "за хода на водещото звено", "sl": "med hodom pogonskega člena"},
+    "driver_stroke_ends": {"sr": "крајеви хода погонског члана", "ru": "концы хода ведущего звена", "bg": "краищата на хода на водещото звено", "sl": "konca hoda pogonskega člena"},
+    "driver_stroke": {"sr": "ход погонског члана", "ru": "ход ведущего звена", "bg": "ходът на водещото звено", "sl": "hod pogonskega člena"},
+    "one_way_stroke": {"sr": "у једном смеру: без повратног хода, без K", "ru": "в одну сторону: без обратного хода, без K", "bg": "в една посока: без обратен ход, без K", "sl": "v eno smer: brez povratnega hoda, brez K"},
+    "centre_column": {"sr": "пол", "ru": "центр", "bg": "център", "sl": "pol"},
+    "found_column": {"sr": "како је нађен", "ru": "как найден", "bg": "как е намерен", "sl": "kako je najden"},
+    "centre_at_pin": {"sr": "у зглобу {pin}", "ru": "в шарнире {pin}", "bg": "в шарнира {pin}", "sl": "v zgibu {pin}"},
+    "centre_perpendicular_guide": {"sr": "у бесконачности, управно на вођицу", "ru": "в бесконечности, перпендикулярно направляющей", "bg": "в безкрайността, перпендикулярно на водача", "sl": "v neskončnosti, pravokotno na vodilo"},
+    "centres_order": {"sr": "Редослед налажења полова", "ru": "Порядок нахождения центров", "bg": "Ред на намиране на центровете", "sl": "Vrstni red iskanja polov"},
 }
 
 #: domain.md §9, word for word: the headings every handout carries.

@@ -18,7 +18,7 @@ from ..i18n import term
 from .._text import decimal_comma
 from .equations import step_lines
 from .typesetting import FONT as _FONT, MATH_FONT as _MATH, image, mixed, string, text
-from .words import formula_words, units
+from .words import block_words, units
 
 __all__ = ["Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "TEXT_PT", "SMALL_PT"]
 
@@ -221,12 +221,12 @@ class Document:
         self.body.append(f"#text(size: {SMALL_PT}pt)[#columns(2, gutter: {GUTTER}mm)[" + "\n".join("#" + p for p in parts) + "]]\n")
 
     def loop_block(self, block) -> None:
-        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(formula_words(block.title))}]\n")
+        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(block_words(block.title, self.lang))}]\n")
         for line in block.lines:
             self.body.append(f"#text(size: {SMALL_PT}pt)[{self.words(line)}]\n")
 
     def beside(self, drawing, table, lines) -> None:
-        key, block = drawing
+        """*table* (none: empty) and *lines* beside a *drawing* ``(key, block)``; with *drawing* None, alone (the page's width)."""
         rows = []
         for i, row in enumerate(table):
             weight = "bold" if i == 0 else "regular"
@@ -235,8 +235,13 @@ class Document:
         tab = (f"table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: (left, left, right, right, right), table.hline(stroke: 0.7pt), "
                + ", table.hline(stroke: 0.4pt), ".join([rows[0], ", ".join(rows[1:])]) + ", table.hline(stroke: 0.7pt))") if rows else "[]"
         words = " \\\n".join(self.words(line) for line in lines)
+        content = f"#{tab} \\\n{words}" if rows else words
+        if drawing is None:
+            self.body.append(f"#text(size: {SMALL_PT}pt)[{content}]\n")
+            return
+        key, block = drawing
         self.body.append(f"#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {self.add_image(key, block)}, "
-                         f"text(size: {SMALL_PT}pt)[#{tab} \\\n{words}])\n")
+                         f"text(size: {SMALL_PT}pt)[{content}])\n")
 
     # the whole
     def source(self) -> str:

@@ -17,9 +17,11 @@ What the handout holds, in the order a student draws the plate (domain.md §10):
    graphical accelerations only of the positions whose acceleration plans
    are drawn: the others' tables hold their velocities), and
    the complex-number loop equations of the chosen positions;
-6. the kinematic diagrams over the cycle; with ``centres``, a page of
-   instant centres for every position, all at one k_l (the plate's, or the
-   coarsest any of them needs), which their title block states.
+6. the kinematic diagrams over the cycle; with ``centres``, the method's
+   page (Kennedy's theorem, the circle diagram once, the rules, the order of
+   finding the centres) and a page of instant centres for every position,
+   all at one k_l (the plate's, or the coarsest any of them needs), which
+   their title block states.
 
 One k_l, one k_v, one k_a over the whole handout (each the round factor
 with which the largest of its drawings fills the room a page gives it; a
@@ -64,11 +66,17 @@ POSITIONS_BOX = (TEXT_WIDTH, 150.0)
 VELOCITY_CELL = ((TEXT_WIDTH - GUTTER) / 2, 70.0)
 #: a velocity plan too large for a half cell at the plate's k_v takes a row of its own (three rows to a page)
 VELOCITY_WIDE = (TEXT_WIDTH, 80.0)
+#: the white margin [mm] of a velocity plan in a row of its own: the text area's edges are its frame (a half cell's
+#: plan keeps the drawings' margin, which parts it from its neighbour)
+WIDE_MARGIN = 1.0
 #: at most this share of the positions may take a row of their own (else every plan goes two across, the
 #: largest filling a half cell): the wide rows are for the few positions whose plans are large
 WIDE_SHARE = 1 / 3
-#: room [mm] a centres page keeps for its heading (two lines), Kennedy's statement and the legend (two lines)
-CENTRES_PAGE_TEXT = 42.0
+#: room [mm] a centres page keeps for its heading (one line), the legend (two lines), the rules (two) and the gaps;
+#: its table takes CENTRES_ROW a row, and the drawing the rest, at most CENTRES_DRAWING_MAX
+CENTRES_PAGE_TEXT = 40.0
+CENTRES_ROW = 4.2
+CENTRES_DRAWING_MAX = 170.0
 #: the page of cycle diagrams [mm]: the text area (a little short of it), so that it prints at 100 %, its 8 pt type 8 pt
 DIAGRAM_PAGE = (TEXT_WIDTH, TEXT_HEIGHT - 4.0)
 
@@ -215,7 +223,8 @@ def choose_accelerations(run, asked) -> list[int]:
     nearest the middle of the working stroke and the one nearest the middle
     of the idle stroke (:func:`stroke_phases`; without them, the strokes told
     apart by the sense of the output's motion, the working one the longer
-    run of positions); one of each third when the output never turns back.
+    run of positions); one of each third when the output never turns back,
+    and for a sliding driver (its cycle is its stroke, one way: no idle stroke).
     """
     runs = run.runs
     solved = [r for r in runs if r.ok and r.graphical is not None and r.graphical.acceleration_plan is not None]
@@ -232,6 +241,8 @@ def choose_accelerations(run, asked) -> list[int]:
         return list(dict.fromkeys(asked))
     if len(solved) <= ACCELERATIONS_DEFAULT:
         return [r.index for r in solved]
+    if not _turning_driver(run):  # a sliding driver's cycle is its stroke, one way: two positions along it
+        return [solved[len(solved) // 3].index, solved[(2 * len(solved)) // 3].index]
     phases = stroke_phases(run)
     if phases:
         chosen = []
@@ -266,8 +277,19 @@ def _reason(r, lang: str) -> str:
     return re.sub(r"\b[RP]{3}\([^,()]+,[^,()]+\)", lambda m: group_words(m.group(0), lang), words)
 
 
+def _turning_driver(run) -> bool:
+    """Whether the driver turns (a crank or a rocker): a sliding driver has a stroke, one way, and no working or idle stroke."""
+    from ..scene import LinearDriver
+
+    return not isinstance(run.scene.driver, LinearDriver)
+
+
 def _stroke(r, working_sign: float, lang: str, phases=None) -> str:
-    """The stroke a position is in, in words (empty when not known)."""
+    """The stroke a position is in, in words (empty when not known, or for a sliding driver: its cycle is one stroke)."""
+    from ..scene import LinearDriver
+
+    if isinstance(r.scene.driver, LinearDriver):
+        return ""
     if phases and r.index in phases:
         return term("working_stroke" if phases[r.index][0] == "working" else "idle_stroke", lang)
     sense = _output_sense(r)
@@ -375,7 +397,7 @@ def build_handout(
             # the largest plan given a row of its own: kept when only a few plans need one (they are then far
             # larger than the rest, which a half cell would leave small)
             largest_wide = max(solved, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.velocity_plan), VELOCITY_WIDE)))
-            k_wide, _ = _fitted(lambda k: plan_svg(scaled(largest_wide, "k_v", k).graphical.velocity_plan, lang),
+            k_wide, _ = _fitted(lambda k: plan_svg(scaled(largest_wide, "k_v", k).graphical.velocity_plan, lang, margin=WIDE_MARGIN),
                                 _plan_extent(largest_wide.graphical.velocity_plan), VELOCITY_WIDE, largest_wide.graphical.scales["k_v"], None)
             # the finest round factor (from the largest's row up) with which only a few need a row
             k = min(k_wide, round_up(k_v_plate / 2))
@@ -400,10 +422,10 @@ def build_handout(
     here = {}
     velocity_blocks, acceleration_blocks = {}, {}
 
-    def fitting(plan, cell):
-        block = plan_svg(plan, lang)
+    def fitting(plan, cell, **margin):
+        block = plan_svg(plan, lang, **margin)
         if block.width > cell[0] + 0.5:
-            block = plan_svg(plan, lang, detail=False)
+            block = plan_svg(plan, lang, detail=False, **margin)
         return block
 
     wide = set()  # the positions whose velocity plans take a row of their own
@@ -418,7 +440,7 @@ def build_handout(
             block = velocity_blocks[r.index]
             if multi and scales != "per-position" and (block.width > cell_v[0] + 0.5 or block.height > cell_v[1] + 0.5):
                 wide.add(r.index)
-                velocity_blocks[r.index] = block = fitting(h.graphical.velocity_plan, VELOCITY_WIDE)
+                velocity_blocks[r.index] = block = fitting(h.graphical.velocity_plan, VELOCITY_WIDE, margin=WIDE_MARGIN)
                 if block.width > VELOCITY_WIDE[0] + 0.5:
                     wider["k_v"] = max(wider.get("k_v", 1.0), block.width / VELOCITY_WIDE[0])
             elif block.width > cell_v[0] + 0.5:
@@ -637,7 +659,7 @@ def _table(h, lang: str, accelerations: bool = True) -> list[list[str]]:
     from ..report import sheet_table
 
     comparisons = h.comparisons if accelerations else [c for c in h.comparisons if c.quantity in VELOCITY_QUANTITIES]
-    return translate_table(sheet_table(comparisons, h.graphical, h.analytic), lang)
+    return translate_table(sheet_table(comparisons, h.graphical, h.analytic, points_of_links=True), lang)
 
 
 def _forces_pages(doc, positions, lang: str, multi: bool) -> None:
@@ -659,19 +681,21 @@ def _forces_pages(doc, positions, lang: str, multi: bool) -> None:
 
 
 def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambda words: None) -> float | None:
-    """A page of instant centres for every position of *positions*: the mechanism with its centres at one k_l
-    for all the pages (the plate's, or the coarsest any of them needs to hold its drawing), stated on each page
-    and in their title block; the circle diagram, the rules and the table.  Returns that k_l (None: no page
-    has a drawing)."""
+    """The instant centres' pages: first the method (its title, Kennedy's theorem and the circle diagram, the same
+    for every position, drawn once), then a page for every position of *positions*: the mechanism with its centres
+    at one k_l for all the pages (the plate's, or the coarsest any of them needs to hold its drawing above its
+    table), stated on each page and in their title block; the table and the rules.  Returns that k_l (None: no
+    page has a drawing)."""
     from ..centres import instant_centres
     from ..compare import compare_centres
     from ..drawing.centres import CentresSizer
-    from ..drawing.centres_page import ROOM_MIN
+    from ..drawing.centres_page import ROOM_MIN, centres_page_table
     from ..drawing.svgblocks import centres_svg, circle_diagram_svg
     from ..errors import PlansError
 
-    pages = []  # (h, result, comparisons, diagram, box) or (h, error)
+    pages = []  # (h, result, comparisons, table, box) or (h, error)
     k = k_l
+    diagram = None
     for n, h in enumerate(positions, start=1):
         say(f"{term('instant_centres', lang)} {n}/{len(positions)}")
         try:
@@ -680,9 +704,11 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         except PlansError as exc:
             pages.append((h, exc))
             continue
-        # the drawing gets what the page leaves beside its heading, the legend and the circle diagram with the table
-        diagram = circle_diagram_svg(result, lang)
-        box = (TEXT_WIDTH, min(150.0, TEXT_HEIGHT - CENTRES_PAGE_TEXT - max(diagram.height, 55.0)))
+        if diagram is None:
+            diagram = (f"circle-{h.index}", circle_diagram_svg(result, lang))
+        # the drawing gets what the page leaves under its heading and the legend, over the table and the rules
+        table = centres_page_table(result, comparisons, lang)
+        box = (TEXT_WIDTH, min(CENTRES_DRAWING_MAX, TEXT_HEIGHT - CENTRES_PAGE_TEXT - CENTRES_ROW * len(table)))
         # sizes from geometry (two drawings of the mechanism alone, plans.drawing.centres.CentresSizer)
         sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
         for _ in range(24):
@@ -690,7 +716,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
             if width <= box[0] + 0.5 and height <= box[1] + 0.5:
                 break
             k = round_up(k * max(width / box[0], height / box[1], 1.0001))
-        pages.append((h, result, comparisons, diagram, box))
+        pages.append((h, result, comparisons, table, box))
     drawn = [p for p in pages if len(p) > 2]
     blocks = {}
     for _ in range(4):  # the sizer is exact at its own two scales, close elsewhere: coarser while a drawing runs over
@@ -703,28 +729,42 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         if over <= 1.0:
             break
         k = round_up(k * over * 1.0001)
+    _centres_method(doc, diagram, k, lang, drawn[0][1] if drawn else None)
     for page in pages:
         _centres_page(doc, page, k, blocks, lang, multi)
     return k if drawn else None
 
 
-def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
-    """The page of instant centres of one position (:func:`_centres_pages`)."""
-    from ..drawing.centres_page import centres_page_table, centres_rules
+def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
+    """The centres' first page: the method's title, Kennedy's theorem, the circle diagram (once: it is the same for
+    every position), the rules and the order of finding the centres (*result*: a position's centres)."""
+    from ..drawing.centres_page import centres_order_table, centres_rules
 
-    h = page[0]
-    title = f"{term('centres_page', lang)}" + (f" — {term('position', lang)} {h.index}:  {h.label}" if multi else "")
-    doc.heading(title, level=2, new_page=True)
+    doc.heading(term("centres_page", lang), level=2, new_page=True)
     doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k)}])")  # the title block of the centres' pages
     kennedy = term("kennedy_theorem", lang)
-    doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=SMALL_PT)
+    doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=TEXT_PT)
+    if diagram is not None and result is not None:
+        doc.beside(diagram, [], [term("centres_legend", lang), term("centres_edge_legend", lang)]
+                   + centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
+        doc.tables([(term("centres_order", lang), centres_order_table(result, lang))], aligns="(left, left)")
+
+
+def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
+    """The page of instant centres of one position (:func:`_centres_pages`), headed by the position in one line."""
+    from ..drawing.centres_page import centres_rules
+
+    h = page[0]
+    where = f"{term('position', lang)} {h.index}:  {h.label}"
+    doc.heading(f"{term('instant_centres', lang)} — {where}" if multi else f"{term('instant_centres', lang)}:  {h.label}",
+                level=2, new_page=True)
     if len(page) == 2:
         doc.line(str(page[1]), size=TEXT_PT)
         return
-    _, result, comparisons, diagram, _ = page
+    _, result, _, table, _ = page
     doc.figure(f"centres-{h.index}", blocks[h.index][1])
     doc.line(f"{term('centres_legend', lang)};  {term('centres_edge_legend', lang)}", size=SMALL_PT)
-    doc.beside((f"circle-{h.index}", diagram), centres_page_table(result, comparisons, lang), centres_rules(lang, result.scene.frame_number))
+    doc.beside(None, table, centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
 
 
 def data_lines(scene, lang: str) -> list[str]:
