@@ -712,7 +712,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         # sizes from geometry (two drawings of the mechanism alone, plans.drawing.centres.CentresSizer)
         sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
         for _ in range(24):
-            width, height = sizer.size(k)
+            width, height = sizer.size(k, box)
             if width <= box[0] + 0.5 and height <= box[1] + 0.5:
                 break
             k = round_up(k * max(width / box[0], height / box[1], 1.0001))
@@ -723,7 +723,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         over = 1.0
         for h, result, _, _, box in drawn:
             if h.index not in blocks or blocks[h.index][0] != k:
-                blocks[h.index] = (k, centres_svg(result, k, lang, room_min=ROOM_MIN))
+                blocks[h.index] = (k, centres_svg(result, k, lang, room_min=ROOM_MIN, limit=box))
             block = blocks[h.index][1]
             over = max(over, block.width / (box[0] + 0.5), block.height / (box[1] + 0.5))
         if over <= 1.0:
