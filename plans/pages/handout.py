@@ -548,8 +548,7 @@ def build_handout(
         for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense,
                                                   extremes=run.strokes, size=DIAGRAM_PAGE):
             doc.full_page(f"diagram-{page_name}", figure_svg(fig, lang))
-        for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
-            doc.full_page(f"kinematic-{number}", figure_svg(fig, lang))
+        _kinematic_pages(doc, scene, positions, len(run.runs), precision, lang, law, start)
     if forces:
         from ..drawing._canvas import fmt_number
         from ..drawing.forces_page import draw_forces_pages
@@ -627,22 +626,38 @@ def _other_extreme(run, scene) -> dict:
     return {"0′": solved[0].graphical} if solved else {}
 
 
-def _kinematic_pages(scene, positions, count: int, precision, lang: str, law=None, start: str = "output") -> list:
-    """The pages of the output link's kinematic diagrams by graphical differentiation (and of their table when it
-    does not fit under them), at the handout's count of positions (12 when it has fewer than 8); a mechanism
-    without an output slider or rocker, or not solved at one of those positions, gets a page that says so."""
+def _kinematic_pages(doc, scene, positions, count: int, precision, lang: str, law=None, start: str = "output") -> None:
+    """The pages of the output link's kinematic diagrams by graphical differentiation, at the handout's count of
+    positions (12 when it has fewer than 8): the data lines, each diagram under its title and scales at 100 %
+    (a rate constant over the cycle said in a line), the legend, the comparison table and its notes, set by
+    Typst and flowing over pages; a mechanism without an output slider or rocker, or not solved at one of
+    those positions, gets a page that says so."""
     from ..differentiation import DiagramsError, kinematic_diagrams
-    from ..drawing.kinematic_diagrams import draw_kinematic_pages, draw_unavailable_page
+    from ..drawing import kinematic_diagrams as kd
 
     if isinstance(positions, int):
         count = positions
     if count < 8:  # a course project differentiates over 8 or more
         count = 12
+    doc.heading(kd.page_heading(lang), level=2, new_page=True)
     try:
         diagrams = kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
-    except DiagramsError as exc:  # said on a page of its own, in the reader's language
-        return [draw_unavailable_page(exc, title=scene.title_in(lang), lang=lang)]
-    return draw_kinematic_pages(diagrams, title=scene.title_in(lang), lang=lang)
+    except DiagramsError as exc:  # said on the page, in the reader's language
+        doc.body.append(f"#text(weight: \"bold\")[{doc.words(term('kd_not_drawn', lang) + ':')}]\n")
+        doc.line(kd.unavailable_reason(exc, lang))
+        return
+    d = kd.page_diagrams(diagrams, doc.page.text_width)
+    doc.lines(kd.header_lines(d, lang), size=SMALL_PT + 0.5)
+    doc.legend(kd.legend_items(d, lang))
+    blocks = kd.diagram_svgs(d, lang)
+    for key in kd.KEYS:
+        if key in blocks:
+            doc.captioned(kd.diagram_title(d, key, lang), f"kinematic-{key}", blocks[key])
+        else:
+            doc.line(kd.flat_line(d, key, lang), size=SMALL_PT + 0.5)
+    table = kd.diagrams_table(d, lang)
+    doc.grouped_table(kd.table_heading(lang), *kd.table_header(d, lang), table[1:])
+    doc.lines(kd.notes(d, lang), size=SMALL_PT)
 
 
 #: the quantities read off a velocity plan (a position without its acceleration plan on the plate tabulates only these)
