@@ -40,7 +40,7 @@ from matplotlib.ticker import MaxNLocator
 from .._text import subscript
 from ..differentiation import KinematicDiagrams, flat, readable, smooth
 from ..i18n import term
-from ._canvas import Sketch, fit_axes
+from ._canvas import Sketch, fit_axes, text_size
 from .numerals import localised
 from .svg import drawing_rc, new_figure, render_svg
 
@@ -414,7 +414,7 @@ def draw_kinematic_figure(d: KinematicDiagrams, *, title: str = "", lang: str = 
         for colour, lw, dashed, words in legend_items(d, lang, analytic=analytic):
             sketch.line([complex(x, top), complex(x + 6, top)], color=colour, lw=lw, dashes=(3, 2) if dashed else None, gid="legend-line", obstacle=False)
             sketch.text(complex(x + 7.5, top), words, size=TEXT_PT, ha="left", gid="legend", obstacle=False)
-            x += 7.5 + len(words) * 1.6 + 5.0
+            x += 7.5 + text_size(words, TEXT_PT)[0] + 5.0
         _fixed(sketch, p, top - 2.0, 0.0)
         fit_axes(ax, sketch.bounds, 3.0)
     return fig
