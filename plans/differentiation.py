@@ -461,15 +461,15 @@ class KinematicDiagrams:
         }
 
     def pages(self, *, lang: str = "en", title: str = "") -> list:
-        """The page(s) of the diagrams and the table as matplotlib Figures (A4; see
-        :func:`plans.drawing.kinematic_diagrams.draw_kinematic_pages`)."""
+        """The diagrams as a one-figure list (a matplotlib Figure true to scale, at the scales an A4 page prints them
+        readably, with a short caption; see :func:`plans.drawing.kinematic_diagrams.draw_kinematic_figure`).
+        The comparison is :meth:`rows`; the handout sets the page with its table."""
         from .display import display_function
 
         return display_function("kinematic_pages")(self, lang=lang, title=title)
 
     def save(self, path, *, lang: str = "en", title: str = "") -> list:
-        """Write the page(s) to *path* by its suffix: ``.pdf`` every page in one file; ``.svg`` / ``.png``
-        one file a page (``kinematic-1.svg``, ``kinematic-2.svg`` when there are two).  Returns the paths written."""
+        """Write the drawing of :meth:`pages` to *path* by its suffix (``.pdf``, ``.svg``, ``.png``).  Returns the paths written."""
         from .display import display_function
 
         return display_function("save_pages")([(str(k + 1), fig) for k, fig in enumerate(self.pages(lang=lang, title=title))], path)
