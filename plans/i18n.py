@@ -1177,4 +1177,11 @@ TERMS.update({
         "bg": "{q} = {value} {unit}, постоянна през целия цикъл (диаграмата, права, успоредна на оста t, не е построена)",
         "sl": "{q} = {value} {unit}, konstantna v celem ciklu (diagram, premica, vzporedna osi t, ni narisan)",
     },
+    "signed_elsewhere": {
+        "en": "{points}: the output slider; its signed v and a are in the kinematic diagrams",
+        "sr": "{points}: излазни клизач; његове v и a са знаком су у кинематским дијаграмима",
+        "ru": "{points}: выходной ползун; его v и a со знаком — в кинематических диаграммах",
+        "bg": "{points}: изходният плъзгач; v и a със знак са в кинематичните диаграми",
+        "sl": "{points}: izhodni drsnik; njegova v in a s predznakom sta v kinematičnih diagramih",
+    },
 })

@@ -176,3 +176,19 @@ def test_readable_scales_are_round_and_the_diagrams_tall(name, count):
         (curve,) = _paths(block.svg, f"kd-{key}-curve")
         ys = [z.imag for z in curve] + [_paths(block.svg, f"kd-{key}-abscissa")[0][0].imag]
         assert max(ys) - min(ys) >= 40.0, (name, key, max(ys) - min(ys))
+
+
+def test_the_cycle_page_does_not_repeat_the_output_sliders_speed_unsigned():
+    """quick-return: the kinematic diagrams give the ram E's signed s, v, a; the points page of the cycle diagrams
+    keeps D's |v|, |a| and says where E's are, instead of drawing |v_E|, |a_E| beside them."""
+    doc = handout(plans.load(plans.example_path("quick-return")), positions=12, lang="en")
+    root = ET.fromstring(doc.images["diagram-points"])
+    texts = ["".join("".join(t.itertext()).split()) for t in root.iter(f"{SVG}text")]
+    assert "|v|D" in texts or "|vD|" in texts or any(re.fullmatch(r"\|v\|?D\|?", t) for t in texts), texts
+    assert not any("E" in t and t.startswith("|") for t in texts), texts
+    assert "E: the output slider; its signed v and a are in the kinematic diagrams" in " ".join(texts_raw(root))
+    assert {"kinematic-s", "kinematic-v", "kinematic-a"} <= set(doc.images)
+
+
+def texts_raw(root):
+    return ["".join(t.itertext()) for t in root.iter(f"{SVG}text")]

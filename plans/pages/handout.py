@@ -545,10 +545,11 @@ def build_handout(
 
         doc.section("diagrams")
         marked = run.motion if run.motion is not None else run.positions
+        kinematic = _kinematic(scene, positions, len(run.runs), precision, law, start)
         for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense,
-                                                  extremes=run.strokes, size=DIAGRAM_PAGE):
+                                                  extremes=run.strokes, size=DIAGRAM_PAGE, signed_elsewhere=_output_points(scene, kinematic)):
             doc.full_page(f"diagram-{page_name}", figure_svg(fig, lang))
-        _kinematic_pages(doc, scene, positions, len(run.runs), precision, lang, law, start)
+        _kinematic_pages(doc, kinematic, lang)
     if forces:
         from ..drawing._canvas import fmt_number
         from ..drawing.forces_page import draw_forces_pages
@@ -626,27 +627,46 @@ def _other_extreme(run, scene) -> dict:
     return {"0′": solved[0].graphical} if solved else {}
 
 
-def _kinematic_pages(doc, scene, positions, count: int, precision, lang: str, law=None, start: str = "output") -> None:
-    """The pages of the output link's kinematic diagrams by graphical differentiation, at the handout's count of
-    positions (12 when it has fewer than 8): the data lines, each diagram under its title and scales at 100 %
-    (a rate constant over the cycle said in a line), the legend, the comparison table and its notes, set by
-    Typst and flowing over pages; a mechanism without an output slider or rocker, or not solved at one of
-    those positions, gets a page that says so."""
+def _kinematic(scene, positions, count: int, precision, law=None, start: str = "output"):
+    """The output link's kinematic diagrams by graphical differentiation at the handout's count of positions (12
+    when it has fewer than 8), or the :class:`plans.differentiation.DiagramsError` that says why there are none."""
     from ..differentiation import DiagramsError, kinematic_diagrams
-    from ..drawing import kinematic_diagrams as kd
 
     if isinstance(positions, int):
         count = positions
     if count < 8:  # a course project differentiates over 8 or more
         count = 12
-    doc.heading(kd.page_heading(lang), level=2, new_page=True)
     try:
-        diagrams = kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
-    except DiagramsError as exc:  # said on the page, in the reader's language
+        return kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
+    except DiagramsError as exc:
+        return exc
+
+
+def _output_points(scene, kinematic) -> tuple:
+    """The reported points of the output slider (a body translating on a frame guide: each point's v and a are its
+    own), whose signed v and a the kinematic diagrams give: the cycle page does not repeat them as |v|, |a|."""
+    motion = getattr(kinematic, "motion", None)
+    if motion is None or motion.kind != "slider":
+        return ()
+    links = [pair.slider for pair in scene.prismatics if pair.name == motion.name]
+    if not links:
+        return ()
+    return tuple(p for p in scene.report if p in scene.bodies[links[0]].points)
+
+
+def _kinematic_pages(doc, kinematic, lang: str) -> None:
+    """The pages of the output link's kinematic diagrams (*kinematic*, from :func:`_kinematic`): the data lines,
+    each diagram under its title and scales at 100 % (a rate constant over the cycle said in a line), the legend,
+    the comparison table and its notes, set by Typst and flowing over pages; a mechanism without an output slider
+    or rocker, or not solved at one of the positions, gets a page that says so."""
+    from ..drawing import kinematic_diagrams as kd
+
+    doc.heading(kd.page_heading(lang), level=2, new_page=True)
+    if isinstance(kinematic, Exception):  # said on the page, in the reader's language
         doc.body.append(f"#text(weight: \"bold\")[{doc.words(term('kd_not_drawn', lang) + ':')}]\n")
-        doc.line(kd.unavailable_reason(exc, lang))
+        doc.line(kd.unavailable_reason(kinematic, lang))
         return
-    d = kd.page_diagrams(diagrams, doc.page.text_width)
+    d = kd.page_diagrams(kinematic, doc.page.text_width)
     doc.lines(kd.header_lines(d, lang), size=SMALL_PT + 0.5)
     doc.legend(kd.legend_items(d, lang))
     blocks = kd.diagram_svgs(d, lang)
