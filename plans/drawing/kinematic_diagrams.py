@@ -221,8 +221,9 @@ def flat_line(d: KinematicDiagrams, key: str, lang: str = "en") -> str | None:
 
 def legend_items(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = True) -> list[tuple[str, float, bool, str]]:
     """The legend of the drawn lines: (colour, width [pt], dashed, words)."""
-    items = [(CURVE, 1.0, False, term("chords_curve", lang)), (CHORD, 0.7, False, term("chord", lang)),
-             (RAY, 0.35, False, term("ray", lang))]
+    items = [(CURVE, 1.0, False, term("chords_curve", lang)), (CHORD, 0.7, False, term("chord", lang))]
+    if flat(d, "v") is None:  # a constant rate is not drawn: no rays
+        items.append((RAY, 0.35, False, term("ray", lang)))
     if analytic and d.reference is not None:
         items.append((ANALYTIC, 0.6, True, term("analytic_curve", lang)))
     return items
