@@ -334,8 +334,11 @@ def _finite(values, valid) -> np.ndarray:
     return v
 
 
-def _page(title: str, subtitle: str, rows: int, size=A4) -> tuple[Figure, list]:
-    """A page of *size* [mm] (A4 by default; a handout passes its text area, so that the page prints at 100 %)."""
+def _page(title: str, subtitle: str, rows: int, size=A4, heading: bool = True) -> tuple[Figure, list]:
+    """A page of *size* [mm] (A4 by default; a handout passes its text area, so that the page prints at 100 %).
+
+    *heading*: the title and the subtitle's lines drawn at the top; without, they are the figure's
+    ``plans_heading`` (title, lines) for a typesetter to set above it, and the axes start at the top."""
     fig = Figure(figsize=(size[0] / 25.4, size[1] / 25.4), dpi=72)
     fig.plans_size = tuple(size)
     from matplotlib.backends.backend_svg import FigureCanvasSVG
@@ -343,11 +346,15 @@ def _page(title: str, subtitle: str, rows: int, size=A4) -> tuple[Figure, list]:
     FigureCanvasSVG(fig)
     import textwrap
 
-    fig.text(11 / size[0], 1 - 11 / size[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
-    lines = [w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)]
-    fig.text(11 / size[0], 1 - 19 / size[1], "\n".join(lines), fontsize=9, ha="left", va="top", linespacing=1.3)
-    # the axes below the subtitle's lines (9 pt at 1.3 line spacing, 4.13 mm a line) and the positions' numbers
-    top = 1 - max(36.0, 19.0 + 4.13 * len(lines) + 9.0) / size[1]
+    if heading:
+        fig.text(11 / size[0], 1 - 11 / size[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
+        lines = [w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)]
+        fig.text(11 / size[0], 1 - 19 / size[1], "\n".join(lines), fontsize=9, ha="left", va="top", linespacing=1.3)
+        # the axes below the subtitle's lines (9 pt at 1.3 line spacing, 4.13 mm a line) and the positions' numbers
+        top = 1 - max(36.0, 19.0 + 4.13 * len(lines) + 9.0) / size[1]
+    else:
+        fig.plans_heading = (title, subtitle.split("\n"))
+        top = 1 - 9.0 / size[1]  # the positions' numbers above the first panel
     bottom = 26 / size[1]
     axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / size[0], "right": 1 - 40 / size[0], "top": top, "bottom": bottom, "hspace": 0.2})
     return fig, list(np.atleast_1d(axes))
@@ -611,7 +618,7 @@ def _other_extreme(cycle, extremes, x, start: float) -> list[tuple[str, float]]:
 
 
 def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None, extremes=None, size=A4,
-                        signed_elsewhere=()) -> list[tuple[str, Figure]]:
+                        signed_elsewhere=(), heading: bool = True) -> list[tuple[str, Figure]]:
     """The cycle diagrams as (name, Figure) pairs: ``links``, ``points`` and, if any, ``sliders``.
 
     Parameters
@@ -637,6 +644,9 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         Points whose |v|, |a| are not drawn on the points page: those of the output slider, whose signed
         v and a the kinematic diagrams beside these pages give (the page says so; without another point
         it is not drawn).
+    heading : bool
+        Draw each page's title and words at its top; without, each figure carries them as ``plans_heading``
+        ``(title, lines)`` (the first line the scene's title, as written) for a typesetter to set above it.
     """
     scene = analytic.scene
     omit = tuple(p for p in signed_elsewhere if p in analytic.points)
@@ -677,7 +687,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
             panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang, offsets=not _swing(cycle)) if quantity == "phi" else [panel])]
         if dropped and name == "sliders":  # the page's words without the Coriolis acceleration it does not draw
             words = term("sliders_motion_relative", lang)
-        fig, axes = _page(title, subtitle + "\n" + words + "".join("\n" + d for d in dropped), len(panels), size)
+        fig, axes = _page(title, subtitle + "\n" + words + "".join("\n" + d for d in dropped), len(panels), size, heading)
         clipped = False
         for ax, (panel, ylabel, unit) in zip(axes, panels):
             _plot_panel(ax, xs, panel, ylabel, marks)

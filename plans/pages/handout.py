@@ -546,9 +546,18 @@ def build_handout(
         doc.section("diagrams")
         marked = run.motion if run.motion is not None else run.positions
         kinematic = _kinematic(scene, positions, len(run.runs), precision, law, start)
+        # each page's title and words set by Typst above its figure, which takes the rest of the text area at 100 %
+        from .typesetting import text as literal
+
+        words_room = 36.0  # mm: the heading and four lines of words
         for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense,
-                                                  extremes=run.strokes, size=DIAGRAM_PAGE, signed_elsewhere=_output_points(scene, kinematic)):
-            doc.full_page(f"diagram-{page_name}", figure_svg(fig, lang))
+                                                  extremes=run.strokes, size=(DIAGRAM_PAGE[0], DIAGRAM_PAGE[1] - words_room),
+                                                  signed_elsewhere=_output_points(scene, kinematic), heading=False):
+            title, lines = fig.plans_heading
+            doc.heading(title, level=2, new_page=True)
+            doc.body.append(f"#text(size: {SMALL_PT + 1}pt)[{literal(lines[0])}]\n")  # the scene's title, as written
+            doc.lines(lines[1:], size=SMALL_PT + 1)
+            doc.figure(f"diagram-{page_name}", figure_svg(fig, lang))
         _kinematic_pages(doc, kinematic, lang)
     if forces:
         from ..drawing._canvas import fmt_number
