@@ -52,8 +52,7 @@ __all__ = ["diagram_svgs", "diagram_title", "flat_line", "legend_items", "diagra
 TEXT_PT = 8.0
 #: The diagrams, in their order down the page.
 KEYS = ("s", "v", "a")
-#: Room [mm] above a diagram for its title line (in the figure of :func:`draw_kinematic_figure`), and between diagrams.
-TITLE_ROOM = 7.0
+#: Room [mm] between diagrams (in the figure of :func:`draw_kinematic_figure`).
 DIAGRAM_GAP = 4.5
 #: Room [mm] under a diagram for the positions' numbers and the pole distance's dimension.
 NUMBER_ROOM = 5.0
