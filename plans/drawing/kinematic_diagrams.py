@@ -46,7 +46,7 @@ from .svg import drawing_rc, new_figure, render_svg
 
 __all__ = ["diagram_svgs", "diagram_title", "flat_line", "legend_items", "diagrams_table", "table_header", "header_lines",
            "origin_line", "page_heading", "notes", "unavailable_reason", "diagram_words", "page_diagrams", "draw_kinematic_figure",
-           "block_room", "KEYS", "TEXT_PT", "DIAGRAM_GAP"]
+           "block_room", "table_heading", "KEYS", "TEXT_PT", "DIAGRAM_GAP", "PAGE_ROOM"]
 
 #: Size [pt] of every text in the diagrams and their table.
 TEXT_PT = 8.0
