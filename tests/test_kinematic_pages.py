@@ -129,10 +129,15 @@ def test_the_stated_mu_v_and_h1_are_the_rays(plate):
         assert rise * mu_v == pytest.approx(v, abs=0.05 * mu_v)
 
 
-def test_no_english_word_on_the_serbian_kinematic_page():
+@pytest.fixture(scope="module")
+def serbian():
+    return handout(plans.load(plans.example_path("quick-return")), positions=12, lang="sr")
+
+
+def test_no_english_word_on_the_serbian_kinematic_page(serbian):
     from plans.i18n import TERMS
 
-    doc = handout(plans.load(plans.example_path("quick-return")), positions=12, lang="sr")
+    doc = serbian
     start = doc.source.index("Кинематски дијаграми излазног члана")
     page = doc.source[start:]
     strings = " ".join(re.findall(r'#"((?:[^"\\]|\\.)*)"', page))
@@ -178,17 +183,17 @@ def test_readable_scales_are_round_and_the_diagrams_tall(name, count):
         assert max(ys) - min(ys) >= 40.0, (name, key, max(ys) - min(ys))
 
 
-def test_the_cycle_page_does_not_repeat_the_output_sliders_speed_unsigned():
+def test_the_cycle_page_does_not_repeat_the_output_sliders_speed_unsigned(serbian):
     """quick-return: the kinematic diagrams give the ram E's signed s, v, a; the points page of the cycle diagrams
     keeps D's |v|, |a| and says where E's are, instead of drawing |v_E|, |a_E| beside them."""
-    doc = handout(plans.load(plans.example_path("quick-return")), positions=12, lang="en")
+    doc = serbian
     root = ET.fromstring(doc.images["diagram-points"])
     texts = ["".join("".join(t.itertext()).split()) for t in root.iter(f"{SVG}text")]
     assert "|v|D" in texts or "|vD|" in texts or any(re.fullmatch(r"\|v\|?D\|?", t) for t in texts), texts
     assert not any("E" in t and t.startswith("|") for t in texts), texts
     # the page's words, set by Typst above the figure (the figure carries none of them)
-    assert '#"E: the output slider; its signed v and a are in the kinematic diagrams"' in doc.source
-    assert not any("output slider" in t for t in texts)
+    assert '#"E: излазни клизач; његове v и a са знаком су у кинематским дијаграмима"' in doc.source
+    assert not any("клизач" in t for t in texts)
     assert {"kinematic-s", "kinematic-v", "kinematic-a"} <= set(doc.images)
 
 
