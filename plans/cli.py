@@ -743,8 +743,9 @@ def _sweep(args) -> int:
 
 def _kinematic_diagrams(scene: Scene, args) -> list:
     """``plans sweep --plot DIR``: the output link's kinematic diagrams by graphical differentiation, at
-    ``--positions`` positions (12 by default), as DIR/kinematic.FORMAT (kinematic-1, kinematic-2 when the table
-    takes a page of its own); a mechanism without an output slider or rocker is said so on standard error."""
+    ``--positions`` positions (12 by default), as one drawing DIR/kinematic.FORMAT (the three diagrams with the
+    chord construction under a short caption); a mechanism without an output slider or rocker is said so on
+    standard error."""
     from .differentiation import kinematic_diagrams
 
     try:

@@ -1202,3 +1202,29 @@ def branch_text(words: str, lang: str = "en") -> str | None:
         if m:
             return templates[lang].format(**m.groupdict())
     return None
+
+
+# the kinematic diagrams' page (issue 20): a rate constant over the cycle said instead of drawn
+TERMS.update({
+    "kd_zero": {
+        "en": "{q} = 0 over the whole cycle (its diagram is the t axis itself and is not drawn)",
+        "sr": "{q} = 0 током целог циклуса (дијаграм се поклапа са осом t и није цртан)",
+        "ru": "{q} = 0 на всём цикле (диаграмма совпадает с осью t и не строится)",
+        "bg": "{q} = 0 през целия цикъл (диаграмата съвпада с оста t и не е построена)",
+        "sl": "{q} = 0 v celem ciklu (diagram sovpada z osjo t in ni narisan)",
+    },
+    "kd_constant": {
+        "en": "{q} = {value} {unit}, constant over the whole cycle (its diagram, a line parallel to the t axis, is not drawn)",
+        "sr": "{q} = {value} {unit}, константно током целог циклуса (дијаграм, права паралелна оси t, није цртан)",
+        "ru": "{q} = {value} {unit}, постоянна на всём цикле (диаграмма, прямая, параллельная оси t, не строится)",
+        "bg": "{q} = {value} {unit}, постоянна през целия цикъл (диаграмата, права, успоредна на оста t, не е построена)",
+        "sl": "{q} = {value} {unit}, konstantna v celem ciklu (diagram, premica, vzporedna osi t, ni narisan)",
+    },
+    "signed_elsewhere": {
+        "en": "{points}: the output slider; its signed v and a are in the kinematic diagrams",
+        "sr": "{points}: излазни клизач; његове v и a са знаком су у кинематским дијаграмима",
+        "ru": "{points}: выходной ползун; его v и a со знаком — в кинематических диаграммах",
+        "bg": "{points}: изходният плъзгач; v и a със знак са в кинематичните диаграми",
+        "sl": "{points}: izhodni drsnik; njegova v in a s predznakom sta v kinematičnih diagramih",
+    },
+})

@@ -159,6 +159,43 @@ class Document:
         note = f"#metadata([{self.words(scale_note)}]) <plans-page-scale>\n" if scale_note else ""
         self.body.append(f"#pagebreak(weak: true)\n{note}#align(center)[#image(bytes(sys.inputs.at({string(key)})), format: \"svg\", width: {block.width * scale:.3f}mm)]\n")
 
+    def captioned(self, caption: str, key: str, block, size: float = SMALL_PT + 0.5) -> None:
+        """A line of words over a drawing placed at its physical size, left-aligned, kept together on a page."""
+        self.body.append(f"#block(breakable: false, below: 2.5mm)[#text(size: {size}pt)[{self.words(caption)}] \\\n"
+                         f"#{self.add_image(key, block)}]\n")
+
+    def legend(self, items, size: float = SMALL_PT) -> None:
+        """A legend in one line: (colour ``"#rrggbb"``, width [pt], dashed, words) per kind of line drawn."""
+        parts = []
+        for colour, width, dashed, words in items:
+            stroke = f"(paint: rgb({string(colour)}), thickness: {width}pt{', dash: (3pt, 2pt)' if dashed else ''})"
+            parts.append(f"#box(baseline: -0.6mm, line(length: 6mm, stroke: {stroke})) {self.words(words)}")
+        self.body.append(f"#text(size: {size}pt)[" + " #h(4mm) ".join(parts) + "]\n")
+
+    def grouped_table(self, heading: str, first, groups, second, body, size: float = SMALL_PT) -> None:
+        """A table across the page with a two-row header: *first* (the first cells; from each group's start column
+        its words span *groups*' columns: ``(start, words)``, five columns each), *second* under it, *body* rows.
+        The first column left, the others right; breakable over pages with its header repeated."""
+        ncol = len(second)
+        starts = dict(groups)
+        top, c = [], 0
+        while c < ncol:
+            if c in starts:
+                span = next((s for s in sorted(starts) if s > c), ncol) - c
+                top.append(f"table.cell(colspan: {span}, align: center)[#text(weight: \"bold\")[{self.words(starts[c])}]]")
+                c += span
+            else:
+                top.append(f"text(weight: \"bold\")[{self.words(first[c])}]")
+                c += 1
+        rules = ", ".join(f"table.hline(y: 1, start: {s}, end: {next((t for t in sorted(starts) if t > s), ncol)}, stroke: 0.4pt)" for s in sorted(starts))
+        under = ", ".join(f"text(weight: \"bold\")[{self.words(cell)}]" for cell in second)
+        rows = ", ".join(", ".join(f"[{self.words(cell)}]" for cell in row) for row in body)
+        whole = "true" if len(body) > 40 else "false"  # a table that fits a page is never parted from its heading
+        self.body.append(f"#block(breakable: {whole})[#block(below: 2mm)[#text(weight: \"bold\", size: {SMALL_PT + 1}pt)[{self.words(heading)}]]\n"
+                         f"#text(size: {size}pt)[#table(columns: {ncol}, stroke: none, inset: (x: 1.1mm, y: 0.8mm), align: (x, y) => if x == 0 {{ left }} else {{ right }},\n"
+                         f"  table.header(table.hline(stroke: 0.8pt), {', '.join(top)}, {rules}, {under}, table.hline(stroke: 0.5pt)),\n"
+                         f"  {rows}, table.hline(stroke: 0.8pt))]]\n")
+
     def grid(self, cells, columns: int) -> None:
         """Drawings with captions, *columns* across, flowing over pages (a cell never split)."""
         items = []

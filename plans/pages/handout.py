@@ -567,11 +567,20 @@ def build_handout(
 
         doc.section("diagrams")
         marked = run.motion if run.motion is not None else run.positions
+        kinematic = _kinematic(scene, positions, len(run.runs), precision, law, start)
+        # each page's title and words set by Typst above its figure, which takes the rest of the text area at 100 %
+        from .typesetting import text as literal
+
+        words_room = 36.0  # mm: the heading and four lines of words
         for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense,
-                                                  extremes=run.strokes, size=DIAGRAM_PAGE):
-            doc.full_page(f"diagram-{page_name}", figure_svg(fig, lang))
-        for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
-            doc.full_page(f"kinematic-{number}", figure_svg(fig, lang))
+                                                  extremes=run.strokes, size=(DIAGRAM_PAGE[0], DIAGRAM_PAGE[1] - words_room),
+                                                  signed_elsewhere=_output_points(scene, kinematic), heading=False):
+            title, lines = fig.plans_heading
+            doc.heading(title, level=2, new_page=True)
+            doc.body.append(f"#text(size: {SMALL_PT + 1}pt)[{literal(lines[0])}]\n")  # the scene's title, as written
+            doc.lines(lines[1:], size=SMALL_PT + 1)
+            doc.figure(f"diagram-{page_name}", figure_svg(fig, lang))
+        _kinematic_pages(doc, kinematic, lang)
     if forces:
         doc.section("forces")
         _forces_pages(doc, [here[k] for k in chosen or [sample.index]], lang, multi)
@@ -630,22 +639,57 @@ def _other_extreme(run, scene) -> dict:
     return {"0′": solved[0].graphical} if solved else {}
 
 
-def _kinematic_pages(scene, positions, count: int, precision, lang: str, law=None, start: str = "output") -> list:
-    """The pages of the output link's kinematic diagrams by graphical differentiation (and of their table when it
-    does not fit under them), at the handout's count of positions (12 when it has fewer than 8); a mechanism
-    without an output slider or rocker, or not solved at one of those positions, gets a page that says so."""
+def _kinematic(scene, positions, count: int, precision, law=None, start: str = "output"):
+    """The output link's kinematic diagrams by graphical differentiation at the handout's count of positions (12
+    when it has fewer than 8), or the :class:`plans.differentiation.DiagramsError` that says why there are none."""
     from ..differentiation import DiagramsError, kinematic_diagrams
-    from ..drawing.kinematic_diagrams import draw_kinematic_pages, draw_unavailable_page
 
     if isinstance(positions, int):
         count = positions
     if count < 8:  # a course project differentiates over 8 or more
         count = 12
     try:
-        diagrams = kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
-    except DiagramsError as exc:  # said on a page of its own, in the reader's language
-        return [draw_unavailable_page(exc, title=scene.title_in(lang), lang=lang)]
-    return draw_kinematic_pages(diagrams, title=scene.title_in(lang), lang=lang)
+        return kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
+    except DiagramsError as exc:
+        return exc
+
+
+def _output_points(scene, kinematic) -> tuple:
+    """The reported points of the output slider (a body translating on a frame guide: each point's v and a are its
+    own), whose signed v and a the kinematic diagrams give: the cycle page does not repeat them as |v|, |a|."""
+    motion = getattr(kinematic, "motion", None)
+    if motion is None or motion.kind != "slider":
+        return ()
+    links = [pair.slider for pair in scene.prismatics if pair.name == motion.name]
+    if not links:
+        return ()
+    return tuple(p for p in scene.report if p in scene.bodies[links[0]].points)
+
+
+def _kinematic_pages(doc, kinematic, lang: str) -> None:
+    """The pages of the output link's kinematic diagrams (*kinematic*, from :func:`_kinematic`): the data lines,
+    each diagram under its title and scales at 100 % (a rate constant over the cycle said in a line), the legend,
+    the comparison table and its notes, set by Typst and flowing over pages; a mechanism without an output slider
+    or rocker, or not solved at one of the positions, gets a page that says so."""
+    from ..drawing import kinematic_diagrams as kd
+
+    doc.heading(kd.page_heading(lang), level=2, new_page=True)
+    if isinstance(kinematic, Exception):  # said on the page, in the reader's language
+        doc.body.append(f"#text(weight: \"bold\")[{doc.words(term('kd_not_drawn', lang) + ':')}]\n")
+        doc.line(kd.unavailable_reason(kinematic, lang))
+        return
+    d = kd.page_diagrams(kinematic, doc.page.text_width)
+    doc.lines(kd.header_lines(d, lang), size=SMALL_PT + 0.5)
+    doc.legend(kd.legend_items(d, lang))
+    blocks = kd.diagram_svgs(d, lang)
+    for key in kd.KEYS:
+        if key in blocks:
+            doc.captioned(kd.diagram_title(d, key, lang), f"kinematic-{key}", blocks[key])
+        else:
+            doc.line(kd.flat_line(d, key, lang), size=SMALL_PT + 0.5)
+    table = kd.diagrams_table(d, lang)
+    doc.grouped_table(kd.table_heading(lang), *kd.table_header(d, lang), table[1:])
+    doc.lines(kd.notes(d, lang), size=SMALL_PT)
 
 
 #: the quantities read off a velocity plan (a position without its acceleration plan on the plate tabulates only these)
