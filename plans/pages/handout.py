@@ -74,9 +74,9 @@ WIDE_MARGIN = 1.0
 WIDE_SHARE = 1 / 3
 #: room [mm] a centres page keeps for its heading (one line), the legend (two lines), the rules (two) and the gaps;
 #: its table takes CENTRES_ROW a row, and the drawing the rest, at most CENTRES_DRAWING_MAX
-CENTRES_PAGE_TEXT = 40.0
+CENTRES_PAGE_TEXT = 30.0
 CENTRES_ROW = 4.2
-CENTRES_DRAWING_MAX = 170.0
+CENTRES_DRAWING_MAX = 185.0
 #: the page of cycle diagrams [mm]: the text area (a little short of it), so that it prints at 100 %, its 8 pt type 8 pt
 DIAGRAM_PAGE = (TEXT_WIDTH, TEXT_HEIGHT - 4.0)
 
