@@ -1159,3 +1159,16 @@ def branch_text(words: str, lang: str = "en") -> str | None:
         if m:
             return templates[lang].format(**m.groupdict())
     return None
+
+
+# --- plan notes and readings (issue 20 §3, branch plan-notes) -------------------------------------
+TERMS.update({
+    # a plan's enlarged detail, named as a drawing names it ("detail I"; ГОСТ 2.305: "выносной элемент I")
+    "detail": {
+        "en": "detail",
+        "sr": "детаљ",
+        "ru": "выносной элемент",
+        "bg": "детайл",
+        "sl": "detajl",
+    },
+})

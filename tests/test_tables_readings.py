@@ -79,8 +79,11 @@ def readings(texts: list[str], heading: str) -> list[dict]:
     while k < len(texts) and not texts[k].endswith("readings") and texts[k] != "Results":
         m = _VALUE.match(texts[k])
         if m:
-            factor, mm, segment = texts[k - 1], texts[k - 2], texts[k - 3]
-            rows.append({"symbol": "".join(texts[start:k - 3]).replace(" ", ""), "segment": segment, "mm": mm,
+            j = k - 1  # the factor cell: from its "× k" on (the link length's symbol l_BA is typeset in runs of its own)
+            while not texts[j].startswith("×"):
+                j -= 1
+            factor, mm, segment = "".join(texts[j:k]), texts[j - 1], texts[j - 2]
+            rows.append({"symbol": "".join(texts[start:j - 2]).replace(" ", ""), "segment": segment, "mm": mm,
                          "factor": factor, "value": float(m.group(1)), "unit": m.group(2), "sense": m.group(3)})
             start = k + 1
         k += 1
@@ -213,8 +216,9 @@ def test_readings_recompute_every_graphical_value_and_its_error(drawn):
             mm = float(r["mm"])
             factor = r["factor"]
             assert factor.startswith(f"× {k:g}"), (r, k)
-            divide = re.search(r"÷ ([0-9.]+) \((\w+)\)", factor)
-            value = mm * k / (float(divide.group(1)) if divide else 1.0)
+            # ÷ (l_BA = 0.25): the link length named by the two points as the scene names them (issue 20 §3.4)
+            divide = re.search(r"÷\s*\(l([A-Z][A-Za-z0-9]*)\s*=\s*([0-9.]+)\)", factor)
+            value = mm * k / (float(divide.group(2)) if divide else 1.0)
             assert value == pytest.approx(r["value"], rel=6e-4, abs=1e-12), r
             keys = names = _quantity(r["symbol"], r["unit"])
             if keys[0] not in table and re.fullmatch(r"[va]([A-Z]+)([0-9]+)", keys[0][0]):
@@ -241,7 +245,7 @@ def test_readings_recompute_every_graphical_value_and_its_error(drawn):
                 if divide:  # ω or ε of a link: the exact segment length from the analytic positions
                     name = key[0][1:]
                     analytic = getattr(a.links[name], "omega" if key[0].startswith("ω") else "epsilon")[0]
-                    points = re.findall(r"[A-Z][0-9]*", divide.group(2))
+                    points = re.findall(r"[A-Z][0-9]*", divide.group(1))
                     ends = [a.points[p.rstrip("0123456789")].r[0] for p in points]
                     recomputed = math.copysign(mm * k / abs(ends[0] - ends[1]), value_signed)
                     expected = abs(recomputed - analytic) / abs(analytic)
