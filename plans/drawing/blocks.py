@@ -258,7 +258,7 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
             text = f"{table_number(abs(value))} {rate_unit}{arrow}"
         else:
             text = f"{table_number(value)} {unit}"
-        factor = f"× {fmt(k)}"
+        factor = f"×\u00a0{fmt(k)}" if divide is not None else f"× {fmt(k)}"
         if divide is not None:
             # the link length by the textbook's name, the segment between the two points as the scene names them;
             # no-break spaces: the cell never wraps inside it

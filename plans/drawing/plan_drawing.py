@@ -458,8 +458,13 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, at):
                 in_detail.setdefault(label, name)
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
+    # every dot of the plan: a label stands nearer its own point than any other (it reads as that point's)
+    where = {"pole-label": 0j} | {f"image-{name}": z for name, z in images.items()} | {f"end-{label}": z for z, _, label in ends}
     for at, pieces in groups:
-        place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
+        mine = [where[gid] for _, gid in pieces if gid in where]
+        rivals = tuple(q for q in where.values() if all(abs(q - m) > SAME_MM for m in mine))
+        place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM, rivals=rivals,
+                    by_box=True)
 
     for ring, names in rings:
         name = next_name()
@@ -536,8 +541,8 @@ def _clip(a: complex, b: complex, centre: complex, r: float):
 def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[complex, list[tuple[str, str]]]]:
     """The plan's labels: (point, [(text, gid), …]) for the pole, each group of coincident images, and component ends.
 
-    Images closer than :data:`SAME_MM` share one label ("p, o, c"); the end of a
-    short component within *join* of an image shares that image's label ("a′, n₁").
+    Images closer than :data:`SAME_MM` share one label ("p, o, c"); a component's
+    lettered end within *join* of an image shares that image's label ("a′, n₁").
     """
     groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [(pole_text(plan), "pole-label")])]
     short = {v.label for v in shorts}
@@ -552,7 +557,9 @@ def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[c
     for name, z in images.items():
         add(z, (image_text(name, getattr(plan, "points", None)), f"image-{name}"), SAME_MM)
     for z, letter, label in ends:
-        add(z, (letter, f"end-{label}"), join if label in short else SAME_MM)
+        # a lettered end within *join* of an image shares its label whether its own vector or the next one is the
+        # short one (quick-return position 4: n₁ 0.16 mm from a₄′, the tangential component between them)
+        add(z, (letter, f"end-{label}"), join)
     return groups
 
 
