@@ -344,6 +344,8 @@ VOCABULARY = {
     "polar_note": {"sr": "Сваки вектор из пола је реакција у једном положају криваје; бројеви су положаји 0, 1, … од крајњег положаја излазног члана.", "ru": "Каждый вектор из полюса — реакция в одном положении кривошипа; числа — положения 0, 1, … от крайнего положения выходного звена.", "bg": "Всеки вектор от полюса е реакцията в едно положение на манивелата; числата са положенията 0, 1, … от крайното положение на изходното звено.", "sl": "Vsak vektor iz pola je reakcija v eni legi ročice; številke so lege 0, 1, … od skrajne lege izhodnega člena."},
     # the plate's data line: a four-bar loop named by its links
     "four_bar_loop": {"sr": "зглавкасти четвороугао", "ru": "шарнирный четырёхзвенник", "bg": "шарнирен четиризвенник", "sl": "štirizgibni mehanizem"},
+    # a plan's enlarged detail named in its notes ("detail I"; ГОСТ 2.305 "выносной элемент")
+    "detail": {"sr": "детаљ", "ru": "выносной элемент", "bg": "детайл", "sl": "detajl"},
 }
 
 #: domain.md §9, word for word: the headings every handout carries.
