@@ -8,7 +8,9 @@ handout places (text nodes and dots by their ids) and from the Typst source of i
 * the notes under a plan name the plan's segments ("a a₄ = 0,45 mm"), never a velocity in mm ("|v_A4A3| = …"),
   no program suffixes ("(k)", "(n₁)", "(I)"), each direction once;
 * the Coriolis component's end letter is no image's letter (linear-arm's point K);
-* the readings divide by l_AC, named by the scene's points, never a program token ("(A4C)").
+* the readings divide by l_AC, named by the scene's points, never a program token ("(A4C)");
+* the comparison tables print no round-off ("1,5·10⁻¹⁶" errors of given values, "−1,998·10⁻¹⁵" for a zero) and a
+  graphical value to the digits its 0.1 mm reading justifies ("0,08109 rad/s²" from a 0,2 mm segment).
 
 Where a dot or a label should be comes from the plans' data at the handout's scale factors (mm on the paper);
 where it is comes from the SVG (its viewBox and width give the units per mm).
@@ -36,7 +38,8 @@ REVIEWED = [("quick-return", 12, "sr"), ("linear-arm", 8, "bg"), ("six-bar", Non
 
 @pytest.fixture(scope="module")
 def handouts():
-    return {name: handout(plans.load(example_path(name)), positions=n, lang=lang) for name, n, lang in REVIEWED}
+    return {name: handout(plans.load(example_path(name)), positions=n, lang=lang, centres=name == "quick-return")
+            for name, n, lang in REVIEWED}
 
 
 def _drawn_plans(doc):
@@ -219,3 +222,40 @@ def test_readings_divide_by_the_link_length_named_by_the_scene_points(handouts, 
         assert " " not in re.sub(r"\$[^$]*\$", "", cell), cell  # no-break spaces only (math never breaks): the cell never wraps
         m = re.search(r"l_\(([A-Z][a-z0-9]*) ([A-Z][a-z0-9]*) \)", cell)
         assert m and all(e in scene.point_names for e in m.groups()), cell
+
+
+def test_no_round_off_is_printed_in_the_tables(handouts):
+    """Relative errors of 10⁻¹⁶ (given v_A, ω₂ of the driver) and values of 10⁻¹⁵ (a dead centre's ω₄, v_D, also on the
+    centres pages): round-off is no reading."""
+    for name, doc in handouts.items():
+        assert not re.search(r"10⁻(⁹|¹[⁰¹²³⁴⁵⁶⁷⁸⁹])", doc.source), name
+
+
+def _rows(source: str, heading: str) -> list[list[str]]:
+    """The rows of the first table after *heading* in the Typst source: each cell's text (math as Typst writes it)."""
+    start = re.search(re.escape(heading) + r'[^\]]*\] \\\n#table\(', source).start()
+    table = source[source.index("#table(", start):]
+    table = table[:table.index("table.hline(stroke: 0.7pt))")]
+    cells = re.findall(r'text\(weight: "(?:bold|regular)"\)\[(.*?)\](?=, text\(|, table\.hline)', table)
+    return [cells[k:k + 4] for k in range(0, len(cells) - 3, 4)]
+
+
+def test_given_values_have_no_error_and_readings_their_digits(handouts):
+    """Quick-return position 4 (sr): v_A, a_A and ω₂ are given (error "—"); ε₄ = ε₃ read off a segment at k_a ÷ l_AC
+    printed to the decimals of one 0.1 mm step of it, l_AC from the analytic positions (|A − C|)."""
+    import math
+
+    doc = handouts["quick-return"]
+    h = next(r for r in doc.runs if r.index == 4)
+    rows = _rows(doc.source, "Положај 4:")
+    by = {re.sub(r"\s+", "", r[0]): r for r in rows}
+    for key in ('$v_(A)$#"[m/s]"', '$a_(A)$#"[m/s²]"', '$omega_(2)$#"[rad/s]"'):
+        assert by[key][3] == '#"—"', by[key]
+    assert by['$v_(D)$#"[m/s]"'][3] != '#"—"'  # a reading has its error
+    eps = next(r for k, r in by.items() if "epsilon_(4" in k)
+    l_ac = abs(h.analytic.points["A"].r[0] - h.analytic.points["C"].r[0])
+    step = 0.1 * doc.scales["k_a"] / l_ac
+    printed = eps[1].strip('#"')
+    decimals = len(printed.split(",")[1]) if "," in printed else 0
+    assert decimals == -math.floor(math.log10(step)), (printed, step)
+    assert abs(float(printed.replace("−", "-").replace(",", ".")) - h.graphical.links["4"]["epsilon"]) <= step
