@@ -173,9 +173,12 @@ def test_notes_under_the_plans_are_the_plans_segments(handouts, name):
             if gid.startswith(f"{tag}-short-"):
                 label = gid[len(f"{tag}-short-"):]
                 v = next(v for v in plan.vectors if v.label.replace("^", "_") == label)
-                m = re.fullmatch(r"(\S+(?: \S+)?) = ([0-9]+[.,][0-9]{2}) (mm|мм)(?: \((detail|детаљ|детайл) (I+)\))?", note)
+                m = re.fullmatch(r"(\S+(?: \S+)?) ([=<]) ([0-9]+[.,][0-9]{2}) (mm|мм)(?: \((detail|детаљ|детайл) (I+)\))?", note)
                 assert m, note
-                assert float(m.group(2).replace(",", ".")) == pytest.approx(v.length, abs=0.006)
+                if m.group(2) == "=":
+                    assert float(m.group(3).replace(",", ".")) == pytest.approx(v.length, abs=0.006)
+                else:  # "< 0,01 mm", not "0,00 mm"
+                    assert v.length < 0.01 and m.group(3) in ("0.01", "0,01")
                 seen += 1
         directions = [t.split(" =")[0] for gid, t in notes.items() if gid.startswith(f"{tag}-along-")]
         assert len(directions) == len(set(directions)), directions  # each direction once
@@ -259,3 +262,26 @@ def test_given_values_have_no_error_and_readings_their_digits(handouts):
     decimals = len(printed.split(",")[1]) if "," in printed else 0
     assert decimals == -math.floor(math.log10(step)), (printed, step)
     assert abs(float(printed.replace("−", "-").replace(",", ".")) - h.graphical.links["4"]["epsilon"]) <= step
+
+
+def test_the_two_coriolis_components_of_one_rod_are_drawn_apart(handouts):
+    """linear-arm: the sliders F and H on one rod have parallel Coriolis components that ran along one line (1.5 mm
+    apart on the plan): drawn, their shafts stand at least 2 mm apart wherever they run alongside."""
+    doc = handouts["linear-arm"]
+    for key, plan in _drawn_plans(doc):
+        if plan.kind != "acceleration":
+            continue
+        root = ET.fromstring(doc.images[key])
+        per_mm = float(root.get("viewBox").split()[2]) / float(root.get("width").removesuffix("mm"))
+        shafts = []
+        for g in root.iter(f"{SVG}g"):
+            if re.fullmatch(r"acc-coriolis-a_k_[A-Za-z0-9]+", g.get("id") or ""):
+                numbers = [float(x) for x in re.findall(r"-?[0-9]+(?:\.[0-9]+)?", next(g.iter(f"{SVG}path")).get("d"))]
+                shafts.append((complex(numbers[0], numbers[1]) / per_mm, complex(numbers[-2], numbers[-1]) / per_mm))
+        assert len(shafts) == 2, key
+        (a, b), (c, d) = shafts
+        u = (b - a) / abs(b - a)
+        offsets = [((z - a) * u.conjugate()) for z in (c, d)]
+        lo, hi = sorted(o.real for o in offsets)
+        if min(hi, abs(b - a)) - max(lo, 0.0) > 0 and abs(((d - c) / abs(d - c) * u.conjugate()).imag) < 0.05:
+            assert min(abs(o.imag) for o in offsets) >= 2.0, (key, offsets)

@@ -394,6 +394,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
 
     # components under the absolute vectors, in a fixed order of kinds
     absolute = [v for v in vectors if v.kind == "absolute" and v.length >= SHORT_MM]
+    placed: dict[str, list[tuple[complex, complex]]] = {}  # kind -> (tail, tip) of the components drawn so far
     for kind in ("normal", "tangential", "coriolis", "relative", "absolute"):
         for v in vectors:
             if v.kind != kind or v.length < SHORT_MM:
@@ -410,12 +411,15 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
                 _rim(sketch, head_artist, f"{kind}-{v.label}-rim")
                 continue
             if kind != "absolute":
-                shift = _beside(tail, tip, absolute)
+                # off an absolute vector it would lie on unseen, or off a component of its kind drawn along the same
+                # line (linear-arm: the two Coriolis components of sliders on one rod, 1.5 mm apart, read as one line)
+                shift = _beside(tail, tip, absolute) or _apart(tail, tip, placed.get(kind, []))
                 if shift:
                     for end in (tail, tip):
                         sketch.line([end, end + shift * 1.25], color=color, lw=0.4, gid=f"{kind}-{v.label}-tick", zorder=z, obstacle=False)
                     tail, tip = tail + shift, tip + shift
             sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=_head(head, lw, v.length), gid=f"{kind}-{v.label}", zorder=z)
+            placed.setdefault(kind, []).append((tail, tip))
 
     # the pole, the image points and the lettered ends of components
     sketch.circle(0j, 0.55, fc=INK, lw=0, gid="pole", zorder=4.0)
@@ -759,6 +763,33 @@ def _beside(tail: complex, tip: complex, absolute) -> complex:
     return 0j
 
 
+#: Two components of one kind on nearly one line, closer than this [mm] along a stretch they share, read as one line:
+#: the later is drawn this far off the other (with ticks to its true ends).
+APART_MM = 2.5
+
+
+def _apart(tail: complex, tip: complex, drawn) -> complex:
+    """The shift [mm] that takes a component off a parallel one of its kind it would run along (*drawn*: their
+    (tail, tip) as drawn), or 0."""
+    d = tip - tail
+    if abs(d) == 0:
+        return 0j
+    for a, b in drawn:
+        if abs(b - a) == 0:
+            continue
+        u = unit(b - a)
+        if abs((unit(d) * u.conjugate()).imag) > math.sin(math.radians(ALONG_DEG)):
+            continue  # not parallel
+        off = [((z - a) * u.conjugate()) for z in (tail, tip)]
+        if all(abs(o.imag) < APART_MM for o in off):
+            lo, hi = sorted(o.real for o in off)
+            if min(hi, abs(b - a)) - max(lo, 0.0) > 1.0:
+                side = 1.0 if sum(o.imag for o in off) >= 0 else -1.0
+                worst = min(o.imag * side for o in off)
+                return u * 1j * side * (APART_MM - worst)
+    return 0j
+
+
 def _along(v, absolute):
     """The longer absolute vector from the pole that *v* (also from the pole) lies on, or None."""
     if abs(v.tail) > SAME_MM:
@@ -877,7 +908,9 @@ def notes_text(plan, notes, lang: str = "en", letters: dict[str, str] | None = N
     out = []
     for v, detail in notes:
         where = f" ({term('detail', lang)} {detail})" if detail else ""
-        out.append(f"{segment(plan, v, letters)} = {localised(f'{v.length:.2f}', lang)} mm{where}")
+        # a length under the hundredth the note prints is no "0,00 mm": its ends all but coincide
+        length = f"= {localised(f'{v.length:.2f}', lang)}" if v.length >= 0.005 else f"< {localised('0.01', lang)}"
+        out.append(f"{segment(plan, v, letters)} {length} mm{where}")
     return out
 
 
