@@ -215,7 +215,7 @@ def test_no_coriolis_end_shares_a_letter_with_an_image(handouts):
 
 @pytest.mark.parametrize("name", [n for n, _, _ in REVIEWED])
 def test_readings_divide_by_the_link_length_named_by_the_scene_points(handouts, name):
-    """"÷ 0,37 (A4C)" → "÷ (l_AC = 0,37)", in one unbreakable cell."""
+    """"÷ 0,37 (A4C)" → "÷ 0,37 (l_AC)", in one unbreakable cell."""
     source = handouts[name].source
     assert not re.search(r"÷ [0-9,.]+ \(", source)
     cells = re.findall(r'\[#"(×[^\]]*÷[^\]]*)"\]', source)

@@ -222,9 +222,9 @@ def test_readings_recompute_every_graphical_value_and_its_error(drawn):
             mm = float(r["mm"])
             factor = r["factor"].replace("\u00a0", " ")  # no-break spaces in a cell that divides (issue 20 §3.4)
             assert factor.startswith(f"× {k:g}"), (r, k)
-            # ÷ (l_BA = 0.25): the link length named by the two points as the scene names them (issue 20 §3.4)
-            divide = re.search(r"÷\s*\(l([A-Z][A-Za-z0-9]*)\s*=\s*([0-9.]+)\)", factor)
-            value = mm * k / (float(divide.group(2)) if divide else 1.0)
+            # ÷ 0.25 (l_BA): the link length named by the two points as the scene names them (issue 20 §3.4)
+            divide = re.search(r"÷\s*([0-9.]+)\s*\(l([A-Z][A-Za-z0-9]*)\)", factor)
+            value = mm * k / (float(divide.group(1)) if divide else 1.0)
             assert value == pytest.approx(r["value"], rel=6e-4, abs=1e-12), r
             keys = names = _quantity(r["symbol"], r["unit"])
             if keys[0] not in table and re.fullmatch(r"[va]([A-Z]+)([0-9]+)", keys[0][0]):
@@ -244,7 +244,7 @@ def test_readings_recompute_every_graphical_value_and_its_error(drawn):
                 signed = abs(graphical) if isinstance(graphical, complex) else graphical
                 # printed to the decimals of the reading's resolution: 0.1 mm × k (÷ l), issue 20 §3.7
                 given = row[2] == "—" and (key[0][1:] in scene.bodies[scene.driver.link].points or key[0][1:] == scene.driver.link)
-                half = 0.0 if given else _half_digit(PRECISION_MM * k / (float(divide.group(2)) if divide else 1.0))
+                half = 0.0 if given else _half_digit(PRECISION_MM * k / (float(divide.group(1)) if divide else 1.0))
                 if r["sense"] is not None:
                     value_signed = value if r["sense"] == "↺" else -value
                     assert signed == pytest.approx(value_signed, abs=half + 1e-3 * abs(value)), (r, row)
@@ -258,7 +258,7 @@ def test_readings_recompute_every_graphical_value_and_its_error(drawn):
                 if divide:  # ω or ε of a link: the exact segment length from the analytic positions
                     name = key[0][1:]
                     analytic = getattr(a.links[name], "omega" if key[0].startswith("ω") else "epsilon")[0]
-                    points = re.findall(r"[A-Z][0-9]*", divide.group(1))
+                    points = re.findall(r"[A-Z][0-9]*", divide.group(2))
                     ends = [a.points[p.rstrip("0123456789")].r[0] for p in points]
                     recomputed = math.copysign(mm * k / abs(ends[0] - ends[1]), value_signed)
                     expected = abs(recomputed - analytic) / abs(analytic)

@@ -262,7 +262,7 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
         if divide is not None:
             # the link length by the textbook's name, the segment between the two points as the scene names them;
             # no-break spaces: the cell never wraps inside it
-            factor += f"\u00a0÷\u00a0(${link_length(graphical, between)}$\u00a0=\u00a0{table_number(divide)})"
+            factor += f"\u00a0÷\u00a0{table_number(divide)}\u00a0(${link_length(graphical, between)}$)"
         return [symbol, measured, printed_length(length, precision), factor, text]
 
     from ._canvas import fmt_number as fmt
