@@ -608,13 +608,18 @@ def _forces(args) -> int:
 
 
 def _force_drawings(args, runs) -> None:
-    """``plans forces -o DIR``: every position's kinetostatic drawings, written together or not at all."""
+    """``plans forces -o DIR``: every position's kinetostatic drawings and its pages (set by Typst: ``pages.pdf``, or
+    ``page-N.svg`` / ``.png``), written together or not at all."""
+    from dataclasses import replace
+
     from ._files import replace_all
     from .drawing.force_drawing import force_drawing_files
 
     from .forces.force_plans import force_plans
     from .forces.lever import LeverError, joukowski_lever
     from .graphical import construct
+    from .pages.forces import drawn_group_names, force_document
+    from .pages.typesetting import compile_document
     from .positions import at_page_precision
 
     directory = Path(args.output)
@@ -631,7 +636,15 @@ def _force_drawings(args, runs) -> None:
             except LeverError:
                 lever = None
         where = directory if len(runs) == 1 else directory / f"position-{k}"
-        contents.update(force_drawing_files(plans, where, lang=args.lang, formats=(args.format,), lever=lever))
+        names = drawn_group_names(plans.plans, args.lang)
+        contents.update(force_drawing_files(plans, where, lang=args.lang, formats=(args.format,), lever=lever, names=names))
+        doc, _ = force_document(replace(run, graphical=graphical, lever=lever), args.lang)
+        pages = compile_document(doc.source(), doc.images, args.format)
+        if args.format == "pdf":
+            contents[where / "pages.pdf"] = pages
+        else:
+            for n, page in enumerate(pages, start=1):
+                contents[where / f"page-{n}.{args.format}"] = page
     for path in replace_all(contents):
         print(path, file=sys.stderr)
 
@@ -730,8 +743,9 @@ def _sweep(args) -> int:
 
 def _kinematic_diagrams(scene: Scene, args) -> list:
     """``plans sweep --plot DIR``: the output link's kinematic diagrams by graphical differentiation, at
-    ``--positions`` positions (12 by default), as DIR/kinematic.FORMAT (kinematic-1, kinematic-2 when the table
-    takes a page of its own); a mechanism without an output slider or rocker is said so on standard error."""
+    ``--positions`` positions (12 by default), as one drawing DIR/kinematic.FORMAT (the three diagrams with the
+    chord construction under a short caption); a mechanism without an output slider or rocker is said so on
+    standard error."""
     from .differentiation import kinematic_diagrams
 
     try:

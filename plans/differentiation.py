@@ -83,6 +83,9 @@ __all__ = [
     "abscissa_length",
     "kinematic_diagrams",
     "rescaled",
+    "readable",
+    "flat",
+    "READABLE_HEIGHT",
 ]
 
 #: Pole distances H [mm] a plate uses: round, short enough to leave the abscissa its room.
@@ -458,15 +461,15 @@ class KinematicDiagrams:
         }
 
     def pages(self, *, lang: str = "en", title: str = "") -> list:
-        """The page(s) of the diagrams and the table as matplotlib Figures (A4; see
-        :func:`plans.drawing.kinematic_diagrams.draw_kinematic_pages`)."""
+        """The diagrams as a one-figure list (a matplotlib Figure true to scale, at the scales an A4 page prints them
+        readably, with a short caption; see :func:`plans.drawing.kinematic_diagrams.draw_kinematic_figure`).
+        The comparison is :meth:`rows`; the handout sets the page with its table."""
         from .display import display_function
 
         return display_function("kinematic_pages")(self, lang=lang, title=title)
 
     def save(self, path, *, lang: str = "en", title: str = "") -> list:
-        """Write the page(s) to *path* by its suffix: ``.pdf`` every page in one file; ``.svg`` / ``.png``
-        one file a page (``kinematic-1.svg``, ``kinematic-2.svg`` when there are two).  Returns the paths written."""
+        """Write the drawing of :meth:`pages` to *path* by its suffix (``.pdf``, ``.svg``, ``.png``).  Returns the paths written."""
         from .display import display_function
 
         return display_function("save_pages")([(str(k + 1), fig) for k, fig in enumerate(self.pages(lang=lang, title=title))], path)
@@ -712,3 +715,109 @@ def rescaled(diagrams: KinematicDiagrams, height: float) -> KinematicDiagrams:
     velocity = replace(diagrams.velocity, pole=scales.pole_v, scale=scales.mu_v)
     acceleration = replace(diagrams.acceleration, pole=scales.pole_a, scale=scales.mu_a)
     return replace(diagrams, scales=scales, velocity=velocity, acceleration=acceleration)
+
+
+#: The height [mm] a page aims each diagram's ordinate range at (its round scale draws it between 3/4 of this and
+#: this: at least 40 mm).
+READABLE_HEIGHT = 54.0
+#: The shortest pole distance [mm] a page draws (a shorter one makes the rays too steep to carry a chord's slope).
+POLE_MIN = 10.0
+#: Round mantissas of μ_s, μ_v, μ_a on a page (finer than the textbook's, so a diagram fills its height).
+PAGE_MANTISSAS = (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)
+
+
+def _extent(values) -> float:
+    """The drawn range of an ordinate with its abscissa: max(values, 0) − min(values, 0)."""
+    values = np.asarray(values, dtype=float)
+    values = values[np.isfinite(values)]
+    if not len(values):
+        return 0.0
+    return float(max(values.max(), 0.0) - min(values.min(), 0.0))
+
+
+def flat(diagrams: KinematicDiagrams, key: str) -> float | None:
+    """The constant value of the rate *key* (``"v"`` or ``"a"``) when its chords give the same value over the whole
+    series (0 for a quantity identically zero: a uniform motion's acceleration), else None.
+
+    Its diagram would be a line parallel to the t axis: a page says the value instead of drawing it.  A rate is
+    constant when its chords' values differ by at most 10⁻⁶ of the largest of them (or of the output's natural
+    scale, its span over the cycle time, for a rate that is zero up to round-off).
+    """
+    motion = diagrams.motion
+    if key == "a":
+        below = flat(diagrams, "v")
+        if below is not None:
+            return 0.0  # the rate of a constant
+    rates = (diagrams.velocity if key == "v" else diagrams.acceleration).rates
+    rates = np.asarray(rates, dtype=float)
+    rates = rates[np.isfinite(rates)]
+    if not len(rates):
+        return None
+    duration = motion.duration or 1.0
+    natural = _span(motion.s) / duration ** (1 if key == "v" else 2)
+    if float(np.ptp(rates)) > 1e-6 * max(float(np.max(np.abs(rates))), natural):
+        return None
+    value = float(np.mean(rates))
+    return 0.0 if abs(value) <= 1e-9 * natural else value
+
+
+def _rate_scale(extent: float, mu_below: float, mu_t: float, height: float, pole_max: float) -> tuple[float, float, bool]:
+    """(μ, H, fits) of a rate diagram: μ the smallest round value that draws *extent* at most *height* mm tall, H
+    [mm] the pole distance that gives it (μ = μ_below/(μ_t·H)); H at least :data:`POLE_MIN` (a taller diagram
+    then); *fits*: H within *pole_max* (else μ is the smallest round value with H ≤ *pole_max*, a shorter diagram)."""
+    if extent <= 0:
+        mu = round_up(mu_below / (mu_t * min(20.0, pole_max)), PAGE_MANTISSAS)
+        return mu, mu_below / (mu_t * mu), True
+    mu = round_up(extent / height, PAGE_MANTISSAS)
+    pole = mu_below / (mu_t * mu)
+    if pole < POLE_MIN:
+        mu = rounding.round_down(mu_below / (mu_t * POLE_MIN), PAGE_MANTISSAS)
+        pole = mu_below / (mu_t * mu)
+    if pole <= pole_max:
+        return mu, pole, True
+    mu = round_up(mu_below / (mu_t * pole_max), PAGE_MANTISSAS)
+    return mu, mu_below / (mu_t * mu), False
+
+
+def readable(diagrams: KinematicDiagrams, room: float, *, height: float = READABLE_HEIGHT,
+             length_max: float = ABSCISSA_MAX) -> KinematicDiagrams:
+    """The same diagrams at the round scales a page prints them readably (the construction's numbers unchanged).
+
+    μ_s (rad/mm or m/mm), μ_v and μ_a are the smallest round values (:data:`PAGE_MANTISSAS`) that draw each
+    diagram's ordinate range (its values with the abscissa) at most *height* mm tall — so at least ¾ of it; the
+    pole distances follow, H₁ = μ_s/(μ_t·μ_v) and H₂ = μ_v/(μ_t·μ_a) [mm], at least :data:`POLE_MIN`.  *room*
+    [mm] is what the page gives the abscissa and the longer pole together (L + max(H₁, H₂)): L is the longest
+    whole number of millimetres per interval within *length_max* (as :func:`abscissa_length`) with which both
+    poles fit; when no L down to half of it lets them, the longest L with the poles cut to the room (shorter
+    rate diagrams).  μ_t = T/L.  A rate constant over the series (:func:`flat`) keeps a pole of 20 mm: it is
+    not drawn.
+    """
+    from dataclasses import replace
+
+    motion = diagrams.motion
+    duration = motion.duration
+    intervals = max(motion.intervals, 1)
+    # each ordinate's values: the points and the smooth curve through them over the abscissa (it reaches past an
+    # open series' last chord middles to its ends)
+    dense = np.linspace(0.0, duration, 241) + float(motion.t[0])
+    t, s = motion.points()
+    vel, acc = diagrams.velocity, diagrams.acceleration
+    extent_s = _extent(np.concatenate([motion.s, smooth(t, s, dense, period=motion.period)]))
+    mu_s = round_up(extent_s / height, PAGE_MANTISSAS) if extent_s > 0 else 1.0
+    extent_v = 0.0 if flat(diagrams, "v") is not None else _extent(np.concatenate([vel.rates, smooth(vel.middles, vel.rates, dense, period=motion.period)]))
+    extent_a = 0.0 if flat(diagrams, "a") is not None else _extent(np.concatenate([acc.rates, smooth(acc.middles, acc.rates, dense, period=motion.period)]))
+    longest = abscissa_length(intervals, length_max)
+    per = int(round(longest / intervals))
+    choice = None
+    for each in range(per, max(1, per // 2) - 1, -1):
+        length = float(each * intervals)
+        mu_t = duration / length
+        mu_v, pole_v, fits_v = _rate_scale(extent_v, mu_s, mu_t, height, room - length)
+        mu_a, pole_a, fits_a = _rate_scale(extent_a, mu_v, mu_t, height, room - length)
+        if choice is None or (fits_v and fits_a):
+            choice = DiagramScales(mu_t, length, mu_s, pole_v, mu_v, pole_a, mu_a)
+        if fits_v and fits_a:
+            break
+    velocity = replace(diagrams.velocity, pole=choice.pole_v, scale=choice.mu_v)
+    acceleration = replace(diagrams.acceleration, pole=choice.pole_a, scale=choice.mu_a)
+    return replace(diagrams, scales=choice, velocity=velocity, acceleration=acceleration)

@@ -137,7 +137,7 @@ def write_handout(
         drawn (the scene must have masses or loads): the free bodies of the
         groups with their loads and reactions, each group's force plan and the
         driver's with the reactions read off them and M_b, and Joukowski's
-        lever (:mod:`plans.drawing.forces_page`).
+        lever, the three methods side by side (:mod:`plans.pages.forces`).
     law : str, optional
         The driver's law over the cycle (``"constant"``, ``"uniform"``,
         ``"harmonic"``; :func:`plans.motion.driver_law`); None: the scene's

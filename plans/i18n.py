@@ -529,6 +529,33 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "скорост на точка от центъра, около който се завърта звеното ѝ",
         "sl": "hitrost točke iz pola, okoli katerega se vrti njen člen",
     },
+    # the handout's words for a sliding driver and its centres' pages (issue 20, plate-words)
+    "centres_omega_rule_linear": {
+        "en": "ω of a link from the driver's velocity, through the centres",
+        "sr": "ω члана из брзине погонског члана, преко полова",
+        "ru": "ω звена по скорости ведущего звена, через центры",
+        "bg": "ω на звеното от скоростта на водещото звено, чрез центровете",
+        "sl": "ω člena iz hitrosti pogonskega člena, prek polov",
+    },
+    "over_driver_stroke": {"en": "over the driver's stroke", "sr": "током хода погонског члана", "ru": "за ход ведущего звена",
+                           "bg": "за хода на водещото звено", "sl": "med hodom pogonskega člena"},
+    "driver_stroke_ends": {"en": "ends of the driver's stroke", "sr": "крајеви хода погонског члана",
+                           "ru": "концы хода ведущего звена", "bg": "краищата на хода на водещото звено",
+                           "sl": "konca hoda pogonskega člena"},
+    "driver_stroke": {"en": "the driver's stroke", "sr": "ход погонског члана", "ru": "ход ведущего звена",
+                      "bg": "ходът на водещото звено", "sl": "hod pogonskega člena"},
+    "centre_column": {"en": "centre", "sr": "пол", "ru": "центр", "bg": "център", "sl": "pol"},
+    "found_column": {"en": "found", "sr": "како је нађен", "ru": "как найден", "bg": "как е намерен", "sl": "kako je najden"},
+    "centre_at_pin": {"en": "at the pin {pin}", "sr": "у зглобу {pin}", "ru": "в шарнире {pin}", "bg": "в шарнира {pin}",
+                      "sl": "v zgibu {pin}"},
+    "centre_perpendicular_guide": {"en": "at infinity, perpendicular to the guide", "sr": "у бесконачности, управно на вођицу",
+                                   "ru": "в бесконечности, перпендикулярно направляющей",
+                                   "bg": "в безкрайността, перпендикулярно на водача", "sl": "v neskončnosti, pravokotno na vodilo"},
+    "centres_order": {"en": "The order of finding the centres", "sr": "Редослед налажења полова", "ru": "Порядок нахождения центров",
+                      "bg": "Ред на намиране на центровете", "sl": "Vrstni red iskanja polov"},
+    "one_way_stroke": {"en": "one way: no return stroke, no K", "sr": "у једном смеру: без повратног хода, без K",
+                       "ru": "в одну сторону: без обратного хода, без K", "bg": "в една посока: без обратен ход, без K",
+                       "sl": "v eno smer: brez povratnega hoda, brez K"},
     # readings of a plan (issue 10 §2): what a student measures and computes
     "readings": {
         "en": "readings",
@@ -980,6 +1007,22 @@ TERMS: dict[str, dict[str, str]] = {
                    "bg": "се завъртат изцяло", "sl": "se zavrtijo v celoti"},
     "none_turns": {"en": "no link turns fully", "sr": "ниједан члан се не окреће пуним кругом", "ru": "ни одно звено не проворачивается",
                    "bg": "никое звено не се завърта изцяло", "sl": "noben člen se ne zavrti v celoti"},
+    # --- the force pages set by Typst (plans.pages.forces) ---
+    "image": {"en": "image", "sr": "слика", "ru": "изображение", "bg": "образ", "sl": "slika"},
+    "lever_moments": {
+        "en": "Moments about the pole p",
+        "sr": "Моменти за пол p",
+        "ru": "Моменты относительно полюса p",
+        "bg": "Моменти спрямо полюса p",
+        "sl": "Momenti okoli pola p",
+    },
+    "force_methods": {
+        "en": "The three methods: analytic, force plans, Joukowski's lever (δ: the difference from the analytic value)",
+        "sr": "Три методе: аналитички, планови сила, Жуковљева полуга (δ: разлика од аналитичке вредности)",
+        "ru": "Три метода: аналитически, планы сил, рычаг Жуковского (δ: отличие от аналитического значения)",
+        "bg": "Трите метода: аналитично, планове на силите, лост на Жуковски (δ: разлика от аналитичната стойност)",
+        "sl": "Tri metode: analitično, načrti sil, Žukovskijev vzvod (δ: razlika od analitične vrednosti)",
+    },
 }
 
 
@@ -1159,6 +1202,32 @@ def branch_text(words: str, lang: str = "en") -> str | None:
         if m:
             return templates[lang].format(**m.groupdict())
     return None
+
+
+# the kinematic diagrams' page (issue 20): a rate constant over the cycle said instead of drawn
+TERMS.update({
+    "kd_zero": {
+        "en": "{q} = 0 over the whole cycle (its diagram is the t axis itself and is not drawn)",
+        "sr": "{q} = 0 током целог циклуса (дијаграм се поклапа са осом t и није цртан)",
+        "ru": "{q} = 0 на всём цикле (диаграмма совпадает с осью t и не строится)",
+        "bg": "{q} = 0 през целия цикъл (диаграмата съвпада с оста t и не е построена)",
+        "sl": "{q} = 0 v celem ciklu (diagram sovpada z osjo t in ni narisan)",
+    },
+    "kd_constant": {
+        "en": "{q} = {value} {unit}, constant over the whole cycle (its diagram, a line parallel to the t axis, is not drawn)",
+        "sr": "{q} = {value} {unit}, константно током целог циклуса (дијаграм, права паралелна оси t, није цртан)",
+        "ru": "{q} = {value} {unit}, постоянна на всём цикле (диаграмма, прямая, параллельная оси t, не строится)",
+        "bg": "{q} = {value} {unit}, постоянна през целия цикъл (диаграмата, права, успоредна на оста t, не е построена)",
+        "sl": "{q} = {value} {unit}, konstantna v celem ciklu (diagram, premica, vzporedna osi t, ni narisan)",
+    },
+    "signed_elsewhere": {
+        "en": "{points}: the output slider; its signed v and a are in the kinematic diagrams",
+        "sr": "{points}: излазни клизач; његове v и a са знаком су у кинематским дијаграмима",
+        "ru": "{points}: выходной ползун; его v и a со знаком — в кинематических диаграммах",
+        "bg": "{points}: изходният плъзгач; v и a със знак са в кинематичните диаграми",
+        "sl": "{points}: izhodni drsnik; njegova v in a s predznakom sta v kinematičnih diagramih",
+    },
+})
 
 
 # --- plan notes and readings (issue 20 §3, branch plan-notes) -------------------------------------

@@ -979,6 +979,8 @@ class Strokes:
 
         sub = subscript(self.output.link)
         lines = []
+        if not self.law.crank:  # a sliding driver: its stroke, one way; its ends are not the output's rest
+            return self._linear_summary(lang, num, sub)
         if self.output.kind == "slider":
             lines.append(f"{term('output_link', lang)} {self.output.link}: {term('stroke_H', lang)} H = {num(self.travel * 1e3)} mm")
         else:
@@ -992,6 +994,23 @@ class Strokes:
         arc = f"{num(math.degrees(self.working_arc))}°" if self.law.crank else f"{num(self.working_arc * 1e3)} mm"
         lines.append(f"{term('working_stroke', lang)}: 0 → 0′, {arc}, t = {num(self.working_time)} s")
         return lines
+
+    def _linear_summary(self, lang: str, num, sub: str) -> list[str]:
+        """A linear driver's cycle is its stroke, one way (domain.md §10): the output's travel over it, the stroke's
+        ends (the driver's, not the output's extreme positions: the output is not at rest there), the stroke's
+        length and time; no return stroke, no θ, no K."""
+        from .i18n import term
+
+        if self.output.kind == "slider":
+            travel = f"{term('stroke_H', lang)} H = {num(self.travel * 1e3)} mm"
+        else:
+            travel = f"{term('swing_psi', lang)} ψ{sub} = {num(math.degrees(self.travel))}°"
+        return [
+            f"{term('output_link', lang)} {self.output.link}: {travel} ({term('over_driver_stroke', lang)})",
+            f"{term('driver_stroke_ends', lang)}: {num(self.start_position * 1e3)} mm, {num(self.other_position * 1e3)} mm",
+            f"{term('driver_stroke', lang)}: {num(self.working_arc * 1e3)} mm, t = {num(self.working_time)} s "
+            f"({term('one_way_stroke', lang)})",
+        ]
 
     def as_dict(self) -> dict:
         """For JSON: each key names its unit (``_deg`` in [0, 360) for crank angles, ``_m``, ``_s``)."""

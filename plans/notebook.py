@@ -109,10 +109,12 @@ def register(shell=None) -> bool:
 
 
 def kinematic_pages(diagrams, *, lang: str = "en", title: str = "") -> list:
-    """The pages of :class:`plans.differentiation.KinematicDiagrams` (:func:`plans.drawing.kinematic_diagrams.draw_kinematic_pages`)."""
-    from .drawing.kinematic_diagrams import draw_kinematic_pages
+    """The drawing of :class:`plans.differentiation.KinematicDiagrams` as a one-figure list, at the scales an A4
+    page prints them readably (:func:`plans.drawing.kinematic_diagrams.draw_kinematic_figure`)."""
+    from .drawing.kinematic_diagrams import draw_kinematic_figure, page_diagrams
+    from .pages.document import A4_PORTRAIT
 
-    return draw_kinematic_pages(diagrams, title=title, lang=lang)
+    return [draw_kinematic_figure(page_diagrams(diagrams, A4_PORTRAIT.text_width), title=title, lang=lang)]
 
 
 def force_cycle_page(cycle_forces, *, lang: str = "en", title: str = ""):

@@ -13,7 +13,7 @@ import json
 import math
 
 from ._text import math_name
-from .compare import PLAN_QUANTITIES, QUANTITIES, Comparison
+from .compare import PLAN_QUANTITIES, QUANTITIES, ZERO_FRACTION, Comparison
 from .errors import PlansError
 from .limits import expected_rel_error
 from .scene import Crank, Scene
@@ -495,7 +495,8 @@ def _drawn_value(plan, label: str) -> complex:
     return 0j
 
 
-def drawn_rows(comparisons: list[Comparison], graphical=None, analytic=None, position: int = 0) -> list[tuple[str, Comparison]]:
+def drawn_rows(comparisons: list[Comparison], graphical=None, analytic=None, position: int = 0,
+               points_of_links: bool = False) -> list[tuple[str, Comparison]]:
     """The compared quantities as the plans draw them: ``(vector label, comparison)``.
 
     A point's v, a keep their rows (``"v_A"``).  A slider's v_rel, a_rel and
@@ -505,7 +506,8 @@ def drawn_rows(comparisons: list[Comparison], graphical=None, analytic=None, pos
     vector as measured, analytic ``sign·v_rel·u_g`` (u_g from the analytic
     guide angle), errors of the vector.  ω, ε keep their rows
     (``"omega_3"``).  Without *graphical* and *analytic* the sliders keep the
-    JSON's scalars (``"v^r_E"``).
+    JSON's scalars (``"v^r_E"``).  With *points_of_links*, the absolute velocity and acceleration of every
+    point of a link the plans draw (``v_A4``, ``a_A4``) gets its row too (:func:`_with_points_of_links`).
     """
     out: list[tuple[str, Comparison]] = []
     prismatics = {p.name: p for p in analytic.scene.prismatics} if analytic is not None else {}
@@ -531,6 +533,62 @@ def drawn_rows(comparisons: list[Comparison], graphical=None, analytic=None, pos
         error = abs(g - a)
         reference = row.abs_error / row.rel_error if row.rel_error > 0 and row.abs_error > 0 else abs(a)
         out.append((label, Comparison(row.section, row.name, row.quantity, a, g, error, error / reference if reference > 0 else 0.0)))
+    if points_of_links and graphical is not None and analytic is not None:
+        out = _with_points_of_links(out, graphical, analytic, position)
+    return out
+
+
+def _point_of_link(analytic, point: str, link: str, position: int) -> tuple[complex, complex] | None:
+    """(v [m/s], a [m/s²]) of the point of *link* that coincides with *point* at *position* (``A4``: the point of
+    rocker 4 under the slider's pin A), from the analytic solution: v = v_R + iω·(r − r_R),
+    a = a_R + (iε − ω²)(r − r_R), R a point of the link the analytic solution tracks; None when it tracks none."""
+    motion = analytic.links.get(link)
+    here = analytic.points.get(point)
+    if motion is None or here is None:
+        return None
+    for name in analytic.scene.bodies[link].points:
+        ref = analytic.points.get(name)
+        if ref is None or name == point:
+            continue
+        arm = complex(here.r[position]) - complex(ref.r[position])
+        w, e = float(motion.omega[position]), float(motion.epsilon[position])
+        return complex(ref.v[position]) + 1j * w * arm, complex(ref.a[position]) + (1j * e - w * w) * arm
+    return None
+
+
+def _with_points_of_links(rows: list, graphical, analytic, position: int) -> list:
+    """*rows* with the absolute velocity and acceleration of every point of a link the plans draw and the rows do
+    not hold (``v_A4``, ``a_A4``: the point of link 4 under a slider's pin), after the points' rows: graphical
+    the plan's vector from the pole as measured, analytic :func:`_point_of_link`."""
+    have = {label for label, _ in rows}
+    asked = {r.quantity for _, r in rows if r.section == "points"}  # a table of velocities only gets no accelerations
+    added = {"v": [], "a": []}
+    for quantity, plan in (("v", graphical.velocity_plan), ("a", graphical.acceleration_plan)):
+        if plan is None or quantity not in asked:
+            continue
+        for vector in plan.vectors:
+            if vector.kind != "absolute" or vector.label in have or not vector.label.startswith(quantity + "_"):
+                continue
+            named = vector.label.partition("_")[2]
+            match = [(p, link) for p, link in plan.points.values() if link and p + link == named]
+            if not match:
+                continue
+            point, link = match[0]
+            values = _point_of_link(analytic, point, link, position)
+            if values is None:
+                continue
+            a = values[0] if quantity == "v" else values[1]
+            g = _drawn_value(plan, vector.label)
+            error = abs(g - a)
+            largest = max([abs(r.analytic) for _, r in rows if r.section == "points" and r.quantity == quantity] + [abs(a)])
+            reference = abs(a) if abs(a) >= ZERO_FRACTION * largest else largest
+            added[quantity].append((vector.label, Comparison("points", named, quantity, a, g, error, error / reference if reference > 0 else 0.0)))
+            have.add(vector.label)
+    extra = sorted(added["v"] + added["a"], key=lambda lr: (lr[1].name, lr[1].quantity != "v"))  # v, a of each point
+    out = list(rows)
+    places = [k for k, (_, r) in enumerate(out) if r.section == "points"]
+    at = places[-1] + 1 if places else 0
+    out[at:at] = extra
     return out
 
 
@@ -558,7 +616,8 @@ def _by_link_number(rows: list) -> list:
     return rows
 
 
-def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, position: int = 0) -> list[list[str]]:
+def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, position: int = 0,
+                points_of_links: bool = False) -> list[list[str]]:
     """Rows of preformatted text for a sheet: header, then one row per quantity.
 
     Vectors are written as magnitude ∠ direction; ω, ε keep their sign
@@ -570,10 +629,11 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
     Symbols are typeset; numbers have true minus signs and no ``e`` notation.
     Quantities that both methods give as exactly zero (the Coriolis term of a
     guide that does not turn, ω of a link that only translates, a point at
-    rest) are left out, as they are left off the plans.
+    rest) are left out, as they are left off the plans.  *points_of_links*: the rows of every point of a link
+    the plans draw (``v_A4``, ``a_A4``, the handout's table), see :func:`drawn_rows`.
     """
     rows = [["quantity", "graphical", "analytic", "rel. error"]]
-    drawn = drawn_rows(comparisons, graphical, analytic, position)
+    drawn = drawn_rows(comparisons, graphical, analytic, position, points_of_links)
     # the scale of each kind at this position: the largest analytic value of that kind in the table
     scale: dict[str, float] = {}
     for _, row in drawn:

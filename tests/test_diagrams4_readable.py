@@ -125,7 +125,10 @@ def test_the_handout_places_its_diagram_pages_at_100_percent():
 
     doc = handout(plans.load(plans.example_path("four-bar")), positions=4)
     for key in ("diagram-links", "diagram-points"):
-        assert doc.drawn[key] == pytest.approx(DIAGRAM_PAGE, abs=0.01), key  # 8 pt type prints at 8 pt
+        width, height = doc.drawn[key]  # 8 pt type prints at 8 pt: the figure placed at its own size
+        assert width == pytest.approx(DIAGRAM_PAGE[0], abs=0.01), key
+        assert DIAGRAM_PAGE[1] - 40.0 <= height <= DIAGRAM_PAGE[1], key  # under its heading and words, set by Typst
+        assert f'image(bytes(sys.inputs.at("{key}")), format: "svg", width: {width:.3f}mm)' in doc.source
 
 
 TEXT_RUN = re.compile(rb"([-\d.]+) ([-\d.]+) ([-\d.]+) ([-\d.]+) [-\d.]+ [-\d.]+ cm\s*BT(.*?)ET", re.S)

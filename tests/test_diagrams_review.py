@@ -219,11 +219,14 @@ def test_the_kinematic_table_is_numbered_in_the_readers_words(sheets):
     assert diagrams_table(sheets["four-bar"], "ru")[0][0] == "№ п/п"
 
 
-def test_the_swings_table_fits_under_its_diagrams(sheets):
-    from plans.drawing.kinematic_diagrams import draw_kinematic_pages
+def test_the_swings_diagrams_fill_one_page(sheets):
+    """The three diagrams of each output, at the scales that draw them at least 40 mm tall, take one A4 page's
+    room under the data lines (the table flows on with the page's words)."""
+    from plans.drawing.kinematic_diagrams import PAGE_ROOM, diagram_svgs, page_diagrams
 
     for name in ("four-bar", "rocker-limit", "slider-crank"):
-        assert len(draw_kinematic_pages(sheets[name], title=name, lang="en")) == 1, name
+        blocks = diagram_svgs(page_diagrams(sheets[name], 175.0), "en")
+        assert len(blocks) == 3 and sum(b.height for b in blocks.values()) <= PAGE_ROOM + 3.0, name
 
 
 @pytest.mark.parametrize("lo, hi", [(-6.8, 4.3), (-3.5, 7.0), (-120.0, 110.0)])

@@ -246,21 +246,22 @@ def _text_of(svg: bytes, gid: str) -> str:
 
 
 def test_ray_intercepts_measured_in_the_svg_give_the_chord_velocities(twelve):
-    """On the page as printed: H₁ and μ_v as stated, an intercept measured in mm × μ_v = the chord's velocity."""
-    from plans.drawing.kinematic_diagrams import draw_kinematic_pages
-    from plans.drawing.svg import render_svg
+    """In the drawings a page places at 100 %: H₁ and μ_v as their title states, an intercept measured in mm × μ_v
+    = the chord's velocity."""
+    from plans.drawing.kinematic_diagrams import diagram_svgs, diagram_title, page_diagrams
 
-    d = twelve
-    svg = render_svg(draw_kinematic_pages(d, title="t", lang="en")[0])
-    stated = _text_of(svg, "page-kd-v-title")
-    m = re.search(r"μv = μs/\(μt·H1\) = ([0-9.]+) \(m/s\)/mm,\s+H1 = ([0-9.]+) mm", stated)
+    d = page_diagrams(twelve, 175.0)
+    blocks = diagram_svgs(d, "en")
+    stated = diagram_title(d, "v", "en")
+    m = re.search(r"\$\\mu_\{v\}\$ = \$\\mu_\{s\}\$/\(\$\\mu_\{t\}\$·\$H_\{1\}\$\) = ([0-9.]+) \(m/s\)/mm,\s+\$H_\{1\}\$ = ([0-9.]+) mm", stated)
     assert m, stated
     mu_v, pole = float(m.group(1)), float(m.group(2))
-    mu_s = float(re.search(r"μs = ([0-9.]+) m/mm", _text_of(svg, "page-kd-s-title")).group(1))
-    data = " | ".join(_text_of(svg, "page-page-data" + suffix) for suffix in ("", "-2", "-3", "-4"))
-    mu_t = float(re.search(r"μt = T/L = ([0-9.]+) s/mm", data).group(1))
+    mu_s = float(re.search(r"\$\\mu_\{s\}\$ = ([0-9.]+) m/mm", diagram_title(d, "s", "en")).group(1))
+    from plans.drawing.kinematic_diagrams import header_lines
+
+    mu_t = float(re.search(r"\$\\mu_\{t\}\$ = T/L = ([0-9.]+) s/mm", " ".join(header_lines(d, "en"))).group(1))
     assert mu_v == pytest.approx(mu_s / (mu_t * pole), rel=2e-3)  # the formula, with the page's own numbers
-    rays = _groups(svg, "page-kd-v-ray")
+    rays = _groups(blocks["v"].svg, "kd-v-ray")
     assert len(rays) == 12
     phi = d.positions
     s = x_b(np.append(phi, phi[0] + 2 * math.pi))
@@ -270,17 +271,20 @@ def test_ray_intercepts_measured_in_the_svg_give_the_chord_velocities(twelve):
         assert end.real - start.real == pytest.approx(pole, abs=0.01)  # H₁ at true scale
         assert (end.imag - start.imag) * mu_v == pytest.approx(chord_v[k], rel=3e-3, abs=0.01 * mu_v)
     # each ray is parallel to its chord of the s–t curve
-    chords_drawn = _groups(svg, "page-kd-s-chord")
+    chords_drawn = _groups(blocks["s"].svg, "kd-s-chord")
     assert len(chords_drawn) == 12
     for chord, ray in zip(chords_drawn, rays):
         a, b = _ends(chord)
         p, q = _ends(ray)
         assert math.atan2((b - a).imag, (b - a).real) == pytest.approx(math.atan2((q - p).imag, (q - p).real), abs=1e-3)
     # the abscissa of one cycle: L = T / μ_t at true scale, between the first and the closing position's lines
-    lines = _groups(svg, "page-kd-s-position")
+    lines = _groups(blocks["s"].svg, "kd-s-position")
     assert len(lines) == 13
     first, last = _ends(lines[0])[0], _ends(lines[-1])[0]
     assert last.real - first.real == pytest.approx((2 * math.pi / OMEGA) / mu_t, abs=0.05)
+    # the three drawings as wide, their origins (the ordinates) at the same distance from their left edges
+    origins = {key: _ends(_groups(block.svg, f"kd-{key}-ordinate")[0])[0].real for key, block in blocks.items()}
+    assert max(origins.values()) - min(origins.values()) < 0.01
 
 
 def test_handout_has_the_page_in_serbian(scene):
@@ -288,15 +292,13 @@ def test_handout_has_the_page_in_serbian(scene):
     from plans.i18n import TERMS
 
     doc = handout(scene, positions=8, lang="sr")
-    names = list(doc.images)
-    assert "kinematic-1" in names  # the page, placed whole on the plate
-    texts = []
-    for name in names:
-        if name.startswith("kinematic"):
-            root = ET.fromstring(doc.images[name])
-            texts += ["".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text")]
+    assert {"kinematic-s", "kinematic-v", "kinematic-a"} <= set(doc.images)  # the drawings, placed at 100 %
+    start = doc.source.index("Кинематски дијаграми излазног члана")  # the words, set by Typst
+    texts = re.findall(r'#"((?:[^"\\]|\\.)*)"', doc.source[start:])
+    for name in ("kinematic-s", "kinematic-v", "kinematic-a"):  # the drawings' own texts: numbers and symbols
+        root = ET.fromstring(doc.images[name])
+        texts += ["".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text")]
     page = " ".join(texts)
-    assert "Кинематски дијаграми излазног члана" in page
     assert "метода тангенти" in page and "аналит." in page
     # no English words: none of the block's English terms, and no Latin word beyond units, symbols and the user's title
     english = {w.lower() for key in ("kinematic_diagrams", "chord", "ray", "displacement", "diagrams_table", "diagram_error_note",
@@ -304,7 +306,6 @@ def test_handout_has_the_page_in_serbian(scene):
                                      "acceleration", "output_slider", "positions", "driver_law", "law_constant", "law_constant_angular")
                for w in re.findall(r"[A-Za-z]{4,}", TERMS[key]["en"])}
     latin = {w.lower() for w in re.findall(r"[A-Za-z]{4,}", page)} - {w.lower() for w in re.findall(r"[A-Za-z]+", scene.title)}
-    latin -= {"plans"}  # the footer: the program's name and the user's title
     assert not (latin & english), latin & english
     assert not latin, latin
 
@@ -337,14 +338,12 @@ def test_a_linear_drivers_stroke_is_an_open_series():
 
 def test_why_the_diagrams_are_not_drawn_is_said_in_the_readers_language():
     from plans.differentiation import DiagramsError
-    from plans.drawing.kinematic_diagrams import draw_unavailable_page
-    from plans.drawing.svg import render_svg
+    from plans.drawing.kinematic_diagrams import unavailable_reason
 
     error = DiagramsError("x.toml: kinematic diagrams: the mechanism is not solved at positions 3, 4; …", "unsolved", (3, 4))
     assert isinstance(error, plans.PlansError)
-    root = ET.fromstring(render_svg(draw_unavailable_page(error, title="T", lang="ru")))
-    text = " ".join("".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text"))
-    assert "Диаграммы не построены" in text and "в положениях 3, 4" in text
+    text = unavailable_reason(error, "ru")
+    assert "в положениях 3, 4" in text
     assert "not solved" not in text
 
 

@@ -32,7 +32,7 @@ def _longest_mm(doc) -> list[float]:
     return [max(abs(p.v[0]) for p in r.analytic.points.values()) / k_v for r in doc.runs]
 
 
-@pytest.mark.parametrize("name, median_mm, smallest_mm", [("quick-return", 35.0, 25.0), ("six-bar", 45.0, 45.0),
+@pytest.mark.parametrize("name, median_mm, smallest_mm", [("quick-return", 40.0, 30.0), ("six-bar", 45.0, 45.0),
                                                           ("slider-crank", 45.0, 45.0)])
 def test_velocity_plans_large_enough_to_measure(plates, name, median_mm, smallest_mm):
     doc = plates[name]

@@ -169,6 +169,14 @@ VOCABULARY = {
     "normal_force": {"sr": "нормална сила", "ru": "нормальная сила", "bg": "нормална сила", "sl": "normalna sila"},
     "point_of_action": {"sr": "нападна тачка", "ru": "точка приложения", "bg": "приложна точка", "sl": "prijemališče"},
     "kind": {"sr": "врста", "ru": "вид", "bg": "вид", "sl": "vrsta"},
+    # the force pages set by Typst: an image on the lever, the moments about its pole, the three methods
+    "image": {"sr": "слика", "ru": "изображение", "bg": "образ", "sl": "slika"},
+    "lever_moments": {"sr": "Моменти за пол p", "ru": "Моменты относительно полюса p", "bg": "Моменти спрямо полюса p",
+                      "sl": "Momenti okoli pola p"},
+    "force_methods": {"sr": "Три методе: аналитички, планови сила, Жуковљева полуга (δ: разлика од аналитичке вредности)",
+                      "ru": "Три метода: аналитически, планы сил, рычаг Жуковского (δ: отличие от аналитического значения)",
+                      "bg": "Трите метода: аналитично, планове на силите, лост на Жуковски (δ: разлика от аналитичната стойност)",
+                      "sl": "Tri metode: analitično, načrti sil, Žukovskijev vzvod (δ: razlika od analitične vrednosti)"},
     "power_balance": {"sr": "Биланс снага", "ru": "Баланс мощностей", "bg": "Баланс на мощностите", "sl": "Bilanca moči"},
     "residual": {"sr": "остатак", "ru": "невязка", "bg": "остатък", "sl": "ostanek"},
     "ccw_positive": {"sr": "позитиван супротно кретању казаљке на сату", "ru": "положителен против часовой стрелки",
@@ -246,6 +254,9 @@ VOCABULARY = {
     "kd_no_output": {"sr": "механизам нема излазни клизач (на вођици постоља) ни клацкач (који се обрће око тачке постоља); наведите га са [output] link", "ru": "у механизма нет выходного ползуна (на направляющей стойки) или коромысла (вращающегося вокруг точки стойки); укажите его в [output] link", "bg": "механизмът няма изходен плъзгач (по водач на стойката) или кобилица (въртяща се около точка на стойката); посочете го с [output] link", "sl": "mehanizem nima izhodnega drsnika (na vodilu ogrodja) ali nihalke (ki se vrti okoli točke ogrodja); navedite ga z [output] link"},
     "kd_unsolved": {"sr": "механизам није решен у положајима {positions}: графичко диференцирање спаја суседне положаје и потребан му је сваки", "ru": "механизм не решается в положениях {positions}: графическое дифференцирование соединяет соседние положения, и нужны все", "bg": "механизмът не е решен в положенията {positions}: графичното диференциране свързва съседни положения и са нужни всички", "sl": "mehanizem ni rešen v legah {positions}: grafično odvajanje povezuje sosednje lege in potrebuje vse"},
     "kd_not_drawn": {"sr": "Дијаграми нису нацртани", "ru": "Диаграммы не построены", "bg": "Диаграмите не са построени", "sl": "Diagrami niso narisani"},
+    "kd_zero": {"sr": "{q} = 0 током целог циклуса (дијаграм се поклапа са осом t и није цртан)", "ru": "{q} = 0 на всём цикле (диаграмма совпадает с осью t и не строится)", "bg": "{q} = 0 през целия цикъл (диаграмата съвпада с оста t и не е построена)", "sl": "{q} = 0 v celem ciklu (diagram sovpada z osjo t in ni narisan)"},
+    "kd_constant": {"sr": "{q} = {value} {unit}, константно током целог циклуса (дијаграм, права паралелна оси t, није цртан)", "ru": "{q} = {value} {unit}, постоянна на всём цикле (диаграмма, прямая, параллельная оси t, не строится)", "bg": "{q} = {value} {unit}, постоянна през целия цикъл (диаграмата, права, успоредна на оста t, не е построена)", "sl": "{q} = {value} {unit}, konstantna v celem ciklu (diagram, premica, vzporedna osi t, ni narisan)"},
+    "signed_elsewhere": {"sr": "{points}: излазни клизач; његове v и a са знаком су у кинематским дијаграмима", "ru": "{points}: выходной ползун; его v и a со знаком — в кинематических диаграммах", "bg": "{points}: изходният плъзгач; v и a със знак са в кинематичните диаграми", "sl": "{points}: izhodni drsnik; njegova v in a s predznakom sta v kinematičnih diagramih"},
     "chords_order": {"sr": "грешка метода тетива опада као Δt²: са двоструко више положаја на око четвртину", "ru": "погрешность метода хорд убывает как Δt²: при вдвое большем числе положений примерно вчетверо", "bg": "грешката на метода на хордите намалява като Δt²: при двойно повече положения до около една четвърт", "sl": "napaka metode tetiv pada kot Δt²: pri dvakrat več legah na približno četrtino"},
     # the force plans' drawings (issue 22; domain.md §11's table for "force plan")
     "force_plan": {"sr": "План сила", "ru": "План сил", "bg": "План на силите", "sl": "Načrt sil"},
@@ -346,6 +357,17 @@ VOCABULARY = {
     "four_bar_loop": {"sr": "зглавкасти четвороугао", "ru": "шарнирный четырёхзвенник", "bg": "шарнирен четиризвенник", "sl": "štirizgibni mehanizem"},
     # a plan's enlarged detail named in its notes ("detail I"; ГОСТ 2.305 "выносной элемент")
     "detail": {"sr": "детаљ", "ru": "выносной элемент", "bg": "детайл", "sl": "detajl"},
+    # the words of a sliding driver and of the centres' method page (issue 20)
+    "centres_omega_rule_linear": {"sr": "ω члана из брзине погонског члана, преко полова", "ru": "ω звена по скорости ведущего звена, через центры", "bg": "ω на звеното от скоростта на водещото звено, чрез центровете", "sl": "ω člena iz hitrosti pogonskega člena, prek polov"},
+    "over_driver_stroke": {"sr": "током хода погонског члана", "ru": "за ход ведущего звена", "bg": "за хода на водещото звено", "sl": "med hodom pogonskega člena"},
+    "driver_stroke_ends": {"sr": "крајеви хода погонског члана", "ru": "концы хода ведущего звена", "bg": "краищата на хода на водещото звено", "sl": "konca hoda pogonskega člena"},
+    "driver_stroke": {"sr": "ход погонског члана", "ru": "ход ведущего звена", "bg": "ходът на водещото звено", "sl": "hod pogonskega člena"},
+    "one_way_stroke": {"sr": "у једном смеру: без повратног хода, без K", "ru": "в одну сторону: без обратного хода, без K", "bg": "в една посока: без обратен ход, без K", "sl": "v eno smer: brez povratnega hoda, brez K"},
+    "centre_column": {"sr": "пол", "ru": "центр", "bg": "център", "sl": "pol"},
+    "found_column": {"sr": "како је нађен", "ru": "как найден", "bg": "как е намерен", "sl": "kako je najden"},
+    "centre_at_pin": {"sr": "у зглобу {pin}", "ru": "в шарнире {pin}", "bg": "в шарнира {pin}", "sl": "v zgibu {pin}"},
+    "centre_perpendicular_guide": {"sr": "у бесконачности, управно на вођицу", "ru": "в бесконечности, перпендикулярно направляющей", "bg": "в безкрайността, перпендикулярно на водача", "sl": "v neskončnosti, pravokotno na vodilo"},
+    "centres_order": {"sr": "Редослед налажења полова", "ru": "Порядок нахождения центров", "bg": "Ред на намиране на центровете", "sl": "Vrstni red iskanja polov"},
 }
 
 #: domain.md §9, word for word: the headings every handout carries.

@@ -158,25 +158,33 @@ def _label_box(tail: complex, tip: complex, u: complex, text: str) -> tuple[comp
     return complex(x, y), w, h
 
 
-def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: float = ROOM_MIN) -> CentresFrame:
+def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: float = ROOM_MIN,
+                  limit: tuple[float, float] | None = None) -> CentresFrame:
     """The frame of the centres drawing at *k_l* [m/mm] around the mechanism's *ink* (lower-left, upper-right [mm]).
 
     The room is the ink widened by ROOM_MIN [mm] or ROOM_FRACTION of its larger side; a centre
     inside is drawn where it is, every other one (and one at infinity) as an arrow just outside the
     room on the ray from its middle towards the centre, the arrows spread apart so that neither they
     nor their labels overlap.  Nothing here draws: the page finds its k_l from this.
+    With *limit* (width, height) [mm], the room grows to hold a centre just outside it only while the
+    drawing stays within *limit* (with what its edge arrows take): a page that draws at the plate's
+    k_l keeps it, and such a centre is an arrow at the edge like the far ones.
     """
     lo, hi = ink
     room = max(room_min, ROOM_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag))
     lo, hi = lo - room * (1 + 1j), hi + room * (1 + 1j)
     # a centre no farther out than an edge arrow would reach is drawn where it is, and the room grows to hold it
     reach = EDGE_GAP + EDGE_ARROW + 4.0
-    for centre in result.centres:
-        if centre.determined and centre.point is not None:
-            q = centre.point / k_l
-            if lo.real - reach <= q.real <= hi.real + reach and lo.imag - reach <= q.imag <= hi.imag + reach:
-                lo = complex(min(lo.real, q.real - 3.0), min(lo.imag, q.imag - 3.0))
-                hi = complex(max(hi.real, q.real + 3.0), max(hi.imag, q.imag + 3.0))
+    # what the edge arrows and their labels take beyond the room, on each side, when a limit is kept
+    beyond = 2 * (LABEL_BAND + EDGE_GAP + EDGE_ARROW + 6.0 + MARGIN_MM)
+    for centre in (c for c in result.centres if c.determined and c.point is not None):
+        q = centre.point / k_l
+        if lo.real - reach <= q.real <= hi.real + reach and lo.imag - reach <= q.imag <= hi.imag + reach:
+            new_lo = complex(min(lo.real, q.real - 3.0), min(lo.imag, q.imag - 3.0))
+            new_hi = complex(max(hi.real, q.real + 3.0), max(hi.imag, q.imag + 3.0))
+            if limit is not None and (new_hi.real - new_lo.real + beyond > limit[0] or new_hi.imag - new_lo.imag + beyond > limit[1]):
+                continue  # an arrow at the edge: the room stays within the page's
+            lo, hi = new_lo, new_hi
     middle = (lo + hi) / 2
 
     def inside(q: complex) -> bool:
@@ -445,17 +453,18 @@ class CentresSizer:
         (a_lo, b_lo), (a_hi, b_hi) = self.model
         return self.lo_m / k_l - (a_lo + b_lo / k_l), self.hi_m / k_l + (a_hi + b_hi / k_l)
 
-    def frame(self, k_l: float) -> CentresFrame:
-        return centres_frame(self.result, k_l, self.ink(k_l), self.room_min)
+    def frame(self, k_l: float, limit: tuple[float, float] | None = None) -> CentresFrame:
+        return centres_frame(self.result, k_l, self.ink(k_l), self.room_min, limit)
 
-    def size(self, k_l: float) -> tuple[float, float]:
-        """(width, height) [mm] of :func:`draw_centres_into` at *k_l* with no diagram, legend or title."""
-        frame = self.frame(k_l)
+    def size(self, k_l: float, limit: tuple[float, float] | None = None) -> tuple[float, float]:
+        """(width, height) [mm] of :func:`draw_centres_into` at *k_l* with no diagram, legend or title (*limit*: see
+        :func:`centres_frame`)."""
+        frame = self.frame(k_l, limit)
         return frame.width, frame.height
 
 
 def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | None = None, legend: bool = True, diagram: bool = True,
-                      room_min: float = ROOM_MIN):
+                      room_min: float = ROOM_MIN, limit: tuple[float, float] | None = None):
     """The mechanism at k_l with every instant centre, and the circle diagram beside it, drawn into *ax*.
 
     One data unit is one millimetre of paper.  *title* (plain text), when
@@ -473,7 +482,7 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     (width, height) [mm] of the drawing.
     """
     artists, ink = _mechanism(ax, result, k_l, lang)
-    frame = centres_frame(result, k_l, ink, room_min)
+    frame = centres_frame(result, k_l, ink, room_min, limit)
     lo, hi = frame.lo, frame.hi
     (x0, y0), (x1, y1) = (frame.outer_lo.real, frame.outer_lo.imag), (frame.outer_hi.real, frame.outer_hi.imag)
     s = Sketch(ax, "centres")

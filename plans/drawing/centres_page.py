@@ -21,7 +21,7 @@ from ..i18n import term
 from ..report import table_error, table_number
 from .centres import centre_text
 
-__all__ = ["centres_page_table", "centres_rules", "ROOM_MIN"]
+__all__ = ["centres_page_table", "centres_rules", "centres_order_table", "ROOM_MIN"]
 
 #: the least room [mm] around the mechanism on the page (its near centres widen it; far ones are arrows outside)
 ROOM_MIN = 12.0
@@ -85,12 +85,52 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
     return [[decimal_comma(cell, lang) for cell in row] for row in rows]
 
 
-def centres_rules(lang: str, frame: str) -> list[str]:
+def centres_rules(lang: str, frame: str, driver=None, numbers=None) -> list[str]:
     """The two rules of the method, each with its formula (``$…$``): ω from the centres, v of a point from its link's centre.
 
     *frame*: the frame's number (:attr:`plans.scene.Scene.frame_number`), as the centres' labels write it.
+    *driver* (:class:`plans.scene.LinearDriver`) with *numbers* (body name -> its number in the labels,
+    :attr:`plans.centres.InstantCentres.numbers`): a sliding driver has no ω to start from; the rule then
+    starts from its velocity v_A, as the textbook does: the centre P_dk of the driver d and a link k moves
+    as a point of d with v_A and as a point of k about P_1k, so ω_k = v_A / P_1kP_dk.
     """
+    from ..scene import LinearDriver
+
+    if isinstance(driver, LinearDriver):
+        d = (numbers or {}).get(driver.link, driver.link)
+        point = math_name(driver.point)
+        omega = (f"{term('centres_omega_rule_linear', lang)}:  "
+                 f"$\\omega_k = v_{{{point}}} / P_{{{frame}k}}P_{{{d}k}}$")
+    else:
+        omega = f"{term('centres_omega_rule', lang)}:  $\\omega_j / \\omega_k = P_{{{frame}k}}P_{{jk}} / P_{{{frame}j}}P_{{jk}}$"
     return [
-        f"{term('centres_omega_rule', lang)}:  $\\omega_j / \\omega_k = P_{{{frame}k}}P_{{jk}} / P_{{{frame}j}}P_{{jk}}$",
+        omega,
         f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{{frame}j}}M$",
     ]
+
+
+def centres_order_table(result, lang: str = "en") -> list[list[str]]:
+    """How every centre is found, in the order a student finds them: header, then the centres at the pairs (a
+    revolute's at its pin, a prismatic's at infinity perpendicular to the guide), then each of Kennedy's as the
+    meeting of its two lines (``P₁₂P₂₃ ∩ P₁₄P₃₄``) once both lines' centres are known.  The same for every
+    position of a mechanism (the circle diagram's order), so the centres' pages state it once."""
+    def how(centre) -> str:
+        if not centre.determined:
+            return term("centre_undetermined", lang)
+        if centre.found_by.startswith("revolute"):
+            return term("centre_at_pin", lang).format(pin=centre.found_by.partition(" ")[2])
+        if centre.found_by.startswith("prismatic"):
+            return term("centre_perpendicular_guide", lang)
+        (a, b), (c, d) = centre.lines
+        return f"{centre_text(a)}{centre_text(b)} ∩ {centre_text(c)}{centre_text(d)}"
+
+    primary = [c for c in result.centres if c.found_by != "kennedy"]
+    known = {c.label for c in primary if c.determined}
+    order = list(primary)
+    rest = [c for c in result.centres if c.found_by == "kennedy"]
+    while rest:
+        ready = [c for c in rest if all(x in known for line in c.lines for x in line)] or rest[:1]
+        order.append(ready[0])
+        known.add(ready[0].label)
+        rest.remove(ready[0])
+    return [[term("centre_column", lang), term("found_column", lang)]] + [[centre_text(c.label), how(c)] for c in order]

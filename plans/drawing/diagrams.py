@@ -334,8 +334,11 @@ def _finite(values, valid) -> np.ndarray:
     return v
 
 
-def _page(title: str, subtitle: str, rows: int, size=A4) -> tuple[Figure, list]:
-    """A page of *size* [mm] (A4 by default; a handout passes its text area, so that the page prints at 100 %)."""
+def _page(title: str, subtitle: str, rows: int, size=A4, heading: bool = True) -> tuple[Figure, list]:
+    """A page of *size* [mm] (A4 by default; a handout passes its text area, so that the page prints at 100 %).
+
+    *heading*: the title and the subtitle's lines drawn at the top; without, they are the figure's
+    ``plans_heading`` (title, lines) for a typesetter to set above it, and the axes start at the top."""
     fig = Figure(figsize=(size[0] / 25.4, size[1] / 25.4), dpi=72)
     fig.plans_size = tuple(size)
     from matplotlib.backends.backend_svg import FigureCanvasSVG
@@ -343,11 +346,15 @@ def _page(title: str, subtitle: str, rows: int, size=A4) -> tuple[Figure, list]:
     FigureCanvasSVG(fig)
     import textwrap
 
-    fig.text(11 / size[0], 1 - 11 / size[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
-    lines = [w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)]
-    fig.text(11 / size[0], 1 - 19 / size[1], "\n".join(lines), fontsize=9, ha="left", va="top", linespacing=1.3)
-    # the axes below the subtitle's lines (9 pt at 1.3 line spacing, 4.13 mm a line) and the positions' numbers
-    top = 1 - max(36.0, 19.0 + 4.13 * len(lines) + 9.0) / size[1]
+    if heading:
+        fig.text(11 / size[0], 1 - 11 / size[1], title, fontsize=13.5, weight="bold", ha="left", va="top")
+        lines = [w for line in subtitle.split("\n") for w in textwrap.wrap(line, 95)]
+        fig.text(11 / size[0], 1 - 19 / size[1], "\n".join(lines), fontsize=9, ha="left", va="top", linespacing=1.3)
+        # the axes below the subtitle's lines (9 pt at 1.3 line spacing, 4.13 mm a line) and the positions' numbers
+        top = 1 - max(36.0, 19.0 + 4.13 * len(lines) + 9.0) / size[1]
+    else:
+        fig.plans_heading = (title, subtitle.split("\n"))
+        top = 1 - 9.0 / size[1]  # the positions' numbers above the first panel
     bottom = 26 / size[1]
     axes = fig.subplots(rows, 1, sharex=True, gridspec_kw={"left": 24 / size[0], "right": 1 - 40 / size[0], "top": top, "bottom": bottom, "hspace": 0.2})
     return fig, list(np.atleast_1d(axes))
@@ -610,7 +617,8 @@ def _other_extreme(cycle, extremes, x, start: float) -> list[tuple[str, float]]:
     return [(OTHER_EXTREME, float(at))] if float(np.nanmin(x)) <= at <= float(np.nanmax(x)) else []
 
 
-def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None, extremes=None, size=A4) -> list[tuple[str, Figure]]:
+def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: bool = False, cycle=None, extremes=None, size=A4,
+                        signed_elsewhere=(), heading: bool = True) -> list[tuple[str, Figure]]:
     """The cycle diagrams as (name, Figure) pairs: ``links``, ``points`` and, if any, ``sliders``.
 
     Parameters
@@ -632,8 +640,16 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
         extreme position is marked 0′ (dotted).
     size : (float, float)
         The page [mm]: A4 portrait by default; a handout gives its text area.
+    signed_elsewhere : sequence of str
+        Points whose |v|, |a| are not drawn on the points page: those of the output slider, whose signed
+        v and a the kinematic diagrams beside these pages give (the page says so; without another point
+        it is not drawn).
+    heading : bool
+        Draw each page's title and words at its top; without, each figure carries them as ``plans_heading``
+        ``(title, lines)`` (the first line the scene's title, as written) for a typesetter to set above it.
     """
     scene = analytic.scene
+    omit = tuple(p for p in signed_elsewhere if p in analytic.points)
     start = float(analytic.driver[0])  # position 0's angle, for the note φ₂ = start + Δφ
     analytic, x, xlabel, marks, limits, ticks, rolled = _cycle_view(analytic, marked, cycle)
     others = [] if rolled else _other_extreme(cycle, extremes, x, start)
@@ -662,7 +678,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     def page(name, words, quantities):
         panels, dropped = [], []
         for quantity, ylabel, unit in quantities:
-            panel = _quantity_panel(analytic, quantity, valid, lang, unit, start=start, swing=_swing(cycle))
+            panel = _quantity_panel(analytic, quantity, valid, lang, unit, start=start, swing=_swing(cycle), omit=omit if name == "points" else ())
             if quantity == "coriolis" and not panel.curves:  # a slider on a guide that does not turn: no panel of zeros
                 dropped.append(term("coriolis_zero", lang))
                 continue
@@ -671,7 +687,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
             panels += [(p, ylabel, unit) for p in (_angle_panels(panel, lang, offsets=not _swing(cycle)) if quantity == "phi" else [panel])]
         if dropped and name == "sliders":  # the page's words without the Coriolis acceleration it does not draw
             words = term("sliders_motion_relative", lang)
-        fig, axes = _page(title, subtitle + "\n" + words + "".join("\n" + d for d in dropped), len(panels), size)
+        fig, axes = _page(title, subtitle + "\n" + words + "".join("\n" + d for d in dropped), len(panels), size, heading)
         clipped = False
         for ax, (panel, ylabel, unit) in zip(axes, panels):
             _plot_panel(ax, xs, panel, ylabel, marks)
@@ -698,7 +714,12 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
             panels.append(("a", f"|a| [m/s²]\n({term('acceleration', lang)})", "m/s²"))
             if components:
                 panels += [("ax", "$a_x$ [m/s²]", "m/s²"), ("ay", "$a_y$ [m/s²]", "m/s²")]
-        page("points", term("points_motion", lang), panels)
+        if omit:
+            words = term("points_motion", lang) + "\n" + term("signed_elsewhere", lang).format(points=", ".join(omit))
+            if any(p not in omit for p in scene.report if p in analytic.points):
+                page("points", words, panels)
+        else:
+            page("points", term("points_motion", lang), panels)
 
         if any(p.name in analytic.sliders for p in scene.prismatics):
             panels = [("s", f"s [mm]\n({term('guide_position', lang)})", "mm"), ("v_rel", f"vʳ [m/s]\n({term('relative_velocity_short', lang)})", "m/s")]
@@ -795,12 +816,13 @@ QUANTITIES = {
 _UNITS = {"phi": "°", "omega": "rad/s", "epsilon": "rad/s²", "v": "m/s", "a": "m/s²", "s": "mm", "v_rel": "m/s", "a_rel": "m/s²", "coriolis": "m/s²"}
 
 
-def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start: float | None = None, swing: bool = False) -> _Panel:
+def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start: float | None = None, swing: bool = False,
+                    omit=()) -> _Panel:
     """*start*: position 0's driver angle [rad] (the sweep's first, unless its order was changed); *swing*: a rocker
-    input's swing drawn against time, its own angle a curve like the others."""
+    input's swing drawn against time, its own angle a curve like the others; *omit*: points not drawn."""
     scene = analytic.scene
     extra = []
-    series = _series(analytic, quantity, valid, swing, lang)
+    series = _series(analytic, quantity, valid, swing, lang, omit)
     if quantity == "phi" and hasattr(scene.driver, "omega") and not swing:
         link = scene.driver.link
         start = _number(math.degrees(float(analytic.driver[0] if start is None else start)) % 360.0, lang, 4)
@@ -810,7 +832,7 @@ def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start:
     return _panel(series, valid, lang, unit, extra)
 
 
-def _series(analytic, quantity: str, valid, swing: bool = False, lang: str = "en") -> list[tuple[str, np.ndarray]]:
+def _series(analytic, quantity: str, valid, swing: bool = False, lang: str = "en", omit=()) -> list[tuple[str, np.ndarray]]:
     scene = analytic.scene
     if quantity in ("phi", "omega", "epsilon"):
         links = [n for n in scene.links if not scene.bodies[n].block]
@@ -818,7 +840,7 @@ def _series(analytic, quantity: str, valid, swing: bool = False, lang: str = "en
         if quantity == "phi":
             return [(_name(symbol, n), _unwrap_nan(analytic.links[n].phi, valid, centred=swing)) for n in links]
         return [(_name(symbol, n), _finite(getattr(analytic.links[n], quantity), valid)) for n in links]
-    points = [p for p in scene.report if p in analytic.points]
+    points = [p for p in scene.report if p in analytic.points and p not in omit]
     if quantity in ("v", "a"):
         return [(_abs(_name(quantity, p)), _finite(np.abs(getattr(analytic.points[p], quantity)), valid)) for p in points]
     if quantity in ("vx", "vy", "ax", "ay"):

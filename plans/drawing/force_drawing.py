@@ -141,7 +141,7 @@ def _number(value: float, lang: str, digits: int = 4) -> str:
 
 
 def draw_force_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, balancing_moment: float | None = None, found_at: dict | None = None,
-                    given: dict | None = None) -> list:
+                    given: dict | None = None, names: dict | None = None) -> list:
     """Draw one force plan (:class:`plans.forces.force_plans.ForcePlan`), one data unit = 1 mm.
 
     *balancing_moment* [N·m], given for the driver's plan, is stated under it.
@@ -149,11 +149,13 @@ def draw_force_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, bal
     found it, so that a reaction carried to this plan at another μ_F says so.
     *given* (:func:`given_loads`): load -> its magnitude [N] as the kinetostatics
     gives it (the plan's own value is the drawn length read back).
+    *names*: group -> its words in the heading (``"group 3–4"``).
     Under the plan: the known loads (N and drawn mm), the components Rᵗ found
     first, the reactions read off it.
     Returns the artists; a new true-to-scale figure is ``artists[0].figure``.
     """
-    return sketch_on(ax, "fplan", lambda sketch: draw_force_plan_into(sketch, plan, lang=lang, legend=legend, balancing_moment=balancing_moment, found_at=found_at, given=given))
+    return sketch_on(ax, "fplan", lambda sketch: draw_force_plan_into(sketch, plan, lang=lang, legend=legend, balancing_moment=balancing_moment, found_at=found_at, given=given,
+                                                                        names=names))
 
 
 def given_loads(forces) -> dict[str, float]:
@@ -177,14 +179,9 @@ def found_scales(plans) -> dict[str, float]:
 
 
 def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool = True, caption: bool = True, balancing_moment: float | None = None,
-                         found_at: dict | None = None, known: bool = True, given: dict | None = None, scale: bool = True,
-                         caption_width: float = 50.0) -> None:
-    """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch.
-
-    *known*: list the known loads and the components Rᵗ under the plan (a page that states them
-    in its own tables leaves them out).  *scale*: state μ_F under the plan (a page with one μ_F
-    states it once).  *caption_width* [mm]: the notes under the plan flow side by side at least so wide.
-    """
+                         found_at: dict | None = None, given: dict | None = None, names: dict | None = None) -> None:
+    """Draw *plan* into *sketch*: what :func:`draw_force_plan` does on a page's own Sketch (*caption*: the
+    words under it; a page set by Typst, :mod:`plans.pages.forces`, sets them itself)."""
     vectors = [v for v in plan.vectors if v.length > 1e-9]
     for v in vectors:
         for z in (v.tail, v.tip):
@@ -229,7 +226,7 @@ def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool
                     prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK,
                     own=(tail, tip), rival_segments=rivals)
     if caption:
-        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment, found_at or {}, known, given or {}, scale, caption_width)
+        _plan_caption(sketch, plan, vectors, lang, legend, balancing_moment, found_at or {}, given or {}, names)
 
 
 def _retraces(a: tuple[complex, complex], b: tuple[complex, complex], near: float = 2.5) -> bool:
@@ -255,22 +252,19 @@ def _closing_point(plan):
     return p1 + t * d1
 
 
-def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None, found_at: dict, known_loads: bool = True,
-                  given: dict | None = None, scale: bool = True, caption_width: float = 50.0) -> None:
-    """Heading, μ_F (unless the page states it once), the reactions read off the plan, the legend: below the plan."""
+def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balancing_moment: float | None, found_at: dict,
+                  given: dict | None = None, names: dict | None = None) -> None:
+    """Heading, μ_F, the known loads, the reactions read off the plan, the legend: below the plan."""
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
     crank = not any(v.label == "F_b" for v in plan.vectors)  # a linear driver's plan carries F_b; a crank's M_b is a couple
-    what = driving_link_words(plan.links[0], crank, lang) if plan.group == "driver" else plan.group
+    what = driving_link_words(plan.links[0], crank, lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
     sketch.text(complex(x, y), f"{term('force_plan', lang)}: {what}", size=HEADING_PT, ha="left", va="top", weight="bold", gid="heading", obstacle=False)
     y -= 5.0
-    if scale:
-        sketch.text(complex(x, y), scale_caption(r"\mu_F", fmt_number(plan.scale), "N/mm", lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
-    else:
-        y += 5.0 - (text_size("lp", CAPTION_PT)[1] + 0.9)
+    sketch.text(complex(x, y), scale_caption(r"\mu_F", fmt_number(plan.scale), "N/mm", lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     row = text_size("lp", CAPTION_PT)[1] + 0.9
     mu = localised(fmt_number(plan.scale), lang)
-    width = max(b.width, caption_width)
+    width = max(b.width, 50.0)
 
     def flow(notes: list[tuple[str, str]], y: float, indent: float = 0.0) -> float:
         """Notes (text, gid) side by side as far as the plan is wide (at least 50 mm), rows downwards from *y*; the last row's y."""
@@ -285,20 +279,15 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
         return y
 
     # what is known before the plan is drawn: every load (and a reaction carried from a plan before), N and drawn mm
-    y -= row if known_loads else 0.0
-    if known_loads:
-        sketch.text(complex(x, y), term("known_loads", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="known-heading", obstacle=False)
+    y -= row
+    sketch.text(complex(x, y), term("known_loads", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="known-heading", obstacle=False)
     known, carried_notes = [], []
     for v in vectors:
         if v.label in plan.found or v.kind in ("normal", "tangential"):
             continue
         value = _number(given[v.label], lang) if given and v.label in given else _reading(v.value, _step(plan), lang)
         line = f"{force_math(v.label)} = {value} N → {_reading(v.length, plan.precision, lang)} mm"
-        if v.kind == "reaction" and not known_loads:  # a page that lists the loads elsewhere: the carried reaction's value, short
-            head, _, sub = v.label.partition("_")
-            opposite = f" = −{force_math(f'R_{sub[::-1]}')}" if head == "R" and len(sub) == 2 else ""
-            carried_notes.append((f"{force_math(v.label)}{opposite} = {value} N → {_reading(v.length, plan.precision, lang)} mm", f"known-{_gid(v.label)}"))
-        elif v.kind == "reaction":  # not found here: a reaction carried from a plan before, the value read there
+        if v.kind == "reaction":  # not found here: a reaction carried from a plan before, the value read there
             carried = found_at.get(v.label, plan.scale)
             note = term("carried", lang)
             if abs(carried - plan.scale) > 1e-12 * plan.scale:
@@ -308,11 +297,10 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
             known.append((line + ";", f"known-{_gid(v.label)}"))
     if known:
         known[-1] = (known[-1][0].rstrip(";"), known[-1][1])
-    if known_loads:
-        y = flow(known, y, 2.0)
-    y = flow(carried_notes, y, 2.0 if known_loads else 0.0)  # stated even where the page lists the loads elsewhere
+    y = flow(known, y, 2.0)
+    y = flow(carried_notes, y, 2.0)
     # the tangential components, found first (from the moments about the middle joint)
-    tangential = [v for v in vectors if v.kind == "tangential"] if known_loads else []
+    tangential = [v for v in vectors if v.kind == "tangential"]
     if tangential:
         y -= row
         sketch.text(complex(x, y), term("found_first", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="found-first", obstacle=False)
@@ -362,7 +350,7 @@ def draw_force_legend_into(sketch: Sketch, kinds, lines: bool, lang: str, x: flo
 # --- the free bodies ---------------------------------------------------------------------
 
 
-def draw_free_bodies(forces, ax=None, *, lang: str = "en") -> list:
+def draw_free_bodies(forces, ax=None, *, lang: str = "en", names: dict | None = None) -> list:
     """The groups and the driver, cut apart, with their loads and the reactions on them.
 
     Each is drawn at one k_l (see :func:`draw_free_bodies_into`), side by side in the order of the
@@ -370,12 +358,14 @@ def draw_free_bodies(forces, ax=None, *, lang: str = "en") -> list:
     arrow of :data:`FREE_ARROW_MM` at its point of application (a load from
     its point, a reaction into its joint), every couple an arc.
     """
-    return sketch_on(ax, "fbody", lambda sketch: draw_free_bodies_into(sketch, forces, lang=lang))
+    return sketch_on(ax, "fbody", lambda sketch: draw_free_bodies_into(sketch, forces, lang=lang, names=names))
 
 
-def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True, k_l: float | None = None, per_row: int | None = None) -> None:
+def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True, k_l: float | None = None, per_row: int | None = None,
+                          names: dict | None = None) -> None:
     """Draw the free bodies into *sketch* (see :func:`draw_free_bodies`), at *k_l* [m/mm], *per_row* of them in a
-    row (by default all in one), each row under the one before.
+    row (by default all in one), each row under the one before; *names*: group -> the words written over its
+    body (``"group 3–4"``; the group's own name without them).
 
     By default k_l is the round value that draws the largest free body 60–120 mm across (a group is
     smaller than the mechanism: its links drawn at the mechanism's k_l would crowd their arrows).
@@ -427,7 +417,7 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
             tops.append(max(z.imag for z in zs) + FREE_ARROW_MM + 5.0)
         for (plan, links, shift, _, _), top in zip(row, [max(tops)] * len(row)):
             xs = [g.positions[n].real / k_l + shift.real for body in links for n in g.scene.bodies[body].points]
-            what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else plan.group
+            what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
             sketch.text(complex(min(xs), top), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
     if caption:
         b = sketch.bounds
@@ -617,38 +607,39 @@ def _hull(zs):
 # --- all the drawings of a position ------------------------------------------------------
 
 
-def force_figures(forces, *, lang: str = "en", lever=None) -> list[tuple[str, object]]:
+def force_figures(forces, *, lang: str = "en", lever=None, names: dict | None = None) -> list[tuple[str, object]]:
     """Every kinetostatic drawing of one position as ``(name, Figure)``.
 
     ``free-bodies``, ``force-plan-1`` … (one per group, in construction
     order: the last group first), ``force-plan-driver``, and ``lever`` when
-    Joukowski's lever (:func:`plans.forces.lever.joukowski_lever`) is given.
+    Joukowski's lever (:func:`plans.forces.lever.joukowski_lever`) is given.  *names*: group -> its words
+    (``"group 3–4"``), written over its free body and in its plan's heading.
     """
-    out = [("free-bodies", draw_free_bodies(forces, lang=lang)[0].figure)]
+    out = [("free-bodies", draw_free_bodies(forces, lang=lang, names=names)[0].figure)]
     found_at = found_scales(forces.plans)
     given = given_loads(forces)
     number = 0
     for plan in forces.plans:
         if plan.group == "driver":
             name = "force-plan-driver"
-            artists = draw_force_plan(plan, lang=lang, balancing_moment=forces.balancing_moment, found_at=found_at, given=given)
+            artists = draw_force_plan(plan, lang=lang, balancing_moment=forces.balancing_moment, found_at=found_at, given=given, names=names)
         else:
             number += 1
             name = f"force-plan-{number}"
-            artists = draw_force_plan(plan, lang=lang, found_at=found_at, given=given)
+            artists = draw_force_plan(plan, lang=lang, found_at=found_at, given=given, names=names)
         out.append((name, artists[0].figure))
     if lever is not None:
         out.append(("lever", draw_lever(lever, lang=lang)[0].figure))
     return out
 
 
-def force_drawing_files(forces, directory, *, lang: str = "en", formats=("svg",), lever=None) -> dict[Path, bytes]:
+def force_drawing_files(forces, directory, *, lang: str = "en", formats=("svg",), lever=None, names: dict | None = None) -> dict[Path, bytes]:
     """The files of :func:`force_figures` in *directory* (``NAME.FORMAT`` for each of *formats*), rendered, not written."""
     from .formats import render
 
     directory = Path(directory)
     contents: dict[Path, bytes] = {}
-    for name, fig in force_figures(forces, lang=lang, lever=lever):
+    for name, fig in force_figures(forces, lang=lang, lever=lever, names=names):
         for fmt in formats:
             contents[directory / f"{name}.{fmt}"] = render(fig, fmt)
     return contents

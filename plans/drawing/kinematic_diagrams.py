@@ -1,7 +1,8 @@
 """The output link's kinematic diagrams by graphical differentiation, drawn as a plate shows them.
 
-One block (:func:`diagrams_block`), true to scale (one data unit one millimetre
-of paper), of three diagrams stacked over one time axis:
+Three drawings (:func:`diagram_svgs`), each an SVG block true to scale (one
+data unit one millimetre of paper) that a page places at 100 %, over one time
+axis (their origins one above the other):
 
 * **s–t** (a rocker: ψ–t): the points of the positions, the smooth curve
   through them, and the chords between neighbouring points;
@@ -13,13 +14,17 @@ of paper), of three diagrams stacked over one time axis:
 
 The analytic curves are drawn thin and dashed beside the constructed ones, for
 comparison.  The ordinates' values are written on the right of each diagram
-(the rays of the pole fill the left), the positions' numbers under it; every
-scale is stated above its diagram, μ_v = μ_s/(μ_t·H₁) and μ_a = μ_v/(μ_t·H₂)
-with their numbers.  Every text is at least 8 pt.
+(the rays of the pole fill the left), the positions' numbers under it.  The
+drawings carry no words: the page (Typst, :mod:`plans.pages.handout`) sets
+each diagram's title and scales (:func:`diagram_title`), the data lines
+(:func:`header_lines`), the legend (:func:`legend_items`), the comparison
+table (:func:`diagrams_table`, :func:`table_header`) and the notes
+(:func:`notes`) in the reader's language.  A rate constant over the cycle is
+said in a line (:func:`flat_line`) instead of drawn.
 
-:func:`diagrams_table` is the comparison at every position (diagrams, plans,
-analytic, errors), :func:`draw_kinematic_pages` the handout's page (or two,
-when the table does not fit under the diagrams).
+:func:`draw_kinematic_figure` is the same as one matplotlib figure with a
+short caption: the drawing file of ``plans sweep --plot`` and of
+:meth:`plans.differentiation.KinematicDiagrams.save`.
 
 Only the drawing happens here: every number comes from a
 :class:`plans.differentiation.KinematicDiagrams`.
@@ -33,25 +38,33 @@ import numpy as np
 from matplotlib.ticker import MaxNLocator
 
 from .._text import subscript
-from ..differentiation import ORDINATE_MAX, KinematicDiagrams, rescaled, smooth
+from ..differentiation import KinematicDiagrams, flat, readable, smooth
 from ..i18n import term
-from .blocks import Block, text_rows
-from .layout import A4, GAP, PAGE_MARGIN, footer, header, header_height, new_page
+from ._canvas import Sketch, fit_axes, text_size
 from .numerals import localised
-from .typeset import draw_text, measure
+from .svg import drawing_rc, new_figure, render_svg
 
-__all__ = ["draw_unavailable_page", "diagrams_block", "diagrams_table", "comparison_block", "header_lines", "diagram_words", "draw_kinematic_pages", "TEXT_PT", "DIAGRAM_GAP"]
+__all__ = ["diagram_svgs", "diagram_title", "flat_line", "legend_items", "diagrams_table", "table_header", "header_lines",
+           "origin_line", "page_heading", "notes", "unavailable_reason", "diagram_words", "page_diagrams", "draw_kinematic_figure",
+           "block_room", "table_heading", "KEYS", "TEXT_PT", "DIAGRAM_GAP", "PAGE_ROOM"]
 
 #: Size [pt] of every text in the diagrams and their table.
 TEXT_PT = 8.0
-#: Room [mm] above a diagram for its title line, and between diagrams.
-TITLE_ROOM = 7.0
+#: The diagrams, in their order down the page.
+KEYS = ("s", "v", "a")
+#: Room [mm] between diagrams (in the figure of :func:`draw_kinematic_figure`).
 DIAGRAM_GAP = 4.5
-#: Room [mm] under a diagram for the positions' numbers, and under the block for its legend.
+#: Room [mm] under a diagram for the positions' numbers and the pole distance's dimension.
 NUMBER_ROOM = 5.0
-LEGEND_ROOM = 6.0
 #: Room [mm] on the right of a diagram for its ordinate's values.
-RIGHT_ROOM = 18.0
+RIGHT_ROOM = 16.0
+#: Room [mm] left of the longer pole for its label.
+POLE_ROOM = 6.0
+#: The margin [mm] of a drawing's SVG round what it draws.
+MARGIN = 1.0
+#: The height [mm] of the three drawings together that an A4 page's text area has room for under the data lines
+#: and the diagrams' titles: beyond it the analytic curves widen no diagram.
+PAGE_ROOM = 196.0
 CURVE = "#0072B2"
 CHORD = "#D55E00"
 RAY = "#404040"
@@ -59,8 +72,6 @@ ANALYTIC = "#808080"
 GRID = "#b0b0b0"
 #: How far [share of its constructed range] the analytic curve may widen a diagram; beyond, it is cut off.
 REFERENCE_ROOM = 0.25
-#: The shortest [mm] the diagrams are drawn to leave the table room under them on the same page.
-SHORTEST = 24.0
 
 
 def _num(value: float, lang: str, digits: int = 4) -> str:
@@ -161,163 +172,268 @@ def _dense(d: KinematicDiagrams, samples: int = 241) -> np.ndarray:
     return np.linspace(0.0, d.motion.duration, samples) + float(d.motion.t[0])
 
 
-def diagrams_block(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = True) -> Block:
-    """The three diagrams with the chord construction, true to scale, as a :class:`Block` [mm].
+def block_room(text_width: float) -> float:
+    """What a page *text_width* [mm] wide leaves the abscissa L and the longer pole H together [mm]
+    (:func:`plans.differentiation.readable`'s *room*): the rest is the poles' label, the arrow past L, the
+    ordinate's values and the drawings' margins."""
+    return text_width - POLE_ROOM - 8.0 - RIGHT_ROOM - 2 * MARGIN
 
-    *analytic*: draw the analytic curves (thin, dashed) beside the constructed ones.
-    """
+
+def page_diagrams(d: KinematicDiagrams, text_width: float) -> KinematicDiagrams:
+    """The diagrams at the round scales that print them readably on a page *text_width* [mm] wide
+    (:func:`plans.differentiation.readable`)."""
+    return readable(d, block_room(text_width))
+
+
+def _scale_words(d: KinematicDiagrams, key: str, lang: str) -> str:
     sc = d.scales
     words = diagram_words(d, lang)
-    motion = d.motion
-    period = motion.period
-    t0 = float(motion.t[0])
-    x_of = lambda t: (np.asarray(t, dtype=float) - t0) / sc.mu_t  # noqa: E731
-    tt = _dense(d)
-    vel, acc = d.velocity, d.acceleration
-    # drawn ordinates [mm]
-    s_mm = motion.s / sc.mu_s
-    te, se = motion.points()  # with an open turn's points beyond its ends (not drawn: the chords to them are cut at the ends)
-    s_curve = smooth(te, se, tt, period=period) / sc.mu_s
-    v_mm = vel.intercepts()
-    v_curve = smooth(vel.middles, vel.rates, tt, period=period) / sc.mu_v
-    a_mm = acc.intercepts()
-    a_curve = smooth(acc.middles, acc.rates, tt, period=period) / sc.mu_a
-    ref = d.reference if analytic else None
-    ref_mm = None
-    if ref is not None:
-        rt, rs, rv, ra = ref
-        inside = (rt >= t0 - 1e-12) & (rt <= t0 + motion.duration * (1 + 1e-9))
-        ref_mm = (x_of(rt[inside]), rs[inside] / sc.mu_s, rv[inside] / sc.mu_v, ra[inside] / sc.mu_a)
-    panels = [
-        ("s", _range(s_mm, s_curve)),
-        ("v", _range(v_mm, v_curve)),
-        ("a", _range(a_mm, a_curve)),
-    ]
-    if ref_mm is not None:
-        # the analytic curve widens a diagram by at most REFERENCE_ROOM of its constructed range; beyond, it is cut
-        widened = []
-        for (key, (lo, hi)), ref in zip(panels, ref_mm[1:]):
-            room = REFERENCE_ROOM * (hi - lo)
-            r_lo, r_hi = _range(ref)
-            widened.append((key, (max(min(lo, r_lo), lo - room), min(max(hi, r_hi), hi + room))))
-        panels = widened
-        ref_mm = (ref_mm[0],) + tuple(np.where((ref >= lo) & (ref <= hi), ref, np.nan) for ref, (_, (lo, hi)) in zip(ref_mm[1:], panels))
-    length = sc.length
-    left = max(sc.pole_v, sc.pole_a) + 6.0  # the poles and their labels
-    width = left + length + 8.0 + RIGHT_ROOM
-    heights = [TITLE_ROOM + (hi - lo) + NUMBER_ROOM for _, (lo, hi) in panels]
-    items = [(CURVE, 1.0, None, term("chords_curve", lang)), (CHORD, 0.7, None, term("chord", lang)),
-             (RAY, 0.35, None, term("ray", lang))]
-    if ref_mm is not None:
-        items.append((ANALYTIC, 0.6, (3, 2), term("analytic_curve", lang)))
-    legend_places, lx, row = [], left, 0
-    for *_, label in items:
-        need = 7.5 + measure(label, TEXT_PT)[0]
-        if lx > left and lx + need > width:
-            lx, row = left, row + 1
-        legend_places.append(complex(lx, LEGEND_ROOM / 2 + 1.0 + row * 4.5))
-        lx += need + 5.0
-    legend_h = LEGEND_ROOM + row * 4.5
-    height = sum(heights) + DIAGRAM_GAP * (len(panels) - 1) + legend_h
-    pos_x = x_of(motion.t)
-    closing = [length] if period is not None else []
-    numbers = list(motion.numbers) + ([motion.numbers[0]] if period is not None else [])
+    unit = words[f"{key}_unit"]
+    ms, mv, ma = (f"$\\mu_{{{words[k + '_tex']}}}$" for k in KEYS)
+    if key == "s":
+        return f"{ms} = {_short(sc.mu_s, lang)} {unit}/mm"
+    if key == "v":
+        return (f"{mv} = {ms}/($\\mu_{{t}}$·$H_{{1}}$) = {_short(sc.mu_v, lang)} ({unit})/mm,  "
+                f"$H_{{1}}$ = {_short(sc.pole_v, lang)} mm")
+    return (f"{ma} = {mv}/($\\mu_{{t}}$·$H_{{2}}$) = {_short(sc.mu_a, lang)} ({unit})/mm,  "
+            f"$H_{{2}}$ = {_short(sc.pole_a, lang)} mm")
 
-    def place(sketch, x, y, page) -> None:
-        top = y + height
-        origins = []
-        for (key, (lo, hi)), h in zip(panels, heights):
-            y0 = top - TITLE_ROOM - hi  # the abscissa (zero) of this diagram
-            origins.append(y0)
-            top -= h + DIAGRAM_GAP
-        ox = x + left
 
-        def P(px, py, y0):  # noqa: N802 — a point of a diagram [mm]
-            return complex(ox + px, y0 + py)
+def diagram_title(d: KinematicDiagrams, key: str, lang: str = "en") -> str:
+    """The line over diagram *key* (``"s"``, ``"v"``, ``"a"``): what it shows, its unit and its scale (``$…$`` math)."""
+    words = diagram_words(d, lang)
+    return f"{words[key]}–t: {words[f'{key}_title']} [{words[f'{key}_unit']}];  {_scale_words(d, key, lang)}"
 
-        mu = {"s": sc.mu_s, "v": sc.mu_v, "a": sc.mu_a}
-        for (key, (lo, hi)), y0 in zip(panels, origins):
-            symbol, unit = words[key], words[f"{key}_unit"]
-            # title line: what, the scale
-            ms, mv, ma = (f"$\\mu_{{{words[k + '_tex']}}}$" for k in ("s", "v", "a"))
-            if key == "s":
-                scale = f"{ms} = {_short(sc.mu_s, lang)} {unit}/mm"
-            elif key == "v":
-                scale = (f"{mv} = {ms}/($\\mu_{{t}}$·$H_{{1}}$) = {_short(sc.mu_v, lang)} ({unit})/mm,  "
-                         f"$H_{{1}}$ = {_short(sc.pole_v, lang)} mm")
-            else:
-                scale = (f"{ma} = {mv}/($\\mu_{{t}}$·$H_{{2}}$) = {_short(sc.mu_a, lang)} ({unit})/mm,  "
-                         f"$H_{{2}}$ = {_short(sc.pole_a, lang)} mm")
-            title = f"{symbol}–t: {words[f'{key}_title']} [{unit}];  {scale}"
-            draw_text(sketch, complex(x, y0 + hi + TITLE_ROOM - 2.2), title, size=TEXT_PT, gid=f"kd-{key}-title")
-            # position lines, axes, the ordinate's values on the right
-            for px in list(pos_x) + closing:
-                sketch.line([P(px, lo, y0), P(px, hi, y0)], color=GRID, lw=0.35, gid=f"kd-{key}-position", obstacle=False)
-            sketch.arrow(P(0, 0, y0), P(length + 5.0, 0, y0), lw=0.6, head=2.2, gid=f"kd-{key}-abscissa")
-            sketch.arrow(P(0, lo, y0), P(0, hi + 1.5, y0), lw=0.6, head=2.2, gid=f"kd-{key}-ordinate")
-            draw_text(sketch, P(length + 4.0, 2.4, y0), "t", size=TEXT_PT, ha="center", gid=f"kd-{key}-t")
-            draw_text(sketch, P(1.2, hi + 0.5, y0), symbol, size=TEXT_PT, gid=f"kd-{key}-symbol")
-            right = length + 8.0
-            sketch.line([P(right, lo, y0), P(right, hi, y0)], lw=0.4, gid=f"kd-{key}-scale", obstacle=False)
-            for value in _ticks(lo * mu[key], hi * mu[key], hi - lo):
-                py = value / mu[key]
-                sketch.line([P(right, py, y0), P(right + 1.5, py, y0)], lw=0.4, gid=f"kd-{key}-tick", obstacle=False)
-                draw_text(sketch, P(right + 2.3, py, y0), _tick(float(value), lang), size=TEXT_PT, gid=f"kd-{key}-value")
-            for px, number in zip(list(pos_x) + closing, numbers):
-                draw_text(sketch, P(px, lo - 3.0, y0), str(number), size=TEXT_PT, ha="center", gid=f"kd-{key}-number")
 
-        ys, yv, ya = origins
-        tx = x_of(tt)
-        # s–t: curve, points, chords
-        if ref_mm is not None:
-            for run in _runs(ref_mm[0], ref_mm[1]):
-                sketch.line([P(a, b, ys) for a, b in run], color=ANALYTIC, lw=0.6, dashes=(3, 2), gid="kd-s-analytic", obstacle=False)
-        sketch.line([P(a, b, ys) for a, b in zip(tx, s_curve)], color=CURVE, lw=1.0, gid="kd-s-curve", obstacle=False)
-        chord_x = list(x_of(te)) + closing
-        chord_y = list(se / sc.mu_s) + ([s_mm[0]] if period is not None else [])
+def flat_line(d: KinematicDiagrams, key: str, lang: str = "en") -> str | None:
+    """For a rate *key* constant over the cycle (:func:`plans.differentiation.flat`), the line that says so
+    instead of its diagram; None for a rate that varies (drawn)."""
+    value = flat(d, key)
+    if value is None:
+        return None
+    words = diagram_words(d, lang)
+    head = f"{words[key]}–t: {words[f'{key}_title']}: "
+    if value == 0.0:
+        return head + term("kd_zero", lang).format(q=words[key])
+    return head + term("kd_constant", lang).format(q=words[key], value=_num(value, lang), unit=words[f"{key}_unit"])
+
+
+def legend_items(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = True) -> list[tuple[str, float, bool, str]]:
+    """The legend of the drawn lines: (colour, width [pt], dashed, words)."""
+    items = [(CURVE, 1.0, False, term("chords_curve", lang)), (CHORD, 0.7, False, term("chord", lang))]
+    if flat(d, "v") is None:  # a constant rate is not drawn: no rays
+        items.append((RAY, 0.35, False, term("ray", lang)))
+    if analytic and d.reference is not None:
+        items.append((ANALYTIC, 0.6, True, term("analytic_curve", lang)))
+    return items
+
+
+class _Prepared:
+    """The drawn ordinates [mm] of the three diagrams of *d* at its scales, and their ranges."""
+
+    def __init__(self, d: KinematicDiagrams, analytic: bool, widen: float = REFERENCE_ROOM):
+        sc = d.scales
+        motion = d.motion
+        self.d, self.sc = d, sc
+        period = motion.period
+        self.t0 = t0 = float(motion.t[0])
+        self.tt = _dense(d)
+        vel, acc = d.velocity, d.acceleration
+        self.s_mm = motion.s / sc.mu_s
+        self.te, self.se = motion.points()  # an open turn's points beyond its ends are not drawn: their chords are cut
+        self.curves = {
+            "s": smooth(self.te, self.se, self.tt, period=period) / sc.mu_s,
+            "v": smooth(vel.middles, vel.rates, self.tt, period=period) / sc.mu_v,
+            "a": smooth(acc.middles, acc.rates, self.tt, period=period) / sc.mu_a,
+        }
+        points = {"s": self.s_mm, "v": vel.intercepts(), "a": acc.intercepts()}
+        self.ranges = {key: _range(points[key], self.curves[key]) for key in KEYS}
+        self.ref = None
+        if analytic and d.reference is not None:
+            rt, rs, rv, ra = d.reference
+            inside = (rt >= t0 - 1e-12) & (rt <= t0 + motion.duration * (1 + 1e-9))
+            ref = {"s": rs[inside] / sc.mu_s, "v": rv[inside] / sc.mu_v, "a": ra[inside] / sc.mu_a}
+            # the analytic curve widens a diagram by at most REFERENCE_ROOM of its constructed range; beyond, it is cut
+            for key in KEYS:
+                lo, hi = self.ranges[key]
+                room = widen * (hi - lo)
+                r_lo, r_hi = _range(ref[key])
+                self.ranges[key] = lo, hi = (max(min(lo, r_lo), lo - room), min(max(hi, r_hi), hi + room))
+                ref[key] = np.where((ref[key] >= lo) & (ref[key] <= hi), ref[key], np.nan)
+            self.ref = (self.x_of(rt[inside]), ref)
+        self.length = sc.length
+        self.left = max(sc.pole_v if flat(d, "v") is None else 0.0, sc.pole_a if flat(d, "a") is None else 0.0) + POLE_ROOM
+        self.right = self.length + 8.0 + RIGHT_ROOM
+        self.closing = [self.length] if period is not None else []
+        self.numbers = list(motion.numbers) + ([motion.numbers[0]] if period is not None else [])
+        self.pos_x = list(self.x_of(motion.t)) + self.closing
+
+    def x_of(self, t):
+        return (np.asarray(t, dtype=float) - self.t0) / self.sc.mu_t
+
+    def height(self, key: str) -> float:
+        lo, hi = self.ranges[key]
+        return (hi - lo) + NUMBER_ROOM + 1.0 + 2 * MARGIN
+
+
+def _draw(sketch: Sketch, p: _Prepared, key: str, y0: float, lang: str) -> None:
+    """Diagram *key* with its origin at (0, *y0*) [mm]: the positions' lines and numbers, the axes, the ordinate's
+    values on the right, the construction and the curves."""
+    d, sc = p.d, p.sc
+    words = diagram_words(d, lang)
+    lo, hi = p.ranges[key]
+    mu = {"s": sc.mu_s, "v": sc.mu_v, "a": sc.mu_a}[key]
+    length = p.length
+
+    def P(px, py):  # noqa: N802 — a point of the diagram [mm]
+        return complex(px, y0 + py)
+
+    def label(at, text, ha="left", gid=None):
+        sketch.text(at, text, size=TEXT_PT, ha=ha, gid=gid, obstacle=False)
+
+    for px in p.pos_x:
+        sketch.line([P(px, lo), P(px, hi)], color=GRID, lw=0.35, gid=f"{key}-position", obstacle=False)
+    sketch.arrow(P(0, 0), P(length + 5.0, 0), lw=0.6, head=2.2, gid=f"{key}-abscissa")
+    sketch.arrow(P(0, lo), P(0, hi + 1.5), lw=0.6, head=2.2, gid=f"{key}-ordinate")
+    label(P(length + 4.0, 2.4), "t", ha="center", gid=f"{key}-t")
+    label(P(1.2, hi + 0.5), words[key], gid=f"{key}-symbol")
+    right = length + 8.0
+    sketch.line([P(right, lo), P(right, hi)], lw=0.4, gid=f"{key}-scale", obstacle=False)
+    for value in _ticks(lo * mu, hi * mu, hi - lo):
+        py = value / mu
+        sketch.line([P(right, py), P(right + 1.5, py)], lw=0.4, gid=f"{key}-tick", obstacle=False)
+        label(P(right + 2.3, py), _tick(float(value), lang), gid=f"{key}-value")
+    for px, number in zip(p.pos_x, p.numbers):
+        label(P(px, lo - 3.0), str(number), ha="center", gid=f"{key}-number")
+    tx = p.x_of(p.tt)
+    if p.ref is not None:
+        for run in _runs(p.ref[0], p.ref[1][key]):
+            sketch.line([P(a, b) for a, b in run], color=ANALYTIC, lw=0.6, dashes=(3, 2), gid=f"{key}-analytic", obstacle=False)
+    period = d.motion.period
+    if key == "s":
+        sketch.line([P(a, b) for a, b in zip(tx, p.curves["s"])], color=CURVE, lw=1.0, gid="s-curve", obstacle=False)
+        chord_x = list(p.x_of(p.te)) + p.closing
+        chord_y = list(p.se / sc.mu_s) + ([p.s_mm[0]] if period is not None else [])
         for first, second in _clipped(chord_x, chord_y, length):
-            sketch.line([P(*first, ys), P(*second, ys)], color=CHORD, lw=0.7, gid="kd-s-chord", obstacle=False)
-        for px, py in zip(list(pos_x) + closing, list(s_mm) + ([s_mm[0]] if period is not None else [])):
-            sketch.circle(P(px, py, ys), 0.6, fc=CURVE, ec=CURVE, lw=0.3, gid="kd-s-point", obstacle=False)
-        # v–t and a–t: pole, rays, intercepts carried to the middles, points, curve
-        for key, diff, y0, pole, curve, name in (("v", vel, yv, sc.pole_v, v_curve, "1"), ("a", acc, ya, sc.pole_a, a_curve, "2")):
-            pole_at = P(-pole, 0, y0)
-            sketch.circle(pole_at, 0.7, fc="black", ec="black", lw=0.3, gid=f"kd-{key}-pole", obstacle=False)
-            draw_text(sketch, pole_at + complex(-1.0, 2.6), f"$P_{{{name}}}$", size=TEXT_PT, ha="right", gid=f"kd-{key}-pole-label")
-            # H: a dimension under the diagram, from the pole to the origin
-            lo = panels[1 if key == "v" else 2][1][0]
-            dim = lo - 0.6
-            for end in (0.0, -pole):
-                sketch.line([P(end, dim - 1.0, y0), P(end, 0, y0)], color=RAY, lw=0.3, dashes=(2, 1.5), gid=f"kd-{key}-H-extension", obstacle=False)
-            sketch.arrow(P(-pole / 2, dim, y0), P(-pole, dim, y0), lw=0.4, head=1.8, gid=f"kd-{key}-H-dimension")
-            sketch.arrow(P(-pole / 2, dim, y0), P(0, dim, y0), lw=0.4, head=1.8, gid=f"kd-{key}-H-dimension")
-            draw_text(sketch, P(-pole / 2, lo - 3.0, y0), f"$H_{{{name}}}$", size=TEXT_PT, ha="center", gid=f"kd-{key}-H")
-            for middle, intercept in zip(diff.middles, diff.intercepts()):
-                if not -1.0 <= float(x_of(middle)) <= length + 1.0:  # beyond an open turn's ends: not drawn
-                    continue
-                axis_at = P(0, intercept, y0)
-                sketch.line([pole_at, axis_at], color=RAY, lw=0.35, gid=f"kd-{key}-ray", obstacle=False)
-                sketch.line([axis_at, P(float(x_of(middle)), intercept, y0)], color=RAY, lw=0.35, dashes=(1, 1.5), gid=f"kd-{key}-carry", obstacle=False)
-                sketch.circle(P(float(x_of(middle)), intercept, y0), 0.6, fc=CURVE, ec=CURVE, lw=0.3, gid=f"kd-{key}-point", obstacle=False)
-            if ref_mm is not None:
-                ry = ref_mm[2] if key == "v" else ref_mm[3]
-                for run in _runs(ref_mm[0], ry):
-                    sketch.line([P(a, b, y0) for a, b in run], color=ANALYTIC, lw=0.6, dashes=(3, 2), gid=f"kd-{key}-analytic", obstacle=False)
-            sketch.line([P(a, b, y0) for a, b in zip(tx, curve)], color=CURVE, lw=1.0, gid=f"kd-{key}-curve", obstacle=False)
-        # the chords of the v–t points, from which the a–t rays are drawn
-        mx = x_of(vel.middles)
-        my = vel.intercepts()
+            sketch.line([P(*first), P(*second)], color=CHORD, lw=0.7, gid="s-chord", obstacle=False)
+        for px, py in zip(p.pos_x, list(p.s_mm) + ([p.s_mm[0]] if period is not None else [])):
+            sketch.circle(P(px, py), 0.6, fc=CURVE, ec=CURVE, lw=0.3, gid="s-point", obstacle=False)
+        return
+    diff, pole, name = (d.velocity, sc.pole_v, "1") if key == "v" else (d.acceleration, sc.pole_a, "2")
+    pole_at = P(-pole, 0)
+    sketch.circle(pole_at, 0.7, fc="black", ec="black", lw=0.3, gid=f"{key}-pole", obstacle=False)
+    label(pole_at + complex(-1.0, 2.6), "P" + subscript(name), ha="right", gid=f"{key}-pole-label")
+    # H: a dimension under the diagram, from the pole to the origin
+    dim = lo - 0.6
+    for end in (0.0, -pole):
+        sketch.line([P(end, dim - 1.0), P(end, 0)], color=RAY, lw=0.3, dashes=(2, 1.5), gid=f"{key}-H-extension", obstacle=False)
+    sketch.arrow(P(-pole / 2, dim), P(-pole, dim), lw=0.4, head=1.8, gid=f"{key}-H-dimension")
+    sketch.arrow(P(-pole / 2, dim), P(0, dim), lw=0.4, head=1.8, gid=f"{key}-H-dimension")
+    label(P(-pole / 2, lo - 3.0), "H" + subscript(name), ha="center", gid=f"{key}-H")
+    for middle, intercept in zip(diff.middles, diff.intercepts()):
+        if not -1.0 <= float(p.x_of(middle)) <= length + 1.0:  # beyond an open turn's ends: not drawn
+            continue
+        axis_at = P(0, intercept)
+        sketch.line([pole_at, axis_at], color=RAY, lw=0.35, gid=f"{key}-ray", obstacle=False)
+        sketch.line([axis_at, P(float(p.x_of(middle)), intercept)], color=RAY, lw=0.35, dashes=(1, 1.5), gid=f"{key}-carry", obstacle=False)
+        sketch.circle(P(float(p.x_of(middle)), intercept), 0.6, fc=CURVE, ec=CURVE, lw=0.3, gid=f"{key}-point", obstacle=False)
+    sketch.line([P(a, b) for a, b in zip(tx, p.curves[key])], color=CURVE, lw=1.0, gid=f"{key}-curve", obstacle=False)
+    if key == "v":  # the chords of the v–t points, from which the a–t rays are drawn
+        mx, my = p.x_of(d.velocity.middles), d.velocity.intercepts()
         if period is not None:  # the chord across the end of the cycle, drawn at both ends of the abscissa
             mx, my = np.concatenate([[mx[-1] - length], mx, [mx[0] + length]]), np.concatenate([[my[-1]], my, [my[0]]])
         for first, second in _clipped(mx, my, length):
-            sketch.line([P(*first, yv), P(*second, yv)], color=CHORD, lw=0.7, gid="kd-v-chord", obstacle=False)
-        # the legend, in rows as wide as the block
-        legend_at = [(x + at.real, y + legend_h - at.imag) for at in legend_places]
-        for colour, lw, dashes, label, (lx, ly) in zip(*zip(*items), legend_at):
-            sketch.line([complex(lx, ly), complex(lx + 6, ly)], color=colour, lw=lw, dashes=dashes, gid="kd-legend-line", obstacle=False)
-            draw_text(sketch, complex(lx + 7.5, ly), label, size=TEXT_PT, gid="kd-legend")
+            sketch.line([P(*first), P(*second)], color=CHORD, lw=0.7, gid="v-chord", obstacle=False)
 
-    return Block(width, height, place, kind="diagrams")
+
+def _fixed(sketch: Sketch, p: _Prepared, y_lo: float, y_hi: float) -> None:
+    """The drawing's left and right edges fixed, whatever it draws: the three diagrams' origins one above the other."""
+    sketch.bounds.add(-p.left, y_lo)
+    sketch.bounds.add(p.right, y_hi)
+
+
+def diagram_svgs(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = True) -> dict:
+    """Each drawn diagram of *d* (at its scales: see :func:`page_diagrams`) as an SVG block true to scale:
+    ``{"s": SvgBlock, "v": …, "a": …}``, without a rate constant over the cycle (:func:`flat_line`).
+
+    All three are as wide, their origins at the same distance from their left edge: placed one under another,
+    their time axes line up.  *analytic*: the analytic curves, thin and dashed, beside the constructed ones.
+    """
+    from .svgblocks import SvgBlock
+
+    p = _Prepared(d, analytic)
+    drawn = [key for key in KEYS if key == "s" or flat(d, key) is None]
+    if sum(p.height(key) for key in drawn) > PAGE_ROOM:  # the analytic curves cut at the construction's range
+        p = _Prepared(d, analytic, widen=0.0)
+    out = {}
+    for key in KEYS:
+        if key != "s" and flat(d, key) is not None:
+            continue
+        with drawing_rc():
+            fig = new_figure()
+            ax = fig.add_axes([0, 0, 1, 1])
+            sketch = Sketch(ax, "kd")
+            _draw(sketch, p, key, 0.0, lang)
+            lo, hi = p.ranges[key]
+            _fixed(sketch, p, lo - NUMBER_ROOM, hi + 1.0)
+            width, height = fit_axes(ax, sketch.bounds, MARGIN)
+            out[key] = SvgBlock(render_svg(fig), width, height)
+    return out
+
+
+def draw_kinematic_figure(d: KinematicDiagrams, *, title: str = "", lang: str = "en", analytic: bool = True):
+    """The diagrams of *d* (at its own scales) as one matplotlib figure true to scale, with a short caption
+    (the title, the method, the time scale) and each diagram's line over it: a drawing file, not a page."""
+    p = _Prepared(d, analytic)
+    with drawing_rc():
+        fig = new_figure()
+        ax = fig.add_axes([0, 0, 1, 1])
+        sketch = Sketch(ax, "kd")
+        sc = d.scales
+        caption = [title, page_heading(lang),
+                   f"{diagram_words(d, lang)['output']};  T = {_num(d.motion.duration, lang, 4)} s,  L = {_short(sc.length, lang)} mm,  "
+                   f"μt = T/L = {_short(sc.mu_t, lang)} s/mm"]
+        top = 0.0
+        for k, line in enumerate(x for x in caption if x):
+            sketch.text(complex(-p.left, top), line, size=TEXT_PT + (1.5 if k == 0 else 0.0), ha="left", va="top",
+                        weight="bold" if k == 0 else "normal", gid="caption", obstacle=False)
+            top -= 5.0 if k == 0 else 4.2
+        top -= 2.0
+        for key in KEYS:
+            line = flat_line(d, key, lang) if key != "s" else None
+            words = line if line is not None else diagram_title(d, key, lang)
+            sketch.text(complex(-p.left, top), _plain(words), size=TEXT_PT, ha="left", va="top", gid=f"{key}-title", obstacle=False)
+            top -= 4.5
+            if line is not None:
+                continue
+            lo, hi = p.ranges[key]
+            y0 = top - 2.0 - hi
+            _draw(sketch, p, key, y0, lang)
+            top = y0 + lo - NUMBER_ROOM - DIAGRAM_GAP
+        x = -p.left
+        for colour, lw, dashed, words in legend_items(d, lang, analytic=analytic):
+            sketch.line([complex(x, top), complex(x + 6, top)], color=colour, lw=lw, dashes=(3, 2) if dashed else None, gid="legend-line", obstacle=False)
+            sketch.text(complex(x + 7.5, top), words, size=TEXT_PT, ha="left", gid="legend", obstacle=False)
+            x += 7.5 + text_size(words, TEXT_PT)[0] + 5.0
+        _fixed(sketch, p, top - 2.0, 0.0)
+        fit_axes(ax, sketch.bounds, 3.0)
+    return fig
+
+
+def _plain(line: str) -> str:
+    """A line's ``$…$`` parts as plain Unicode (μ_s → μs, H_{1} → H₁) for a figure's caption."""
+    import re
+
+    greek = {"\\psi": "ψ", "\\omega": "ω", "\\varepsilon": "ε", "\\mu": "μ", "\\mathrm": ""}
+
+    def part(m):
+        body = m.group(1)
+        for k, v in greek.items():
+            body = body.replace(k, v)
+        body = re.sub(r"_\{([^{}]*)\}", lambda s: s.group(1) if not s.group(1).isdigit() else subscript(s.group(1)), body)
+        return body.replace("{", "").replace("}", "")
+
+    return re.sub(r"\$([^$]*)\$", part, line)
 
 
 def diagrams_table(d: KinematicDiagrams, lang: str = "en") -> list[list[str]]:
@@ -359,52 +475,22 @@ def diagrams_table(d: KinematicDiagrams, lang: str = "en") -> list[list[str]]:
     return rows
 
 
-def comparison_block(d: KinematicDiagrams, lang: str = "en", *, size: float = TEXT_PT, pad: float = 1.2) -> Block:
-    """The comparison table (:func:`diagrams_table`) with a two-line header: the quantity over its five columns
-    (``v [m/s]``), the method under it, so that it fits an A4 page's width in every language."""
-    flat = diagrams_table(d, lang)
+def table_header(d: KinematicDiagrams, lang: str = "en") -> tuple[list[str], list[tuple[int, str]], list[str]]:
+    """The comparison table's two header rows (so that it fits an A4 page's width in every language): the first
+    (position, t, s, then a cell per group), the groups (first column, ``v [m/s]`` over its five columns) and the
+    second row (units of the first three, the methods under each group)."""
     words = diagram_words(d, lang)
-    body = flat[1:]
-    columns = len(flat[0])
     diagram, plans, analytic = term("from_diagram", lang), term("from_plans", lang), term("from_analytic", lang)
     methods = [diagram, plans, analytic, f"δ {diagram}", f"δ {plans}"]
     second = ["", "[s]", f"[{words['s_unit']}]"] + methods + methods
     first = [term("position_no", lang), "t", words["s"]]
     groups = [(3, f"{words['v']} [{words['v_unit']}]"), (8, f"{words['a']} [{words['a_unit']}]")]
-    widths = [max([measure(r[c], size)[0] for r in body] + [measure(second[c], size, "bold")[0]] +
-                  ([measure(first[c], size, "bold")[0]] if c < 3 else [])) + 2 * pad for c in range(columns)]
-    row_h = measure("lp", size)[1] * 1.1 + 0.6
-    heading = f"{term('diagrams_table', lang)} (δ [%])"
-    heading_h = measure(heading, size + 1, "bold")[1] + 1.2
-    width = max(sum(widths), measure(heading, size + 1, "bold")[0])
-    height = heading_h + row_h * (len(body) + 2) + 1.0
-    right = set(range(1, columns))
+    return first, groups, second
 
-    def place(sketch, x, y, page) -> None:
-        top = y + height
-        draw_text(sketch, complex(x, top - heading_h / 2), heading, size=size + 1, weight="bold", gid="kd-table-heading")
-        top -= heading_h
-        sketch.line([complex(x, top), complex(x + sum(widths), top)], lw=0.9, gid="kd-table-rule", obstacle=False)
-        edges = np.concatenate([[0.0], np.cumsum(widths)]) + x
-        yc = top - row_h / 2
-        for c in range(3):
-            draw_text(sketch, complex(edges[c + 1] - pad, yc) if c in right else complex(edges[c] + pad, yc), first[c], size=size, weight="bold",
-                      ha="right" if c in right else "left", gid="kd-table-cell")
-        for start, text in groups:
-            draw_text(sketch, complex((edges[start] + edges[start + 5]) / 2, yc), text, size=size, weight="bold", ha="center", gid="kd-table-cell")
-            sketch.line([complex(edges[start] + pad, top - row_h), complex(edges[start + 5] - pad, top - row_h)], lw=0.4, gid="kd-table-rule", obstacle=False)
-        rows = [second] + body
-        for i, row in enumerate(rows):
-            yc = top - row_h * (i + 1.5)
-            for c, cell in enumerate(row):
-                at = complex(edges[c + 1] - pad, yc) if c in right else complex(edges[c] + pad, yc)
-                draw_text(sketch, at, cell, size=size, ha="right" if c in right else "left", weight="bold" if i == 0 else "normal", gid="kd-table-cell")
-            if i == 0:
-                sketch.line([complex(x, top - row_h * 2), complex(edges[-1], top - row_h * 2)], lw=0.5, gid="kd-table-rule", obstacle=False)
-        bottom = top - row_h * (len(rows) + 1)
-        sketch.line([complex(x, bottom), complex(edges[-1], bottom)], lw=0.9, gid="kd-table-rule", obstacle=False)
 
-    return Block(width, height, place, kind="table")
+def table_heading(lang: str = "en") -> str:
+    """The comparison table's heading: what it compares, and that δ is in per cent."""
+    return f"{term('diagrams_table', lang)} (δ [%])"
 
 
 def _percent(value: float, lang: str) -> str:
@@ -420,7 +506,7 @@ def _tick(value: float, lang: str) -> str:
     return localised(f"{value:.6g}" if abs(value) >= 1e-12 else "0", lang)
 
 
-def _notes(d: KinematicDiagrams, lang: str) -> list[str]:
+def notes(d: KinematicDiagrams, lang: str = "en") -> list[str]:
     """The lines under the table: what δ is, the largest errors, the method of tangents, the order of the chords."""
     e = d.errors()
     words = diagram_words(d, lang)
@@ -436,13 +522,17 @@ def _notes(d: KinematicDiagrams, lang: str) -> list[str]:
     ] + ([term("kd_extreme_reading", lang).format(v=v) + "."] if d.start == "output" else [])
 
 
+def page_heading(lang: str = "en") -> str:
+    """The heading of the page: what it shows, by which method."""
+    return f"{term('kinematic_diagrams', lang)}: {term('graphical_differentiation', lang)}"
+
+
 def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
-    """The page's data lines: the output link and method, the time scale."""
+    """The page's data lines (``$…$`` math): the output link, positions and law; the time scale; what s is."""
     sc = d.scales
     words = diagram_words(d, lang)
     count = len(set(d.motion.numbers))  # an open turn ends at position 0 again
     duration = d.motion.duration
-    width = A4[0] - 2 * PAGE_MARGIN
     law = ""
     if d.law is not None:
         law = f";  {d.law.describe(lang, d.driver, **({'phase': d.start_phase} if d.start_phase is not None else {}))}"
@@ -451,11 +541,10 @@ def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
         steps = f",  Δt = T/{d.motion.intervals} = {_num(duration / d.motion.intervals, lang, 4)} s"
         even = f" ({term('equal_time_steps', lang)} Δt)"
     return [
-        "§" + f"{term('kinematic_diagrams', lang)}: {term('graphical_differentiation', lang)}",
-        *_wrap(f"{words['output']};  {term('positions', lang)}: {count}{even}" + law, width),
-        *_wrap(f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}){steps},  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
-               f"$\\mu_{{t}}$ = T/L = {_short(sc.mu_t, lang)} s/mm", width),
-        *_wrap(origin_line(d, lang), width),
+        f"{words['output']};  {term('positions', lang)}: {count}{even}" + law,
+        f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}){steps},  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
+        f"$\\mu_{{t}}$ = T/L = {_short(sc.mu_t, lang)} s/mm",
+        origin_line(d, lang),
     ]
 
 
@@ -474,79 +563,10 @@ def origin_line(d: KinematicDiagrams, lang: str = "en") -> str:
     return f"{definition}: {origin}, {sense}"
 
 
-def _wrap(text: str, width: float, size: float = 8.0) -> list[str]:
-    """*text* broken at spaces into lines at most *width* [mm] wide at *size* pt (a word longer than that alone)."""
-    lines, line = [], ""
-    for word in text.split(" "):
-        trial = f"{line} {word}" if line else word
-        if line and measure(trial, size)[0] > width:
-            lines.append(line.rstrip())
-            line = "   " + word
-        else:
-            line = trial
-    return lines + ([line] if line else [])
-
-
-def draw_kinematic_pages(d: KinematicDiagrams, *, title: str, lang: str = "en", footer_text: str = "", extra_lines=()) -> list:
-    """The handout's page of the kinematic diagrams (A4 portrait): the construction, then the table.
-
-    Returns one figure, or two when the table does not fit under the
-    diagrams (the table then has a page of its own, its rows continued).
-    """
-    lines = list(extra_lines) + header_lines(d, lang)
-    table = comparison_block(d, lang)
-    width, height = A4
-    notes = [(text, size) for text, size, _ in text_rows("", _notes(d, lang), width - 2 * PAGE_MARGIN, TEXT_PT)[1:]]
-    notes_h = sum(measure(t, s)[1] + 1.2 for t, s in notes) + 2.0
-    room = height - header_height(lines) - PAGE_MARGIN - 8.0
-    # the diagrams as tall as their scales allow, down to SHORTEST mm, so that the table fits under them
-    together = False
-    for tallest in (ORDINATE_MAX, 36.0, 34.0, 32.0, 30.0, 28.0, 26.0, SHORTEST):
-        block = diagrams_block(rescaled(d, tallest), lang)
-        if block.height + GAP + table.height + notes_h <= room:
-            together = True
-            break
-    if not together:
-        block = diagrams_block(d, lang)
-    pages = []
-    fig, sketch = new_page(A4)
-    top = header(sketch, A4, title, lines)
-    block.place(sketch, PAGE_MARGIN, top - block.height, A4)
-    top -= block.height + GAP
-    if footer_text:
-        footer(sketch, footer_text)
-    pages.append(fig)
-    if not together:
-        fig, sketch = new_page(A4)
-        top = header(sketch, A4, title, lines[:1] + [term("continued", lang)])
-        if footer_text:
-            footer(sketch, footer_text)
-        pages.append(fig)
-    table.place(sketch, PAGE_MARGIN, top - table.height, A4)
-    top -= table.height + 2.0
-    for text, size in notes:
-        h = measure(text, size)[1]
-        draw_text(sketch, complex(PAGE_MARGIN, top - h / 2), text, size=size, gid="kd-note")
-        top -= h + 1.2
-    return pages
-
-
-def draw_unavailable_page(error, *, title: str, lang: str = "en", footer_text: str = ""):
-    """The page that says, in the reader's language, why the kinematic diagrams are not drawn
-    (*error* a :class:`plans.differentiation.DiagramsError`)."""
+def unavailable_reason(error, lang: str = "en") -> str:
+    """Why the kinematic diagrams are not drawn (*error* a :class:`plans.differentiation.DiagramsError`), in *lang*."""
     if error.cause == "unsolved":
-        reason = term("kd_unsolved", lang).format(positions=", ".join(map(str, error.positions)))
-    elif error.cause == "no_output":
-        reason = term("kd_no_output", lang)
-    else:
-        reason = str(error)
-    fig, sketch = new_page(A4)
-    top = header(sketch, A4, title, ["§" + f"{term('kinematic_diagrams', lang)}: {term('graphical_differentiation', lang)}"])
-    lines = [term("kd_not_drawn", lang) + ":"] + _wrap(reason, A4[0] - 2 * PAGE_MARGIN, 10.0)
-    for k, line in enumerate(lines):
-        h = measure(line, 10.0, "bold" if k == 0 else "normal")[1]
-        draw_text(sketch, complex(PAGE_MARGIN, top - h / 2), line, size=10.0, weight="bold" if k == 0 else "normal", gid="kd-unavailable")
-        top -= h + 1.5
-    if footer_text:
-        footer(sketch, footer_text)
-    return fig
+        return term("kd_unsolved", lang).format(positions=", ".join(map(str, error.positions)))
+    if error.cause == "no_output":
+        return term("kd_no_output", lang)
+    return str(error)

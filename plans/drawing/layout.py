@@ -1,4 +1,4 @@
-"""Page layout of the matplotlib pages (the A3 sheets, the force and kinematic-diagram pages).
+"""Page layout of the matplotlib pages (the A3 sheets and the force pages).
 
 * :func:`new_page` — an empty page of a given size [mm] with a paper axes in mm;
 * :func:`header`, :func:`header_height`, :func:`footer`;

@@ -37,11 +37,34 @@ class SvgBlock:
     height: float
 
 
+def _course_texts(fig, lang: str) -> None:
+    """Every text of *fig* with its unit symbols as the course in *lang* writes them, before it is rendered.
+
+    A text with math (a note ``$|v_K|$ = 2.35 mm``, a scale ``$k_l$ = 0.03 m/mm``) is
+    rendered glyph by glyph, each its own SVG text node, where no whole symbol is left
+    to rewrite: the texts are rewritten here, as matplotlib holds them (whole symbols
+    outside the math only; a plan's image ``m`` stays).
+    """
+    if lang not in ("ru", "bg"):
+        return
+    from matplotlib.text import Text
+
+    from .._text import course_units
+
+    for artist in fig.findobj(Text):
+        words = artist.get_text()
+        if words:
+            swapped = course_units(words, lang, drawn=True)
+            if swapped != words:
+                artist.set_text(swapped)
+
+
 def _units(svg: bytes, lang: str) -> bytes:
     """The drawing's unit symbols as the course in *lang* writes them (``м/с`` on a Russian or Bulgarian page).
 
-    Every drawing writes the international symbols; the text nodes of its SVG
-    are rewritten here, whole symbols only (a plan's image ``m`` stays).
+    Every drawing writes the international symbols; its texts are rewritten before it is rendered
+    (:func:`_course_texts`) and the text nodes of its SVG here, whole symbols only (a plan's image
+    ``m`` stays).
     """
     if lang not in ("ru", "bg"):
         return svg
@@ -52,15 +75,21 @@ def _units(svg: bytes, lang: str) -> bytes:
     return text.encode("utf-8")
 
 
-def _sketched(tag: str, draw, lang: str) -> SvgBlock:
-    """Run ``draw(sketch)`` on a new figure sized to what it drew plus the margin."""
+def _rendered(fig, lang: str) -> bytes:
+    """*fig* as SVG, its texts' units first in the course's symbols (:func:`_course_texts`)."""
+    _course_texts(fig, lang)
+    return render_svg(fig)
+
+
+def _sketched(tag: str, draw, lang: str, margin: float = MARGIN_MM) -> SvgBlock:
+    """Run ``draw(sketch)`` on a new figure sized to what it drew plus the *margin* [mm]."""
     with drawing_rc():
         fig = new_figure()
         ax = fig.add_axes([0, 0, 1, 1])
         sketch = Sketch(ax, tag)
         draw(sketch)
-        width, height = fit_axes(ax, sketch.bounds, MARGIN_MM)
-        return SvgBlock(_units(render_svg(fig), lang), width, height)
+        width, height = fit_axes(ax, sketch.bounds, margin)
+        return SvgBlock(_units(_rendered(fig, lang), lang), width, height)
 
 
 def mechanism_svg(graphical, lang: str = "en") -> SvgBlock:
@@ -70,12 +99,14 @@ def mechanism_svg(graphical, lang: str = "en") -> SvgBlock:
     return _sketched("mech", lambda sketch: MechanismDrawing(sketch, graphical, lang=lang, caption=False).draw(), lang)
 
 
-def plan_svg(plan, lang: str = "en", detail: bool = True) -> SvgBlock:
-    """A velocity or acceleration plan at its own scale, without heading, scale and legend (the page states them)."""
+def plan_svg(plan, lang: str = "en", detail: bool = True, margin: float = MARGIN_MM) -> SvgBlock:
+    """A velocity or acceleration plan at its own scale, without heading, scale and legend (the page states them);
+    *margin* [mm] of white around it (less for a plan across a page, whose edges are the text area's)."""
     from .plan_drawing import draw_plan_into
 
     tag = "vel" if plan.kind == "velocity" else "acc"
-    return _sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang)
+    return _sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang,
+                     margin)
 
 
 def legend_svg(plans, lang: str = "en") -> SvgBlock:
@@ -100,14 +131,15 @@ def positions_svg(positions_run, k_l: float, lang: str = "en", extremes: dict | 
                                                                      extremes=extremes), lang)
 
 
-def centres_svg(result, k_l: float, lang: str = "en", room_min: float | None = None) -> SvgBlock:
-    """The mechanism at *k_l* with every instant centre (a :class:`plans.centres.CentresResult`), without the circle diagram."""
+def centres_svg(result, k_l: float, lang: str = "en", room_min: float | None = None, limit: tuple[float, float] | None = None) -> SvgBlock:
+    """The mechanism at *k_l* with every instant centre (a :class:`plans.centres.CentresResult`), without the circle diagram
+    (*limit*: the page's room [mm], see :func:`plans.drawing.centres.centres_frame`)."""
     from .centres import ROOM_MIN, draw_centres_into
 
     with drawing_rc():
         fig = new_figure()
         ax = fig.add_axes([0, 0, 1, 1])
-        width, height = draw_centres_into(ax, result, k_l, lang, legend=False, diagram=False, room_min=ROOM_MIN if room_min is None else room_min)
+        width, height = draw_centres_into(ax, result, k_l, lang, legend=False, diagram=False, room_min=ROOM_MIN if room_min is None else room_min, limit=limit)
         return _fitted(fig, ax, width, height, lang)
 
 
@@ -125,11 +157,11 @@ def circle_diagram_svg(result, lang: str = "en") -> SvgBlock:
 def _fitted(fig, ax, width: float, height: float, lang: str) -> SvgBlock:
     fig.set_size_inches(width / 25.4, height / 25.4)
     ax.set_position([0.0, 0.0, 1.0, 1.0])
-    return SvgBlock(_units(render_svg(fig), lang), width, height)
+    return SvgBlock(_units(_rendered(fig, lang), lang), width, height)
 
 
 def figure_svg(fig, lang: str = "en") -> SvgBlock:
     """A whole figure (drawn for a page in *lang*) as a block of its own size."""
     width, height = (x * 25.4 for x in fig.get_size_inches())
     with drawing_rc():
-        return SvgBlock(_units(render_svg(fig), lang), width, height)
+        return SvgBlock(_units(_rendered(fig, lang), lang), width, height)

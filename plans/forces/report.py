@@ -14,7 +14,7 @@ from ..i18n import term
 from ..scene import FRAME, Crank
 from .compare import KinetostaticRun
 
-__all__ = ["FORCES_SCHEMA", "forces_json", "forces_table", "LOAD_TERMS", "method_name"]
+__all__ = ["FORCES_SCHEMA", "forces_json", "forces_table", "LOAD_TERMS", "method_name", "course_formula", "COURSE_KINDS"]
 
 #: Version of the JSON document of ``plans forces --json``.
 FORCES_SCHEMA = 1
@@ -169,6 +169,17 @@ def _errors(row) -> str:
     return f" {row.abs_error:10.3g} {row.rel_error:10.2e}"
 
 
+#: a class-II Assur group's kind -> its number in the course's notation (II₁ … II₅), as the kinematic pages write it
+COURSE_KINDS = {"RRR": "₁", "RRP": "₂", "PRR": "₂", "RPR": "₃", "PRP": "₄", "RPP": "₅", "PPR": "₅"}
+
+
+def course_formula(formula: str) -> str:
+    """The structural formula as the course writes it: ``I(1,2) → RRR(3,4)`` → ``I(1,2) → II₁(3,4)`` (plain text)."""
+    import re
+
+    return re.sub(r"\b([RP]{3})\(", lambda m: f"II{COURSE_KINDS[m.group(1)]}(" if m.group(1) in COURSE_KINDS else m.group(0), formula)
+
+
 def forces_table(run: KinetostaticRun, lang: str = "en") -> str:
     """A readable table of one position in *lang*: loads, reactions, the balancing moment by each method, the power balance."""
     analytic = run.analytic
@@ -177,7 +188,7 @@ def forces_table(run: KinetostaticRun, lang: str = "en") -> str:
     out = io.StringIO()
     w = out.write
     w(f"{scene.title_in(lang)}\n")
-    w(f"{term('kinetostatics', lang)}: {analytic.structure.formula}\n")
+    w(f"{term('kinetostatics', lang)}: {course_formula(analytic.structure.formula)}\n")
     driver = scene.driver
     if isinstance(driver, Crank):
         w(f"{term('driver', lang)} {driver.link}: φ = {math.degrees(driver.phi):.3f}°, ω = {driver.omega:.6g} rad/s, ε = {driver.epsilon:.6g} rad/s²\n")

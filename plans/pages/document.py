@@ -18,7 +18,7 @@ from ..i18n import term
 from .._text import decimal_comma
 from .equations import step_lines
 from .typesetting import FONT as _FONT, MATH_FONT as _MATH, image, mixed, string, text
-from .words import formula_words, units
+from .words import block_words, units
 
 __all__ = ["Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "TEXT_PT", "SMALL_PT"]
 
@@ -77,6 +77,10 @@ class Document:
         self.order: list[str] = []
         self.plate: dict = {}
         self.per_position = None
+        #: the plate's name in the title block (an i18n key): a section that is not kinematics (the force pages)
+        #: sets it before its first heading and sets it back after its last page
+        self.plate_name = "plate_title"
+        self._named = "plate_title"
 
     # words
     def words(self, line: str) -> str:
@@ -93,6 +97,10 @@ class Document:
         if new_page and self.body:
             self.body.append("#pagebreak(weak: true)")
         self.body.append("=" * level + " " + self.words(words))
+        if new_page and self.plate_name != self._named:
+            # the title block is set at the page's end: the name changes on the page a section starts
+            self.body.append(f"#plate-name.update({string(term(self.plate_name, self.lang))})")
+            self._named = self.plate_name
 
     def line_markup(self, words: str, size: float = TEXT_PT) -> str:
         return f"#text(size: {size}pt)[{self.words(words)}]"
@@ -150,6 +158,43 @@ class Document:
         self.sizes[key] = (block.width * scale, block.height * scale)
         note = f"#metadata([{self.words(scale_note)}]) <plans-page-scale>\n" if scale_note else ""
         self.body.append(f"#pagebreak(weak: true)\n{note}#align(center)[#image(bytes(sys.inputs.at({string(key)})), format: \"svg\", width: {block.width * scale:.3f}mm)]\n")
+
+    def captioned(self, caption: str, key: str, block, size: float = SMALL_PT + 0.5) -> None:
+        """A line of words over a drawing placed at its physical size, left-aligned, kept together on a page."""
+        self.body.append(f"#block(breakable: false, below: 2.5mm)[#text(size: {size}pt)[{self.words(caption)}] \\\n"
+                         f"#{self.add_image(key, block)}]\n")
+
+    def legend(self, items, size: float = SMALL_PT) -> None:
+        """A legend in one line: (colour ``"#rrggbb"``, width [pt], dashed, words) per kind of line drawn."""
+        parts = []
+        for colour, width, dashed, words in items:
+            stroke = f"(paint: rgb({string(colour)}), thickness: {width}pt{', dash: (3pt, 2pt)' if dashed else ''})"
+            parts.append(f"#box(baseline: -0.6mm, line(length: 6mm, stroke: {stroke})) {self.words(words)}")
+        self.body.append(f"#text(size: {size}pt)[" + " #h(4mm) ".join(parts) + "]\n")
+
+    def grouped_table(self, heading: str, first, groups, second, body, size: float = SMALL_PT) -> None:
+        """A table across the page with a two-row header: *first* (the first cells; from each group's start column
+        its words span *groups*' columns: ``(start, words)``, five columns each), *second* under it, *body* rows.
+        The first column left, the others right; breakable over pages with its header repeated."""
+        ncol = len(second)
+        starts = dict(groups)
+        top, c = [], 0
+        while c < ncol:
+            if c in starts:
+                span = next((s for s in sorted(starts) if s > c), ncol) - c
+                top.append(f"table.cell(colspan: {span}, align: center)[#text(weight: \"bold\")[{self.words(starts[c])}]]")
+                c += span
+            else:
+                top.append(f"text(weight: \"bold\")[{self.words(first[c])}]")
+                c += 1
+        rules = ", ".join(f"table.hline(y: 1, start: {s}, end: {next((t for t in sorted(starts) if t > s), ncol)}, stroke: 0.4pt)" for s in sorted(starts))
+        under = ", ".join(f"text(weight: \"bold\")[{self.words(cell)}]" for cell in second)
+        rows = ", ".join(", ".join(f"[{self.words(cell)}]" for cell in row) for row in body)
+        whole = "true" if len(body) > 40 else "false"  # a table that fits a page is never parted from its heading
+        self.body.append(f"#block(breakable: {whole})[#block(below: 2mm)[#text(weight: \"bold\", size: {SMALL_PT + 1}pt)[{self.words(heading)}]]\n"
+                         f"#text(size: {size}pt)[#table(columns: {ncol}, stroke: none, inset: (x: 1.1mm, y: 0.8mm), align: (x, y) => if x == 0 {{ left }} else {{ right }},\n"
+                         f"  table.header(table.hline(stroke: 0.8pt), {', '.join(top)}, {rules}, {under}, table.hline(stroke: 0.5pt)),\n"
+                         f"  {rows}, table.hline(stroke: 0.8pt))]]\n")
 
     def grid(self, cells, columns: int) -> None:
         """Drawings with captions, *columns* across, flowing over pages (a cell never split)."""
@@ -213,12 +258,12 @@ class Document:
         self.body.append(f"#text(size: {SMALL_PT}pt)[#columns(2, gutter: {GUTTER}mm)[" + "\n".join("#" + p for p in parts) + "]]\n")
 
     def loop_block(self, block) -> None:
-        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(formula_words(block.title))}]\n")
+        self.body.append(f"#text(size: {SMALL_PT + 0.5}pt, weight: \"bold\")[{self.words(block_words(block.title, self.lang))}]\n")
         for line in block.lines:
             self.body.append(f"#text(size: {SMALL_PT}pt)[{self.words(line)}]\n")
 
     def beside(self, drawing, table, lines) -> None:
-        key, block = drawing
+        """*table* (none: empty) and *lines* beside a *drawing* ``(key, block)``; with *drawing* None, alone (the page's width)."""
         rows = []
         for i, row in enumerate(table):
             weight = "bold" if i == 0 else "regular"
@@ -227,8 +272,13 @@ class Document:
         tab = (f"table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: (left, left, right, right, right), table.hline(stroke: 0.7pt), "
                + ", table.hline(stroke: 0.4pt), ".join([rows[0], ", ".join(rows[1:])]) + ", table.hline(stroke: 0.7pt))") if rows else "[]"
         words = " \\\n".join(self.words(line) for line in lines)
+        content = f"#{tab} \\\n{words}" if rows else words
+        if drawing is None:
+            self.body.append(f"#text(size: {SMALL_PT}pt)[{content}]\n")
+            return
+        key, block = drawing
         self.body.append(f"#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {self.add_image(key, block)}, "
-                         f"text(size: {SMALL_PT}pt)[#{tab} \\\n{words}])\n")
+                         f"text(size: {SMALL_PT}pt)[{content}])\n")
 
     # the whole
     def source(self) -> str:
@@ -248,7 +298,7 @@ class Document:
         sheet = f"{text(term('sheet', lang))} #context counter(page).get().first() {text(term('of_sheets', lang))} #context counter(page).final().first()"
         title_block = (
             f"table(columns: (1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
-            f" table.cell(colspan: 2)[#text(size: 10pt, weight: \"bold\")[{text(term('plate_title', lang))}] — #text(size: 10pt)[{text(self.scene.title_in(lang))}]],"
+            f" table.cell(colspan: 2)[#text(size: 10pt, weight: \"bold\")[#context plate-name.get()] — #text(size: 10pt)[{text(self.scene.title_in(lang))}]],"
             f" [#text(size: 9pt)[{sheet}]],"
             f" table.cell(colspan: 3)[#text(size: 8.5pt)[{text(term('scale_factors', lang))}: {scale_text}]],"
             f" [#text(size: 8pt)[{text(term('drawn_by', lang))}:]], [#text(size: 8pt)[{text(term('checked_by', lang))}:]], [#text(size: 8pt)[{text(term('date', lang))}:]])"
@@ -258,6 +308,7 @@ class Document:
         inner_h = g.size[1] - 2 * g.frame[1]
         head = f"""#set document(date: none)
 #let plate-kl = state("plate-kl", [{plate_kl}])
+#let plate-name = state("plate-name", [{text(term('plate_title', lang))}])
 #set page(width: {g.size[0]}mm, height: {g.size[1]}mm, margin: (left: {g.margins[0]}mm, right: {g.margins[1]}mm, top: {g.margins[2]}mm, bottom: {g.margins[3]}mm),
   background: place(top + left, dx: {g.frame[0]}mm, dy: {g.frame[1]}mm, rect(width: {inner_w}mm, height: {inner_h}mm, stroke: 0.8pt)),
   foreground: place(bottom + {g.title_block_side}, dx: {g.title_block_dx}mm, dy: -{g.frame[1]}mm, block(width: {g.title_block_width or (g.size[0] - g.frame[0] - g.frame[1])}mm, {title_block})))

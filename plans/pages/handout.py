@@ -17,9 +17,11 @@ What the handout holds, in the order a student draws the plate (domain.md §10):
    graphical accelerations only of the positions whose acceleration plans
    are drawn: the others' tables hold their velocities), and
    the complex-number loop equations of the chosen positions;
-6. the kinematic diagrams over the cycle; with ``centres``, a page of
-   instant centres for every position, all at one k_l (the plate's, or the
-   coarsest any of them needs), which their title block states.
+6. the kinematic diagrams over the cycle; with ``centres``, the method's
+   page (Kennedy's theorem, the circle diagram once, the rules, the order of
+   finding the centres) and a page of instant centres for every position,
+   all at one k_l (the plate's, or the coarsest any of them needs), which
+   their title block states.
 
 One k_l, one k_v, one k_a over the whole handout (each the round factor
 with which the largest of its drawings fills the room a page gives it; a
@@ -64,11 +66,17 @@ POSITIONS_BOX = (TEXT_WIDTH, 150.0)
 VELOCITY_CELL = ((TEXT_WIDTH - GUTTER) / 2, 70.0)
 #: a velocity plan too large for a half cell at the plate's k_v takes a row of its own (three rows to a page)
 VELOCITY_WIDE = (TEXT_WIDTH, 80.0)
+#: the white margin [mm] of a velocity plan in a row of its own: the text area's edges are its frame (a half cell's
+#: plan keeps the drawings' margin, which parts it from its neighbour)
+WIDE_MARGIN = 1.0
 #: at most this share of the positions may take a row of their own (else every plan goes two across, the
 #: largest filling a half cell): the wide rows are for the few positions whose plans are large
 WIDE_SHARE = 1 / 3
-#: room [mm] a centres page keeps for its heading (two lines), Kennedy's statement and the legend (two lines)
-CENTRES_PAGE_TEXT = 42.0
+#: room [mm] a centres page keeps for its heading (one line), the legend (two lines), the rules (two) and the gaps;
+#: its table takes CENTRES_ROW a row, and the drawing the rest, at most CENTRES_DRAWING_MAX
+CENTRES_PAGE_TEXT = 30.0
+CENTRES_ROW = 4.2
+CENTRES_DRAWING_MAX = 185.0
 #: the page of cycle diagrams [mm]: the text area (a little short of it), so that it prints at 100 %, its 8 pt type 8 pt
 DIAGRAM_PAGE = (TEXT_WIDTH, TEXT_HEIGHT - 4.0)
 
@@ -215,7 +223,8 @@ def choose_accelerations(run, asked) -> list[int]:
     nearest the middle of the working stroke and the one nearest the middle
     of the idle stroke (:func:`stroke_phases`; without them, the strokes told
     apart by the sense of the output's motion, the working one the longer
-    run of positions); one of each third when the output never turns back.
+    run of positions); one of each third when the output never turns back,
+    and for a sliding driver (its cycle is its stroke, one way: no idle stroke).
     """
     runs = run.runs
     solved = [r for r in runs if r.ok and r.graphical is not None and r.graphical.acceleration_plan is not None]
@@ -232,6 +241,8 @@ def choose_accelerations(run, asked) -> list[int]:
         return list(dict.fromkeys(asked))
     if len(solved) <= ACCELERATIONS_DEFAULT:
         return [r.index for r in solved]
+    if not _turning_driver(run):  # a sliding driver's cycle is its stroke, one way: two positions along it
+        return [solved[len(solved) // 3].index, solved[(2 * len(solved)) // 3].index]
     phases = stroke_phases(run)
     if phases:
         chosen = []
@@ -266,8 +277,19 @@ def _reason(r, lang: str) -> str:
     return re.sub(r"\b[RP]{3}\([^,()]+,[^,()]+\)", lambda m: group_words(m.group(0), lang), words)
 
 
+def _turning_driver(run) -> bool:
+    """Whether the driver turns (a crank or a rocker): a sliding driver has a stroke, one way, and no working or idle stroke."""
+    from ..scene import LinearDriver
+
+    return not isinstance(run.scene.driver, LinearDriver)
+
+
 def _stroke(r, working_sign: float, lang: str, phases=None) -> str:
-    """The stroke a position is in, in words (empty when not known)."""
+    """The stroke a position is in, in words (empty when not known, or for a sliding driver: its cycle is one stroke)."""
+    from ..scene import LinearDriver
+
+    if isinstance(r.scene.driver, LinearDriver):
+        return ""
     if phases and r.index in phases:
         return term("working_stroke" if phases[r.index][0] == "working" else "idle_stroke", lang)
     sense = _output_sense(r)
@@ -375,7 +397,7 @@ def build_handout(
             # the largest plan given a row of its own: kept when only a few plans need one (they are then far
             # larger than the rest, which a half cell would leave small)
             largest_wide = max(solved, key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.velocity_plan), VELOCITY_WIDE)))
-            k_wide, _ = _fitted(lambda k: plan_svg(scaled(largest_wide, "k_v", k).graphical.velocity_plan, lang),
+            k_wide, _ = _fitted(lambda k: plan_svg(scaled(largest_wide, "k_v", k).graphical.velocity_plan, lang, margin=WIDE_MARGIN),
                                 _plan_extent(largest_wide.graphical.velocity_plan), VELOCITY_WIDE, largest_wide.graphical.scales["k_v"], None)
             # the finest round factor (from the largest's row up) with which only a few need a row
             k = min(k_wide, round_up(k_v_plate / 2))
@@ -400,10 +422,10 @@ def build_handout(
     here = {}
     velocity_blocks, acceleration_blocks = {}, {}
 
-    def fitting(plan, cell):
-        block = plan_svg(plan, lang)
+    def fitting(plan, cell, **margin):
+        block = plan_svg(plan, lang, **margin)
         if block.width > cell[0] + 0.5:
-            block = plan_svg(plan, lang, detail=False)
+            block = plan_svg(plan, lang, detail=False, **margin)
         return block
 
     wide = set()  # the positions whose velocity plans take a row of their own
@@ -418,7 +440,7 @@ def build_handout(
             block = velocity_blocks[r.index]
             if multi and scales != "per-position" and (block.width > cell_v[0] + 0.5 or block.height > cell_v[1] + 0.5):
                 wide.add(r.index)
-                velocity_blocks[r.index] = block = fitting(h.graphical.velocity_plan, VELOCITY_WIDE)
+                velocity_blocks[r.index] = block = fitting(h.graphical.velocity_plan, VELOCITY_WIDE, margin=WIDE_MARGIN)
                 if block.width > VELOCITY_WIDE[0] + 0.5:
                     wider["k_v"] = max(wider.get("k_v", 1.0), block.width / VELOCITY_WIDE[0])
             elif block.width > cell_v[0] + 0.5:
@@ -545,33 +567,23 @@ def build_handout(
 
         doc.section("diagrams")
         marked = run.motion if run.motion is not None else run.positions
+        kinematic = _kinematic(scene, positions, len(run.runs), precision, law, start)
+        # each page's title and words set by Typst above its figure, which takes the rest of the text area at 100 %
+        from .typesetting import text as literal
+
+        words_room = 36.0  # mm: the heading and four lines of words
         for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense,
-                                                  extremes=run.strokes, size=DIAGRAM_PAGE):
-            doc.full_page(f"diagram-{page_name}", figure_svg(fig, lang))
-        for number, fig in enumerate(_kinematic_pages(scene, positions, len(run.runs), precision, lang, law, start), start=1):
-            doc.full_page(f"kinematic-{number}", figure_svg(fig, lang))
+                                                  extremes=run.strokes, size=(DIAGRAM_PAGE[0], DIAGRAM_PAGE[1] - words_room),
+                                                  signed_elsewhere=_output_points(scene, kinematic), heading=False):
+            title, lines = fig.plans_heading
+            doc.heading(title, level=2, new_page=True)
+            doc.body.append(f"#text(size: {SMALL_PT + 1}pt)[{literal(lines[0])}]\n")  # the scene's title, as written
+            doc.lines(lines[1:], size=SMALL_PT + 1)
+            doc.figure(f"diagram-{page_name}", figure_svg(fig, lang))
+        _kinematic_pages(doc, kinematic, lang)
     if forces:
-        from ..drawing._canvas import fmt_number
-        from ..drawing.forces_page import draw_forces_pages
-        from ..drawing.svgblocks import figure_svg
-        from ..forces.force_plans import construct_force_plans
-        from ..forces.lever import LeverError, joukowski_lever
-
         doc.section("forces")
-        for k in chosen or [sample.index]:
-            h = here[k]
-            try:
-                lever = joukowski_lever(h.graphical)
-            except LeverError:
-                lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
-            where = [f"{term('position', lang)} {h.index}:  {h.label}"] if multi else []
-            def plans_at(mu_F, graphical=h.graphical):
-                return construct_force_plans(graphical, mu_F=mu_F)
-
-            for n, page in enumerate(draw_forces_pages(h.graphical, plans_at, lang=lang, header_lines=where, lever=lever)):
-                mu_f = set(page.force_scales.values())
-                note = f"$μ_{{F}}$ = {fmt_number(mu_f.pop())} N/mm" if len(mu_f) == 1 else None
-                doc.full_page(f"forces-{h.index}-{n}", figure_svg(page, lang), scale_note=note)
+        _forces_pages(doc, [here[k] for k in chosen or [sample.index]], lang, multi)
     if centres:
         doc.section("centres")
         _centres_pages(doc, list(here.values()), k_l_plate, lang, multi, say)
@@ -627,22 +639,57 @@ def _other_extreme(run, scene) -> dict:
     return {"0′": solved[0].graphical} if solved else {}
 
 
-def _kinematic_pages(scene, positions, count: int, precision, lang: str, law=None, start: str = "output") -> list:
-    """The pages of the output link's kinematic diagrams by graphical differentiation (and of their table when it
-    does not fit under them), at the handout's count of positions (12 when it has fewer than 8); a mechanism
-    without an output slider or rocker, or not solved at one of those positions, gets a page that says so."""
+def _kinematic(scene, positions, count: int, precision, law=None, start: str = "output"):
+    """The output link's kinematic diagrams by graphical differentiation at the handout's count of positions (12
+    when it has fewer than 8), or the :class:`plans.differentiation.DiagramsError` that says why there are none."""
     from ..differentiation import DiagramsError, kinematic_diagrams
-    from ..drawing.kinematic_diagrams import draw_kinematic_pages, draw_unavailable_page
 
     if isinstance(positions, int):
         count = positions
     if count < 8:  # a course project differentiates over 8 or more
         count = 12
     try:
-        diagrams = kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
-    except DiagramsError as exc:  # said on a page of its own, in the reader's language
-        return [draw_unavailable_page(exc, title=scene.title_in(lang), lang=lang)]
-    return draw_kinematic_pages(diagrams, title=scene.title_in(lang), lang=lang)
+        return kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
+    except DiagramsError as exc:
+        return exc
+
+
+def _output_points(scene, kinematic) -> tuple:
+    """The reported points of the output slider (a body translating on a frame guide: each point's v and a are its
+    own), whose signed v and a the kinematic diagrams give: the cycle page does not repeat them as |v|, |a|."""
+    motion = getattr(kinematic, "motion", None)
+    if motion is None or motion.kind != "slider":
+        return ()
+    links = [pair.slider for pair in scene.prismatics if pair.name == motion.name]
+    if not links:
+        return ()
+    return tuple(p for p in scene.report if p in scene.bodies[links[0]].points)
+
+
+def _kinematic_pages(doc, kinematic, lang: str) -> None:
+    """The pages of the output link's kinematic diagrams (*kinematic*, from :func:`_kinematic`): the data lines,
+    each diagram under its title and scales at 100 % (a rate constant over the cycle said in a line), the legend,
+    the comparison table and its notes, set by Typst and flowing over pages; a mechanism without an output slider
+    or rocker, or not solved at one of the positions, gets a page that says so."""
+    from ..drawing import kinematic_diagrams as kd
+
+    doc.heading(kd.page_heading(lang), level=2, new_page=True)
+    if isinstance(kinematic, Exception):  # said on the page, in the reader's language
+        doc.body.append(f"#text(weight: \"bold\")[{doc.words(term('kd_not_drawn', lang) + ':')}]\n")
+        doc.line(kd.unavailable_reason(kinematic, lang))
+        return
+    d = kd.page_diagrams(kinematic, doc.page.text_width)
+    doc.lines(kd.header_lines(d, lang), size=SMALL_PT + 0.5)
+    doc.legend(kd.legend_items(d, lang))
+    blocks = kd.diagram_svgs(d, lang)
+    for key in kd.KEYS:
+        if key in blocks:
+            doc.captioned(kd.diagram_title(d, key, lang), f"kinematic-{key}", blocks[key])
+        else:
+            doc.line(kd.flat_line(d, key, lang), size=SMALL_PT + 0.5)
+    table = kd.diagrams_table(d, lang)
+    doc.grouped_table(kd.table_heading(lang), *kd.table_header(d, lang), table[1:])
+    doc.lines(kd.notes(d, lang), size=SMALL_PT)
 
 
 #: the quantities read off a velocity plan (a position without its acceleration plan on the plate tabulates only these)
@@ -656,23 +703,43 @@ def _table(h, lang: str, accelerations: bool = True) -> list[list[str]]:
     from ..report import sheet_table
 
     comparisons = h.comparisons if accelerations else [c for c in h.comparisons if c.quantity in VELOCITY_QUANTITIES]
-    return translate_table(sheet_table(comparisons, h.graphical, h.analytic), lang)
+    return translate_table(sheet_table(comparisons, h.graphical, h.analytic, points_of_links=True), lang)
+
+
+def _forces_pages(doc, positions, lang: str, multi: bool) -> None:
+    """The kinetostatic pages of each of *positions* (:func:`plans.pages.forces.force_pages`): its free bodies, its
+    force plans at one μ_F, Joukowski's lever (not when the driver is at rest) and the three methods side by side."""
+    from ..forces.analytic import forces_from
+    from ..forces.lever import LeverError, joukowski_lever
+    from .forces import force_pages
+
+    doc.plate_name = "kinetostatics"  # the title block of the force pages
+    for h in positions:
+        try:
+            lever = joukowski_lever(h.graphical)
+        except LeverError:
+            lever = None  # the driver at rest: no arm for the balancing force (the force plans still give M_b)
+        where = f"{term('position', lang)} {h.index}:  {h.label}" if multi else None
+        force_pages(doc, h.graphical, lever=lever, analytic=forces_from(h.analytic), where=where, key=f"forces-{h.index}")
+    doc.plate_name = "plate_title"
 
 
 def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambda words: None) -> float | None:
-    """A page of instant centres for every position of *positions*: the mechanism with its centres at one k_l
-    for all the pages (the plate's, or the coarsest any of them needs to hold its drawing), stated on each page
-    and in their title block; the circle diagram, the rules and the table.  Returns that k_l (None: no page
-    has a drawing)."""
+    """The instant centres' pages: first the method (its title, Kennedy's theorem and the circle diagram, the same
+    for every position, drawn once), then a page for every position of *positions*: the mechanism with its centres
+    at one k_l for all the pages (the plate's, or the coarsest any of them needs to hold its drawing above its
+    table), stated on each page and in their title block; the table and the rules.  Returns that k_l (None: no
+    page has a drawing)."""
     from ..centres import instant_centres
     from ..compare import compare_centres
     from ..drawing.centres import CentresSizer
-    from ..drawing.centres_page import ROOM_MIN
+    from ..drawing.centres_page import ROOM_MIN, centres_page_table
     from ..drawing.svgblocks import centres_svg, circle_diagram_svg
     from ..errors import PlansError
 
-    pages = []  # (h, result, comparisons, diagram, box) or (h, error)
+    pages = []  # (h, result, comparisons, table, box) or (h, error)
     k = k_l
+    diagram = None
     for n, h in enumerate(positions, start=1):
         say(f"{term('instant_centres', lang)} {n}/{len(positions)}")
         try:
@@ -681,51 +748,67 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         except PlansError as exc:
             pages.append((h, exc))
             continue
-        # the drawing gets what the page leaves beside its heading, the legend and the circle diagram with the table
-        diagram = circle_diagram_svg(result, lang)
-        box = (TEXT_WIDTH, min(150.0, TEXT_HEIGHT - CENTRES_PAGE_TEXT - max(diagram.height, 55.0)))
+        if diagram is None:
+            diagram = (f"circle-{h.index}", circle_diagram_svg(result, lang))
+        # the drawing gets what the page leaves under its heading and the legend, over the table and the rules
+        table = centres_page_table(result, comparisons, lang)
+        box = (TEXT_WIDTH, min(CENTRES_DRAWING_MAX, TEXT_HEIGHT - CENTRES_PAGE_TEXT - CENTRES_ROW * len(table)))
         # sizes from geometry (two drawings of the mechanism alone, plans.drawing.centres.CentresSizer)
         sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
         for _ in range(24):
-            width, height = sizer.size(k)
+            width, height = sizer.size(k, box)
             if width <= box[0] + 0.5 and height <= box[1] + 0.5:
                 break
             k = round_up(k * max(width / box[0], height / box[1], 1.0001))
-        pages.append((h, result, comparisons, diagram, box))
+        pages.append((h, result, comparisons, table, box))
     drawn = [p for p in pages if len(p) > 2]
     blocks = {}
     for _ in range(4):  # the sizer is exact at its own two scales, close elsewhere: coarser while a drawing runs over
         over = 1.0
         for h, result, _, _, box in drawn:
             if h.index not in blocks or blocks[h.index][0] != k:
-                blocks[h.index] = (k, centres_svg(result, k, lang, room_min=ROOM_MIN))
+                blocks[h.index] = (k, centres_svg(result, k, lang, room_min=ROOM_MIN, limit=box))
             block = blocks[h.index][1]
             over = max(over, block.width / (box[0] + 0.5), block.height / (box[1] + 0.5))
         if over <= 1.0:
             break
         k = round_up(k * over * 1.0001)
+    _centres_method(doc, diagram, k, lang, drawn[0][1] if drawn else None)
     for page in pages:
         _centres_page(doc, page, k, blocks, lang, multi)
     return k if drawn else None
 
 
-def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
-    """The page of instant centres of one position (:func:`_centres_pages`)."""
-    from ..drawing.centres_page import centres_page_table, centres_rules
+def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
+    """The centres' first page: the method's title, Kennedy's theorem, the circle diagram (once: it is the same for
+    every position), the rules and the order of finding the centres (*result*: a position's centres)."""
+    from ..drawing.centres_page import centres_order_table, centres_rules
 
-    h = page[0]
-    title = f"{term('centres_page', lang)}" + (f" — {term('position', lang)} {h.index}:  {h.label}" if multi else "")
-    doc.heading(title, level=2, new_page=True)
+    doc.heading(term("centres_page", lang), level=2, new_page=True)
     doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k)}])")  # the title block of the centres' pages
     kennedy = term("kennedy_theorem", lang)
-    doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=SMALL_PT)
+    doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=TEXT_PT)
+    if diagram is not None and result is not None:
+        doc.beside(diagram, [], [term("centres_legend", lang), term("centres_edge_legend", lang)]
+                   + centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
+        doc.tables([(term("centres_order", lang), centres_order_table(result, lang))], aligns="(left, left)")
+
+
+def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
+    """The page of instant centres of one position (:func:`_centres_pages`), headed by the position in one line."""
+    from ..drawing.centres_page import centres_rules
+
+    h = page[0]
+    where = f"{term('position', lang)} {h.index}:  {h.label}"
+    doc.heading(f"{term('instant_centres', lang)} — {where}" if multi else f"{term('instant_centres', lang)}:  {h.label}",
+                level=2, new_page=True)
     if len(page) == 2:
         doc.line(str(page[1]), size=TEXT_PT)
         return
-    _, result, comparisons, diagram, _ = page
+    _, result, _, table, _ = page
     doc.figure(f"centres-{h.index}", blocks[h.index][1])
     doc.line(f"{term('centres_legend', lang)};  {term('centres_edge_legend', lang)}", size=SMALL_PT)
-    doc.beside((f"circle-{h.index}", diagram), centres_page_table(result, comparisons, lang), centres_rules(lang, result.scene.frame_number))
+    doc.beside(None, table, centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
 
 
 def data_lines(scene, lang: str) -> list[str]:

@@ -18,7 +18,7 @@ from ..i18n import term
 from .._text import subscript
 from ..scene import FRAME, Crank, Scene
 
-__all__ = ["scene_data_lines", "cycle_lines", "four_bar_kind", "namer", "assembly_lines", "group_words", "assembly_text", "units", "formula_words", "KINDS"]
+__all__ = ["scene_data_lines", "cycle_lines", "four_bar_kind", "namer", "assembly_lines", "group_words", "block_words", "assembly_text", "units", "formula_words", "KINDS"]
 
 
 def namer(scene, lang: str):
@@ -35,6 +35,17 @@ def group_words(group: str, lang: str) -> str:
     if not m:
         return group
     return f"{term('group', lang)} {m.group(1)}–{m.group(2)}"
+
+
+def block_words(title: str, lang: str) -> str:
+    """A loop block's title as the pages name its part: ``RRR(3,4)`` → ``group 3–4`` (:func:`group_words`), the
+    driver's ``I(1,2)`` → ``driver 2``, as the vector equations name them; another title as a formula."""
+    m = re.fullmatch(r"I\(([^,()]+),([^,()]+)\)", title)
+    if m:
+        return f"{term('driver', lang)} {m.group(2)}"
+    if _GROUP.match(title):
+        return group_words(title, lang)
+    return formula_words(title)
 
 
 _NAME = r"[^\W]+"

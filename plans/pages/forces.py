@@ -1,0 +1,549 @@
+"""The kinetostatic pages of a position, set by Typst (``plans handout --forces``, ``plans forces -o``).
+
+Matplotlib draws only the drawings (:mod:`plans.drawing.force_blocks`): the
+free bodies of the groups and of the driver at a k_l of their own, each force
+plan at the position's one μ_F, Joukowski's lever at its velocity plan's k_v.
+They are placed at 100 %, so the scale factors the pages state hold on paper.
+Everything else is Typst's, in the reader's language: the headings (a group
+named as the course names it, "group 3–4 (II₁)"), the given loads (N, and mm at
+μ_F), what each plan's construction reads off it (R = drawn mm × μ_F; a
+reaction carried to the next plan as R_ji = −R_ij with the value found; the
+components Rᵗ found first; vectors too short for an arrow), M_b with its
+sense, the legends' words, the lever's moments about the pole and the table of
+the three methods (analytic, force plans, Joukowski's lever) with each
+method's difference from the analytic value.
+
+Three pages a position: the free bodies with the given loads; the force plans
+(μ_F stated in the heading and in the title block); Joukowski's lever with the
+table of the three methods.
+
+μ_F is found from geometry: the plans are constructed once at their own round
+scales, drawn once to learn what does not scale (labels, margins), and μ_F is
+the smallest round value with which the largest plan fits its cell; they are
+then constructed at that μ_F (by :func:`plans.forces.force_plans.construct_force_plans`,
+here: drawing never constructs) and drawn, a round step coarser only while one
+runs over its cell.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+from ..graphical.scales import round_up
+from ..i18n import term
+from .document import GUTTER, SMALL_PT, TEXT_PT, Document
+from .words import KINDS, group_words
+
+__all__ = ["ForcePages", "force_pages", "force_scale", "force_document", "group_names", "drawn_group_names", "PLAN_ROOM", "FREE_BODIES_BOX"]
+
+#: the height [mm] the force plans and the readings under them share down their page, by default (a page gives
+#: its text height less its heading and legend, :func:`force_pages`)
+PLAN_ROOM = 218.0
+#: the box [mm] the free bodies are drawn in at most (the text width; the given loads and the legend under
+#: them take what they need of the page's height first, :func:`force_pages`)
+FREE_BODIES_BOX = (175.0, 170.0)
+
+#: the tallest a plan's cell may be [mm] (two plans side by side need not fill the page)
+PLAN_CELL_MAX = 120.0
+#: the height of a line of readings under a plan [mm] (8 pt with its leading)
+READING_LINE = 3.9
+
+
+@dataclass
+class ForcePages:
+    """What the pages of one position hold (for callers and tests).
+
+    Attributes
+    ----------
+    mu_F : float
+        The one force scale [N/mm] of every plan of the position.
+    k_l : float
+        The scale [m/mm] of the free bodies.
+    plans : plans.forces.force_plans.ForcePlans
+        The force plans constructed at ``mu_F`` (what the pages read).
+    images : dict[str, str]
+        What each drawing is: input key -> ``"free-bodies"``, ``"plan:<group>"``, ``"lever"``.
+    comparisons : tuple
+        :func:`plans.forces.compare.compare_forces` of the pages' plans and lever against the analytic values.
+    """
+
+    mu_F: float
+    k_l: float
+    plans: object
+    images: dict[str, str] = field(default_factory=dict)
+    comparisons: tuple = ()
+
+
+# --- numbers as a page writes them -----------------------------------------------------------
+
+
+def _number(value: float, digits: int = 4) -> str:
+    """*value* to *digits* significant figures (a point; the page's words make it a comma where the language has one)."""
+    if value == 0 or not math.isfinite(value):
+        return "0" if value == 0 else "—"
+    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
+    return _minus(f"{value:.{decimals}f}")
+
+
+def _reading(value: float, step: float | None) -> str:
+    """A value read to *step* (as many decimals as the step has), or to 4 significant figures without one."""
+    if not step:
+        return _number(value)
+    decimals = len(f"{step:.10f}".rstrip("0").partition(".")[2])
+    return _minus(f"{round(value / step) * step:.{decimals}f}")
+
+
+def _minus(text: str) -> str:
+    return text.replace("-", "−")
+
+
+def _scale(value: float) -> str:
+    from ..drawing._canvas import fmt_number
+
+    return fmt_number(value)
+
+
+def _math(label: str) -> str:
+    from ..drawing.force_drawing import force_math
+
+    return force_math(label)
+
+
+def _lower(words: str) -> str:
+    return words[:1].lower() + words[1:] if words[1:2].islower() or len(words) < 2 else words
+
+
+def group_names(plans, lang: str) -> dict[str, str]:
+    """Group -> its name in the course's words: ``"RRR(3,4)"`` -> ``"group 3–4 (II₁)"`` (``$…$`` math)."""
+    out = {}
+    for plan in plans:
+        if plan.group == "driver":
+            continue
+        kind = plan.group.partition("(")[0]
+        order = KINDS.get(kind)
+        out[plan.group] = group_words(plan.group, lang) + (f" ($\\mathrm{{II}}_{{{order}}}$)" if order else "")
+    return out
+
+
+def drawn_group_names(plans, lang: str) -> dict[str, str]:
+    """:func:`group_names` as a drawing writes them (plain text: ``"group 3–4 (II₁)"``, a Unicode subscript)."""
+    return _drawn_names(group_names(plans, lang))
+
+
+def _drawn_names(names: dict) -> dict[str, str]:
+
+    from .._text import subscript
+
+    return {k: re.sub(r"\$\\mathrm\{II\}_\{(\d)\}\$", lambda m: "II" + subscript(m.group(1)), v) for k, v in names.items()}
+
+
+def _plan_title(plan, names: dict, lang: str) -> str:
+    from ..drawing.force_drawing import driving_link_words
+
+    if plan.group == "driver":
+        crank = not any(v.label == "F_b" for v in plan.vectors)  # a linear driver's plan carries F_b; a crank's M_b is a couple
+        return f"{term('force_plan', lang)}: {driving_link_words(plan.links[0], crank, lang)}"
+    return f"{term('force_plan', lang)}: {names.get(plan.group, plan.group)}"
+
+
+# --- μ_F from geometry ------------------------------------------------------------------------
+
+
+def _extent(plan) -> tuple[float, float]:
+    """The plan's polygon extent [N] (across, up): the drawn extent times its μ_F."""
+    zs = [z for v in plan.vectors for z in (v.tail, v.tip)] + [0j]
+    xs, ys = [z.real for z in zs], [z.imag for z in zs]
+    return (max(xs) - min(xs)) * plan.scale, (max(ys) - min(ys)) * plan.scale
+
+
+def _cells(plans, width: float, columns: int) -> tuple[int, float, list[float]]:
+    """(columns, the cell's width [mm], the height of the readings under each row [mm]) of the force plans' page
+    with *columns* plans across."""
+    n = len(plans)
+    columns = min(columns, n)
+    cell = (width - (columns - 1) * GUTTER) / columns
+    # a line of readings runs over into a second where it is longer than the cell is wide (8 pt: ~1.45 mm a character)
+    per_line = max(20, int(cell / 1.45))
+    texts = []
+    for r in range(0, n, columns):
+        row = plans[r:r + columns]
+        texts.append(max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)) + 1 for p in row)
+                     * READING_LINE + 4.0)
+    return columns, cell, texts
+
+
+def _visible(line: str) -> int:
+    """How many characters a line of the program's text prints (its math markup left out)."""
+
+    return len(re.sub(r"\\mathrm|[${}_^\\]", "", line))
+
+
+def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], room: float = PLAN_ROOM):
+    """(μ_F [N/mm], the plans constructed at it, their SVG blocks, columns): the smallest round μ_F with which every
+    force plan fits its cell's width and the rows of plans with their readings fit *room* [mm] down the page.
+
+    Found from geometry: the plans are constructed once at their own scales and drawn once (what does not
+    scale — labels, margins — is what a drawing takes beyond its polygon), the sizes at any μ_F follow; then
+    constructed and drawn at the μ_F found, a round step coarser only while they run over.
+    """
+    from ..drawing.force_blocks import force_plan_svg
+    from ..forces.force_plans import construct_force_plans
+
+    first = construct_force_plans(graphical, mu_F=None)
+    sizes = []  # (fixed width, fixed height [mm], extent across, up [N]) of each plan
+    for plan in first.plans:
+        block = force_plan_svg(plan, lang)
+        ex, ey = _extent(plan)
+        sizes.append((block.width - ex / plan.scale, block.height - ey / plan.scale, ex, ey))
+
+    def fits(mu: float, drawn=None, columns: int = 2) -> bool:
+        columns, cell, texts = _cells(first.plans, width, columns)
+        wide = [fw + ex / mu for fw, _, ex, _ in sizes] if drawn is None else [b.width for b in drawn]
+        tall = [fh + ey / mu for _, fh, _, ey in sizes] if drawn is None else [b.height for b in drawn]
+        rows = [max(tall[k:k + columns]) for k in range(0, len(tall), columns)]
+        return max(wide) <= cell + 0.5 and sum(rows) + sum(texts) + 5.0 * (len(rows) - 1) <= room + 0.5 and max(tall) <= PLAN_CELL_MAX + 0.5
+
+    best = None
+    for columns in (1, 2):  # one plan under the other, or two across: whichever draws them larger
+        cell = _cells(first.plans, width, columns)[1]
+        mu = round_up(max(ex / max(cell - fw, 0.3 * cell) for fw, _, ex, _ in sizes) or max(p.scale for p in first.plans))
+        for _ in range(60):  # the round values upwards (no drawing: the sizes above)
+            if fits(mu, columns=columns):
+                break
+            mu = round_up(mu * 1.0001)
+        if best is None or mu < best[0] * 0.999:
+            best = (mu, columns)
+    mu, columns = best
+    for _ in range(8):
+        plans = construct_force_plans(graphical, mu_F=mu)
+        blocks = [force_plan_svg(plan, lang) for plan in plans.plans]
+        if fits(mu, blocks, columns):
+            break
+        mu = round_up(mu * 1.0001)
+    return mu, plans, blocks, min(columns, len(plans.plans))
+
+
+def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX):
+    """(k_l [m/mm], block): the free bodies in one row or two, at the round k_l that draws them largest within *box*."""
+    from ..drawing.force_blocks import free_bodies_svg
+
+    count = len(plans.plans)
+    best = None
+    g = graphical
+    spans = []
+    for plan in plans.plans:
+        zs = [g.positions[n] for body in plan.links for n in g.scene.bodies[body].points]
+        zs += [f.at for body in plan.links for f in plans.on(body)[0]]
+        spans.append((max(z.real for z in zs) - min(z.real for z in zs), max(z.imag for z in zs) - min(z.imag for z in zs)))
+    drawn = _drawn_names(names)
+    for per_row in dict.fromkeys([count, -(-count // 2)]):
+        rows = [spans[k:k + per_row] for k in range(0, count, per_row)]
+        extent = (max(sum(w for w, _ in row) for row in rows), sum(max(h for _, h in row) for row in rows))
+        k0 = g.scales["k_l"]
+        block = free_bodies_svg(plans, k0, lang, per_row, drawn)
+        need = 0.0
+        for size, size_drawn, room in zip(extent, (block.width, block.height), box):
+            fixed = size_drawn - size / k0
+            if size > 0:
+                need = max(need, size / max(room - fixed, 0.3 * room))
+        k = round_up(need) if need > 0 else k0
+        for _ in range(6):
+            block = free_bodies_svg(plans, k, lang, per_row, drawn)
+            if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
+                break
+            k = round_up(k * 1.0001)
+        if best is None or k < best[0]:
+            best = (k, block)
+    return best
+
+
+# --- what the pages say -----------------------------------------------------------------------
+
+
+def _step(plan) -> float | None:
+    return plan.precision * plan.scale if plan.precision else None
+
+
+def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en") -> list[str]:
+    """The lines under a force plan: reactions carried from a plan before, the components Rᵗ found first, the
+    reactions read off it (drawn mm × μ_F), the vectors too short for an arrow, M_b on the driver's."""
+    from ..drawing.force_drawing import SHORT_MM, sense_arrow
+
+    vectors = [v for v in plan.vectors if v.length > 1e-9]
+    mu = _scale(plan.scale)
+    lines = []
+    for v in vectors:
+        if v.kind == "reaction" and v.label not in plan.found:
+            head, _, sub = v.label.partition("_")
+            opposite = f" = −{_math(f'R_{sub[::-1]}')}" if head == "R" and len(sub) == 2 else ""
+            lines.append(f"{_math(v.label)}{opposite} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm "
+                         f"({term('carried', lang)})")
+    tangential = [v for v in vectors if v.kind == "tangential"]
+    if tangential:
+        lines.append(f"{term('found_first', lang)}: " + ";  ".join(
+            f"{_math(v.label)} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm" for v in tangential))
+    for v in vectors:
+        if v.label in plan.found:
+            lines.append(f"{_math(v.label)} = {_reading(v.length, plan.precision)} mm · {mu} N/mm = {_reading(v.value, _step(plan))} N")
+    short = [v for v in vectors if v.length < SHORT_MM]
+    if short:
+        lines.append(";  ".join(f"|{_math(v.label)}| = {v.length:.2f} mm ({_number(given[v.label]) if v.label in given else _reading(v.value, _step(plan))} N)"
+                                for v in short))
+    if balancing_moment is not None:
+        lines.append(f"$M_{{\\mathrm{{b}}}}$ = {_number(abs(balancing_moment))} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})")
+    return lines
+
+
+_LOAD_KIND = {"weight": "weight", "inertia": "inertia_force", "external": "external_force"}
+
+
+def _loads_table(plans, lang: str) -> list[list[str]]:
+    """The given loads: symbol, link, kind, value (N or N·m), drawn length [mm] at μ_F on the plan that carries it."""
+    drawn = {}
+    for plan in plans.plans:
+        for v in plan.vectors:
+            if v.kind in _LOAD_KIND:
+                drawn.setdefault(v.label, (v.length, plan.precision))
+    rows = [["", term("link", lang), term("kind", lang), "N, N·m", "mm ($μ_F$)"]]
+    for f in plans.loads:
+        length = drawn.get(f.label)
+        rows.append([_math(f.label), f.body, term(_LOAD_KIND.get(f.kind, "external_force"), lang), f"{_number(abs(f.force))} N",
+                     _reading(*length) if length else "—"])
+    for c in plans.couples:
+        if c.kind == "balancing" or c.moment == 0:
+            continue
+        rows.append([_math(c.label), c.body, term("inertia_couple" if c.kind == "inertia" else "couple", lang), f"{_number(c.moment)} N·m", "—"])
+    return rows
+
+
+def _methods_table(comparisons, analytic, lang: str) -> list[list[str]]:
+    """The three methods side by side: M_b (or F_b) by analytic, force plans and the lever; each reaction by
+    analytic and force plans; each method's difference from the analytic value [%]."""
+    from ..forces.report import method_name
+
+    rows = [[term("quantity", lang), method_name("analytic", lang), method_name("force_plans", lang), "δ [%]", method_name("lever", lang), "δ [%]"]]
+    by = {(c.quantity, c.method): c for c in comparisons}
+    symbol = "M_b" if analytic.balancing_kind == "moment" else "F_b"
+    unit = "N·m" if symbol == "M_b" else "N"
+    exact = float(analytic.balancing[0])
+    row = [f"${symbol[0]}_{{\\mathrm{{b}}}}$ [{unit}]", _number(exact, 6)]
+    for method in ("force_plans", "lever"):
+        c = by.get((symbol, method))
+        row += [_number(c.value.real, 6), _percent(c.rel_error)] if c is not None else ["—", "—"]
+    rows.append(row)
+    for label, reaction in analytic.reactions.items():
+        force = complex(reaction.force[0])
+        c = by.get((label, "force_plans"))
+        cell = _polar(force)
+        rows.append([f"{_math(label)} [N]", cell, _polar(complex(c.value)) if c is not None else "—", _percent(c.rel_error) if c is not None else "—", "", ""])
+    return rows
+
+
+def _polar(z: complex) -> str:
+    if abs(z) == 0:
+        return "0"
+    return f"{_number(abs(z), 6)} ∠ {math.degrees(math.atan2(z.imag, z.real)) % 360.0:.2f}°"
+
+
+def _percent(rel: float) -> str:
+    return f"{100 * rel:.2f}".replace("-", "−")
+
+
+# --- the pages --------------------------------------------------------------------------------
+
+
+def _table(doc: Document, rows, aligns: str, heading: str | None = None) -> str:
+    """A table across the text width (the first row its header), as Typst markup."""
+    ncol = len(rows[0])
+    body = []
+    for i, row in enumerate(rows):
+        weight = "bold" if i == 0 else "regular"
+        body.append(", ".join(f"text(weight: \"{weight}\")[{_words(doc, str(c))}]" for c in list(row) + [""] * (ncol - len(row))))
+    title = f"#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{_words(doc, heading)}] \\\n" if heading else ""
+    return (f"#block(breakable: false)[{title}#text(size: {SMALL_PT}pt)[#table(columns: {ncol}, stroke: none, inset: (x: 1.4mm, y: 0.9mm), align: {aligns}, "
+            f"table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]]\n")
+
+
+def _legend(doc: Document, key: str, kinds, lang: str) -> str:
+    """The legend: each kind's sample (drawn) and its words (set), two columns of rows."""
+    from ..drawing.force_blocks import force_key_svg
+    from ..drawing.force_drawing import FORCE_LEGEND
+
+    cells = []
+    for kind in kinds:
+        words = term("construction_line", lang) if kind == "construction" else term("lever_arm_rule", lang) if kind == "arm" else _lower(term(FORCE_LEGEND[kind], lang))
+        cells.append(f"[#{doc.add_image(f'{key}-key-{kind}', force_key_svg(kind))}], [#text(size: {SMALL_PT}pt)[{_words(doc, words)}]]")
+    columns = 4 if len(kinds) > 2 else 2
+    sizes = ", ".join(["auto", "1fr"] * (columns // 2))
+    return f"#grid(columns: ({sizes}), column-gutter: 2mm, row-gutter: 1.6mm, align: left + horizon, {', '.join(cells)})\n"
+
+
+#: the newton, as the course in a language writes it (the other units: :func:`plans.pages.words.units`)
+_NEWTON = {"ru": "Н", "bg": "Н"}
+
+
+def _newtons(line: str, lang: str) -> str:
+    """*line* with the unit N (outside its ``$…$`` math) as the course in *lang* writes it."""
+    if lang not in _NEWTON:
+        return line
+    pieces = re.split(r"(?<!\\)(\$[^$]*\$)", line)
+    return "".join(p if p.startswith("$") else re.sub(r"(?<![\w\\{])N(?=[·/ \])\];,]|$)", _NEWTON[lang], p) for p in pieces)
+
+
+def _words(doc: Document, line: str) -> str:
+    """A line of the page's text as markup in its language (:meth:`Document.words`), N as the course writes it."""
+    return doc.words(_newtons(line, doc.lang))
+
+
+def _scale_note(doc: Document, words: str) -> None:
+    """The page's own scale for the title block (as :meth:`plans.pages.document.Document.full_page` leaves it)."""
+    doc.body.append(f"#metadata([{_words(doc, words)}]) <plans-page-scale>\n")
+
+
+def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: str | None = None, key: str = "forces") -> ForcePages:
+    """Set the kinetostatic pages of one position into *doc*: the free bodies and the given loads; the force plans at
+    one μ_F with their readings; Joukowski's lever (when given) and the three methods side by side (with *analytic*,
+    :class:`plans.forces.analytic.AnalyticForces` of the position).
+
+    *where*: the position in words (a line under each heading); *key*: the prefix of the drawings' input keys.
+    """
+    from ..drawing.force_blocks import lever_svg
+    from ..drawing.force_drawing import given_loads, legend_kinds
+    from ..forces.compare import compare_forces
+
+    lang = doc.lang
+    mu, plans, blocks, columns = force_scale(graphical, lang, doc.page.text_width, doc.page.text_height - 33.0)
+    names = group_names(plans.plans, lang)
+    loads = _loads_table(plans, lang)
+    # what the free bodies' page sets beside them: heading (and the position), k_l, legend, the loads' table
+    text = 16.0 + (5.0 if where else 0.0) + 5.0 + 4.6 * -(-len(_body_kinds(plans)) // 2) + 8.0 + 4.2 * len(loads) + 6.0
+    box = (doc.page.text_width, min(FREE_BODIES_BOX[1], doc.page.text_height - text))
+    k_l, free = _free_bodies(plans, graphical, lang, names, box)
+    pages = ForcePages(mu, k_l, plans)
+    mu_words = f"$μ_{{F}}$ = {_scale(mu)} N/mm"
+    head = term("kinetostatics", lang)
+
+    def heading(what: str) -> None:
+        doc.heading(_newtons(f"{head} — {what}", lang), level=2, new_page=True)
+        if where:
+            doc.line(_newtons(where, lang), size=TEXT_PT)
+
+    # 1. the free bodies, the given loads and the legend
+    heading(_lower(term("free_bodies", lang)))
+    plate_kl = doc.plate.get("k_l")
+    if plate_kl is not None:
+        doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])")  # the title block states the free bodies' k_l
+    _scale_note(doc, mu_words)
+    doc.figure(f"{key}-free-bodies", free)
+    pages.images[f"{key}-free-bodies"] = "free-bodies"
+    doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}", lang), size=SMALL_PT)
+    doc.body.append(_legend(doc, f"{key}-bodies-legend", _body_kinds(plans), lang))
+    doc.body.append(_table(doc, loads, "(left, left, left, right, right)", f"{term('loads', lang)}: {mu_words}"))
+
+    # 2. the force plans at one μ_F
+    heading(f"{_lower(term('force_plans', lang))}; {mu_words}")
+    if plate_kl is not None:
+        doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', plate_kl)}])")
+    _scale_note(doc, mu_words)
+    given = given_loads(plans)
+    items = []
+    for plan, block in zip(plans.plans, blocks):
+        image_key = f"{key}-plan-{len(items) + 1}" if plan.group != "driver" else f"{key}-plan-driver"
+        pages.images[image_key] = f"plan:{plan.group}"
+        moment = plans.balancing_moment if plan.group == "driver" else None
+        lines = _plan_lines(plan, given, moment, lang)
+        parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]",
+                 f"#align(center)[#{doc.add_image(image_key, block)}]"]
+        parts += [f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}]" for line in lines]
+        items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]")
+    doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
+    kinds, closing = legend_kinds(plans.plans)
+    doc.body.append("#v(1fr)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
+
+    # 3. Joukowski's lever and the three methods
+    comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
+    pages.comparisons = comparisons
+    if lever is not None:
+        heading(term("joukowski_lever", lang))
+        doc.line(_newtons(f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", lang), size=SMALL_PT)
+        doc.line(_newtons(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$", lang), size=TEXT_PT)
+        doc.figure(f"{key}-lever", lever_svg(lever, lang))
+        pages.images[f"{key}-lever"] = "lever"
+        doc.body.append(_legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang))
+        doc.body.append(_table(doc, _lever_rows(lever, lang), "(left, left, right, right, right, left)", term("lever_moments", lang)))
+        for line in _lever_result(lever, lang):
+            doc.line(_newtons(line, lang), size=TEXT_PT)
+    elif comparisons:
+        doc.body.append("#v(4mm)")
+    if comparisons:
+        doc.body.append(_table(doc, _methods_table(comparisons, analytic, lang), "(left, right, right, right, right, right)", term("force_methods", lang)))
+    return pages
+
+
+def _body_kinds(plans) -> list[str]:
+    """The kinds of force the free bodies draw (in the legend's order)."""
+    from ..drawing.force_drawing import FORCE_LEGEND
+
+    drawn = {f.kind for body in {b for p in plans.plans for b in p.links} for f in plans.on(body)[0] if abs(f.force)}
+    return [k for k in FORCE_LEGEND if k in drawn]
+
+
+_LEVER_KIND = {"weight": "weight", "inertia force": "inertia", "inertia couple": "inertia", "force": "external", "resistance": "external",
+               "moment": "external", "balancing": "balancing"}
+
+
+def _lever_kinds(lever) -> list[str]:
+    drawn = {_LEVER_KIND.get(f.kind, "external") for f in list(lever.forces) + [lever.balancing_force] if abs(f.force)}
+    return [k for k in ("weight", "inertia", "external", "balancing") if k in drawn]
+
+
+def _lever_rows(lever, lang: str) -> list[list[str]]:
+    """The moments about the pole: force, its image, |F| [N], arm h [mm], F·h [N·mm], and for a couple's pair how it was found."""
+    from ..drawing.force_drawing import lever_names
+
+    names = lever_names(lever)
+    moments = {(load.name, load.body): float(load.moment) for load in lever.loads if load.is_couple}
+    pairs: dict = {}
+    for f in lever.forces:
+        if f.kind in ("inertia couple", "moment"):
+            pairs.setdefault((f.name, f.body), []).append(f)
+    rows = [["", term("image", lang), "|F| [N]", "h [mm]", "F·h [N·mm]", ""]]
+    for f in list(lever.forces) + [lever.balancing_force]:
+        if abs(f.force) == 0:
+            continue
+        arm = f.arm if abs(f.arm) >= 0.05 else 0.0
+        note = ""
+        pair = pairs.get((f.name, f.body), [])
+        if len(pair) == 2 and (f.name, f.body) in moments:
+            ends = "".join(q.image.upper() for q in pair)
+            couple = moments[(f.name, f.body)]
+            length = abs(couple) / abs(f.force)
+            note = f"= {_math(f.name)}/$l_{{\\mathrm{{{ends}}}}}$ = {_number(abs(couple))} N·m / {length:.4g} m"
+            if f is pair[0]:
+                note += f"; {term('lever_pair', lang).format(points=', '.join(q.image for q in pair))}"
+        rows.append([_math(names[id(f)]), f.image, _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
+    return rows
+
+
+def _lever_result(lever, lang: str) -> list[str]:
+    from ..drawing.force_drawing import sense_arrow
+
+    lines = [f"{_math(c.name)} = {_number(c.couple)} N·m → {_number(c.moment)} N·mm ({term('lever_block_couple', lang)})" for c in lever.couples]
+    if lever.balancing_kind == "moment":
+        lines.append(f"$M_{{\\mathrm{{b}}}}$ = $F_{{\\mathrm{{b}}}}$·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force))} N · "
+                     f"{lever.crank_length:.4g} m = {_number(abs(lever.balancing))} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))})")
+    else:
+        lines.append(f"$F_{{\\mathrm{{b}}}}$ = {_number(lever.balancing)} N ({_lower(term('balancing_force', lang))})")
+    return lines
+
+
+def force_document(run, lang: str = "en") -> tuple[Document, ForcePages]:
+    """The kinetostatic pages of one position of ``plans forces`` (a :class:`plans.forces.compare.KinetostaticRun`
+    with its graphical solution) as a Document of their own: its title block states the run's scales."""
+    doc = Document(run.scene, lang)
+    doc.plate = dict(run.graphical.scales)
+    doc.plate_name = "kinetostatics"
+    pages = force_pages(doc, run.graphical, lever=run.lever, analytic=run.analytic)
+    return doc, pages
