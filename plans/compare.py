@@ -121,7 +121,12 @@ def compare(analytic, graphical, position: int = 0) -> list[Comparison]:
         rows.append(Comparison(section, name, quantity, a, g, error, rel))
     return rows
 
-__all__ += ["compare_centres"]
+__all__ += ["compare_centres", "ROUNDOFF"]
+
+
+#: A value from the centres or the analytic solution at most this fraction of the largest of its kind at the position
+#: is round-off of a zero (as :data:`plans.report.TABLE_ROUNDOFF` for the tables): compared as exactly 0.
+ROUNDOFF = 1e-9
 
 
 def compare_centres(analytic, centres, position: int = 0) -> list[Comparison]:
@@ -146,10 +151,12 @@ def compare_centres(analytic, centres, position: int = 0) -> list[Comparison]:
     pairs += [("links", name, "omega", _analytic_value(analytic, "links", name, "omega", position), float(centres.links[name]))
               for name in scene.links]
     largest: dict[str, float] = {}
-    for _, _, quantity, a, _ in pairs:
-        largest[quantity] = max(largest.get(quantity, 0.0), abs(a))
+    for _, _, quantity, a, c in pairs:
+        largest[quantity] = max(largest.get(quantity, 0.0), abs(a), abs(c))
     rows = []
     for section, name, quantity, a, c in pairs:
+        # round-off of a zero (a dead centre's ω₄ = −2·10⁻¹⁵, v_D = 1·10⁻¹⁵): exactly zero, in both methods
+        a, c = (type(x)(0) if abs(x) <= ROUNDOFF * largest[quantity] else x for x in (a, c))
         error = abs(c - a)
         reference = max(abs(a), ZERO_FRACTION * largest[quantity])
         rows.append(Comparison(section, name, quantity, a, c, error, error / reference if reference > 0 else 0.0))

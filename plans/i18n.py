@@ -1233,3 +1233,16 @@ TERMS.update({
         "sl": "{points}: izhodni drsnik; njegova v in a s predznakom sta v kinematičnih diagramih",
     },
 })
+
+
+# --- plan notes and readings (issue 20 §3, branch plan-notes) -------------------------------------
+TERMS.update({
+    # a plan's enlarged detail, named as a drawing names it ("detail I"; ГОСТ 2.305: "выносной элемент I")
+    "detail": {
+        "en": "detail",
+        "sr": "детаљ",
+        "ru": "выносной элемент",
+        "bg": "детайл",
+        "sl": "detajl",
+    },
+})

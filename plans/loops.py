@@ -306,6 +306,22 @@ class _Builder:
         )
 
 
+def _origin(pin: str) -> str:
+    """The point of a guide from which a slider's travel s is measured, when the scene names none there: ``Q_E`` for
+    the slider at E (s_E = 0 there), defined on the page by :func:`_origin_lines` (never the guide's program name)."""
+    return f"Q_{{{_sub(pin)}}}"
+
+
+def _origin_lines(b: _Builder, terms) -> list[str]:
+    """``z_{Q_E} (s_E = 0) = … m``: where each unnamed guide point of a loop (:func:`_origin`) is."""
+    lines = []
+    for t in terms:
+        if isinstance(t, _Point) and t.label.startswith("Q_{"):
+            pin = t.label[3:-1]
+            lines.append(rf"$z_{{{t.label}}}\ (s_{{{pin}}} = 0) = {_cplx(t.r, True)}\ \mathrm{{m}}$")
+    return lines
+
+
 def _meeting(scene: Scene, group) -> tuple[str | None, dict[str, complex]]:
     """Where the two paths meet: the inner joint's name and its local coordinates on each link."""
     inner = group.inner
@@ -331,13 +347,13 @@ def _path(b: _Builder, group, link: str, outer, meet_name, meet_local):
         known = outer.bodies[1]
         if pair.slider == link:  # the link slides on a line of the known body
             guide_line = scene.bodies[known].lines[pair.guide_line]
-            q_name = b.point_name(known, guide_line.origin, f"Q_{{{_sub(guide_line.name)}}}")
+            q_name = b.point_name(known, guide_line.origin, _origin(pair.name))
             terms.append(b.known_point(known, guide_line.origin, q_name))
             terms.append(b.slide(pair, known, guide_line, unknown_angle=False))
             own_line = body.lines[pair.slider_line]
         else:  # the known body slides on a line of the link: Q_link = Q_known − s·u_link
             slider_line = scene.bodies[known].lines[pair.slider_line]
-            q_name = b.point_name(known, slider_line.origin, f"Q_{{{_sub(slider_line.name)}}}")
+            q_name = b.point_name(known, slider_line.origin, _origin(pair.name))
             terms.append(b.known_point(known, slider_line.origin, q_name))
             own_line = body.lines[pair.guide_line]
             terms.append(b.slide(pair, link, own_line, unknown_angle=True, sign=-1))
@@ -469,7 +485,7 @@ def _driver_block(b: _Builder) -> LoopBlock:
         q = complex(guide.origin)
         # the guide's own through point (O for a line through O), named as the scene names it
         q_label = b.point_name(FRAME, q, "")
-        q_label = _sub(q_label) if q_label else rf"Q_{{{_sub(guide.name)}}}"
+        q_label = _sub(q_label) if q_label else _origin(driver.point)
         start = f"{_cplx(q)} + " if q != 0 else ""
         lines.append(rf"$z_{{{p}}} = z_{{{q_label}}} + s\,u = {start}{_paren(s)}\,{e} = {_cplx(m.r[b.k], True)}\ \mathrm{{m}}$")
         lines.append(rf"$v_{{{p}}} = \dot{{s}}\,u = {_paren(s_dot)}\,{e} = {_cplx(m.v[b.k], True)}\ \mathrm{{m/s}}$")
@@ -488,7 +504,7 @@ def _group_block(b: _Builder, group, done: set[str]) -> LoopBlock:
     meet_name, meet_local = _meeting(scene, group)
     left = _path(b, group, i, group.outer_i, meet_name, meet_local)
     right = _path(b, group, j, group.outer_j, meet_name, meet_local)
-    lines = []
+    lines = _origin_lines(b, left + right)
     stages = 3 if scene.accelerations else 2
     for stage in range(stages):
         symbolic = f"{_side(left, stage, False)} = {_side(right, stage, False)}"

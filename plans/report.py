@@ -459,15 +459,28 @@ def table_number(value: float, digits: int = 4) -> str:
     return text.replace("-", "−")
 
 
-def _magnitude(value) -> str:
+def reading_number(value: float, step: float | None) -> str:
+    """A graphical reading to the digits its resolution *step* justifies (a 0.1 mm segment at k_a 0.15 ÷ 0.37 m:
+    0.04 rad/s², so 2 decimals: ``0.08``, not ``0.08109``); to 4 significant digits without a step."""
+    if step is None or step <= 0 or value == 0 or not math.isfinite(value):
+        return table_number(value)
+    decimals = max(0, -math.floor(math.log10(step)))
+    text = f"{value:.{decimals}f}"
+    if float(text) == 0:
+        return "0"
+    return text.replace("-", "−")
+
+
+def _magnitude(value, step: float | None = None) -> str:
     if isinstance(value, complex):
-        return f"{table_number(abs(value))} ∠ {_deg(cmath.phase(value)):.1f}°".replace("-", "−") if value != 0 else "0"
-    return table_number(value)
+        return f"{reading_number(abs(value), step)} ∠ {_deg(cmath.phase(value)):.1f}°".replace("-", "−") if value != 0 else "0"
+    return reading_number(value, step)
 
 
 def table_error(value: float) -> str:
-    """A relative error as ``1.0·10⁻⁴`` (``0`` for none)."""
-    if value == 0:
+    """A relative error as ``1.0·10⁻⁴`` (``0`` for none, and for one of round-off size, at most :data:`TABLE_ROUNDOFF`:
+    two methods that agree to the last bits of a double agree exactly, as far as a table can say)."""
+    if value <= TABLE_ROUNDOFF:
         return "0"
     mantissa, exponent = f"{value:.1e}".split("e")
     return f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}".replace("-", "−")
@@ -643,15 +656,51 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
         kind = _KIND.get(row.quantity, row.quantity)
         zero_a, zero_g = noise(row.analytic, kind), noise(row.graphical, kind)
         a_text = "0" if zero_a else _magnitude(row.analytic)
-        g_text = "0" if zero_g else _magnitude(row.graphical)
-        # a relative error is not defined for a zero quantity
-        rows.append([text, g_text, a_text, NO_ERROR if zero_a else table_error(row.rel_error)])
+        step = None if given(graphical, row) else reading_step(graphical, row)  # a given value as given
+        g_text = "0" if zero_g else _magnitude(row.graphical, step)
+        # a relative error is not defined for a zero quantity, nor for a given one (the driver's ω, v_A: drawn from
+        # the data, not read); an error of round-off size is none
+        if zero_a or given(graphical, row):
+            error = NO_ERROR
+        else:
+            error = table_error(row.rel_error)
+        rows.append([text, g_text, a_text, error])
     return rows
+
+
+def given(graphical, row: Comparison) -> bool:
+    """Whether a table row is given, not read off a plan: ω, ε of the driver and v, a of the points of the driver's link
+    (a crank's pin A: v_A = ω·OA is drawn from the data, as is a linear driver's v)."""
+    if graphical is None:
+        return False
+    driver = graphical.scene.driver.link
+    if row.section == "links":
+        return row.name == driver
+    if row.section == "points":
+        return row.name in graphical.scene.bodies[driver].points
+    return False
+
+
+def reading_step(graphical, row: Comparison) -> float | None:
+    """The resolution [SI] of a graphical value: one drafting step (``graphical.precision`` [mm]) of its segment × the
+    plan's scale factor (÷ the link length a link's ω, ε is read with); None when readings are exact (no precision)."""
+    if graphical is None or not getattr(graphical, "precision", None):
+        return None
+    k = graphical.scales.get("k_v" if _KIND.get(row.quantity) in ("velocity", "omega") else "k_a")
+    if k is None:
+        return None
+    step = graphical.precision * k
+    if row.section == "links":
+        entry = getattr(graphical, "rotations", {}).get(row.name, {}).get(row.quantity)
+        if entry is None:
+            return None
+        step /= entry[2]
+    return step
 
 
 # --- instant centres (plans.centres) ---------------------------------------------
 
-__all__ += ["centres_json", "add_centres_json", "centres_table", "centres_comparison_table"]
+__all__ += ["given", "reading_step", "reading_number", "centres_json", "add_centres_json", "centres_table", "centres_comparison_table"]
 
 
 def _centre_where(centre) -> list:

@@ -174,7 +174,7 @@ def test_quick_return_detail_shows_every_image_and_vector_inside_it(quick_return
     assert any(g.endswith("-detail-v_ED-head") for g in gids)
     # and its note on the plan says where
     notes = [t.get_text() for ax in fig.axes for t in ax.texts if (t.get_gid() or "").endswith("short-v_ED")]
-    assert notes and notes[0].endswith("(I)"), notes
+    assert notes and notes[0] == "de = 1,37 mm (детаљ I)", notes  # the segment, its length, and where it is drawn (a Serbian page)
 
 
 def test_six_bar_detail_shows_every_image_inside_it(six_bar):

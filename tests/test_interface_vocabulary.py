@@ -358,6 +358,8 @@ VOCABULARY = {
     # the scene's own ε (a) beside a law that does not keep it
     "law_given_instant_only": {"sr": "задато {q} важи само у задатом тренутку", "ru": "заданное {q} относится только к заданному моменту",
                                "bg": "зададеното {q} се отнася само за зададения момент", "sl": "podani {q} velja le v podanem trenutku"},
+    # a plan's enlarged detail named in its notes ("detail I"; ГОСТ 2.305 "выносной элемент")
+    "detail": {"sr": "детаљ", "ru": "выносной элемент", "bg": "детайл", "sl": "detajl"},
     # the words of a sliding driver and of the centres' method page (issue 20)
     "centres_omega_rule_linear": {"sr": "ω члана из брзине погонског члана, преко полова", "ru": "ω звена по скорости ведущего звена, через центры", "bg": "ω на звеното от скоростта на водещото звено, чрез центровете", "sl": "ω člena iz hitrosti pogonskega člena, prek polov"},
     "over_driver_stroke": {"sr": "током хода погонског члана", "ru": "за ход ведущего звена", "bg": "за хода на водещото звено", "sl": "med hodom pogonskega člena"},

@@ -134,12 +134,13 @@ def test_six_bar_m_along_a_has_a_note_with_both_directions(solutions):
     a = next(v for v in plan.vectors if v.label == "a_A")
     m = next(v for v in plan.vectors if v.label == "a_M")
     notes = [t.get_text() for t in artists if isinstance(t, Text) and (t.get_gid() or "").startswith("acc-along-")]
-    assert len(notes) == 1, notes
-    angles = [float(x) for x in re.findall(r"= ([0-9.]+)°", notes[0])]
+    # each direction once, named as the plan's segment (issue 20 §3.1: "∠(πm′) = 235,6°")
+    assert sorted(notes) == sorted(set(notes)) and len(notes) == 2, notes
+    angles = [float(x) for x in re.findall(r"= ([0-9.]+)°", " ".join(notes))]
     expected = sorted(round(math.degrees(cmath.phase(v.tip)) % 360.0, 1) for v in (a, m))
     assert sorted(angles) == expected
     assert expected[0] != expected[1]
-    assert "πm′" in notes[0] and "πa′" in notes[0]
+    assert {n.split(" =")[0] for n in notes} == {"∠(πm′)", "∠(πa′)"}
 
 
 def test_collinear_images_of_one_link_get_no_note(solutions):
@@ -182,5 +183,5 @@ def test_four_bar_pm_and_pa_at_149_6_and_150_degrees_are_told_apart():
     notes = [t.get_text() for t in artists if isinstance(t, Text) and (t.get_gid() or "").startswith("vel-along-")]
     a = next(v for v in plan.vectors if v.label == "v_A")
     m = next(v for v in plan.vectors if v.label == "v_M")
-    expected = {f"∠ p{x} = {math.degrees(cmath.phase(v.tip)) % 360.0:.1f}°" for x, v in (("a", a), ("m", m))}
-    assert any(all(part in note for part in expected) for note in notes), (notes, expected)
+    expected = {f"∠(p{x}) = {math.degrees(cmath.phase(v.tip)) % 360.0:.1f}°" for x, v in (("a", a), ("m", m))}
+    assert expected <= set(notes), (notes, expected)

@@ -1,9 +1,11 @@
-"""The legend lists a kind of vector only when an arrow of that kind is drawn (issue 10 §3 leftover).
+"""The legend lists every kind of vector the plan draws (issue 20 §3.2; issue 10 §3 had listed arrows only).
 
 A kind whose every vector is shorter than 3 mm is drawn as lettered points
-with notes ("|aⁿ| = 2.63 mm"): listing it in the legend names a line style
-the plan does not show.  Measured from the SVGs: the arrows drawn (gid
-``normal-…``, the notes ``short-…``) against the legend's rows (``legend-normal``).
+with notes ("d′ n₁ = 2,63 mm"): it is still a vector of the plan, named in its
+equations and readings, and the teacher's review of the Serbian quick-return
+found its Coriolis component missing from the legend that the other pages had.
+Measured from the SVGs: the vectors drawn (arrows, gid ``normal-…``, or notes
+``short-…``) against the legend's rows (``legend-normal``).
 """
 
 from __future__ import annotations
@@ -37,14 +39,16 @@ def drawn(tmp_path_factory):
     return out
 
 
-def test_a_kind_drawn_only_as_notes_is_not_in_the_legend(drawn):
+def test_a_kind_drawn_only_as_notes_is_in_the_legend_too(drawn):
     # linear-arm at its own position: both normal components are 2–3 mm, notes only
     ids = _ids(drawn["linear-arm"] / "acceleration.svg")
     assert [i for i in ids if i.startswith("acc-short-a_n")], "the normal components are notes here"
     assert not _arrows(ids, "normal")
-    assert not [i for i in ids if i.startswith("acc-legend-normal") or i.startswith("acc-legend-text-normal")]
-    # while the kinds drawn as arrows are listed
+    assert [i for i in ids if i.startswith("acc-legend-normal")] and [i for i in ids if i.startswith("acc-legend-text-normal")]
     assert _arrows(ids, "tangential") and [i for i in ids if i.startswith("acc-legend-tangential")]
+    # and no kind the plan does not hold (the velocity plan has no components)
+    ids = _ids(drawn["linear-arm"] / "velocity.svg")
+    assert not [i for i in ids if re.match(r"^vel-legend-(normal|tangential|coriolis)", i)]
 
 
 def test_a_kind_with_one_arrow_drawn_is_in_the_legend(drawn):
@@ -53,11 +57,10 @@ def test_a_kind_with_one_arrow_drawn_is_in_the_legend(drawn):
     assert [i for i in ids if i.startswith("acc-legend-normal")]
 
 
-def test_the_sheet_legend_follows_the_arrows_too(drawn):
+def test_the_sheet_legend_follows_the_plans_too(drawn):
     ids = _ids(drawn["linear-arm"] / "sheet.svg")
     legend_kinds = {i.split("-")[-1] for i in ids if re.match(r"^.*legend-(absolute|relative|normal|tangential|coriolis)$", i)}
-    assert "normal" not in legend_kinds, legend_kinds
-    assert "tangential" in legend_kinds
+    assert {"normal", "tangential", "coriolis"} <= legend_kinds, legend_kinds
 
 
 def _page_legend(example: str) -> set[str]:
@@ -74,6 +77,22 @@ def _page_legend(example: str) -> set[str]:
     return {a.get_gid()[len("page-legend-"):] for a in artists if re.fullmatch(r"page-legend-[a-z]+", a.get_gid() or "")}
 
 
-def test_a_page_legend_lists_only_the_kinds_drawn_as_arrows():
-    assert "normal" not in _page_legend("linear-arm")
+def test_a_page_legend_lists_every_kind_drawn():
+    assert {"normal", "tangential", "coriolis"} <= _page_legend("linear-arm")
     assert {"normal", "tangential", "coriolis"} <= _page_legend("six-bar")
+
+
+def test_a_coriolis_component_too_short_for_an_arrow_is_in_the_legend():
+    """The Serbian quick-return's handout legend (positions 4 and 10): both Coriolis components are under 3 mm at the
+    plate's k_a (0,29 and 2,34 mm), notes only; the legend still names the Coriolis component."""
+    import plans
+    from plans.drawing.plan_drawing import SHORT_MM
+    from plans.drawing.svgblocks import legend_svg
+    from plans.handout import handout
+
+    doc = handout(plans.load(plans.example_path("quick-return")), positions=12, lang="sr")
+    plans_a = [r.graphical.acceleration_plan for r in doc.runs if r.index in doc.accelerations]
+    coriolis = [v for p in plans_a for v in p.vectors if v.kind == "coriolis"]
+    assert coriolis and all(v.length < SHORT_MM for v in coriolis)
+    text = legend_svg(plans_a, "sr").svg.decode()
+    assert "Кориолисово убрзање" in text

@@ -24,7 +24,7 @@ from ..i18n import term
 from .._text import decimal_comma, math_name, user_text
 from ._canvas import Sketch, text_size
 from .mechanism import draw_mechanism
-from .plan_drawing import SAME_MM, aliases, draw_plan, end_letters, image_text, legend_entries, legend_row, pole_text, vectors_drawn
+from .plan_drawing import aliases, draw_plan, end_letters, legend_entries, legend_row, segment, vectors_drawn
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 from .typeset import draw_text, measure
 
@@ -35,6 +35,7 @@ __all__ = [
     "table_block",
     "legend_block",
     "plan_readings",
+    "link_length",
     "readings_block",
     "printed_length",
     "READINGS_PT",
@@ -202,26 +203,22 @@ def _vector_symbol(label: str) -> str:
     return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{math_name(sub)}}}" if sub else "") + "$"
 
 
-def _segment(plan, v, ends: dict) -> str:
-    """The segment a vector is measured as, from the letters of its ends: ``pa``, ``π a′``, ``n₁ c′``, ``e₆ e₅``."""
-    sub = v.label.partition("_")[2]
+def link_length(graphical, between: str) -> str:
+    """The length a link's ω (ε) is divided by, as mathtext the textbook writes: ``l_{AC}``.
 
-    def letter(z: complex, tail: bool) -> str:
-        here = [name for name, w in plan.images.items() if abs(w - z) <= SAME_MM]
-        named = [name for name in here if name.rstrip("′").upper() in sub]
-        if named:
-            return max(named, key=len)
-        for label, (at, text) in ends.items():
-            if abs(at - z) <= SAME_MM:
-                return text
-        if abs(z) <= SAME_MM:
-            return plan.pole
-        return here[0] if here else "?"
-
-    points = getattr(plan, "points", None)
-    a = pole_text(plan) if v.kind == "absolute" else image_text(letter(complex(v.tail), True), points)
-    b = image_text(letter(complex(v.tip), False), points)
-    return a + b if (a + b).isascii() and len(a) == 1 and len(b) == 1 else f"{a} {b}"
+    *between* is the subscript of the plan vector it is read from (``"A4C"``: the point A of link 4 and C); the two
+    points are named as the scene names them (A, C), without the link number that tells the plan's coincident points
+    apart.  A subscript not made of two points of the plans is written as it is.
+    """
+    written: dict[str, str] = {}
+    for plan in (graphical.velocity_plan, graphical.acceleration_plan):
+        for name, body in (getattr(plan, "points", None) or {}).values():
+            written.setdefault(name + body, name)
+    for cut in range(1, len(between)):
+        first, second = between[:cut], between[cut:]
+        if first in written and second in written:
+            return f"l_{{{math_name(written[first] + written[second])}}}"
+    return f"l_{{{math_name(between)}}}"
 
 
 def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
@@ -242,15 +239,15 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
     k = plan.scale
     key = "k_v" if kind == "velocity" else "k_a"
     drawn = vectors_drawn(plan)
-    ends = {label: (complex(next(v.tip for v in drawn if v.label == label)), text) for label, text in end_letters(drawn).items()}
+    letters = end_letters(drawn, plan)
     by_label = {v.label: v for v in plan.vectors}
     precision = graphical.precision
     unit = _UNIT[kind]
     rows = [["", term("segment", lang), "mm", f"× ${key[0]}_{{{key[2]}}}$  (÷ l [m])", "="]]
 
-    def row(symbol: str, v, divide: float | None = None, sense: float | None = None) -> list[str]:
+    def row(symbol: str, v, divide: float | None = None, sense: float | None = None, between: str = "") -> list[str]:
         length = v.value / k if v is not None else 0.0
-        segment = _segment(plan, v, ends) if v is not None else "—"
+        measured = segment(plan, v, letters) if v is not None else "—"
         value = (v.value if v is not None else 0.0) / (divide or 1.0)
         if sense is not None:  # ω, ε: the magnitude measured, the sense seen on the plan
             value = math.copysign(value, sense)
@@ -261,8 +258,12 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
             text = f"{table_number(abs(value))} {rate_unit}{arrow}"
         else:
             text = f"{table_number(value)} {unit}"
-        factor = f"× {fmt(k)}" + ("" if divide is None else f"  ÷ {table_number(divide)}")
-        return [symbol, segment, printed_length(length, precision), factor, text]
+        factor = f"×\u00a0{fmt(k)}" if divide is not None else f"× {fmt(k)}"
+        if divide is not None:
+            # the link length by the textbook's name, the segment between the two points as the scene names them;
+            # no-break spaces: the cell never wraps inside it
+            factor += f"\u00a0÷\u00a0{table_number(divide)}\u00a0(${link_length(graphical, between)}$)"
+        return [symbol, measured, printed_length(length, precision), factor, text]
 
     from ._canvas import fmt_number as fmt
 
@@ -296,12 +297,10 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
     for link, entry in getattr(graphical, "rotations", {}).items():
         if rate in entry:
             shared.setdefault(entry[rate], []).append(link)
-    for (label, segment, length), links in shared.items():
+    for (label, between, length), links in shared.items():
         v = by_label.get(label)
         symbol_text = "$" + " = ".join(f"{tex}_{{{math_name(link)}}}" for link in links) + "$"
-        r = row(symbol_text, v, divide=length, sense=graphical.links[links[0]][rate])
-        r[3] += f" ({segment})"
-        rows.append(r)
+        rows.append(row(symbol_text, v, divide=length, sense=graphical.links[links[0]][rate], between=between))
     if len(rows) == 1:
         return []
     return [[decimal_comma(cell, lang) for cell in r] for r in rows]

@@ -50,6 +50,13 @@ def _to_segment(z: complex, segment: tuple[complex, complex]) -> float:
     return abs(z - (a + t * d))
 
 
+def _to_box(z: complex, center: complex, w: float, h: float) -> float:
+    """Distance [mm] from *z* to the box *w* × *h* centred at *center* (0 inside)."""
+    dx = max(abs(z.real - center.real) - w / 2, 0.0)
+    dy = max(abs(z.imag - center.imag) - h / 2, 0.0)
+    return math.hypot(dx, dy)
+
+
 def _leader(sketch: Sketch, anchor: complex, center: complex, w: float, h: float) -> None:
     """A thin line from just off *anchor* to the nearest side of the label's box."""
     from shapely.ops import nearest_points
@@ -82,6 +89,7 @@ def place_label(
     rivals: tuple[complex, ...] = (),
     own: tuple[complex, complex] | None = None,
     rival_segments: tuple[tuple[complex, complex], ...] = (),
+    by_box: bool = False,
 ) -> list:
     """Place one label (several names written ``"p, o, d"``) near *anchor*.
 
@@ -114,6 +122,10 @@ def place_label(
     own, rival_segments : segments (tail, tip) [mm]
         A vector's label: a place nearer one of *rival_segments* than its own
         vector *own* costs as much as an overlap.
+    by_box : bool
+        *rivals* are measured to the label's box (its nearest side, as the eye
+        joins a name to the nearest point: a long label "p, o, d, e"), not to
+        its centre.
 
     Returns
     -------
@@ -175,12 +187,16 @@ def place_label(
                 np.minimum.at(clear, i, shapely.distance(boxes[i], shapes[j]))
         for (center, gap, turn), c in zip(ring, clear):
             c = float(c)
-            mine = _to_segment(center, own) if own is not None else abs(center - anchor)
-            astray = any(abs(center - q) < mine for q in rivals) or any(_to_segment(center, seg) < mine for seg in rival_segments)
+            if by_box:
+                mine = _to_box(anchor, center, w, h)
+                astray = any(_to_box(q, center, w, h) < mine for q in rivals)
+            else:
+                mine = _to_segment(center, own) if own is not None else abs(center - anchor)
+                astray = any(abs(center - q) < mine for q in rivals) or any(_to_segment(center, seg) < mine for seg in rival_segments)
             score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - (OVERLAP_MM if astray else 0.0) - gap - 0.15 * turn - 1e-6 * order
             order += 1
             if best is None or score > best[0]:
-                best = (score, center, gap, c)
+                best = (score, center, gap, 0.0 if astray else c)  # astray: as bad as an overlap, look further out
         if not rings and best[3] <= 0.0 and extra * 1.4 <= FARTHEST_MM:
             extra *= 1.4
             rings.append(ring_at(extra))

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import cmath
 import math
+import re
 
 import numpy as np
 import shapely
@@ -53,6 +54,9 @@ __all__ = [
     "kinds_drawn",
     "vector_math",
     "end_letters",
+    "coriolis_letter",
+    "segment",
+    "notes_text",
     "legend_words",
     "legend_entries",
     "ZERO_MM",
@@ -128,12 +132,15 @@ def vectors_drawn(plan) -> list:
 
 
 def kinds_drawn(plan) -> set[str]:
-    """The kinds of vector a drawing of *plan* shows as arrows (what its legend lists).
+    """The kinds of vector a drawing of *plan* shows (what its legend lists).
 
-    A kind whose every vector is shorter than :data:`SHORT_MM` is drawn only
-    as lettered points with notes (``|aⁿ| = 0.19 mm``): the legend leaves it out.
+    Every kind the plan holds: a vector shorter than :data:`SHORT_MM`, drawn as
+    a lettered point with a note under the plan (``a′k = 0,29 mm``), is a vector
+    of the plan all the same, named in its equations and readings, and the legend
+    says what its kind is (a Coriolis component too short for an arrow is still a
+    Coriolis component).
     """
-    return {v.kind for v in vectors_drawn(plan) if v.length >= SHORT_MM}
+    return {v.kind for v in vectors_drawn(plan)}
 
 
 def vector_math(label: str) -> str:
@@ -144,15 +151,79 @@ def vector_math(label: str) -> str:
     return f"${text}$"
 
 
-def end_letters(vectors) -> dict[str, str]:
+#: The letter of a Coriolis component's end as textbooks letter it...
+CORIOLIS_LETTER = "k"
+#: ...and the one used when an image of the scene is lettered k (linear-arm's point K: k′ beside k₁ would read as
+#: the images of K and of its point on link 1).  No point name is Greek.
+CORIOLIS_LETTER_ELSE = "κ"
+
+
+def coriolis_letter(plan=None) -> str:
+    """The letter of the Coriolis components' ends on *plan*: ``k``, or ``κ`` when an image of a scene point is lettered k."""
+    images = getattr(plan, "images", {}) or {}
+    points = getattr(plan, "points", None)
+    for name in images:
+        text = image_text(name, points)
+        if text.rstrip("′").rstrip("₀₁₂₃₄₅₆₇₈₉0123456789").lower() == CORIOLIS_LETTER:
+            return CORIOLIS_LETTER_ELSE
+    return CORIOLIS_LETTER
+
+
+def end_letters(vectors, plan=None) -> dict[str, str]:
     """Vector label -> the letter of its end point, as textbooks letter the plan: normal
-    components end at n₁, n₂, …, Coriolis components at k (k₁, k₂, … when there are several)."""
+    components end at n₁, n₂, …, Coriolis components at k (k₁, k₂, … when there are several;
+    κ, κ₁, … when the scene has a point K, see :func:`coriolis_letter`)."""
     out = {}
-    for kind, letter in (("normal", "n"), ("coriolis", "k")):
+    for kind, letter in (("normal", "n"), ("coriolis", coriolis_letter(plan))):
         these = [v for v in vectors if v.kind == kind]
         for index, v in enumerate(these, 1):
             out[v.label] = letter + (str(index).translate(SUBSCRIPT) if (kind == "normal" or len(these) > 1) else "")
     return out
+
+
+def segment(plan, v, letters: dict[str, str] | None = None) -> str:
+    """The segment of the plan that *v* is drawn as, named by the letters of its ends: ``pa``, ``π a′``, ``a a₄``, ``n₁ c′``, ``a′ k``.
+
+    The tail of an absolute vector is the pole; a relative vector v_XY runs from the
+    image of Y to that of X (its subscript's second and first points); a component
+    that starts or ends off the images at a lettered end (n₁, k) is named by it.
+    *letters* is :func:`end_letters` of the drawn vectors (found when omitted).
+    """
+    if letters is None:
+        letters = end_letters(vectors_drawn(plan), plan)
+    ends = {}
+    for w in plan.vectors:
+        if w.label in letters:
+            ends.setdefault(letters[w.label], complex(w.tip))
+    sub = v.label.partition("_")[2]
+    points = getattr(plan, "points", None) or {}
+
+    def written(name: str) -> str:
+        return "".join(points[name]) if name in points else name.rstrip("′").upper()
+
+    def fits(name: str, tail: bool) -> int:
+        """2: the image is the point the subscript names (A4 of v_A4A3), 1: of the same name on another link (F of F3), 0: not."""
+        w = written(name)
+        if sub.endswith(w) if tail else sub.startswith(w):
+            return 2 + len(w)
+        bare = re.escape(points[name][0] if name in points else w)
+        return 1 if re.search(rf"{bare}\d*$" if tail else rf"^{bare}\d*", sub) else 0
+
+    def letter(z: complex, tail: bool) -> str:
+        here = [name for name, w in plan.images.items() if abs(w - z) <= SAME_MM]
+        named = [name for name in here if fits(name, tail)]
+        if named:
+            return image_text(max(named, key=lambda n: fits(n, tail)), points)
+        for text, at in ends.items():
+            if abs(at - z) <= SAME_MM:
+                return text
+        if abs(z) <= SAME_MM:
+            return pole_text(plan)
+        return image_text(here[0], points) if here else "?"
+
+    a = pole_text(plan) if v.kind == "absolute" else letter(complex(v.tail), True)
+    b = letter(complex(v.tip), False)
+    return a + b if (a + b).isascii() and len(a) == 1 and len(b) == 1 else f"{a} {b}"
 
 
 def draw_plan(plan, ax=None, *, lang: str = "en", legend: bool = True, detail: bool | None = None) -> list:
@@ -302,7 +373,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
     for v in vectors:
         _check(v.tail, v.label)
         _check(v.tip, v.label)
-    letters = end_letters(vectors)
+    letters = end_letters(vectors, plan)
 
     # construction lines, thin, under everything
     drawn_lines = 0
@@ -323,6 +394,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
 
     # components under the absolute vectors, in a fixed order of kinds
     absolute = [v for v in vectors if v.kind == "absolute" and v.length >= SHORT_MM]
+    placed: dict[str, list[tuple[complex, complex]]] = {}  # kind -> (tail, tip) of the components drawn so far
     for kind in ("normal", "tangential", "coriolis", "relative", "absolute"):
         for v in vectors:
             if v.kind != kind or v.length < SHORT_MM:
@@ -339,12 +411,15 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
                 _rim(sketch, head_artist, f"{kind}-{v.label}-rim")
                 continue
             if kind != "absolute":
-                shift = _beside(tail, tip, absolute)
+                # off an absolute vector it would lie on unseen, or off a component of its kind drawn along the same
+                # line (linear-arm: the two Coriolis components of sliders on one rod, 1.5 mm apart, read as one line)
+                shift = _beside(tail, tip, absolute) or _apart(tail, tip, placed.get(kind, []))
                 if shift:
                     for end in (tail, tip):
                         sketch.line([end, end + shift * 1.25], color=color, lw=0.4, gid=f"{kind}-{v.label}-tick", zorder=z, obstacle=False)
                     tail, tip = tail + shift, tip + shift
             sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=_head(head, lw, v.length), gid=f"{kind}-{v.label}", zorder=z)
+            placed.setdefault(kind, []).append((tail, tip))
 
     # the pole, the image points and the lettered ends of components
     sketch.circle(0j, 0.55, fc=INK, lw=0, gid="pole", zorder=4.0)
@@ -387,8 +462,13 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, at):
                 in_detail.setdefault(label, name)
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
+    # every dot of the plan: a label stands nearer its own point than any other (it reads as that point's)
+    where = {"pole-label": 0j} | {f"image-{name}": z for name, z in images.items()} | {f"end-{label}": z for z, _, label in ends}
     for at, pieces in groups:
-        place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
+        mine = [where[gid] for _, gid in pieces if gid in where]
+        rivals = tuple(q for q in where.values() if all(abs(q - m) > SAME_MM for m in mine))
+        place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM, rivals=rivals,
+                    by_box=True)
 
     for ring, names in rings:
         name = next_name()
@@ -396,8 +476,8 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             in_detail.setdefault(label, name)
 
     if caption:
-        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, letters.get(v.label), in_detail.get(v.label)) for v in shorts],
-                 along=alongside(plan), heading=heading)
+        _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, in_detail.get(v.label)) for v in shorts],
+                 along=alongside(plan), heading=heading, letters=letters)
 
 
 def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[str]]]:
@@ -465,8 +545,8 @@ def _clip(a: complex, b: complex, centre: complex, r: float):
 def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[complex, list[tuple[str, str]]]]:
     """The plan's labels: (point, [(text, gid), …]) for the pole, each group of coincident images, and component ends.
 
-    Images closer than :data:`SAME_MM` share one label ("p, o, c"); the end of a
-    short component within *join* of an image shares that image's label ("a′, n₁").
+    Images closer than :data:`SAME_MM` share one label ("p, o, c"); a component's
+    lettered end within *join* of an image shares that image's label ("a′, n₁").
     """
     groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [(pole_text(plan), "pole-label")])]
     short = {v.label for v in shorts}
@@ -481,7 +561,9 @@ def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[c
     for name, z in images.items():
         add(z, (image_text(name, getattr(plan, "points", None)), f"image-{name}"), SAME_MM)
     for z, letter, label in ends:
-        add(z, (letter, f"end-{label}"), join if label in short else SAME_MM)
+        # a lettered end within *join* of an image shares its label whether its own vector or the next one is the
+        # short one (quick-return position 4: n₁ 0.16 mm from a₄′, the tangential component between them)
+        add(z, (letter, f"end-{label}"), join)
     return groups
 
 
@@ -681,6 +763,33 @@ def _beside(tail: complex, tip: complex, absolute) -> complex:
     return 0j
 
 
+#: Two components of one kind on nearly one line, closer than this [mm] along a stretch they share, read as one line:
+#: the later is drawn this far off the other (with ticks to its true ends).
+APART_MM = 2.5
+
+
+def _apart(tail: complex, tip: complex, drawn) -> complex:
+    """The shift [mm] that takes a component off a parallel one of its kind it would run along (*drawn*: their
+    (tail, tip) as drawn), or 0."""
+    d = tip - tail
+    if abs(d) == 0:
+        return 0j
+    for a, b in drawn:
+        if abs(b - a) == 0:
+            continue
+        u = unit(b - a)
+        if abs((unit(d) * u.conjugate()).imag) > math.sin(math.radians(ALONG_DEG)):
+            continue  # not parallel
+        off = [((z - a) * u.conjugate()) for z in (tail, tip)]
+        if all(abs(o.imag) < APART_MM for o in off):
+            lo, hi = sorted(o.real for o in off)
+            if min(hi, abs(b - a)) - max(lo, 0.0) > 1.0:
+                side = 1.0 if sum(o.imag for o in off) >= 0 else -1.0
+                worst = min(o.imag * side for o in off)
+                return u * 1j * side * (APART_MM - worst)
+    return 0j
+
+
 def _along(v, absolute):
     """The longer absolute vector from the pole that *v* (also from the pole) lies on, or None."""
     if abs(v.tail) > SAME_MM:
@@ -751,8 +860,8 @@ def legend_words(plan_kind: str, kind: str, lang: str = "en") -> str:
 
 
 def legend_entries(plans, lang: str = "en") -> list[tuple[str, str]]:
-    """One legend for *plans* (Plan objects): ``(kind, words)`` for every kind drawn as an arrow on any of them
-    (a kind drawn only as notes is not listed), one row per style ("absolute velocity / absolute acceleration"),
+    """One legend for *plans* (Plan objects): ``(kind, words)`` for every kind drawn on any of them
+    (:func:`kinds_drawn`: also a kind drawn only as lettered points with notes), one row per style ("absolute velocity / absolute acceleration"),
     then the construction lines."""
     words: dict[str, list[str]] = {}
     for plan in plans:
@@ -776,18 +885,37 @@ def _tip_text(plan, v) -> str:
     return image_text(name, plan.points)
 
 
-def along_note(plan, v, w, lang: str = "en") -> str:
-    """The note on two vectors from the pole that lie one along the other: ``∠ πm′ = 235.6°, ∠ πa′ = 235.0°``
-    (directions 0…360°, counter-clockwise from the x axis; language-neutral)."""
-    pole = pole_text(plan)
+def along_note(plan, pairs, lang: str = "en") -> list[str]:
+    """The notes on vectors from the pole that lie one along another (:func:`alongside` *pairs*): each direction once,
+    in plan order, ``∠(πm′) = 235,6°``, ``∠(πa′) = 235,0°`` (0…360°, counter-clockwise from the x axis; the segment
+    as the plan letters it)."""
+    seen: list = []
+    for pair in pairs:
+        for u in pair:
+            if all(u is not w for w in seen):
+                seen.append(u)
 
     def angle(u) -> str:
         return localised(f"{math.degrees(cmath.phase(complex(u.tip) - complex(u.tail))) % 360.0:.1f}", lang)
 
-    return f"∠ {pole}{_tip_text(plan, v)} = {angle(v)}°,  ∠ {pole}{_tip_text(plan, w)} = {angle(w)}°"
+    return [f"∠({pole_text(plan)}{_tip_text(plan, u)}) = {angle(u)}°" for u in seen]
 
 
-def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True, notes=(), along=(), heading: bool = True) -> None:
+def notes_text(plan, notes, lang: str = "en", letters: dict[str, str] | None = None) -> list[str]:
+    """The notes under a plan on vectors too short for an arrow: each the segment it is on the plan and its length
+    [mm on the paper], ``a a₄ = 0,45 mm``, ``π e′ = 2,44 mm``, and, when the plan's detail draws it enlarged,
+    where (``detail I``).  *notes* are ``(vector, detail name or None)``."""
+    out = []
+    for v, detail in notes:
+        where = f" ({term('detail', lang)} {detail})" if detail else ""
+        # a length under the hundredth the note prints is no "0,00 mm": its ends all but coincide
+        length = f"= {localised(f'{v.length:.2f}', lang)}" if v.length >= 0.005 else f"< {localised('0.01', lang)}"
+        out.append(f"{segment(plan, v, letters)} {length} mm{where}")
+    return out
+
+
+def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True, notes=(), along=(), heading: bool = True,
+             letters: dict[str, str] | None = None) -> None:
     """Heading, scale factor, notes on vectors too short to draw and on vectors that lie one along the other, and the legend, below the plan
     (*heading* False: no heading and scale)."""
     symbol, units = _UNITS[plan.kind]
@@ -800,27 +928,24 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
         sketch.text(complex(x, y), scale_caption(symbol, fmt_number(plan.scale), units, lang), size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
     else:
         y += 4.6
-    # notes on vectors too short to draw, side by side as far as the plan is wide
-    # (a plan with many of them grows by a line, not by a line each)
+    # notes side by side as far as the plan is wide (a plan with many of them grows by a line, not by a line each):
+    # first the segments too short for an arrow, then the directions of vectors that lie one along another
     width = max(b.width, 60.0)
-    cursor = None
-    for v, letter, detail in notes:
-        # language-neutral: the vector, its drawn length, the point that stands for it, and the detail that draws it
-        where = ", ".join(x for x in (letter, detail) if x)
-        where = f"  ({where})" if where else ""
-        note = f"|{vector_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm{where}"
-        w = text_size(note, CAPTION_PT, math=True)[0]
-        if cursor is None or cursor + w > x + width:
+    items = [(text, f"short-{v.label}") for (v, _), text in zip(notes, notes_text(plan, notes, lang, letters))]
+    if along:
+        items += [(text, f"along-{along[0][0].label}" + (f"-{k}" if k else "")) for k, text in enumerate(along_note(plan, along, lang))]
+    cursor, cursor_along = None, False
+    for note, gid in items:
+        w = text_size(note, CAPTION_PT)[0]
+        if cursor is None or cursor + w > x + width or (gid.startswith("along") and not cursor_along):
             y -= 4.6
             cursor = x
-        sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=f"short-{v.label}", obstacle=False, math=True)
+        cursor_along = gid.startswith("along")
+        sketch.text(complex(cursor, y), note, size=CAPTION_PT, ha="left", va="top", gid=gid, obstacle=False)
         cursor += w + 4.0
-    for v, w in along:
-        y -= 4.6
-        sketch.text(complex(x, y), along_note(plan, v, w, lang), size=CAPTION_PT, ha="left", va="top", gid=f"along-{v.label}", obstacle=False)
     if not legend:
         return
-    drawn = {v.kind for v in vectors if v.length >= SHORT_MM}  # as kinds_drawn: a kind only in notes is not listed
+    drawn = kinds_drawn(plan)
     kinds = [k for k in KINDS if k in drawn]
     rows = [(k, legend_words(plan.kind, k, lang)) for k in kinds]
     if drawn_lines:

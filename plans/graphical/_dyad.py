@@ -176,9 +176,10 @@ def angle_of(world_segment: complex, local_segment: complex) -> float:
     return cmath.phase(world_segment) - cmath.phase(local_segment)
 
 
-def name(point: str, body: str | None = None) -> str:
-    """A point's name in a vector label, with the body of a coincident point (``E5``)."""
-    return point + (body_label(body) if body is not None else "")
+def name(point: str, body: str | None = None, frame: str = "0") -> str:
+    """A point's name in a vector label, with the body of a coincident point (``E5``; of the frame ``E1`` or ``E0``,
+    as *frame*, the scene's number for it)."""
+    return point + (body_label(body, frame) if body is not None else "")
 
 
 def ruler_lines(ctx: Construction, group: str, what: str, p1: complex, d1: complex, p2: complex, d2: complex) -> complex:
@@ -194,7 +195,7 @@ def ruler_lines(ctx: Construction, group: str, what: str, p1: complex, d1: compl
     return ctx.metres(at)
 
 
-def sliding_equation(symbol: str, moving: str, reference: str, turning: str, guide: str, turns: bool = True) -> str:
+def sliding_equation(symbol: str, moving: str, reference: str, turning: str, guide: str, turns: bool = True, frame: str = "0") -> str:
     """The sliding-point equation as text, ``v_C = v_C4 + v_CC4`` or ``a_C = a_C4 + a^k_CC4 + a^r_CC4``.
 
     *reference* is the coincident point of body *turning*, which carries the
@@ -209,5 +210,5 @@ def sliding_equation(symbol: str, moving: str, reference: str, turning: str, gui
     if turning == FRAME:
         return f"a_{moving} = a_{reference} + a^r_{rel}  (a_{reference} = 0, a^r_{rel} ∥ {guide})"
     if not turns:
-        return f"a_{moving} = a_{reference} + a^r_{rel}  (ω{body_label(turning)} = 0: no Coriolis; a^r_{rel} ∥ {guide})"
-    return f"a_{moving} = a_{reference} + a^k_{rel} + a^r_{rel}  (a^k_{rel} = 2 ω{body_label(turning)} × v_{rel}, a^r_{rel} ∥ {guide})"
+        return f"a_{moving} = a_{reference} + a^r_{rel}  (ω{body_label(turning, frame)} = 0: no Coriolis; a^r_{rel} ∥ {guide})"
+    return f"a_{moving} = a_{reference} + a^k_{rel} + a^r_{rel}  (a^k_{rel} = 2 ω{body_label(turning, frame)} × v_{rel}, a^r_{rel} ∥ {guide})"

@@ -149,7 +149,7 @@ def construct(
         k_l = round_scale(max(max(xs) - min(xs), max(ys) - min(ys)), fallback=ctx.k_l0)
 
     # --- velocity plan -------------------------------------------------------------
-    ctx.velocity = Sketch("velocity", k_v if k_v is not None else _provisional_v(ctx))
+    ctx.velocity = Sketch("velocity", k_v if k_v is not None else _provisional_v(ctx), ctx.scene.frame_number)
     _rest(ctx, ctx.velocity)
     driver_velocity(ctx)
     for group in structure.groups:
@@ -160,7 +160,7 @@ def construct(
 
     # --- acceleration plan -----------------------------------------------------------
     if scene.accelerations:
-        ctx.acceleration = Sketch("acceleration", k_a if k_a is not None else _provisional_a(ctx))
+        ctx.acceleration = Sketch("acceleration", k_a if k_a is not None else _provisional_a(ctx), ctx.scene.frame_number)
         _rest(ctx, ctx.acceleration)
         driver_acceleration(ctx)
         for group in structure.groups:

@@ -74,7 +74,7 @@ def driver_velocity(ctx: Construction) -> None:
             plan.place(plan.label(name), turn * (ctx.point(link, name) - o), name)
         first = names[0] if names else driver.pivot
         known = [plan.absolute(first)] if names else []
-        equations = (f"v_{first} = ω{body_label(link)} × {driver.pivot}{first}  (⊥ {driver.pivot}{first}, |ω{body_label(link)}|·{driver.pivot}{first})",)
+        equations = (f"v_{first} = ω{body_label(link, ctx.scene.frame_number)} × {driver.pivot}{first}  (⊥ {driver.pivot}{first}, |ω{body_label(link, ctx.scene.frame_number)}|·{driver.pivot}{first})",)
         plan.step("driver", equations, known, [], [], plan.label(first))
     else:
         ctx.v_motion[link] = _translation(ctx, plan, driver.velocity, "v")
@@ -102,14 +102,16 @@ def driver_acceleration(ctx: Construction) -> None:
             oa = ctx.point(link, first) - o
             tip_n = -omega * omega * oa / plan.k0
             pivot = driver.pivot
+            number = body_label(link, ctx.scene.frame_number)  # the driver's link number: ω₂²·OA, ε₂ = 0
             known.append(plan.component(0j, tip_n, "normal", f"a^n_{first}{pivot}"))
             tip = tip_n
             if epsilon != 0.0:
                 tip = tip_n + 1j * epsilon * oa / plan.k0
                 known.append(plan.component(tip_n, tip, "tangential", f"a^t_{first}{pivot}"))
-                equations = [f"a_{first} = a^n_{first}{pivot} + a^t_{first}{pivot}  (a^n_{first}{pivot} ∥ {first}{pivot}, ω²·{pivot}{first}; a^t_{first}{pivot} ⊥ {pivot}{first}, |ε|·{pivot}{first})"]
+                equations = [f"a_{first} = a^n_{first}{pivot} + a^t_{first}{pivot}  (a^n_{first}{pivot} ∥ {first}{pivot}, ω{number}²·{pivot}{first}; "
+                             f"a^t_{first}{pivot} ⊥ {pivot}{first}, |ε{number}|·{pivot}{first})"]
             else:
-                equations = [f"a_{first} = a^n_{first}{pivot}  (∥ {first}{pivot}, ω²·{pivot}{first}; ε = 0)"]
+                equations = [f"a_{first} = a^n_{first}{pivot}  (∥ {first}{pivot}, ω{number}²·{pivot}{first}; ε{number} = 0)"]
             plan.place(plan.label(first), tip, first)
         else:
             first = driver.pivot

@@ -76,7 +76,7 @@ def _construct(ctx: Construction, group: Group, plan, motions, accelerations: bo
     for link, known, _, other, prismatic in _sides(ctx, group):
         _, u = ctx.line(other)
         ck, ck_vector = coincident(ctx, plan, known, c, C)
-        ck_name = name(c, known)
+        ck_name = name(c, known, ctx.scene.frame_number)
         if accelerations:
             sliding = ctx.sliding[prismatic.name]
             w = ctx.omega(known)

@@ -83,7 +83,7 @@ def _construct(ctx: Construction, group: Group, plan, motions, accelerations: bo
     B = ctx.point(i, b)
     pb = plan.images[plan.label(b)]
     bk, bk_vector = coincident(ctx, plan, known, b, B)
-    bj, bk_name = name(b, j), name(b, known)
+    bj, bk_name = name(b, j, ctx.scene.frame_number), name(b, known, ctx.scene.frame_number)
     _, u_i = ctx.line(inner_i)
     _, u_k = ctx.line(outer_k)
     inner, outer = group.inner.prismatic, group.outer_j.prismatic

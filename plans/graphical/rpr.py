@@ -124,7 +124,7 @@ def velocity_rpr(ctx: Construction, group: Group) -> None:
         raise SingularPositionError(f"{group.name}: the rod's pivot {b} is at the sleeve's pivot {e} at {ctx.where()}")
     _, u = ctx.line(line_i)
     pb, pe = plan.images[plan.label(b)], plan.images[plan.label(e)]
-    ei, ej = name(e, i), name(e, j)
+    ei, ej = name(e, i, ctx.scene.frame_number), name(e, j, ctx.scene.frame_number)
     chains = (
         Chain(pb, plan.absolute(b), [], 1j * unit(E - B), f"⊥ {b}{e}", "relative", f"v_{ei}{b}"),
         Chain(pe, plan.absolute(e), [], u, f"∥ {line_i.key}", "relative", f"v_{ei}{ej}"),
@@ -147,7 +147,7 @@ def acceleration_rpr(ctx: Construction, group: Group) -> None:
     B, E = ctx.point(i, b), ctx.point(j, e)
     _, u = ctx.line(line_i)
     pb, pe = plan.images[plan.label(b)], plan.images[plan.label(e)]
-    ei, ej = name(e, i), name(e, j)
+    ei, ej = name(e, i, ctx.scene.frame_number), name(e, j, ctx.scene.frame_number)
     sliding = ctx.sliding[group.inner.prismatic.name]
     w = ctx.omega(i)
     normal = w * w * (B - E) / plan.k0

@@ -89,7 +89,7 @@ def velocity_rrp(ctx: Construction, group: Group) -> None:
     _, u = ctx.line(other)
     pb = plan.images[plan.label(b)]
     ck, ck_vector = coincident(ctx, plan, known, c, C)
-    ck_name = name(c, known)
+    ck_name = name(c, known, ctx.scene.frame_number)
     chains = (
         Chain(pb, plan.absolute(b), [], 1j * unit(C - B), f"⊥ {b}{c}", "relative", f"v_{c}{b}"),
         Chain(ck, ck_vector, [], u, f"∥ {other.key}", "relative", f"v_{c}{ck_name}"),
@@ -111,7 +111,7 @@ def acceleration_rrp(ctx: Construction, group: Group) -> None:
     _, u = ctx.line(other)
     pb = plan.images[plan.label(b)]
     ck, ck_vector = coincident(ctx, plan, known, c, C)
-    ck_name = name(c, known)
+    ck_name = name(c, known, ctx.scene.frame_number)
     sliding = ctx.sliding[group.outer_j.prismatic.name]
     w_i, w_k = ctx.omega(i), ctx.omega(known)
     n_cb = w_i * w_i * (B - C) / plan.k0

@@ -40,14 +40,16 @@ __all__ = ["Motion", "Vec", "Sketch", "Construction", "body_label", "image_label
 ZERO = 1e-9
 
 
-def body_label(body: str) -> str:
-    """The frame is link 0 in labels, as in structural formulas."""
-    return "0" if body == FRAME else body
+def body_label(body: str, frame: str = "0") -> str:
+    """A body's number in labels: the frame goes by *frame*, the scene's number for it
+    (:attr:`plans.scene.Scene.frame_number`: 1 where the crank is 2, 0 where it is 1)."""
+    return frame if body == FRAME else body
 
 
-def image_label(point: str, body: str | None = None, primed: bool = False) -> str:
-    """``"c"``, ``"c′"``, or the image of the point of *body* coinciding with it: ``"e5"``, ``"e5′"``."""
-    label = point.lower() + (body_label(body) if body is not None else "")
+def image_label(point: str, body: str | None = None, primed: bool = False, frame: str = "0") -> str:
+    """``"c"``, ``"c′"``, or the image of the point of *body* coinciding with it: ``"e5"``, ``"e5′"``
+    (a point of the frame: ``"e1"`` or ``"e0"``, as *frame* numbers it)."""
+    label = point.lower() + (body_label(body, frame) if body is not None else "")
     return label + ("′" if primed else "")
 
 
@@ -97,11 +99,15 @@ class Sketch:
         ``"velocity"`` or ``"acceleration"``.
     k0 : float
         Provisional scale [(m/s)/unit or (m/s²)/unit].
+    frame : str
+        The frame's number in labels (``v_EE1`` or ``v_EE0``).
     """
 
-    def __init__(self, kind: str, k0: float):
+    def __init__(self, kind: str, k0: float, frame: str = "0"):
         self.kind = kind
         self.k0 = k0
+        #: the frame's number in labels (the scene's :attr:`~plans.scene.Scene.frame_number`)
+        self.frame = frame
         self.pole = "p" if kind == "velocity" else "π"
         self.primed = kind == "acceleration"
         self.images: dict[str, complex] = {}
@@ -113,8 +119,8 @@ class Sketch:
     # -- drawing -------------------------------------------------------------
 
     def label(self, point: str, body: str | None = None) -> str:
-        label = image_label(point, body, self.primed)
-        self.points.setdefault(label, (point, body_label(body) if body is not None else ""))
+        label = image_label(point, body, self.primed, self.frame)
+        self.points.setdefault(label, (point, body_label(body, self.frame) if body is not None else ""))
         return label
 
     def place(self, label: str, at: complex, point: str | None = None) -> None:
@@ -131,7 +137,7 @@ class Sketch:
     def absolute(self, point: str, body: str | None = None) -> Vec:
         """The vector from the pole to an image (not stored among the components)."""
         symbol = "v" if self.kind == "velocity" else "a"
-        name = point + (body_label(body) if body is not None else "")
+        name = point + (body_label(body, self.frame) if body is not None else "")
         return Vec(0j, self.images[self.label(point, body)], "absolute", f"{symbol}_{name}")
 
     def size(self) -> float:

@@ -54,7 +54,7 @@ def twice(body: str) -> str:
 
 #: a vector as the graphical method names it: ``v_B``, ``a^n_CB``, ``v_A4A3``
 VECTOR = re.compile(r"(?<![\w^])([a-z])(?:\^([a-z]+))?_([A-Za-z0-9′]+)")
-_RATE = re.compile(r"([α-ωΑ-Ω])(\d+|²)")
+_RATE = re.compile(r"([α-ωΑ-Ω])(\d+²?|²)")
 _WORD = re.compile(r"[^\W\d_]+[0-9]*")
 
 
@@ -81,7 +81,8 @@ def _plain_math(part: str, name) -> str:
     while k < len(part):
         m = _RATE.match(part, k)
         if m:
-            out.append(f"{m.group(1)}^2" if m.group(2) == "²" else f"{m.group(1)}_{m.group(2)}")
+            number, squared = m.group(2).rstrip("²"), m.group(2).endswith("²")
+            out.append(m.group(1) + (f"_{number}" if number else "") + ("^2" if squared else ""))
             k = m.end()
             continue
         m = _WORD.match(part, k)
