@@ -210,7 +210,9 @@ def _force_pages(texts, lang):
 def test_no_program_token_on_any_force_page(six_bar_en, quick_return_sr):
     for (doc, texts), lang in ((six_bar_en, "en"), (quick_return_sr, "sr")):
         force = _force_pages(texts, lang)
-        assert len(force) == 3
+        # free bodies, force plans, the lever (and the three methods under it, or on a page after it: the lever is the
+        # velocity plan at the plate's k_v, which a one-position plate draws large)
+        assert len(force) in (3, 4), len(force)
         for page in force:
             assert not any(t in page for t in TOKENS), page
         for key, svg in doc.images.items():
