@@ -19,6 +19,8 @@ where it is comes from the SVG (its viewBox and width give the units per mm).
 from __future__ import annotations
 
 import re
+
+import numpy as np
 import xml.etree.ElementTree as ET
 
 import pytest
@@ -190,8 +192,21 @@ def test_notes_under_the_plans_are_the_plans_segments(handouts, name):
 def test_the_quick_return_notes_read_as_the_review_asked(handouts):
     texts = _texts(handouts["quick-return"].images["a-4"])
     notes = {t for gid, t in texts.items() if gid.startswith("acc-short-")}
-    assert "π e′ = 2,44 mm" in notes  # was "|a_E| = 2,44 mm"
-    assert "a′ k = 0,29 mm" in notes  # was "|a^k_A4A3| = 0,29 mm (k)"
+    doc = handouts["quick-return"]
+    run = next(r for r in doc.runs if r.index == 4)
+    k_a = doc.scales["k_a"]
+
+    def mm(value: float) -> str:
+        return f"{value / k_a:.2f}".replace(".", ",")
+
+    a_e = abs(complex(np.ravel(run.analytic.points["E"].a)[0]))  # the analytic solution, not the plan
+    assert f"π e′ = {mm(a_e)} mm" in notes, notes  # was "|a_E| = 2,44 mm" (at k_a 0.15)
+    # the Coriolis component 2·ω₄·|v_A4A3| (domain.md §4): A4 the rocker's point under A, v_A4 = iω₄(r_A − r_C)
+    first = lambda x: complex(np.ravel(x)[0])  # noqa: E731
+    a = run.analytic
+    omega4 = first(a.links["4"].omega).real
+    v_a4 = 1j * omega4 * (first(a.points["A"].r) - first(a.points["C"].r))
+    assert f"a′ k = {mm(2 * abs(omega4) * abs(first(a.points['A'].v) - v_a4))} mm" in notes, notes  # was "|a^k_A4A3| = 0,29 mm (k)"
     along = [t for gid, t in texts.items() if gid.startswith("acc-along-")]
     assert sorted(along) == sorted(["∠(πa₄′) = 271,4°", "∠(πa′) = 271,3°", "∠(πd′) = 271,4°"])  # ∠ πa′ once
 
