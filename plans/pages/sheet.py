@@ -1,0 +1,523 @@
+"""The single sheets of ``plans draw``, set by Typst on the plate's page (:mod:`plans.pages.document`).
+
+A sheet is an A3 landscape page with the plate's frame (20 mm binding margin)
+and its title block in the lower right corner (plate name, the scene's title
+in the reader's language, the scale factors, sheet n of m, drawn by / checked
+by / date).  On its left the drawings — the mechanism at k_l, the velocity
+plan at k_v and the acceleration plan at k_a, matplotlib SVG blocks
+(:mod:`plans.drawing.svgblocks`) placed at 100 %, so that the stated factors
+hold on paper — each under its name and scale; on its right, over the title
+block, a column of text set by Typst in the reader's language: the structural
+formula and the assembly of the groups in words, the vector equations with
+their known parts underlined, the legend of the plans, the readings of both
+plans and the table of graphical against analytic values.
+
+Scale factors: one k_l, k_v, k_a per sheet (for ``--positions``: one of each
+over every position's sheet, the plate's rule), each the round factor with
+which the largest of its drawings fills the region the sheet gives it; the
+regions are arranged (mechanism over the plans, the three one above the
+other, or the mechanism beside the plans) as draws the drawings largest.  A
+factor the user or the scene gives is kept.  This module orchestrates: the
+plans are constructed at the chosen factors here (drawing never solves).
+
+Room: a sheet whose text does not fit its column on A3 (found by the page
+count Typst gives) — or whose drawings at factors the user gave do not fit
+the region A3 leaves them — goes to the next ISO size (A2, A1, A0), with
+its factors chosen again for that sheet's regions.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from ..i18n import term
+from .document import GUTTER, SMALL_PT, TEXT_PT, Document, PageGeometry, bbox, fitted, plan_extent
+from .typesetting import compile_document, image, string
+from .words import assembly_lines, formula_words, namer
+
+__all__ = ["Sheet", "PAPERS", "sheet_page", "build_sheet", "fitted_sheet", "position_sheets", "positions_page",
+           "write_drawings", "write_position_sheets", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION"]
+
+#: the ISO sheets a sheet may take, smallest first, landscape [mm]
+PAPERS = (("A3", (420.0, 297.0)), ("A2", (594.0, 420.0)), ("A1", (841.0, 594.0)), ("A0", (1189.0, 841.0)))
+#: room [mm] the title block takes above the frame's foot (the text column stops above it)
+TITLE_BLOCK_ROOM = 27.0
+#: the width [mm] of the text column at the right (over the title block, which is 185 mm wide)
+TEXT_COLUMN = 180.0
+#: room [mm] over a drawing for its name and its scale (two lines)
+CAPTION = 10.5
+#: the drawings' corner of the page: its distance [mm] from the frame's foot (the drawings may go down beside the title block)
+FOOT = 4.0
+#: the part of a drawing that does not scale [mm] (labels, margins, supports), reckoned before it is drawn
+ESTIMATED_FIXED = {"mechanism": (24.0, 24.0), "velocity": (14.0, 20.0), "acceleration": (14.0, 20.0)}
+#: the scale factor of each drawing
+SCALE_OF = {"mechanism": "k_l", "velocity": "k_v", "acceleration": "k_a"}
+
+
+def sheet_page(paper: str = "A3") -> PageGeometry:
+    """The page of a sheet on *paper* (``"A3"`` … ``"A0"``, landscape): the text area's foot clears the title block."""
+    size = dict(PAPERS)[paper]
+    return PageGeometry(size, (20.0, 5.0), (25.0, 10.0, 10.0, 5.0 + TITLE_BLOCK_ROOM), title_block_width=185.0)
+
+
+def _drawing_room(page: PageGeometry) -> tuple[float, float]:
+    """(width, height) [mm] of the drawings' region: the text area's left part, down to near the frame's foot."""
+    width = page.text_width - TEXT_COLUMN - GUTTER
+    height = page.size[1] - page.margins[2] - page.frame[1] - FOOT
+    return width, height
+
+
+@dataclass
+class Sheet:
+    """A sheet ready to compile: Typst source, the SVG inputs, its factors and where its drawings are.
+
+    Attributes
+    ----------
+    source : str
+        The Typst document (one page).
+    images : dict[str, bytes]
+        Input key -> SVG of a drawing (placed at its physical size).
+    scales : dict[str, float]
+        The sheet's k_l, k_v, k_a.
+    paper : str
+        ``"A3"`` (or a larger ISO sheet when the sheet needs it).
+    placed : dict[str, tuple[float, float, float, float]]
+        Drawing -> (x, y, width, height) [mm] from the page's top left corner.
+    graphical : GraphicalSolution
+        The solution at the sheet's factors (what its drawings show).
+    """
+
+    source: str
+    images: dict[str, bytes]
+    scales: dict[str, float]
+    paper: str
+    placed: dict[str, tuple[float, float, float, float]] = field(default_factory=dict)
+    graphical: object = field(default=None, repr=False)
+
+    def pdf(self) -> bytes:
+        """The sheet as a PDF (deterministic)."""
+        return compile_document(self.source, self.images, "pdf")
+
+    def pages(self, fmt: str = "svg", ppi: float = 110.0) -> list[bytes]:
+        """The sheet's pages (one) as SVG (root size in mm) or PNG."""
+        return compile_document(self.source, self.images, fmt, ppi=ppi)
+
+    def render(self, fmt: str) -> bytes:
+        """The sheet as the bytes of a ``.svg``, ``.pdf`` or ``.png`` file."""
+        if fmt == "pdf":
+            return self.pdf()
+        if fmt in ("svg", "png"):
+            return self.pages(fmt)[0]
+        raise ValueError(f"no output format {fmt!r}; choose one of svg, pdf, png")
+
+    def save(self, path) -> Path:
+        """Write the sheet to *path* in the format its suffix names (``.svg``, ``.pdf``, ``.png``), atomically."""
+        from .._files import replace_all
+        from ..drawing.formats import format_of
+
+        path = Path(path)
+        return replace_all({path: self.render(format_of(path))})[0]
+
+    def _repr_svg_(self) -> str:
+        return self.pages("svg")[0].decode("utf-8")
+
+
+# --- the regions of the drawings ------------------------------------------------------------------
+
+
+def _arrangements(room, kinds):
+    """Candidate regions {kind: (x, y, w, h)} [mm] in the drawings' room (*kinds*: the drawings, mechanism first)."""
+    width, height = room
+    g = GUTTER
+    plans = [k for k in kinds if k != "mechanism"]
+    out = []
+    for f in (0.3, 0.4, 0.5, 0.6, 0.7):
+        top = height * f
+        # the mechanism over the plans, the plans side by side
+        boxes = {"mechanism": (0.0, 0.0, width, top - g / 2)}
+        w = (width - g * (len(plans) - 1)) / max(len(plans), 1)
+        for n, k in enumerate(plans):
+            boxes[k] = (n * (w + g), top + g / 2, w, height - top - g / 2)
+        out.append(boxes)
+        if len(plans) == 2:
+            # the three one above the other
+            rest = (height - top - g) / 2
+            out.append({"mechanism": (0.0, 0.0, width, top - g / 2), plans[0]: (0.0, top + g / 2, width, rest),
+                        plans[1]: (0.0, top + g * 1.5 + rest, width, rest - g / 2)})
+        # the mechanism beside the plans (the plans one above the other)
+        left = width * f
+        boxes = {"mechanism": (0.0, 0.0, left - g / 2, height)}
+        h = (height - g * (len(plans) - 1)) / max(len(plans), 1)
+        for n, k in enumerate(plans):
+            boxes[k] = (left + g / 2, n * (h + g), width - left - g / 2, h)
+        out.append(boxes)
+    return out
+
+
+def _drawn(extent, box, fixed) -> float:
+    """How large [mm per physical unit] a drawing of *extent* with *fixed* parts is drawn in *box* (caption kept)."""
+    room = (box[2] - fixed[0], box[3] - CAPTION - fixed[1])
+    ratios = [r / e for r, e in zip(room, extent) if e > 0]
+    if any(r <= 0 for r in room):
+        return 0.0
+    return min(ratios) if ratios else 1.0
+
+
+def _choose_regions(room, extents: dict, fixed: dict, given_sizes: dict):
+    """The arrangement that draws the drawings largest (the geometric mean of their sizes), or None when a drawing
+    at a given factor (*given_sizes*: kind -> (w, h) [mm]) fits none."""
+    best, best_score = None, -math.inf
+    for boxes in _arrangements(room, list(extents)):
+        score = 0.0
+        for kind, extent in extents.items():
+            box = boxes[kind]
+            if kind in given_sizes:
+                w, h = given_sizes[kind]
+                if w > box[2] + 0.5 or h > box[3] - CAPTION + 0.5:
+                    score = -math.inf
+                    break
+                continue
+            size = _drawn(extent, box, fixed[kind])
+            score = score + math.log(size) if size > 0 else -math.inf
+        if score > best_score:
+            best, best_score = boxes, score
+    return best
+
+
+# --- the sheet -------------------------------------------------------------------------------------
+
+
+def _readings(doc: Document, graphical, lang: str) -> list:
+    from ..drawing.blocks import plan_readings
+
+    out = []
+    for kind in ("velocity", "acceleration"):
+        rows = plan_readings(graphical, kind, lang)
+        if rows:
+            out.append((f"{term(kind + '_plan', lang)}: {term('readings', lang)}", rows))
+    return out
+
+
+def _texts(doc: Document, graphical, *, table, formula, assembly, legend, heading) -> list[str]:
+    """The text column's markup (collected from the document's own sections)."""
+    lang = doc.lang
+    name = namer(doc.scene, lang)
+    body, doc.body = doc.body, []
+    try:
+        if heading:
+            doc.heading(heading, level=2)
+        if formula:
+            doc.line(f"{term('structural_formula', lang)}:  {formula_words(formula)}", size=TEXT_PT)
+        if assembly:
+            doc.line(f"{term('assembly', lang)}: " + ";  ".join(assembly), size=SMALL_PT + 0.5)
+        for plan in (graphical.velocity_plan, graphical.acceleration_plan):
+            if plan is not None and any(step.equations for step in plan.steps):
+                doc.equations(f"{term('vector_equations', lang)}: {term(plan.kind + '_plan', lang).lower()}", plan.steps, name)
+        readings = _readings(doc, graphical, lang)
+        if readings:
+            doc.tables(readings, aligns="(left, left, right, left, right)")
+        results = doc.table_markup(term("comparison", lang), table) if table and len(table) > 1 else "[]"
+        legend_cell = f"align(right)[#{doc.add_image('legend', legend)}]" if legend is not None else "[]"
+        doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {results}, {legend_cell})]\n")
+        return doc.body
+    finally:
+        doc.body = body
+
+
+def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "en", table=None, formula: str = "",
+                assembly=(), legend=None, heading: str = "", paper: str = "A3", number: tuple[int, int] | None = None) -> Sheet:
+    """The sheet of *graphical* (drawn already: *blocks* kind -> SvgBlock at its factor) with its drawings centred
+    in *regions* (kind -> (x, y, w, h) [mm] in the drawings' room), the text column beside them.
+
+    *table*: the results table (rows of text, the header first, in *lang*); *formula*: the structural formula;
+    *assembly*: the groups' assembly in words; *legend*: the plans' legend (an SvgBlock); *heading*: a line over
+    the text (a position's sheet: the position); *number*: (n, m) of a set of sheets (else 1 of 1).
+    """
+    page = sheet_page(paper)
+    doc = Document(scene, lang, page)
+    doc.plate = dict(graphical.scales)
+    doc.sheet_number = number
+    width, _ = _drawing_room(page)
+    texts = _texts(doc, graphical, table=table, formula=formula, assembly=assembly, legend=legend, heading=heading)
+    placed = {}
+    names = {"mechanism": term("mechanism", lang), "velocity": term("velocity_plan", lang), "acceleration": term("acceleration_plan", lang)}
+    for kind, block in blocks.items():
+        x, y, w, h = regions[kind]
+        bx = x + (w - block.width) / 2
+        by = y + CAPTION + max(h - CAPTION - block.height, 0.0) / 2
+        key = SCALE_OF[kind]
+        caption = (f"#text(size: {TEXT_PT + 0.5}pt, weight: \"bold\")[{doc.words(names[kind])}] \\\n"
+                   f"{doc.scale_markup(key, graphical.scales[key])}")
+        doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {by - CAPTION:.3f}mm, block(width: {w:.3f}mm, height: {CAPTION}mm)[#align(center)[{caption}]])")
+        doc.add_image(kind, block)
+        doc.body.append(f"#place(top + left, dx: {bx:.3f}mm, dy: {by:.3f}mm, {image(kind, block.width)})")
+        placed[kind] = (page.margins[0] + bx, page.margins[2] + by, block.width, block.height)
+    doc.body.append(f"#pad(left: {width + GUTTER:.3f}mm)[\n" + "\n".join(texts) + "]\n")
+    return Sheet(doc.source(), doc.images, dict(graphical.scales), paper, placed, graphical)
+
+
+def _objects(graphical) -> dict:
+    out = {"mechanism": graphical, "velocity": graphical.velocity_plan}
+    if graphical.acceleration_plan is not None:
+        out["acceleration"] = graphical.acceleration_plan
+    return out
+
+
+def _extent(kind: str, obj) -> tuple[float, float]:
+    """A drawing's geometry in physical units (the mechanism's joints [m], a plan's images and pole)."""
+    return bbox(obj.positions.values()) if kind == "mechanism" else plan_extent(obj)
+
+
+def _block(kind: str, graphical, lang: str, box=None):
+    """The drawing of *kind* of *graphical* (a plan without its enlarged detail when that runs over *box*)."""
+    from ..drawing.svgblocks import mechanism_svg, plan_svg
+
+    if kind == "mechanism":
+        return mechanism_svg(graphical, lang)
+    plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
+    block = plan_svg(plan, lang)
+    if box is not None and (block.width > box[2] + 0.5 or block.height > box[3] - CAPTION + 0.5):
+        block = plan_svg(plan, lang, detail=False)
+    return block
+
+
+def _fit_factors(samples, construct_at, lang: str, given: dict, room, sheets_extent=None):
+    """(scales, regions, {sample index: (graphical, blocks)}) for one or more positions' solutions (*samples*)
+    drawn at one k per kind, each the round factor with which the largest drawing of its kind fills its region.
+
+    *construct_at(i, scales)*: sample *i* constructed at *scales*.  Returns None when drawings at given factors fit
+    no arrangement of *room*.
+    """
+    kinds = list(_objects(samples[0]))
+    if any(g.acceleration_plan is None for g in samples):
+        kinds = [k for k in kinds if k != "acceleration"]
+    extents = {}
+    largest = {}
+    for kind in kinds:
+        per = [(_extent(kind, _objects(g)[kind]), i) for i, g in enumerate(samples)]
+        extents[kind] = (max(e[0] for e, _ in per), max(e[1] for e, _ in per))
+        largest[kind] = max(per, key=lambda p: p[0][0] + p[0][1])[1]
+    given_sizes = {}
+    for kind in kinds:
+        if given.get(SCALE_OF[kind]) is not None:
+            k = given[SCALE_OF[kind]]
+            fx, fy = ESTIMATED_FIXED[kind]
+            given_sizes[kind] = (extents[kind][0] / k + fx, extents[kind][1] / k + fy)
+    regions = _choose_regions(room, extents, ESTIMATED_FIXED, given_sizes)
+    if regions is None:
+        return None
+    scales = dict(samples[0].scales)
+    boxes = {kind: (regions[kind][2], regions[kind][3] - CAPTION) for kind in kinds}
+    # one kind after the other, each constructed with the factors chosen before it (a plan reads the mechanism)
+    for kind in kinds:
+        key = SCALE_OF[kind]
+        i = largest[kind]
+
+        def draw(k, kind=kind, key=key, i=i):
+            return _block(kind, construct_at(i, {**scales, key: k}), lang, regions[kind])
+
+        scales[key], _ = fitted(draw, extents[kind], boxes[kind], samples[i].scales[key], given.get(key))
+    out = {}
+    for _ in range(4):  # every sample at the factors; coarser while a drawing still runs over its region
+        out, over = {}, {}
+        for i in range(len(samples)):
+            g = construct_at(i, scales)
+            blocks = {kind: _block(kind, g, lang, regions[kind]) for kind in kinds}
+            out[i] = (g, blocks)
+            for kind, block in blocks.items():
+                f = max(block.width / (boxes[kind][0] + 0.5), block.height / (boxes[kind][1] + 0.5))
+                if f > 1.0 and given.get(SCALE_OF[kind]) is None:
+                    over[kind] = max(over.get(kind, 1.0), f)
+        if not over:
+            break
+        from ..graphical.scales import round_up
+
+        for kind, f in over.items():
+            scales[SCALE_OF[kind]] = round_up(scales[SCALE_OF[kind]] * f * 1.0001)
+    else:
+        pass
+    if any(block.width > boxes[kind][0] + 0.5 or block.height > boxes[kind][1] + 0.5
+           for _, blocks in out.values() for kind, block in blocks.items()):
+        return None  # drawings at given factors larger than this sheet's regions
+    return scales, regions, out
+
+
+def _fits_one_page(sheet: Sheet) -> bool:
+    """Whether the sheet's text stays on its one page (Typst flows what does not fit onto a second)."""
+    return len(compile_document(sheet.source, sheet.images, "svg")) == 1
+
+
+def fitted_sheet(scene, graphical, analytic, construct_at, *, lang: str = "en", given: dict | None = None,
+                 heading: str = "", number: tuple[int, int] | None = None) -> Sheet:
+    """The sheet of one position, its factors chosen for its regions (see the module).
+
+    *graphical*: the solution at first factors (the scene's or automatic); *construct_at(scales)*: the
+    solution constructed at other factors (the caller's: drawing never solves); *analytic*: the analytic
+    solution of the same position (the results table and the assembly); *given*: factors kept as given
+    (``{"k_l": …}``, None for those to choose).
+    """
+    given = {key: value for key, value in (given or {}).items() if value is not None}
+    for paper, _ in PAPERS:
+        page = sheet_page(paper)
+        found = _fit_factors([graphical], lambda i, scales: construct_at(scales), lang, given, _drawing_room(page))
+        if found is None:
+            continue
+        scales, regions, out = found
+        g, blocks = out[0]
+        sheet = _sheet_of(scene, g, analytic, blocks, regions, lang=lang, heading=heading, paper=paper, number=number)
+        if _fits_one_page(sheet) or paper == PAPERS[-1][0]:
+            return sheet
+    from ..errors import PlansError
+
+    raise PlansError("the drawings at the factors given are larger than A0: give larger scale factors (--k-l, --k-v, --k-a)")
+
+
+def _sheet_of(scene, g, analytic, blocks, regions, *, lang, heading, paper, number) -> Sheet:
+    from ..compare import compare
+    from ..drawing.sheet import translate_table
+    from ..drawing.svgblocks import legend_svg
+    from ..report import sheet_table
+
+    table = translate_table(sheet_table(compare(analytic, g), g, analytic), lang)
+    plans = [p for p in (g.velocity_plan, g.acceleration_plan) if p is not None]
+    return build_sheet(scene, g, blocks, regions, lang=lang, table=table, formula=analytic.structure.formula,
+                       assembly=assembly_lines(analytic.branches, scene, lang, g.positions), legend=legend_svg(plans, lang),
+                       heading=heading, paper=paper, number=number)
+
+
+def position_heading(r, lang: str) -> str:
+    """The position of a sheet in words: ``Position 3:  φ₂ = 90.0°``."""
+    return f"{term('position', lang)} {r.index}:  {r.label}"
+
+
+def position_sheets(run, *, lang: str = "en", given: dict | None = None, progress=None) -> tuple[list, dict]:
+    """The sheets of a multi-position run's solved positions, all at one k_l, one k_v, one k_a (each the factor
+    with which the largest drawing of its kind fills its region; given ones kept), each titled with its position
+    and numbered n of m (m: the solved positions and the plan of positions).  Returns ``([(run, Sheet)…], scales)``.
+    """
+    from ..compare import compare
+    from ..graphical import construct
+
+    say = progress or (lambda words: None)
+    given = {key: value for key, value in (given or {}).items() if value is not None}
+    solved = [r for r in run.runs if r.ok]
+    if not solved:
+        return [], {}
+    cache = {}
+
+    def construct_at(i, scales):
+        key = (i, tuple(sorted((k, v) for k, v in scales.items() if v is not None)))
+        if key not in cache:
+            r = solved[i]
+            g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision,
+                          check_scales=False)
+            cache.clear() if len(cache) > 64 else None
+            cache[key] = replace(g, travel=r.graphical.travel, cycle_poses=r.graphical.cycle_poses)
+        return cache[key]
+
+    samples = [r.graphical for r in solved]
+    total = len(solved) + 1
+    for paper, _ in PAPERS:
+        found = _fit_factors(samples, construct_at, lang, given, _drawing_room(sheet_page(paper)))
+        if found is not None:
+            break
+    else:
+        from ..errors import PlansError
+
+        raise PlansError("the drawings at the factors given are larger than A0: give larger scale factors (--k-l, --k-v, --k-a)")
+    scales, regions, out = found
+    sheets = []
+    for i, r in enumerate(solved):
+        say(f"sheet {i + 1}/{total}")
+        g, blocks = out[i]
+        h = replace(r, graphical=g, comparisons=compare(r.analytic, g))
+        sheet = None
+        for p, _ in PAPERS[[name for name, _ in PAPERS].index(paper):]:
+            sheet = _sheet_of(r.scene, g, r.analytic, blocks, regions, lang=lang, heading=position_heading(r, lang), paper=p,
+                              number=(i + 1, total))
+            if _fits_one_page(sheet):
+                break
+        sheets.append((h, sheet))
+    return sheets, scales
+
+
+def positions_page(run, k_l: float, *, lang: str = "en", number: tuple[int, int] | None = None) -> Sheet:
+    """The plan of positions of *run* on a sheet of its own at *k_l* (the sheets'; a coarser round one when it runs
+    over the page), under its name and scale."""
+    from ..drawing.svgblocks import positions_svg
+    from ..graphical.scales import round_up
+
+    page = sheet_page("A3")
+    room = (page.text_width, page.size[1] - page.margins[2] - page.margins[3] - CAPTION)
+    block = positions_svg(run, k_l, lang)
+    for _ in range(6):
+        if block.width <= room[0] + 0.5 and block.height <= room[1] + 0.5:
+            break
+        k_l = round_up(k_l * max(block.width / room[0], block.height / room[1]) * 1.0001)
+        block = positions_svg(run, k_l, lang)
+    doc = Document(run.scene, lang, page)
+    doc.plate = {"k_l": k_l}
+    doc.sheet_number = number
+    doc.body.append(f"#align(center)[#text(size: {TEXT_PT + 1.5}pt, weight: \"bold\")[{doc.words(term('positions_plan', lang))}] \\\n"
+                    f"{doc.scale_markup('k_l', k_l)}]\n")
+    doc.body.append(f"#align(center)[#{doc.add_image('positions', block)}]\n")
+    x = page.margins[0] + (page.text_width - block.width) / 2
+    return Sheet(doc.source(), doc.images, {"k_l": k_l}, "A3", {"positions": (x, page.margins[2] + CAPTION, block.width, block.height)})
+
+
+# --- files -----------------------------------------------------------------------------------------
+
+
+def write_drawings(sheet: Sheet, directory, *, lang: str = "en", format: str = "svg") -> list[Path]:
+    """Write ``mechanism.svg``, ``velocity.svg``, ``acceleration.svg`` (the drawings of the sheet's solution, as
+    drawings) and ``sheet.svg`` (*sheet*, the page), or ``.pdf``, ``.png`` (*format*).
+
+    All are rendered in memory first and written atomically together (:func:`plans._files.replace_all`): a
+    failure leaves every existing file as it was.  ``acceleration.svg`` is written only when the solution has an
+    acceleration plan; an old one in *directory* is then removed if plans wrote it (and nobody changed it since).
+    """
+    from .._files import replace_all
+    from ..drawing.formats import render
+    from ..drawing.mechanism import draw_mechanism
+    from ..drawing.plan_drawing import draw_plan
+
+    solution = sheet.graphical
+    directory = Path(directory)
+    contents: dict[Path, bytes] = {}
+    contents[directory / f"mechanism.{format}"] = render(draw_mechanism(solution, lang=lang)[0].figure, format)
+    contents[directory / f"velocity.{format}"] = render(draw_plan(solution.velocity_plan, lang=lang)[0].figure, format)
+    if solution.acceleration_plan is not None:
+        contents[directory / f"acceleration.{format}"] = render(draw_plan(solution.acceleration_plan, lang=lang)[0].figure, format)
+    contents[directory / f"sheet.{format}"] = sheet.render(format)
+    if format != "svg":  # the record of what plans wrote is an SVG comment: other formats remove nothing
+        return replace_all(contents)
+    return replace_all(contents, stale=(directory, r"acceleration\.svg", "sheet.svg"))
+
+
+def write_position_sheets(run, directory, *, lang: str = "en", format: str = "svg", given: dict | None = None, progress=None) -> list[Path]:
+    """Write ``sheet-00.svg``, ``sheet-01.svg``, … (a sheet per solved position, :func:`position_sheets`) and
+    ``positions.svg`` (the plan of positions at the sheets' k_l), or ``.pdf``, ``.png`` (*format*).
+
+    A position that cannot be solved gets no sheet.  All files are written together, atomically; sheets of an
+    earlier run with more positions that plans wrote (and nobody changed since) are removed; other files in
+    *directory* are never touched.  Returns the sheets in position order, then the plan of positions.
+    """
+    from .._files import replace_all
+
+    directory = Path(directory)
+    say = progress or (lambda words: None)
+    total = len(run.runs)
+    width = max(2, len(str(total - 1)))
+    sheets, scales = position_sheets(run, lang=lang, given=given, progress=say)
+    contents: dict[Path, bytes] = {}
+    for r, sheet in sheets:
+        contents[directory / f"sheet-{r.index:0{width}d}.{format}"] = sheet.render(format)
+    files = len(sheets) + 1
+    say(f"sheet {files}/{files}")
+    k_l = scales.get("k_l") or run.scales["k_l"]
+    contents[directory / f"positions.{format}"] = positions_page(run, k_l, lang=lang, number=(files, files)).render(format)
+    if format != "svg":
+        return replace_all(contents)
+    return replace_all(contents, stale=(directory, r"sheet-\d+\.svg", "positions.svg"))
