@@ -37,7 +37,7 @@ from .document import GUTTER, SMALL_PT, TEXT_PT, Document, PageGeometry, bbox, f
 from .typesetting import compile_document, image, string
 from .words import assembly_lines, formula_words, namer
 
-__all__ = ["Sheet", "PAPERS", "sheet_page", "build_sheet", "fitted_sheet", "position_sheets", "positions_page",
+__all__ = ["Sheet", "PAPERS", "sheet_page", "build_sheet", "fitted_sheet", "sheet_at", "position_sheets", "position_heading", "positions_page",
            "write_drawings", "write_position_sheets", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION"]
 
 #: the ISO sheets a sheet may take, smallest first, landscape [mm]
@@ -133,7 +133,7 @@ def _arrangements(room, kinds):
     g = GUTTER
     plans = [k for k in kinds if k != "mechanism"]
     out = []
-    for f in (0.3, 0.4, 0.5, 0.6, 0.7):
+    for f in (0.2, 0.3, 0.4, 0.5, 0.6, 0.7):
         top = height * f
         # the mechanism over the plans, the plans side by side
         boxes = {"mechanism": (0.0, 0.0, width, top - g / 2)}
@@ -374,6 +374,34 @@ def fitted_sheet(scene, graphical, analytic, construct_at, *, lang: str = "en", 
     raise PlansError("the drawings at the factors given are larger than A0: give larger scale factors (--k-l, --k-v, --k-a)")
 
 
+def sheet_at(graphical, analytic=None, *, lang: str = "en", heading: str = "", number: tuple[int, int] | None = None) -> Sheet:
+    """The sheet of *graphical* at its own factors (nothing constructed: a notebook's or a position's sheet), the
+    regions arranged for its drawings; with *analytic* (the same position's), the results table and the assembly."""
+    from ..structure import find_structure
+
+    scene = graphical.scene
+    kinds = _objects(graphical)
+    for paper, _ in PAPERS:
+        room = _drawing_room(sheet_page(paper))
+        blocks = {kind: _block(kind, graphical, lang) for kind in kinds}
+        sizes = {kind: (b.width, b.height) for kind, b in blocks.items()}
+        regions = _choose_regions(room, {kind: _extent(kind, obj) for kind, obj in kinds.items()}, ESTIMATED_FIXED, sizes)
+        if regions is None and paper != PAPERS[-1][0]:
+            continue
+        if regions is None:
+            regions = _arrangements(room, list(kinds))[0]
+        if analytic is not None:
+            sheet = _sheet_of(scene, graphical, analytic, blocks, regions, lang=lang, heading=heading, paper=paper, number=number)
+        else:
+            from ..drawing.svgblocks import legend_svg
+
+            plans = [p for p in (graphical.velocity_plan, graphical.acceleration_plan) if p is not None]
+            sheet = build_sheet(scene, graphical, blocks, regions, lang=lang, formula=find_structure(scene).formula,
+                                legend=legend_svg(plans, lang), heading=heading, paper=paper, number=number)
+        if _fits_one_page(sheet) or paper == PAPERS[-1][0]:
+            return sheet
+
+
 def _sheet_of(scene, g, analytic, blocks, regions, *, lang, heading, paper, number) -> Sheet:
     from ..compare import compare
     from ..drawing.sheet import translate_table
@@ -462,17 +490,22 @@ def positions_page(run, k_l: float, *, lang: str = "en", number: tuple[int, int]
     doc.sheet_number = number
     doc.body.append(f"#align(center)[#text(size: {TEXT_PT + 1.5}pt, weight: \"bold\")[{doc.words(term('positions_plan', lang))}] \\\n"
                     f"{doc.scale_markup('k_l', k_l)}]\n")
-    doc.body.append(f"#align(center)[#{doc.add_image('positions', block)}]\n")
-    x = page.margins[0] + (page.text_width - block.width) / 2
-    return Sheet(doc.source(), doc.images, {"k_l": k_l}, "A3", {"positions": (x, page.margins[2] + CAPTION, block.width, block.height)})
+    y = CAPTION + 2.0 + max(room[1] - block.height, 0.0) / 2  # the drawing in the middle of the page
+    x = (page.text_width - block.width) / 2
+    doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {y:.3f}mm, {image('positions', block.width)})")
+    doc.add_image("positions", block)
+    return Sheet(doc.source(), doc.images, {"k_l": k_l}, "A3", {"positions": (page.margins[0] + x, page.margins[2] + y, block.width, block.height)})
 
 
 # --- files -----------------------------------------------------------------------------------------
 
 
-def write_drawings(sheet: Sheet, directory, *, lang: str = "en", format: str = "svg") -> list[Path]:
+def write_drawings(sheet, directory, *, lang: str = "en", format: str = "svg") -> list[Path]:
     """Write ``mechanism.svg``, ``velocity.svg``, ``acceleration.svg`` (the drawings of the sheet's solution, as
     drawings) and ``sheet.svg`` (*sheet*, the page), or ``.pdf``, ``.png`` (*format*).
+
+    *sheet*: a :class:`Sheet` (:func:`fitted_sheet`), or a GraphicalSolution, whose sheet is then set at its own
+    factors (:func:`sheet_at`, with the analytic solution of its scene).
 
     All are rendered in memory first and written atomically together (:func:`plans._files.replace_all`): a
     failure leaves every existing file as it was.  ``acceleration.svg`` is written only when the solution has an
@@ -483,6 +516,10 @@ def write_drawings(sheet: Sheet, directory, *, lang: str = "en", format: str = "
     from ..drawing.mechanism import draw_mechanism
     from ..drawing.plan_drawing import draw_plan
 
+    if not isinstance(sheet, Sheet):
+        from ..analytic import solve
+
+        sheet = sheet_at(sheet, solve(sheet.scene), lang=lang)
     solution = sheet.graphical
     directory = Path(directory)
     contents: dict[Path, bytes] = {}
