@@ -248,11 +248,8 @@ class Document:
                          f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.3mm), align: left + horizon,\n  "
                          + ",\n  ".join(rows) + ")]]\n")
 
-    def table_markup(self, heading: str, rows) -> str:
+    def table_markup(self, heading: str, rows, aligns: str = "(left, right, right, right, right)") -> str:
         """A table of values under its *heading*, as Typst code (a block never parted; first row the header)."""
-        return self._table(heading, rows, "(left, right, right, right, right)")
-
-    def _table(self, heading: str, rows, aligns: str) -> str:
         header = rows[0]
         ncol = len(header)
         body = []
@@ -266,7 +263,7 @@ class Document:
 
     def tables(self, tables, aligns: str = "(left, right, right, right, right)") -> None:
         """Tables of values, two columns of them on a page (*aligns*: Typst's alignment of the columns)."""
-        parts = [self._table(heading, rows, aligns) for heading, rows in tables if rows]
+        parts = [self.table_markup(heading, rows, aligns) for heading, rows in tables if rows]
         self.body.append(f"#text(size: {SMALL_PT}pt)[#columns(2, gutter: {GUTTER}mm)[" + "\n".join("#" + p for p in parts) + "]]\n")
 
     def loop_block(self, block) -> None:

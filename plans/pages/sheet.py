@@ -34,7 +34,8 @@ from pathlib import Path
 
 from ..i18n import term
 from .document import GUTTER, SMALL_PT, TEXT_PT, Document, PageGeometry, bbox, fitted, plan_extent
-from .typesetting import compile_document, image, string
+from ..graphical.scales import round_up
+from .typesetting import compile_document, image, query_value
 from .words import assembly_lines, formula_words, namer
 
 __all__ = ["Sheet", "PAPERS", "sheet_page", "build_sheet", "fitted_sheet", "sheet_at", "position_sheets", "position_heading", "positions_page",
@@ -54,6 +55,8 @@ FOOT = 4.0
 ESTIMATED_FIXED = {"mechanism": (24.0, 24.0), "velocity": (14.0, 20.0), "acceleration": (14.0, 20.0)}
 #: the scale factor of each drawing
 SCALE_OF = {"mechanism": "k_l", "velocity": "k_v", "acceleration": "k_a"}
+#: the factors a drawing depends on (a plan is constructed from the readings of the drawings before it)
+FACTORS_OF = {"mechanism": ("k_l",), "velocity": ("k_l", "k_v"), "acceleration": ("k_l", "k_v", "k_a")}
 
 
 def sheet_page(paper: str = "A3") -> PageGeometry:
@@ -127,12 +130,33 @@ class Sheet:
 # --- the regions of the drawings ------------------------------------------------------------------
 
 
-def _arrangements(room, kinds):
-    """Candidate regions {kind: (x, y, w, h)} [mm] in the drawings' room (*kinds*: the drawings, mechanism first)."""
+#: the least height [mm] of the room under the text column worth a drawing
+UNDER_LEAST = 45.0
+
+
+def _arrangements(room, kinds, under=None):
+    """Candidate regions {kind: (x, y, w, h)} [mm from the text area's top left corner] in the drawings' room
+    (*room*: its width and height at the left of the text column; *under*: (x, y, w, h), the room left under the
+    text column, or None; *kinds*: the drawings, mechanism first)."""
     width, height = room
     g = GUTTER
     plans = [k for k in kinds if k != "mechanism"]
     out = []
+    if under is not None and under[3] >= UNDER_LEAST:
+        ux, uy, uw, uh = under
+        # the mechanism alone at the left, the plans under the text (side by side, or one of them)
+        w = (uw - g * (len(plans) - 1)) / max(len(plans), 1)
+        out.append({"mechanism": (0.0, 0.0, width, height), **{k: (ux + n * (w + g), uy, w, uh) for n, k in enumerate(plans)}})
+        for f in (0.3, 0.4, 0.5, 0.6, 0.7):
+            top = height * f
+            for k in plans:  # one plan under the text, the other (if any) under the mechanism
+                other = [p for p in plans if p != k]
+                boxes = {"mechanism": (0.0, 0.0, width, top - g / 2), k: (ux, uy, uw, uh)}
+                if other:
+                    boxes[other[0]] = (0.0, top + g / 2, width, height - top - g / 2)
+                else:
+                    boxes["mechanism"] = (0.0, 0.0, width, height)
+                out.append(boxes)
     for f in (0.2, 0.3, 0.4, 0.5, 0.6, 0.7):
         top = height * f
         # the mechanism over the plans, the plans side by side
@@ -165,11 +189,11 @@ def _drawn(extent, box, fixed) -> float:
     return min(ratios) if ratios else 1.0
 
 
-def _choose_regions(room, extents: dict, fixed: dict, given_sizes: dict):
+def _choose_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=None):
     """The arrangement that draws the drawings largest (the geometric mean of their sizes), or None when a drawing
-    at a given factor (*given_sizes*: kind -> (w, h) [mm]) fits none."""
+    at a given factor (*given_sizes*: kind -> (w, h) [mm]) fits none (*room*, *under*: :func:`_arrangements`)."""
     best, best_score = None, -math.inf
-    for boxes in _arrangements(room, list(extents)):
+    for boxes in _arrangements(room, list(extents), under):
         score = 0.0
         for kind, extent in extents.items():
             box = boxes[kind]
@@ -215,9 +239,10 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
         for plan in (graphical.velocity_plan, graphical.acceleration_plan):
             if plan is not None and any(step.equations for step in plan.steps):
                 doc.equations(f"{term('vector_equations', lang)}: {term(plan.kind + '_plan', lang).lower()}", plan.steps, name)
-        readings = _readings(doc, graphical, lang)
-        if readings:
-            doc.tables(readings, aligns="(left, left, right, left, right)")
+        readings = [doc.table_markup(heading, rows, "(left, left, right, left, right)") for heading, rows in _readings(doc, graphical, lang)]
+        if readings:  # the readings of the two plans side by side
+            doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (1fr, 1fr), column-gutter: {GUTTER}mm, align: top + left, "
+                            + ", ".join(readings) + ")]\n")
         results = doc.table_markup(term("comparison", lang), table) if table and len(table) > 1 else "[]"
         legend_cell = f"align(right)[#{doc.add_image('legend', legend)}]" if legend is not None else "[]"
         doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {results}, {legend_cell})]\n")
@@ -283,12 +308,12 @@ def _block(kind: str, graphical, lang: str, box=None):
     return block
 
 
-def _fit_factors(samples, construct_at, lang: str, given: dict, room, sheets_extent=None):
+def _fit_factors(samples, construct_at, lang: str, given: dict, room, under=None):
     """(scales, regions, {sample index: (graphical, blocks)}) for one or more positions' solutions (*samples*)
     drawn at one k per kind, each the round factor with which the largest drawing of its kind fills its region.
 
-    *construct_at(i, scales)*: sample *i* constructed at *scales*.  Returns None when drawings at given factors fit
-    no arrangement of *room*.
+    *construct_at(i, scales)*: sample *i* constructed at *scales*; *room*, *under*: :func:`_arrangements`.
+    Returns None when drawings at given factors fit no arrangement.
     """
     kinds = list(_objects(samples[0]))
     if any(g.acceleration_plan is None for g in samples):
@@ -305,39 +330,42 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, sheets_ext
             k = given[SCALE_OF[kind]]
             fx, fy = ESTIMATED_FIXED[kind]
             given_sizes[kind] = (extents[kind][0] / k + fx, extents[kind][1] / k + fy)
-    regions = _choose_regions(room, extents, ESTIMATED_FIXED, given_sizes)
+    regions = _choose_regions(room, extents, ESTIMATED_FIXED, given_sizes, under)
     if regions is None:
         return None
     scales = dict(samples[0].scales)
     boxes = {kind: (regions[kind][2], regions[kind][3] - CAPTION) for kind in kinds}
+    drawn = {}  # a drawing is drawn once at its factors: the mechanism's at k_l, a velocity plan's at k_l, k_v
+
+    def block_at(i, kind, at):
+        key = (i, kind) + tuple(at[k] for k in FACTORS_OF[kind])
+        if key not in drawn:
+            drawn[key] = _block(kind, construct_at(i, at), lang, regions[kind])
+        return drawn[key]
+
     # one kind after the other, each constructed with the factors chosen before it (a plan reads the mechanism)
     for kind in kinds:
         key = SCALE_OF[kind]
         i = largest[kind]
 
         def draw(k, kind=kind, key=key, i=i):
-            return _block(kind, construct_at(i, {**scales, key: k}), lang, regions[kind])
+            return block_at(i, kind, {**scales, key: k})
 
         scales[key], _ = fitted(draw, extents[kind], boxes[kind], samples[i].scales[key], given.get(key))
     out = {}
     for _ in range(4):  # every sample at the factors; coarser while a drawing still runs over its region
         out, over = {}, {}
         for i in range(len(samples)):
-            g = construct_at(i, scales)
-            blocks = {kind: _block(kind, g, lang, regions[kind]) for kind in kinds}
-            out[i] = (g, blocks)
+            blocks = {kind: block_at(i, kind, scales) for kind in kinds}
+            out[i] = (construct_at(i, scales), blocks)
             for kind, block in blocks.items():
                 f = max(block.width / (boxes[kind][0] + 0.5), block.height / (boxes[kind][1] + 0.5))
                 if f > 1.0 and given.get(SCALE_OF[kind]) is None:
                     over[kind] = max(over.get(kind, 1.0), f)
         if not over:
             break
-        from ..graphical.scales import round_up
-
         for kind, f in over.items():
             scales[SCALE_OF[kind]] = round_up(scales[SCALE_OF[kind]] * f * 1.0001)
-    else:
-        pass
     if any(block.width > boxes[kind][0] + 0.5 or block.height > boxes[kind][1] + 0.5
            for _, blocks in out.values() for kind, block in blocks.items()):
         return None  # drawings at given factors larger than this sheet's regions
@@ -347,6 +375,39 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, sheets_ext
 def _fits_one_page(sheet: Sheet) -> bool:
     """Whether the sheet's text stays on its one page (Typst flows what does not fit onto a second)."""
     return len(compile_document(sheet.source, sheet.images, "svg")) == 1
+
+
+def _text_parts(scene, g, analytic, lang: str) -> dict:
+    """What the text column of the sheet of *g* says besides its equations and readings: the results table (with
+    *analytic*, the same position's analytic solution), the structural formula, the assembly, the plans' legend."""
+    from ..compare import compare
+    from ..drawing.sheet import translate_table
+    from ..drawing.svgblocks import legend_svg
+    from ..report import sheet_table
+    from ..structure import find_structure
+
+    plans = [p for p in (g.velocity_plan, g.acceleration_plan) if p is not None]
+    if analytic is None:
+        return {"table": None, "formula": find_structure(scene).formula, "assembly": (), "legend": legend_svg(plans, lang)}
+    return {"table": translate_table(sheet_table(compare(analytic, g), g, analytic), lang), "formula": analytic.structure.formula,
+            "assembly": assembly_lines(analytic.branches, scene, lang, g.positions), "legend": legend_svg(plans, lang)}
+
+
+def _text_height(scene, g, parts: dict, lang: str, heading: str, paper: str) -> float:
+    """The height [mm] of the sheet's text column (measured by Typst before the page is laid out)."""
+    doc = Document(scene, lang, sheet_page(paper))
+    doc.plate = dict(g.scales)
+    texts = _texts(doc, g, heading=heading, **parts)
+    doc.body.append("#let plans-texts = [\n" + "\n".join(texts) + "]")
+    doc.body.append(f"#context [#metadata(measure(block(width: {TEXT_COLUMN}mm, plans-texts)).height.mm()) <plans-text-height>]")
+    return float(query_value(doc.source(), doc.images, "plans-text-height"))
+
+
+def _under(page: PageGeometry, text_height: float):
+    """The room (x, y, w, h) [mm] under a text column of *text_height*, over the title block."""
+    width, _ = _drawing_room(page)
+    y = text_height + GUTTER + 3.0
+    return (width + GUTTER, y, page.text_width - width - GUTTER, page.text_height - y)
 
 
 def fitted_sheet(scene, graphical, analytic, construct_at, *, lang: str = "en", given: dict | None = None,
@@ -359,15 +420,29 @@ def fitted_sheet(scene, graphical, analytic, construct_at, *, lang: str = "en", 
     (``{"k_l": …}``, None for those to choose).
     """
     given = {key: value for key, value in (given or {}).items() if value is not None}
+    parts = _text_parts(scene, graphical, analytic, lang)
+    cache = {}
+
+    def constructed(i, scales):
+        key = tuple(scales.get(k) for k in ("k_l", "k_v", "k_a"))
+        if key not in cache:
+            cache[key] = construct_at(scales)
+        return cache[key]
+
     for paper, _ in PAPERS:
         page = sheet_page(paper)
-        found = _fit_factors([graphical], lambda i, scales: construct_at(scales), lang, given, _drawing_room(page))
+        last = paper == PAPERS[-1][0]
+        height = _text_height(scene, graphical, parts, lang, heading, paper)
+        if height > page.text_height and not last:
+            continue  # the text does not fit its column: a larger sheet
+        found = _fit_factors([graphical], constructed, lang, given, _drawing_room(page), _under(page, height))
         if found is None:
             continue
         scales, regions, out = found
         g, blocks = out[0]
-        sheet = _sheet_of(scene, g, analytic, blocks, regions, lang=lang, heading=heading, paper=paper, number=number)
-        if _fits_one_page(sheet) or paper == PAPERS[-1][0]:
+        sheet = build_sheet(scene, g, blocks, regions, lang=lang, heading=heading, paper=paper, number=number,
+                            **_text_parts(scene, g, analytic, lang))
+        if last or _fits_one_page(sheet):
             return sheet
     from ..errors import PlansError
 
@@ -377,42 +452,23 @@ def fitted_sheet(scene, graphical, analytic, construct_at, *, lang: str = "en", 
 def sheet_at(graphical, analytic=None, *, lang: str = "en", heading: str = "", number: tuple[int, int] | None = None) -> Sheet:
     """The sheet of *graphical* at its own factors (nothing constructed: a notebook's or a position's sheet), the
     regions arranged for its drawings; with *analytic* (the same position's), the results table and the assembly."""
-    from ..structure import find_structure
-
     scene = graphical.scene
     kinds = _objects(graphical)
+    parts = _text_parts(scene, graphical, analytic, lang)
+    blocks = {kind: _block(kind, graphical, lang) for kind in kinds}
+    sizes = {kind: (b.width, b.height) for kind, b in blocks.items()}
+    extents = {kind: _extent(kind, obj) for kind, obj in kinds.items()}
     for paper, _ in PAPERS:
-        room = _drawing_room(sheet_page(paper))
-        blocks = {kind: _block(kind, graphical, lang) for kind in kinds}
-        sizes = {kind: (b.width, b.height) for kind, b in blocks.items()}
-        regions = _choose_regions(room, {kind: _extent(kind, obj) for kind, obj in kinds.items()}, ESTIMATED_FIXED, sizes)
-        if regions is None and paper != PAPERS[-1][0]:
+        page = sheet_page(paper)
+        last = paper == PAPERS[-1][0]
+        height = _text_height(scene, graphical, parts, lang, heading, paper)
+        regions = _choose_regions(_drawing_room(page), extents, ESTIMATED_FIXED, sizes, _under(page, height))
+        if regions is None and not last:
             continue
-        if regions is None:
-            regions = _arrangements(room, list(kinds))[0]
-        if analytic is not None:
-            sheet = _sheet_of(scene, graphical, analytic, blocks, regions, lang=lang, heading=heading, paper=paper, number=number)
-        else:
-            from ..drawing.svgblocks import legend_svg
-
-            plans = [p for p in (graphical.velocity_plan, graphical.acceleration_plan) if p is not None]
-            sheet = build_sheet(scene, graphical, blocks, regions, lang=lang, formula=find_structure(scene).formula,
-                                legend=legend_svg(plans, lang), heading=heading, paper=paper, number=number)
-        if _fits_one_page(sheet) or paper == PAPERS[-1][0]:
+        regions = regions or _arrangements(_drawing_room(page), list(kinds))[0]
+        sheet = build_sheet(scene, graphical, blocks, regions, lang=lang, heading=heading, paper=paper, number=number, **parts)
+        if last or _fits_one_page(sheet):
             return sheet
-
-
-def _sheet_of(scene, g, analytic, blocks, regions, *, lang, heading, paper, number) -> Sheet:
-    from ..compare import compare
-    from ..drawing.sheet import translate_table
-    from ..drawing.svgblocks import legend_svg
-    from ..report import sheet_table
-
-    table = translate_table(sheet_table(compare(analytic, g), g, analytic), lang)
-    plans = [p for p in (g.velocity_plan, g.acceleration_plan) if p is not None]
-    return build_sheet(scene, g, blocks, regions, lang=lang, table=table, formula=analytic.structure.formula,
-                       assembly=assembly_lines(analytic.branches, scene, lang, g.positions), legend=legend_svg(plans, lang),
-                       heading=heading, paper=paper, number=number)
 
 
 def position_heading(r, lang: str) -> str:
@@ -426,6 +482,7 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
     and numbered n of m (m: the solved positions and the plan of positions).  Returns ``([(run, Sheet)…], scales)``.
     """
     from ..compare import compare
+    from ..errors import PlansError
     from ..graphical import construct
 
     say = progress or (lambda words: None)
@@ -441,19 +498,23 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
             r = solved[i]
             g = construct(r.scene, run.structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=run.precision,
                           check_scales=False)
-            cache.clear() if len(cache) > 64 else None
             cache[key] = replace(g, travel=r.graphical.travel, cycle_poses=r.graphical.cycle_poses)
         return cache[key]
 
     samples = [r.graphical for r in solved]
     total = len(solved) + 1
-    for paper, _ in PAPERS:
-        found = _fit_factors(samples, construct_at, lang, given, _drawing_room(sheet_page(paper)))
+    names = [name for name, _ in PAPERS]
+    parts = [_text_parts(r.scene, r.graphical, r.analytic, lang) for r in solved]
+    for paper in names:
+        page = sheet_page(paper)
+        # the tallest text column of all the sheets: the drawings under it clear every sheet's
+        height = max(_text_height(r.scene, r.graphical, p, lang, position_heading(r, lang), paper) for r, p in zip(solved, parts))
+        if height > page.text_height and paper != names[-1]:
+            continue
+        found = _fit_factors(samples, construct_at, lang, given, _drawing_room(page), _under(page, height))
         if found is not None:
             break
     else:
-        from ..errors import PlansError
-
         raise PlansError("the drawings at the factors given are larger than A0: give larger scale factors (--k-l, --k-v, --k-a)")
     scales, regions, out = found
     sheets = []
@@ -461,12 +522,8 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
         say(f"sheet {i + 1}/{total}")
         g, blocks = out[i]
         h = replace(r, graphical=g, comparisons=compare(r.analytic, g))
-        sheet = None
-        for p, _ in PAPERS[[name for name, _ in PAPERS].index(paper):]:
-            sheet = _sheet_of(r.scene, g, r.analytic, blocks, regions, lang=lang, heading=position_heading(r, lang), paper=p,
-                              number=(i + 1, total))
-            if _fits_one_page(sheet):
-                break
+        sheet = build_sheet(r.scene, g, blocks, regions, lang=lang, heading=position_heading(r, lang), paper=paper,
+                            number=(i + 1, total), **_text_parts(r.scene, g, r.analytic, lang))
         sheets.append((h, sheet))
     return sheets, scales
 

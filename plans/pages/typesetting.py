@@ -23,7 +23,7 @@ import unicodedata
 
 from ..errors import PlansError
 
-__all__ = ["string", "text", "math", "mixed", "image", "compile_document", "TypesetError", "FONT", "MATH_FONT"]
+__all__ = ["string", "text", "math", "mixed", "image", "compile_document", "query_value", "TypesetError", "FONT", "MATH_FONT"]
 
 #: the text font of every page (ships with Typst; Latin, Cyrillic, Greek)
 FONT = "Libertinus Serif"
@@ -243,6 +243,19 @@ def compile_document(source: str, images: dict | None = None, fmt: str = "pdf", 
         return out
     pages = list(out) if isinstance(out, list) else [out]
     return [_svg_in_mm(page) for page in pages] if fmt == "svg" else pages
+
+
+def query_value(source: str, images: dict | None, label: str):
+    """The value of the ``metadata`` labelled *label* in the document *source* (a size Typst measured: the page
+    asks before it is laid out), with the same fonts and inputs as :func:`compile_document`."""
+    import typst
+
+    inputs = {key: (data.decode("utf-8") if isinstance(data, bytes) else data) for key, data in (images or {}).items()}
+    try:
+        return typst.query(source.encode("utf-8"), f"<{label}>", field="value", one=True, sys_inputs=inputs,
+                           font_paths=_font_paths(), ignore_system_fonts=True)
+    except typst.TypstError as exc:
+        raise TypesetError(f"the typesetter refused a page: {exc}") from None
 
 
 _ROOT_PT = re.compile(rb'(<svg\b[^>]*?)\bwidth="([0-9.]+)pt" height="([0-9.]+)pt"')
