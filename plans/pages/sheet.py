@@ -34,7 +34,7 @@ from pathlib import Path
 
 from ..i18n import term
 from .document import GUTTER, SMALL_PT, TEXT_PT, Document, PageGeometry, bbox, fitted, plan_extent
-from ..graphical.scales import round_up
+from ..graphical.scales import round_down, round_up
 from .typesetting import compile_document, image, query_value
 from .words import assembly_lines, formula_words, namer
 
@@ -189,12 +189,23 @@ def _drawn(extent, box, fixed) -> float:
     return min(ratios) if ratios else 1.0
 
 
-def _choose_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=None):
-    """The arrangement that draws the drawings largest (the geometric mean of their sizes), or None when a drawing
-    at a given factor (*given_sizes*: kind -> (w, h) [mm]) fits none (*room*, *under*: :func:`_arrangements`)."""
-    best, best_score = None, -math.inf
+def _choose_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=None, needs=None):
+    """The arrangement that draws the drawings largest, or None when a drawing at a given factor (*given_sizes*:
+    kind -> (w, h) [mm]) fits none (*room*, *under*: :func:`_arrangements`).
+
+    Largest: first every drawing at least its least size (*needs*: kind -> [(physical length, least mm)…], the
+    sizes a sheet gives its drawings, :data:`LEAST`) by the most (up to :data:`ENOUGH`), then the geometric
+    mean of their sizes.
+    """
+    ranked = _ranked_regions(room, extents, fixed, given_sizes, under, needs)
+    return ranked[0] if ranked else None
+
+
+def _ranked_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=None, needs=None) -> list:
+    """The arrangements in which the drawings fit, best first (:func:`_choose_regions`)."""
+    scored = []
     for boxes in _arrangements(room, list(extents), under):
-        score = 0.0
+        least, score = ENOUGH, 0.0
         for kind, extent in extents.items():
             box = boxes[kind]
             if kind in given_sizes:
@@ -204,10 +215,33 @@ def _choose_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=N
                     break
                 continue
             size = _drawn(extent, box, fixed[kind])
-            score = score + math.log(size) if size > 0 else -math.inf
-        if score > best_score:
-            best, best_score = boxes, score
-    return best
+            if size <= 0:
+                score = -math.inf
+                break
+            size = 1.0 / round_up(1.0 / size)  # at the round factor it will be drawn at
+            score += math.log(size)
+            for length, mm in (needs or {}).get(kind, ()):
+                if length > 0:
+                    least = min(least, size * length / mm)
+        if score > -math.inf:
+            scored.append(((least, score), len(scored), boxes))
+    return [boxes for _, _, boxes in sorted(scored, key=lambda t: (-t[0][0], -t[0][1], t[1]))]
+
+
+#: the least sizes [mm] a sheet gives its drawings (issue 11 §1): the mechanism 100 mm across, a plan's
+#: largest vector 60 mm and the plan 40 mm across
+LEAST = {"mechanism": 100.0, "vector": 60.0, "plan": 40.0}
+#: how far over its least size a drawing counts in choosing the arrangement (the round factors and what does not
+#: scale take some of it back)
+ENOUGH = 1.3
+
+
+def _needs(kind: str, objs) -> list[tuple[float, float]]:
+    """[(physical length, least mm)…] of the drawings of *kind* (*objs*: a solution's, or a plan per position)."""
+    if kind == "mechanism":  # one k_l over the positions: the smallest across reaches its size
+        return [(min(max(_extent(kind, g)) for g in objs), LEAST["mechanism"])]
+    return [(max((v.value for p in objs for v in p.vectors), default=0.0), LEAST["vector"]),
+            (max(max(_extent(kind, p)) for p in objs), LEAST["plan"])]
 
 
 # --- the sheet -------------------------------------------------------------------------------------
@@ -295,15 +329,16 @@ def _extent(kind: str, obj) -> tuple[float, float]:
     return bbox(obj.positions.values()) if kind == "mechanism" else plan_extent(obj)
 
 
-def _block(kind: str, graphical, lang: str, box=None):
-    """The drawing of *kind* of *graphical* (a plan without its enlarged detail when that runs over *box*)."""
+def _block(kind: str, graphical, lang: str, box=None, detail: bool = True):
+    """The drawing of *kind* of *graphical* (a plan without its enlarged detail when that runs over *box*, or
+    without *detail*)."""
     from ..drawing.svgblocks import mechanism_svg, plan_svg
 
     if kind == "mechanism":
-        return mechanism_svg(graphical, lang)
+        return mechanism_svg(graphical, lang)  # (at its k_l alone: the cache of _fit_factors counts on it)
     plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
-    block = plan_svg(plan, lang)
-    if box is not None and (block.width > box[2] + 0.5 or block.height > box[3] - CAPTION + 0.5):
+    block = plan_svg(plan, lang, detail=detail)
+    if detail and box is not None and (block.width > box[2] + 0.5 or block.height > box[3] - CAPTION + 0.5):
         block = plan_svg(plan, lang, detail=False)
     return block
 
@@ -324,25 +359,65 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, under=None
         per = [(_extent(kind, _objects(g)[kind]), i) for i, g in enumerate(samples)]
         extents[kind] = (max(e[0] for e, _ in per), max(e[1] for e, _ in per))
         largest[kind] = max(per, key=lambda p: p[0][0] + p[0][1])[1]
+    scales = dict(samples[0].scales)
+    drawn = {}  # a drawing is drawn once at its factors: the mechanism's at k_l, a velocity plan's at k_l, k_v
+    regions = {}
+
+    def block_at(i, kind, at, detail=True):
+        key = (i, kind, detail) + tuple(at[k] for k in FACTORS_OF[kind]) + ((regions.get(kind),) if kind != "mechanism" else ())
+        if key not in drawn:
+            drawn[key] = _block(kind, construct_at(i, at), lang, regions.get(kind), detail)
+        return drawn[key]
+
+    fixed = dict(ESTIMATED_FIXED)
+    for kind in kinds:
+        key = SCALE_OF[kind]
+        if given.get(key) is not None:
+            continue
+        # a drawing's size at two factors tells what scales (the geometry; for the mechanism its guides and slots
+        # drawn over the cycle's travel too) from what does not (labels, supports, notes): size = fixed + geometry / k
+        i = largest[kind]
+        k0 = samples[i].scales[key]
+        # (a plan without its enlarged detail, which is drawn at some factors only)
+        one, two = (block_at(i, kind, {**scales, key: k}, detail=kind == "mechanism") for k in (k0, 2 * k0))
+        geometry = (2 * k0 * (one.width - two.width), 2 * k0 * (one.height - two.height))
+        extents[kind] = tuple(max(g, e) for g, e in zip(geometry, extents[kind]))
+        fixed[kind] = tuple(max(b - e / k0, 0.0) for b, e in zip((one.width, one.height), extents[kind]))
     given_sizes = {}
     for kind in kinds:
         if given.get(SCALE_OF[kind]) is not None:
             k = given[SCALE_OF[kind]]
             fx, fy = ESTIMATED_FIXED[kind]
             given_sizes[kind] = (extents[kind][0] / k + fx, extents[kind][1] / k + fy)
-    regions = _choose_regions(room, extents, ESTIMATED_FIXED, given_sizes, under)
-    if regions is None:
+    needs = {kind: _needs(kind, [_objects(g)[kind] for g in samples]) for kind in kinds}
+    best = None
+    for chosen in _ranked_regions(room, extents, fixed, given_sizes, under, needs)[:TRIED]:
+        regions.clear()
+        regions.update(chosen)
+        found = _fit_in(samples, kinds, chosen, extents, largest, scales, given, block_at, construct_at)
+        if found is None:
+            continue
+        reached = min((length / found[0][SCALE_OF[kind]] / mm for kind in kinds if given.get(SCALE_OF[kind]) is None
+                       for length, mm in needs[kind] if length > 0), default=1.0)
+        if best is None or reached > best[0]:
+            best = (reached, dict(chosen), found)
+        if reached >= 1.0:
+            break  # every drawing at its least size at least
+    if best is None:
         return None
-    scales = dict(samples[0].scales)
+    _, chosen, (fitted_scales, out) = best
+    return fitted_scales, chosen, out
+
+
+#: how many of the best arrangements are drawn before the one that gives every drawing its least size is taken
+TRIED = 3
+
+
+def _fit_in(samples, kinds, regions, extents, largest, first, given, block_at, construct_at):
+    """(scales, {sample: (graphical, blocks)}) with the drawings fitted to *regions*; None when drawings at given
+    factors run over them."""
+    scales = dict(first)
     boxes = {kind: (regions[kind][2], regions[kind][3] - CAPTION) for kind in kinds}
-    drawn = {}  # a drawing is drawn once at its factors: the mechanism's at k_l, a velocity plan's at k_l, k_v
-
-    def block_at(i, kind, at):
-        key = (i, kind) + tuple(at[k] for k in FACTORS_OF[kind])
-        if key not in drawn:
-            drawn[key] = _block(kind, construct_at(i, at), lang, regions[kind])
-        return drawn[key]
-
     # one kind after the other, each constructed with the factors chosen before it (a plan reads the mechanism)
     for kind in kinds:
         key = SCALE_OF[kind]
@@ -351,7 +426,13 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, under=None
         def draw(k, kind=kind, key=key, i=i):
             return block_at(i, kind, {**scales, key: k})
 
-        scales[key], _ = fitted(draw, extents[kind], boxes[kind], samples[i].scales[key], given.get(key))
+        scales[key], block = fitted(draw, extents[kind], boxes[kind], samples[i].scales[key], given.get(key))
+        for _ in range(3 if given.get(key) is None else 0):  # finer while it still fits (what does not scale was over-reckoned)
+            finer = round_down(scales[key] * 0.9999)
+            trial = draw(finer)
+            if trial.width > boxes[kind][0] + 0.5 or trial.height > boxes[kind][1] + 0.5:
+                break
+            scales[key] = finer
     out = {}
     for _ in range(4):  # every sample at the factors; coarser while a drawing still runs over its region
         out, over = {}, {}
@@ -369,7 +450,7 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, under=None
     if any(block.width > boxes[kind][0] + 0.5 or block.height > boxes[kind][1] + 0.5
            for _, blocks in out.values() for kind, block in blocks.items()):
         return None  # drawings at given factors larger than this sheet's regions
-    return scales, regions, out
+    return scales, out
 
 
 def _fits_one_page(sheet: Sheet) -> bool:
@@ -462,7 +543,8 @@ def sheet_at(graphical, analytic=None, *, lang: str = "en", heading: str = "", n
         page = sheet_page(paper)
         last = paper == PAPERS[-1][0]
         height = _text_height(scene, graphical, parts, lang, heading, paper)
-        regions = _choose_regions(_drawing_room(page), extents, ESTIMATED_FIXED, sizes, _under(page, height))
+        needs = {kind: _needs(kind, [obj]) for kind, obj in kinds.items()}
+        regions = _choose_regions(_drawing_room(page), extents, ESTIMATED_FIXED, sizes, _under(page, height), needs)
         if regions is None and not last:
             continue
         regions = regions or _arrangements(_drawing_room(page), list(kinds))[0]
@@ -532,7 +614,7 @@ def positions_page(run, k_l: float, *, lang: str = "en", number: tuple[int, int]
     """The plan of positions of *run* on a sheet of its own at *k_l* (the sheets'; a coarser round one when it runs
     over the page), under its name and scale."""
     from ..drawing.svgblocks import positions_svg
-    from ..graphical.scales import round_up
+    from ..graphical.scales import round_down, round_up
 
     page = sheet_page("A3")
     room = (page.text_width, page.size[1] - page.margins[2] - page.margins[3] - CAPTION)
