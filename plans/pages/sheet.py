@@ -644,7 +644,8 @@ def write_drawings(sheet, directory, *, lang: str = "en", format: str = "svg") -
     drawings) and ``sheet.svg`` (*sheet*, the page), or ``.pdf``, ``.png`` (*format*).
 
     *sheet*: a :class:`Sheet` (:func:`fitted_sheet`), or a GraphicalSolution, whose sheet is then set at its own
-    factors (:func:`sheet_at`, with the analytic solution of its scene).
+    factors (:func:`sheet_at`: its drawings, equations and readings; no table against analytic values, which a
+    solution alone does not carry).
 
     All are rendered in memory first and written atomically together (:func:`plans._files.replace_all`): a
     failure leaves every existing file as it was.  ``acceleration.svg`` is written only when the solution has an
@@ -656,9 +657,7 @@ def write_drawings(sheet, directory, *, lang: str = "en", format: str = "svg") -
     from ..drawing.plan_drawing import draw_plan
 
     if not isinstance(sheet, Sheet):
-        from ..analytic import solve
-
-        sheet = sheet_at(sheet, solve(sheet.scene), lang=lang)
+        sheet = sheet_at(sheet, lang=lang)
     solution = sheet.graphical
     directory = Path(directory)
     contents: dict[Path, bytes] = {}
