@@ -152,3 +152,23 @@ def scales(page_text: str) -> dict[str, float]:
 def english(page_text: str, allowed=()) -> set[str]:
     """The Latin words of three letters or more on a page (none belongs on a page in another language)."""
     return {w for w in re.findall(r"[A-Za-z]{3,}", page_text) if w.lower() not in allowed}
+
+
+def unpack(path, kind: str):
+    """The drawing of *kind* embedded in the page *path*, written beside it (``sheet-00.mechanism.svg``): its path."""
+    from pathlib import Path
+
+    path = Path(path)
+    out = path.with_name(f"{path.stem}.{kind}.svg")
+    out.write_bytes(by_kind(path.read_bytes())[kind].svg)
+    return out
+
+
+def embedded_text(path) -> str:
+    """The text of every drawing embedded in the page *path* (their SVG text nodes), joined by spaces."""
+    from pathlib import Path
+
+    out = []
+    for d in drawings(Path(path).read_bytes()):
+        out += ["".join(t.itertext()) for t in d.root.iter(f"{SVG}text")]
+    return " ".join(out)

@@ -111,7 +111,9 @@ class Sheet:
         """The sheet as the bytes of a ``.svg``, ``.pdf`` or ``.png`` file."""
         if fmt == "pdf":
             return self.pdf()
-        if fmt in ("svg", "png"):
+        if fmt == "svg":  # an XML file as every SVG plans writes (and the record of what it wrote goes at its end)
+            return b'<?xml version="1.0" encoding="utf-8" standalone="no"?>\n' + self.pages("svg")[0]
+        if fmt == "png":
             return self.pages(fmt)[0]
         raise ValueError(f"no output format {fmt!r}; choose one of svg, pdf, png")
 
@@ -629,6 +631,13 @@ def positions_page(run, k_l: float, *, lang: str = "en", number: tuple[int, int]
     doc.sheet_number = number
     doc.body.append(f"#align(center)[#text(size: {TEXT_PT + 1.5}pt, weight: \"bold\")[{doc.words(term('positions_plan', lang))}] \\\n"
                     f"{doc.scale_markup('k_l', k_l)}]\n")
+    # the cycle: the driver's law, the four-bar loops' Grashof class, the stroke, θ and K (under the title block's left)
+    from .words import cycle_lines
+
+    lines = " \\\n".join(doc.words(formula_words(line)) for line in cycle_lines(run, lang))
+    if lines:
+        doc.body.append(f"#place(bottom + left, dx: 0mm, dy: {TITLE_BLOCK_ROOM - 2.0:.1f}mm, block(width: {page.text_width - 195.0:.1f}mm)"
+                        f"[#text(size: {SMALL_PT}pt)[{lines}]])\n")
     y = CAPTION + 2.0 + max(room[1] - block.height, 0.0) / 2  # the drawing in the middle of the page
     x = (page.text_width - block.width) / 2
     doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {y:.3f}mm, {image('positions', block.width)})")
