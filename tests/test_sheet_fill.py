@@ -8,7 +8,6 @@ plan's arrows (``tests/sheet_measure.py``); scale factors as the page's text (PD
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 import pytest

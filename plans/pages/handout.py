@@ -38,7 +38,6 @@ taken in the page's language where the scene gives them
 
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import dataclass, field, replace
 

@@ -616,7 +616,6 @@ def positions_page(run, k_l: float, *, lang: str = "en", number: tuple[int, int]
     """The plan of positions of *run* on a sheet of its own at *k_l* (the sheets'; a coarser round one when it runs
     over the page), under its name and scale."""
     from ..drawing.svgblocks import positions_svg
-    from ..graphical.scales import round_down, round_up
 
     page = sheet_page("A3")
     room = (page.text_width, page.size[1] - page.margins[2] - page.margins[3] - CAPTION)
