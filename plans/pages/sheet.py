@@ -396,10 +396,10 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, under=None
     for chosen in _ranked_regions(room, extents, fixed, given_sizes, under, needs)[:TRIED]:
         regions.clear()
         regions.update(chosen)
-        found = _fit_in(samples, kinds, chosen, extents, largest, scales, given, block_at, construct_at)
+        found = _factors_in(kinds, chosen, extents, largest, samples, scales, given, block_at)
         if found is None:
             continue
-        reached = min((length / found[0][SCALE_OF[kind]] / mm for kind in kinds if given.get(SCALE_OF[kind]) is None
+        reached = min((length / found[SCALE_OF[kind]] / mm for kind in kinds if given.get(SCALE_OF[kind]) is None
                        for length, mm in needs[kind] if length > 0), default=1.0)
         if best is None or reached > best[0]:
             best = (reached, dict(chosen), found)
@@ -407,17 +407,22 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, under=None
             break  # every drawing at its least size at least
     if best is None:
         return None
-    _, chosen, (fitted_scales, out) = best
-    return fitted_scales, chosen, out
+    _, chosen, factors = best
+    regions.clear()
+    regions.update(chosen)
+    drawn_all = _every_sample(samples, kinds, chosen, factors, given, block_at, construct_at)
+    if drawn_all is None:
+        return None
+    return drawn_all[0], chosen, drawn_all[1]
 
 
 #: how many of the best arrangements are drawn before the one that gives every drawing its least size is taken
 TRIED = 3
 
 
-def _fit_in(samples, kinds, regions, extents, largest, first, given, block_at, construct_at):
-    """(scales, {sample: (graphical, blocks)}) with the drawings fitted to *regions*; None when drawings at given
-    factors run over them."""
+def _factors_in(kinds, regions, extents, largest, samples, first, given, block_at):
+    """The factors with which the largest drawing of each kind fills its region of *regions* (drawn and measured:
+    :func:`plans.pages.document.fitted`, then finer while it still fits), given ones kept."""
     scales = dict(first)
     boxes = {kind: (regions[kind][2], regions[kind][3] - CAPTION) for kind in kinds}
     # one kind after the other, each constructed with the factors chosen before it (a plan reads the mechanism)
@@ -429,14 +434,24 @@ def _fit_in(samples, kinds, regions, extents, largest, first, given, block_at, c
             return block_at(i, kind, {**scales, key: k})
 
         scales[key], block = fitted(draw, extents[kind], boxes[kind], samples[i].scales[key], given.get(key))
-        for _ in range(3 if given.get(key) is None else 0):  # finer while it still fits (what does not scale was over-reckoned)
+        # finer while it still fits (what does not scale was over-reckoned): a step or three for one position's
+        # drawing, one for several (each position's drawing of the kind must fit at it)
+        for _ in range((3 if len(samples) == 1 else 1) if given.get(key) is None else 0):
             finer = round_down(scales[key] * 0.9999)
-            trial = draw(finer)
-            if trial.width > boxes[kind][0] + 0.5 or trial.height > boxes[kind][1] + 0.5:
+            trials = (block_at(j, kind, {**scales, key: finer}) for j in [i] + [j for j in range(len(samples)) if j != i])
+            if any(t.width > boxes[kind][0] + 0.5 or t.height > boxes[kind][1] + 0.5 for t in trials):  # (the first over ends it)
                 break
             scales[key] = finer
+    return scales
+
+
+def _every_sample(samples, kinds, regions, first, given, block_at, construct_at):
+    """(scales, {sample: (graphical, blocks)}): every sample drawn at the factors, a factor made coarser while a
+    drawing of its kind still runs over its region; None when drawings at given factors do."""
+    scales = dict(first)
+    boxes = {kind: (regions[kind][2], regions[kind][3] - CAPTION) for kind in kinds}
     out = {}
-    for _ in range(4):  # every sample at the factors; coarser while a drawing still runs over its region
+    for _ in range(4):
         out, over = {}, {}
         for i in range(len(samples)):
             blocks = {kind: block_at(i, kind, scales) for kind in kinds}
