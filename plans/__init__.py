@@ -20,7 +20,7 @@ swing ψ [rad], θ and K, :func:`four_bar_loops` the Grashof class of every
 four-bar loop; :func:`kinematic_diagrams` the output link's s, v, a
 diagrams by graphical differentiation (method of chords) against the plans
 and the analytic values.  :func:`write_drawings`
-draws the mechanism and the plans to SVG (matplotlib).  ``construct`` and
+draws the mechanism and the plans (matplotlib) and sets the sheet (Typst).  ``construct`` and
 ``write_drawings`` are imported on first use, so ``import plans`` stays light.
 
 Example
@@ -91,10 +91,10 @@ def __getattr__(name: str):
         from .graphical import construct
 
         return construct
-    if name in ("write_drawings", "write_position_sheets"):
-        from . import drawing
+    if name in ("write_drawings", "write_position_sheets"):  # the sheets: pages set by Typst
+        from .pages import sheet
 
-        return getattr(drawing, name)
+        return getattr(sheet, name)
     if name == "run_positions":
         from .positions import run_positions
 

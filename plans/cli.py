@@ -792,11 +792,8 @@ def _draw(args) -> int:
 
     from ._files import batch
     from .analytic import solve
-    from .compare import compare
-    from .drawing import draw_sheet, write_drawings
-    from .drawing.sheet import sheet_scales
+    from .pages.sheet import fitted_sheet, write_drawings, write_position_sheets
     from .positions import at_page_precision, cycle_poses, cycle_sweep
-    from .report import sheet_table
     from .sweep import line_travel
 
     _check_directory(args.output, "plans draw -o", () if _several(args) else (".svg", ".pdf", ".png"))
@@ -804,7 +801,6 @@ def _draw(args) -> int:
     scene = at_page_precision(scene, args.precision)  # a sheet prints lengths to 0.1 mm unless told
     args.precision = None  # the scene's, set just above
     if _several(args):
-        from .drawing import write_position_sheets
         from .positions import run_positions
 
         if _is_file(args.output):
@@ -813,49 +809,29 @@ def _draw(args) -> int:
                             law=args.law, start=args.start)
         for message in run.skipped_messages():
             _warn(message)
-        from .sheets import position_sheets
-
-        sheets = position_sheets(run, args.lang, _given_scales(args, scene))
         with batch():
-            paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format, sheets=sheets, progress=_progress(args))
+            paths = write_position_sheets(run, Path(args.output), lang=args.lang, format=args.format, given=_given_scales(args, scene),
+                                          progress=_progress(args))
         _progress_done(args)
     else:
         analytic = solve(scene, warn_condition=args.warn_condition)
-        branches = _branch_lines(analytic, args.lang)
-        formula = analytic.structure.formula
         cycle = cycle_sweep(scene, analytic.structure)
         travel = line_travel(cycle)  # slots and guides drawn over the cycle's travel
         poses = cycle_poses(cycle)  # the frame (guides' hatching, supports) chosen over the cycle
-
-        def table_of(g):
-            return sheet_table(compare(analytic, g), g, analytic)
-
-        from .sheets import fitted_sheet
-
-        graphical, figure = fitted_sheet(
+        sheet = fitted_sheet(
+            scene,
             replace(_construct(scene, args), travel=travel, cycle_poses=poses),
+            analytic,
             lambda scales: replace(_construct(scene, args, scales), travel=travel, cycle_poses=poses),
-            lambda g: draw_sheet(g, formula=formula, table=table_of(g), lang=args.lang, branches=branches),
-            lambda g, fixed: sheet_scales(g, formula=formula, table=table_of(g), lang=args.lang, branches=branches, given=given, fixed=fixed),
-            given=(given := _given_scales(args, scene)),
+            lang=args.lang,
+            given=_given_scales(args, scene),
         )
-        _warn_solution(analytic, graphical)
+        _warn_solution(analytic, sheet.graphical)
         with batch():
             if _is_file(args.output):  # -o page.png: the sheet alone, in the format of the suffix
-                from .drawing.formats import save_figure
-
-                paths = [save_figure(figure, args.output)]
+                paths = [sheet.save(args.output)]
             else:
-                paths = write_drawings(
-                    graphical,
-                    Path(args.output),
-                    formula=formula,
-                    table=table_of(graphical),
-                    lang=args.lang,
-                    format=args.format,
-                    branches=branches,
-                    sheet=figure,
-                )
+                paths = write_drawings(sheet, Path(args.output), lang=args.lang, format=args.format)
     for path in paths:
         print(path)
     return 0
@@ -1006,12 +982,6 @@ def _error_text(exc: PlansError, scene: Scene | None) -> str:
     if isinstance(exc, (AssemblyError, SingularPositionError)) and scene.notes:
         text += "; note: " + "; ".join(scene.notes)
     return text
-
-
-def _branch_lines(analytic, lang: str) -> list[str]:
-    from .drawing.sheet import branch_lines
-
-    return branch_lines(analytic.branches, lang)
 
 
 def main(argv: list[str] | None = None) -> int:

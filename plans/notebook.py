@@ -7,7 +7,7 @@ and joins them, one way:
 
 * :func:`plot` — draw a solution's mechanism or a plan into a matplotlib Axes
   (or a new true-to-scale figure), returning the Axes;
-* :func:`sheet` — a solution's one-page sheet as a Figure;
+* :func:`sheet` — a solution's one-page sheet (:class:`plans.pages.sheet.Sheet`, set by Typst);
 * :func:`save` — a plan or a solution's sheet to ``.svg``, ``.pdf`` or ``.png``, atomically;
 * :func:`svg` — the SVG text a notebook shows;
 * :func:`animate` — the mechanism and its plans over the cycle, as a lecture page
@@ -52,29 +52,30 @@ def plot(obj, ax=None, *, lang: str = "en"):
 
 
 def sheet(solution, *, lang: str = "en"):
-    """The one-page sheet of a GraphicalSolution (mechanism, both plans, vector equations) as a Figure."""
-    from .drawing import draw_sheet
-    from .structure import find_structure
+    """The one-page sheet of a GraphicalSolution (mechanism, both plans, vector equations, readings, and the table
+    against the analytic values) at its own factors, as a :class:`plans.pages.sheet.Sheet` (set by Typst)."""
+    from .analytic import solve
+    from .pages.sheet import sheet_at
 
-    return draw_sheet(solution, formula=find_structure(solution.scene).formula, lang=lang)
-
-
-def _figure(obj, lang: str):
-    return plot(obj, lang=lang).figure if _is_plan(obj) else sheet(obj, lang=lang)
+    return sheet_at(solution, solve(solution.scene), lang=lang)
 
 
 def save(obj, path, *, lang: str = "en"):
     """Write a plan, or a solution's sheet, to *path* (``.svg`` true to scale, ``.pdf`` or ``.png``), atomically; returns the path."""
+    if not _is_plan(obj):
+        return sheet(obj, lang=lang).save(path)
     from .drawing.formats import save_figure
 
-    return save_figure(_figure(obj, lang), path)
+    return save_figure(plot(obj, lang=lang).figure, path)
 
 
 def svg(obj, *, lang: str = "en") -> str:
     """The SVG of a plan or of a solution's sheet, as text."""
+    if not _is_plan(obj):
+        return sheet(obj, lang=lang).pages("svg")[0].decode("utf-8")
     from .drawing.svg import render_svg
 
-    return render_svg(_figure(obj, lang)).decode("utf-8")
+    return render_svg(plot(obj, lang=lang).figure).decode("utf-8")
 
 
 def animate(scene, positions=36, *, lang: str = "en"):

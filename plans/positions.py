@@ -394,18 +394,16 @@ class PositionRun:
 
     # --- notebooks -----------------------------------------------------------
 
-    def figure(self, *, lang: str = "en"):
-        """The position's sheet as a matplotlib Figure (see :func:`plans.drawing.draw_position_sheet`)."""
-        from .drawing.sheets import draw_position_sheet
+    def sheet(self, *, lang: str = "en"):
+        """The position's sheet at the run's factors, titled with the position (:func:`plans.pages.sheet.sheet_at`)."""
+        from .pages.sheet import position_heading, sheet_at
 
-        return draw_position_sheet(self, lang=lang)
+        return sheet_at(self.graphical, self.analytic, lang=lang, heading=position_heading(self, lang))
 
     def _repr_svg_(self) -> str:
         if not self.ok:
             return None
-        from .drawing.svg import render_svg
-
-        return render_svg(self.figure()).decode("utf-8")
+        return self.sheet().pages("svg")[0].decode("utf-8")
 
     def plot(self, ax=None):
         """Draw the mechanism at this position into *ax* (a new figure when None); returns the Axes."""
@@ -420,9 +418,7 @@ class PositionRun:
         """Write the position's sheet to *path* (``.svg``, ``.pdf`` or ``.png``, by its suffix), atomically."""
         if not self.ok:
             raise self.error
-        from .drawing.formats import save_figure
-
-        return save_figure(self.figure(lang=lang), path)
+        return self.sheet(lang=lang).save(path)
 
 
 @dataclass(frozen=True, eq=False)

@@ -13,7 +13,8 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 import drawing_fixtures as F
-from plans.drawing import draw_acceleration_plan, draw_mechanism, draw_plan, draw_velocity_plan, write_drawings
+from plans import write_drawings
+from plans.drawing import draw_acceleration_plan, draw_mechanism, draw_plan, draw_velocity_plan
 from plans.drawing._canvas import fmt_number
 from plans.drawing.mechanism import mechanism_labels
 

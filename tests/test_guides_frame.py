@@ -239,4 +239,6 @@ def test_the_plan_of_positions_and_the_position_sheets_share_the_supports(tmp_pa
     for name in "DE":  # (O turns away where the crank lies over its support: the test above)
         want = _svg_support(positions, "positions", name)
         for path in sheets:
-            assert abs(_svg_support(path, "mech", name) - want) < 1e-6, (name, path.name)
+            from sheet_pages import unpack
+
+            assert abs(_svg_support(unpack(path, "mechanism"), "mech", name) - want) < 1e-6, (name, path.name)

@@ -36,8 +36,12 @@ def test_a_plan_displays_as_svg_and_plots_into_a_given_axes(graphical):
 
 
 def test_a_graphical_solution_shows_its_sheet_and_saves_it_as_pdf(graphical, tmp_path):
-    texts = _texts(notebook.svg(graphical))
-    assert "Mechanism" in texts and "Velocity plan" in texts and "Acceleration plan" in texts
+    from sheet_pages import by_kind, text
+
+    page = notebook.svg(graphical).encode("utf-8")  # a Typst page: the drawings embedded, the words as glyphs
+    assert {"mechanism", "velocity", "acceleration"} <= set(by_kind(page))
+    words = " ".join(text(notebook.sheet(graphical).pdf()).split())
+    assert "Mechanism" in words and "Velocity plan" in words and "Acceleration plan" in words
     path = notebook.save(graphical, tmp_path / "sheet.pdf", lang="sl")
     reader = pypdf.PdfReader(path)
     assert len(reader.pages) == 1 and "Načrt hitrosti" in reader.pages[0].extract_text()
@@ -46,7 +50,10 @@ def test_a_graphical_solution_shows_its_sheet_and_saves_it_as_pdf(graphical, tmp
 def test_runs_and_their_diagrams_display_themselves():
     run = run_positions(plans.load(plans.example_path("four-bar")), 2)
     assert "Mechanism in its positions, with the paths of its points" in _texts(run._repr_svg_())
-    assert "Position 1 (2/2)" in " ".join(_texts(run.runs[1]._repr_svg_()))
+    from sheet_pages import by_kind, text
+
+    assert "mechanism" in by_kind(run.runs[1]._repr_svg_().encode("utf-8"))
+    assert "Position 1: φ2 =" in " ".join(text(run.runs[1].sheet().pdf()).split())
     diagrams = run.diagrams(lang="ru")
     assert isinstance(diagrams, Diagrams)
     assert diagrams._repr_html_().count("<svg") == 2  # links and points: no prismatic pair

@@ -133,4 +133,6 @@ def test_pages_are_set_from_drawing_blocks_and_drawing_knows_nothing_of_pages():
             assert not any(t.startswith("plans.pages") for t in targets), (module, targets)
     # the handout's API module only orchestrates: it draws nothing and sets nothing itself
     assert not any(t.startswith("plans.drawing") for t in graph["plans.handout"]), graph["plans.handout"]
-    assert "plans.drawing.layout" in graph["plans.drawing.sheet"] or "plans.drawing.layout" in graph["plans.drawing.sheets"]
+    # the sheets of plans draw are pages on the one engine: drawing blocks set by Typst through the Document
+    assert {"plans.drawing.svgblocks", "plans.pages.document"} <= set(graph["plans.pages.sheet"])
+    assert "plans.sheets" not in graph and "plans.drawing.sheets" not in graph  # the old fitter is gone

@@ -156,8 +156,10 @@ def test_branch_words_are_translated(example, lang):
         assert branch_text(b.words, lang) is not None and len(line) > len(f"{b.group}: (+1)") + 3, line
 
 
-def test_the_sheet_title_block_carries_the_branch_in_words(tmp_path):
-    assert main(["draw", "--example", "six-bar", "--lang", "ru", "-o", str(tmp_path)]) == 0
-    text = _page_texts(tmp_path / "sheet.svg")
+def test_the_sheet_says_the_assembly_in_words(tmp_path):
+    from sheet_pages import text as pdf_text
+
+    assert main(["draw", "--example", "six-bar", "--lang", "ru", "-o", str(tmp_path / "page.pdf")]) == 0
+    text = " ".join(pdf_text((tmp_path / "page.pdf").read_bytes()).split())
     assert "справа от" in text or "слева от" in text, text
     assert not re.search(r"\b(left|right|pointing|towards)\b", text), text

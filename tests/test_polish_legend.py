@@ -58,7 +58,10 @@ def test_a_kind_with_one_arrow_drawn_is_in_the_legend(drawn):
 
 
 def test_the_sheet_legend_follows_the_plans_too(drawn):
-    ids = _ids(drawn["linear-arm"] / "sheet.svg")
+    from sheet_pages import drawings
+
+    placed = drawings((drawn["linear-arm"] / "sheet.svg").read_bytes())  # the page's drawings, the legend one of them
+    ids = [g.get("id") for d in placed for g in d.root.iter(f"{SVG}g") if g.get("id")]
     legend_kinds = {i.split("-")[-1] for i in ids if re.match(r"^.*legend-(absolute|relative|normal|tangential|coriolis)$", i)}
     assert {"normal", "tangential", "coriolis"} <= legend_kinds, legend_kinds
 

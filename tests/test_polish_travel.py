@@ -96,8 +96,10 @@ def test_plans_draw_draws_the_slot_and_the_ram_guide_over_the_cycle(tmp_path):
 
 def test_draw_positions_sheets_draw_the_slot_over_the_cycle(tmp_path):
     assert main(["draw", "--example", "quick-return", "--positions", "3", "-o", str(tmp_path)]) == 0
+    from sheet_pages import unpack
+
     for name in ("sheet-00.svg", "sheet-01.svg", "sheet-02.svg"):
-        _check_quick_return(tmp_path / name)
+        _check_quick_return(unpack(tmp_path / name, "mechanism"))
 
 
 def test_handout_drawings_draw_the_slot_over_the_cycle_and_the_plan_of_positions_the_ram_s_stroke(tmp_path):

@@ -2,14 +2,11 @@
 
 from __future__ import annotations
 
-import re
-import xml.etree.ElementTree as ET
-
 import numpy as np
 import pytest
 
 import plans
-from plans.drawing import write_position_sheets
+from plans import write_position_sheets
 from plans.drawing.positions_plan import draw_positions_plan, numbered_points
 from plans.positions import run_positions
 from test_positions import STUCK
@@ -17,8 +14,10 @@ from test_positions import STUCK
 SVG = "{http://www.w3.org/2000/svg}"
 
 
-def _texts(path) -> list[str]:
-    return ["".join(t.itertext()) for t in ET.parse(path).getroot().iter(f"{SVG}text")]
+def _text(path, plain: bool = True) -> str:
+    from sheet_pages import text
+
+    return " ".join(text(path.read_bytes(), plain).split())
 
 
 @pytest.fixture(scope="module")
@@ -27,32 +26,34 @@ def sheets(tmp_path_factory):
     scene = plans.load(plans.example_path("four-bar"))
     write_position_sheets(run_positions(scene, 6), directory)  # an earlier run with more positions
     run = run_positions(scene, "0, 120 deg")
-    return run, directory, write_position_sheets(run, directory)
+    pdfs = tmp_path_factory.mktemp("pdf")
+    return run, directory, write_position_sheets(run, directory), write_position_sheets(run, pdfs, format="pdf")
 
 
 def test_one_sheet_per_position_and_the_plan_of_positions(sheets):
-    run, directory, paths = sheets
+    import unicodedata
+
+    run, directory, paths, pdfs = sheets
     assert [p.name for p in paths] == ["sheet-00.svg", "sheet-01.svg", "positions.svg"]
     assert sorted(p.name for p in directory.iterdir()) == ["positions.svg", "sheet-00.svg", "sheet-01.svg"]
-    for k, path in enumerate(paths[:2]):
-        title = " ".join(_texts(path))
-        assert f"Position {k} ({k + 1}/2): {run.runs[k].label}" in title
+    for k, path in enumerate(pdfs[:2]):
+        title = _text(path)
+        assert f"Position {k}: {unicodedata.normalize('NFKC', run.runs[k].label)}" in title
+        assert f"Sheet {k + 1} of 3" in title
 
 
 def test_the_same_scale_factors_on_every_sheet(sheets):
-    run, _, paths = sheets
-    statements = []
-    for path in paths[:2]:
-        # the symbols are typeset (k and its subscript as glyphs of their own): compared without spaces
-        statements.append(sorted(s for s in ("".join(t.split()) for t in _texts(path)) if re.match(r"k[lva]=", s)))
-    assert statements[0] == statements[1]
-    assert len(statements[0]) == 3
-    assert f"kv={run.scales['k_v']:g}(m/s)/mm" in statements[0]
+    from sheet_pages import scales
+
+    run, _, _, pdfs = sheets
+    stated = [scales(_text(path)) for path in pdfs]
+    assert stated[0] == stated[1] and set(stated[0]) == {"k_l", "k_v", "k_a"}
+    assert stated[2] == {"k_l": stated[0]["k_l"]}  # the plan of positions at the sheets' k_l
 
 
 def test_the_plan_of_positions_draws_each_position_and_closed_paths(sheets):
-    run, _, paths = sheets
-    texts = _texts(paths[2])
+    run, _, _, pdfs = sheets
+    texts = _text(pdfs[2], plain=False)
     for point in numbered_points(run.scene):
         for k in range(2):
             assert f"{point}{'₀₁'[k]}" in texts

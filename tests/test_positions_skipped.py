@@ -37,7 +37,9 @@ def test_draw_positions_names_every_skipped_position_and_why(capsys, tmp_path):
     sheets = sorted(p.name for p in tmp_path.glob("sheet-*.svg"))
     assert sheets == ["sheet-00.svg", "sheet-04.svg"]
     # and the plan of positions says which positions it does not draw
-    svg = (tmp_path / "positions.svg").read_text()
+    from sheet_pages import embedded_text
+
+    svg = embedded_text(tmp_path / "positions.svg")  # the plan of positions, a drawing on its page
     assert "not drawn" in svg and "1–3" in svg
 
 
@@ -47,8 +49,15 @@ def test_draw_positions_of_a_swinging_input_draws_every_one(capsys, tmp_path):
     assert status == 0
     assert "is skipped" not in err
     assert len(list(tmp_path.glob("sheet-*.svg"))) == 12
-    svg = (tmp_path / "positions.svg").read_text()
-    assert "harmonic swing between −56.39° … 56.39°" in svg  # the law stated under the plan of positions
+    import plans
+    from plans.pages.sheet import positions_page
+    from plans.positions import run_positions
+    from sheet_pages import text
+
+    # the law stated on the page of the plan of positions
+    run = run_positions(plans.load(plans.example_path("rocker-limit")), 12)
+    page = " ".join(text(positions_page(run, 0.005).pdf(), plain=False).split())
+    assert "harmonic swing between −56.39° … 56.39°" in page, page
 
 
 def test_handout_names_skipped_positions_on_stderr(capsys, tmp_path):

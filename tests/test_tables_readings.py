@@ -50,44 +50,71 @@ def _texts(path) -> list[str]:
     return ["".join(t.itertext()) for t in ET.parse(path).getroot().iter(f"{SVG}text")]
 
 
-def results_table(texts: list[str]) -> dict[tuple[str, str], tuple[str, str, str]]:
-    """The sheet's results table: (name with its typeset runs joined, unit) -> (graphical, analytic, rel. error)."""
-    k = texts.index("Results") + 5  # heading, then the four header cells
-    rows = {}
-    label: list[str] = []
-    while k < len(texts):
-        run = texts[k]
-        if run.startswith(" ["):
-            rows[("".join(label), run.strip(" []"))] = tuple(texts[k + 1: k + 4])
-            label = []
-            k += 4
-            continue
-        label.append(run)
-        k += 1
-    return rows
+def _plain(text: str) -> str:
+    """Mathematical italic letters (𝑣𝐴, as Typst sets math) as plain ones; everything else as printed."""
+    import unicodedata
+
+    return "".join(unicodedata.normalize("NFKC", c) if 0x1D400 <= ord(c) <= 0x1D7FF else c for c in text)
 
 
-_VALUE = re.compile(r"^([0-9.]+) (m/s²|m/s|rad/s²|rad/s)(?: (↻|↺))?$")  # ↺ counter-clockwise, ↻ clockwise
+def sheet_lines(pdf_path) -> list[str]:
+    """The sheet's text, line by line in reading order (``pdftotext -raw``), math letters plain."""
+    import subprocess
+
+    out = subprocess.run(["pdftotext", "-raw", str(pdf_path), "-"], capture_output=True, text=True, check=True).stdout
+    return [_plain(line).strip() for line in out.splitlines() if line.strip()]
 
 
-def readings(texts: list[str], heading: str) -> list[dict]:
-    """The rows of a readings table: symbol runs joined, segment, printed mm, factor cell, value cell."""
-    k = texts.index(heading)
-    k = texts.index("=", k) + 1
-    rows = []
-    start = k
-    while k < len(texts) and not texts[k].endswith("readings") and texts[k] != "Results":
-        m = _VALUE.match(texts[k])
+def _rows(lines: list[str], heading: str, row: re.Pattern) -> list[re.Match]:
+    """The rows under *heading* matching *row*; a line that is not a row yet (a superscript set on a line of its
+    own: ``a^n`` then ``AO …``) is joined to the next."""
+    k = lines.index(heading) + 1
+    k = next(j for j in range(k, len(lines)) if lines[j].endswith("=")) + 1  # past the header row
+    out, buffer = [], ""
+    for line in lines[k:]:
+        if line.endswith("readings") or line == "Graphical and analytic values":
+            break
+        candidate = f"{buffer} {line}".strip()
+        m = row.fullmatch(candidate)
         if m:
-            j = k - 1  # the factor cell: from its "× k" on (the link length's symbol l_BA is typeset in runs of its own)
-            while not texts[j].startswith("×"):
-                j -= 1
-            factor, mm, segment = "".join(texts[j:k]), texts[j - 1], texts[j - 2]
-            rows.append({"symbol": "".join(texts[start:j - 2]).replace(" ", ""), "segment": segment, "mm": mm,
-                         "factor": factor, "value": float(m.group(1)), "unit": m.group(2), "sense": m.group(3)})
-            start = k + 1
-        k += 1
-    return rows
+            out.append(m)
+            buffer = ""
+        else:
+            buffer = candidate if len(candidate) < 60 else ""
+    return out
+
+
+_CELL = r"−?[0-9.]+(?: ∠ [0-9.]+°)?"
+_RESULT = re.compile(rf"(?P<name>.+?) \[(?P<unit>[^\]]+)\] (?P<g>{_CELL}) (?P<a>{_CELL}) (?P<e>—|[0-9.]+(?:·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?)")
+
+
+def results_table(lines: list[str]) -> dict[tuple[str, str], tuple[str, str, str]]:
+    """The sheet's results table: (name, its spaces left out; unit) -> (graphical, analytic, rel. error)."""
+    out = {}
+    k = lines.index("Graphical and analytic values") + 1
+    k = next(j for j in range(k, len(lines)) if lines[j].startswith("quantity")) + 1  # past the header row
+    buffer = ""
+    for line in lines[k:]:
+        candidate = f"{buffer} {line}".strip()
+        m = _RESULT.fullmatch(candidate)
+        if m:
+            out[(m.group("name").replace(" ", ""), m.group("unit"))] = (m.group("g"), m.group("a"), m.group("e"))
+            buffer = ""
+        else:
+            buffer = candidate if len(candidate) < 40 else ""
+    return out
+
+
+_SEGMENT = r"[a-zπκ][a-zπκ₀-₉′]*(?: [a-zπκ][a-zπκ₀-₉′]*)?"
+_READING = re.compile(rf"(?P<symbol>.+?) (?P<segment>{_SEGMENT}) (?P<mm>[0-9]+\.[0-9]+) (?P<factor>× [0-9.]+(?: ÷ [0-9.]+ \([^)]*\))?) "
+                      r"(?P<value>[0-9.]+) (?P<unit>m/s²|m/s|rad/s²|rad/s)(?: (?P<sense>[↻↺]))?")
+
+
+def readings(lines: list[str], heading: str) -> list[dict]:
+    """The rows of a readings table: symbol (spaces left out), segment, printed mm, factor cell, value cell."""
+    return [{"symbol": m.group("symbol").replace(" ", ""), "segment": m.group("segment"), "mm": m.group("mm"),
+             "factor": m.group("factor"), "value": float(m.group("value")), "unit": m.group("unit"), "sense": m.group("sense")}
+            for m in _rows(lines, heading, _READING)]
 
 
 def _scale(path, key: str) -> float:
@@ -122,11 +149,12 @@ def drawn(request, tmp_path_factory):
     name = request.param
     out = tmp_path_factory.mktemp(name)
     assert main(["draw", "--example", name, "-o", str(out)]) == 0
+    assert main(["draw", "--example", name, "-o", str(out / "page.pdf")]) == 0  # the same sheet, its words readable
     scene = plans.load(plans.example_path(name))
     graphical = plans.construct(at_page_precision(scene))  # the solution the files drew, for identical vectors drawn once
     return {
         "name": name,
-        "sheet": _texts(out / "sheet.svg"),
+        "sheet": sheet_lines(out / "page.pdf"),
         "velocity": (out / "velocity.svg", _texts(out / "velocity.svg")),
         "acceleration": (out / "acceleration.svg", _texts(out / "acceleration.svg")) if (out / "acceleration.svg").exists() else None,
         "graphical": graphical,
@@ -194,7 +222,7 @@ def test_the_issue_s_three_contradictions_are_gone(drawn):
     if drawn["name"] == "six-bar":  # v_E5E6 is +0.776 along the rod, not −0.7759
         v = results_table(drawn["sheet"])[("vE5E6", "m/s")]
         assert not v[0].startswith("−") and "∠" in v[0]
-    assert not [t for t in drawn["sheet"] if "slider" in t]
+    assert not [key for key in results_table(drawn["sheet"]) if "slider" in key[0]]  # a row named as drawn
 
 
 def _quantity(symbol: str, unit: str) -> list[tuple[str, str]]:
@@ -304,10 +332,12 @@ def _analytic_vector(a, graphical, name: str) -> complex:
 
 
 def test_precision_0_gives_exact_readings_and_solve_stays_exact(tmp_path, capsys):
-    assert main(["draw", "--example", "six-bar", "--precision", "0", "-o", str(tmp_path)]) == 0
-    table = results_table(_texts(tmp_path / "sheet.svg"))
-    assert max(_number(row[2]) for row in table.values() if row[2] != "—") < 1e-12
-    rows = readings(_texts(tmp_path / "sheet.svg"), "Velocity plan: readings")
+    assert main(["draw", "--example", "six-bar", "--precision", "0", "-o", str(tmp_path / "page.pdf")]) == 0
+    lines = sheet_lines(tmp_path / "page.pdf")
+    table = results_table(lines)
+    assert table and max(_number(row[2]) for row in table.values() if row[2] != "—") < 1e-12
+    rows = readings(lines, "Velocity plan: readings")
+    assert rows
     assert all(re.fullmatch(r"[0-9]+\.[0-9]{3}", r["mm"]) for r in rows)  # exact readings print 0.001 mm
     capsys.readouterr()
     import json

@@ -12,22 +12,18 @@ This package and :mod:`plans.bench.plot` (the benchmark's figure) are the
 only modules of plans that import matplotlib; nothing in ``plans.scene``,
 ``plans.structure``, ``plans.analytic`` or ``plans.graphical`` imports it.
 
->>> from plans.drawing import write_drawings  # doctest: +SKIP
->>> write_drawings(solution, "out", formula="I(1,2) → RRP(3,4)")  # doctest: +SKIP
-[PosixPath('out/mechanism.svg'), PosixPath('out/velocity.svg'), PosixPath('out/acceleration.svg'), PosixPath('out/sheet.svg')]
+>>> from plans.drawing import draw_mechanism, draw_plan  # doctest: +SKIP
+
+The one-page sheets of ``plans draw`` (``write_drawings``, ``write_position_sheets``) are pages set by Typst:
+:mod:`plans.pages.sheet` (``plans.write_drawings``, ``plans.write_position_sheets``).
 """
 
 from .mechanism import draw_mechanism
 from .plan_drawing import draw_acceleration_plan, draw_plan, draw_velocity_plan
-from .sheet import draw_sheet, write_drawings
 
 
 def __getattr__(name: str):
     # multi-position output and handout pages, loaded on first use
-    if name in ("write_position_sheets", "draw_position_sheet"):
-        from . import sheets
-
-        return getattr(sheets, name)
     if name in ("render_pdf", "save_figure"):
         from . import formats
 
@@ -52,10 +48,6 @@ __all__ = [
     "draw_plan",
     "draw_velocity_plan",
     "draw_acceleration_plan",
-    "draw_sheet",
-    "write_drawings",
-    "write_position_sheets",
-    "draw_position_sheet",
     "draw_positions_plan",
     "draw_cycle_diagrams",
     "write_cycle_diagrams",

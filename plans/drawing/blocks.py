@@ -1,15 +1,12 @@
 """Blocks: the rectangles a page is made of, each knowing its size [mm] before it is placed.
 
 Data flows one way: solved results → blocks (this module) → page layout
-(:mod:`plans.drawing.layout`) → SVG/PDF (:mod:`plans.drawing.svg`,
-:mod:`plans.drawing.sheets`).
+(:mod:`plans.drawing.layout`) → SVG/PDF (:mod:`plans.drawing.svg`).  The sheets and the
+handout are set by Typst (:mod:`plans.pages`); they take :func:`plan_readings` from here.
 
 * :class:`Block` — width, height and a function that draws it at a lower-left corner;
-* :func:`drawing_block` — the mechanism or a plan, true to scale, in axes of its own;
-* :func:`rows_block` — a stack of text lines (headings, equations);
-* :func:`table_block` — a table with a heading and rules;
 * :func:`legend_block` — one legend for both plans;
-* :func:`plan_readings`, :func:`readings_block` — what a student measures on each plan and
+* :func:`plan_readings` — what a student measures on each plan and
   computes from it: segment, length as printed, × scale factor (÷ link length) = value;
 * :func:`pretty_equation`, :func:`break_math`, :func:`text_rows` — the lines of
   vector and loop equations, typeset and broken to a width.
@@ -23,34 +20,22 @@ import re
 from ..i18n import term
 from .._text import decimal_comma, math_name, user_text
 from ._canvas import Sketch, text_size
-from .mechanism import draw_mechanism
-from .plan_drawing import aliases, draw_plan, end_letters, legend_entries, legend_row, segment, vectors_drawn
-from .style import CAPTION_PT, HEADING_PT, SMALL_PT
-from .typeset import draw_text, measure
+from .plan_drawing import aliases, end_letters, legend_entries, legend_row, segment, vectors_drawn
+from .style import CAPTION_PT, HEADING_PT
+from .typeset import measure
 
 __all__ = [
     "Block",
-    "drawing_block",
-    "rows_block",
-    "table_block",
     "legend_block",
     "plan_readings",
     "link_length",
-    "readings_block",
     "printed_length",
-    "READINGS_PT",
     "pretty_equation",
     "break_math",
     "text_rows",
-    "TABLE_PT",
     "MIN_SHRINK",
 ]
 
-TABLE_PT = SMALL_PT + 0.5
-#: text size [pt] of the readings tables
-READINGS_PT = SMALL_PT
-#: the smallest size a readings table is set at to stand beside the other one
-READINGS_MIN_PT = 6.0
 #: a line of an equation is set at most this much smaller before it is wrapped inside a term
 MIN_SHRINK = 0.8
 CONTINUED = "…"
@@ -73,96 +58,6 @@ class Block:
 
     def place(self, sketch: Sketch, x: float, y: float, page: tuple[float, float]) -> None:
         self._place(sketch, x, y, page)
-
-
-def drawing_block(fig, kind: str, obj, lang: str = "en", legend: bool = True, detail: bool | None = None) -> Block:
-    """The mechanism (*obj* a GraphicalSolution) or a plan (*obj* a Plan) drawn into new axes of *fig*
-    (a plan with its enlarged detail of crowded images as *detail*, by default as *legend*: see
-    :func:`plans.drawing.plan_drawing.draw_plan`).
-
-    The drawing is made now (its size is that of its ink plus the margin);
-    placing the block only moves the axes, one data unit staying one
-    millimetre of paper.
-    """
-    ax = fig.add_axes([0, 0, 0.01, 0.01])
-    if kind == "mechanism":
-        draw_mechanism(obj, ax, lang=lang)
-    else:
-        draw_plan(obj, ax, lang=lang, legend=legend, detail=detail)
-    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-    width, height = x1 - x0, y1 - y0
-
-    def place(sketch: Sketch, x: float, y: float, page: tuple[float, float]) -> None:
-        pw, ph = page
-        ax.set_aspect("auto")
-        ax.set_position([x / pw, y / ph, width / pw, height / ph])
-
-    block = Block(width, height, place, kind=kind)
-    block.axes = ax  # so that a page can take the drawing back (ax.remove()) and draw it again
-    return block
-
-
-def rows_block(rows, gid: str, *, line_gap: float) -> Block:
-    """A stack of text lines ``(text, size, weight)``, left-aligned; ``$…$`` parts are typeset (:mod:`.typeset`).
-
-    Each line is as tall as its typeset box plus *line_gap* [mm].
-    """
-    boxes = [measure(t, s, w) for t, s, w in rows]
-    heights = [b[1] + line_gap for b in boxes]
-    width = max((b[0] for b in boxes), default=0.0)
-    height = sum(heights)
-
-    def place(sketch: Sketch, x: float, y: float, page) -> None:
-        top = y + height
-        for (text, size, weight), h in zip(rows, heights):
-            draw_text(sketch, complex(x, top - h / 2), text, size=size, weight=weight, gid=gid)
-            top -= h
-
-    return Block(width, height, place)
-
-
-def _numeric(cell: str) -> bool:
-    return bool(re.match(r"^\s*[+\-−]?[0-9.]", cell))
-
-
-def table_block(table: list[list[str]], heading: str, size: float = TABLE_PT, heading_size: float = HEADING_PT, pad: float = 2.0,
-                row_gap: float | None = None) -> Block:
-    """A table: *heading*, a rule, the header row (bold), a rule, the rows, a rule; numbers right-aligned."""
-    columns = max(len(r) for r in table)
-    rows = [list(r) + [""] * (columns - len(r)) for r in table]
-    widths = [max(measure(r[c], size, "bold" if i == 0 else "normal")[0] for i, r in enumerate(rows)) + 2 * pad for c in range(columns)]
-    # a subscript (v_A) drops into the padding: *row_gap* [mm] (by default 1.6 mm at TABLE_PT, in proportion)
-    row_h = text_size("lp", size)[1] * 1.1 + (1.6 * size / TABLE_PT if row_gap is None else row_gap)
-    heading_h = text_size("lp", heading_size)[1] + (2.0 if row_gap is None else 1.2)
-    width = max(sum(widths), measure(heading, heading_size, "bold")[0])
-    height = heading_h + row_h * len(rows) + 1.0
-
-    # a column of numbers is right-aligned, its header too
-    right_columns = {
-        c
-        for c in range(1, columns)
-        if (cells := [r[c] for r in rows[1:] if r[c].strip()]) and sum(map(_numeric, cells)) * 2 >= len(cells)
-    }
-
-    def place(sketch: Sketch, x: float, y: float, page) -> None:
-        top = y + height
-        draw_text(sketch, complex(x, top - heading_h / 2), heading, size=heading_size, weight="bold", gid="table-heading")
-        top -= heading_h
-        sketch.line([complex(x, top), complex(x + width, top)], lw=0.9, gid="table-rule", obstacle=False)
-        for i, row in enumerate(rows):
-            cx = x
-            yc = top - row_h * (i + 0.5)
-            for c, cell in enumerate(row):
-                right = c in right_columns
-                at = complex(cx + widths[c] - pad, yc) if right else complex(cx + pad, yc)
-                draw_text(sketch, at, cell, size=size, ha="right" if right else "left", weight="bold" if i == 0 else "normal", gid="table-cell")
-                cx += widths[c]
-            if i == 0:
-                sketch.line([complex(x, top - row_h), complex(x + width, top - row_h)], lw=0.5, gid="table-rule", obstacle=False)
-        bottom = top - row_h * len(rows)
-        sketch.line([complex(x, bottom), complex(x + width, bottom)], lw=0.9, gid="table-rule", obstacle=False)
-
-    return Block(width, height, place, kind="table")
 
 
 def legend_block(graphical, lang: str, columns: int = 1, plans=("velocity", "acceleration")) -> Block:
@@ -305,48 +200,6 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
         return []
     return [[decimal_comma(cell, lang) for cell in r] for r in rows]
 
-
-def readings_block(graphical, lang: str = "en", *, size: float = READINGS_PT, width: float | None = None) -> Block | None:
-    """The readings tables of both plans (:func:`plan_readings`), side by side, or one above the other
-    when side by side they are wider than *width* [mm]; None when there is nothing to read."""
-    from ..i18n import term as words
-
-    contents = []
-    for kind in ("velocity", "acceleration"):
-        rows = plan_readings(graphical, kind, lang)
-        if rows:
-            heading = f"{words('velocity_plan' if kind == 'velocity' else 'acceleration_plan', lang)}: {words('readings', lang)}"
-            contents.append((rows, heading))
-    if not contents:
-        return None
-    gap = 5.0
-    # the given size, or smaller down to READINGS_MIN_PT, so that the two tables stand side by side in *width*
-    for pt in [size] + [p for p in (size - 0.5, size - 1.0, size - 1.5) if p >= READINGS_MIN_PT]:
-        tables = [table_block(rows, heading, size=pt, heading_size=pt + 1.0, pad=1.4, row_gap=0.9) for rows, heading in contents]
-        side = sum(t.width for t in tables) + gap * (len(tables) - 1)
-        across = width is None or side <= width
-        if across:
-            break
-    if not across:  # one above the other: at the given size again
-        tables = [table_block(rows, heading, size=size, heading_size=size + 1.0, pad=1.4, row_gap=0.9) for rows, heading in contents]
-    w = side if across else max(t.width for t in tables)
-    h = max(t.height for t in tables) if across else sum(t.height for t in tables) + gap * (len(tables) - 1)
-
-    def place(sketch: Sketch, x: float, y: float, page) -> None:
-        if across:
-            for t in tables:
-                t.place(sketch, x, y + h - t.height, page)
-                x += t.width + gap
-        else:
-            top = y + h
-            for t in tables:
-                t.place(sketch, x, top - t.height, page)
-                top -= t.height + gap
-
-    return Block(w, h, place, kind="readings")
-
-
-# --- equations as text ------------------------------------------------------------------
 
 _TOKEN = re.compile(r"(?<![A-Za-z0-9.])([A-Za-zα-ωΑ-Ω])(?:\^([A-Za-z]+))?(?:_([A-Za-z0-9′_]*[A-Za-z0-9′]))?(?![A-Za-z0-9])")
 

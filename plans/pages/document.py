@@ -14,13 +14,16 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+import math
+
+from ..graphical.scales import round_up
 from ..i18n import term
 from .._text import decimal_comma
 from .equations import step_lines
 from .typesetting import FONT as _FONT, MATH_FONT as _MATH, image, mixed, string, text
 from .words import block_words, units
 
-__all__ = ["Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "TEXT_PT", "SMALL_PT"]
+__all__ = ["bbox", "plan_extent", "fit_factor", "fitted", "Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "TEXT_PT", "SMALL_PT"]
 
 GUTTER = 5.0  # mm between drawings and between columns
 TEXT_PT = 9.5
@@ -61,6 +64,55 @@ A4_PORTRAIT = PageGeometry((210.0, 297.0), (20.0, 5.0), (25.0, 10.0, 10.0, 36.0)
 A3_LANDSCAPE = PageGeometry((420.0, 297.0), (20.0, 5.0), (25.0, 10.0, 10.0, 10.0), title_block_width=185.0)
 
 
+# --- drawings fitted to the room a page gives them (the handout and the sheets) -----------------
+
+
+def bbox(points) -> tuple[float, float]:
+    """(width, height) of the points' bounding box (complex numbers; in their units)."""
+    zs = list(points)
+    if not zs:
+        return 0.0, 0.0
+    xs = [z.real for z in zs]
+    ys = [z.imag for z in zs]
+    return max(xs) - min(xs), max(ys) - min(ys)
+
+
+def plan_extent(plan) -> tuple[float, float]:
+    """The plan's extent in physical units [m/s or m/s²] (its images and the pole)."""
+    return bbox([z * plan.scale for z in plan.images.values()] + [0j])
+
+
+def fit_factor(extent, box, fixed) -> float:
+    """The round factor with which a drawing of *extent* (physical) plus *fixed* [mm] fits *box* [mm]."""
+    need = 0.0
+    for e, b, f in zip(extent, box, fixed):
+        if e > 0:
+            need = max(need, e / max(b - f, 0.25 * b))
+    return round_up(need) if need > 0 and math.isfinite(need) else 0.0
+
+
+def fitted(draw, extent, box, k0: float, given: float | None):
+    """(k, block): the round factor with which ``draw(k)`` fits *box*, measured (at most a few drawings), and the drawing at it.
+
+    The part that does not scale (labels, margins, supports) is what the
+    first drawing takes beyond ``extent / k``; the factor is then the
+    smallest round one that gives the rest to the geometry, larger ones
+    while the drawing still runs over the box.
+    """
+    if given is not None:
+        return given, draw(given)
+    block = draw(k0)
+    fixed = (block.width - extent[0] / k0, block.height - extent[1] / k0)
+    k = fit_factor(extent, box, fixed) or k0
+    for _ in range(6):
+        if k != k0:
+            block = draw(k)
+        if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
+            break
+        k0, k = k, round_up(k * 1.0001)
+    return k, block
+
+
 #: a symbol with a subscript written in plain text (``t_w``), or a ``$…$`` part left as it is
 _SUBSCRIPTED = re.compile(r"\$[^$]*\$|(?<![\w\\])([A-Za-zα-ωΑ-Ω])_([A-Za-z0-9]+)(?!\w)")
 
@@ -83,6 +135,8 @@ class Document:
         #: sets it before its first heading and sets it back after its last page
         self.plate_name = "plate_title"
         self._named = "plate_title"
+        #: (n, m) of a set of one-page documents (a sheet of ``plans draw --positions``); None: the pages counted
+        self.sheet_number: tuple[int, int] | None = None
 
     # words
     def words(self, line: str) -> str:
@@ -248,6 +302,21 @@ class Document:
                          f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.3mm), align: left + horizon,\n  "
                          + ",\n  ".join(rows) + ")]]\n")
 
+    def table_markup(self, heading: str, rows, aligns: str = "(left, right, right, right, right)", full_width: bool = False) -> str:
+        """A table of values under its *heading*, as Typst code (a block never parted, *full_width*: as wide as its
+        place; first row the header)."""
+        header = rows[0]
+        ncol = len(header)
+        body = []
+        for i, row in enumerate(rows):
+            cells = list(row) + [""] * (ncol - len(row))
+            weight = "bold" if i == 0 else "regular"
+            body.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in cells))
+        width = ", width: 100%" if full_width else ""
+        return (f"block(breakable: false{width})[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{self.words(heading)}] \\\n"
+                f"#table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns},"
+                f" table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]")
+
     def tables(self, tables, aligns: str = "(left, right, right, right, right)") -> None:
         """Tables of values, two across the page, each whole under its caption (*aligns*: Typst's alignment of
         the columns).
@@ -255,20 +324,7 @@ class Document:
         Set as the cells of a grid, two to a row, a row moving whole to the next page when it does not fit:
         not in Typst's ``columns``, which sets a table that may not break, in a column starting lower on a page
         than the table is tall, with every row on one line, one over the other."""
-        parts = []
-        for heading, rows in tables:
-            if not rows:
-                continue
-            header = rows[0]
-            ncol = len(header)
-            body = []
-            for i, row in enumerate(rows):
-                cells = list(row) + [""] * (ncol - len(row))
-                weight = "bold" if i == 0 else "regular"
-                body.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in cells))
-            parts.append(f"block(breakable: false, width: 100%)[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{self.words(heading)}] \\\n"
-                         f"#table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns},"
-                         f" table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]")
+        parts = [self.table_markup(heading, rows, aligns, full_width=True) for heading, rows in tables if rows]
         if parts:
             self.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (1fr, 1fr), column-gutter: {GUTTER}mm, row-gutter: 3mm, align: left + top,\n  "
                              + ",\n  ".join(parts) + ")]\n")
@@ -317,7 +373,10 @@ class Document:
                        " if notes.len() > 0 [;   #notes.first().value] }")
         if self.per_position is not None:
             scale_text += " " + text("(" + term("scales_each_position", lang) + ")")
-        sheet = f"{text(term('sheet', lang))} #context counter(page).get().first() {text(term('of_sheets', lang))} #context counter(page).final().first()"
+        if self.sheet_number is not None:
+            sheet = f"{text(term('sheet', lang))} {self.sheet_number[0]} {text(term('of_sheets', lang))} {self.sheet_number[1]}"
+        else:
+            sheet = f"{text(term('sheet', lang))} #context counter(page).get().first() {text(term('of_sheets', lang))} #context counter(page).final().first()"
         title_block = (
             f"table(columns: (1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
             f" table.cell(colspan: 2)[#text(size: 10pt, weight: \"bold\")[#context plate-name.get()] — #text(size: 10pt)[{text(self.scene.title_in(lang))}]],"

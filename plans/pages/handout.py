@@ -40,13 +40,13 @@ taken in the page's language where the scene gives them
 
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import dataclass, field, replace
 
 from ..graphical.scales import round_up
 from ..i18n import term
 from .document import A4_PORTRAIT, Document, GUTTER, SMALL_PT, TEXT_PT
+from .document import bbox as _bbox, fitted as _fitted, plan_extent as _plan_extent
 from .typesetting import compile_document
 from .words import assembly_lines, formula_words, namer
 
@@ -122,51 +122,6 @@ class Handout:
 
 
 # --- scales -------------------------------------------------------------------------------------
-
-
-def _bbox(points) -> tuple[float, float]:
-    zs = list(points)
-    if not zs:
-        return 0.0, 0.0
-    xs = [z.real for z in zs]
-    ys = [z.imag for z in zs]
-    return max(xs) - min(xs), max(ys) - min(ys)
-
-
-def _plan_extent(plan) -> tuple[float, float]:
-    """The plan's extent in physical units [m/s or m/s²] (its images and the pole)."""
-    return _bbox([z * plan.scale for z in plan.images.values()] + [0j])
-
-
-def _fit(extent, box, fixed) -> float:
-    """The round factor with which a drawing of *extent* (physical) plus *fixed* [mm] fits *box* [mm]."""
-    need = 0.0
-    for e, b, f in zip(extent, box, fixed):
-        if e > 0:
-            need = max(need, e / max(b - f, 0.25 * b))
-    return round_up(need) if need > 0 and math.isfinite(need) else 0.0
-
-
-def _fitted(draw, extent, box, k0: float, given: float | None):
-    """(k, block): the round factor with which ``draw(k)`` fits *box*, measured (at most a few drawings), and the drawing at it.
-
-    The part that does not scale (labels, margins, supports) is what the
-    first drawing takes beyond ``extent / k``; the factor is then the
-    smallest round one that gives the rest to the geometry, larger ones
-    while the drawing still runs over the box.
-    """
-    if given is not None:
-        return given, draw(given)
-    block = draw(k0)
-    fixed = (block.width - extent[0] / k0, block.height - extent[1] / k0)
-    k = _fit(extent, box, fixed) or k0
-    for _ in range(6):
-        if k != k0:
-            block = draw(k)
-        if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
-            break
-        k0, k = k, round_up(k * 1.0001)
-    return k, block
 
 
 # --- the handout --------------------------------------------------------------------------------

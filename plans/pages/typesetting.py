@@ -23,7 +23,7 @@ import unicodedata
 
 from ..errors import PlansError
 
-__all__ = ["string", "text", "math", "mixed", "image", "compile_document", "query_document", "TypesetError", "FONT", "MATH_FONT"]
+__all__ = ["string", "text", "math", "mixed", "image", "compile_document", "query_document", "query_value", "TypesetError", "FONT", "MATH_FONT"]
 
 #: the text font of every page (ships with Typst; Latin, Cyrillic, Greek)
 FONT = "Libertinus Serif"
@@ -259,6 +259,15 @@ def query_document(source: str, images: dict | None, selector: str) -> list:
     except typst.TypstError as exc:
         raise TypesetError(f"the typesetter refused a page: {exc}") from None
     return json.loads(out)
+
+
+def query_value(source: str, images: dict | None, label: str):
+    """The value of the one ``metadata`` labelled *label* in the laid-out document *source* (a size Typst measured:
+    the page asks before it is laid out)."""
+    values = query_document(source, images, f"<{label}>")
+    if len(values) != 1:
+        raise TypesetError(f"the typesetter found {len(values)} marks <{label}> where one was expected")
+    return values[0]
 
 
 _ROOT_PT = re.compile(rb'(<svg\b[^>]*?)\bwidth="([0-9.]+)pt" height="([0-9.]+)pt"')
