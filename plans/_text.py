@@ -87,7 +87,7 @@ def decimal_comma(text: str, lang: str) -> str:
 #: courses write the international symbols, as English does.
 _CYRILLIC_UNITS = {"rad/s²": "рад/с²", "rad/s": "рад/с", "m/s²": "м/с²", "m/s": "м/с", "m/mm": "м/мм", "s/mm": "с/мм", "mm": "мм", "rad": "рад",
                    "m": "м", "[s]": "[с]", " s": " с"}
-_UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad|m)(?![\w}])|(\[s\])|(?<=[0-9])( s)(?![\w])")
+_UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad|m)(?![\w}′″'₀-₉])|(\[s\])|(?<=[0-9])( s)(?![\w])")
 #: the same without a bare "m" (a drawing's labels: the image m of a point M stays)
 _DRAWN_UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad)(?![\w}])|(\[s\])|(?<=[0-9])( s)(?![\w])")
 
@@ -96,7 +96,8 @@ def course_units(line: str, lang: str, drawn: bool = False) -> str:
     """*line* with its unit symbols as the course in *lang* writes them (ru, bg: ``м/с``, ``мм``); math parts kept.
 
     Only the text outside ``$…$`` changes, and only whole unit symbols there
-    (a point or a link named ``m`` inside math stays); *drawn* (a drawing's
+    (a point or a link named ``m`` inside math stays, and so does an image ``m′``, ``m₁``
+    in a readings table); *drawn* (a drawing's
     text, where ``m`` is the image of a point M) leaves a bare ``m`` alone.
     """
     if lang not in ("ru", "bg"):
