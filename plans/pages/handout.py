@@ -639,7 +639,7 @@ def build_handout(
         doc.section("diagrams")
         doc.mark("diagrams-start")  # (the pages from here on stand alone: diagrams, kinematic, force, centres pages)
         marked = run.motion if run.motion is not None else run.positions
-        kinematic = _kinematic(scene, positions, len(run.runs), precision, law, start)
+        kinematic = _plate_plans(_kinematic(scene, positions, len(run.runs), precision, law, start), run, here, set(acceleration_blocks), plate)
         # each page's title and words set by Typst above its figure, which takes the rest of the text area at 100 %
         from .typesetting import text as literal
 
@@ -797,9 +797,53 @@ def _kinematic(scene, positions, count: int, precision, law=None, start: str = "
     if count < 8:  # a course project differentiates over 8 or more
         count = 12
     try:
-        return kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
+        return kinematic_diagrams(scene, count, law=law, start=start, precision=precision, plans=False)
     except DiagramsError as exc:
         return exc
+
+
+def _plate_plans(kinematic, run, here: dict, drawn_accelerations, plate: dict) -> object:
+    """*kinematic* (from :func:`_kinematic`) with its "plans" column read off the plans the handout draws: each row's
+    position matched to the handout's position at the same time and driver position, its output's v_rel, a_rel
+    (ω, ε) the values the plate's plans give at the plate's scales and drafting precision (the comparison tables'
+    values, rounded as they are: :func:`plans.report.reading_step`); a only where that position's acceleration plan
+    is drawn (*drawn_accelerations*), NaN elsewhere and where a row has no position on the plate."""
+    import math
+
+    import numpy as np
+
+    from ..differentiation import with_plans
+    from ..report import reading_step
+
+    if isinstance(kinematic, Exception):
+        return kinematic
+    motion = run.motion
+    n = len(kinematic.motion.t)
+    v, a, v_step, a_step = (np.full(n, np.nan) for _ in range(4))
+    section, quantities = (("sliders", ("v_rel", "a_rel")) if kinematic.motion.kind == "slider" else ("links", ("omega", "epsilon")))
+    if motion is not None:
+        crank = kinematic.law is not None and kinematic.law.crank
+        duration = kinematic.motion.duration or 1.0
+        times = np.asarray(motion.t, dtype=float)
+        places = np.asarray(motion.positions, dtype=float)
+        for k in range(n):
+            t_k, x_k = float(kinematic.motion.t[k]), float(kinematic.positions[k])
+            for index, h in here.items():
+                dx = places[index] - x_k
+                if crank:
+                    dx = math.remainder(dx, 2 * math.pi)
+                if abs(times[index] - t_k) > 1e-9 * duration or abs(dx) > 1e-9 * max(1.0, abs(x_k)):
+                    continue
+                rows = {c.quantity: c for c in h.comparisons if c.section == section and c.name == kinematic.motion.name}
+                for q, values, steps in ((quantities[0], v, v_step), (quantities[1], a, a_step)):
+                    if q not in rows or (q == quantities[1] and index not in drawn_accelerations):
+                        continue
+                    values[k] = float(rows[q].graphical)
+                    step = reading_step(h.graphical, rows[q])
+                    steps[k] = step if step is not None else np.nan
+                break
+    return with_plans(kinematic, v, a, v_step=v_step, a_step=a_step, plan_scales=dict(plate),
+                      precision=run.precision)
 
 
 def _output_points(scene, kinematic) -> tuple:

@@ -1,0 +1,113 @@
+"""The kinematic diagrams' table against the plate's own plans (issue 20, second teacher's review, items 1, 2, 6, 7):
+its "plan" values are what the handout's velocity and acceleration plans give (the drawn vector's length read at the
+plate's k_v, k_a to the drafting precision, to the digits that precision gives), the acceleration only where its plan
+is drawn ("—" elsewhere, with a note), no method of tangents on the page, the dead-centre note naming its cause."""
+
+from __future__ import annotations
+
+import math
+import re
+
+import pytest
+
+import plans
+from plans.handout import handout
+
+
+@pytest.fixture(scope="module")
+def quick_return():
+    return handout(plans.load(plans.example_path("quick-return")), positions=12, lang="sr")
+
+
+def _table(source: str, heading: str, columns: int = 13) -> list[list[str]]:
+    """The body rows of the kinematic table (after *heading*) as the page prints them."""
+    start = source.index(heading)
+    body = source[source.index("table.hline(stroke: 0.5pt)),", start):]
+    body = body[: body.index("table.hline(stroke: 0.8pt))")]
+    cells = [c.replace("\u2212", "-").replace(",", ".") for c in re.findall(r'\[#"([^"]*)"\]', body)]
+    assert len(cells) % columns == 0
+    return [cells[k:k + columns] for k in range(0, len(cells), columns)]
+
+
+def _read(value: float, k: float, precision: float = 0.1) -> str:
+    """A plan's reading |value| to the digits one drafting step (precision × k) gives: 0.1 mm × 0.02 → 3 decimals."""
+    decimals = max(0, -math.floor(math.log10(precision * k)))
+    return f"{abs(value):.{decimals}f}"
+
+
+def test_plan_values_are_the_plates_own_readings(quick_return):
+    doc = quick_return
+    rows = _table(doc.source, "Излазни члан у сваком положају")
+    assert len(rows) == 12
+    k_v, k_a = doc.scales["k_v"], doc.scales["k_a"]
+    assert doc.accelerations  # (two: one of each stroke)
+    for h in doc.runs:
+        row = rows[h.index]
+        assert row[0] == str(h.index)
+        # the velocity plan's drawn vector p→e: its length as measured (to 0.1 mm) × k_v
+        v_e = {v.label: v.value for v in h.graphical.velocity_plan.vectors}.get("v_E", 0.0)  # (none drawn at a dead centre)
+        assert abs(v_e / k_v - round(v_e / k_v, 1)) < 1e-9  # read to the drafting precision
+        printed = row[4].lstrip("-")
+        assert printed == ("0" if v_e == 0 else _read(v_e, k_v)), (h.index, row[4], v_e)
+        if h.index in doc.accelerations:
+            a_e = {v.label: v for v in h.graphical.acceleration_plan.vectors}["a_E"]
+            assert row[9].lstrip("-") == _read(a_e.value, k_a), (h.index, row[9], a_e.value)
+            assert row[12] != "—"
+        else:  # no acceleration plan of this position on the plate: nothing "read" from one
+            assert row[9] == "—" and row[12] == "—", (h.index, row)
+    # the reviewer's positions: 0.542 at position 1, 1.068 at position 4, as on the plans' readings
+    assert rows[1][4] == "-0.542" and rows[4][4] == "-1.068"
+
+
+def test_signs_follow_the_guide_and_the_notes_say_so(quick_return):
+    """The ram E moves against its guide's direction on the working stroke (s falls from position 0): v < 0 there,
+    v > 0 on the return (positions 9–11), in both the plans' and the analytic columns; the notes state the rule."""
+    rows = _table(quick_return.source, "Излазни члан у сваком положају")
+    for row in rows[1:8]:
+        assert float(row[4]) < 0 and float(row[5]) < 0, row
+    for row in rows[9:12]:
+        assert float(row[4]) > 0 and float(row[5]) > 0, row
+    page = quick_return.source[quick_return.source.index("Излазни члан у сваком положају"):]
+    assert "позитивно у смеру вођице" in page
+    assert "план убрзања тог положаја није нацртан на овом листу (нацртан за положаје 4, 10)" in page
+
+
+def test_no_method_of_tangents_on_the_page_and_the_extreme_note_names_its_cause(quick_return):
+    page = quick_return.source[quick_return.source.index("Кинематски дијаграми излазног члана"):]
+    assert "тангент" not in page
+    assert "средини њеног интервала" in page and "а не нулу између њих" in page
+
+
+def test_the_peak_note_where_the_chords_cut_the_fast_stroke(quick_return):
+    """Quick-return at 12 positions: the v–t diagram gives about 2.61 m/s at position 10 where the analytic value
+    is 3.05 m/s (the return stroke's peak), 14.4 % of the largest |v|: the notes say so and ask for more positions."""
+    page = quick_return.source[quick_return.source.index("Кинематски дијаграми излазног члана"):]
+    m = re.search(r"у положају (\d+) дијаграм v–t даје ([0-9,]+) m/s према ([0-9,]+) m/s аналитички \(δ ([−+][0-9,]+) %\)", page)
+    assert m, "peak note"
+    assert m.group(1) == "10"
+    diagram, analytic = (float(m.group(k).replace(",", ".")) for k in (2, 3))
+    assert analytic == pytest.approx(3.051, abs=0.001)  # |v_E| at position 10 on the plan (152.5 mm × 0.02)
+    assert diagram == pytest.approx(2.61, abs=0.01)
+    assert "нпр. 24" in page
+
+
+def test_no_peak_note_where_the_chords_are_close():
+    """The offset slider-crank at 12 positions: the chords within 5 % (2.7 % at most): no such note."""
+    doc = handout(plans.load(plans.example_path("slider-crank")), positions=12, lang="en")
+    page = doc.source[doc.source.index("Kinematic diagrams of the output link"):]
+    assert "flatten the fastest part" not in page
+    assert "tangent" not in page
+
+
+@pytest.mark.parametrize("lang", ["en", "sr", "ru", "bg", "sl"])
+def test_the_new_notes_exist_in_every_language(lang):
+    from plans.i18n import term
+
+    for key in ("kd_plans_signs", "kd_no_plan", "kd_no_acceleration_plan", "kd_peak_note", "kd_extreme_reading"):
+        words = term(key, lang)
+        assert words.strip()
+        if lang != "en":
+            assert words != term(key, "en")
+        if lang in ("sr", "ru", "bg"):  # (Slovenian is written in Latin letters)
+            latin = {w for w in re.findall(r"[A-Za-z]{3,}", re.sub(r"\{\w+\}", "", words))}  # (not the {placeholders})
+            assert not latin, (key, lang, latin)
