@@ -1276,6 +1276,13 @@ TERMS.update({
         "bg": "{a} план —: планът на ускоренията на това положение не е начертан в този лист (начертан за положения {positions})",
         "sl": "{a} načrt —: načrt pospeškov te lege na tem listu ni narisan (narisan za lege {positions})",
     },
+    "kd_analytic_cut": {
+        "en": "▲, ▼ on a frame's edge: the dashed analytic curve leaves the frame there and is cut (the frame is sized to the chords' construction)",
+        "sr": "▲, ▼ на ивици оквира: испрекидана аналитичка крива ту излази из оквира и прекинута је (оквир је мерен према конструкцији тетива)",
+        "ru": "▲, ▼ на краю рамки: штриховая аналитическая кривая там выходит за рамку и обрезана (рамка рассчитана на построение хорд)",
+        "bg": "▲, ▼ на ръба на рамката: прекъснатата аналитична крива там излиза от рамката и е отрязана (рамката е оразмерена по построението с хорди)",
+        "sl": "▲, ▼ na robu okvira: črtkana analitična krivulja tam zapusti okvir in je odrezana (okvir je določen po konstrukciji tetiv)",
+    },
     "kd_peak_note": {
         "en": "at {n} positions the chords flatten the fastest part of the cycle: at position {position} the {q}–t diagram gives {diagram} {unit} "
               "against {analytic} {unit} analytic (δ {error} %); draw more positions there (e.g. {more}) for a smaller error",

@@ -111,3 +111,39 @@ def test_the_new_notes_exist_in_every_language(lang):
         if lang in ("sr", "ru", "bg"):  # (Slovenian is written in Latin letters)
             latin = {w for w in re.findall(r"[A-Za-z]{3,}", re.sub(r"\{\w+\}", "", words))}  # (not the {placeholders})
             assert not latin, (key, lang, latin)
+
+
+def test_the_analytic_curve_is_held_by_the_frames(quick_return):
+    """Quick-return at 12 positions: the return stroke's analytic peak (v_E = 3.05 m/s at position 10, a_E ≈ −23.5 m/s²
+    near position 11) lies above the chords' range; each dashed curve is drawn whole (one unbroken run) inside its
+    diagram's ordinate, its peak at the stated μ, and the frame stays at least 40 mm tall and within the page."""
+    import xml.etree.ElementTree as ET
+
+    svg_ns = "{http://www.w3.org/2000/svg}"
+    pt = 25.4 / 72
+
+    def paths(svg, gid):
+        out = []
+        for g in ET.fromstring(svg).iter(f"{svg_ns}g"):
+            if re.fullmatch(rf"{gid}(-\d+)?", g.get("id", "")):
+                for path in g.iter(f"{svg_ns}path"):
+                    numbers = [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", path.get("d", ""))]
+                    out.append([complex(numbers[k], -numbers[k + 1]) * pt for k in range(0, len(numbers) - 1, 2)])
+        return out
+
+    doc = quick_return
+    for key, symbol, peak in (("v", "v", 3.051), ("a", "a", None)):
+        svg = doc.images[f"kinematic-{key}"]
+        runs = paths(svg, f"kd-{key}-analytic")
+        assert len(runs) == 1, (key, len(runs))  # not cut anywhere
+        assert not paths(svg, f"kd-{key}-analytic-cut")
+        (ordinate,) = paths(svg, f"kd-{key}-ordinate")[:1]
+        bottom, top = min(z.imag for z in ordinate), max(z.imag for z in ordinate)
+        assert 40.0 <= top - bottom <= 251.0
+        ys = [z.imag for z in runs[0]]
+        assert bottom - 0.01 <= min(ys) and max(ys) <= top + 0.01, key
+        if peak is not None:
+            mu = float(re.search(r'\$mu_\(v ?\)\$#" = (?:"[^\n]*?#"\) = )?([0-9.,]+) ', doc.source).group(1).replace(",", "."))
+            abscissa = paths(svg, f"kd-{key}-abscissa")[0][0].imag
+            assert (max(ys) - abscissa) * mu == pytest.approx(peak, abs=0.03)
+    assert "▲, ▼" not in doc.source  # nothing cut: no such note
