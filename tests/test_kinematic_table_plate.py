@@ -147,3 +147,29 @@ def test_the_analytic_curve_is_held_by_the_frames(quick_return):
             abscissa = paths(svg, f"kd-{key}-abscissa")[0][0].imag
             assert (max(ys) - abscissa) * mu == pytest.approx(peak, abs=0.03)
     assert "▲, ▼" not in doc.source  # nothing cut: no such note
+
+
+def _svg_texts(svg: bytes) -> list[str]:
+    import xml.etree.ElementTree as ET
+
+    return ["".join(t.itertext()) for t in ET.fromstring(svg).iter("{http://www.w3.org/2000/svg}text")]
+
+
+def test_s_in_metres_on_the_cycle_page_as_on_the_kinematic_page(quick_return):
+    """One unit for s: the kinematic page writes s [m] at μ_s [m/mm]; the cycle page's sliding pairs say s [m] too,
+    and its ticks are metres: the ram E runs between 0.455 m and −0.07 m along its guide (|s| < 1 m, not hundreds)."""
+    texts = _svg_texts(quick_return.images["diagram-sliders"])
+    joined = " ".join(texts)
+    assert "s [m]" in joined and "[mm]" not in joined
+    ticks = [float(t.replace("\u2212", "-").replace(",", ".")) for t in texts if re.fullmatch(r"[\u2212-]?\d+(?:,\d+)?", t)]
+    s_ticks = [v for v in ticks if v != int(v)]  # (the positions' numbers and the angles are whole)
+    assert s_ticks and max(abs(v) for v in s_ticks) < 1.0
+    table = quick_return.source[quick_return.source.index("Излазни члан у сваком положају"):]
+    assert '[#"[m]"]' in table
+
+
+def test_a_linear_drivers_axis_in_metres_in_the_courses_letters():
+    doc = handout(plans.load(plans.example_path("linear-arm")), positions=8, lang="bg")
+    joined = " ".join(_svg_texts(doc.images["diagram-sliders"]))
+    assert "s [м]" in joined and "мм" not in joined and "[m]" not in joined
+    assert "−0,100" in joined or "−0,10" in joined or "−0,1" in joined  # the stroke's end, −100 mm, in metres
