@@ -173,3 +173,32 @@ def test_a_linear_drivers_axis_in_metres_in_the_courses_letters():
     joined = " ".join(_svg_texts(doc.images["diagram-sliders"]))
     assert "s [м]" in joined and "мм" not in joined and "[m]" not in joined
     assert "−0,100" in joined or "−0,10" in joined or "−0,1" in joined  # the stroke's end, −100 mm, in metres
+
+
+def test_the_table_page_is_not_left_two_thirds_empty(quick_return):
+    """Quick-return, 12 positions: the three diagrams fill a page; the table and its notes take about a third of the
+    next, and the page of cycle diagrams with the fewest panels (the points': |v|, |a|) is set under them, not on a
+    page of its own; the other cycle pages follow, each on its own page."""
+    import base64
+
+    from plans.pages.typesetting import query_document
+
+    doc = quick_return
+    pages = doc.pages("svg")
+
+    def page_of(key: str) -> int:
+        data = doc.images[key]
+        found = [k for k, page in enumerate(pages, start=1)
+                 if any(base64.b64decode(m) == data for m in re.findall(rb'data:image/svg\+xml;base64,([^"]+)"', page))]
+        assert len(found) == 1, key
+        return found[0]
+
+    diagrams = page_of("kinematic-a")
+    assert page_of("kinematic-s") == diagrams
+    marks = {m["name"]: m for m in query_document(doc.source, doc.images, "<plans-mark>")}
+    table_end = marks["kinematic-end"]
+    assert table_end["page"] == diagrams + 1
+    assert page_of("diagram-points") == diagrams + 1  # under the table
+    assert {page_of("diagram-links"), page_of("diagram-sliders")} == {diagrams + 2, diagrams + 3}
+    # the cycle page under the table keeps its panels readable: its figure at least 100 mm tall
+    assert doc.drawn["diagram-points"][1] >= 100.0
