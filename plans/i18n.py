@@ -1263,11 +1263,11 @@ TERMS.update({
               "velikost s predznakom narisane smeri; {v} in {a} s predznakom: {sense}",
     },
     "kd_no_plan": {
-        "en": "—: no plan of that position on this plate (the diagrams use more positions than the plans)",
-        "sr": "—: план тог положаја није на овом листу (дијаграми користе више положаја од планова)",
-        "ru": "—: плана этого положения на данном листе нет (диаграммы используют больше положений, чем планы)",
-        "bg": "—: план на това положение няма в този лист (диаграмите използват повече положения от плановете)",
-        "sl": "—: načrta te lege na tem listu ni (diagrami uporabljajo več leg kot načrti)",
+        "en": "—: this plate draws no plan of that position (the diagrams have positions the plans do not)",
+        "sr": "—: на овом листу нема плана тог положаја (дијаграми имају положаје којих нема међу плановима)",
+        "ru": "—: на данном листе нет плана этого положения (в диаграммах есть положения, которых нет среди планов)",
+        "bg": "—: в този лист няма план на това положение (диаграмите имат положения, които ги няма сред плановете)",
+        "sl": "—: na tem listu ni načrta te lege (diagrami imajo lege, ki jih med načrti ni)",
     },
     "kd_no_acceleration_plan": {
         "en": "{a} plan —: the acceleration plan of that position is not drawn on this plate (drawn for positions {positions})",
