@@ -202,3 +202,19 @@ def test_the_table_page_is_not_left_two_thirds_empty(quick_return):
     assert {page_of("diagram-links"), page_of("diagram-sliders")} == {diagrams + 2, diagrams + 3}
     # the cycle page under the table keeps its panels readable: its figure at least 100 mm tall
     assert doc.drawn["diagram-points"][1] >= 100.0
+
+
+def test_fewer_plan_positions_than_diagram_positions():
+    """A handout of 6 positions differentiates over 12 (a course project's least is 8): its plans are those of
+    rows 0, 2, 4 …, each row's plan value the plan of the handout's position at the same crank angle (|v_B| read at
+    the plate's k_v), the rows between "—", said in a note."""
+    doc = handout(plans.load(plans.example_path("slider-crank")), positions=6, lang="en")
+    rows = _table(doc.source, "The output link at every position")
+    assert len(rows) == 12
+    k_v = doc.scales["k_v"]
+    for h in doc.runs:
+        v_b = {v.label: v.value for v in h.graphical.velocity_plan.vectors}.get("v_B", 0.0)
+        row = rows[2 * h.index]
+        assert row[4].lstrip("-") == ("0" if v_b == 0 else _read(v_b, k_v)), (h.index, row)
+        assert rows[2 * h.index + 1][4] == "—"
+    assert "—: this plate draws no plan of that position" in doc.source
