@@ -86,10 +86,10 @@ def decimal_comma(text: str, lang: str) -> str:
 #: Units as the Russian and Bulgarian courses write them (Cyrillic symbols); Serbian and Slovenian
 #: courses write the international symbols, as English does.
 _CYRILLIC_UNITS = {"rad/s²": "рад/с²", "rad/s": "рад/с", "m/s²": "м/с²", "m/s": "м/с", "m/mm": "м/мм", "s/mm": "с/мм", "mm": "мм", "rad": "рад",
-                   "m": "м", "[s]": "[с]", " s": " с"}
+                   "m": "м", "[s]": "[с]", " s": " с", "[m]": "[м]"}
 _UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad|m)(?![\w}′″'₀-₉])|(\[s\])|(?<=[0-9])( s)(?![\w])")
-#: the same without a bare "m" (a drawing's labels: the image m of a point M stays)
-_DRAWN_UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad)(?![\w}])|(\[s\])|(?<=[0-9])( s)(?![\w])")
+#: the same without a bare "m" (a drawing's labels: the image m of a point M stays), but metres in an axis' brackets
+_DRAWN_UNIT = re.compile(r"(?<![\w\\{])(rad/s²|rad/s|m/s²|m/s|m/mm|s/mm|mm|rad)(?![\w}])|(\[s\])|(?<=[0-9])( s)(?![\w])|(\[m\])")
 
 
 def course_units(line: str, lang: str, drawn: bool = False) -> str:

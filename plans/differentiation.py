@@ -86,6 +86,7 @@ __all__ = [
     "readable",
     "flat",
     "READABLE_HEIGHT",
+    "with_plans",
 ]
 
 #: Pole distances H [mm] a plate uses: round, short enough to leave the abscissa its room.
@@ -421,6 +422,11 @@ class KinematicDiagrams:
     start : str or None
         Position 0: ``"output"`` (an extreme position of the output link) or
         ``"scene"`` (the scene's own), as :attr:`plans.motion.Cycle.start`.
+    v_plans_step, a_plans_step : array (n,) or None
+        The resolution of each "plans" value [its unit]: one drafting step of
+        the segment read × the plan's scale factor (÷ the link length for a
+        rocker's ω, ε), so that a table prints it to the digits its plan's
+        readings do (NaN or None: four significant digits).
     """
 
     motion: OutputMotion
@@ -443,6 +449,8 @@ class KinematicDiagrams:
     positions: np.ndarray | None = None
     start_phase: float | None = None
     start: str | None = None
+    v_plans_step: np.ndarray | None = None
+    a_plans_step: np.ndarray | None = None
 
     def errors(self) -> dict[str, np.ndarray]:
         """Errors against the analytic values, in % of the largest analytic |v| (|a|) over the positions.
@@ -606,7 +614,8 @@ REFERENCE_STEPS = 360
 
 
 def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, start: str = "output", precision: float | None = None,
-                       k_v: float | None = None, k_a: float | None = None, height: float = ORDINATE_MAX) -> KinematicDiagrams:
+                       k_v: float | None = None, k_a: float | None = None, height: float = ORDINATE_MAX,
+                       plans: bool = True) -> KinematicDiagrams:
     """The output link's kinematic diagrams by graphical differentiation, and the comparison at every position.
 
     Parameters
@@ -630,6 +639,10 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, st
         factors that fit the largest of them, as on a plate).
     height : float
         The tallest a diagram is drawn [mm] (sets μ_s, H₁, H₂).
+    plans : bool
+        Construct the plans at every position for the "plans" column (False:
+        that column NaN, for a caller that sets it from the plans it draws,
+        :func:`with_plans`).
 
     Returns
     -------
@@ -682,13 +695,16 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, st
     numbers = tuple(str(k % positions) if cycle.law.crank else str(k) for k in range(len(cycle)))
     # the plans at every position, at one scale of each kind
     precision = page_precision(precision, scene)
-    scenes = [replace(cycle.scene_at(k), assembly=_hints(scene, analytic, k)) for k in range(len(cycle))]
-    scenes = [replace(x, scales=replace(x.scales, precision=precision)) for x in scenes]
-    first_pass = [construct(x, structure, k_v=k_v, k_a=k_a, precision=precision, check_scales=False) for x in scenes]
-    scales = common_scales(first_pass, given={"k_v": k_v, "k_a": k_a})
-    graphicals = [construct(x, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision, check_scales=False)
-                  for x in scenes]
-    plans_v, plans_a = zip(*(_plans_values(output, g) for g in graphicals))
+    if plans:
+        scenes = [replace(cycle.scene_at(k), assembly=_hints(scene, analytic, k)) for k in range(len(cycle))]
+        scenes = [replace(x, scales=replace(x.scales, precision=precision)) for x in scenes]
+        first_pass = [construct(x, structure, k_v=k_v, k_a=k_a, precision=precision, check_scales=False) for x in scenes]
+        scales = common_scales(first_pass, given={"k_v": k_v, "k_a": k_a})
+        graphicals = [construct(x, structure, k_l=scales["k_l"], k_v=scales["k_v"], k_a=scales.get("k_a"), precision=precision, check_scales=False)
+                      for x in scenes]
+        plans_v, plans_a = zip(*(_plans_values(output, g) for g in graphicals))
+    else:
+        scales, plans_v, plans_a = None, None, None
     lead = trail = None
     if not repeating and cycle.law.crank:  # the crank turns on: one position more at each end, s repeating over the turn
         lead, trail = _beyond(cycle, s)
@@ -700,9 +716,32 @@ def kinematic_diagrams(scene, positions: int = 12, *, law: str | None = None, st
     scales_d = diagram_scales(motion.duration, se, t=te, period=period, height=height, intervals=motion.intervals)
     result = kinematic_diagrams_of(motion, v_plans=plans_v, a_plans=plans_a, v_analytic=rates, a_analytic=accelerations,
                                    scales=scales_d, reference=reference)
-    return replace(result, law=cycle.law, plan_scales=dict(scales), precision=precision, driver=scene.driver.link,
+    return replace(result, law=cycle.law, plan_scales=dict(scales) if scales is not None else None, precision=precision, driver=scene.driver.link,
                    positions=np.asarray(cycle.positions, dtype=float),
                    start_phase=float(cycle.phase[0]) if cycle.law.kind == "harmonic" else None, start=cycle.start)
+
+
+def with_plans(diagrams: KinematicDiagrams, v, a, *, v_step=None, a_step=None, plan_scales: dict | None = None,
+               precision: float | None = None) -> KinematicDiagrams:
+    """The same diagrams with the "plans" column taken from plans drawn elsewhere (a plate's, at its scales).
+
+    *v*, *a*: arrays over the positions (the output's v_rel, a_rel along its guide [m/s, m/s²] or ω, ε
+    counter-clockwise [rad/s, rad/s²] as read off each position's plans), NaN where a position has no such plan
+    drawn; *v_step*, *a_step*: their resolutions (see :attr:`KinematicDiagrams.v_plans_step`).  The errors
+    (:meth:`KinematicDiagrams.errors`) follow.
+    """
+    from dataclasses import replace
+
+    n = len(diagrams.motion.t)
+
+    def array(x):
+        out = np.full(n, np.nan) if x is None else np.asarray(x, dtype=float)
+        if out.shape != (n,):
+            raise ValueError(f"with_plans: {n} values expected, got {out.shape}")
+        return out
+
+    return replace(diagrams, v_plans=array(v), a_plans=array(a), v_plans_step=array(v_step), a_plans_step=array(a_step),
+                   plan_scales=plan_scales, precision=precision)
 
 
 def rescaled(diagrams: KinematicDiagrams, height: float) -> KinematicDiagrams:

@@ -976,7 +976,7 @@ TERMS: dict[str, dict[str, str]] = {
     "from_position_0_extreme": {"en": "measured from position 0, an extreme position of the output link", "sr": "мери се од положаја 0, крајњег положаја излазног члана", "ru": "отсчитывается от положения 0, крайнего положения выходного звена", "bg": "измерва се от положение 0, крайно положение на изходното звено", "sl": "merjeno od lege 0, skrajne lege izhodnega člena"},
     "from_position_0": {"en": "measured from position 0", "sr": "мери се од положаја 0", "ru": "отсчитывается от положения 0", "bg": "измерва се от положение 0", "sl": "merjeno od lege 0"},
     "position_no": {"en": "No.", "sr": "Бр.", "ru": "№ п/п", "bg": "№ по ред", "sl": "Št."},
-    "kd_extreme_reading": {"en": "at the extreme positions ({v} = 0) the diagram reads the curve through the intervals' middles: its value there is the chord method's, not 0", "sr": "у крајњим положајима ({v} = 0) дијаграм чита криву кроз средине интервала: вредност тамо је вредност методе тетива, а не 0", "ru": "в крайних положениях ({v} = 0) диаграмма читается по кривой через середины интервалов: значение там — значение метода хорд, а не 0", "bg": "в крайните положения ({v} = 0) диаграмата се отчита по кривата през средите на интервалите: стойността там е тази на метода на хордите, а не 0", "sl": "v skrajnih legah ({v} = 0) diagram bere krivuljo skozi sredine intervalov: vrednost tam je vrednost metode tetiv, ne 0"},
+    "kd_extreme_reading": {"en": "at an extreme position ({v} = 0) the diagram does not give 0: each chord's mean velocity is plotted at its interval's middle, so at the extreme the curve through those points reads about the mean of the two neighbouring intervals' chords (of opposite sign), not the zero between them", "sr": "у крајњем положају ({v} = 0) дијаграм не даје 0: средња брзина сваке тетиве нанесена је у средини њеног интервала, па у крајњем положају крива кроз те тачке даје приближно средњу вредност тетива два суседна интервала (супротног знака), а не нулу између њих", "ru": "в крайнем положении ({v} = 0) диаграмма не даёт 0: средняя скорость каждой хорды отложена в середине её интервала, поэтому в крайнем положении кривая через эти точки даёт примерно среднее хорд двух соседних интервалов (разного знака), а не нуль между ними", "bg": "в крайно положение ({v} = 0) диаграмата не дава 0: средната скорост на всяка хорда е нанесена в средата на нейния интервал, затова в крайното положение кривата през тези точки дава приблизително средното на хордите на двата съседни интервала (с различен знак), а не нулата между тях", "sl": "v skrajni legi ({v} = 0) diagram ne da 0: srednja hitrost vsake tetive je nanesena v sredini njenega intervala, zato krivulja skozi te točke v skrajni legi da približno povprečje tetiv sosednjih intervalov (nasprotnega predznaka), ne ničle med njima"},
     "guide_position": {"en": "position on the guide", "sr": "положај на вођици", "ru": "положение на направляющей", "bg": "положение по водача", "sl": "lega na vodilu"},
     "scene_instant": {"en": "the scene's instant", "sr": "тренутак сцене", "ru": "момент сцены", "bg": "моментът на сцената",
                       "sl": "trenutek scene"},
@@ -1244,5 +1244,55 @@ TERMS.update({
         "ru": "выносной элемент",
         "bg": "детайл",
         "sl": "detajl",
+    },
+})
+
+
+# --- the kinematic diagrams' table against the plate's plans (issue 20, review round 2, branch r2-kinematic) --------
+TERMS.update({
+    "kd_plans_signs": {
+        "en": "{plan}: read on this plate's plans of that position (their k_v, k_a, to their drafting precision, as in their readings), "
+              "the magnitude with the sign of the sense drawn; {v} and {a} signed: {sense}",
+        "sr": "{plan}: очитано на плановима тог положаја на овом листу (њихови k_v, k_a, на тачност цртања, као у очитавањима), "
+              "интензитет са знаком нацртаног смера; {v} и {a} са знаком: {sense}",
+        "ru": "{plan}: снято с планов этого положения на данном листе (их k_v, k_a, с точностью построения, как в отсчётах), "
+              "величина со знаком построенного направления; {v} и {a} со знаком: {sense}",
+        "bg": "{plan}: отчетено от плановете на това положение в този лист (техните k_v, k_a, с точността на чертане, както в отчитанията), "
+              "големината със знака на начертаната посока; {v} и {a} със знак: {sense}",
+        "sl": "{plan}: odčitano z načrtov te lege na tem listu (njihova k_v, k_a, z natančnostjo risanja, kot v odčitkih), "
+              "velikost s predznakom narisane smeri; {v} in {a} s predznakom: {sense}",
+    },
+    "kd_no_plan": {
+        "en": "—: this plate draws no plan of that position (the diagrams have positions the plans do not)",
+        "sr": "—: на овом листу нема плана тог положаја (дијаграми имају положаје којих нема међу плановима)",
+        "ru": "—: на данном листе нет плана этого положения (в диаграммах есть положения, которых нет среди планов)",
+        "bg": "—: в този лист няма план на това положение (диаграмите имат положения, които ги няма сред плановете)",
+        "sl": "—: na tem listu ni načrta te lege (diagrami imajo lege, ki jih med načrti ni)",
+    },
+    "kd_no_acceleration_plan": {
+        "en": "{a} plan —: the acceleration plan of that position is not drawn on this plate (drawn for positions {positions})",
+        "sr": "{a} план —: план убрзања тог положаја није нацртан на овом листу (нацртан за положаје {positions})",
+        "ru": "{a} план —: план ускорений этого положения на данном листе не построен (построен для положений {positions})",
+        "bg": "{a} план —: планът на ускоренията на това положение не е начертан в този лист (начертан за положения {positions})",
+        "sl": "{a} načrt —: načrt pospeškov te lege na tem listu ni narisan (narisan za lege {positions})",
+    },
+    "kd_analytic_cut": {
+        "en": "▲, ▼ on a frame's edge: the dashed analytic curve leaves the frame there and is cut (the frame is sized to the chords' construction)",
+        "sr": "▲, ▼ на ивици оквира: испрекидана аналитичка крива ту излази из оквира и прекинута је (оквир је мерен према конструкцији тетива)",
+        "ru": "▲, ▼ на краю рамки: штриховая аналитическая кривая там выходит за рамку и обрезана (рамка рассчитана на построение хорд)",
+        "bg": "▲, ▼ на ръба на рамката: прекъснатата аналитична крива там излиза от рамката и е отрязана (рамката е оразмерена по построението с хорди)",
+        "sl": "▲, ▼ na robu okvira: črtkana analitična krivulja tam zapusti okvir in je odrezana (okvir je določen po konstrukciji tetiv)",
+    },
+    "kd_peak_note": {
+        "en": "at {n} positions the chords flatten the fastest part of the cycle: at position {position} the {q}–t diagram gives {diagram} {unit} "
+              "against {analytic} {unit} analytic (δ {error} %); draw more positions there (e.g. {more}) for a smaller error",
+        "sr": "при {n} положаја тетиве заравњују најбржи део циклуса: у положају {position} дијаграм {q}–t даје {diagram} {unit} "
+              "према {analytic} {unit} аналитички (δ {error} %); за мању грешку нацртајте више положаја (нпр. {more})",
+        "ru": "при {n} положениях хорды сглаживают самую быструю часть цикла: в положении {position} диаграмма {q}–t даёт {diagram} {unit} "
+              "против {analytic} {unit} аналитически (δ {error} %); для меньшей погрешности возьмите больше положений (напр. {more})",
+        "bg": "при {n} положения хордите заглаждат най-бързата част от цикъла: в положение {position} диаграмата {q}–t дава {diagram} {unit} "
+              "срещу {analytic} {unit} аналитично (δ {error} %); за по-малка грешка начертайте повече положения (напр. {more})",
+        "sl": "pri {n} legah tetive zgladijo najhitrejši del cikla: v legi {position} diagram {q}–t da {diagram} {unit} "
+              "proti {analytic} {unit} analitično (δ {error} %); za manjšo napako narišite več leg (npr. {more})",
     },
 })

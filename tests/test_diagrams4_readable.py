@@ -60,7 +60,7 @@ def test_every_angle_spans_a_readable_share_of_its_panel(name):
     crank = isinstance(scene.driver, plans.scene.Crank)
     sense = -1.0 if getattr(scene.driver, "omega", 1.0) < 0 else 1.0
     driver = np.asarray(cycle.driver, dtype=float)
-    driver_x = np.degrees(sense * (driver - driver[0])) if crank else driver * 1e3
+    driver_x = np.degrees(sense * (driver - driver[0])) if crank else driver  # (a linear driver's s [m])
     seen = set()
     for ax in figures["links"].axes:
         if not ax.get_ylabel().startswith("φ"):

@@ -162,7 +162,7 @@ def cycle_axis(analytic, marked=None, cycle=None) -> tuple[np.ndarray, str, list
     For a crank, x is the angle turned from the sweep's first position in the
     sense of the crank's ω [°] (the sense :mod:`plans.positions` and ``plans
     sweep`` number and run positions in); for a linear driver, the position
-    [mm].  *marked* are driver positions (rad or m), numbered 0, 1, 2 … in the
+    [m] (s in m on every diagram).  *marked* are driver positions (rad or m), numbered 0, 1, 2 … in the
     order given, or a :class:`plans.motion.Cycle` of them.  A rocker input's
     swing (*cycle*, the :class:`plans.motion.Cycle` the sweep was solved
     under, with a harmonic law) runs there and back over the same angles:
@@ -188,10 +188,10 @@ def cycle_axis(analytic, marked=None, cycle=None) -> tuple[np.ndarray, str, list
         for k, p in enumerate(marked or ()):
             marks.append((k, float(np.degrees(sense * (p - start)) % 360.0)))
     else:
-        x = driver * 1e3
-        label = "s [mm]"
+        x = driver.copy()  # [m]: s in m on every diagram, as the kinematic diagrams' μ_s [m/mm] gives it
+        label = "s [m]"
         for k, p in enumerate(marked or ()):
-            marks.append((k, float(p) * 1e3))
+            marks.append((k, float(p)))
     return x, label, marks
 
 
@@ -613,7 +613,7 @@ def _other_extreme(cycle, extremes, x, start: float) -> list[tuple[str, float]]:
     elif cycle.law.crank:
         at = math.degrees(cycle.law.sense * (extremes.other_position - start)) % 360.0
     else:
-        at = extremes.other_position * 1e3
+        at = float(extremes.other_position)
     return [(OTHER_EXTREME, float(at))] if float(np.nanmin(x)) <= at <= float(np.nanmax(x)) else []
 
 
@@ -722,7 +722,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
             page("points", term("points_motion", lang), panels)
 
         if any(p.name in analytic.sliders for p in scene.prismatics):
-            panels = [("s", f"s [mm]\n({term('guide_position', lang)})", "mm"), ("v_rel", f"vʳ [m/s]\n({term('relative_velocity_short', lang)})", "m/s")]
+            panels = [("s", f"s [m]\n({term('guide_position', lang)})", "m"), ("v_rel", f"vʳ [m/s]\n({term('relative_velocity_short', lang)})", "m/s")]
             if scene.accelerations:
                 panels += [
                     ("a_rel", f"aʳ [m/s²]\n({term('relative_acceleration_short', lang)})", "m/s²"),
@@ -808,12 +808,12 @@ QUANTITIES = {
     "epsilon": "ε [rad/s²]",
     "v": "|v| [m/s]",
     "a": "|a| [m/s²]",
-    "s": "s [mm]",
+    "s": "s [m]",
     "v_rel": "vʳ [m/s]",
     "a_rel": "aʳ [m/s²]",
     "coriolis": "|aᵏ| [m/s²]",
 }
-_UNITS = {"phi": "°", "omega": "rad/s", "epsilon": "rad/s²", "v": "m/s", "a": "m/s²", "s": "mm", "v_rel": "m/s", "a_rel": "m/s²", "coriolis": "m/s²"}
+_UNITS = {"phi": "°", "omega": "rad/s", "epsilon": "rad/s²", "v": "m/s", "a": "m/s²", "s": "m", "v_rel": "m/s", "a_rel": "m/s²", "coriolis": "m/s²"}
 
 
 def _quantity_panel(analytic, quantity: str, valid, lang: str, unit: str, start: float | None = None, swing: bool = False,
@@ -850,7 +850,7 @@ def _series(analytic, quantity: str, valid, swing: bool = False, lang: str = "en
     # a pair named in words by the scene (a sleeve) in the page's language ([names]), as written otherwise
     called = {n: scene.name_in(n, lang) for n in pairs}
     if quantity == "s":
-        return [(_name("s", called[n]), _finite(np.asarray(analytic.sliders[n].s) * 1e3, valid)) for n in pairs]
+        return [(_name("s", called[n]), _finite(np.asarray(analytic.sliders[n].s, dtype=float), valid)) for n in pairs]
     if quantity == "coriolis":
         return [(_abs(_name("a^k", called[n])), _finite(np.abs(analytic.sliders[n].coriolis), valid)) for n in pairs]
     symbol = {"v_rel": "v^r", "a_rel": "a^r"}[quantity]

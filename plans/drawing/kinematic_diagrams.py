@@ -46,7 +46,7 @@ from .svg import drawing_rc, new_figure, render_svg
 
 __all__ = ["diagram_svgs", "diagram_title", "flat_line", "legend_items", "diagrams_table", "table_header", "header_lines",
            "origin_line", "page_heading", "notes", "unavailable_reason", "diagram_words", "page_diagrams", "draw_kinematic_figure",
-           "block_room", "table_heading", "KEYS", "TEXT_PT", "DIAGRAM_GAP", "PAGE_ROOM"]
+           "block_room", "table_heading", "KEYS", "TEXT_PT", "DIAGRAM_GAP", "PAGE_ROOM", "PEAK_NOTE", "analytic_cut"]
 
 #: Size [pt] of every text in the diagrams and their table.
 TEXT_PT = 8.0
@@ -64,13 +64,14 @@ POLE_ROOM = 6.0
 MARGIN = 1.0
 #: The height [mm] of the three drawings together that an A4 page's text area has room for under the data lines
 #: and the diagrams' titles: beyond it the analytic curves widen no diagram.
-PAGE_ROOM = 196.0
+PAGE_ROOM = 204.0
 CURVE = "#0072B2"
 CHORD = "#D55E00"
 RAY = "#404040"
 ANALYTIC = "#808080"
 GRID = "#b0b0b0"
-#: How far [share of its constructed range] the analytic curve may widen a diagram; beyond, it is cut off.
+#: How far [share of its constructed range] the analytic curve may widen a diagram; beyond, it is cut off at the
+#: frame, the cut marked (a page's scales, :func:`plans.differentiation.readable`, leave it that room)
 REFERENCE_ROOM = 0.25
 
 
@@ -249,6 +250,7 @@ class _Prepared:
         points = {"s": self.s_mm, "v": vel.intercepts(), "a": acc.intercepts()}
         self.ranges = {key: _range(points[key], self.curves[key]) for key in KEYS}
         self.ref = None
+        self.cuts = {key: [] for key in KEYS}
         if analytic and d.reference is not None:
             rt, rs, rv, ra = d.reference
             inside = (rt >= t0 - 1e-12) & (rt <= t0 + motion.duration * (1 + 1e-9))
@@ -259,7 +261,13 @@ class _Prepared:
                 room = widen * (hi - lo)
                 r_lo, r_hi = _range(ref[key])
                 self.ranges[key] = lo, hi = (max(min(lo, r_lo), lo - room), min(max(hi, r_hi), hi + room))
-                ref[key] = np.where((ref[key] >= lo) & (ref[key] <= hi), ref[key], np.nan)
+                outside = ~((ref[key] >= lo) & (ref[key] <= hi)) & np.isfinite(ref[key])
+                # where the curve leaves the frame: a mark on its edge (the cut is seen, and said in the notes)
+                xs = self.x_of(rt[inside])
+                for k in np.flatnonzero(outside[1:] != outside[:-1]):
+                    j = k + 1 if outside[k + 1] else k  # the point outside, at the crossing
+                    self.cuts[key].append((float(xs[j]), hi if ref[key][j] > hi else lo))
+                ref[key] = np.where(outside, np.nan, ref[key])
             self.ref = (self.x_of(rt[inside]), ref)
         self.length = sc.length
         self.left = max(sc.pole_v if flat(d, "v") is None else 0.0, sc.pole_a if flat(d, "a") is None else 0.0) + POLE_ROOM
@@ -309,6 +317,10 @@ def _draw(sketch: Sketch, p: _Prepared, key: str, y0: float, lang: str) -> None:
     if p.ref is not None:
         for run in _runs(p.ref[0], p.ref[1][key]):
             sketch.line([P(a, b) for a, b in run], color=ANALYTIC, lw=0.6, dashes=(3, 2), gid=f"{key}-analytic", obstacle=False)
+        for x, edge in p.cuts[key]:  # the analytic curve cut at the frame: a small wedge pointing out of it
+            tip = 1.4 if edge == hi else -1.4
+            sketch.polygon([P(x - 0.9, edge), P(x + 0.9, edge), P(x, edge + tip)], fc=ANALYTIC, ec=ANALYTIC, lw=0.3,
+                           gid=f"{key}-analytic-cut", obstacle=False)
     period = d.motion.period
     if key == "s":
         sketch.line([P(a, b) for a, b in zip(tx, p.curves["s"])], color=CURVE, lw=1.0, gid="s-curve", obstacle=False)
@@ -379,6 +391,16 @@ def diagram_svgs(d: KinematicDiagrams, lang: str = "en", *, analytic: bool = Tru
             width, height = fit_axes(ax, sketch.bounds, MARGIN)
             out[key] = SvgBlock(render_svg(fig), width, height)
     return out
+
+
+def analytic_cut(d: KinematicDiagrams) -> bool:
+    """Whether the analytic curves of :func:`diagram_svgs` (drawn at *d*'s scales) leave a frame somewhere (cut there,
+    the cut marked with a wedge on the frame's edge)."""
+    p = _Prepared(d, True)
+    drawn = [key for key in KEYS if key == "s" or flat(d, key) is None]
+    if sum(p.height(key) for key in drawn) > PAGE_ROOM:
+        p = _Prepared(d, True, widen=0.0)
+    return any(p.cuts[key] for key in drawn)
 
 
 def draw_kinematic_figure(d: KinematicDiagrams, *, title: str = "", lang: str = "en", analytic: bool = True):
@@ -466,13 +488,27 @@ def diagrams_table(d: KinematicDiagrams, lang: str = "en") -> list[list[str]]:
 
     floors = {"v": 1e-9 * span / duration, "a": 1e-9 * span / duration**2}
     d = type(d)(**{**d.__dict__, **{k: clean(getattr(d, k), floors[k[0]]) for k in ("v", "a", "v_plans", "a_plans", "v_analytic", "a_analytic")}})
+    steps = {"v": d.v_plans_step, "a": d.a_plans_step}
     for k, number in enumerate(d.motion.numbers):
         row = [str(number), _num(float(d.motion.t[k]), lang, 3), _num(float(d.motion.s[k]), lang, 4)]
         for key, ours, theirs, exact in (("v", d.v, d.v_plans, d.v_analytic), ("a", d.a, d.a_plans, d.a_analytic)):
-            row += [_num(float(ours[k]), lang), _num(float(theirs[k]), lang), _num(float(exact[k]), lang),
+            step = float(steps[key][k]) if steps[key] is not None else math.nan
+            row += [_num(float(ours[k]), lang), _plan_number(float(theirs[k]), step, lang), _num(float(exact[k]), lang),
                     _percent(e[f"{key}_diagram"][k], lang), _percent(e[f"{key}_plans"][k], lang)]
         rows.append(row)
     return rows
+
+
+def _plan_number(value: float, step: float, lang: str) -> str:
+    """A value read off a plan: to the digits its resolution *step* gives (as the plan's readings print it,
+    :func:`plans.report.reading_number`), else four significant digits; "—" where there is no plan."""
+    from ..report import reading_number
+
+    if not math.isfinite(value):
+        return "—"
+    if value == 0 or not math.isfinite(step):
+        return _num(value, lang)
+    return localised(reading_number(value, step), lang)
 
 
 def table_header(d: KinematicDiagrams, lang: str = "en") -> tuple[list[str], list[tuple[int, str]], list[str]]:
@@ -506,20 +542,53 @@ def _tick(value: float, lang: str) -> str:
     return localised(f"{value:.6g}" if abs(value) >= 1e-12 else "0", lang)
 
 
+#: Above this largest |δ| [%] of the diagrams, the notes say where the chords flatten a peak and ask for more positions.
+PEAK_NOTE = 5.0
+
+
 def notes(d: KinematicDiagrams, lang: str = "en") -> list[str]:
-    """The lines under the table: what δ is, the largest errors, the method of tangents, the order of the chords."""
+    """The lines under the table: what δ is, the largest errors, where the "plans" values come from and their sign
+    rule, why a "—", the order of the chords (and, where the diagrams' error exceeds :data:`PEAK_NOTE` %, which
+    peak they flatten), the reading at an extreme position."""
     e = d.errors()
     words = diagram_words(d, lang)
     largest = lambda x: float(np.nanmax(np.abs(x))) if np.any(np.isfinite(x)) else math.nan  # noqa: E731
     pct = lambda x: localised(f"{x:.2f}", lang) + " %" if math.isfinite(x) else "—"  # noqa: E731
     v, a = words["v"], words["a"]
-    return [
+    out = [
         term("diagram_error_note", lang) + ".",
         f"max |δ|:  {v} {term('from_diagram', lang)} {pct(largest(e['v_diagram']))},  {a} {term('from_diagram', lang)} {pct(largest(e['a_diagram']))};  "
         f"{v} {term('from_plans', lang)} {pct(largest(e['v_plans']))},  {a} {term('from_plans', lang)} {pct(largest(e['a_plans']))}.",
-        f"{term('method_of_tangents', lang)}:  max |δ| {v} {pct(largest(e['v_tangents']))},  {a} {pct(largest(e['a_tangents']))}.",
-        term("chords_order", lang) + ".",
-    ] + ([term("kd_extreme_reading", lang).format(v=v) + "."] if d.start == "output" else [])
+    ]
+    sense = term("positive_along_guide" if d.motion.kind == "slider" else "positive_ccw", lang)
+    out.append(term("kd_plans_signs", lang).format(v=v, a=a, plan=term("from_plans", lang), sense=sense) + ".")
+    numbers = list(d.motion.numbers)
+    v_plans, a_plans = np.asarray(d.v_plans, dtype=float), np.asarray(d.a_plans, dtype=float)
+    if np.any(~np.isfinite(v_plans)) and np.any(np.isfinite(v_plans)):
+        out.append(term("kd_no_plan", lang) + ".")
+    drawn = [numbers[k] for k in range(len(numbers)) if math.isfinite(a_plans[k])]
+    if np.any(np.isfinite(v_plans) & ~np.isfinite(a_plans)):
+        out.append(term("kd_no_acceleration_plan", lang).format(a=a, positions=", ".join(dict.fromkeys(drawn)) or "—") + ".")
+    out.append(term("chords_order", lang) + ".")
+    worst = None
+    for key in ("v", "a"):
+        errors = np.asarray(e[f"{key}_diagram"], dtype=float)
+        if np.any(np.isfinite(errors)):
+            k = int(np.nanargmax(np.abs(errors)))
+            if abs(errors[k]) > PEAK_NOTE and (worst is None or abs(errors[k]) > abs(worst[2])):
+                worst = (key, k, float(errors[k]))
+    if worst is not None:
+        key, k, error = worst
+        ours, exact = (d.v, d.v_analytic) if key == "v" else (d.a, d.a_analytic)
+        count = len(set(numbers))
+        out.append(term("kd_peak_note", lang).format(
+            q=words[key], n=count, position=numbers[k], diagram=_num(float(ours[k]), lang), analytic=_num(float(exact[k]), lang),
+            unit=words[f"{key}_unit"], error=localised(f"{error:+.1f}", lang), more=2 * count) + ".")
+    if d.reference is not None and analytic_cut(d):
+        out.append(term("kd_analytic_cut", lang) + ".")
+    if d.start == "output":
+        out.append(term("kd_extreme_reading", lang).format(v=v) + ".")
+    return out
 
 
 def page_heading(lang: str = "en") -> str:

@@ -594,20 +594,35 @@ def build_handout(
         doc.section("diagrams")
         doc.mark("diagrams-start")  # (the pages from here on stand alone: diagrams, kinematic, force, centres pages)
         marked = run.motion if run.motion is not None else run.positions
-        kinematic = _kinematic(scene, positions, len(run.runs), precision, law, start)
+        kinematic = _plate_plans(_kinematic(scene, positions, len(run.runs), precision, law, start), run, here, set(acceleration_blocks), plate)
         # each page's title and words set by Typst above its figure, which takes the rest of the text area at 100 %
         from .typesetting import text as literal
 
         words_room = 36.0  # mm: the heading and four lines of words
-        for page_name, fig in draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense,
-                                                  extremes=run.strokes, size=(DIAGRAM_PAGE[0], DIAGRAM_PAGE[1] - words_room),
-                                                  signed_elsewhere=_output_points(scene, kinematic), heading=False):
+
+        def cycle_pages(size):
+            return draw_cycle_diagrams(run.cycle, marked=marked, lang=lang, components=components, cycle=run.dense,
+                                       extremes=run.strokes, size=size, signed_elsewhere=_output_points(scene, kinematic), heading=False)
+
+        # the output's kinematic diagrams and their table first; the cycle pages after them, the one with the fewest
+        # panels under the table when the rest of its page holds it readably (each panel CYCLE_PANEL_MIN tall)
+        _kinematic_pages(doc, kinematic, lang)
+        pages = cycle_pages((DIAGRAM_PAGE[0], DIAGRAM_PAGE[1] - words_room))
+        rest = _rest_of_page(doc, "kinematic-end") if pages and not isinstance(kinematic, Exception) else None
+        under = None
+        if rest is not None:
+            height = rest - words_room - CYCLE_FLOW_MARGIN
+            fewest = min(range(len(pages)), key=lambda k: (len(pages[k][1].axes), k))
+            if (height - CYCLE_FIXED) / len(pages[fewest][1].axes) >= CYCLE_PANEL_MIN:
+                name = pages[fewest][0]
+                under = next((k, (n, fig)) for k, (n, fig) in enumerate(cycle_pages((DIAGRAM_PAGE[0], height))) if n == name)
+        order = ([under[1]] if under is not None else []) + [page for k, page in enumerate(pages) if under is None or k != under[0]]
+        for n, (page_name, fig) in enumerate(order):
             title, lines = fig.plans_heading
-            doc.heading(title, level=2, new_page=True)
+            doc.heading(title, level=2, new_page=not (n == 0 and under is not None))
             doc.body.append(f"#text(size: {SMALL_PT + 1}pt)[{literal(lines[0])}]\n")  # the scene's title, as written
             doc.lines(lines[1:], size=SMALL_PT + 1)
             doc.figure(f"diagram-{page_name}", figure_svg(fig, lang))
-        _kinematic_pages(doc, kinematic, lang)
     if forces:
         doc.section("forces")
         _forces_pages(doc, [here[k] for k in chosen or [sample.index]], lang, multi)
@@ -752,9 +767,53 @@ def _kinematic(scene, positions, count: int, precision, law=None, start: str = "
     if count < 8:  # a course project differentiates over 8 or more
         count = 12
     try:
-        return kinematic_diagrams(scene, count, law=law, start=start, precision=precision)
+        return kinematic_diagrams(scene, count, law=law, start=start, precision=precision, plans=False)
     except DiagramsError as exc:
         return exc
+
+
+def _plate_plans(kinematic, run, here: dict, drawn_accelerations, plate: dict) -> object:
+    """*kinematic* (from :func:`_kinematic`) with its "plans" column read off the plans the handout draws: each row's
+    position matched to the handout's position at the same time and driver position, its output's v_rel, a_rel
+    (ω, ε) the values the plate's plans give at the plate's scales and drafting precision (the comparison tables'
+    values, rounded as they are: :func:`plans.report.reading_step`); a only where that position's acceleration plan
+    is drawn (*drawn_accelerations*), NaN elsewhere and where a row has no position on the plate."""
+    import math
+
+    import numpy as np
+
+    from ..differentiation import with_plans
+    from ..report import reading_step
+
+    if isinstance(kinematic, Exception):
+        return kinematic
+    motion = run.motion
+    n = len(kinematic.motion.t)
+    v, a, v_step, a_step = (np.full(n, np.nan) for _ in range(4))
+    section, quantities = (("sliders", ("v_rel", "a_rel")) if kinematic.motion.kind == "slider" else ("links", ("omega", "epsilon")))
+    if motion is not None:
+        crank = kinematic.law is not None and kinematic.law.crank
+        duration = kinematic.motion.duration or 1.0
+        times = np.asarray(motion.t, dtype=float)
+        places = np.asarray(motion.positions, dtype=float)
+        for k in range(n):
+            t_k, x_k = float(kinematic.motion.t[k]), float(kinematic.positions[k])
+            for index, h in here.items():
+                dx = places[index] - x_k
+                if crank:
+                    dx = math.remainder(dx, 2 * math.pi)
+                if abs(times[index] - t_k) > 1e-9 * duration or abs(dx) > 1e-9 * max(1.0, abs(x_k)):
+                    continue
+                rows = {c.quantity: c for c in h.comparisons if c.section == section and c.name == kinematic.motion.name}
+                for q, values, steps in ((quantities[0], v, v_step), (quantities[1], a, a_step)):
+                    if q not in rows or (q == quantities[1] and index not in drawn_accelerations):
+                        continue
+                    values[k] = float(rows[q].graphical)
+                    step = reading_step(h.graphical, rows[q])
+                    steps[k] = step if step is not None else np.nan
+                break
+    return with_plans(kinematic, v, a, v_step=v_step, a_step=a_step, plan_scales=dict(plate),
+                      precision=run.precision)
 
 
 def _output_points(scene, kinematic) -> tuple:
@@ -769,10 +828,32 @@ def _output_points(scene, kinematic) -> tuple:
     return tuple(p for p in scene.report if p in scene.bodies[links[0]].points)
 
 
+#: a page of cycle diagrams set under the kinematic table keeps each panel at least this tall [mm]; what its figure
+#: takes beyond the panels (the positions' numbers above, the axis and the legend below) [mm]; and the room [mm] it
+#: leaves free at the page's foot (its words' height is reckoned, not measured)
+CYCLE_PANEL_MIN = 32.0
+CYCLE_FIXED = 40.0
+CYCLE_FLOW_MARGIN = 6.0
+
+
+def _rest_of_page(doc, name: str) -> float | None:
+    """The height [mm] left on the page under a mark *name* set now at the end of the flow (read from the laid-out
+    document, :meth:`Document.mark`)."""
+    from .typesetting import query_document
+
+    doc.mark(name)
+    marks = [m for m in query_document(doc.source(), doc.images, "<plans-mark>") if m["name"] == name]
+    if not marks:
+        return None
+    top, height = doc.page.margins[2], doc.page.text_height
+    return top + height - marks[-1]["y"]
+
+
 def _kinematic_pages(doc, kinematic, lang: str) -> None:
     """The pages of the output link's kinematic diagrams (*kinematic*, from :func:`_kinematic`): the data lines,
     each diagram under its title and scales at 100 % (a rate constant over the cycle said in a line), the legend,
-    the comparison table and its notes, set by Typst and flowing over pages; a mechanism without an output slider
+    the comparison table and its notes, set by Typst and flowing over pages (the table on the diagrams' page when it
+    fits there, and what follows it on its page when that fits); a mechanism without an output slider
     or rocker, or not solved at one of the positions, gets a page that says so."""
     from ..drawing import kinematic_diagrams as kd
 
