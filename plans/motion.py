@@ -1208,7 +1208,7 @@ def _duration(law: DriverLaw, phase: float, span: float, scene: Scene) -> float:
     """Time [s] over *span* of path (or phase) from *phase* (path from the scene's position) under the law."""
     if law.kind == "harmonic":
         return span / law.frequency
-    if law.kind == "constant":
+    if law.kind == "constant" or law.acceleration == 0:  # uniform with ε = 0 (a = 0) is the constant law
         return span / abs(law.rate0)
     x1 = law.x0 + law.sense * phase
     x2 = x1 + law.sense * span

@@ -236,3 +236,13 @@ def test_solver_rates_and_branches_arguments():
     A, B, D = np.asarray(got.points["A"].r), np.asarray(got.points["B"].r), 0.22 + 0j
     mirrored = A + (D - A) * np.conj((B - A) / (D - A))
     assert np.asarray(other.points["B"].r) == pytest.approx(np.where([True, False, True, False, True], mirrored, B), abs=1e-12)
+
+
+def test_uniform_law_with_no_angular_acceleration_is_the_constant_one():
+    """`law = "uniform"` on a scene with ε = 0 (the slider-crank) is constant ω: the stroke times sum to one turn
+    at 2000 rpm, 60/2000 s (it divided by ε = 0 before)."""
+    from plans.motion import strokes as cycle_strokes
+    from plans.scene import example_path, load
+
+    s = cycle_strokes(load(example_path("slider-crank")), law="uniform")
+    assert s.working_time + s.return_time == pytest.approx(60 / 2000, rel=1e-12)
