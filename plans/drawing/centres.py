@@ -166,23 +166,36 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
     inside is drawn where it is, every other one (and one at infinity) as an arrow just outside the
     room on the ray from its middle towards the centre, the arrows spread apart so that neither they
     nor their labels overlap.  Nothing here draws: the page finds its k_l from this.
-    With *limit* (width, height) [mm], the room grows to hold a centre just outside it only while the
-    drawing stays within *limit* (with what its edge arrows take): a page that draws at the plate's
-    k_l keeps it, and such a centre is an arrow at the edge like the far ones.
+    With *limit* (width, height) [mm], the drawing is that box around the ink's middle: the room shrinks
+    (down to the ink) to leave the box's edge band to the edge arrows, every arrow and label is kept in
+    the box (an arrow pulled back over the room where the band is narrower than it), and the room grows
+    to hold a centre just outside it only within the box: a page draws at the plate's k_l whenever the
+    mechanism's ink fits its box.
     """
     lo, hi = ink
     room = max(room_min, ROOM_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag))
-    lo, hi = lo - room * (1 + 1j), hi + room * (1 + 1j)
+    # with a limit, the drawing is the page's box around the ink's middle: the room shrinks to leave the box's
+    # edge band to the edge arrows and their labels (never inside the ink), so that the page keeps its k_l
+    if limit is not None:
+        middle = (lo + hi) / 2
+        half = complex(limit[0] / 2 - MARGIN_MM, limit[1] / 2 - MARGIN_MM)
+        allowed = (middle - half, middle + half)
+        band = complex(EDGE_GAP + EDGE_ARROW + 1.5, EDGE_GAP + EDGE_ARROW + 2.5 + text_size("P₁₂ 99 mm", LABEL_PT)[1])
+        most = (allowed[0] + band, allowed[1] - band)  # the largest room the box holds with its edge band
+        lo = complex(min(lo.real, max(lo.real - room, most[0].real)), min(lo.imag, max(lo.imag - room, most[0].imag)))
+        hi = complex(max(hi.real, min(hi.real + room, most[1].real)), max(hi.imag, min(hi.imag + room, most[1].imag)))
+    else:
+        allowed = most = None
+        lo, hi = lo - room * (1 + 1j), hi + room * (1 + 1j)
     # a centre no farther out than an edge arrow would reach is drawn where it is, and the room grows to hold it
     reach = EDGE_GAP + EDGE_ARROW + 4.0
-    # what the edge arrows and their labels take beyond the room, on each side, when a limit is kept
-    beyond = 2 * (LABEL_BAND + EDGE_GAP + EDGE_ARROW + 6.0 + MARGIN_MM)
     for centre in (c for c in result.centres if c.determined and c.point is not None):
         q = centre.point / k_l
         if lo.real - reach <= q.real <= hi.real + reach and lo.imag - reach <= q.imag <= hi.imag + reach:
             new_lo = complex(min(lo.real, q.real - 3.0), min(lo.imag, q.imag - 3.0))
             new_hi = complex(max(hi.real, q.real + 3.0), max(hi.imag, q.imag + 3.0))
-            if limit is not None and (new_hi.real - new_lo.real + beyond > limit[0] or new_hi.imag - new_lo.imag + beyond > limit[1]):
+            if allowed is not None and not (allowed[0].real <= new_lo.real and allowed[0].imag <= new_lo.imag
+                                            and new_hi.real <= allowed[1].real and new_hi.imag <= allowed[1].imag):
                 continue  # an arrow at the edge: the room stays within the page's
             lo, hi = new_lo, new_hi
     middle = (lo + hi) / 2
@@ -194,6 +207,9 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
     edges: list[EdgeArrow] = []
     boxes: list = []
     outer_lo, outer_hi = lo - LABEL_BAND * (1 + 1j), hi + LABEL_BAND * (1 + 1j)
+    if allowed is not None:  # the labels of the centres near the room's edge keep within the page's box
+        outer_lo = complex(max(outer_lo.real, min(lo.real, allowed[0].real)), max(outer_lo.imag, min(lo.imag, allowed[0].imag)))
+        outer_hi = complex(min(outer_hi.real, max(hi.real, allowed[1].real)), min(outer_hi.imag, max(hi.imag, allowed[1].imag)))
     for centre in result.centres:
         if not centre.determined:
             continue
@@ -205,16 +221,29 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
         base = middle + span[1] * u0 + EDGE_GAP * u0
         wide = text_size(edge_text(centre, 9999.0), LABEL_PT)[0]
         spacing = max(EDGE_SPACING, abs(u0.imag) * wide + 2.0)
+        best = None
         for step in range(48):
             q = base + (1j * u0) * spacing * ((step + 1) // 2) * (1 if step % 2 else -1)
             u = unit(centre.point / k_l - q) if centre.point is not None else u0  # the arrow points at the centre
             tip = q + EDGE_ARROW * u
+            if allowed is not None:  # the arrow within the page's box: pulled back over the room where the box is narrow
+                shift = complex(*(max(lo_a - min(a, b), 0.0) + min(hi_a - max(a, b), 0.0)
+                                  for a, b, lo_a, hi_a in ((q.real, tip.real, allowed[0].real, allowed[1].real),
+                                                           (q.imag, tip.imag, allowed[0].imag, allowed[1].imag))))
+                q, tip = q + shift, tip + shift
             text = edge_text(centre, abs(centre.point / k_l - tip) if centre.point is not None else None)
             at, w, h = _label_box(q, tip, u, text)
+            if allowed is not None:  # the label slides along its arrow's edge into the page's box
+                at = complex(min(max(at.real, allowed[0].real + w / 2), allowed[1].real - w / 2),
+                             min(max(at.imag, allowed[0].imag + h / 2), allowed[1].imag - h / 2))
             shape = box(at.real - w / 2 - 0.8, at.imag - h / 2 - 0.8, at.real + w / 2 + 0.8, at.imag + h / 2 + 0.8)
             arrow = LineString([(q.real, q.imag), (tip.real, tip.imag)]).buffer(1.0)
-            if all(abs(q - e.tail) >= EDGE_SPACING for e in edges) and not any(shape.intersects(b) or arrow.intersects(b) for b in boxes):
+            hits = sum(1 for e in edges if abs(q - e.tail) < EDGE_SPACING) + sum(1 for b in boxes if shape.intersects(b) or arrow.intersects(b))
+            if best is None or hits < best[0]:
+                best = (hits, q, tip, text, at, w, h, shape, arrow)
+            if hits == 0:
                 break
+        _, q, tip, text, at, w, h, shape, arrow = best
         boxes += [shape, arrow]
         edges.append(EdgeArrow(centre.label, q, tip, text, at))
         for z in (q, tip, complex(at.real - w / 2, at.imag - h / 2), complex(at.real + w / 2, at.imag + h / 2)):
