@@ -876,8 +876,9 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
     """The instant centres' pages: first the method (its title, Kennedy's theorem and the circle diagram, the same
     for every position, drawn once), then a page for every position of *positions*: the mechanism with its centres
     at one k_l for all the pages (the plate's, or the coarsest any of them needs to hold its drawing above its
-    table), stated on each page and in their title block; the table and the rules.  Returns that k_l (None: no
-    page has a drawing)."""
+    table), stated on each page and in their title block; the table (ω and v as read off the drawing at that k_l,
+    to the scene's drafting precision: :func:`plans.centres.instant_centres`) and the rules.  Returns that k_l
+    (None: no page has a drawing)."""
     from ..centres import instant_centres
     from ..compare import compare_centres
     from ..drawing.centres import CentresSizer
@@ -921,6 +922,16 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         if over <= 1.0:
             break
         k = round_up(k * over * 1.0001)
+    # the table's values as a student reads them off the drawing at its k_l, to the handout's drafting precision
+    for n, page in enumerate(pages):
+        if len(page) > 2:
+            h, result = page[0], page[1]
+            try:
+                read = instant_centres(h.scene, h.analytic.structure, k_l=k, precision=h.scene.scales.precision)
+            except PlansError:
+                continue  # a reading that leaves a link undetermined (two centres one point on the drawing): exact values
+            comparisons = compare_centres(h.analytic, read)
+            pages[n] = (h, result, comparisons, centres_page_table(read, comparisons, lang), page[4])
     _centres_method(doc, diagram, k, lang, drawn[0][1] if drawn else None)
     for page in pages:
         _centres_page(doc, page, k, blocks, lang, multi)
