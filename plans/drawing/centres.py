@@ -76,6 +76,9 @@ class _Drawn:
     scales: dict
     positions: dict
     poses: dict
+    travel: dict | None = None  # the lines' travel over the cycle (slots, guides as on the plate's other drawings)
+    cycle_poses: tuple | None = None  # the cycle's poses: every support turned as on the plate's other drawings
+    fixed_supports: bool = True  # ... on every page, even where a crank lies over it
 
 
 def _clip(p: complex, u: complex, lo: complex, hi: complex) -> tuple[float, float] | None:
@@ -434,13 +437,18 @@ def _shapes(artists) -> list:
     return shapes
 
 
-def _mechanism(ax, result, k_l: float, lang: str):
-    """The mechanism at *k_l* drawn into *ax*: (its artists, its ink's (lower-left, upper-right) [mm])."""
+def _mechanism(ax, result, k_l: float, lang: str, cycle=None):
+    """The mechanism at *k_l* drawn into *ax*: (its artists, its ink's (lower-left, upper-right) [mm]).
+
+    *cycle*: ``(travel, cycle_poses)`` of the plate's drawings (:func:`plans.positions.cycle_poses`,
+    :func:`plans.sweep.line_travel`): the guides over their travel and every support turned one way
+    for the whole cycle, as on the plan of positions."""
     # the centres' marks are there before the mechanism's labels are placed: a link number or a point's
     # name keeps clear of them (the six-bar's "2" touched P₂₆)
     marks = [Point(c.point.real / k_l, c.point.imag / k_l).buffer((2.2 if c.found_by.startswith("revolute") else 1.0) + 0.4)
              for c in result.centres if c.determined and c.point is not None]
-    drawn = _Drawn(result.scene, {"k_l": k_l}, result.positions, result.poses)
+    travel, poses = cycle if cycle is not None else (None, None)
+    drawn = _Drawn(result.scene, {"k_l": k_l}, result.positions, result.poses, travel, poses)
     # no heading or scale under the mechanism: the drawing states k_l in its frame (draw_centres_into)
     artists = sketch_on(ax, "mech", lambda sketch: (sketch.obstacles.extend(marks), MechanismDrawing(sketch, drawn, lang=lang, caption=False).draw()))
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
@@ -458,7 +466,7 @@ class CentresSizer:
     the price of two drawings of the mechanism (the six-position handout drew its centres page 114 times).
     """
 
-    def __init__(self, result, lang: str = "en", room_min: float = ROOM_MIN, k0: float | None = None):
+    def __init__(self, result, lang: str = "en", room_min: float = ROOM_MIN, k0: float | None = None, cycle=None):
         from .svg import new_figure
 
         self.result, self.room_min = result, room_min
@@ -469,7 +477,7 @@ class CentresSizer:
         over = []
         for k in (k0, k0 / 2):
             ax = new_figure().add_axes([0, 0, 1, 1])
-            _, (lo, hi) = _mechanism(ax, result, k, lang)
+            _, (lo, hi) = _mechanism(ax, result, k, lang, cycle)
             over.append((self.lo_m / k - lo, hi - self.hi_m / k))  # (left, bottom), (right, top) beyond the points [mm]
         # o(k) = a + b/k per side, from o(k0) and o(k0/2)
         self.model = []
@@ -493,7 +501,7 @@ class CentresSizer:
 
 
 def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | None = None, legend: bool = True, diagram: bool = True,
-                      room_min: float = ROOM_MIN, limit: tuple[float, float] | None = None):
+                      room_min: float = ROOM_MIN, limit: tuple[float, float] | None = None, cycle=None):
     """The mechanism at k_l with every instant centre, and the circle diagram beside it, drawn into *ax*.
 
     One data unit is one millimetre of paper.  *title* (plain text), when
@@ -504,13 +512,14 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     Kennedy lines and labels (far centres' arrows go outside it): see
     :func:`centres_frame`, which gives the drawing's size without drawing it
     (with *diagram*, *legend* and *title* off, and every centre determined).
-    The axes' limits are set to the frame plus the margin.
+    The axes' limits are set to the frame plus the margin.  *cycle*: ``(travel, cycle_poses)``, the guides'
+    travel and the cycle's poses of the plate's other drawings (see :func:`_mechanism`).
 
     Returns
     -------
     (width, height) [mm] of the drawing.
     """
-    artists, ink = _mechanism(ax, result, k_l, lang)
+    artists, ink = _mechanism(ax, result, k_l, lang, cycle)
     frame = centres_frame(result, k_l, ink, room_min, limit)
     lo, hi = frame.lo, frame.hi
     (x0, y0), (x1, y1) = (frame.outer_lo.real, frame.outer_lo.imag), (frame.outer_hi.real, frame.outer_hi.imag)

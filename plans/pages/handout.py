@@ -903,7 +903,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         table = centres_page_table(result, comparisons, lang)
         box = (TEXT_WIDTH, min(CENTRES_DRAWING_MAX, TEXT_HEIGHT - CENTRES_PAGE_TEXT - CENTRES_ROW * len(table)))
         # sizes from geometry (two drawings of the mechanism alone, plans.drawing.centres.CentresSizer)
-        sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
+        sizer = CentresSizer(result, lang, room_min=ROOM_MIN, cycle=_centres_cycle(h))
         for _ in range(24):
             width, height = sizer.size(k, box)
             if width <= box[0] + 0.5 and height <= box[1] + 0.5:
@@ -916,7 +916,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         over = 1.0
         for h, result, _, _, box in drawn:
             if h.index not in blocks or blocks[h.index][0] != k:
-                blocks[h.index] = (k, centres_svg(result, k, lang, room_min=ROOM_MIN, limit=box))
+                blocks[h.index] = (k, centres_svg(result, k, lang, room_min=ROOM_MIN, limit=box, cycle=_centres_cycle(h)))
             block = blocks[h.index][1]
             over = max(over, block.width / (box[0] + 0.5), block.height / (box[1] + 0.5))
         if over <= 1.0:
@@ -936,6 +936,12 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
     for page in pages:
         _centres_page(doc, page, k, blocks, lang, multi)
     return k if drawn else None
+
+
+def _centres_cycle(h):
+    """(travel, cycle poses) of position *h*'s drawings: the centres drawing's guides and supports as the plate's."""
+    g = h.graphical
+    return getattr(g, "travel", None), getattr(g, "cycle_poses", None)
 
 
 def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
