@@ -208,7 +208,10 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
 
     near: list[str] = []
     edges: list[EdgeArrow] = []
-    boxes: list = []
+    # the marks of the centres drawn where they are: no edge arrow or its label over one (the quick-return's P₄₆ dot
+    # covered "P₃₅ 2178 mm")
+    boxes: list = [Point(c.point.real / k_l, c.point.imag / k_l).buffer(2.6) for c in result.centres
+                   if c.determined and c.point is not None and inside(c.point / k_l)]
     outer_lo, outer_hi = lo - LABEL_BAND * (1 + 1j), hi + LABEL_BAND * (1 + 1j)
     if allowed is not None:  # the labels of the centres near the room's edge keep within the page's box
         outer_lo = complex(max(outer_lo.real, min(lo.real, allowed[0].real)), max(outer_lo.imag, min(lo.imag, allowed[0].imag)))
@@ -266,6 +269,7 @@ class _CentresDrawing:
         self.middle = (self.lo + self.hi) / 2
         self.soft: list = []  # the Kennedy lines: a label may cross one, at a cost
         self.words: list = []  # the boxes of the mechanism's names and numbers and of the labels placed so far
+        self.marks: list = []  # the centres' marks and the joints [mm]: a label is nearer its own than any of these
 
     def mm(self, z: complex) -> complex:
         return z / self.k_l
@@ -287,6 +291,9 @@ class _CentresDrawing:
             shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2).buffer(LABEL_CLEAR_MM, join_style=2)
             hits = 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
             hits += 1000 * sum(1 for o in self.words if shape.intersects(o))  # never over another label or name
+            # read as its own: nearer its own mark than any other centre's (or a joint's)
+            own = abs(c - at)
+            hits += 200 * sum(1 for q in self.marks if abs(q - at) > 1e-6 and abs(c - q) < own)
             f = self.frame
             if not (f.outer_lo.real <= c.real - w / 2 and c.real + w / 2 <= f.outer_hi.real and f.outer_lo.imag <= c.imag - h / 2 and c.imag + h / 2 <= f.outer_hi.imag):
                 hits += 100  # within the drawing's frame, whose size the page found beforehand
@@ -351,19 +358,25 @@ class _CentresDrawing:
             self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}")
             w, h = text_size(e.text, LABEL_PT)
             self.words.append(box(e.at.real - w / 2, e.at.imag - h / 2, e.at.real + w / 2, e.at.imag + h / 2))
-        for centre in self.r.centres:
-            if not centre.determined:
-                continue  # named in the caption
-            text = centre_text(centre.label)
-            if centre.label in self.frame.near:
-                q = self.mm(centre.point)
-                if centre.found_by.startswith("revolute"):
-                    self.s.circle(q, 2.2, fc="none", ec=CENTRE_COLOUR, lw=0.9, gid=f"mark-{centre.label}", zorder=5.0)
-                    clear = 2.4
-                else:
-                    self.s.circle(q, 1.0, fc=CENTRE_COLOUR, ec=CENTRE_COLOUR, lw=0.5, gid=f"mark-{centre.label}", zorder=5.0)
-                    clear = 1.2
-                self.label(q, text, f"label-{centre.label}", q - self.middle, clear)
+        # every mark first (each an obstacle), then the labels: a label keeps off every mark, not only those before it
+        near = [c for c in self.r.centres if c.determined and c.label in self.frame.near]
+        self.marks += [self.mm(z) for z in self.r.positions.values()]
+        placed = []
+        for centre in near:
+            q = self.mm(centre.point)
+            if centre.found_by.startswith("revolute"):
+                self.s.circle(q, 2.2, fc="none", ec=CENTRE_COLOUR, lw=0.9, gid=f"mark-{centre.label}", zorder=5.0)
+                clear = 2.4
+            else:
+                self.s.circle(q, 1.0, fc=CENTRE_COLOUR, ec=CENTRE_COLOUR, lw=0.5, gid=f"mark-{centre.label}", zorder=5.0)
+                clear = 1.2
+            self.marks.append(q)
+            placed.append((centre, q, clear))
+        # the most crowded first: a centre with marks close around it takes its place before its neighbours
+        def crowd(item):
+            return -sum(1 for other in self.marks if abs(other - item[1]) < 8.0)
+        for centre, q, clear in sorted(placed, key=crowd):
+            self.label(q, centre_text(centre.label), f"label-{centre.label}", q - self.middle, clear)
 
 
 def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> None:
