@@ -270,6 +270,7 @@ class _CentresDrawing:
         self.soft: list = []  # the Kennedy lines: a label may cross one, at a cost
         self.words: list = []  # the boxes of the mechanism's names and numbers and of the labels placed so far
         self.marks: list = []  # the centres' marks and the joints [mm]: a label is nearer its own than any of these
+        self.bodies: list = []  # the mechanism's blocks, supports and hatching: no label under one
 
     def mm(self, z: complex) -> complex:
         return z / self.k_l
@@ -291,6 +292,7 @@ class _CentresDrawing:
             shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2).buffer(LABEL_CLEAR_MM, join_style=2)
             hits = 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
             hits += 1000 * sum(1 for o in self.words if shape.intersects(o))  # never over another label or name
+            hits += 300 * sum(1 for o in self.bodies if shape.intersects(o))  # nor under a block, a support, its hatching
             # read as its own: nearer its own mark than any other centre's (or a joint's)
             own = abs(c - at)
             hits += 200 * sum(1 for q in self.marks if abs(q - at) > 1e-6 and abs(c - q) < own)
@@ -420,8 +422,17 @@ def _text_shapes(artists) -> list:
     return _shapes([a for a in artists if isinstance(a, Text)])
 
 
+def _body_shapes(artists) -> list:
+    """The mechanism's blocks and supports (polygons) and its ground's hatching among *artists* [mm]."""
+    from matplotlib.collections import LineCollection
+    from matplotlib.patches import Polygon
+
+    return _shapes([a for a in artists if isinstance(a, (Polygon, LineCollection))])
+
+
 def _shapes(artists) -> list:
     """Obstacles for the labels from the mechanism's artists: lines, circles, polygons, text boxes [mm]."""
+    from matplotlib.collections import LineCollection
     from matplotlib.lines import Line2D
     from matplotlib.patches import Circle, Polygon
     from matplotlib.text import Text
@@ -441,6 +452,10 @@ def _shapes(artists) -> list:
             xy = artist.get_xy()
             if len(xy) >= 3:
                 shapes.append(ShapelyPolygon(xy).buffer(0.2))
+        elif isinstance(artist, LineCollection):  # the ground's hatching
+            for segment in artist.get_segments():
+                if len(segment) >= 2:
+                    shapes.append(LineString([tuple(xy) for xy in segment]).buffer(0.3))
         elif isinstance(artist, Text) and artist.get_text():
             w, h = text_size(artist.get_text(), artist.get_fontsize())
             x, y = artist.get_position()
@@ -542,6 +557,7 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     s.text(complex(lo.real, lo.imag), scale_caption("k_l", fmt_number(k_l), "m/mm", lang), size=CAPTION_PT, ha="left", va="bottom", gid="scale", math=True)
     drawing = _CentresDrawing(s, result, frame, lang)
     drawing.words += _text_shapes(artists)
+    drawing.bodies += _body_shapes(artists)
     drawing.kennedy_lines()
     drawing.centres()
     if diagram:
