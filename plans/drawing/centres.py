@@ -245,6 +245,8 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
             shape = box(at.real - w / 2 - 0.8, at.imag - h / 2 - 0.8, at.real + w / 2 + 0.8, at.imag + h / 2 + 0.8)
             arrow = LineString([(q.real, q.imag), (tip.real, tip.imag)]).buffer(1.0)
             hits = sum(1 for e in edges if abs(q - e.tail) < EDGE_SPACING) + sum(1 for b in boxes if shape.intersects(b) or arrow.intersects(b))
+            if allowed is not None:  # a label slid over its own arrow
+                hits += int(shape.intersects(LineString([(q.real, q.imag), (tip.real, tip.imag)])))
             if best is None or hits < best[0]:
                 best = (hits, q, tip, text, at, w, h, shape, arrow)
             if hits == 0:
