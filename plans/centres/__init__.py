@@ -30,9 +30,9 @@ from ..scene import Scene
 from ..structure import Structure, find_structure
 from .kennedy import Centre, CentreError, body_numbers, find_centres
 from .pose import Pose, place_bodies, point_at
-from .velocities import Motion, body_motions, point_velocities
+from .velocities import Motion, Reading, body_motions, point_velocities
 
-__all__ = ["instant_centres", "InstantCentres", "Centre", "CentreError", "Motion", "body_numbers"]
+__all__ = ["instant_centres", "InstantCentres", "Centre", "CentreError", "Motion", "Reading", "body_numbers"]
 
 
 @dataclass(frozen=True)
@@ -85,7 +85,8 @@ def _size(positions: dict[str, complex]) -> float:
     return size if size > 0 else 1.0
 
 
-def instant_centres(scene: Scene, structure: Structure | None = None) -> InstantCentres:
+def instant_centres(scene: Scene, structure: Structure | None = None, *, k_l: float | None = None,
+                    precision: float | None = None) -> InstantCentres:
     """Place the bodies, find every instant centre, and the velocities from them.
 
     Parameters
@@ -93,6 +94,12 @@ def instant_centres(scene: Scene, structure: Structure | None = None) -> Instant
     scene : plans.scene.Scene
         At its own driver position (``scene.at(position)`` for another).
     structure : plans.structure.Structure, optional
+    k_l, precision : float, optional
+        The drawing's scale [m/mm] and the drafting precision [mm]: with both, ω and v are what a student
+        reads off the drawing — every length the rules use (P_1kP_jk, P_1jP_jk, P_1jM) measured in mm,
+        rounded to *precision*, times k_l (:class:`plans.centres.velocities.Reading`); exact when either is
+        None (``plans solve``, ``plans centres``; a handout asked for exact readings), as the graphical
+        plans are exact without a precision.
 
     Raises
     ------
@@ -108,7 +115,8 @@ def instant_centres(scene: Scene, structure: Structure | None = None) -> Instant
     positions = {name: point_at(poses[scene.home_of(name)], scene.bodies[scene.home_of(name)].points[name]) for name in scene.point_names}
     size = _size(positions)
     centres = find_centres(scene, poses)
-    motions = body_motions(scene, poses, centres, size)
+    read = Reading(k_l, precision) if k_l is not None and precision is not None else None
+    motions = body_motions(scene, poses, centres, size, read)
     return InstantCentres(
         scene=scene,
         numbers=body_numbers(scene),
@@ -118,5 +126,5 @@ def instant_centres(scene: Scene, structure: Structure | None = None) -> Instant
         size=size,
         motions=motions,
         links={name: motions[name].omega for name in scene.links},
-        points=point_velocities(scene, poses, motions),
+        points=point_velocities(scene, poses, motions, read),
     )

@@ -19,6 +19,11 @@ centre P_jk, a point of both bodies with one velocity:
 
 A point M of body j then moves with ``v_M = ω_j × (M − P_1j)`` (or the
 translation's velocity).  Units SI, ω counter-clockwise positive.
+
+Readings: with a :class:`Reading` (the drawing's k_l and the drafting
+precision), every length the rules use (P_1kP_jk, P_1jP_jk, P_1jM) is taken
+as a student measures it on the drawing — its millimetres rounded to the
+precision, times k_l — and its direction as it is; without one, exactly.
 """
 
 from __future__ import annotations
@@ -29,7 +34,26 @@ from ..scene import FRAME, Crank, Scene
 from .kennedy import JOIN_TOL, Centre, CentreError
 from .pose import Pose, point_at
 
-__all__ = ["Motion", "body_motions", "point_velocities"]
+__all__ = ["Motion", "Reading", "body_motions", "point_velocities"]
+
+
+@dataclass(frozen=True)
+class Reading:
+    """Lengths as read off the centres drawing: at *k_l* [m/mm], each rounded to *precision* [mm]."""
+
+    k_l: float
+    precision: float
+
+    def __call__(self, arm: complex) -> complex:
+        """*arm* [m] with its length as measured: round(|arm|/k_l to precision)·k_l, its direction kept."""
+        length = abs(arm)
+        if length == 0.0:
+            return arm
+        return arm * (round(length / self.k_l / self.precision) * self.precision * self.k_l / length)
+
+
+def _exact(arm: complex) -> complex:
+    return arm
 
 
 @dataclass(frozen=True)
@@ -40,22 +64,28 @@ class Motion:
     about: complex
     v0: complex = 0j
 
-    def velocity(self, z: complex) -> complex:
-        """The velocity [m/s] of the body's point at z [m]."""
-        return self.v0 + 1j * self.omega * (z - self.about)
+    def velocity(self, z: complex, read=_exact) -> complex:
+        """The velocity [m/s] of the body's point at z [m] (*read*: the arm z − about as measured, :class:`Reading`)."""
+        if self.omega == 0.0:
+            return self.v0
+        return self.v0 + 1j * self.omega * read(z - self.about)
 
 
-def _through(known: Motion, p1j: Centre, pjk: Centre, size: float) -> Motion | None:
-    """Body j's motion from body k's through P_jk and P_1j; None when these centres do not determine it."""
+def _through(known: Motion, p1j: Centre, pjk: Centre, size: float, read=_exact) -> Motion | None:
+    """Body j's motion from body k's through P_jk and P_1j; None when these centres do not determine it (*read*: the
+    lengths as measured, :class:`Reading`)."""
     if not (p1j.determined and pjk.determined):
         return None
     if pjk.point is not None:
-        vk = known.velocity(pjk.point)
+        vk = known.velocity(pjk.point, read)
         if p1j.point is None:
             return Motion(0.0, 0j, vk)
         arm = pjk.point - p1j.point
         if abs(arm) <= JOIN_TOL * size:
             return None
+        arm = read(arm)
+        if arm == 0:
+            return None  # P_jk and P_1j one point on the drawing
         return Motion((vk / (1j * arm)).real, p1j.point)
     if p1j.point is not None:
         return Motion(known.omega, p1j.point)
@@ -69,13 +99,15 @@ def _through(known: Motion, p1j: Centre, pjk: Centre, size: float) -> Motion | N
     return Motion(0.0, 0j, known.v0 + t * across_jk)
 
 
-def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], size: float) -> dict[str, Motion]:
+def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], size: float, read=None) -> dict[str, Motion]:
     """The motion of every body (the frame's is zero), found from the driver through the centres.
 
     Parameters
     ----------
     size : float
         The mechanism's size [m]; centres closer than ``JOIN_TOL·size`` count as one.
+    read : Reading, optional
+        The lengths P_1kP_jk, P_1jP_jk as measured on the drawing; exact without.
 
     Raises
     ------
@@ -100,10 +132,12 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
         for j in left:
             p1j = by_pair[(FRAME, j)]
             found = None
-            for k, known in motions.items():
+            # a body that shares a centre at infinity with j first (ω_j = ω_k, nothing measured), then the driver (the
+            # rule the page states: ω_j from the driver's), then the others in the order they were found
+            for k, known in sorted(motions.items(), key=lambda item: item[0] == FRAME or by_pair[(j, item[0])].point is not None):
                 if k == FRAME:
                     continue
-                found = _through(known, p1j, by_pair[(j, k)], size)
+                found = _through(known, p1j, by_pair[(j, k)], size, read or _exact)
                 if found is not None:
                     break
             if found is not None:
@@ -128,10 +162,10 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
     return {name: motions[name] for name in scene.bodies}
 
 
-def point_velocities(scene: Scene, poses: dict[str, Pose], motions: dict[str, Motion]) -> dict[str, complex]:
-    """v [m/s] of every named point, from the motion of the body it belongs to."""
+def point_velocities(scene: Scene, poses: dict[str, Pose], motions: dict[str, Motion], read=None) -> dict[str, complex]:
+    """v [m/s] of every named point, from the motion of the body it belongs to (*read*: P_1jM as measured, :class:`Reading`)."""
     out = {}
     for name in scene.point_names:
         home = scene.home_of(name)
-        out[name] = motions[home].velocity(point_at(poses[home], scene.bodies[home].points[name]))
+        out[name] = motions[home].velocity(point_at(poses[home], scene.bodies[home].points[name]), read or _exact)
     return out

@@ -76,6 +76,9 @@ class _Drawn:
     scales: dict
     positions: dict
     poses: dict
+    travel: dict | None = None  # the lines' travel over the cycle (slots, guides as on the plate's other drawings)
+    cycle_poses: tuple | None = None  # the cycle's poses: every support turned as on the plate's other drawings
+    fixed_supports: bool = True  # ... on every page, even where a crank lies over it
 
 
 def _clip(p: complex, u: complex, lo: complex, hi: complex) -> tuple[float, float] | None:
@@ -166,23 +169,36 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
     inside is drawn where it is, every other one (and one at infinity) as an arrow just outside the
     room on the ray from its middle towards the centre, the arrows spread apart so that neither they
     nor their labels overlap.  Nothing here draws: the page finds its k_l from this.
-    With *limit* (width, height) [mm], the room grows to hold a centre just outside it only while the
-    drawing stays within *limit* (with what its edge arrows take): a page that draws at the plate's
-    k_l keeps it, and such a centre is an arrow at the edge like the far ones.
+    With *limit* (width, height) [mm], the drawing is that box around the ink's middle: the room shrinks
+    (down to the ink) to leave the box's edge band to the edge arrows, every arrow and label is kept in
+    the box (an arrow pulled back over the room where the band is narrower than it), and the room grows
+    to hold a centre just outside it only within the box: a page draws at the plate's k_l whenever the
+    mechanism's ink fits its box.
     """
     lo, hi = ink
     room = max(room_min, ROOM_FRACTION * max(hi.real - lo.real, hi.imag - lo.imag))
-    lo, hi = lo - room * (1 + 1j), hi + room * (1 + 1j)
+    # with a limit, the drawing is the page's box around the ink's middle: the room shrinks to leave the box's
+    # edge band to the edge arrows and their labels (never inside the ink), so that the page keeps its k_l
+    if limit is not None:
+        middle = (lo + hi) / 2
+        half = complex(limit[0] / 2 - MARGIN_MM, limit[1] / 2 - MARGIN_MM)
+        allowed = (middle - half, middle + half)
+        band = complex(EDGE_GAP + EDGE_ARROW + 1.5, EDGE_GAP + EDGE_ARROW + 2.5 + text_size("P₁₂ 99 mm", LABEL_PT)[1])
+        most = (allowed[0] + band, allowed[1] - band)  # the largest room the box holds with its edge band
+        lo = complex(min(lo.real, max(lo.real - room, most[0].real)), min(lo.imag, max(lo.imag - room, most[0].imag)))
+        hi = complex(max(hi.real, min(hi.real + room, most[1].real)), max(hi.imag, min(hi.imag + room, most[1].imag)))
+    else:
+        allowed = most = None
+        lo, hi = lo - room * (1 + 1j), hi + room * (1 + 1j)
     # a centre no farther out than an edge arrow would reach is drawn where it is, and the room grows to hold it
     reach = EDGE_GAP + EDGE_ARROW + 4.0
-    # what the edge arrows and their labels take beyond the room, on each side, when a limit is kept
-    beyond = 2 * (LABEL_BAND + EDGE_GAP + EDGE_ARROW + 6.0 + MARGIN_MM)
     for centre in (c for c in result.centres if c.determined and c.point is not None):
         q = centre.point / k_l
         if lo.real - reach <= q.real <= hi.real + reach and lo.imag - reach <= q.imag <= hi.imag + reach:
             new_lo = complex(min(lo.real, q.real - 3.0), min(lo.imag, q.imag - 3.0))
             new_hi = complex(max(hi.real, q.real + 3.0), max(hi.imag, q.imag + 3.0))
-            if limit is not None and (new_hi.real - new_lo.real + beyond > limit[0] or new_hi.imag - new_lo.imag + beyond > limit[1]):
+            if allowed is not None and not (allowed[0].real <= new_lo.real and allowed[0].imag <= new_lo.imag
+                                            and new_hi.real <= allowed[1].real and new_hi.imag <= allowed[1].imag):
                 continue  # an arrow at the edge: the room stays within the page's
             lo, hi = new_lo, new_hi
     middle = (lo + hi) / 2
@@ -192,8 +208,14 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
 
     near: list[str] = []
     edges: list[EdgeArrow] = []
-    boxes: list = []
+    # the marks of the centres drawn where they are: no edge arrow or its label over one (the quick-return's P₄₆ dot
+    # covered "P₃₅ 2178 mm")
+    boxes: list = [Point(c.point.real / k_l, c.point.imag / k_l).buffer(2.6) for c in result.centres
+                   if c.determined and c.point is not None and inside(c.point / k_l)]
     outer_lo, outer_hi = lo - LABEL_BAND * (1 + 1j), hi + LABEL_BAND * (1 + 1j)
+    if allowed is not None:  # the labels of the centres near the room's edge keep within the page's box
+        outer_lo = complex(max(outer_lo.real, min(lo.real, allowed[0].real)), max(outer_lo.imag, min(lo.imag, allowed[0].imag)))
+        outer_hi = complex(min(outer_hi.real, max(hi.real, allowed[1].real)), min(outer_hi.imag, max(hi.imag, allowed[1].imag)))
     for centre in result.centres:
         if not centre.determined:
             continue
@@ -205,16 +227,31 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
         base = middle + span[1] * u0 + EDGE_GAP * u0
         wide = text_size(edge_text(centre, 9999.0), LABEL_PT)[0]
         spacing = max(EDGE_SPACING, abs(u0.imag) * wide + 2.0)
+        best = None
         for step in range(48):
             q = base + (1j * u0) * spacing * ((step + 1) // 2) * (1 if step % 2 else -1)
             u = unit(centre.point / k_l - q) if centre.point is not None else u0  # the arrow points at the centre
             tip = q + EDGE_ARROW * u
+            if allowed is not None:  # the arrow within the page's box: pulled back over the room where the box is narrow
+                shift = complex(*(max(lo_a - min(a, b), 0.0) + min(hi_a - max(a, b), 0.0)
+                                  for a, b, lo_a, hi_a in ((q.real, tip.real, allowed[0].real, allowed[1].real),
+                                                           (q.imag, tip.imag, allowed[0].imag, allowed[1].imag))))
+                q, tip = q + shift, tip + shift
             text = edge_text(centre, abs(centre.point / k_l - tip) if centre.point is not None else None)
             at, w, h = _label_box(q, tip, u, text)
+            if allowed is not None:  # the label slides along its arrow's edge into the page's box
+                at = complex(min(max(at.real, allowed[0].real + w / 2), allowed[1].real - w / 2),
+                             min(max(at.imag, allowed[0].imag + h / 2), allowed[1].imag - h / 2))
             shape = box(at.real - w / 2 - 0.8, at.imag - h / 2 - 0.8, at.real + w / 2 + 0.8, at.imag + h / 2 + 0.8)
             arrow = LineString([(q.real, q.imag), (tip.real, tip.imag)]).buffer(1.0)
-            if all(abs(q - e.tail) >= EDGE_SPACING for e in edges) and not any(shape.intersects(b) or arrow.intersects(b) for b in boxes):
+            hits = sum(1 for e in edges if abs(q - e.tail) < EDGE_SPACING) + sum(1 for b in boxes if shape.intersects(b) or arrow.intersects(b))
+            if allowed is not None:  # a label slid over its own arrow
+                hits += int(shape.intersects(LineString([(q.real, q.imag), (tip.real, tip.imag)])))
+            if best is None or hits < best[0]:
+                best = (hits, q, tip, text, at, w, h, shape, arrow)
+            if hits == 0:
                 break
+        _, q, tip, text, at, w, h, shape, arrow = best
         boxes += [shape, arrow]
         edges.append(EdgeArrow(centre.label, q, tip, text, at))
         for z in (q, tip, complex(at.real - w / 2, at.imag - h / 2), complex(at.real + w / 2, at.imag + h / 2)):
@@ -234,6 +271,8 @@ class _CentresDrawing:
         self.middle = (self.lo + self.hi) / 2
         self.soft: list = []  # the Kennedy lines: a label may cross one, at a cost
         self.words: list = []  # the boxes of the mechanism's names and numbers and of the labels placed so far
+        self.marks: list = []  # the centres' marks and the joints [mm]: a label is nearer its own than any of these
+        self.bodies: list = []  # the mechanism's blocks, supports and hatching: no label under one
 
     def mm(self, z: complex) -> complex:
         return z / self.k_l
@@ -255,6 +294,10 @@ class _CentresDrawing:
             shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2).buffer(LABEL_CLEAR_MM, join_style=2)
             hits = 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
             hits += 1000 * sum(1 for o in self.words if shape.intersects(o))  # never over another label or name
+            hits += 300 * sum(1 for o in self.bodies if shape.intersects(o))  # nor under a block, a support, its hatching
+            # read as its own: nearer its own mark than any other centre's (or a joint's)
+            own = abs(c - at)
+            hits += 200 * sum(1 for q in self.marks if abs(q - at) > 1e-6 and abs(c - q) < own)
             f = self.frame
             if not (f.outer_lo.real <= c.real - w / 2 and c.real + w / 2 <= f.outer_hi.real and f.outer_lo.imag <= c.imag - h / 2 and c.imag + h / 2 <= f.outer_hi.imag):
                 hits += 100  # within the drawing's frame, whose size the page found beforehand
@@ -319,19 +362,25 @@ class _CentresDrawing:
             self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}")
             w, h = text_size(e.text, LABEL_PT)
             self.words.append(box(e.at.real - w / 2, e.at.imag - h / 2, e.at.real + w / 2, e.at.imag + h / 2))
-        for centre in self.r.centres:
-            if not centre.determined:
-                continue  # named in the caption
-            text = centre_text(centre.label)
-            if centre.label in self.frame.near:
-                q = self.mm(centre.point)
-                if centre.found_by.startswith("revolute"):
-                    self.s.circle(q, 2.2, fc="none", ec=CENTRE_COLOUR, lw=0.9, gid=f"mark-{centre.label}", zorder=5.0)
-                    clear = 2.4
-                else:
-                    self.s.circle(q, 1.0, fc=CENTRE_COLOUR, ec=CENTRE_COLOUR, lw=0.5, gid=f"mark-{centre.label}", zorder=5.0)
-                    clear = 1.2
-                self.label(q, text, f"label-{centre.label}", q - self.middle, clear)
+        # every mark first (each an obstacle), then the labels: a label keeps off every mark, not only those before it
+        near = [c for c in self.r.centres if c.determined and c.label in self.frame.near]
+        self.marks += [self.mm(z) for z in self.r.positions.values()]
+        placed = []
+        for centre in near:
+            q = self.mm(centre.point)
+            if centre.found_by.startswith("revolute"):
+                self.s.circle(q, 2.2, fc="none", ec=CENTRE_COLOUR, lw=0.9, gid=f"mark-{centre.label}", zorder=5.0)
+                clear = 2.4
+            else:
+                self.s.circle(q, 1.0, fc=CENTRE_COLOUR, ec=CENTRE_COLOUR, lw=0.5, gid=f"mark-{centre.label}", zorder=5.0)
+                clear = 1.2
+            self.marks.append(q)
+            placed.append((centre, q, clear))
+        # the most crowded first: a centre with marks close around it takes its place before its neighbours
+        def crowd(item):
+            return -sum(1 for other in self.marks if abs(other - item[1]) < 8.0)
+        for centre, q, clear in sorted(placed, key=crowd):
+            self.label(q, centre_text(centre.label), f"label-{centre.label}", q - self.middle, clear)
 
 
 def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> None:
@@ -375,8 +424,17 @@ def _text_shapes(artists) -> list:
     return _shapes([a for a in artists if isinstance(a, Text)])
 
 
+def _body_shapes(artists) -> list:
+    """The mechanism's blocks and supports (polygons) and its ground's hatching among *artists* [mm]."""
+    from matplotlib.collections import LineCollection
+    from matplotlib.patches import Polygon
+
+    return _shapes([a for a in artists if isinstance(a, (Polygon, LineCollection))])
+
+
 def _shapes(artists) -> list:
     """Obstacles for the labels from the mechanism's artists: lines, circles, polygons, text boxes [mm]."""
+    from matplotlib.collections import LineCollection
     from matplotlib.lines import Line2D
     from matplotlib.patches import Circle, Polygon
     from matplotlib.text import Text
@@ -396,6 +454,10 @@ def _shapes(artists) -> list:
             xy = artist.get_xy()
             if len(xy) >= 3:
                 shapes.append(ShapelyPolygon(xy).buffer(0.2))
+        elif isinstance(artist, LineCollection):  # the ground's hatching
+            for segment in artist.get_segments():
+                if len(segment) >= 2:
+                    shapes.append(LineString([tuple(xy) for xy in segment]).buffer(0.3))
         elif isinstance(artist, Text) and artist.get_text():
             w, h = text_size(artist.get_text(), artist.get_fontsize())
             x, y = artist.get_position()
@@ -405,13 +467,18 @@ def _shapes(artists) -> list:
     return shapes
 
 
-def _mechanism(ax, result, k_l: float, lang: str):
-    """The mechanism at *k_l* drawn into *ax*: (its artists, its ink's (lower-left, upper-right) [mm])."""
+def _mechanism(ax, result, k_l: float, lang: str, cycle=None):
+    """The mechanism at *k_l* drawn into *ax*: (its artists, its ink's (lower-left, upper-right) [mm]).
+
+    *cycle*: ``(travel, cycle_poses)`` of the plate's drawings (:func:`plans.positions.cycle_poses`,
+    :func:`plans.sweep.line_travel`): the guides over their travel and every support turned one way
+    for the whole cycle, as on the plan of positions."""
     # the centres' marks are there before the mechanism's labels are placed: a link number or a point's
     # name keeps clear of them (the six-bar's "2" touched P₂₆)
     marks = [Point(c.point.real / k_l, c.point.imag / k_l).buffer((2.2 if c.found_by.startswith("revolute") else 1.0) + 0.4)
              for c in result.centres if c.determined and c.point is not None]
-    drawn = _Drawn(result.scene, {"k_l": k_l}, result.positions, result.poses)
+    travel, poses = cycle if cycle is not None else (None, None)
+    drawn = _Drawn(result.scene, {"k_l": k_l}, result.positions, result.poses, travel, poses)
     # no heading or scale under the mechanism: the drawing states k_l in its frame (draw_centres_into)
     artists = sketch_on(ax, "mech", lambda sketch: (sketch.obstacles.extend(marks), MechanismDrawing(sketch, drawn, lang=lang, caption=False).draw()))
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
@@ -429,7 +496,7 @@ class CentresSizer:
     the price of two drawings of the mechanism (the six-position handout drew its centres page 114 times).
     """
 
-    def __init__(self, result, lang: str = "en", room_min: float = ROOM_MIN, k0: float | None = None):
+    def __init__(self, result, lang: str = "en", room_min: float = ROOM_MIN, k0: float | None = None, cycle=None):
         from .svg import new_figure
 
         self.result, self.room_min = result, room_min
@@ -440,7 +507,7 @@ class CentresSizer:
         over = []
         for k in (k0, k0 / 2):
             ax = new_figure().add_axes([0, 0, 1, 1])
-            _, (lo, hi) = _mechanism(ax, result, k, lang)
+            _, (lo, hi) = _mechanism(ax, result, k, lang, cycle)
             over.append((self.lo_m / k - lo, hi - self.hi_m / k))  # (left, bottom), (right, top) beyond the points [mm]
         # o(k) = a + b/k per side, from o(k0) and o(k0/2)
         self.model = []
@@ -464,7 +531,7 @@ class CentresSizer:
 
 
 def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | None = None, legend: bool = True, diagram: bool = True,
-                      room_min: float = ROOM_MIN, limit: tuple[float, float] | None = None):
+                      room_min: float = ROOM_MIN, limit: tuple[float, float] | None = None, cycle=None):
     """The mechanism at k_l with every instant centre, and the circle diagram beside it, drawn into *ax*.
 
     One data unit is one millimetre of paper.  *title* (plain text), when
@@ -475,13 +542,14 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     Kennedy lines and labels (far centres' arrows go outside it): see
     :func:`centres_frame`, which gives the drawing's size without drawing it
     (with *diagram*, *legend* and *title* off, and every centre determined).
-    The axes' limits are set to the frame plus the margin.
+    The axes' limits are set to the frame plus the margin.  *cycle*: ``(travel, cycle_poses)``, the guides'
+    travel and the cycle's poses of the plate's other drawings (see :func:`_mechanism`).
 
     Returns
     -------
     (width, height) [mm] of the drawing.
     """
-    artists, ink = _mechanism(ax, result, k_l, lang)
+    artists, ink = _mechanism(ax, result, k_l, lang, cycle)
     frame = centres_frame(result, k_l, ink, room_min, limit)
     lo, hi = frame.lo, frame.hi
     (x0, y0), (x1, y1) = (frame.outer_lo.real, frame.outer_lo.imag), (frame.outer_hi.real, frame.outer_hi.imag)
@@ -491,6 +559,7 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     s.text(complex(lo.real, lo.imag), scale_caption("k_l", fmt_number(k_l), "m/mm", lang), size=CAPTION_PT, ha="left", va="bottom", gid="scale", math=True)
     drawing = _CentresDrawing(s, result, frame, lang)
     drawing.words += _text_shapes(artists)
+    drawing.bodies += _body_shapes(artists)
     drawing.kennedy_lines()
     drawing.centres()
     if diagram:

@@ -179,6 +179,9 @@ class MechanismDrawing:
         self.slots = dict(slots if slots is not None else getattr(solution, "travel", None) or {})
         self.cycle = tuple(cycle if cycle is not None else getattr(solution, "cycle_poses", None) or ())
         self._plates: dict[str, bool] = {}  # body -> drawn as a plate (:meth:`_is_plate`)
+        # a solution that says so keeps every support in the cycle's direction even where a crank lies over it (the
+        # centres pages: a support drawn the same way on every page of the plate)
+        self.fixed_supports = bool(getattr(solution, "fixed_supports", False))
         self.lang = lang
         self.show_caption = caption
         self.s = sketch
@@ -629,7 +632,7 @@ class MechanismDrawing:
             if under_block:
                 height = max(height, math.hypot(*self.block) / 2 + 2.5)
             d = self._cycle_support_direction(name, q, height)  # one direction for the whole cycle
-            if d is not None and self._link_over_support(name, q, d, height):
+            if d is not None and not self.fixed_supports and self._link_over_support(name, q, d, height):
                 d = None  # a crank over its support at this position turns it away here (issue 10 §4), only here
             if d is None:
                 d = self._support_direction(name, q, height)

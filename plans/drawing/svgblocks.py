@@ -131,15 +131,18 @@ def positions_svg(positions_run, k_l: float, lang: str = "en", extremes: dict | 
                                                                      extremes=extremes), lang)
 
 
-def centres_svg(result, k_l: float, lang: str = "en", room_min: float | None = None, limit: tuple[float, float] | None = None) -> SvgBlock:
+def centres_svg(result, k_l: float, lang: str = "en", room_min: float | None = None, limit: tuple[float, float] | None = None,
+                cycle=None) -> SvgBlock:
     """The mechanism at *k_l* with every instant centre (a :class:`plans.centres.CentresResult`), without the circle diagram
-    (*limit*: the page's room [mm], see :func:`plans.drawing.centres.centres_frame`)."""
+    (*limit*: the page's room [mm], see :func:`plans.drawing.centres.centres_frame`; *cycle*: the guides' travel and the
+    cycle's poses, see :func:`plans.drawing.centres.draw_centres_into`)."""
     from .centres import ROOM_MIN, draw_centres_into
 
     with drawing_rc():
         fig = new_figure()
         ax = fig.add_axes([0, 0, 1, 1])
-        width, height = draw_centres_into(ax, result, k_l, lang, legend=False, diagram=False, room_min=ROOM_MIN if room_min is None else room_min, limit=limit)
+        width, height = draw_centres_into(ax, result, k_l, lang, legend=False, diagram=False, room_min=ROOM_MIN if room_min is None else room_min, limit=limit,
+                                         cycle=cycle)
         return _fitted(fig, ax, width, height, lang)
 
 

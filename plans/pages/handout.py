@@ -912,8 +912,9 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
     """The instant centres' pages: first the method (its title, Kennedy's theorem and the circle diagram, the same
     for every position, drawn once), then a page for every position of *positions*: the mechanism with its centres
     at one k_l for all the pages (the plate's, or the coarsest any of them needs to hold its drawing above its
-    table), stated on each page and in their title block; the table and the rules.  Returns that k_l (None: no
-    page has a drawing)."""
+    table), stated on each page and in their title block; the table (ω and v as read off the drawing at that k_l,
+    to the scene's drafting precision: :func:`plans.centres.instant_centres`) and the rules.  Returns that k_l
+    (None: no page has a drawing)."""
     from ..centres import instant_centres
     from ..compare import compare_centres
     from ..drawing.centres import CentresSizer
@@ -938,7 +939,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         table = centres_page_table(result, comparisons, lang)
         box = (TEXT_WIDTH, min(CENTRES_DRAWING_MAX, TEXT_HEIGHT - CENTRES_PAGE_TEXT - CENTRES_ROW * len(table)))
         # sizes from geometry (two drawings of the mechanism alone, plans.drawing.centres.CentresSizer)
-        sizer = CentresSizer(result, lang, room_min=ROOM_MIN)
+        sizer = CentresSizer(result, lang, room_min=ROOM_MIN, cycle=_centres_cycle(h))
         for _ in range(24):
             width, height = sizer.size(k, box)
             if width <= box[0] + 0.5 and height <= box[1] + 0.5:
@@ -951,16 +952,32 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         over = 1.0
         for h, result, _, _, box in drawn:
             if h.index not in blocks or blocks[h.index][0] != k:
-                blocks[h.index] = (k, centres_svg(result, k, lang, room_min=ROOM_MIN, limit=box))
+                blocks[h.index] = (k, centres_svg(result, k, lang, room_min=ROOM_MIN, limit=box, cycle=_centres_cycle(h)))
             block = blocks[h.index][1]
             over = max(over, block.width / (box[0] + 0.5), block.height / (box[1] + 0.5))
         if over <= 1.0:
             break
         k = round_up(k * over * 1.0001)
+    # the table's values as a student reads them off the drawing at its k_l, to the handout's drafting precision
+    for n, page in enumerate(pages):
+        if len(page) > 2:
+            h, result = page[0], page[1]
+            try:
+                read = instant_centres(h.scene, h.analytic.structure, k_l=k, precision=h.scene.scales.precision)
+            except PlansError:
+                continue  # a reading that leaves a link undetermined (two centres one point on the drawing): exact values
+            comparisons = compare_centres(h.analytic, read)
+            pages[n] = (h, result, comparisons, centres_page_table(read, comparisons, lang), page[4])
     _centres_method(doc, diagram, k, lang, drawn[0][1] if drawn else None)
     for page in pages:
         _centres_page(doc, page, k, blocks, lang, multi)
     return k if drawn else None
+
+
+def _centres_cycle(h):
+    """(travel, cycle poses) of position *h*'s drawings: the centres drawing's guides and supports as the plate's."""
+    g = h.graphical
+    return getattr(g, "travel", None), getattr(g, "cycle_poses", None)
 
 
 def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
