@@ -105,10 +105,10 @@ def _scale(value: float) -> str:
     return fmt_number(value)
 
 
-def _math(label: str) -> str:
+def _math(label: str, lang: str = "en") -> str:
     from ..drawing.force_drawing import force_math
 
-    return force_math(label)
+    return force_math(label, lang)
 
 
 def _lower(words: str) -> str:
@@ -225,12 +225,13 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
     return mu, plans, blocks, min(columns, len(plans.plans))
 
 
-def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX):
-    """(k_l [m/mm], block): the free bodies in one row or two, at the round k_l that draws them largest within *box*."""
+def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, k_plate: float | None = None):
+    """(k_l [m/mm], block): the free bodies in one row, two or a grid, at the plate's *k_plate* [m/mm] when they fit
+    *box* at it in one of those arrangements (the plate's one k_l on every page), else at the round k_l that draws
+    them largest within *box* (coarser than the plate's: the page states it)."""
     from ..drawing.force_blocks import free_bodies_svg
 
     count = len(plans.plans)
-    best = None
     g = graphical
     spans = []
     for plan in plans.plans:
@@ -238,10 +239,26 @@ def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX):
         zs += [f.at for body in plan.links for f in plans.on(body)[0]]
         spans.append((max(z.real for z in zs) - min(z.real for z in zs), max(z.imag for z in zs) - min(z.imag for z in zs)))
     drawn = _drawn_names(names)
-    for per_row in dict.fromkeys([count, -(-count // 2)]):
+    arrangements = list(dict.fromkeys([count, -(-count // 2), -(-count // 3), 1]))
+
+    def fits(block) -> bool:
+        return block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5
+
+    if k_plate:
+        # the plate's k_l in the first arrangement it fits: rows of bodies, or columns side by side (a tall body
+        # beside a column of small ones)
+        tried = [(per_row, None) for per_row in arrangements]
+        if 2 < count <= 6:
+            tried[1:1] = [(None, split) for split in _splits(count) if 1 < len(split) < count]
+        for per_row, columns in tried:
+            block = free_bodies_svg(plans, k_plate, lang, per_row, drawn, columns)
+            if fits(block):
+                return k_plate, block
+    best = None
+    for per_row in arrangements[:2]:
         rows = [spans[k:k + per_row] for k in range(0, count, per_row)]
         extent = (max(sum(w for w, _ in row) for row in rows), sum(max(h for _, h in row) for row in rows))
-        k0 = g.scales["k_l"]
+        k0 = k_plate or g.scales["k_l"]
         block = free_bodies_svg(plans, k0, lang, per_row, drawn)
         need = 0.0
         for size, size_drawn, room in zip(extent, (block.width, block.height), box):
@@ -251,12 +268,19 @@ def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX):
         k = round_up(need) if need > 0 else k0
         for _ in range(6):
             block = free_bodies_svg(plans, k, lang, per_row, drawn)
-            if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
+            if fits(block):
                 break
             k = round_up(k * 1.0001)
         if best is None or k < best[0]:
             best = (k, block)
     return best
+
+
+def _splits(n: int) -> list[tuple[int, ...]]:
+    """Every way of cutting *n* bodies, in their order, into consecutive runs (how many each run holds)."""
+    if n == 0:
+        return [()]
+    return [(first,) + rest for first in range(1, n + 1) for rest in _splits(n - first)]
 
 
 # --- what the pages say -----------------------------------------------------------------------
@@ -277,22 +301,22 @@ def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en") -> list[s
     for v in vectors:
         if v.kind == "reaction" and v.label not in plan.found:
             head, _, sub = v.label.partition("_")
-            opposite = f" = −{_math(f'R_{sub[::-1]}')}" if head == "R" and len(sub) == 2 else ""
-            lines.append(f"{_math(v.label)}{opposite} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm "
+            opposite = f" = −{_math(f'R_{sub[::-1]}', lang)}" if head == "R" and len(sub) == 2 else ""
+            lines.append(f"{_math(v.label, lang)}{opposite} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm "
                          f"({term('carried', lang)})")
     tangential = [v for v in vectors if v.kind == "tangential"]
     if tangential:
         lines.append(f"{term('found_first', lang)}: " + ";  ".join(
-            f"{_math(v.label)} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm" for v in tangential))
+            f"{_math(v.label, lang)} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm" for v in tangential))
     for v in vectors:
         if v.label in plan.found:
-            lines.append(f"{_math(v.label)} = {_reading(v.length, plan.precision)} mm · {mu} N/mm = {_reading(v.value, _step(plan))} N")
+            lines.append(f"{_math(v.label, lang)} = {_reading(v.length, plan.precision)} mm · {mu} N/mm = {_reading(v.value, _step(plan))} N")
     short = [v for v in vectors if v.length < SHORT_MM]
     if short:
-        lines.append(";  ".join(f"|{_math(v.label)}| = {v.length:.2f} mm ({_number(given[v.label]) if v.label in given else _reading(v.value, _step(plan))} N)"
+        lines.append(";  ".join(f"|{_math(v.label, lang)}| = {v.length:.2f} mm ({_number(given[v.label]) if v.label in given else _reading(v.value, _step(plan))} N)"
                                 for v in short))
     if balancing_moment is not None:
-        lines.append(f"$M_{{\\mathrm{{b}}}}$ = {_number(abs(balancing_moment))} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})")
+        lines.append(f"{_math('M_b', lang)} = {_number(abs(balancing_moment))} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})")
     return lines
 
 
@@ -309,12 +333,12 @@ def _loads_table(plans, lang: str) -> list[list[str]]:
     rows = [["", term("link", lang), term("kind", lang), "N, N·m", "mm ($μ_F$)"]]
     for f in plans.loads:
         length = drawn.get(f.label)
-        rows.append([_math(f.label), f.body, term(_LOAD_KIND.get(f.kind, "external_force"), lang), f"{_number(abs(f.force))} N",
+        rows.append([_math(f.label, lang), f.body, term(_LOAD_KIND.get(f.kind, "external_force"), lang), f"{_number(abs(f.force))} N",
                      _reading(*length) if length else "—"])
     for c in plans.couples:
         if c.kind == "balancing" or c.moment == 0:
             continue
-        rows.append([_math(c.label), c.body, term("inertia_couple" if c.kind == "inertia" else "couple", lang), f"{_number(c.moment)} N·m", "—"])
+        rows.append([_math(c.label, lang), c.body, term("inertia_couple" if c.kind == "inertia" else "couple", lang), f"{_number(c.moment)} N·m", "—"])
     return rows
 
 
@@ -328,7 +352,7 @@ def _methods_table(comparisons, analytic, lang: str) -> list[list[str]]:
     symbol = "M_b" if analytic.balancing_kind == "moment" else "F_b"
     unit = "N·m" if symbol == "M_b" else "N"
     exact = float(analytic.balancing[0])
-    row = [f"${symbol[0]}_{{\\mathrm{{b}}}}$ [{unit}]", _number(exact, 6)]
+    row = [f"{_math(symbol, lang)} [{unit}]", _number(exact, 6)]
     for method in ("force_plans", "lever"):
         c = by.get((symbol, method))
         row += [_number(c.value.real, 6), _percent(c.rel_error)] if c is not None else ["—", "—"]
@@ -337,7 +361,7 @@ def _methods_table(comparisons, analytic, lang: str) -> list[list[str]]:
         force = complex(reaction.force[0])
         c = by.get((label, "force_plans"))
         cell = _polar(force)
-        rows.append([f"{_math(label)} [N]", cell, _polar(complex(c.value)) if c is not None else "—", _percent(c.rel_error) if c is not None else "—", "", ""])
+        rows.append([f"{_math(label, lang)} [N]", cell, _polar(complex(c.value)) if c is not None else "—", _percent(c.rel_error) if c is not None else "—", "", ""])
     return rows
 
 
@@ -420,7 +444,8 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     # what the free bodies' page sets beside them: heading (and the position), k_l, legend, the loads' table
     text = 16.0 + (5.0 if where else 0.0) + 5.0 + 4.6 * -(-len(_body_kinds(plans)) // 2) + 8.0 + 4.2 * len(loads) + 6.0
     box = (doc.page.text_width, min(FREE_BODIES_BOX[1], doc.page.text_height - text))
-    k_l, free = _free_bodies(plans, graphical, lang, names, box)
+    plate_kl = doc.plate.get("k_l")
+    k_l, free = _free_bodies(plans, graphical, lang, names, box, plate_kl)
     pages = ForcePages(mu, k_l, plans)
     mu_words = f"$μ_{{F}}$ = {_scale(mu)} N/mm"
     head = term("kinetostatics", lang)
@@ -432,7 +457,6 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
 
     # 1. the free bodies, the given loads and the legend
     heading(_lower(term("free_bodies", lang)))
-    plate_kl = doc.plate.get("k_l")
     if plate_kl is not None:
         doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])")  # the title block states the free bodies' k_l
     _scale_note(doc, mu_words)
@@ -468,7 +492,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     if lever is not None:
         heading(term("joukowski_lever", lang))
         doc.line(_newtons(f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", lang), size=SMALL_PT)
-        doc.line(_newtons(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$", lang), size=TEXT_PT)
+        doc.line(_newtons(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + "$", lang), size=TEXT_PT)
         doc.figure(f"{key}-lever", lever_svg(lever, lang))
         pages.images[f"{key}-lever"] = "lever"
         doc.body.append(_legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang))
@@ -502,6 +526,7 @@ def _lever_kinds(lever) -> list[str]:
 def _lever_rows(lever, lang: str) -> list[list[str]]:
     """The moments about the pole: force, its image, |F| [N], arm h [mm], F·h [N·mm], and for a couple's pair how it was found."""
     from ..drawing.force_drawing import lever_names
+    from ..drawing.plan_drawing import image_text
 
     names = lever_names(lever)
     moments = {(load.name, load.body): float(load.moment) for load in lever.loads if load.is_couple}
@@ -520,22 +545,22 @@ def _lever_rows(lever, lang: str) -> list[list[str]]:
             ends = "".join(q.image.upper() for q in pair)
             couple = moments[(f.name, f.body)]
             length = abs(couple) / abs(f.force)
-            note = f"= {_math(f.name)}/$l_{{\\mathrm{{{ends}}}}}$ = {_number(abs(couple))} N·m / {length:.4g} m"
+            note = f"= {_math(f.name, lang)}/$l_{{\\mathrm{{{ends}}}}}$ = {_number(abs(couple))} N·m / {length:.4g} m"
             if f is pair[0]:
-                note += f"; {term('lever_pair', lang).format(points=', '.join(q.image for q in pair))}"
-        rows.append([_math(names[id(f)]), f.image, _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
+                note += f"; {term('lever_pair', lang).format(points=', '.join(image_text(q.image) for q in pair))}"
+        rows.append([_math(names[id(f)], lang), image_text(f.image), _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
     return rows
 
 
 def _lever_result(lever, lang: str) -> list[str]:
     from ..drawing.force_drawing import sense_arrow
 
-    lines = [f"{_math(c.name)} = {_number(c.couple)} N·m → {_number(c.moment)} N·mm ({term('lever_block_couple', lang)})" for c in lever.couples]
+    lines = [f"{_math(c.name, lang)} = {_number(c.couple)} N·m → {_number(c.moment)} N·mm ({term('lever_block_couple', lang)})" for c in lever.couples]
     if lever.balancing_kind == "moment":
-        lines.append(f"$M_{{\\mathrm{{b}}}}$ = $F_{{\\mathrm{{b}}}}$·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force))} N · "
+        lines.append(f"{_math('M_b', lang)} = {_math('F_b', lang)}·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force))} N · "
                      f"{lever.crank_length:.4g} m = {_number(abs(lever.balancing))} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))})")
     else:
-        lines.append(f"$F_{{\\mathrm{{b}}}}$ = {_number(lever.balancing)} N ({_lower(term('balancing_force', lang))})")
+        lines.append(f"{_math('F_b', lang)} = {_number(lever.balancing)} N ({_lower(term('balancing_force', lang))})")
     return lines
 
 
