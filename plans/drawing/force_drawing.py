@@ -55,9 +55,9 @@ FREE_ARROW_MM = 11.0
 #: Radius of a couple's arc on the free bodies [mm].
 COUPLE_R_MM = 6.0
 #: Space between two free bodies [mm].
-FREE_GAP_MM = 10.0
+FREE_GAP_MM = 6.0
 #: Room for a name beyond a free body's arrows [mm].
-FREE_LABEL_MM = 4.0
+FREE_LABEL_MM = 3.0
 #: How far a closing line runs past the intersection and behind its start [mm].
 PAST_MM = 8.0
 BEHIND_MM = 4.0
@@ -424,8 +424,8 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
                 reach += [where / k_l + (COUPLE_R_MM + 2.0) * d for d in (1, 1j, -1, -1j)]
         zs = pts + reach
         what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
-        named = min(z.real for z in pts) + text_size(what, CAPTION_PT)[0]  # its name over it
-        box = (min(z.real for z in zs) - FREE_LABEL_MM, max(max(z.real for z in zs) + FREE_LABEL_MM, named),
+        left = min(z.real for z in zs) - FREE_LABEL_MM
+        box = (left, max(max(z.real for z in zs) + FREE_LABEL_MM, left + text_size(what, CAPTION_PT)[0]),  # its name over it
                min(z.imag for z in zs) - FREE_LABEL_MM, max(z.imag for z in zs) + FREE_LABEL_MM)
         bodies.append((plan, links, box, acting, couples))
     placed = [(body[0], body[1], complex(x - body[2][0], y - body[2][3]), body[3], body[4], body[2]) for body, (x, y) in
@@ -434,9 +434,8 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
         _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
     # each body's name over it
     for plan, links, shift, _, _, box in placed:
-        xs = [g.positions[n].real / k_l + shift.real for body in links for n in g.scene.bodies[body].points]
         what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
-        sketch.text(complex(min(xs), box[3] + shift.imag + 1.0), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
+        sketch.text(complex(box[0] + shift.real, box[3] + shift.imag + 1.0), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
     if caption:
         b = sketch.bounds
         sketch.text(complex(b.xmin, b.ymax + 6.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
@@ -523,7 +522,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             labelled.add(n)
             if len(g.scene.bodies_with(n)) > 1:
                 sketch.circle(z, 1.1, fc="white", ec=INK, lw=0.8, gid=f"pin-{n}", zorder=4.5)
-            labels.append((z, [(n, f"point-{n}")], dict(size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0), leader_from=4.0)))
+            labels.append((z, [(_centre_name(n, body), f"point-{n}")], dict(size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0), leader_from=4.0)))
     for body in links:
         centre = forces.centres.get(body)
         if centre is not None:
@@ -588,6 +587,14 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
                        dict(size=LABEL_PT, prefer=cmath.exp(1j * start), gaps=(0.8, 1.8, 3.0), mathtext=True, leader_from=4.0, color=color)))
     for anchor, pieces, options in labels:
         place_label(sketch, anchor, pieces, **options)
+
+
+def _centre_name(point: str, body: str) -> str:
+    """A point's label on a free body: as the scene names it, but a centre of mass the scene names S and its link's
+    number (``S3`` on link 3) as the course writes it, S₃ (the number a subscript: it is the link's)."""
+    if point[:1] in "Ss" and point[1:] == body:
+        return point[0] + _digits(body)
+    return point
 
 
 def _on_segment(z: complex, a: complex, b: complex, tolerance: float = 0.3) -> bool:

@@ -27,6 +27,7 @@ runs over its cell.
 
 from __future__ import annotations
 
+import cmath
 import math
 import re
 from dataclasses import dataclass, field
@@ -342,6 +343,96 @@ def _loads_table(plans, lang: str) -> list[list[str]]:
     return rows
 
 
+def _mm(value: float) -> str:
+    """A length [m] in mm as the data give it (to 0.1 mm, no trailing zeros)."""
+    return _minus(f"{value * 1000:.1f}".rstrip("0").rstrip("."))
+
+
+def _given(value: float) -> str:
+    """A datum as given (up to 6 significant figures, no trailing zeros: 2 kg is "2", 0.004 kg·m² "0.004")."""
+    return _minus(f"{value:.6g}") if "e" not in f"{value:.6g}" else _number(value)
+
+
+def _centre_words(scene, mass, lang: str) -> str:
+    """Where the centre of mass S of a body lies, as a course's data state it: at a joint (``S₄ ≡ B``), or its distance
+    from the body's first point along the line to the next (``l_OS₂ = 40 mm``), with the angle from that line when
+    off it."""
+    from .._text import subscript
+
+    body = scene.bodies[mass.body]
+    s = f"S{subscript(mass.body)}"
+    if mass.point is not None and len(scene.bodies_with(mass.point)) > 1:  # at a joint (a block's pin)
+        return f"{s} ≡ {mass.point}"
+    at = {n: z for n, z in body.points.items() if n != mass.point}
+    same = next((n for n, z in at.items() if abs(z - mass.centre) <= 1e-9), None)
+    if same is not None:
+        return f"{s} ≡ {same}"
+    if not at:
+        return s
+    names = list(at)
+    first = names[0]
+    origin = at[first]
+    distance = abs(mass.centre - origin)
+    words = f"$l_{{\\mathrm{{{first}{s}}}}}$ = {_mm(distance)} mm"
+    second = next((n for n in names[1:] if abs(at[n] - origin) > 1e-12), None)
+    if second is not None:
+        turn = math.degrees(cmath.phase((mass.centre - origin) / (at[second] - origin)))
+        if abs(turn) > 0.05:  # off the line first–second: the angle from it, counter-clockwise
+            words += f", ∠({first}{second}, {first}{s}) = {_minus(f'{turn:.1f}')}°"
+    return words
+
+
+def _offset(scene) -> float | None:
+    """The offset e [m] of a slider-crank's guide from the crank's pivot (None: not an offset slider-crank)."""
+    from ..scene import Crank
+
+    frame = next(iter(scene.bodies))
+    moving = [b for b in scene.bodies if b != frame]
+    if not isinstance(scene.driver, Crank) or len(scene.prismatics) != 1 or len(moving) != 3:
+        return None
+    p = scene.prismatics[0]
+    if p.guide != frame:
+        return None
+    line = scene.line(f"{p.guide}.{p.guide_line}")
+    pivot = scene.bodies[frame].points[scene.driver.pivot]
+    e = abs(((pivot - line.origin) * cmath.exp(-1j * line.angle)).imag)
+    return e if e > 1e-9 else None
+
+
+def _data_rows(scene, lang: str) -> tuple[str, list[list[str]], list[str]]:
+    """The input data of the force analysis: (heading with the offset e of an offset slider-crank, the table of the
+    links' masses — link, m [kg], centre of mass S, J_S [kg·m²] — and the lines of gravity and the external loads)."""
+    kg = "kg"
+    heading = term("force_data", lang)
+    e = _offset(scene)
+    if e is not None:
+        heading += f";  {term('offset_e', lang)} e = {_mm(e)} mm"
+    rows = [[term("link", lang), f"m [{kg}]", term("mass_centre", lang), f"$J_{{S}}$ [{kg}·m²]"]]
+    for name, mass in scene.masses.items():
+        rows.append([name, _given(mass.mass), _centre_words(scene, mass, lang), _given(mass.inertia)])
+    lines = []
+    if scene.gravity is not None and scene.gravity.g:
+        g = scene.gravity
+        way = term("downwards", lang) if abs(g.angle + math.pi / 2) < 1e-9 else f"∠ {_minus(f'{math.degrees(g.angle) % 360:.1f}')}°"
+        lines.append(f"{term('gravity_g', lang)}: g = {_number(g.g)} m/s², {way}")
+    for load in scene.loads:
+        name = _math(load.name, lang)
+        where = load.point if load.point is not None else f"({_mm(load.at.real)}; {_mm(load.at.imag)}) mm"
+        if load.kind == "moment":
+            lines.append(f"{name} = {_number(load.moment)} N·m{' ↺' if load.moment > 0 else ' ↻'}, {term('on_link', lang).format(link=load.body)}")
+            continue
+        at = term("load_at", lang).format(point=where, link=load.body)
+        if load.kind == "resistance":
+            line = f"{name} = {_number(load.magnitude)} N, {at}, {term('against_velocity', lang).format(point=where)}"
+        else:
+            f = complex(load.force)
+            line = f"{name} = {_number(abs(f))} N ∠ {math.degrees(math.atan2(f.imag, f.real)) % 360:.1f}°, {at}"
+        if load.working is not None:
+            line += f" ({term('working_only', lang)})"
+        lines.append(line)
+    return heading, rows, lines
+
+
 def _methods_table(comparisons, analytic, lang: str) -> list[list[str]]:
     """The three methods side by side: M_b (or F_b) by analytic, force plans and the lever; each reaction by
     analytic and force plans; each method's difference from the analytic value [%]."""
@@ -409,11 +500,12 @@ _NEWTON = {"ru": "Н", "bg": "Н"}
 
 
 def _newtons(line: str, lang: str) -> str:
-    """*line* with the unit N (outside its ``$…$`` math) as the course in *lang* writes it."""
+    """*line* with the units N and kg (outside its ``$…$`` math) as the course in *lang* writes them."""
     if lang not in _NEWTON:
         return line
     pieces = re.split(r"(?<!\\)(\$[^$]*\$)", line)
-    return "".join(p if p.startswith("$") else re.sub(r"(?<![\w\\{])N(?=[·/ \])\];,]|$)", _NEWTON[lang], p) for p in pieces)
+    return "".join(p if p.startswith("$") else re.sub(r"(?<![\w\\{])N(?=[·/ \])\];,]|$)", _NEWTON[lang], p).replace("kg·m²", "кг·м²").replace("kg", "кг")
+                   for p in pieces)
 
 
 def _words(doc: Document, line: str) -> str:
@@ -441,8 +533,11 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     mu, plans, blocks, columns = force_scale(graphical, lang, doc.page.text_width, doc.page.text_height - 33.0)
     names = group_names(plans.plans, lang)
     loads = _loads_table(plans, lang)
-    # what the free bodies' page sets beside them: heading (and the position), k_l, legend, the loads' table
-    text = 16.0 + (5.0 if where else 0.0) + 5.0 + 4.6 * -(-len(_body_kinds(plans)) // 2) + 8.0 + 4.2 * len(loads) + 6.0
+    data_heading, data, data_lines = _data_rows(graphical.scene, lang)
+    # what the free bodies' page sets beside them: heading (and the position), k_l, legend, the input data and the
+    # loads' table side by side
+    tables = max(4.2 * len(loads) + 6.0, 4.2 * len(data) + 6.0 + 4.6 * len(data_lines))
+    text = 16.0 + (5.0 if where else 0.0) + 5.0 + 4.6 * -(-len(_body_kinds(plans)) // 2) + 8.0 + tables + 6.0
     box = (doc.page.text_width, min(FREE_BODIES_BOX[1], doc.page.text_height - text))
     plate_kl = doc.plate.get("k_l")
     k_l, free = _free_bodies(plans, graphical, lang, names, box, plate_kl)
@@ -464,7 +559,10 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     pages.images[f"{key}-free-bodies"] = "free-bodies"
     doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}", lang), size=SMALL_PT)
     doc.body.append(_legend(doc, f"{key}-bodies-legend", _body_kinds(plans), lang))
-    doc.body.append(_table(doc, loads, "(left, left, left, right, right)", f"{term('loads', lang)}: {mu_words}"))
+    given_data = _table(doc, data, "(left, right, left, right)", data_heading) + "".join(
+        f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines)
+    given_loads_table = _table(doc, loads, "(left, left, left, right, right)", f"{term('loads', lang)}: {mu_words}")
+    doc.body.append(f"#grid(columns: (auto, auto), column-gutter: {GUTTER}mm, align: top + left,\n  [{given_data}],\n  [{given_loads_table}])\n")
 
     # 2. the force plans at one μ_F
     heading(f"{_lower(term('force_plans', lang))}; {mu_words}")
