@@ -159,9 +159,9 @@ def _extent(plan) -> tuple[float, float]:
     return (max(xs) - min(xs)) * plan.scale, (max(ys) - min(ys)) * plan.scale
 
 
-def _cells(plans, width: float, columns: int) -> tuple[int, float, list[float]]:
+def _cells(plans, width: float, columns: int, equations=None) -> tuple[int, float, list[float]]:
     """(columns, the cell's width [mm], the height of the readings under each row [mm]) of the force plans' page
-    with *columns* plans across."""
+    with *columns* plans across (*equations*: each plan's equation lines as plain text, set over its plan)."""
     n = len(plans)
     columns = min(columns, n)
     cell = (width - (columns - 1) * GUTTER) / columns
@@ -170,7 +170,8 @@ def _cells(plans, width: float, columns: int) -> tuple[int, float, list[float]]:
     texts = []
     for r in range(0, n, columns):
         row = plans[r:r + columns]
-        texts.append(max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)) + 1 for p in row)
+        texts.append(max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)
+                             + (equations[r + k] if equations else [])) + 1 for k, p in enumerate(row))
                      * READING_LINE + 4.0)
     return columns, cell, texts
 
@@ -191,8 +192,10 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
     """
     from ..drawing.force_blocks import force_plan_svg
     from ..forces.force_plans import construct_force_plans
+    from ..forces.plan_equations import plan_equations
 
     first = construct_force_plans(graphical, mu_F=None)
+    written = [_equation_texts(e) for e in plan_equations(first)]
     sizes = []  # (fixed width, fixed height [mm], extent across, up [N]) of each plan
     for plan in first.plans:
         block = force_plan_svg(plan, lang)
@@ -200,7 +203,7 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
         sizes.append((block.width - ex / plan.scale, block.height - ey / plan.scale, ex, ey))
 
     def fits(mu: float, drawn=None, columns: int = 2) -> bool:
-        columns, cell, texts = _cells(first.plans, width, columns)
+        columns, cell, texts = _cells(first.plans, width, columns, written)
         wide = [fw + ex / mu for fw, _, ex, _ in sizes] if drawn is None else [b.width for b in drawn]
         tall = [fh + ey / mu for _, fh, _, ey in sizes] if drawn is None else [b.height for b in drawn]
         rows = [max(tall[k:k + columns]) for k in range(0, len(tall), columns)]
@@ -208,7 +211,7 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
 
     best = None
     for columns in (1, 2):  # one plan under the other, or two across: whichever draws them larger
-        cell = _cells(first.plans, width, columns)[1]
+        cell = _cells(first.plans, width, columns, written)[1]
         mu = round_up(max(ex / max(cell - fw, 0.3 * cell) for fw, _, ex, _ in sizes) or max(p.scale for p in first.plans))
         for _ in range(60):  # the round values upwards (no drawing: the sizes above)
             if fits(mu, columns=columns):
@@ -318,6 +321,102 @@ def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en") -> list[s
                                 for v in short))
     if balancing_moment is not None:
         lines.append(f"{_math('M_b', lang)} = {_number(abs(balancing_moment))} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})")
+    return lines
+
+
+# --- the equations each plan is drawn from ------------------------------------------------------
+
+
+def _equation_texts(eq) -> list[str]:
+    """The equation lines of a plan as plain text (for the room they take: about one character a symbol)."""
+    lines = []
+    if eq.polygon:
+        lines.append(" + ".join(label for label, _ in eq.polygon) + " = 0")
+    for m in eq.moments:
+        body = " + ".join(f"{t.label}·h" for t in m.terms)
+        lines += [f"ΣM_{m.about}({m.link}) = 0: {m.label}·l + {body} = 0", " + ".join(f"{t.size:.4g}·{t.arm or 0:.4g}" for t in m.terms) + f" ⇒ {m.label} = 0000 N"]
+    if eq.inner:
+        lines.append(" + ".join(label for label, _ in eq.inner) + " = 0")
+    if eq.balancing:
+        lines += [f"ΣM({eq.crank}) = 0: M_b + " + " + ".join(f"{t.label}·h" for t in eq.balancing) + " = 0",
+                  " + ".join(f"{t.size:.4g}·{t.arm or 0:.4g}" for t in eq.balancing) + " ⇒ M_b = 0000 N·m"]
+    return lines
+
+
+def _typst_symbol(label: str, lang: str) -> str:
+    """A force's label as Typst math (its course subscript in *lang*)."""
+    from .typesetting import math as typst_math
+
+    return typst_math(_math(label, lang)[1:-1])
+
+
+def _marked(label: str, known: str, lang: str) -> str:
+    """A vector of an equation underlined as the course marks it: twice (magnitude and direction known), once
+    (direction), not at all (sought)."""
+    from .equations import once, twice
+
+    body = _typst_symbol(label, lang)
+    return twice(body) if known == "full" else once(body) if known == "direction" else body
+
+
+def _quoted(value: float, lang: str, digits: int = 4) -> str:
+    """A number as a Typst math string, to *digits* significant figures, with the language's decimal sign."""
+    from .._text import decimal_comma
+
+    return '"' + decimal_comma(_number(value, digits), lang) + '"'
+
+
+def _signed(terms) -> str:
+    """Terms (sign, math) joined as an equation's side: ``a + b − c`` (a leading minus kept)."""
+    out = ""
+    for k, (sign, body) in enumerate(terms):
+        out += (("−" if sign < 0 else "") if k == 0 else (" − " if sign < 0 else " + ")) + body
+    return out
+
+
+def _equation_lines(eq, lang: str) -> list[str]:
+    """A plan's equations as Typst markup lines: the polygon's vector equation (known parts underlined); each
+    moment equation that gives an Rᵗ first, in letters and in numbers (arms measured on the drawing, m) with the
+    Rᵗ it gives; the inner reaction's equation over one link; the driver's moment equation that gives M_b."""
+    newton = _NEWTON.get(lang, "N")
+    metre = "м" if lang in ("ru", "bg") else "m"
+    lines = []
+    if eq.polygon:
+        lines.append("$" + " + ".join(_marked(label, known, lang) for label, known in eq.polygon) + " = 0$")
+    for m in eq.moments:
+        r = _typst_symbol(m.label, lang)
+        letters = [(m.sign, f'{r} dot l_("{m.joint}{m.about}")')]
+        numbers = [(m.sign, f"{r} dot {_quoted(m.length, lang)}")]
+        k = 0
+        for t in m.terms:
+            symbol = _typst_symbol(t.label, lang)
+            if t.arm is None:
+                letters.append((t.moment, symbol))
+                numbers.append((t.moment, _quoted(t.size, lang)))
+            else:
+                k += 1
+                letters.append((t.moment, f"{symbol} dot h_{k}"))
+                numbers.append((t.moment, f"{_quoted(t.size, lang)} dot {_quoted(t.arm, lang)}"))
+        lines.append(f'$Σ M_("{m.about}") ("{m.link}") = 0: quad {_signed(letters)} = 0$')
+        lines.append(f'${_signed(numbers)} = 0 quad ⇒ quad {r} = {_quoted(m.value, lang)} "{newton}"$')
+    if eq.inner:
+        lines.append("$" + " + ".join(_marked(label, known, lang) for label, known in eq.inner) + " = 0$")
+    if eq.balancing:
+        b = _typst_symbol("M_b", lang)
+        letters, numbers = [(1, b)], [(1, b)]
+        k = 0
+        for t in eq.balancing:
+            symbol = _typst_symbol(t.label, lang)
+            if t.arm is None:
+                letters.append((t.moment, symbol))
+                numbers.append((t.moment, _quoted(t.size, lang)))
+            else:
+                k += 1
+                letters.append((t.moment, f"{symbol} dot h_{k}"))
+                numbers.append((t.moment, f"{_quoted(t.size, lang)} dot {_quoted(t.arm, lang)}"))
+        value = -sum(t.moment for t in eq.balancing)
+        lines.append(f'$Σ M_("{eq.pivot}") ("{eq.crank}") = 0: quad {_signed(letters)} = 0$')
+        lines.append(f'${_signed(numbers)} = 0 quad ⇒ quad {b} = {_quoted(value, lang)} "{newton}·{metre}"$')
     return lines
 
 
@@ -433,9 +532,12 @@ def _data_rows(scene, lang: str) -> tuple[str, list[list[str]], list[str]]:
     return heading, rows, lines
 
 
-def _methods_table(comparisons, analytic, lang: str) -> list[list[str]]:
+def _methods_table(comparisons, analytic, lang: str, plans=None, lever=None) -> list[list[str]]:
     """The three methods side by side: M_b (or F_b) by analytic, force plans and the lever; each reaction by
-    analytic and force plans; each method's difference from the analytic value [%]."""
+    analytic and force plans; each method's difference from the analytic value [%].
+
+    The analytic values to 4 significant figures; a graphical value to the digits its reading justifies
+    (:func:`_method_steps`), as the kinematic tables print the plans' readings."""
     from ..forces.report import method_name
 
     rows = [[term("quantity", lang), method_name("analytic", lang), method_name("force_plans", lang), "δ [%]", method_name("lever", lang), "δ [%]"]]
@@ -443,23 +545,59 @@ def _methods_table(comparisons, analytic, lang: str) -> list[list[str]]:
     symbol = "M_b" if analytic.balancing_kind == "moment" else "F_b"
     unit = "N·m" if symbol == "M_b" else "N"
     exact = float(analytic.balancing[0])
-    row = [f"{_math(symbol, lang)} [{unit}]", _number(exact, 6)]
+    steps = _method_steps(plans, lever, symbol)
+    row = [f"{_math(symbol, lang)} [{unit}]", _number(exact)]
     for method in ("force_plans", "lever"):
         c = by.get((symbol, method))
-        row += [_number(c.value.real, 6), _percent(c.rel_error)] if c is not None else ["—", "—"]
+        row += [_stepped(c.value.real, steps[method]), _percent(c.rel_error)] if c is not None else ["—", "—"]
     rows.append(row)
     for label, reaction in analytic.reactions.items():
         force = complex(reaction.force[0])
         c = by.get((label, "force_plans"))
         cell = _polar(force)
-        rows.append([f"{_math(label, lang)} [N]", cell, _polar(complex(c.value)) if c is not None else "—", _percent(c.rel_error) if c is not None else "—", "", ""])
+        rows.append([f"{_math(label, lang)} [N]", cell, _polar(complex(c.value), steps["reaction"]) if c is not None else "—",
+                     _percent(c.rel_error) if c is not None else "—", "", ""])
     return rows
 
 
-def _polar(z: complex) -> str:
+def _method_steps(plans, lever, symbol: str) -> dict[str, float | None]:
+    """The resolution of each graphical value of the three methods' table: a reaction read off a plan, one drafting
+    step (its precision [mm]) × μ_F [N]; M_b by the force plans, that step × the longest arm on the crank [N·m]
+    (F_b of a linear driver: the step itself); M_b by the lever, |M_b| × the step ÷ the balancing force's arm h_b
+    [mm] (F_b likewise).  None where readings are exact (no precision)."""
+    steps: dict[str, float | None] = {"force_plans": None, "lever": None, "reaction": None}
+    if plans is not None:
+        driver = next((p for p in plans.plans if p.group == "driver"), None)
+        precision = next((p.precision for p in plans.plans if p.precision), None)
+        if precision and driver is not None:
+            steps["reaction"] = precision * driver.scale
+            if symbol == "M_b":
+                g = plans.graphical
+                link = g.scene.driver.link
+                pivot = g.positions[g.scene.driver.pivot]
+                steps["force_plans"] = steps["reaction"] * max(abs(g.positions[n] - pivot) for n in g.scene.bodies[link].points)
+            else:
+                steps["force_plans"] = steps["reaction"]
+    if lever is not None and plans is not None and steps["reaction"] is not None:
+        arm = abs(lever.balancing_force.arm)
+        precision = steps["reaction"] / next(p.scale for p in plans.plans if p.group == "driver")
+        if arm > 0:
+            steps["lever"] = abs(lever.balancing) * precision / arm
+    return steps
+
+
+def _stepped(value: float, step: float | None) -> str:
+    """A graphical value to the decimals its resolution *step* justifies (4 significant figures without one)."""
+    from ..report import reading_number
+
+    return _minus(reading_number(value, step)) if step else _number(value)
+
+
+def _polar(z: complex, step: float | None = None) -> str:
+    """|z| ∠ its angle: the analytic value to 4 significant figures, a reading to its *step* [N]; 0…360° to 0.1°."""
     if abs(z) == 0:
         return "0"
-    return f"{_number(abs(z), 6)} ∠ {math.degrees(math.atan2(z.imag, z.real)) % 360.0:.2f}°"
+    return f"{_stepped(abs(z), step)} ∠ {math.degrees(math.atan2(z.imag, z.real)) % 360.0:.1f}°"
 
 
 def _percent(rel: float) -> str:
@@ -528,6 +666,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     from ..drawing.force_blocks import lever_svg
     from ..drawing.force_drawing import given_loads, legend_kinds
     from ..forces.compare import compare_forces
+    from ..forces.plan_equations import plan_equations
 
     lang = doc.lang
     mu, plans, blocks, columns = force_scale(graphical, lang, doc.page.text_width, doc.page.text_height - 33.0)
@@ -570,14 +709,19 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', plate_kl)}])")
     _scale_note(doc, mu_words)
     given = given_loads(plans)
+    written = {e.group: e for e in plan_equations(plans)}
     items = []
     for plan, block in zip(plans.plans, blocks):
         image_key = f"{key}-plan-{len(items) + 1}" if plan.group != "driver" else f"{key}-plan-driver"
         pages.images[image_key] = f"plan:{plan.group}"
         moment = plans.balancing_moment if plan.group == "driver" else None
         lines = _plan_lines(plan, given, moment, lang)
-        parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]",
-                 f"#align(center)[#{doc.add_image(image_key, block)}]"]
+        parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]"]
+        equations = _equation_lines(written[plan.group], lang)
+        if equations:  # leading enough for a double underline to stay clear of the line under it
+            parts.append(f"#text(size: {SMALL_PT}pt)[#table(columns: 1, stroke: none, inset: (x: 0mm, y: 0.9mm), row-gutter: 1.6mm, "
+                         + ", ".join(f"[{line}]" for line in equations) + ")]")
+        parts.append(f"#align(center)[#{doc.add_image(image_key, block)}]")
         parts += [f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}]" for line in lines]
         items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]")
     doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
@@ -600,7 +744,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     elif comparisons:
         doc.body.append("#v(4mm)")
     if comparisons:
-        doc.body.append(_table(doc, _methods_table(comparisons, analytic, lang), "(left, right, right, right, right, right)", term("force_methods", lang)))
+        doc.body.append(_table(doc, _methods_table(comparisons, analytic, lang, plans, lever), "(left, right, right, right, right, right)", term("force_methods", lang)))
     return pages
 
 
