@@ -50,6 +50,10 @@ FREE_BODIES_BOX = (175.0, 170.0)
 PLAN_CELL_MAX = 120.0
 #: the height of a line of readings under a plan [mm] (8 pt with its leading)
 READING_LINE = 3.9
+#: the height of a line of the plans' equations [mm] (8 pt math, room for a double underline)
+EQUATION_LINE = 5.0
+#: the equations share the plans' page when μ_F grows at most this much for them (60 → 100 N/mm: the plans three fifths as large)
+EQUATION_COST = 1.7
 
 
 @dataclass
@@ -159,9 +163,9 @@ def _extent(plan) -> tuple[float, float]:
     return (max(xs) - min(xs)) * plan.scale, (max(ys) - min(ys)) * plan.scale
 
 
-def _cells(plans, width: float, columns: int, equations=None) -> tuple[int, float, list[float]]:
+def _cells(plans, width: float, columns: int) -> tuple[int, float, list[float]]:
     """(columns, the cell's width [mm], the height of the readings under each row [mm]) of the force plans' page
-    with *columns* plans across (*equations*: each plan's equation lines as plain text, set over its plan)."""
+    with *columns* plans across."""
     n = len(plans)
     columns = min(columns, n)
     cell = (width - (columns - 1) * GUTTER) / columns
@@ -170,8 +174,7 @@ def _cells(plans, width: float, columns: int, equations=None) -> tuple[int, floa
     texts = []
     for r in range(0, n, columns):
         row = plans[r:r + columns]
-        texts.append(max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)
-                             + (equations[r + k] if equations else [])) + 1 for k, p in enumerate(row))
+        texts.append(max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)) + 1 for p in row)
                      * READING_LINE + 4.0)
     return columns, cell, texts
 
@@ -192,10 +195,8 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
     """
     from ..drawing.force_blocks import force_plan_svg
     from ..forces.force_plans import construct_force_plans
-    from ..forces.plan_equations import plan_equations
 
     first = construct_force_plans(graphical, mu_F=None)
-    written = [_equation_texts(e) for e in plan_equations(first)]
     sizes = []  # (fixed width, fixed height [mm], extent across, up [N]) of each plan
     for plan in first.plans:
         block = force_plan_svg(plan, lang)
@@ -203,7 +204,7 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
         sizes.append((block.width - ex / plan.scale, block.height - ey / plan.scale, ex, ey))
 
     def fits(mu: float, drawn=None, columns: int = 2) -> bool:
-        columns, cell, texts = _cells(first.plans, width, columns, written)
+        columns, cell, texts = _cells(first.plans, width, columns)
         wide = [fw + ex / mu for fw, _, ex, _ in sizes] if drawn is None else [b.width for b in drawn]
         tall = [fh + ey / mu for _, fh, _, ey in sizes] if drawn is None else [b.height for b in drawn]
         rows = [max(tall[k:k + columns]) for k in range(0, len(tall), columns)]
@@ -211,7 +212,7 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
 
     best = None
     for columns in (1, 2):  # one plan under the other, or two across: whichever draws them larger
-        cell = _cells(first.plans, width, columns, written)[1]
+        cell = _cells(first.plans, width, columns)[1]
         mu = round_up(max(ex / max(cell - fw, 0.3 * cell) for fw, _, ex, _ in sizes) or max(p.scale for p in first.plans))
         for _ in range(60):  # the round values upwards (no drawing: the sizes above)
             if fits(mu, columns=columns):
@@ -325,22 +326,6 @@ def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en") -> list[s
 
 
 # --- the equations each plan is drawn from ------------------------------------------------------
-
-
-def _equation_texts(eq) -> list[str]:
-    """The equation lines of a plan as plain text (for the room they take: about one character a symbol)."""
-    lines = []
-    if eq.polygon:
-        lines.append(" + ".join(label for label, _ in eq.polygon) + " = 0")
-    for m in eq.moments:
-        body = " + ".join(f"{t.label}·h" for t in m.terms)
-        lines += [f"ΣM_{m.about}({m.link}) = 0: {m.label}·l + {body} = 0", " + ".join(f"{t.size:.4g}·{t.arm or 0:.4g}" for t in m.terms) + f" ⇒ {m.label} = 0000 N"]
-    if eq.inner:
-        lines.append(" + ".join(label for label, _ in eq.inner) + " = 0")
-    if eq.balancing:
-        lines += [f"ΣM({eq.crank}) = 0: M_b + " + " + ".join(f"{t.label}·h" for t in eq.balancing) + " = 0",
-                  " + ".join(f"{t.size:.4g}·{t.arm or 0:.4g}" for t in eq.balancing) + " ⇒ M_b = 0000 N·m"]
-    return lines
 
 
 def _typst_symbol(label: str, lang: str) -> str:
@@ -669,7 +654,13 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     from ..forces.plan_equations import plan_equations
 
     lang = doc.lang
-    mu, plans, blocks, columns = force_scale(graphical, lang, doc.page.text_width, doc.page.text_height - 33.0)
+    # the plans' equations under them on their page when that costs the plans at most one round step of μ_F;
+    # else the plans keep their room and the equations go over to the next page
+    room = doc.page.text_height - 33.0
+    alone = force_scale(graphical, lang, doc.page.text_width, room)
+    equations = sum(EQUATION_LINE * (len(_equation_lines(e, lang)) + 1) + 2.0 for e in plan_equations(alone[1])) + 3.0
+    together = force_scale(graphical, lang, doc.page.text_width, room - equations) if equations < room / 2 else None
+    mu, plans, blocks, columns = together if together is not None and together[0] <= EQUATION_COST * alone[0] else alone
     names = group_names(plans.plans, lang)
     loads = _loads_table(plans, lang)
     data_heading, data, data_lines = _data_rows(graphical.scene, lang)
@@ -717,16 +708,21 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         moment = plans.balancing_moment if plan.group == "driver" else None
         lines = _plan_lines(plan, given, moment, lang)
         parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]"]
-        equations = _equation_lines(written[plan.group], lang)
-        if equations:  # leading enough for a double underline to stay clear of the line under it
-            parts.append(f"#text(size: {SMALL_PT}pt)[#table(columns: 1, stroke: none, inset: (x: 0mm, y: 0.9mm), row-gutter: 1.6mm, "
-                         + ", ".join(f"[{line}]" for line in equations) + ")]")
         parts.append(f"#align(center)[#{doc.add_image(image_key, block)}]")
         parts += [f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}]" for line in lines]
         items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]")
     doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
     kinds, closing = legend_kinds(plans.plans)
-    doc.body.append("#v(1fr)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
+    doc.body.append("#v(2mm)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
+    # the equations each plan is drawn from, across the page under the plans and their legend (on the next page
+    # when they do not fit: the plans keep the room μ_F was chosen for); each plan's whole
+    doc.body.append("#v(3mm)\n")
+    for plan in plans.plans:
+        lines = _equation_lines(written[plan.group], lang)
+        if lines:
+            rows = [f"[#text(weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]]"] + [f"[{line}]" for line in lines]
+            doc.body.append(f"#block(breakable: false, below: 1.5mm)[#text(size: {SMALL_PT}pt)[#table(columns: 1, stroke: none, "
+                            f"inset: (x: 0mm, y: 0.9mm), row-gutter: 1.2mm, {', '.join(rows)})]]\n")
 
     # 3. Joukowski's lever and the three methods
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
