@@ -498,7 +498,7 @@ def _data_rows(scene, lang: str) -> tuple[str, list[list[str]], list[str]]:
     if scene.gravity is not None and scene.gravity.g:
         g = scene.gravity
         way = term("downwards", lang) if abs(g.angle + math.pi / 2) < 1e-9 else f"∠ {_minus(f'{math.degrees(g.angle) % 360:.1f}')}°"
-        lines.append(f"{term('gravity_g', lang)}: g = {_number(g.g)} m/s², {way}")
+        lines.append(f"{term('gravity_g', lang)}: g = {_given(g.g)} m/s², {way}")
     for load in scene.loads:
         name = _math(load.name, lang)
         where = load.point if load.point is not None else f"({_mm(load.at.real)}; {_mm(load.at.imag)}) mm"
