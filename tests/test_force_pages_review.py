@@ -90,6 +90,7 @@ def test_the_first_force_page_states_the_data_as_typed(slider_crank_ru):
         scene = tomllib.load(f)
     page = _force_pages(texts, "ru")[0]
     assert "Исходные данные для силового расчёта" in page
+    assert "m [кг]" in page and "м [кг]" not in page  # the mass m, not the metre's Cyrillic м
     lines = page.splitlines()
     for link, table in scene["link"].items():
         mass, inertia = _as_typed(table["mass"], "ru"), _as_typed(table["inertia"], "ru")
@@ -114,6 +115,7 @@ def test_no_latin_subscript_of_the_balancing_moment_or_resistance_on_a_russian_p
     doc, texts = slider_crank_ru
     force = "\n".join(_force_pages(texts, "ru"))
     assert "Mур" in force and "Fпс" in force
+    assert re.search(r"ΣMp ?= ?ΣF ?⋅ ?h ?\+ ?Fур ?⋅ ?hур ?= ?0", force), force  # the lever's equation, whole
     assert not re.search(r"(?<![A-Za-z])(?:M|F|h) ?[br](?![A-Za-zа-я])", force), re.findall(r".{20}(?<![A-Za-z])(?:M|F|h) ?[br](?![A-Za-zа-я]).{5}", force)
     # the drawings (their labels kept in the SVG as the mathtext they were set from)
     labels = []

@@ -435,7 +435,7 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
     # each body's name over it
     for plan, links, shift, _, _, box in placed:
         what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
-        sketch.text(complex(box[0] + shift.real, box[3] + shift.imag + 1.0), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
+        sketch.text(complex(box[0] + shift.real, box[3] + shift.imag + 2.5), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
     if caption:
         b = sketch.bounds
         sketch.text(complex(b.xmin, b.ymax + 6.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
@@ -444,7 +444,7 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
 
 
 #: the height [mm] a body's name takes over it
-FREE_NAME_MM = 5.0
+FREE_NAME_MM = 6.5
 
 
 def _arrange(boxes, per_row: int, columns: tuple[int, ...] | None = None) -> list[tuple[float, float]]:
@@ -865,7 +865,7 @@ def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
     y -= row
     sketch.text(complex(x, y), term("lever_turned_ccw", lang), size=CAPTION_PT, ha="left", va="top", gid="turn", obstacle=False)
     y -= row + 0.6
-    sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + " + force_math("F_b", lang)[1:-1] + r" \cdot " + force_math("h_b", lang)[1:-1] + "$",
+    sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + " + force_math("F_b", lang)[1:-1] + r" \cdot " + force_math("h_b", lang)[1:-1] + " = 0$",
                 size=CAPTION_PT, ha="left", va="top", gid="equation", obstacle=False, math=True)
     y -= row
     color, lw, dashes = CONSTRUCTION_STYLE  # the legend of the arm lines drawn from p

@@ -491,7 +491,7 @@ def _data_rows(scene, lang: str) -> tuple[str, list[list[str]], list[str]]:
     e = _offset(scene)
     if e is not None:
         heading += f";  {term('offset_e', lang)} e = {_mm(e)} mm"
-    rows = [[term("link", lang), f"m [{kg}]", term("mass_centre", lang), f"$J_{{S}}$ [{kg}·m²]"]]
+    rows = [[term("link", lang), f"$m$ [{kg}]", term("mass_centre", lang), f"$J_{{S}}$ [{kg}·m²]"]]
     for name, mass in scene.masses.items():
         rows.append([name, _given(mass.mass), _centre_words(scene, mass, lang), _given(mass.inertia)])
     lines = []
@@ -730,7 +730,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     if lever is not None:
         heading(term("joukowski_lever", lang))
         doc.line(_newtons(f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", lang), size=SMALL_PT)
-        doc.line(_newtons(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + "$", lang), size=TEXT_PT)
+        doc.line(_newtons(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + " = 0$", lang), size=TEXT_PT)
         doc.figure(f"{key}-lever", lever_svg(lever, lang))
         pages.images[f"{key}-lever"] = "lever"
         doc.body.append(_legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang))
