@@ -425,17 +425,22 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
         zs = pts + reach
         what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
         left = min(z.real for z in zs) - FREE_LABEL_MM
-        box = (left, max(max(z.real for z in zs) + FREE_LABEL_MM, left + text_size(what, CAPTION_PT)[0]),  # its name over it
-               min(z.imag for z in zs) - FREE_LABEL_MM, max(z.imag for z in zs) + FREE_LABEL_MM)
-        bodies.append((plan, links, box, acting, couples))
-    placed = [(body[0], body[1], complex(x - body[2][0], y - body[2][3]), body[3], body[4], body[2]) for body, (x, y) in
+        right = max(z.real for z in zs) + FREE_LABEL_MM
+        if text_size(what, CAPTION_PT)[0] > right - left and " (" in what:
+            what = what.replace(" (", "\n(", 1)  # a name wider than its body in two lines: "driving link 2" / "(crank)"
+        wide = max(text_size(line, CAPTION_PT)[0] for line in what.split("\n"))
+        box = (left, max(right, left + wide),  # its name over it
+               min(z.imag for z in zs) - FREE_LABEL_MM, max(z.imag for z in zs) + FREE_LABEL_MM + FREE_NAME_MM * (what.count("\n") + 1))
+        bodies.append((plan, links, box, acting, couples, what))
+    placed = [(body[0], body[1], complex(x - body[2][0], y - body[2][3]), body[3], body[4], body[2], body[5]) for body, (x, y) in
               zip(bodies, _arrange([b[2] for b in bodies], per_row, columns))]
-    for plan, links, shift, acting, couples, _ in placed:
+    for plan, links, shift, acting, couples, _, _ in placed:
         _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
     # each body's name over it
-    for plan, links, shift, _, _, box in placed:
-        what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
-        sketch.text(complex(box[0] + shift.real, box[3] + shift.imag + 2.5), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
+    for plan, links, shift, _, _, box, what in placed:
+        for k, line in enumerate(what.split("\n")):
+            sketch.text(complex(box[0] + shift.real, box[3] + shift.imag - k * FREE_NAME_MM), line, size=CAPTION_PT, ha="left", va="top",
+                        gid=f"heading-{plan.group}" + (f"-{k}" if k else ""))
     if caption:
         b = sketch.bounds
         sketch.text(complex(b.xmin, b.ymax + 6.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
@@ -443,14 +448,14 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
                     size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
 
 
-#: the height [mm] a body's name takes over it
-FREE_NAME_MM = 6.5
+#: the height [mm] a line of a body's name takes over it
+FREE_NAME_MM = 4.5
 
 
 def _arrange(boxes, per_row: int, columns: tuple[int, ...] | None = None) -> list[tuple[float, float]]:
     """The top-left corner [mm] of each of *boxes* (xmin, xmax, ymin, ymax): *per_row* to a row, each row under the one
     before; or, with *columns* (how many bodies each column holds, in order), in columns side by side, each body under
-    the one before (a tall body beside a column of small ones).  Room for each body's name over it."""
+    the one before (a tall body beside a column of small ones); each box holds its body's name over it."""
     corners = []
     if columns:
         x, k = 0.0, 0
@@ -458,8 +463,8 @@ def _arrange(boxes, per_row: int, columns: tuple[int, ...] | None = None) -> lis
             column = boxes[k:k + count]
             y = 0.0
             for box in column:
-                corners.append((x, y - FREE_NAME_MM))
-                y -= box[3] - box[2] + FREE_NAME_MM + FREE_GAP_MM
+                corners.append((x, y))
+                y -= box[3] - box[2] + FREE_GAP_MM
             x += max(box[1] - box[0] for box in column) + FREE_GAP_MM
             k += count
         return corners
@@ -468,9 +473,9 @@ def _arrange(boxes, per_row: int, columns: tuple[int, ...] | None = None) -> lis
         row = boxes[start:start + per_row]
         x = 0.0
         for box in row:
-            corners.append((x, y - FREE_NAME_MM))
+            corners.append((x, y))
             x += box[1] - box[0] + FREE_GAP_MM
-        y -= max(box[3] - box[2] for box in row) + FREE_NAME_MM + FREE_GAP_MM
+        y -= max(box[3] - box[2] for box in row) + FREE_GAP_MM
     return corners
 
 
