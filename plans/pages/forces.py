@@ -1,21 +1,33 @@
 """The kinetostatic pages of a position, set by Typst (``plans handout --forces``, ``plans forces -o``).
 
 Matplotlib draws only the drawings (:mod:`plans.drawing.force_blocks`): the
-free bodies of the groups and of the driver at a k_l of their own, each force
-plan at the position's one μ_F, Joukowski's lever at its velocity plan's k_v.
-They are placed at 100 %, so the scale factors the pages state hold on paper.
-Everything else is Typst's, in the reader's language: the headings (a group
-named as the course names it, "group 3–4 (II₁)"), the given loads (N, and mm at
-μ_F), what each plan's construction reads off it (R = drawn mm × μ_F; a
-reaction carried to the next plan as R_ji = −R_ij with the value found; the
-components Rᵗ found first; vectors too short for an arrow), M_b with its
-sense, the legends' words, the lever's moments about the pole and the table of
-the three methods (analytic, force plans, Joukowski's lever) with each
-method's difference from the analytic value.
+free bodies of the groups and of the driver at the plate's k_l (in a row, rows
+or columns, whichever fits; a coarser round k_l, stated in the title block,
+only where none does), each force plan at the position's one μ_F, Joukowski's
+lever at its velocity plan's k_v.  They are placed at 100 %, so the scale
+factors the pages state hold on paper.  Everything else is Typst's, in the
+reader's language: the headings (a group named as the course names it, "group
+3–4 (II₁)"), the input data of the force analysis (each link's m, centre of
+mass S and J_S, g, the external loads and where they act, the offset e of an
+offset slider-crank), the given loads (N, and mm at μ_F), what each plan's
+construction reads off it (R = drawn mm × μ_F; a reaction carried to the next
+plan as R_ji = −R_ij with the value found; the components Rᵗ found first;
+vectors too short for an arrow), each plan's equations
+(:mod:`plans.forces.plan_equations`: the vector equation with its known parts
+underlined once or twice, the moment equations that give Rᵗ and M_b written
+out with their measured arms), M_b with its sense, the legends' words, the
+lever's moments about the pole and the table of the three methods (analytic to
+4 significant figures, the graphical values to the digits their reading
+justifies) with each method's difference from the analytic value.  The
+balancing moment and force and the useful resistance carry the course's
+subscripts on a Russian or Bulgarian page (M_ур, F_ур, F_пс:
+:func:`plans.drawing.force_drawing.course_label`).
 
-Three pages a position: the free bodies with the given loads; the force plans
-(μ_F stated in the heading and in the title block); Joukowski's lever with the
-table of the three methods.
+Three pages a position: the free bodies with the input data and the given
+loads; the force plans (μ_F stated in the heading and in the title block) with
+their equations (on a page after them when keeping them on it would cost the
+plans more than :data:`EQUATION_COST` in μ_F); Joukowski's lever with the table
+of the three methods.
 
 μ_F is found from geometry: the plans are constructed once at their own round
 scales, drawn once to learn what does not scale (labels, margins), and μ_F is
