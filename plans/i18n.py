@@ -1296,3 +1296,48 @@ TERMS.update({
               "proti {analytic} {unit} analitično (δ {error} %); za manjšo napako narišite več leg (npr. {more})",
     },
 })
+
+
+# --- the force pages' input data (issue 22 review, branch r2-forces) ---------------------------------------
+TERMS.update({
+    "force_data": {
+        "en": "Data for the force analysis",
+        "sr": "Полазни подаци за кинетостатичку анализу",
+        "ru": "Исходные данные для силового расчёта",
+        "bg": "Изходни данни за силовия анализ",
+        "sl": "Vhodni podatki za kinetostatično analizo",
+    },
+    "mass_centre": {"en": "centre of mass S", "sr": "тежиште S", "ru": "центр масс S", "bg": "масов център S", "sl": "težišče S"},
+    # the offset of a slider-crank's guide from the crank's pivot (Russian, Bulgarian: дезаксиал e)
+    "offset_e": {"en": "offset", "sr": "ексцентрицитет", "ru": "дезаксиал", "bg": "дезаксиал", "sl": "izmik"},
+    "gravity_g": {
+        "en": "gravity",
+        "sr": "убрзање Земљине теже",
+        "ru": "ускорение свободного падения",
+        "bg": "земно ускорение",
+        "sl": "težni pospešek",
+    },
+    "downwards": {"en": "downwards", "sr": "наниже", "ru": "вниз", "bg": "надолу", "sl": "navzdol"},
+    "load_at": {
+        "en": "at {point} of link {link}",
+        "sr": "у тачки {point} члана {link}",
+        "ru": "в точке {point} звена {link}",
+        "bg": "в точка {point} на звено {link}",
+        "sl": "v točki {point} člena {link}",
+    },
+    "on_link": {"en": "on link {link}", "sr": "на члану {link}", "ru": "на звене {link}", "bg": "на звено {link}", "sl": "na členu {link}"},
+    "against_velocity": {
+        "en": "against the velocity of {point}",
+        "sr": "супротно брзини тачке {point}",
+        "ru": "против скорости точки {point}",
+        "bg": "срещу скоростта на точка {point}",
+        "sl": "nasproti hitrosti točke {point}",
+    },
+    "working_only": {
+        "en": "over the working stroke only",
+        "sr": "само током радног хода",
+        "ru": "только на рабочем ходу",
+        "bg": "само при работния ход",
+        "sl": "samo med delovnim gibom",
+    },
+})

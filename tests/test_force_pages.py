@@ -127,7 +127,7 @@ def test_the_pages_state_the_worked_example(worked, lang):
     assert round(r.length, 1) == pytest.approx(length)
     # M_b with its sense (counter-clockwise on the crank, §11) by the force plans and by the lever
     for page in texts[1:]:
-        m = re.search(r"Mb = [^\n]*?([0-9.,]+) (?:N|Н)·(?:m|м) ([↺↻])", page)
+        m = re.search(r"M(?:b|ур) = [^\n]*?([0-9.,]+) (?:N|Н)·(?:m|м) ([↺↻])", page)
         assert m, page
         assert m[2] == "↺"
         assert abs(_number(m[1]) - M_B) <= 0.01 * M_B
@@ -138,12 +138,13 @@ def test_the_three_methods_side_by_side(worked):
     row = re.search(r"Mb \[N·m\] ([0-9.]+) ([0-9.]+) ([0-9.]+) ([0-9.]+) ([0-9.]+)", texts[2])
     assert row, texts[2]
     analytic, plans_value, plans_delta, lever_value, lever_delta = (float(x) for x in row.groups())
-    assert analytic == pytest.approx(M_B, abs=1e-3)
+    assert analytic == pytest.approx(M_B, abs=0.05)  # to 4 significant figures
     for value, delta in ((plans_value, plans_delta), (lever_value, lever_delta)):
         assert abs(value - M_B) <= 0.01 * M_B
-        assert delta == pytest.approx(100 * abs(value - M_B) / M_B, abs=0.006)  # the difference the page states
+        # the difference the page states (of the value before it was rounded to its reading's digits)
+        assert delta == pytest.approx(100 * abs(value - M_B) / M_B, abs=0.006 + 100 * 0.5 / M_B)
     r12 = re.search(r"R12 \[N\] ([0-9.]+) ∠ ([0-9.]+)°", texts[2])
-    assert float(r12[1]) == pytest.approx(R_12, abs=0.01) and float(r12[2]) == pytest.approx(199.942051, abs=0.005)
+    assert float(r12[1]) == pytest.approx(R_12, abs=0.5) and float(r12[2]) == pytest.approx(199.942051, abs=0.05)
 
 
 def test_the_title_block_states_the_force_scale(worked):
@@ -210,9 +211,10 @@ def _force_pages(texts, lang):
 def test_no_program_token_on_any_force_page(six_bar_en, quick_return_sr):
     for (doc, texts), lang in ((six_bar_en, "en"), (quick_return_sr, "sr")):
         force = _force_pages(texts, lang)
-        # free bodies, force plans, the lever (and the three methods under it, or on a page after it: the lever is the
+        # free bodies, force plans (their equations under them, or on a page after them when the plans would lose
+        # too much for them), the lever (and the three methods under it, or on a page after it: the lever is the
         # velocity plan at the plate's k_v, which a one-position plate draws large)
-        assert len(force) in (3, 4), len(force)
+        assert len(force) in (3, 4, 5), len(force)
         for page in force:
             assert not any(t in page for t in TOKENS), page
         for key, svg in doc.images.items():

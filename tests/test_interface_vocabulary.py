@@ -377,6 +377,19 @@ VOCABULARY = {
     "centre_at_pin": {"sr": "у зглобу {pin}", "ru": "в шарнире {pin}", "bg": "в шарнира {pin}", "sl": "v zgibu {pin}"},
     "centre_perpendicular_guide": {"sr": "у бесконачности, управно на вођицу", "ru": "в бесконечности, перпендикулярно направляющей", "bg": "в безкрайността, перпендикулярно на водача", "sl": "v neskončnosti, pravokotno na vodilo"},
     "centres_order": {"sr": "Редослед налажења полова", "ru": "Порядок нахождения центров", "bg": "Ред на намиране на центровете", "sl": "Vrstni red iskanja polov"},
+    # the force pages' input data (issue 22 review)
+    "force_data": {"sr": "Полазни подаци за кинетостатичку анализу", "ru": "Исходные данные для силового расчёта",
+                   "bg": "Изходни данни за силовия анализ", "sl": "Vhodni podatki za kinetostatično analizo"},
+    "mass_centre": {"sr": "тежиште S", "ru": "центр масс S", "bg": "масов център S", "sl": "težišče S"},
+    "offset_e": {"sr": "ексцентрицитет", "ru": "дезаксиал", "bg": "дезаксиал", "sl": "izmik"},
+    "gravity_g": {"sr": "убрзање Земљине теже", "ru": "ускорение свободного падения", "bg": "земно ускорение", "sl": "težni pospešek"},
+    "downwards": {"sr": "наниже", "ru": "вниз", "bg": "надолу", "sl": "navzdol"},
+    "load_at": {"sr": "у тачки {point} члана {link}", "ru": "в точке {point} звена {link}", "bg": "в точка {point} на звено {link}",
+                "sl": "v točki {point} člena {link}"},
+    "on_link": {"sr": "на члану {link}", "ru": "на звене {link}", "bg": "на звено {link}", "sl": "na členu {link}"},
+    "against_velocity": {"sr": "супротно брзини тачке {point}", "ru": "против скорости точки {point}", "bg": "срещу скоростта на точка {point}",
+                         "sl": "nasproti hitrosti točke {point}"},
+    "working_only": {"sr": "само током радног хода", "ru": "только на рабочем ходу", "bg": "само при работния ход", "sl": "samo med delovnim gibom"},
 }
 
 #: domain.md §9, word for word: the headings every handout carries.

@@ -38,10 +38,12 @@ def _block(tag: str, draw, lang: str, margin: float = MARGIN_MM) -> SvgBlock:
         return figure_svg(fig, lang)
 
 
-def free_bodies_svg(forces, k_l: float, lang: str = "en", per_row: int | None = None, names: dict | None = None) -> SvgBlock:
-    """The free bodies of *forces* (:class:`plans.forces.force_plans.ForcePlans`) at *k_l* [m/mm], *per_row* to a row;
-    *names*: group -> the words written over its body."""
-    return _block("fbody", lambda s: draw_free_bodies_into(s, forces, lang=lang, caption=False, k_l=k_l, per_row=per_row, names=names), lang)
+def free_bodies_svg(forces, k_l: float, lang: str = "en", per_row: int | None = None, names: dict | None = None,
+                    columns: tuple[int, ...] | None = None) -> SvgBlock:
+    """The free bodies of *forces* (:class:`plans.forces.force_plans.ForcePlans`) at *k_l* [m/mm], *per_row* to a row
+    (or in *columns*, how many each holds); *names*: group -> the words written over its body."""
+    return _block("fbody", lambda s: draw_free_bodies_into(s, forces, lang=lang, caption=False, k_l=k_l, per_row=per_row, names=names,
+                                                           columns=columns), lang)
 
 
 def force_plan_svg(plan, lang: str = "en") -> SvgBlock:

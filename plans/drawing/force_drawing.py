@@ -43,6 +43,7 @@ __all__ = [
     "write_force_drawings",
     "force_drawing_files",
     "force_math",
+    "course_label",
     "draw_lever",
     "draw_lever_into",
     "FORCE_LEGEND",
@@ -50,11 +51,13 @@ __all__ = [
 ]
 
 #: Length of every force arrow on the free bodies [mm] (not to scale).
-FREE_ARROW_MM = 14.0
+FREE_ARROW_MM = 11.0
 #: Radius of a couple's arc on the free bodies [mm].
 COUPLE_R_MM = 6.0
 #: Space between two free bodies [mm].
-FREE_GAP_MM = 22.0
+FREE_GAP_MM = 6.0
+#: Room for a name beyond a free body's arrows [mm].
+FREE_LABEL_MM = 3.0
 #: How far a closing line runs past the intersection and behind its start [mm].
 PAST_MM = 8.0
 BEHIND_MM = 4.0
@@ -94,13 +97,32 @@ def _escape(text: str) -> str:
     return text
 
 
-def force_math(label: str) -> str:
-    """A force's label as mathtext: ``"R^t_23"`` → ``$R^{t}_{\\mathrm{23}}$``, ``"F_Φ3"``, a given load's name.
+#: the subscripts a course writes for the program's symbols, by language: the balancing moment and force (M_b,
+#: F_b and the lever's arm h_b: Russian M_ур, F_ур, уравновешивающий; Bulgarian уравновесяващ) and the useful
+#: resistance F_r (F_пс: сила полезного сопротивления / сила на полезното съпротивление).  Serbian, Slovenian
+#: and English keep b and r.
+COURSE_SUBSCRIPTS = {"ru": {"b": "ур", "r": "пс"}, "bg": {"b": "ур", "r": "пс"}}
+#: the program's symbols whose subscript is the course's (symbol -> the subscript key of COURSE_SUBSCRIPTS)
+_COURSE_SYMBOLS = {"M_b": "b", "F_b": "b", "h_b": "b", "F_r": "r"}
+
+
+def course_label(label: str, lang: str = "en") -> str:
+    """A force's label with the subscript the course in *lang* writes: ``"M_b"`` → ``"M_ур"`` in Russian and
+    Bulgarian (``"F_b"``, ``"h_b"`` likewise; the resistance ``"F_r"`` → ``"F_пс"``); any other label as it is."""
+    key = _COURSE_SYMBOLS.get(label)
+    if key is None or lang not in COURSE_SUBSCRIPTS:
+        return label
+    return f"{label.partition('_')[0]}_{COURSE_SUBSCRIPTS[lang][key]}"
+
+
+def force_math(label: str, lang: str = "en") -> str:
+    """A force's label as mathtext: ``"R^t_23"`` → ``$R^{t}_{\\mathrm{23}}$``, ``"F_Φ3"``, a given load's name;
+    ``"M_b"`` with the subscript of the course in *lang* (:func:`course_label`).
 
     The symbol, superscript and subscript are escaped (a load's name comes
     from the scene and is never read as a mathtext command).
     """
-    head, _, sub = label.partition("_")
+    head, _, sub = course_label(label, lang).partition("_")
     symbol, _, sup = head.partition("^")
     text = _escape(symbol) or " "
     if sup:
@@ -222,7 +244,7 @@ def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool
         if others and sum(abs(middle + across - q) for q in others) < sum(abs(middle - across - q) for q in others):
             across = -across  # on the side away from the other vectors
         rivals = tuple(seg for j, seg in enumerate(segments) if j != k and abs(seg[1] - seg[0]) > 1e-9)
-        place_label(sketch, middle, [(force_math(v.label), f"label-{_gid(v.label)}")], size=LABEL_PT if v.length >= 6 else SMALL_PT,
+        place_label(sketch, middle, [(force_math(v.label, lang), f"label-{_gid(v.label)}")], size=LABEL_PT if v.length >= 6 else SMALL_PT,
                     prefer=across, gaps=GAPS, mathtext=True, leader_from=4.0, color=FORCE_STYLE[v.kind][0] if v.kind != "reaction" else INK,
                     own=(tail, tip), rival_segments=rivals)
     if caption:
@@ -286,7 +308,7 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
         if v.label in plan.found or v.kind in ("normal", "tangential"):
             continue
         value = _number(given[v.label], lang) if given and v.label in given else _reading(v.value, _step(plan), lang)
-        line = f"{force_math(v.label)} = {value} N → {_reading(v.length, plan.precision, lang)} mm"
+        line = f"{force_math(v.label, lang)} = {value} N → {_reading(v.length, plan.precision, lang)} mm"
         if v.kind == "reaction":  # not found here: a reaction carried from a plan before, the value read there
             carried = found_at.get(v.label, plan.scale)
             note = term("carried", lang)
@@ -304,21 +326,21 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
     if tangential:
         y -= row
         sketch.text(complex(x, y), term("found_first", lang) + ":", size=CAPTION_PT, ha="left", va="top", gid="found-first", obstacle=False)
-        y = flow([(f"{force_math(v.label)} = {_reading(v.value, _step(plan), lang)} N → {_reading(v.length, plan.precision, lang)} mm",
+        y = flow([(f"{force_math(v.label, lang)} = {_reading(v.value, _step(plan), lang)} N → {_reading(v.length, plan.precision, lang)} mm",
                    f"reading-{_gid(v.label)}") for v in tangential], y, 2.0)
     for v in vectors:
         if v.label not in plan.found:
             continue
         y -= row
-        line = f"{force_math(v.label)} = {_reading(v.length, plan.precision, lang)} mm · {mu} N/mm = {_reading(v.value, _step(plan), lang)} N"
+        line = f"{force_math(v.label, lang)} = {_reading(v.length, plan.precision, lang)} mm · {mu} N/mm = {_reading(v.value, _step(plan), lang)} N"
         sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"reading-{_gid(v.label)}", obstacle=False, math=True)
     # notes on vectors too short for an arrow (their value in N too)
-    y = flow([(f"|{force_math(v.label)}| = {localised(f'{v.length:.2f}', lang)} mm "
+    y = flow([(f"|{force_math(v.label, lang)}| = {localised(f'{v.length:.2f}', lang)} mm "
                f"({_number(given[v.label], lang) if given and v.label in given else _reading(v.value, _step(plan), lang)} N)", f"short-{_gid(v.label)}")
               for v in vectors if v.length < SHORT_MM], y)
     if balancing_moment is not None:
         y -= row
-        sketch.text(complex(x, y), f"$M_{{\\mathrm{{b}}}}$ = {_number(abs(balancing_moment), lang)} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})",
+        sketch.text(complex(x, y), f"{force_math('M_b', lang)} = {_number(abs(balancing_moment), lang)} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})",
                     size=CAPTION_PT, ha="left", va="top", gid="reading-M_b", obstacle=False, math=True)
     if not legend:
         return
@@ -362,9 +384,10 @@ def draw_free_bodies(forces, ax=None, *, lang: str = "en", names: dict | None = 
 
 
 def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True, k_l: float | None = None, per_row: int | None = None,
-                          names: dict | None = None) -> None:
+                          names: dict | None = None, columns: tuple[int, ...] | None = None) -> None:
     """Draw the free bodies into *sketch* (see :func:`draw_free_bodies`), at *k_l* [m/mm], *per_row* of them in a
-    row (by default all in one), each row under the one before; *names*: group -> the words written over its
+    row (by default all in one), each row under the one before, or in *columns* (how many each holds; a tall body
+    beside a column of small ones); *names*: group -> the words written over its
     body (``"group 3–4"``; the group's own name without them).
 
     By default k_l is the round value that draws the largest free body 60–120 mm across (a group is
@@ -391,39 +414,69 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
             inner = {pair_label_of(r) for r in f if r.kind == "reaction" and _inside(r.label, links)}
             acting += [x for x in f if not (x.kind == "reaction" and x.label in inner)]
             couples += c
-        pts += [f.at / k_l for f in acting]
-        box = (min(z.real for z in pts), max(z.real for z in pts), min(z.imag for z in pts), max(z.imag for z in pts))
-        bodies.append((plan, links, box, acting, couples))
-    placed = []
-    y_next = 0.0
-    for start in range(0, len(bodies), per_row):
-        row = bodies[start:start + per_row]
-        height = max(box[3] - box[2] for _, _, box, _, _ in row) + 2 * FREE_ARROW_MM
-        x_next = 0.0
-        for plan, links, box, acting, couples in row:
-            xmin, xmax, ymin, ymax = box
-            shift = complex(x_next - xmin + FREE_ARROW_MM, y_next - FREE_ARROW_MM - ymax)
-            placed.append((plan, links, shift, acting, couples))
-            x_next += xmax - xmin + 2 * FREE_ARROW_MM + FREE_GAP_MM
-        y_next -= height + FREE_GAP_MM + 6.0  # and the next row's names
-    for plan, links, shift, acting, couples in placed:
+        # what the body takes with its arrows: a load's arrow from its point, a reaction's into its joint, a couple's
+        # arc about its centre, and room for their names
+        reach = [f.at / k_l + (1 if f.kind != "reaction" else -1) * f.force / abs(f.force) * (FREE_ARROW_MM + 2.0) for f in acting if abs(f.force)]
+        reach += [f.at / k_l for f in acting]
+        for c in couples:
+            if c.moment:
+                where = _pivot(g, c.body) if c.kind == "balancing" or forces.centres.get(c.body) is None else forces.centres[c.body].at
+                reach += [where / k_l + (COUPLE_R_MM + 2.0) * d for d in (1, 1j, -1, -1j)]
+        zs = pts + reach
+        what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
+        left = min(z.real for z in zs) - FREE_LABEL_MM
+        right = max(z.real for z in zs) + FREE_LABEL_MM
+        if text_size(what, CAPTION_PT)[0] > right - left and " (" in what:
+            what = what.replace(" (", "\n(", 1)  # a name wider than its body in two lines: "driving link 2" / "(crank)"
+        wide = max(text_size(line, CAPTION_PT)[0] for line in what.split("\n"))
+        box = (left, max(right, left + wide),  # its name over it
+               min(z.imag for z in zs) - FREE_LABEL_MM, max(z.imag for z in zs) + FREE_LABEL_MM + FREE_NAME_MM * (what.count("\n") + 1))
+        bodies.append((plan, links, box, acting, couples, what))
+    placed = [(body[0], body[1], complex(x - body[2][0], y - body[2][3]), body[3], body[4], body[2], body[5]) for body, (x, y) in
+              zip(bodies, _arrange([b[2] for b in bodies], per_row, columns))]
+    for plan, links, shift, acting, couples, _, _ in placed:
         _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
-    # each body's name over its row
-    for start in range(0, len(placed), per_row):
-        row = placed[start:start + per_row]
-        tops = []
-        for _, links, shift, acting, _ in row:
-            zs = [g.positions[n] / k_l + shift for body in links for n in g.scene.bodies[body].points] + [f.at / k_l + shift for f in acting]
-            tops.append(max(z.imag for z in zs) + FREE_ARROW_MM + 5.0)
-        for (plan, links, shift, _, _), top in zip(row, [max(tops)] * len(row)):
-            xs = [g.positions[n].real / k_l + shift.real for body in links for n in g.scene.bodies[body].points]
-            what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
-            sketch.text(complex(min(xs), top), what, size=CAPTION_PT, ha="left", va="bottom", gid=f"heading-{plan.group}")
+    # each body's name over it
+    for plan, links, shift, _, _, box, what in placed:
+        for k, line in enumerate(what.split("\n")):
+            sketch.text(complex(box[0] + shift.real, box[3] + shift.imag - k * FREE_NAME_MM), line, size=CAPTION_PT, ha="left", va="top",
+                        gid=f"heading-{plan.group}" + (f"-{k}" if k else ""))
     if caption:
         b = sketch.bounds
         sketch.text(complex(b.xmin, b.ymax + 6.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
         sketch.text(complex(b.xmin, b.ymin - 3.0), f"{scale_caption('k_l', fmt_number(k_l), 'm/mm', lang)};  {term('not_to_scale', lang)}",
                     size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
+
+
+#: the height [mm] a line of a body's name takes over it
+FREE_NAME_MM = 4.5
+
+
+def _arrange(boxes, per_row: int, columns: tuple[int, ...] | None = None) -> list[tuple[float, float]]:
+    """The top-left corner [mm] of each of *boxes* (xmin, xmax, ymin, ymax): *per_row* to a row, each row under the one
+    before; or, with *columns* (how many bodies each column holds, in order), in columns side by side, each body under
+    the one before (a tall body beside a column of small ones); each box holds its body's name over it."""
+    corners = []
+    if columns:
+        x, k = 0.0, 0
+        for count in columns:
+            column = boxes[k:k + count]
+            y = 0.0
+            for box in column:
+                corners.append((x, y))
+                y -= box[3] - box[2] + FREE_GAP_MM
+            x += max(box[1] - box[0] for box in column) + FREE_GAP_MM
+            k += count
+        return corners
+    y = 0.0
+    for start in range(0, len(boxes), per_row):
+        row = boxes[start:start + per_row]
+        x = 0.0
+        for box in row:
+            corners.append((x, y))
+            x += box[1] - box[0] + FREE_GAP_MM
+        y -= max(box[3] - box[2] for box in row) + FREE_GAP_MM
+    return corners
 
 
 def pair_label_of(force) -> str:
@@ -474,7 +527,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             labelled.add(n)
             if len(g.scene.bodies_with(n)) > 1:
                 sketch.circle(z, 1.1, fc="white", ec=INK, lw=0.8, gid=f"pin-{n}", zorder=4.5)
-            labels.append((z, [(n, f"point-{n}")], dict(size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0), leader_from=4.0)))
+            labels.append((z, [(_centre_name(n, body), f"point-{n}")], dict(size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0), leader_from=4.0)))
     for body in links:
         centre = forces.centres.get(body)
         if centre is not None:
@@ -513,7 +566,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0)
         sketch.obstacles.append(_segment_shape(tail, tip))
         end = tail if into else tip
-        labels.append((end, [(force_math(f.label), f"force-label-{_gid(f.label)}")],
+        labels.append((end, [(force_math(f.label, lang), f"force-label-{_gid(f.label)}")],
                        dict(size=LABEL_PT, prefer=-u if into else u, gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, leader_from=4.0,
                             color=color if f.kind != "reaction" else INK)))
     for c in couples:
@@ -535,10 +588,18 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         start = max((math.radians(145 + 45 * k) for k in range(8)),
                     key=lambda a: (round(min((abs(where + (radius + 3.0) * cmath.exp(1j * a) - z) for z in marks), default=0.0), 1), -abs(a - math.radians(145))))
         sketch.arc_arrow(where, radius, start, sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
-        labels.append((where + radius * cmath.exp(1j * start), [(force_math(c.label), f"couple-label-{_gid(c.label)}")],
+        labels.append((where + radius * cmath.exp(1j * start), [(force_math(c.label, lang), f"couple-label-{_gid(c.label)}")],
                        dict(size=LABEL_PT, prefer=cmath.exp(1j * start), gaps=(0.8, 1.8, 3.0), mathtext=True, leader_from=4.0, color=color)))
     for anchor, pieces, options in labels:
         place_label(sketch, anchor, pieces, **options)
+
+
+def _centre_name(point: str, body: str) -> str:
+    """A point's label on a free body: as the scene names it, but a centre of mass the scene names S and its link's
+    number (``S3`` on link 3) as the course writes it, S₃ (the number a subscript: it is the link's)."""
+    if point[:1] in "Ss" and point[1:] == body:
+        return point[0] + _digits(body)
+    return point
 
 
 def _on_segment(z: complex, a: complex, b: complex, tolerance: float = 0.3) -> bool:
@@ -753,7 +814,7 @@ def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = 
             continue
         u = f.force / abs(f.force)
         kind = _LEVER_KIND.get(f.kind, "external")
-        place_label(sketch, tip, [(force_math(names[id(f)]), f"force-label-{_gid(names[id(f)])}")], size=LABEL_PT,
+        place_label(sketch, tip, [(force_math(names[id(f)], lang), f"force-label-{_gid(names[id(f)])}")], size=LABEL_PT,
                     prefer=u, gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, leader_from=4.0, color=FORCE_STYLE[kind][0] if kind != "reaction" else INK)
     if caption:
         _lever_caption(sketch, lever, lang)
@@ -809,7 +870,7 @@ def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
     y -= row
     sketch.text(complex(x, y), term("lever_turned_ccw", lang), size=CAPTION_PT, ha="left", va="top", gid="turn", obstacle=False)
     y -= row + 0.6
-    sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$",
+    sketch.text(complex(x, y), r"$\Sigma M_{\mathrm{p}} = \Sigma F \cdot h + " + force_math("F_b", lang)[1:-1] + r" \cdot " + force_math("h_b", lang)[1:-1] + " = 0$",
                 size=CAPTION_PT, ha="left", va="top", gid="equation", obstacle=False, math=True)
     y -= row
     color, lw, dashes = CONSTRUCTION_STYLE  # the legend of the arm lines drawn from p
@@ -830,26 +891,26 @@ def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
         h = localised(f"{arm:.1f}", lang) + " mm"
         if arm < 0:
             h = f"({h})"
-        name = force_math(names[id(f)])
+        name = force_math(names[id(f)], lang)
         given = f"{name}: {_number(abs(f.force), lang)} N"
         pair = pairs.get((f.name, f.body), [])
         if len(pair) == 2 and (f.name, f.body) in moments:
             ends = [q.image.upper() for q in pair]
             couple = moments[(f.name, f.body)]
             length = abs(couple) / abs(f.force)  # the distance between the pair's points [m]
-            given = (f"{name} = {force_math(f.name)}/$l_{{\\mathrm{{{_escape(''.join(ends))}}}}}$ = {_number(abs(couple), lang)} N·m / "
+            given = (f"{name} = {force_math(f.name, lang)}/$l_{{\\mathrm{{{_escape(''.join(ends))}}}}}$ = {_number(abs(couple), lang)} N·m / "
                      f"{localised(f'{length:.4g}', lang)} m = {_number(abs(f.force), lang)} N ({f.image}"
                      + (f"; {term('lever_pair', lang).format(points=', '.join(q.image for q in pair))})" if f is pair[0] else ")"))
         line = f"{given} · {h} = {_number(f.moment, lang)} N·mm"
         sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(names[id(f)])}", obstacle=False, math=True)
     for c in lever.couples:
         y -= row
-        sketch.text(complex(x, y), f"{force_math(c.name)} = {_number(c.couple, lang)} N·m → {_number(c.moment, lang)} N·mm ({term('lever_block_couple', lang)})",
+        sketch.text(complex(x, y), f"{force_math(c.name, lang)} = {_number(c.couple, lang)} N·m → {_number(c.moment, lang)} N·mm ({term('lever_block_couple', lang)})",
                     size=CAPTION_PT, ha="left", va="top", gid=f"moment-{_gid(c.name)}", obstacle=False, math=True)
     y -= row
     if lever.balancing_kind == "moment":
-        result = (f"$M_{{\\mathrm{{b}}}}$ = $F_{{\\mathrm{{b}}}}$·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force), lang)} N · "
+        result = (f"{force_math('M_b', lang)} = {force_math('F_b', lang)}·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force), lang)} N · "
                   f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(abs(lever.balancing), lang)} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))})")
     else:
-        result = f"$F_{{\\mathrm{{b}}}}$ = {_number(lever.balancing, lang)} N ({_lower(term('balancing_force', lang))})"
+        result = f"{force_math('F_b', lang)} = {_number(lever.balancing, lang)} N ({_lower(term('balancing_force', lang))})"
     sketch.text(complex(x, y), result, size=CAPTION_PT, ha="left", va="top", gid="result", obstacle=False, math=True)

@@ -1,21 +1,33 @@
 """The kinetostatic pages of a position, set by Typst (``plans handout --forces``, ``plans forces -o``).
 
 Matplotlib draws only the drawings (:mod:`plans.drawing.force_blocks`): the
-free bodies of the groups and of the driver at a k_l of their own, each force
-plan at the position's one μ_F, Joukowski's lever at its velocity plan's k_v.
-They are placed at 100 %, so the scale factors the pages state hold on paper.
-Everything else is Typst's, in the reader's language: the headings (a group
-named as the course names it, "group 3–4 (II₁)"), the given loads (N, and mm at
-μ_F), what each plan's construction reads off it (R = drawn mm × μ_F; a
-reaction carried to the next plan as R_ji = −R_ij with the value found; the
-components Rᵗ found first; vectors too short for an arrow), M_b with its
-sense, the legends' words, the lever's moments about the pole and the table of
-the three methods (analytic, force plans, Joukowski's lever) with each
-method's difference from the analytic value.
+free bodies of the groups and of the driver at the plate's k_l (in a row, rows
+or columns, whichever fits; a coarser round k_l, stated in the title block,
+only where none does), each force plan at the position's one μ_F, Joukowski's
+lever at its velocity plan's k_v.  They are placed at 100 %, so the scale
+factors the pages state hold on paper.  Everything else is Typst's, in the
+reader's language: the headings (a group named as the course names it, "group
+3–4 (II₁)"), the input data of the force analysis (each link's m, centre of
+mass S and J_S, g, the external loads and where they act, the offset e of an
+offset slider-crank), the given loads (N, and mm at μ_F), what each plan's
+construction reads off it (R = drawn mm × μ_F; a reaction carried to the next
+plan as R_ji = −R_ij with the value found; the components Rᵗ found first;
+vectors too short for an arrow), each plan's equations
+(:mod:`plans.forces.plan_equations`: the vector equation with its known parts
+underlined once or twice, the moment equations that give Rᵗ and M_b written
+out with their measured arms), M_b with its sense, the legends' words, the
+lever's moments about the pole and the table of the three methods (analytic to
+4 significant figures, the graphical values to the digits their reading
+justifies) with each method's difference from the analytic value.  The
+balancing moment and force and the useful resistance carry the course's
+subscripts on a Russian or Bulgarian page (M_ур, F_ур, F_пс:
+:func:`plans.drawing.force_drawing.course_label`).
 
-Three pages a position: the free bodies with the given loads; the force plans
-(μ_F stated in the heading and in the title block); Joukowski's lever with the
-table of the three methods.
+Three pages a position: the free bodies with the input data and the given
+loads; the force plans (μ_F stated in the heading and in the title block) with
+their equations (on a page after them when keeping them on it would cost the
+plans more than :data:`EQUATION_COST` in μ_F); Joukowski's lever with the table
+of the three methods.
 
 μ_F is found from geometry: the plans are constructed once at their own round
 scales, drawn once to learn what does not scale (labels, margins), and μ_F is
@@ -27,6 +39,7 @@ runs over its cell.
 
 from __future__ import annotations
 
+import cmath
 import math
 import re
 from dataclasses import dataclass, field
@@ -49,6 +62,10 @@ FREE_BODIES_BOX = (175.0, 170.0)
 PLAN_CELL_MAX = 120.0
 #: the height of a line of readings under a plan [mm] (8 pt with its leading)
 READING_LINE = 3.9
+#: the height of a line of the plans' equations [mm] (8 pt math, room for a double underline)
+EQUATION_LINE = 5.0
+#: the equations share the plans' page when μ_F grows at most this much for them (60 → 100 N/mm: the plans three fifths as large)
+EQUATION_COST = 1.7
 
 
 @dataclass
@@ -105,10 +122,10 @@ def _scale(value: float) -> str:
     return fmt_number(value)
 
 
-def _math(label: str) -> str:
+def _math(label: str, lang: str = "en") -> str:
     from ..drawing.force_drawing import force_math
 
-    return force_math(label)
+    return force_math(label, lang)
 
 
 def _lower(words: str) -> str:
@@ -225,12 +242,13 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
     return mu, plans, blocks, min(columns, len(plans.plans))
 
 
-def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX):
-    """(k_l [m/mm], block): the free bodies in one row or two, at the round k_l that draws them largest within *box*."""
+def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, k_plate: float | None = None):
+    """(k_l [m/mm], block): the free bodies in one row, two or a grid, at the plate's *k_plate* [m/mm] when they fit
+    *box* at it in one of those arrangements (the plate's one k_l on every page), else at the round k_l that draws
+    them largest within *box* (coarser than the plate's: the page states it)."""
     from ..drawing.force_blocks import free_bodies_svg
 
     count = len(plans.plans)
-    best = None
     g = graphical
     spans = []
     for plan in plans.plans:
@@ -238,10 +256,26 @@ def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX):
         zs += [f.at for body in plan.links for f in plans.on(body)[0]]
         spans.append((max(z.real for z in zs) - min(z.real for z in zs), max(z.imag for z in zs) - min(z.imag for z in zs)))
     drawn = _drawn_names(names)
-    for per_row in dict.fromkeys([count, -(-count // 2)]):
+    arrangements = list(dict.fromkeys([count, -(-count // 2), -(-count // 3), 1]))
+
+    def fits(block) -> bool:
+        return block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5
+
+    if k_plate:
+        # the plate's k_l in the first arrangement it fits: rows of bodies, or columns side by side (a tall body
+        # beside a column of small ones)
+        tried = [(per_row, None) for per_row in arrangements]
+        if 2 < count <= 6:
+            tried[1:1] = [(None, split) for split in _splits(count) if 1 < len(split) < count]
+        for per_row, columns in tried:
+            block = free_bodies_svg(plans, k_plate, lang, per_row, drawn, columns)
+            if fits(block):
+                return k_plate, block
+    best = None
+    for per_row in arrangements[:2]:
         rows = [spans[k:k + per_row] for k in range(0, count, per_row)]
         extent = (max(sum(w for w, _ in row) for row in rows), sum(max(h for _, h in row) for row in rows))
-        k0 = g.scales["k_l"]
+        k0 = k_plate or g.scales["k_l"]
         block = free_bodies_svg(plans, k0, lang, per_row, drawn)
         need = 0.0
         for size, size_drawn, room in zip(extent, (block.width, block.height), box):
@@ -251,12 +285,19 @@ def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX):
         k = round_up(need) if need > 0 else k0
         for _ in range(6):
             block = free_bodies_svg(plans, k, lang, per_row, drawn)
-            if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
+            if fits(block):
                 break
             k = round_up(k * 1.0001)
         if best is None or k < best[0]:
             best = (k, block)
     return best
+
+
+def _splits(n: int) -> list[tuple[int, ...]]:
+    """Every way of cutting *n* bodies, in their order, into consecutive runs (how many each run holds)."""
+    if n == 0:
+        return [()]
+    return [(first,) + rest for first in range(1, n + 1) for rest in _splits(n - first)]
 
 
 # --- what the pages say -----------------------------------------------------------------------
@@ -277,22 +318,102 @@ def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en") -> list[s
     for v in vectors:
         if v.kind == "reaction" and v.label not in plan.found:
             head, _, sub = v.label.partition("_")
-            opposite = f" = −{_math(f'R_{sub[::-1]}')}" if head == "R" and len(sub) == 2 else ""
-            lines.append(f"{_math(v.label)}{opposite} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm "
+            opposite = f" = −{_math(f'R_{sub[::-1]}', lang)}" if head == "R" and len(sub) == 2 else ""
+            lines.append(f"{_math(v.label, lang)}{opposite} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm "
                          f"({term('carried', lang)})")
     tangential = [v for v in vectors if v.kind == "tangential"]
     if tangential:
         lines.append(f"{term('found_first', lang)}: " + ";  ".join(
-            f"{_math(v.label)} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm" for v in tangential))
+            f"{_math(v.label, lang)} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm" for v in tangential))
     for v in vectors:
         if v.label in plan.found:
-            lines.append(f"{_math(v.label)} = {_reading(v.length, plan.precision)} mm · {mu} N/mm = {_reading(v.value, _step(plan))} N")
+            lines.append(f"{_math(v.label, lang)} = {_reading(v.length, plan.precision)} mm · {mu} N/mm = {_reading(v.value, _step(plan))} N")
     short = [v for v in vectors if v.length < SHORT_MM]
     if short:
-        lines.append(";  ".join(f"|{_math(v.label)}| = {v.length:.2f} mm ({_number(given[v.label]) if v.label in given else _reading(v.value, _step(plan))} N)"
+        lines.append(";  ".join(f"|{_math(v.label, lang)}| = {v.length:.2f} mm ({_number(given[v.label]) if v.label in given else _reading(v.value, _step(plan))} N)"
                                 for v in short))
     if balancing_moment is not None:
-        lines.append(f"$M_{{\\mathrm{{b}}}}$ = {_number(abs(balancing_moment))} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})")
+        lines.append(f"{_math('M_b', lang)} = {_number(abs(balancing_moment))} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})")
+    return lines
+
+
+# --- the equations each plan is drawn from ------------------------------------------------------
+
+
+def _typst_symbol(label: str, lang: str) -> str:
+    """A force's label as Typst math (its course subscript in *lang*)."""
+    from .typesetting import math as typst_math
+
+    return typst_math(_math(label, lang)[1:-1])
+
+
+def _marked(label: str, known: str, lang: str) -> str:
+    """A vector of an equation underlined as the course marks it: twice (magnitude and direction known), once
+    (direction), not at all (sought)."""
+    from .equations import once, twice
+
+    body = _typst_symbol(label, lang)
+    return twice(body) if known == "full" else once(body) if known == "direction" else body
+
+
+def _quoted(value: float, lang: str, digits: int = 4) -> str:
+    """A number as a Typst math string, to *digits* significant figures, with the language's decimal sign."""
+    from .._text import decimal_comma
+
+    return '"' + decimal_comma(_number(value, digits), lang) + '"'
+
+
+def _signed(terms) -> str:
+    """Terms (sign, math) joined as an equation's side: ``a + b − c`` (a leading minus kept)."""
+    out = ""
+    for k, (sign, body) in enumerate(terms):
+        out += (("−" if sign < 0 else "") if k == 0 else (" − " if sign < 0 else " + ")) + body
+    return out
+
+
+def _equation_lines(eq, lang: str) -> list[str]:
+    """A plan's equations as Typst markup lines: the polygon's vector equation (known parts underlined); each
+    moment equation that gives an Rᵗ first, in letters and in numbers (arms measured on the drawing, m) with the
+    Rᵗ it gives; the inner reaction's equation over one link; the driver's moment equation that gives M_b."""
+    newton = _NEWTON.get(lang, "N")
+    metre = "м" if lang in ("ru", "bg") else "m"
+    lines = []
+    if eq.polygon:
+        lines.append("$" + " + ".join(_marked(label, known, lang) for label, known in eq.polygon) + " = 0$")
+    for m in eq.moments:
+        r = _typst_symbol(m.label, lang)
+        letters = [(m.sign, f'{r} dot l_("{m.joint}{m.about}")')]
+        numbers = [(m.sign, f"{r} dot {_quoted(m.length, lang)}")]
+        k = 0
+        for t in m.terms:
+            symbol = _typst_symbol(t.label, lang)
+            if t.arm is None:
+                letters.append((t.moment, symbol))
+                numbers.append((t.moment, _quoted(t.size, lang)))
+            else:
+                k += 1
+                letters.append((t.moment, f"{symbol} dot h_{k}"))
+                numbers.append((t.moment, f"{_quoted(t.size, lang)} dot {_quoted(t.arm, lang)}"))
+        lines.append(f'$Σ M_("{m.about}") ("{m.link}") = 0: quad {_signed(letters)} = 0$')
+        lines.append(f'${_signed(numbers)} = 0 quad ⇒ quad {r} = {_quoted(m.value, lang)} "{newton}"$')
+    if eq.inner:
+        lines.append("$" + " + ".join(_marked(label, known, lang) for label, known in eq.inner) + " = 0$")
+    if eq.balancing:
+        b = _typst_symbol("M_b", lang)
+        letters, numbers = [(1, b)], [(1, b)]
+        k = 0
+        for t in eq.balancing:
+            symbol = _typst_symbol(t.label, lang)
+            if t.arm is None:
+                letters.append((t.moment, symbol))
+                numbers.append((t.moment, _quoted(t.size, lang)))
+            else:
+                k += 1
+                letters.append((t.moment, f"{symbol} dot h_{k}"))
+                numbers.append((t.moment, f"{_quoted(t.size, lang)} dot {_quoted(t.arm, lang)}"))
+        value = -sum(t.moment for t in eq.balancing)
+        lines.append(f'$Σ M_("{eq.pivot}") ("{eq.crank}") = 0: quad {_signed(letters)} = 0$')
+        lines.append(f'${_signed(numbers)} = 0 quad ⇒ quad {b} = {_quoted(value, lang)} "{newton}·{metre}"$')
     return lines
 
 
@@ -309,18 +430,111 @@ def _loads_table(plans, lang: str) -> list[list[str]]:
     rows = [["", term("link", lang), term("kind", lang), "N, N·m", "mm ($μ_F$)"]]
     for f in plans.loads:
         length = drawn.get(f.label)
-        rows.append([_math(f.label), f.body, term(_LOAD_KIND.get(f.kind, "external_force"), lang), f"{_number(abs(f.force))} N",
+        rows.append([_math(f.label, lang), f.body, term(_LOAD_KIND.get(f.kind, "external_force"), lang), f"{_number(abs(f.force))} N",
                      _reading(*length) if length else "—"])
     for c in plans.couples:
         if c.kind == "balancing" or c.moment == 0:
             continue
-        rows.append([_math(c.label), c.body, term("inertia_couple" if c.kind == "inertia" else "couple", lang), f"{_number(c.moment)} N·m", "—"])
+        rows.append([_math(c.label, lang), c.body, term("inertia_couple" if c.kind == "inertia" else "couple", lang), f"{_number(c.moment)} N·m", "—"])
     return rows
 
 
-def _methods_table(comparisons, analytic, lang: str) -> list[list[str]]:
+def _mm(value: float) -> str:
+    """A length [m] in mm as the data give it (to 0.1 mm, no trailing zeros)."""
+    return _minus(f"{value * 1000:.1f}".rstrip("0").rstrip("."))
+
+
+def _given(value: float) -> str:
+    """A datum as given (up to 6 significant figures, no trailing zeros: 2 kg is "2", 0.004 kg·m² "0.004")."""
+    return _minus(f"{value:.6g}") if "e" not in f"{value:.6g}" else _number(value)
+
+
+def _centre_words(scene, mass, lang: str) -> str:
+    """Where the centre of mass S of a body lies, as a course's data state it: at a joint (``S₄ ≡ B``), or its distance
+    from the body's first point along the line to the next (``l_OS₂ = 40 mm``), with the angle from that line when
+    off it."""
+    from .._text import subscript
+
+    body = scene.bodies[mass.body]
+    s = f"S{subscript(mass.body)}"
+    if mass.point is not None and len(scene.bodies_with(mass.point)) > 1:  # at a joint (a block's pin)
+        return f"{s} ≡ {mass.point}"
+    at = {n: z for n, z in body.points.items() if n != mass.point}
+    same = next((n for n, z in at.items() if abs(z - mass.centre) <= 1e-9), None)
+    if same is not None:
+        return f"{s} ≡ {same}"
+    if not at:
+        return s
+    names = list(at)
+    first = names[0]
+    origin = at[first]
+    distance = abs(mass.centre - origin)
+    words = f"$l_{{\\mathrm{{{first}{s}}}}}$ = {_mm(distance)} mm"
+    second = next((n for n in names[1:] if abs(at[n] - origin) > 1e-12), None)
+    if second is not None:
+        turn = math.degrees(cmath.phase((mass.centre - origin) / (at[second] - origin)))
+        if abs(turn) > 0.05:  # off the line first–second: the angle from it, counter-clockwise
+            words += f", ∠({first}{second}, {first}{s}) = {_minus(f'{turn:.1f}')}°"
+    return words
+
+
+def _offset(scene) -> float | None:
+    """The offset e [m] of a slider-crank's guide from the crank's pivot (None: not an offset slider-crank)."""
+    from ..scene import Crank
+
+    frame = next(iter(scene.bodies))
+    moving = [b for b in scene.bodies if b != frame]
+    if not isinstance(scene.driver, Crank) or len(scene.prismatics) != 1 or len(moving) != 3:
+        return None
+    p = scene.prismatics[0]
+    if p.guide != frame:
+        return None
+    line = scene.line(f"{p.guide}.{p.guide_line}")
+    pivot = scene.bodies[frame].points[scene.driver.pivot]
+    e = abs(((pivot - line.origin) * cmath.exp(-1j * line.angle)).imag)
+    return e if e > 1e-9 else None
+
+
+def _data_rows(scene, lang: str) -> tuple[str, list[list[str]], list[str]]:
+    """The input data of the force analysis: (heading with the offset e of an offset slider-crank, the table of the
+    links' masses — link, m [kg], centre of mass S, J_S [kg·m²] — and the lines of gravity and the external loads)."""
+    kg = "kg"
+    heading = term("force_data", lang)
+    e = _offset(scene)
+    if e is not None:
+        heading += f";  {term('offset_e', lang)} e = {_mm(e)} mm"
+    rows = [[term("link", lang), f"$m$ [{kg}]", term("mass_centre", lang), f"$J_{{S}}$ [{kg}·m²]"]]
+    for name, mass in scene.masses.items():
+        rows.append([name, _given(mass.mass), _centre_words(scene, mass, lang), _given(mass.inertia)])
+    lines = []
+    if scene.gravity is not None and scene.gravity.g:
+        g = scene.gravity
+        way = term("downwards", lang) if abs(g.angle + math.pi / 2) < 1e-9 else f"∠ {_minus(f'{math.degrees(g.angle) % 360:.1f}')}°"
+        lines.append(f"{term('gravity_g', lang)}: g = {_given(g.g)} m/s², {way}")
+    for load in scene.loads:
+        name = _math(load.name, lang)
+        where = load.point if load.point is not None else f"({_mm(load.at.real)}; {_mm(load.at.imag)}) mm"
+        if load.kind == "moment":
+            lines.append(f"{name} = {_number(load.moment)} N·m{' ↺' if load.moment > 0 else ' ↻'}, {term('on_link', lang).format(link=load.body)}")
+            continue
+        at = term("load_at", lang).format(point=where, link=load.body)
+        if load.kind == "resistance":
+            line = f"{name} = {_number(load.magnitude)} N, {at}, {term('against_velocity', lang).format(point=where)}"
+        else:
+            f = complex(load.force)
+            line = f"{name} = {_number(abs(f))} N ∠ {math.degrees(math.atan2(f.imag, f.real)) % 360:.1f}°, {at}"
+        if load.working is not None:
+            line += f" ({term('working_only', lang)})"
+        lines.append(line)
+    return heading, rows, lines
+
+
+def _methods_table(comparisons, analytic, lang: str, plans=None, lever=None) -> list[list[str]]:
     """The three methods side by side: M_b (or F_b) by analytic, force plans and the lever; each reaction by
-    analytic and force plans; each method's difference from the analytic value [%]."""
+    analytic and force plans; each method's difference from the analytic value [%].
+
+    The analytic values to 4 significant figures; a graphical value to the digits its reading justifies
+    (:func:`_method_steps`), as the kinematic tables print the plans' readings."""
     from ..forces.report import method_name
 
     rows = [[term("quantity", lang), method_name("analytic", lang), method_name("force_plans", lang), "δ [%]", method_name("lever", lang), "δ [%]"]]
@@ -328,23 +542,59 @@ def _methods_table(comparisons, analytic, lang: str) -> list[list[str]]:
     symbol = "M_b" if analytic.balancing_kind == "moment" else "F_b"
     unit = "N·m" if symbol == "M_b" else "N"
     exact = float(analytic.balancing[0])
-    row = [f"${symbol[0]}_{{\\mathrm{{b}}}}$ [{unit}]", _number(exact, 6)]
+    steps = _method_steps(plans, lever, symbol)
+    row = [f"{_math(symbol, lang)} [{unit}]", _number(exact)]
     for method in ("force_plans", "lever"):
         c = by.get((symbol, method))
-        row += [_number(c.value.real, 6), _percent(c.rel_error)] if c is not None else ["—", "—"]
+        row += [_stepped(c.value.real, steps[method]), _percent(c.rel_error)] if c is not None else ["—", "—"]
     rows.append(row)
     for label, reaction in analytic.reactions.items():
         force = complex(reaction.force[0])
         c = by.get((label, "force_plans"))
         cell = _polar(force)
-        rows.append([f"{_math(label)} [N]", cell, _polar(complex(c.value)) if c is not None else "—", _percent(c.rel_error) if c is not None else "—", "", ""])
+        rows.append([f"{_math(label, lang)} [N]", cell, _polar(complex(c.value), steps["reaction"]) if c is not None else "—",
+                     _percent(c.rel_error) if c is not None else "—", "", ""])
     return rows
 
 
-def _polar(z: complex) -> str:
+def _method_steps(plans, lever, symbol: str) -> dict[str, float | None]:
+    """The resolution of each graphical value of the three methods' table: a reaction read off a plan, one drafting
+    step (its precision [mm]) × μ_F [N]; M_b by the force plans, that step × the longest arm on the crank [N·m]
+    (F_b of a linear driver: the step itself); M_b by the lever, |M_b| × the step ÷ the balancing force's arm h_b
+    [mm] (F_b likewise).  None where readings are exact (no precision)."""
+    steps: dict[str, float | None] = {"force_plans": None, "lever": None, "reaction": None}
+    if plans is not None:
+        driver = next((p for p in plans.plans if p.group == "driver"), None)
+        precision = next((p.precision for p in plans.plans if p.precision), None)
+        if precision and driver is not None:
+            steps["reaction"] = precision * driver.scale
+            if symbol == "M_b":
+                g = plans.graphical
+                link = g.scene.driver.link
+                pivot = g.positions[g.scene.driver.pivot]
+                steps["force_plans"] = steps["reaction"] * max(abs(g.positions[n] - pivot) for n in g.scene.bodies[link].points)
+            else:
+                steps["force_plans"] = steps["reaction"]
+    if lever is not None and plans is not None and steps["reaction"] is not None:
+        arm = abs(lever.balancing_force.arm)
+        precision = steps["reaction"] / next(p.scale for p in plans.plans if p.group == "driver")
+        if arm > 0:
+            steps["lever"] = abs(lever.balancing) * precision / arm
+    return steps
+
+
+def _stepped(value: float, step: float | None) -> str:
+    """A graphical value to the decimals its resolution *step* justifies (4 significant figures without one)."""
+    from ..report import reading_number
+
+    return _minus(reading_number(value, step)) if step else _number(value)
+
+
+def _polar(z: complex, step: float | None = None) -> str:
+    """|z| ∠ its angle: the analytic value to 4 significant figures, a reading to its *step* [N]; 0…360° to 0.1°."""
     if abs(z) == 0:
         return "0"
-    return f"{_number(abs(z), 6)} ∠ {math.degrees(math.atan2(z.imag, z.real)) % 360.0:.2f}°"
+    return f"{_stepped(abs(z), step)} ∠ {math.degrees(math.atan2(z.imag, z.real)) % 360.0:.1f}°"
 
 
 def _percent(rel: float) -> str:
@@ -385,11 +635,12 @@ _NEWTON = {"ru": "Н", "bg": "Н"}
 
 
 def _newtons(line: str, lang: str) -> str:
-    """*line* with the unit N (outside its ``$…$`` math) as the course in *lang* writes it."""
+    """*line* with the units N and kg (outside its ``$…$`` math) as the course in *lang* writes them."""
     if lang not in _NEWTON:
         return line
     pieces = re.split(r"(?<!\\)(\$[^$]*\$)", line)
-    return "".join(p if p.startswith("$") else re.sub(r"(?<![\w\\{])N(?=[·/ \])\];,]|$)", _NEWTON[lang], p) for p in pieces)
+    return "".join(p if p.startswith("$") else re.sub(r"(?<![\w\\{])N(?=[·/ \])\];,]|$)", _NEWTON[lang], p).replace("kg·m²", "кг·м²").replace("kg", "кг")
+                   for p in pieces)
 
 
 def _words(doc: Document, line: str) -> str:
@@ -412,15 +663,26 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     from ..drawing.force_blocks import lever_svg
     from ..drawing.force_drawing import given_loads, legend_kinds
     from ..forces.compare import compare_forces
+    from ..forces.plan_equations import plan_equations
 
     lang = doc.lang
-    mu, plans, blocks, columns = force_scale(graphical, lang, doc.page.text_width, doc.page.text_height - 33.0)
+    # the plans' equations under them on their page when that costs the plans at most one round step of μ_F;
+    # else the plans keep their room and the equations go over to the next page
+    room = doc.page.text_height - 33.0
+    alone = force_scale(graphical, lang, doc.page.text_width, room)
+    equations = sum(EQUATION_LINE * (len(_equation_lines(e, lang)) + 1) + 2.0 for e in plan_equations(alone[1])) + 3.0
+    together = force_scale(graphical, lang, doc.page.text_width, room - equations) if equations < room / 2 else None
+    mu, plans, blocks, columns = together if together is not None and together[0] <= EQUATION_COST * alone[0] else alone
     names = group_names(plans.plans, lang)
     loads = _loads_table(plans, lang)
-    # what the free bodies' page sets beside them: heading (and the position), k_l, legend, the loads' table
-    text = 16.0 + (5.0 if where else 0.0) + 5.0 + 4.6 * -(-len(_body_kinds(plans)) // 2) + 8.0 + 4.2 * len(loads) + 6.0
+    data_heading, data, data_lines = _data_rows(graphical.scene, lang)
+    # what the free bodies' page sets beside them: heading (and the position), k_l, legend, the input data and the
+    # loads' table side by side
+    tables = max(4.2 * len(loads) + 6.0, 4.2 * len(data) + 6.0 + 4.6 * len(data_lines))
+    text = 16.0 + (5.0 if where else 0.0) + 5.0 + 4.6 * -(-len(_body_kinds(plans)) // 2) + 8.0 + tables + 6.0
     box = (doc.page.text_width, min(FREE_BODIES_BOX[1], doc.page.text_height - text))
-    k_l, free = _free_bodies(plans, graphical, lang, names, box)
+    plate_kl = doc.plate.get("k_l")
+    k_l, free = _free_bodies(plans, graphical, lang, names, box, plate_kl)
     pages = ForcePages(mu, k_l, plans)
     mu_words = f"$μ_{{F}}$ = {_scale(mu)} N/mm"
     head = term("kinetostatics", lang)
@@ -432,7 +694,6 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
 
     # 1. the free bodies, the given loads and the legend
     heading(_lower(term("free_bodies", lang)))
-    plate_kl = doc.plate.get("k_l")
     if plate_kl is not None:
         doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])")  # the title block states the free bodies' k_l
     _scale_note(doc, mu_words)
@@ -440,7 +701,10 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     pages.images[f"{key}-free-bodies"] = "free-bodies"
     doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}", lang), size=SMALL_PT)
     doc.body.append(_legend(doc, f"{key}-bodies-legend", _body_kinds(plans), lang))
-    doc.body.append(_table(doc, loads, "(left, left, left, right, right)", f"{term('loads', lang)}: {mu_words}"))
+    given_data = _table(doc, data, "(left, right, left, right)", data_heading) + "".join(
+        f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines)
+    given_loads_table = _table(doc, loads, "(left, left, left, right, right)", f"{term('loads', lang)}: {mu_words}")
+    doc.body.append(f"#grid(columns: (auto, auto), column-gutter: {GUTTER}mm, align: top + left,\n  [{given_data}],\n  [{given_loads_table}])\n")
 
     # 2. the force plans at one μ_F
     heading(f"{_lower(term('force_plans', lang))}; {mu_words}")
@@ -448,19 +712,29 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', plate_kl)}])")
     _scale_note(doc, mu_words)
     given = given_loads(plans)
+    written = {e.group: e for e in plan_equations(plans)}
     items = []
     for plan, block in zip(plans.plans, blocks):
         image_key = f"{key}-plan-{len(items) + 1}" if plan.group != "driver" else f"{key}-plan-driver"
         pages.images[image_key] = f"plan:{plan.group}"
         moment = plans.balancing_moment if plan.group == "driver" else None
         lines = _plan_lines(plan, given, moment, lang)
-        parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]",
-                 f"#align(center)[#{doc.add_image(image_key, block)}]"]
+        parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]"]
+        parts.append(f"#align(center)[#{doc.add_image(image_key, block)}]")
         parts += [f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}]" for line in lines]
         items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]")
     doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
     kinds, closing = legend_kinds(plans.plans)
-    doc.body.append("#v(1fr)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
+    doc.body.append("#v(2mm)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
+    # the equations each plan is drawn from, across the page under the plans and their legend (on the next page
+    # when they do not fit: the plans keep the room μ_F was chosen for); each plan's whole
+    doc.body.append("#v(3mm)\n")
+    for plan in plans.plans:
+        lines = _equation_lines(written[plan.group], lang)
+        if lines:
+            rows = [f"[#text(weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]]"] + [f"[{line}]" for line in lines]
+            doc.body.append(f"#block(breakable: false, below: 1.5mm)[#text(size: {SMALL_PT}pt)[#table(columns: 1, stroke: none, "
+                            f"inset: (x: 0mm, y: 0.9mm), row-gutter: 1.2mm, {', '.join(rows)})]]\n")
 
     # 3. Joukowski's lever and the three methods
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
@@ -468,7 +742,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     if lever is not None:
         heading(term("joukowski_lever", lang))
         doc.line(_newtons(f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", lang), size=SMALL_PT)
-        doc.line(_newtons(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + F_{\mathrm{b}} \cdot h_{\mathrm{b}} = 0$", lang), size=TEXT_PT)
+        doc.line(_newtons(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + " = 0$", lang), size=TEXT_PT)
         doc.figure(f"{key}-lever", lever_svg(lever, lang))
         pages.images[f"{key}-lever"] = "lever"
         doc.body.append(_legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang))
@@ -478,7 +752,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     elif comparisons:
         doc.body.append("#v(4mm)")
     if comparisons:
-        doc.body.append(_table(doc, _methods_table(comparisons, analytic, lang), "(left, right, right, right, right, right)", term("force_methods", lang)))
+        doc.body.append(_table(doc, _methods_table(comparisons, analytic, lang, plans, lever), "(left, right, right, right, right, right)", term("force_methods", lang)))
     return pages
 
 
@@ -502,6 +776,7 @@ def _lever_kinds(lever) -> list[str]:
 def _lever_rows(lever, lang: str) -> list[list[str]]:
     """The moments about the pole: force, its image, |F| [N], arm h [mm], F·h [N·mm], and for a couple's pair how it was found."""
     from ..drawing.force_drawing import lever_names
+    from ..drawing.plan_drawing import image_text
 
     names = lever_names(lever)
     moments = {(load.name, load.body): float(load.moment) for load in lever.loads if load.is_couple}
@@ -520,22 +795,22 @@ def _lever_rows(lever, lang: str) -> list[list[str]]:
             ends = "".join(q.image.upper() for q in pair)
             couple = moments[(f.name, f.body)]
             length = abs(couple) / abs(f.force)
-            note = f"= {_math(f.name)}/$l_{{\\mathrm{{{ends}}}}}$ = {_number(abs(couple))} N·m / {length:.4g} m"
+            note = f"= {_math(f.name, lang)}/$l_{{\\mathrm{{{ends}}}}}$ = {_number(abs(couple))} N·m / {length:.4g} m"
             if f is pair[0]:
-                note += f"; {term('lever_pair', lang).format(points=', '.join(q.image for q in pair))}"
-        rows.append([_math(names[id(f)]), f.image, _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
+                note += f"; {term('lever_pair', lang).format(points=', '.join(image_text(q.image) for q in pair))}"
+        rows.append([_math(names[id(f)], lang), image_text(f.image), _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
     return rows
 
 
 def _lever_result(lever, lang: str) -> list[str]:
     from ..drawing.force_drawing import sense_arrow
 
-    lines = [f"{_math(c.name)} = {_number(c.couple)} N·m → {_number(c.moment)} N·mm ({term('lever_block_couple', lang)})" for c in lever.couples]
+    lines = [f"{_math(c.name, lang)} = {_number(c.couple)} N·m → {_number(c.moment)} N·mm ({term('lever_block_couple', lang)})" for c in lever.couples]
     if lever.balancing_kind == "moment":
-        lines.append(f"$M_{{\\mathrm{{b}}}}$ = $F_{{\\mathrm{{b}}}}$·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force))} N · "
+        lines.append(f"{_math('M_b', lang)} = {_math('F_b', lang)}·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force))} N · "
                      f"{lever.crank_length:.4g} m = {_number(abs(lever.balancing))} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))})")
     else:
-        lines.append(f"$F_{{\\mathrm{{b}}}}$ = {_number(lever.balancing)} N ({_lower(term('balancing_force', lang))})")
+        lines.append(f"{_math('F_b', lang)} = {_number(lever.balancing)} N ({_lower(term('balancing_force', lang))})")
     return lines
 
 
