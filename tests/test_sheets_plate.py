@@ -1,0 +1,114 @@
+"""The A3 sheets of ``plans draw --positions`` as a plate (issue 20's sheet review): drawings that fill their
+regions, the plan of positions as sheet 1 with its own k_l, 0′ drawn, one label per point, the paths named, the
+readings' and the comparison's values the same digits, the given data stated."""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+
+import pytest
+
+import plans
+from plans.i18n import term
+from plans.positions import at_page_precision, run_positions
+
+from sheet_pages import by_kind, embedded_text, scales, text
+
+
+@pytest.fixture(scope="module")
+def slider_crank_set():
+    from plans.pages.sheet import position_sheets, positions_page
+
+    run = run_positions(at_page_precision(plans.load(plans.example_path("slider-crank"))), 4)  # (as plans draw: 0.1 mm)
+    sheets, _ = position_sheets(run, lang="sr")
+    page = positions_page(run, lang="sr", number=(1, len(sheets) + 1))
+    return run, sheets, page
+
+
+def test_the_mechanism_of_every_position_sheet_is_100_mm_across(slider_crank_set):
+    run, sheets, _ = slider_crank_set
+    for _, sheet in sheets:
+        mechanism = by_kind(sheet.pages("svg")[0])["mechanism"]
+        assert mechanism.width >= 100.0
+    # the mechanism drawn large at the set's one k_l: the rod AB (250 mm) ≥ 80 mm on paper (at the old 0.004: 62 mm)
+    g = run.runs[0].graphical
+    rod = abs(g.positions["B"] - g.positions["A"])
+    assert rod == pytest.approx(0.25, abs=1e-6)
+    assert rod / sheets[0][1].scales["k_l"] >= 80.0
+
+
+def test_the_plan_of_positions_fills_its_page(slider_crank_set, tmp_path):
+    from plans.pages.sheet import sheet_page
+
+    _, _, page = slider_crank_set
+    drawing = by_kind(page.pages("svg")[0])["positions"]
+    a3 = sheet_page("A3")
+    assert drawing.width * drawing.height >= 0.4 * a3.text_width * a3.text_height
+
+
+def test_the_plan_of_positions_is_sheet_1_at_its_own_stated_k_l(slider_crank_set):
+    run, sheets, page = slider_crank_set
+    words = unicodedata.normalize("NFKC", text(page.pdf()))
+    flat = " ".join(words.split())
+    assert f"{term('sheet', 'sr')} 1 {term('of_sheets', 'sr')} 5" in flat
+    for n, (_, sheet) in enumerate(sheets):
+        assert f"{term('sheet', 'sr')} {n + 2} {term('of_sheets', 'sr')} 5" in " ".join(text(sheet.pdf()).split())
+    stated = scales(words)
+    assert stated == {"k_l": page.scales["k_l"]}
+    # the crank's path drawn at that k_l: a circle of OA / k_l [mm] about O (the drawing is at 100 %)
+    crank = abs(run.runs[0].graphical.positions["A"] - run.runs[0].graphical.positions["O"])
+    assert crank / stated["k_l"] >= 60.0  # (at the sheets' old k_l 0.004: 25 mm)
+
+
+def test_the_plan_of_positions_draws_0_prime_labels_each_point_once_and_names_the_paths(slider_crank_set):
+    _, _, page = slider_crank_set
+    inside = unicodedata.normalize("NFC", " ".join(t for t in _drawing_texts(page)))
+    assert "A₀′" in inside and "B₀′" in inside  # the other extreme position its list names
+    assert not re.search("[AB]₀(?!′)", inside)  # position 0 (the scheme in full) labelled once: A, not A and A₀
+    assert "путања тачке A" in inside and "путања тачке B" in inside
+
+
+def test_the_cycle_data_one_rounding_of_angles_capitalised(slider_crank_set):
+    _, _, page = slider_crank_set
+    flat = " ".join(unicodedata.normalize("NFKC", text(page.pdf())).split())
+    found = re.findall(r"(\d+,\d+)°", flat)
+    assert found and all(len(f.split(",")[1]) == 1 for f in found), found  # every angle to 0.1°
+    assert "Закон кретања" in flat  # a sentence starts with a capital
+
+
+def _drawing_texts(sheet):
+    from sheet_pages import drawings, SVG
+
+    out = []
+    for d in drawings(sheet.pages("svg")[0]):
+        out += ["".join(t.itertext()) for t in d.root.iter(f"{SVG}text")]
+    return out
+
+
+def _number(cell: str) -> str:
+    """The digits of a table cell's value: ``20.95 ∠ 188.2°`` -> ``20.95``; ``17680 rad/s² ↺`` -> ``17680``;
+    ``−21456`` -> ``21456`` (the readings give a sense by its arrow, the comparison by its sign)."""
+    return cell.split()[0].lstrip("−")
+
+
+def test_the_readings_and_the_comparison_print_one_number_per_quantity(slider_crank_set):
+    """Issue 20 (sheets §3): ε₃ was 17690 in the readings and 17688 in the comparison on one sheet."""
+    from plans.compare import compare
+    from plans.drawing.blocks import plan_readings
+    from plans.report import sheet_table
+
+    run, sheets, _ = slider_crank_set
+    checked = 0
+    for r, sheet in sheets:
+        g = sheet.graphical
+        table = {row[0].split(" [")[0]: _number(row[1]) for row in sheet_table(compare(r.analytic, g), g, r.analytic)[1:]}
+        for kind in ("velocity", "acceleration"):
+            for row in plan_readings(g, kind, "en")[1:]:
+                for name in row[0].split(" = "):
+                    name = name if name.startswith("$") else "$" + name
+                    name = name if name.endswith("$") else name + "$"
+                    if name in table:
+                        assert _number(row[4]) == table[name], (r.index, name, row, table[name])
+                        checked += 1
+    assert checked >= 4 * 5
