@@ -112,3 +112,30 @@ def test_the_readings_and_the_comparison_print_one_number_per_quantity(slider_cr
                         assert _number(row[4]) == table[name], (r.index, name, row, table[name])
                         checked += 1
     assert checked >= 4 * 5
+
+
+@pytest.fixture(scope="module")
+def six_bar_sheets(tmp_path_factory):
+    from plans.cli import main
+
+    out = tmp_path_factory.mktemp("six-bar")
+    pages = {}
+    for lang in ("en", "sr"):
+        assert main(["draw", "--example", "six-bar", "--lang", lang, "-o", str(out / f"{lang}.pdf")]) == 0
+        pages[lang] = " ".join(unicodedata.normalize("NFKC", text((out / f"{lang}.pdf").read_bytes())).split())
+    return pages
+
+
+def test_the_single_sheet_states_the_given_data(six_bar_sheets):
+    """The six-bar's sheet never stated ω₂ nor the link lengths (examples/six-bar.toml: ω₂ = −10 rad/s, OA 150 mm,
+    AB 450 mm, CD 400 mm)."""
+    flat = six_bar_sheets["en"]
+    assert "Driver 2 (O): ω2 = −10 rad/s" in flat
+    for length in ("OA = 150", "AB = 450", "DC = 400"):
+        assert length in flat
+    assert "Погонски члан 2 (O): ω2 = −10 rad/s" in six_bar_sheets["sr"]
+
+
+def test_the_notes_under_a_plan_are_explained_under_the_legend(six_bar_sheets):
+    assert "angles from the x axis, counter-clockwise" in six_bar_sheets["en"]
+    assert "углови од осе x, супротно од казаљке на сату" in six_bar_sheets["sr"]

@@ -36,10 +36,10 @@ from ..i18n import term
 from .document import GUTTER, SMALL_PT, TEXT_PT, Document, PageGeometry, bbox, fitted, plan_extent
 from ..graphical.scales import round_down, round_up
 from .typesetting import compile_document, image, query_value
-from .words import assembly_lines, formula_words, namer
+from .words import assembly_lines, formula_words, namer, scene_data_lines
 
 __all__ = ["Sheet", "PAPERS", "sheet_page", "build_sheet", "fitted_sheet", "sheet_at", "position_sheets", "position_heading", "positions_page",
-           "write_drawings", "write_position_sheets", "other_extreme", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION"]
+           "write_drawings", "write_position_sheets", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION"]
 
 #: the ISO sheets a sheet may take, smallest first, landscape [mm]
 PAPERS = (("A3", (420.0, 297.0)), ("A2", (594.0, 420.0)), ("A1", (841.0, 594.0)), ("A0", (1189.0, 841.0)))
@@ -268,6 +268,9 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
     try:
         if heading:
             doc.heading(heading, level=2)
+        # the given data (the driver's ω, ε or v, a; the link lengths; the fixed points), as the handout states them
+        for line in scene_data_lines(doc.scene, lang):
+            doc.line(line[:1].upper() + line[1:], size=SMALL_PT + 0.5)
         if formula:
             doc.line(f"{term('structural_formula', lang)}:  {formula_words(formula)}", size=TEXT_PT)
         if assembly:
@@ -280,7 +283,9 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
             doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (1fr, 1fr), column-gutter: {GUTTER}mm, align: top + left, "
                             + ", ".join(readings) + ")]\n")
         results = doc.table_markup(term("comparison", lang), table) if table and len(table) > 1 else "[]"
-        legend_cell = f"align(right)[#{doc.add_image('legend', legend)}]" if legend is not None else "[]"
+        # under the plans' legend, what the notes under a plan are (short segments, near-coincident directions)
+        legend_cell = (f"align(right)[#{doc.add_image('legend', legend)}]" + f" + block(width: 100%)[#text(size: {SMALL_PT - 0.5}pt)["
+                       f"{doc.words(term('plan_notes_legend', lang))}]]") if legend is not None else "[]"
         doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {results}, {legend_cell})]\n")
         return doc.body
     finally:
@@ -631,25 +636,6 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
     return sheets, scales
 
 
-def other_extreme(run) -> dict:
-    """``{"0′": GraphicalSolution}``: the mechanism at the output's other extreme position (drawn on the plan of
-    positions, whose list names it), when the positions start at the output's extreme (a crank's,
-    :class:`plans.motion.Strokes`); else empty."""
-    from ..errors import PlansError
-    from ..positions import run_positions
-
-    st = getattr(run, "strokes", None)
-    motion = getattr(run, "motion", None)
-    if st is None or motion is None or motion.start != "output" or not st.law.crank:
-        return {}
-    try:
-        other = run_positions(run.scene, [float(st.other_position)], precision=None, start="scene")
-    except PlansError:
-        return {}
-    solved = [r for r in other.runs if r.ok]
-    return {"0′": solved[0].graphical} if solved else {}
-
-
 #: the height [mm] of a line of the plan of positions' data (at TEXT_PT)
 DATA_LINE = 4.4
 
@@ -671,7 +657,7 @@ def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: t
     # the data lines under the drawing: beside the title block, and over it as far as they need
     under = max(len(lines) * DATA_LINE - (TITLE_BLOCK_ROOM - 2.0), 0.0)
     room = (page.text_width, page.text_height - CAPTION - 2.0 - under)
-    extremes = other_extreme(run)
+    extremes = run.other_extreme() if hasattr(run, "other_extreme") else {}
     zs = [complex(z) for r in run.runs if r.ok for z in r.graphical.positions.values()]
     zs += [complex(z) for g in extremes.values() for z in g.positions.values()]
     for p in run.scene.report:
