@@ -82,6 +82,16 @@ def test_the_mechanism_and_the_plans_reach_their_sizes(sheet):
         assert across >= PLAN_ACROSS_MM - READ, (name, prefix, across)
 
 
+@pytest.mark.parametrize("name, lang", [("linear-arm", "bg"), ("quick-return", "sr"), ("four-bar", "ru")])
+def test_the_sheets_the_review_found_small_reach_their_sizes_in_their_languages(name, lang, tmp_path):
+    """Issue 20's sheet review: la-bg's velocity plan (pk 5.3 mm), qr-sr's two plans (~75 mm, the centre empty),
+    fb-ru's velocity plan small in the lower left: each drawing at issue 11 §1's sizes in the reader's language too
+    (whose text column is another height)."""
+    assert main(["draw", "--example", name, "--lang", lang, "-o", str(tmp_path / "page.svg")]) == 0
+    test_the_mechanism_and_the_plans_reach_their_sizes((name, (tmp_path / "page.svg").read_bytes()))
+    test_nothing_outside_the_frame_and_no_drawing_over_another_or_the_title_block((name, (tmp_path / "page.svg").read_bytes()))
+
+
 def test_nothing_outside_the_frame_and_no_drawing_over_another_or_the_title_block(sheet):
     name, svg = sheet
     placed = drawings(svg)
