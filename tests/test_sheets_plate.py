@@ -139,3 +139,19 @@ def test_the_single_sheet_states_the_given_data(six_bar_sheets):
 def test_the_notes_under_a_plan_are_explained_under_the_legend(six_bar_sheets):
     assert "angles from the x axis, counter-clockwise" in six_bar_sheets["en"]
     assert "углови од осе x, супротно од казаљке на сату" in six_bar_sheets["sr"]
+
+
+def test_a_short_segment_is_read_as_its_note_gives_it():
+    """Issue 20 (sheets §4): the slider-crank at position 2 of 4, k_a 60: the note under the plan says
+    n₁ b′ = 2,65 mm, the readings table used 2,6 and got ε₃ = 624 against the analytic 634,8 (1,7 %).  A segment
+    under 3 mm is read to 0.01 mm, as its note gives it: n₁ b′ = |ε₃| · l_AB / k_a from the analytic solution."""
+    from plans.drawing.blocks import plan_readings
+
+    scene = at_page_precision(plans.load(plans.example_path("slider-crank")))
+    run = run_positions(scene, 4, k_l=0.004, k_v=0.15, k_a=60.0)
+    r = run.runs[2]
+    eps3 = abs(r.analytic.links["3"].epsilon[0])
+    (row,) = [row for row in plan_readings(r.graphical, "acceleration") if row[0] == r"$\varepsilon_{3}$"]
+    assert row[2] == f"{eps3 * 0.25 / 60.0:.2f}" == "2.65"  # (the note's length)
+    value = float(row[4].split()[0])
+    assert value == pytest.approx(eps3, rel=0.005)
