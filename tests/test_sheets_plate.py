@@ -75,6 +75,7 @@ def test_the_cycle_data_one_rounding_of_angles_capitalised(slider_crank_set):
     found = re.findall(r"(\d+,\d+)°", flat)
     assert found and all(len(f.split(",")[1]) == 1 for f in found), found  # every angle to 0.1°
     assert "Закон кретања" in flat  # a sentence starts with a capital
+    assert "θ = 11,3°" in flat  # a symbol stays as written (not Θ)
 
 
 def _drawing_texts(sheet):

@@ -270,7 +270,7 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
             doc.heading(heading, level=2)
         # the given data (the driver's ω, ε or v, a; the link lengths; the fixed points), as the handout states them
         for line in scene_data_lines(doc.scene, lang):
-            doc.line(line[:1].upper() + line[1:], size=SMALL_PT + 0.5)
+            doc.line(_capitalised(line), size=SMALL_PT + 0.5)
         if formula:
             doc.line(f"{term('structural_formula', lang)}:  {formula_words(formula)}", size=TEXT_PT)
         if assembly:
@@ -636,6 +636,13 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
     return sheets, scales
 
 
+def _capitalised(line: str) -> str:
+    """A line of data as a sentence: its first word capitalised (a symbol such as θ or ω₂ is left as written)."""
+    import re
+
+    return line[:1].upper() + line[1:] if re.match(r"[^\W\d_]{2}", line) else line
+
+
 #: the height [mm] of a line of the plan of positions' data (at TEXT_PT)
 DATA_LINE = 4.4
 
@@ -653,7 +660,7 @@ def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: t
 
     page = sheet_page("A3")
     doc = Document(run.scene, lang, page)
-    lines = [line[:1].upper() + line[1:] for line in cycle_lines(run, lang)]
+    lines = [_capitalised(line) for line in cycle_lines(run, lang)]
     # the data lines under the drawing: beside the title block, and over it as far as they need
     under = max(len(lines) * DATA_LINE - (TITLE_BLOCK_ROOM - 2.0), 0.0)
     room = (page.text_width, page.text_height - CAPTION - 2.0 - under)
