@@ -1341,3 +1341,21 @@ TERMS.update({
         "sl": "samo med delovnim gibom",
     },
 })
+
+
+# --- the A3 sheets (issue 20, sheets review) ---------------------------------------------------------
+TERMS.update({
+    # a line under the plans' legend on a sheet: what the notes under a plan are
+    "plan_notes_legend": {
+        "en": "Short segments and near-coincident directions are given under the plan (lengths in mm on the plan, "
+              "angles from the x axis, counter-clockwise).",
+        "sr": "Кратке дужи и правци који се скоро поклапају дати су испод плана (дужине у mm на плану, "
+              "углови од осе x, супротно од казаљке на сату).",
+        "ru": "Короткие отрезки и почти совпадающие направления указаны под планом (длины в мм на плане, "
+              "углы от оси x, против часовой стрелки).",
+        "bg": "Късите отсечки и почти съвпадащите направления са дадени под плана (дължини в mm на плана, "
+              "ъгли от оста x, обратно на часовниковата стрелка).",
+        "sl": "Kratke daljice in skoraj sovpadajoče smeri so podane pod načrtom (dolžine v mm na načrtu, "
+              "koti od osi x, v nasprotni smeri urinega kazalca).",
+    },
+})

@@ -1005,13 +1005,17 @@ class Strokes:
             lines.append(f"{term('output_link', lang)} {self.output.link}: {term('stroke_H', lang)} H = {num(self.travel * 1e3)} mm")
         else:
             lines.append(f"{term('output_link', lang)} {self.output.link}: {term('swing_psi', lang)} ψ{sub} = {num(math.degrees(self.travel))}°")
-        where = (lambda x: f"{num(_degrees_0_360(x))}°") if self.law.crank else (lambda x: f"{num(x * 1e3)} mm")
+        def deg(value: float) -> str:  # every angle of the cycle to 0.1° (one rounding on a page)
+            text = f"{0.0 if abs(value) < 0.05 else value:.1f}".replace("-", "\u2212")
+            return text.replace(".", ",") if lang in ("sr", "ru", "bg", "sl") else text
+
+        where = (lambda x: f"{deg(_degrees_0_360(x))}°") if self.law.crank else (lambda x: f"{num(x * 1e3)} mm")
         lines.append(f"{term('extreme_positions', lang)}: 0 — {where(self.start_position)}, 0′ — {where(self.other_position)}")
         if self.theta is not None:
-            lines.append(f"θ = {num(math.degrees(self.theta))}°, K = (180° + θ)/(180° − θ) = {num(self.K)}")
+            lines.append(f"θ = {deg(math.degrees(self.theta))}°, K = (180° + θ)/(180° − θ) = {num(self.K)}")
         elif self.K is not None:
             lines.append(f"K = t_w / t_r = {num(self.K)}")
-        arc = f"{num(math.degrees(self.working_arc))}°" if self.law.crank else f"{num(self.working_arc * 1e3)} mm"
+        arc = f"{deg(math.degrees(self.working_arc))}°" if self.law.crank else f"{num(self.working_arc * 1e3)} mm"
         lines.append(f"{term('working_stroke', lang)}: 0 → 0′, {arc}, t = {num(self.working_time)} s")
         return lines
 

@@ -465,6 +465,20 @@ class PositionsRun:
     def __len__(self) -> int:
         return len(self.runs)
 
+    def other_extreme(self) -> dict:
+        """``{"0′": GraphicalSolution}``: the mechanism at the output's other extreme position (the plan of positions
+        draws it: its list names it), when the positions start at the output's extreme (a crank's,
+        :class:`plans.motion.Strokes`); else empty."""
+        st, motion = self.strokes, self.motion
+        if st is None or motion is None or motion.start != "output" or not st.law.crank:
+            return {}
+        try:
+            other = run_positions(self.scene, [float(st.other_position)], precision=None, start="scene")
+        except PlansError:
+            return {}
+        solved = [r for r in other.runs if r.ok]
+        return {"0′": solved[0].graphical} if solved else {}
+
     @property
     def positions(self) -> list[float]:
         return [r.position for r in self.runs]

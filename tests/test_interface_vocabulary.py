@@ -366,6 +366,12 @@ VOCABULARY = {
                                "bg": "зададеното {q} се отнася само за зададения момент", "sl": "podani {q} velja le v podanem trenutku"},
     # a plan's enlarged detail named in its notes ("detail I"; ГОСТ 2.305 "выносной элемент")
     "detail": {"sr": "детаљ", "ru": "выносной элемент", "bg": "детайл", "sl": "detajl"},
+    "plan_notes_legend": {
+        "sr": "Кратке дужи и правци који се скоро поклапају дати су испод плана (дужине у mm на плану, углови од осе x, супротно од казаљке на сату).",
+        "ru": "Короткие отрезки и почти совпадающие направления указаны под планом (длины в мм на плане, углы от оси x, против часовой стрелки).",
+        "bg": "Късите отсечки и почти съвпадащите направления са дадени под плана (дължини в mm на плана, ъгли от оста x, обратно на часовниковата стрелка).",
+        "sl": "Kratke daljice in skoraj sovpadajoče smeri so podane pod načrtom (dolžine v mm na načrtu, koti od osi x, v nasprotni smeri urinega kazalca).",
+    },
     # the words of a sliding driver and of the centres' method page (issue 20)
     "centres_omega_rule_linear": {"sr": "ω члана из брзине погонског члана, преко полова", "ru": "ω звена по скорости ведущего звена, через центры", "bg": "ω на звеното от скоростта на водещото звено, чрез центровете", "sl": "ω člena iz hitrosti pogonskega člena, prek polov"},
     "over_driver_stroke": {"sr": "током хода погонског члана", "ru": "за ход ведущего звена", "bg": "за хода на водещото звено", "sl": "med hodom pogonskega člena"},

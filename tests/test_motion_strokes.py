@@ -73,7 +73,7 @@ def test_four_bar_crank_rocker_swing_theta():
 def test_summary_and_json_words():
     st = strokes(_slider_crank(0.1, 0.25, 0.05))
     text = "\n".join(st.summary("en"))
-    assert "H = 205 mm" in text and "θ = 11.26°" in text and "K = (180° + θ)/(180° − θ) = 1.133" in text
+    assert "H = 205 mm" in text and "θ = 11.3°" in text and "K = (180° + θ)/(180° − θ) = 1.133" in text
     assert "ход H = 205 mm" in "\n".join(st.summary("ru"))
     doc = st.as_dict()
     assert doc["stroke_H_m"] == pytest.approx(0.20498878, rel=1e-6)

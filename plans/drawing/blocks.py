@@ -87,7 +87,12 @@ _RATE = {"velocity": ("omega", r"\omega", "rad/s"), "acceleration": ("epsilon", 
 
 def printed_length(length: float, precision: float | None) -> str:
     """A measured length [mm] as a sheet prints it: to the drafting precision's decimals (0.1 mm: ``"59.2"``),
-    to 0.001 mm when readings are exact (no precision)."""
+    to 0.001 mm when readings are exact (no precision); a segment under 3 mm to a tenth of the precision, as
+    the note under the plan gives it (:func:`plans.graphical.scales.read_segment`)."""
+    from ..graphical.scales import SHORT_READ_MM
+
+    if precision is not None and abs(length) < SHORT_READ_MM:
+        precision = precision / 10  # a short segment is read as its note under the plan gives it (0.01 mm)
     decimals = 3 if precision is None else max(0, math.ceil(-math.log10(precision) - 1e-9))
     return f"{abs(length):.{decimals}f}"
 
@@ -124,9 +129,10 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
     ÷ the link length [m] (ω, ε only), and = the value, which is exactly
     what the results table calls graphical: point velocities
     (accelerations), the drawn relative vectors of sliders, then ω (ε) of the
-    links with the sense.  Values to 4 significant digits.
+    links with the sense.  Values to the digits one drafting step of the segment justifies
+    (:func:`plans.report.reading_number`; 4 significant digits when readings are exact).
     """
-    from ..report import table_number
+    from ..report import reading_number, table_number
 
     plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
     if plan is None:
@@ -144,15 +150,18 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
         length = v.value / k if v is not None else 0.0
         measured = segment(plan, v, letters) if v is not None else "—"
         value = (v.value if v is not None else 0.0) / (divide or 1.0)
+        # to the digits one drafting step of the segment justifies, as the results table prints the same reading
+        # (plans.report.reading_step): one number for one quantity on a page
+        step = precision * k / (divide or 1.0) if precision else None
         if sense is not None:  # ω, ε: the magnitude measured, the sense seen on the plan
             value = math.copysign(value, sense)
             rate_unit = _RATE[kind][2]
             # the sense as the arc arrow a plan or a scheme draws it (↺ counter-clockwise, ↻ clockwise): the
             # same narrow sign in every language, so the readings stand beside the results table
             arrow = "" if value == 0 else (" ↺" if value > 0 else " ↻")
-            text = f"{table_number(abs(value))} {rate_unit}{arrow}"
+            text = f"{reading_number(abs(value), step)} {rate_unit}{arrow}"
         else:
-            text = f"{table_number(value)} {unit}"
+            text = f"{reading_number(value, step)} {unit}"
         factor = f"×\u00a0{fmt(k)}" if divide is not None else f"× {fmt(k)}"
         if divide is not None:
             # the link length by the textbook's name, the segment between the two points as the scene names them;

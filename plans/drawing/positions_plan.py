@@ -29,7 +29,7 @@ from ..i18n import term
 from ..sweep import line_travel
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import LABEL_SPACE_MM
-from .mechanism import FRAME, MechanismDrawing
+from .mechanism import FRAME, MechanismDrawing, mechanism_labels
 from .numerals import localised
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 
@@ -164,7 +164,10 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     # numbers where they have room: beside the mark, else on a short leader line, else left out;
     # position 0 of every point first, then the others in order
     centres = {p: (complex(np.nanmean(np.asarray(cycle.points[p].r)[assembled])) / k_l if p in cycle.points and assembled.any() else mech.centroid) for p in numbered}
+    labelled = set(mechanism_labels(base))
     for index, p, at in sorted(marks, key=lambda m: (m[0] != runs[0].index, m[0], numbered.index(m[1]))):
+        if index == runs[0].index and p in labelled:
+            continue  # position 0 is the one drawn in full: its points are labelled once, by the scheme
         away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
         place_number(sketch, at, f"{p}{_sub(index)}", gid=f"position-{index}-{p}", size=NUMBER_PT, prefer=away)
     for label, g in (extremes or {}).items():
@@ -203,12 +206,18 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
                     size=CAPTION_PT, ha="left", va="top", gid=f"skipped-{cause}", obstacle=False,
                 )
     y -= 5.0
+    # the paths' legend in words (the path of point A), in rows no wider than the drawing
+    row_width = max(b.xmax - b.xmin, 60.0)
+    xx, yy = x, y
     for n, name in enumerate(moving):
         colour = PATH_COLOURS[n % len(PATH_COLOURS)]
-        xx = x + (n % 6) * 24.0
-        yy = y - (n // 6) * 4.5
+        words = f"{term('path', lang)} {name}"
+        width = 9.5 + text_size(words, CAPTION_PT)[0] + 5.0
+        if xx > x and xx + width > x + row_width:
+            xx, yy = x, yy - 4.5
         sketch.line([complex(xx, yy - 1.4), complex(xx + 8.0, yy - 1.4)], color=colour, lw=PATH_PT, dashes=(4.0, 1.5), gid=f"legend-path-{name}", obstacle=False)
-        sketch.text(complex(xx + 9.5, yy - 1.4), name, size=CAPTION_PT, ha="left", va="center", gid="legend-path", obstacle=False)
+        sketch.text(complex(xx + 9.5, yy - 1.4), words, size=CAPTION_PT, ha="left", va="center", gid="legend-path", obstacle=False)
+        xx += width
 
 
 def number_ranges(numbers: list[int]) -> str:

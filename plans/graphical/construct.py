@@ -18,7 +18,7 @@ from ..structure import Group, Structure, find_structure
 from . import prp, rpp, rpr, rrp, rrr
 from .driver import driver_acceleration, driver_velocity, place_driver
 from .plan import GraphicalSolution
-from .scales import DRAWN_LARGEST, check_scale, extent, measure, round_scale
+from .scales import DRAWN_LARGEST, check_scale, extent, measure, read_segment, round_scale
 from .state import Construction, Sketch
 
 __all__ = ["construct"]
@@ -280,7 +280,7 @@ def _read(image: complex, k: float, precision: float | None) -> complex:
     length = abs(image)
     if length == 0.0:
         return 0j
-    return measure(length, precision) * k * (image / length)
+    return read_segment(length, precision) * k * (image / length)
 
 
 def _extent(scene: Scene) -> float:

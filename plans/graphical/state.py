@@ -32,7 +32,7 @@ from ..limits import position_text
 from ..scene import FRAME, Crank, Line, Prismatic, Scene
 from . import geometry
 from .plan import ConstructionLine, Plan, PlanVector, Step
-from .scales import measure
+from .scales import measure, read_segment
 
 __all__ = ["Motion", "Vec", "Sketch", "Construction", "body_label", "image_label", "ZERO"]
 
@@ -208,7 +208,7 @@ class Sketch:
                 key = id(v)
                 if key not in drawn:
                     length = abs(v.tip - v.tail)
-                    drawn[key] = PlanVector(v.tail * f, v.tip * f, v.kind, v.label, measure(length * f, precision) * k) if length > tiny else None
+                    drawn[key] = PlanVector(v.tail * f, v.tip * f, v.kind, v.label, read_segment(length * f, precision) * k) if length > tiny else None
                 if drawn[key] is not None:
                     out.append(drawn[key])
             return tuple(out)
@@ -331,12 +331,12 @@ class Construction:
         def along(vec: Vec | None, f: float, k: float, direction: complex) -> float:
             if vec is None:
                 return 0.0
-            length = measure(abs(vec.delta) * f, precision) * k
+            length = read_segment(abs(vec.delta) * f, precision) * k
             return math.copysign(length, (vec.delta * direction.conjugate()).real)
 
         def rotation(source: Rotation, f: float, k: float) -> float:
             segment = source.tip - source.tail
-            length = measure(abs(source.vec.delta) * f, precision) * k / abs(segment)
+            length = read_segment(abs(source.vec.delta) * f, precision) * k / abs(segment)
             return math.copysign(length, (source.vec.delta * segment.conjugate()).imag)
 
         links: dict[str, dict[str, float]] = {}
@@ -363,7 +363,7 @@ class Construction:
                     entry["coriolis"] = 0j
                 else:
                     c = sl.coriolis.delta
-                    entry["coriolis"] = sl.sign * measure(abs(c) * fa, precision) * k_a * (c / abs(c) if c else 0j)
+                    entry["coriolis"] = sl.sign * read_segment(abs(c) * fa, precision) * k_a * (c / abs(c) if c else 0j)
             sliders[name] = entry
         return links, sliders
 

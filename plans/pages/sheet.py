@@ -36,7 +36,7 @@ from ..i18n import term
 from .document import GUTTER, SMALL_PT, TEXT_PT, Document, PageGeometry, bbox, fitted, plan_extent
 from ..graphical.scales import round_down, round_up
 from .typesetting import compile_document, image, query_value
-from .words import assembly_lines, formula_words, namer
+from .words import assembly_lines, formula_words, namer, scene_data_lines
 
 __all__ = ["Sheet", "PAPERS", "sheet_page", "build_sheet", "fitted_sheet", "sheet_at", "position_sheets", "position_heading", "positions_page",
            "write_drawings", "write_position_sheets", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION"]
@@ -268,6 +268,9 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
     try:
         if heading:
             doc.heading(heading, level=2)
+        # the given data (the driver's ω, ε or v, a; the link lengths; the fixed points), as the handout states them
+        for line in scene_data_lines(doc.scene, lang):
+            doc.line(_capitalised(line), size=SMALL_PT + 0.5)
         if formula:
             doc.line(f"{term('structural_formula', lang)}:  {formula_words(formula)}", size=TEXT_PT)
         if assembly:
@@ -280,7 +283,9 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
             doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (1fr, 1fr), column-gutter: {GUTTER}mm, align: top + left, "
                             + ", ".join(readings) + ")]\n")
         results = doc.table_markup(term("comparison", lang), table) if table and len(table) > 1 else "[]"
-        legend_cell = f"align(right)[#{doc.add_image('legend', legend)}]" if legend is not None else "[]"
+        # under the plans' legend, what the notes under a plan are (short segments, near-coincident directions)
+        legend_cell = (f"align(right)[#{doc.add_image('legend', legend)}]" + f" + block(width: 100%)[#text(size: {SMALL_PT - 0.5}pt)["
+                       f"{doc.words(term('plan_notes_legend', lang))}]]") if legend is not None else "[]"
         doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {results}, {legend_cell})]\n")
         return doc.body
     finally:
@@ -383,8 +388,12 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, under=None
         # (a plan without its enlarged detail, which is drawn at some factors only)
         one, two = (block_at(i, kind, {**scales, key: k}, detail=kind == "mechanism") for k in (k0, 2 * k0))
         geometry = (2 * k0 * (one.width - two.width), 2 * k0 * (one.height - two.height))
-        extents[kind] = tuple(max(g, e) for g, e in zip(geometry, extents[kind]))
-        fixed[kind] = tuple(max(b - e / k0, 0.0) for b, e in zip((one.width, one.height), extents[kind]))
+        # what does not scale, from this sample's own geometry (the extents are the largest over the samples: a
+        # sample's fixed parts reckoned against another's geometry would be too small)
+        fixed[kind] = tuple(max(b - g / k0, 0.0) for b, g in zip((one.width, one.height), geometry))
+        own = _extent(kind, _objects(samples[i])[kind])
+        # the drawn geometry over the joints' (guides drawn over the travel, arcs): the same margin on every sample
+        extents[kind] = tuple(max(g, e + max(g - o, 0.0)) for g, e, o in zip(geometry, extents[kind], own))
     given_sizes = {}
     for kind in kinds:
         if given.get(SCALE_OF[kind]) is not None:
@@ -618,41 +627,66 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
     scales, regions, out = found
     sheets = []
     for i, r in enumerate(solved):
-        say(f"sheet {i + 1}/{total}")
+        say(f"sheet {i + 2}/{total}")
         g, blocks = out[i]
         h = replace(r, graphical=g, comparisons=compare(r.analytic, g))
         sheet = build_sheet(r.scene, g, blocks, regions, lang=lang, heading=position_heading(r, lang), paper=paper,
-                            number=(i + 1, total), **_text_parts(r.scene, g, r.analytic, lang))
+                            number=(i + 2, total), **_text_parts(r.scene, g, r.analytic, lang))
         sheets.append((h, sheet))
     return sheets, scales
 
 
-def positions_page(run, k_l: float, *, lang: str = "en", number: tuple[int, int] | None = None) -> Sheet:
-    """The plan of positions of *run* on a sheet of its own at *k_l* (the sheets'; a coarser round one when it runs
-    over the page), under its name and scale."""
+def _capitalised(line: str) -> str:
+    """A line of data as a sentence: its first word capitalised (a symbol such as θ or ω₂ is left as written)."""
+    import re
+
+    return line[:1].upper() + line[1:] if re.match(r"[^\W\d_]{2}", line) else line
+
+
+#: the height [mm] of a line of the plan of positions' data (at TEXT_PT)
+DATA_LINE = 4.4
+
+
+def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: tuple[int, int] | None = None) -> Sheet:
+    """The plan of positions of *run* on a sheet of its own (sheet 1 of a set, the textbook's order), drawn at a
+    k_l of its own: the round factor with which it fills the page (a drawing of every position is another
+    drawing than a position's mechanism; its k_l is stated under its name and in the title block).  A *k_l*
+    given is kept (a coarser round one when it runs over the page).  The cycle's data (the driver's law, the
+    Grashof class, the stroke, θ and K) under the drawing, beside the title block."""
+    import numpy as np
+
     from ..drawing.svgblocks import positions_svg
+    from .words import cycle_lines
 
     page = sheet_page("A3")
-    room = (page.text_width, page.size[1] - page.margins[2] - page.margins[3] - CAPTION)
-    block = positions_svg(run, k_l, lang)
-    for _ in range(6):
+    doc = Document(run.scene, lang, page)
+    lines = [_capitalised(line) for line in cycle_lines(run, lang)]
+    # the data lines under the drawing: beside the title block, and over it as far as they need
+    under = max(len(lines) * DATA_LINE - (TITLE_BLOCK_ROOM - 2.0), 0.0)
+    room = (page.text_width, page.text_height - CAPTION - 2.0 - under)
+    extremes = run.other_extreme() if hasattr(run, "other_extreme") else {}
+    zs = [complex(z) for r in run.runs if r.ok for z in r.graphical.positions.values()]
+    zs += [complex(z) for g in extremes.values() for z in g.positions.values()]
+    for p in run.scene.report:
+        if p in run.cycle.points:
+            path = np.asarray(run.cycle.points[p].r)
+            zs.extend(complex(z) for z in path[np.isfinite(path.real) & np.isfinite(path.imag)])
+    k0 = run.scales["k_l"] if k_l is None else k_l
+    k_l, block = fitted(lambda k: positions_svg(run, k, lang, extremes), bbox(zs), room, k0, None if k_l is None else k_l)
+    for _ in range(6):  # a given factor coarser while it runs over the page
         if block.width <= room[0] + 0.5 and block.height <= room[1] + 0.5:
             break
         k_l = round_up(k_l * max(block.width / room[0], block.height / room[1]) * 1.0001)
-        block = positions_svg(run, k_l, lang)
-    doc = Document(run.scene, lang, page)
+        block = positions_svg(run, k_l, lang, extremes)
     doc.plate = {"k_l": k_l}
     doc.sheet_number = number
     doc.body.append(f"#align(center)[#text(size: {TEXT_PT + 1.5}pt, weight: \"bold\")[{doc.words(term('positions_plan', lang))}] \\\n"
                     f"{doc.scale_markup('k_l', k_l)}]\n")
-    # the cycle: the driver's law, the four-bar loops' Grashof class, the stroke, θ and K (under the title block's left)
-    from .words import cycle_lines
-
-    lines = " \\\n".join(doc.words(formula_words(line)) for line in cycle_lines(run, lang))
     if lines:
+        text = " \\\n".join(doc.words(formula_words(line)) for line in lines)
         doc.body.append(f"#place(bottom + left, dx: 0mm, dy: {TITLE_BLOCK_ROOM - 2.0:.1f}mm, block(width: {page.text_width - 195.0:.1f}mm)"
-                        f"[#text(size: {SMALL_PT}pt)[{lines}]])\n")
-    y = CAPTION + 2.0 + max(room[1] - block.height, 0.0) / 2  # the drawing in the middle of the page
+                        f"[#text(size: {TEXT_PT}pt)[{text}]])\n")
+    y = CAPTION + 2.0 + max(room[1] - block.height, 0.0) / 2  # the drawing in the middle of its room
     x = (page.text_width - block.width) / 2
     doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {y:.3f}mm, {image('positions', block.width)})")
     doc.add_image("positions", block)
@@ -713,9 +747,8 @@ def write_position_sheets(run, directory, *, lang: str = "en", format: str = "sv
     for r, sheet in sheets:
         contents[directory / f"sheet-{r.index:0{width}d}.{format}"] = sheet.render(format)
     files = len(sheets) + 1
-    say(f"sheet {files}/{files}")
-    k_l = scales.get("k_l") or run.scales["k_l"]
-    contents[directory / f"positions.{format}"] = positions_page(run, k_l, lang=lang, number=(files, files)).render(format)
+    say(f"sheet 1/{files}")
+    contents[directory / f"positions.{format}"] = positions_page(run, (given or {}).get("k_l"), lang=lang, number=(1, files)).render(format)
     if format != "svg":
         return replace_all(contents)
     return replace_all(contents, stale=(directory, r"sheet-\d+\.svg", "positions.svg"))
