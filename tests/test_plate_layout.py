@@ -219,8 +219,8 @@ def test_plans_sweep_says_the_same(tmp_path, capsys):
 def test_the_linear_arm_handout_states_the_given_acceleration_as_its_instants(reviewed):
     _, _, pages = reviewed["linear-arm-bg"]
     first = " ".join(line[4] for line in pages[0])  # (NFKC: a₂ reads a2, m/s² m/s2)
-    assert "v = 0,5 м/с, a = 2 м/с2" in first  # the data
-    assert re.search(r"постоянна скорост: v ?2 = 0,5 м/с, a ?2 = 0\s+\(зададеното a ?2 = 2 м/с2 се отнася само за зададения момент\)",
+    assert "v = 0,5 м/с" in first and "a = 2 м/с2" not in first  # the data: what the cycle uses (issue 20, 2nd review)
+    assert re.search(r"постоянна скорост, a ?2 = 0\s+\(зададеното a ?2 = 2 м/с2 се отнася само за зададения момент\)",
                      first), first
 
 

@@ -508,7 +508,10 @@ def build_handout(
     doc.heading(f"{term('plate_title', lang)}: {scene.title_in(lang)}", level=1)
     from .words import cycle_lines
 
-    doc.lines([formula_words(line) for line in data_lines(scene, lang) + (_with_given_note(cycle_lines(run, lang), run, lang) if multi else [])],
+    law = run.motion.law if multi and run.motion is not None else None  # the cycle's law, stated below the data
+    said_once = law is not None and law.kind == "constant"  # the rate in the driver's line, ε = 0 in the law's
+    doc.lines([formula_words(line) for line in data_lines(scene, lang, law)
+               + (_with_given_note(cycle_lines(run, lang, rate=not said_once), run, lang) if multi else [])],
               size=TEXT_PT)
     doc.line(f"{term('structural_formula', lang)}:  {formula_words(run.structure.formula)}", size=TEXT_PT)
     branch_words = assembly_lines(sample.analytic.branches, scene, lang, sample.graphical.positions)
@@ -959,10 +962,11 @@ def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
     doc.beside(None, table, centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
 
 
-def data_lines(scene, lang: str) -> list[str]:
-    """The scene's data as a few lines of text in *lang*: driver, link lengths, fixed points (names in *lang*)."""
+def data_lines(scene, lang: str, law=None) -> list[str]:
+    """The scene's data as a few lines of text in *lang*: driver, link lengths, fixed points (names in *lang*);
+    *law*: the cycle's law stated below them (:func:`plans.pages.words.scene_data_lines`)."""
     from .words import scene_data_lines
 
-    return scene_data_lines(scene, lang)
+    return scene_data_lines(scene, lang, law)
 
 
