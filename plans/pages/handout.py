@@ -50,7 +50,7 @@ from .document import A4_PORTRAIT, Document, GUTTER, SMALL_PT, TEXT_PT
 from .typesetting import compile_document
 from .words import assembly_lines, formula_words, namer
 
-__all__ = ["Handout", "build_handout", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
+__all__ = ["Handout", "build_handout", "position_entry", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
 
 #: The sections of a multi-position handout, in the plate's order (names as :attr:`Handout.order` lists them).
 ORDER = ("data", "positions", "velocity-equations", "velocity-plans", "acceleration-equations", "acceleration-plans",
@@ -298,6 +298,18 @@ def _reason(r, lang: str) -> str:
     return re.sub(r"\b[RP]{3}\([^,()]+,[^,()]+\)", lambda m: group_words(m.group(0), lang), words)
 
 
+def position_entry(r, lang: str, accelerated: bool = False, stroke: str = "") -> str:
+    """One line of the positions' list: ``4:  φ₂ = 91,3°  (план убрзања — радни ход)``: a position whose acceleration
+    plan is drawn says so (with its stroke, when known), an unsolved one says that."""
+    entry = f"{r.index}:  {r.label}"
+    if not r.ok:
+        return entry + f"  ({term('not_solved', lang)})"
+    if accelerated:
+        plan = term("acceleration_plan", lang).lower()
+        entry += f"  ({plan} — {stroke})" if stroke else f"  ({plan})"
+    return entry
+
+
 def _turning_driver(run) -> bool:
     """Whether the driver turns (a crank or a rocker): a sliding driver has a stroke, one way, and no working or idle stroke."""
     from ..scene import LinearDriver
@@ -523,13 +535,8 @@ def build_handout(
     if multi:
         entries = []
         for r in run.runs:
-            entry = f"{r.index}:  {r.label}"
-            if not r.ok:
-                entry += f"  ({term('not_solved', lang)})"
-            elif r.index in chosen:
-                stroke = _stroke(r, working, lang, phases)
-                entry += f"  ({stroke})" if stroke else ""
-            entries.append(entry)
+            accelerated = r.ok and r.index in chosen
+            entries.append(position_entry(r, lang, accelerated, _stroke(r, working, lang, phases) if accelerated else ""))
         if run.strokes is not None and run.motion is not None and run.motion.start == "output" and run.strokes.law.crank:
             from ..positions import position_text
 
