@@ -59,3 +59,21 @@ def test_the_positions_list_names_the_acceleration_plans():
         text = position_entry(r, lang, True, term("working_stroke", lang))
         assert text.endswith(f"({plan.lower()} — {stroke})"), text
     assert position_entry(r, "sr") == "4:  φ₂ = 91.3°"  # (the page sets the decimal comma)
+
+
+def test_linear_arm_bulgarian_words():
+    """The frame's guide is the "стойка" (the fixed link), not "под" (floor); the sleeve's line named by the points
+    on it in its direction (F, K on the rod/sleeve line, G further along: from linear-arm.toml's assembly, G near
+    (0.49, 0.25) m, beyond K ≈ (0.41, 0.22) m from F = (0, 0.15) m); K said as the coefficient, not a bare "K"."""
+    from plans.i18n import term
+    from plans.pages.words import assembly_lines
+
+    run = run_positions(plans.load(plans.example_path("linear-arm")), 8)
+    driver = scene_data_lines(run.scene, "bg", run.motion.law)[0]
+    assert "стойка ∥ 0°" in driver and "под" not in driver, driver
+    s = run.runs[0]
+    words = assembly_lines(s.analytic.branches, run.scene, "bg", s.graphical.positions)
+    assert words[0] == "група 3–4: водачът „втулка“ е насочен F → K → G", words
+    assert "без K" not in term("one_way_stroke", "bg") and "коефициент" in term("one_way_stroke", "bg")
+    assert term("stroke_time", "bg") == "време на хода"
+    assert term("stroke_diagrams", "bg") == "Кинематични диаграми за един ход"

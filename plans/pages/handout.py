@@ -642,7 +642,7 @@ def build_handout(
     doc.mark("loops-end")
 
     if multi:
-        say(term("cycle_diagrams", lang))
+        say(term("cycle_diagrams" if _turning_driver(run) else "stroke_diagrams", lang))
         from ..drawing.diagrams import draw_cycle_diagrams
         from ..drawing.svgblocks import figure_svg
 

@@ -123,8 +123,33 @@ def assembly_text(branch, scene, lang: str, positions=None) -> str | None:
     m = re.fullmatch(rf"line ({_NAME}(?:\.{_NAME})?) pointing from ({_NAME}) towards ({_NAME})", words)
     if m:
         key, a, b = m.groups()
+        g = _GROUP.match(branch.group)
+        points = _points_along(scene, key, a, b, positions, g.groups() if g else ())
+        if points:
+            return term("assembly_directed_points", lang).format(key=name(key.rpartition(".")[2]), points=" → ".join(points))
         return term("assembly_directed", lang).format(key=name(key.rpartition(".")[2]), a=a, b=b)
     return None
+
+
+def _points_along(scene, key: str, a: str, b: str, positions, links=()) -> list[str]:
+    """The named points of the group's *links* lying on the guide line *key* (through its ``through`` point and the pin *a*), in the
+    order of the line's direction u (the branch's words say ``u·(b − a) > 0``): ``["F", "K", "G"]`` for the
+    linear-arm's sleeve; empty when the line is not known so (no positions, *a* off the line, under 3 points)."""
+    body, _, line_name = key.partition(".")
+    line = scene.bodies.get(body).lines.get(line_name) if body in scene.bodies else None
+    if not positions or line is None or line.through not in positions or a not in positions or b not in positions:
+        return []
+    t, pa, pb = complex(positions[line.through]), complex(positions[a]), complex(positions[b])
+    if abs(pa - t) == 0:
+        return []
+    d = (pa - t) / abs(pa - t)
+    if ((pb - pa) * d.conjugate()).real < 0:
+        d = -d
+    size = max(abs(complex(z)) for z in positions.values()) or 1.0
+    mine = {n for link in links if link in scene.bodies for n in scene.bodies[link].points}
+    on = [(((complex(z) - pa) * d.conjugate()).real, n) for n, z in positions.items()
+          if n in mine and abs(((complex(z) - pa) * d.conjugate()).imag) <= 1e-9 * size]
+    return [n for _, n in sorted(on)] if len(on) >= 3 else []
 
 
 def _frame_line(scene, key: str) -> float | None:
