@@ -77,3 +77,12 @@ def test_linear_arm_bulgarian_words():
     assert "без K" not in term("one_way_stroke", "bg") and "коефициент" in term("one_way_stroke", "bg")
     assert term("stroke_time", "bg") == "време на хода"
     assert term("stroke_diagrams", "bg") == "Кинематични диаграми за един ход"
+
+
+def test_a_formula_does_not_break():
+    """"ω₂ = 6 rad/s" is one unit on a page: no breakable space inside it (the kinematic page's heading broke it as
+    "ω₂ / = 6 rad/s"); math pieces left alone."""
+    from plans.pages.document import unbroken
+
+    assert unbroken("при ω₂ = 6 rad/s, t = 0,69 s") == "при ω₂\u00a0=\u00a06\u00a0rad/\u2060s, t\u00a0=\u00a00,69\u00a0s"
+    assert unbroken("$a = b$ = 3 mm") == "$a = b$\u00a0=\u00a03\u00a0mm"

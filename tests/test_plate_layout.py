@@ -296,3 +296,24 @@ def test_a_single_positions_plans_each_have_a_page_region(reviewed):
     assert page_of(term("mechanism", "en")) == 1
     assert page_of(term("velocity_plans", "en")) == 2
     assert page_of(term("acceleration_plans", "en")) >= 2
+
+
+# --- headings on one line, formulas never broken (issue 20, second review) ---------------------------------
+
+
+@pytest.mark.parametrize("key", list(HANDOUTS))
+def test_the_scene_title_on_one_line_under_the_plate_name(reviewed, key):
+    """Page 1 prints the plate's name, then the scene's title whole on one line (smaller where it is long), and the
+    title block "plate name — title" on one line too."""
+    import unicodedata
+
+    from plans.i18n import term
+
+    name, _, lang = HANDOUTS[key]
+    title = unicodedata.normalize("NFKC", plans.load(plans.example_path(name)).title_in(lang))
+    plate = term("plate_title", lang)
+    _, _, pages = reviewed[key]
+    texts = [line[4] for line in pages[0]]
+    assert texts[0] == plate, texts[:3]
+    assert texts[1] == title, texts[:3]
+    assert f"{plate} — {title}" in texts, [t for t in texts if t.startswith(plate)]

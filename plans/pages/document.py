@@ -62,6 +62,30 @@ A3_LANDSCAPE = PageGeometry((420.0, 297.0), (20.0, 5.0), (25.0, 10.0, 10.0, 10.0
 
 
 #: a symbol with a subscript written in plain text (``t_w``), or a ``$…$`` part left as it is
+#: a formula that must not break across lines: ``ω₂ = 6 rad/s``, ``k_l = 0,006 m/mm`` (around an ``=``, a number
+#: and its unit)
+_NUMBER_UNIT = re.compile(r"(?<=\d) (?=(?:rad|m|mm|µm|s|N|kg|м|мм|с|мкм|Н|кг)(?:/|²|\b|$))")
+_UNIT_SLASH = re.compile(r"(?<=[^\W\d_])/(?=[^\W\d_])")
+
+
+def unbroken(line: str) -> str:
+    """*line* with no line break allowed inside a formula: the spaces around an ``=`` and between a number and its
+    unit made non-breaking, a unit's slash (``rad/s``) joined (U+2060); ``$…$`` math left as it is (a math piece is
+    one box already)."""
+    keep = lambda m: m.group(0) if m.group(0).startswith("$") else None  # noqa: E731 (math as it is)
+    line = re.sub(r"\$[^$]*\$|(?<=[^\s=]) = (?=[^\s=])", lambda m: keep(m) or "\u00a0=\u00a0", line)
+    line = re.sub(r"\$[^$]*\$|" + _NUMBER_UNIT.pattern, lambda m: keep(m) or "\u00a0", line)
+    return re.sub(r"\$[^$]*\$|" + _UNIT_SLASH.pattern, lambda m: keep(m) or "/\u2060", line)
+
+
+def fitted(content: str, size_pt: float, least_pt: float = 8.0) -> str:
+    """Typst code setting *content* (a content expression) at *size_pt*, or smaller so that it fits the width it is
+    given on one line (measured by Typst), never under *least_pt* (there it wraps)."""
+    return (f"#layout(room => {{ let body(s) = {{ set text(size: s); {content} }}; "
+            f"let w = measure(body({size_pt}pt)).width; "
+            f"if w <= room.width {{ body({size_pt}pt) }} else {{ body(calc.max({least_pt}pt, {size_pt}pt * (room.width / w) * 0.99)) }} }})")
+
+
 _SUBSCRIPTED = re.compile(r"\$[^$]*\$|(?<![\w\\])([A-Za-zα-ωΑ-Ω])_([A-Za-z0-9]+)(?!\w)")
 
 
@@ -90,7 +114,7 @@ class Document:
         for name in self.scene.names:
             line = re.sub(rf"(?<![\w.]){re.escape(name)}(?!\w)", lambda m: self.scene.name_in(name, self.lang), line)
         line = _SUBSCRIPTED.sub(lambda m: m.group(0) if m.group(0).startswith("$") else f"${m.group(1)}_{{{m.group(2)}}}$", line)
-        return mixed(units(decimal_comma(line, self.lang), self.lang))
+        return mixed(unbroken(units(decimal_comma(line, self.lang), self.lang)))
 
     def section(self, name: str) -> None:
         self.order.append(name)
@@ -103,6 +127,13 @@ class Document:
             # the title block is set at the page's end: the name changes on the page a section starts
             self.body.append(f"#plate-name.update({string(term(self.plate_name, self.lang))})")
             self._named = self.plate_name
+
+    def title(self, plate: str, title: str) -> None:
+        """The first page's heading as a plate prints it: the plate's name (a level-1 heading), the scene's *title*
+        on its own line under it, one line: set smaller where it is long (:func:`fitted`, down to 8 pt; below
+        that it wraps)."""
+        self.body.append("= " + self.words(plate))
+        self.body.append(fitted(f"text(weight: \"bold\")[{self.words(title)}]", 12.0) + "\n")
 
     def line_markup(self, words: str, size: float = TEXT_PT) -> str:
         return f"#text(size: {size}pt)[{self.words(words)}]"
@@ -318,9 +349,10 @@ class Document:
         if self.per_position is not None:
             scale_text += " " + text("(" + term("scales_each_position", lang) + ")")
         sheet = f"{text(term('sheet', lang))} #context counter(page).get().first() {text(term('of_sheets', lang))} #context counter(page).final().first()"
+        named = fitted('[#text(weight: "bold")[#context plate-name.get()] — ' + text(self.scene.title_in(lang)) + "]", 10.0, 6.0)
         title_block = (
             f"table(columns: (1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
-            f" table.cell(colspan: 2)[#text(size: 10pt, weight: \"bold\")[#context plate-name.get()] — #text(size: 10pt)[{text(self.scene.title_in(lang))}]],"
+            f" table.cell(colspan: 2)[{named}],"
             f" [#text(size: 9pt)[{sheet}]],"
             f" table.cell(colspan: 3)[#text(size: 8.5pt)[{text(term('scale_factors', lang))}: {scale_text}]],"
             f" [#text(size: 8pt)[{text(term('drawn_by', lang))}:]], [#text(size: 8pt)[{text(term('checked_by', lang))}:]], [#text(size: 8pt)[{text(term('date', lang))}:]])"

@@ -517,12 +517,12 @@ def build_handout(
     working = (1.0 if plus >= minus else -1.0) if plus and minus else 0.0
 
     doc.section("data")
-    doc.heading(f"{term('plate_title', lang)}: {scene.title_in(lang)}", level=1)
+    doc.title(term("plate_title", lang), scene.title_in(lang))  # the plate's name, the scene's title under it
     from .words import cycle_lines
 
-    law = run.motion.law if multi and run.motion is not None else None  # the cycle's law, stated below the data
-    said_once = law is not None and law.kind == "constant"  # the rate in the driver's line, ε = 0 in the law's
-    doc.lines([formula_words(line) for line in data_lines(scene, lang, law)
+    cycle_law = run.motion.law if multi and run.motion is not None else None  # the cycle's law, stated below the data
+    said_once = cycle_law is not None and cycle_law.kind == "constant"  # the rate in the driver's line, ε = 0 in the law's
+    doc.lines([formula_words(line) for line in data_lines(scene, lang, cycle_law)
                + (_with_given_note(cycle_lines(run, lang, rate=not said_once), run, lang) if multi else [])],
               size=TEXT_PT)
     doc.line(f"{term('structural_formula', lang)}:  {formula_words(run.structure.formula)}", size=TEXT_PT)
