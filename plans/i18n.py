@@ -1257,4 +1257,8 @@ TERMS.update({
     "stroke_diagrams": {"en": "Kinematic diagrams over one stroke", "sr": "Кинематски дијаграми током једног хода",
                         "ru": "Кинематические диаграммы за один ход", "bg": "Кинематични диаграми за един ход",
                         "sl": "Kinematični diagrami v enem hodu"},
+    # the key of a plan's notes on vectors that lie one along another (their angles)
+    "angle_from_x": {"en": "∠ in the notes: from the x axis, counter-clockwise", "sr": "∠ у напоменама: од осе x, супротно од казаљке на сату",
+                     "ru": "∠ в примечаниях: от оси x, против часовой стрелки", "bg": "∠ в бележките: от оста x, обратно на часовниковата стрелка",
+                     "sl": "∠ v opombah: od osi x, v nasprotni smeri urnega kazalca"},
 })

@@ -80,9 +80,17 @@ def test_linear_arm_bulgarian_words():
 
 
 def test_a_formula_does_not_break():
-    """"ω₂ = 6 rad/s" is one unit on a page: no breakable space inside it (the kinematic page's heading broke it as
-    "ω₂ / = 6 rad/s"); math pieces left alone."""
-    from plans.pages.document import unbroken
+    """"ω₂ = 6 rad/s" is one unit on a page, set in one box (the kinematic page's heading broke it as
+    "ω₂ / = 6 rad/s"); math pieces whole."""
+    from plans.pages.document import formula_parts
 
-    assert unbroken("при ω₂ = 6 rad/s, t = 0,69 s") == "при ω₂\u00a0=\u00a06\u00a0rad/\u2060s, t\u00a0=\u00a00,69\u00a0s"
-    assert unbroken("$a = b$ = 3 mm") == "$a = b$\u00a0=\u00a03\u00a0mm"
+    assert formula_parts("при ω₂ = 6 rad/s, t = 0,69 s") == [("при ", False), ("ω₂ = 6 rad/s", True), (", ", False), ("t = 0,69 s", True)]
+    assert formula_parts("$k_v$ = 0,02 (m/s)/mm; x") == [("$k_v$ = 0,02 (m/s)/mm", True), ("; x", False)]
+    assert formula_parts("$a = b$ c") == [("$a = b$ c", False)]
+
+
+def test_the_page_sets_a_formula_in_a_box():
+    from plans.pages.document import Document
+
+    doc = Document(plans.load(plans.example_path("quick-return")), "sr")
+    assert '#box[#"ω₂ = 6 rad/s"]' in doc.words("при ω₂ = 6 rad/s"), doc.words("при ω₂ = 6 rad/s")

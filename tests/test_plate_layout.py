@@ -317,3 +317,13 @@ def test_the_scene_title_on_one_line_under_the_plate_name(reviewed, key):
     assert texts[0] == plate, texts[:3]
     assert texts[1] == title, texts[:3]
     assert f"{plate} — {title}" in texts, [t for t in texts if t.startswith(plate)]
+
+
+def test_the_angles_in_the_notes_are_said_from_what(reviewed):
+    """quick-return (sr): the notes "∠(pa) = 181,3°" of the collinear plans; the plans' scale line says once that ∠
+    is from the x axis, counter-clockwise (velocity plans, acceleration plans); six-bar (en) the same in English."""
+    _, _, pages = reviewed["quick-return-sr"]
+    lines = [line[4] for page in pages for line in page]
+    key = "∠ у напоменама: од осе x, супротно од казаљке на сату"
+    assert sum(1 for t in lines if t.endswith("; " + key)) == 2, [t for t in lines if "∠" in t][:6]
+    assert any(re.fullmatch(r"∠\(p\S+\) = \d+,\d°.*", t) for t in lines)

@@ -62,20 +62,27 @@ A3_LANDSCAPE = PageGeometry((420.0, 297.0), (20.0, 5.0), (25.0, 10.0, 10.0, 10.0
 
 
 #: a symbol with a subscript written in plain text (``t_w``), or a ``$…$`` part left as it is
-#: a formula that must not break across lines: ``ω₂ = 6 rad/s``, ``k_l = 0,006 m/mm`` (around an ``=``, a number
-#: and its unit)
-_NUMBER_UNIT = re.compile(r"(?<=\d) (?=(?:rad|m|mm|µm|s|N|kg|м|мм|с|мкм|Н|кг)(?:/|²|\b|$))")
-_UNIT_SLASH = re.compile(r"(?<=[^\W\d_])/(?=[^\W\d_])")
+#: a formula that must not break across lines: ``ω₂ = 6 rad/s``, ``$k_l$ = 0,006 m/mm`` (a name, ``=``, a value and
+#: its unit; ``$…$`` math whole)
+_FORMULA = re.compile(r"(?:\$[^$]*\$|[^\s=$]+) = (?:\$[^$]*\$|[−-]?\d+(?:[.,]\d+)*[^\s=$,;]*|[^\s=$,;]+)"
+                      r"(?: \(?(?:rad|m|mm|µm|s|N|kg|м|мм|с|мкм|Н|кг)(?![^\W\d_])[^\s,;]*)?|\$[^$]*\$")
 
 
-def unbroken(line: str) -> str:
-    """*line* with no line break allowed inside a formula: the spaces around an ``=`` and between a number and its
-    unit made non-breaking, a unit's slash (``rad/s``) joined (U+2060); ``$…$`` math left as it is (a math piece is
-    one box already)."""
-    keep = lambda m: m.group(0) if m.group(0).startswith("$") else None  # noqa: E731 (math as it is)
-    line = re.sub(r"\$[^$]*\$|(?<=[^\s=]) = (?=[^\s=])", lambda m: keep(m) or "\u00a0=\u00a0", line)
-    line = re.sub(r"\$[^$]*\$|" + _NUMBER_UNIT.pattern, lambda m: keep(m) or "\u00a0", line)
-    return re.sub(r"\$[^$]*\$|" + _UNIT_SLASH.pattern, lambda m: keep(m) or "/\u2060", line)
+def formula_parts(line: str) -> list[tuple[str, bool]]:
+    """*line* cut into ``(piece, formula)``: a formula (``ω₂ = 6 rad/s``) is set in one box on a page, never broken
+    across lines; the rest, and ``$…$`` math standing alone, as it is."""
+    out: list[tuple[str, bool]] = []
+    last = 0
+    for m in _FORMULA.finditer(line):
+        if " = " not in m.group(0) or (m.group(0).startswith("$") and m.group(0).endswith("$") and m.group(0).count("$") == 2):
+            continue
+        if m.start() > last:
+            out.append((line[last:m.start()], False))
+        out.append((m.group(0), True))
+        last = m.end()
+    if last < len(line):
+        out.append((line[last:], False))
+    return out
 
 
 def fitted(content: str, size_pt: float, least_pt: float = 8.0) -> str:
@@ -114,7 +121,8 @@ class Document:
         for name in self.scene.names:
             line = re.sub(rf"(?<![\w.]){re.escape(name)}(?!\w)", lambda m: self.scene.name_in(name, self.lang), line)
         line = _SUBSCRIPTED.sub(lambda m: m.group(0) if m.group(0).startswith("$") else f"${m.group(1)}_{{{m.group(2)}}}$", line)
-        return mixed(unbroken(units(decimal_comma(line, self.lang), self.lang)))
+        line = units(decimal_comma(line, self.lang), self.lang)
+        return "".join(f"#box[{mixed(piece)}]" if formula else mixed(piece) for piece, formula in formula_parts(line))
 
     def section(self, name: str) -> None:
         self.order.append(name)

@@ -50,7 +50,7 @@ from .document import A4_PORTRAIT, Document, GUTTER, SMALL_PT, TEXT_PT
 from .typesetting import compile_document
 from .words import assembly_lines, formula_words, namer
 
-__all__ = ["Handout", "build_handout", "position_entry", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
+__all__ = ["Handout", "build_handout", "position_entry", "angles_key", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
 
 #: The sections of a multi-position handout, in the plate's order (names as :attr:`Handout.order` lists them).
 ORDER = ("data", "positions", "velocity-equations", "velocity-plans", "acceleration-equations", "acceleration-plans",
@@ -296,6 +296,17 @@ def _reason(r, lang: str) -> str:
 
     words = reason_text(str(r.error), lang, r.cause)
     return re.sub(r"\b[RP]{3}\([^,()]+,[^,()]+\)", lambda m: group_words(m.group(0), lang), words)
+
+
+def angles_key(doc, plans) -> str:
+    """What the angles in the plans' notes are measured from (``∠(pa) = 181,3°``: from the x axis, counter-clockwise),
+    said once beside the plans' scale, as markup; empty when none of *plans* has such a note
+    (:func:`plans.drawing.plan_drawing.alongside`)."""
+    from ..drawing.plan_drawing import alongside
+
+    if not any(alongside(plan) for plan in plans):
+        return ""
+    return doc.line_markup(";   " + term("angle_from_x", doc.lang), SMALL_PT)
 
 
 def position_entry(r, lang: str, accelerated: bool = False, stroke: str = "") -> str:
@@ -547,7 +558,8 @@ def build_handout(
     doc.equations(f"{term('vector_equations', lang)}: {term('velocity_plan', lang).lower()}", sample.graphical.velocity_plan.steps, name)
     doc.section("velocity-plans")
     doc.headed_legend(term("velocity_plans", lang) + (f" ({term('each_from_its_pole', lang)})" if multi else ""),
-                      doc.scale_markup("k_v", plate["k_v"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
+                      (doc.scale_markup("k_v", plate["k_v"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT))
+                      + angles_key(doc, [h.graphical.velocity_plan for h in here.values()]),
                       "legend-v", legend_v)
     cells = []
     for r in run.runs:
@@ -600,7 +612,8 @@ def build_handout(
                       name, new_page=not multi and not eq_under_v)
         doc.section("acceleration-plans")
         doc.headed_legend(term("acceleration_plans", lang),
-                          doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
+                          (doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT))
+                          + angles_key(doc, [here[k].graphical.acceleration_plan for k in chosen]),
                           "legend-a", legend_a)
         cells = []
         for k in chosen:
