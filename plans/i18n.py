@@ -1261,4 +1261,8 @@ TERMS.update({
     "angle_from_x": {"en": "∠ in the notes: from the x axis, counter-clockwise", "sr": "∠ у напоменама: од осе x, супротно од казаљке на сату",
                      "ru": "∠ в примечаниях: от оси x, против часовой стрелки", "bg": "∠ в бележките: от оста x, обратно на часовниковата стрелка",
                      "sl": "∠ v opombah: od osi x, v nasprotni smeri urnega kazalca"},
+    # the plan of positions: the marks whose number found no room of its own
+    "not_numbered": {"en": "not numbered (no room beside the point)", "sr": "без броја (нема места поред тачке)",
+                     "ru": "без номера (нет места рядом с точкой)", "bg": "без номер (няма място до точката)",
+                     "sl": "brez številke (ni prostora ob točki)"},
 })

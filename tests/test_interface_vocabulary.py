@@ -368,6 +368,7 @@ VOCABULARY = {
     "one_way_stroke": {"sr": "у једном смеру: без повратног хода, без коефицијента повећања средње брзине K", "ru": "в одну сторону: без обратного хода, без коэффициента изменения средней скорости K", "bg": "в една посока: без обратен ход, без коефициент на изменение на средната скорост K", "sl": "v eno smer: brez povratnega hoda, brez koeficienta povečanja srednje hitrosti K"},
     "assembly_directed_points": {"sr": "вођица {key} усмерена {points}", "ru": "направляющая {key} направлена {points}", "bg": "водачът „{key}“ е насочен {points}", "sl": "vodilo {key} usmerjeno {points}"},
     "angle_from_x": {"sr": "∠ у напоменама: од осе x, супротно од казаљке на сату", "ru": "∠ в примечаниях: от оси x, против часовой стрелки", "bg": "∠ в бележките: от оста x, обратно на часовниковата стрелка", "sl": "∠ v opombah: od osi x, v nasprotni smeri urnega kazalca"},
+    "not_numbered": {"sr": "без броја (нема места поред тачке)", "ru": "без номера (нет места рядом с точкой)", "bg": "без номер (няма място до точката)", "sl": "brez številke (ni prostora ob točki)"},
     "stroke_time": {"sr": "време хода", "ru": "время хода", "bg": "време на хода", "sl": "čas hoda"},
     "stroke_diagrams": {"sr": "Кинематски дијаграми током једног хода", "ru": "Кинематические диаграммы за один ход", "bg": "Кинематични диаграми за един ход", "sl": "Kinematični diagrami v enem hodu"},
     "centre_column": {"sr": "пол", "ru": "центр", "bg": "център", "sl": "pol"},
