@@ -62,10 +62,10 @@ A3_LANDSCAPE = PageGeometry((420.0, 297.0), (20.0, 5.0), (25.0, 10.0, 10.0, 10.0
 
 
 #: a symbol with a subscript written in plain text (``t_w``), or a ``$…$`` part left as it is
-#: a formula that must not break across lines: ``ω₂ = 6 rad/s``, ``$k_l$ = 0,006 m/mm`` (a name, ``=``, a value and
+#: a formula that must not break across lines: ``ω₂ = 6 rad/s``, ``$k_l$ = 0,006 m/mm`` (a name, ``=``, a number and
 #: its unit; ``$…$`` math whole)
-_FORMULA = re.compile(r"(?:\$[^$]*\$|[^\s=$]+) = (?:\$[^$]*\$|[−-]?\d+(?:[.,]\d+)*[^\s=$,;]*|[^\s=$,;]+)"
-                      r"(?: \(?(?:rad|m|mm|µm|s|N|kg|м|мм|с|мкм|Н|кг)(?![^\W\d_])[^\s,;]*)?|\$[^$]*\$")
+_FORMULA = re.compile(r"(?:\$[^$]*\$|[^\s=$]+) = [−-]?\d+(?:[.,]\d+)*"
+                      r" \(?(?:rad|m|mm|µm|s|N|kg|м|мм|с|мкм|Н|кг)(?![^\W\d_])[^\s,;]*|\$[^$]*\$")
 
 
 def formula_parts(line: str) -> list[tuple[str, bool]]:
