@@ -553,9 +553,9 @@ TERMS: dict[str, dict[str, str]] = {
                                    "bg": "в безкрайността, перпендикулярно на водача", "sl": "v neskončnosti, pravokotno na vodilo"},
     "centres_order": {"en": "The order of finding the centres", "sr": "Редослед налажења полова", "ru": "Порядок нахождения центров",
                       "bg": "Ред на намиране на центровете", "sl": "Vrstni red iskanja polov"},
-    "one_way_stroke": {"en": "one way: no return stroke, no K", "sr": "у једном смеру: без повратног хода, без K",
-                       "ru": "в одну сторону: без обратного хода, без K", "bg": "в една посока: без обратен ход, без K",
-                       "sl": "v eno smer: brez povratnega hoda, brez K"},
+    "one_way_stroke": {"en": "one way: no return stroke, no coefficient of the average speed increase K", "sr": "у једном смеру: без повратног хода, без коефицијента повећања средње брзине K",
+                       "ru": "в одну сторону: без обратного хода, без коэффициента изменения средней скорости K", "bg": "в една посока: без обратен ход, без коефициент на изменение на средната скорост K",
+                       "sl": "v eno smer: brez povratnega hoda, brez koeficienta povečanja srednje hitrosti K"},
     # readings of a plan (issue 10 §2): what a student measures and computes
     "readings": {
         "en": "readings",
@@ -722,6 +722,13 @@ TERMS: dict[str, dict[str, str]] = {
         "ru": "направляющая {key} направлена от {a} к {b}",
         "bg": "водачът „{key}“ е насочен от {a} към {b}",
         "sl": "vodilo {key} usmerjeno od {a} proti {b}",
+    },
+    "assembly_directed_points": {
+        "en": "{key} directed {points}",
+        "sr": "вођица {key} усмерена {points}",
+        "ru": "направляющая {key} направлена {points}",
+        "bg": "водачът „{key}“ е насочен {points}",
+        "sl": "vodilo {key} usmerjeno {points}",
     },
     "open_four_bar": {"en": "open four-bar", "sr": "отворени зглавкасти четвороугао", "ru": "открытый шарнирный четырёхзвенник",
                       "bg": "отворен шарнирен четиризвенник", "sl": "odprti štirizgibni mehanizem"},
@@ -1245,6 +1252,19 @@ TERMS.update({
         "bg": "детайл",
         "sl": "detajl",
     },
+    # a sliding driver's cycle is its one-way stroke (issue 20, second review): "one stroke", not "one cycle"
+    "stroke_time": {"en": "time of the stroke", "sr": "време хода", "ru": "время хода", "bg": "време на хода", "sl": "čas hoda"},
+    "stroke_diagrams": {"en": "Kinematic diagrams over one stroke", "sr": "Кинематски дијаграми током једног хода",
+                        "ru": "Кинематические диаграммы за один ход", "bg": "Кинематични диаграми за един ход",
+                        "sl": "Kinematični diagrami v enem hodu"},
+    # the key of a plan's notes on vectors that lie one along another (their angles)
+    "angle_from_x": {"en": "∠ in the notes: from the x axis, counter-clockwise", "sr": "∠ у напоменама: од осе x, супротно од казаљке на сату",
+                     "ru": "∠ в примечаниях: от оси x, против часовой стрелки", "bg": "∠ в бележките: от оста x, обратно на часовниковата стрелка",
+                     "sl": "∠ v opombah: od osi x, v nasprotni smeri urnega kazalca"},
+    # the plan of positions: the marks whose number found no room of its own
+    "not_numbered": {"en": "not numbered (no room beside the point)", "sr": "без броја (нема места поред тачке)",
+                     "ru": "без номера (нет места рядом с точкой)", "bg": "без номер (няма място до точката)",
+                     "sl": "brez številke (ni prostora ob točki)"},
 })
 
 

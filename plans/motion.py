@@ -476,8 +476,11 @@ class DriverLaw:
         value = value.replace(".", ",") if lang in ("sr", "ru", "bg", "sl") else value
         return term("law_given_instant_only", lang).format(q=f"{a}{subscript(link) if link else ''} = {value} {unit}")
 
-    def describe(self, lang: str = "en", link: str | None = None, phase: float | None = None) -> str:
+    def describe(self, lang: str = "en", link: str | None = None, phase: float | None = None, rate: bool = True) -> str:
         """The law in a few words of *lang*, with its numbers: ``"driver law: constant ω₂ = 10 rad/s (ε₂ = 0)"``.
+
+        *rate*: False leaves a constant law's rate out (``"constant angular velocity, ε₂ = 0"``), where the
+        driver's line above it gives the rate already (the handout's data, said once).
 
         *phase*: a swing's phase ψ [rad] at t = 0 of the diagrams it heads (:attr:`Cycle.phase` of their first
         position): the law is then stated with that time origin, φ = φc − A·cos Ω(t + t₀), t₀ = ψ/Ω."""
@@ -496,7 +499,8 @@ class DriverLaw:
 
         head = term("driver_law", lang)
         if self.kind == "constant":
-            body = f"{term('law_constant_angular' if self.crank else 'law_constant', lang)}: {r}{sub} = {num(self.rate0)} {unit_r}, {a}{sub} = 0"
+            said = f": {r}{sub} = {num(self.rate0)} {unit_r}," if rate else ","
+            body = f"{term('law_constant_angular' if self.crank else 'law_constant', lang)}{said} {a}{sub} = 0"
         elif self.kind == "uniform":
             body = (f"{term('law_uniform', lang)}: {r}{sub}² = {r}₀² + 2{a}{sub}({x}{sub} − {x}₀), "
                     f"{r}₀ = {num(self.rate0)} {unit_r} {term('law_at', lang)} {x}₀ = {where(self.x0)}, {a}{sub} = {num(self.acceleration)} {unit_a}")

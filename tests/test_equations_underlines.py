@@ -39,7 +39,9 @@ def test_normal_and_coriolis_twice_tangential_relative_once():
 
 
 def test_linear_driver_acceleration_is_known():
-    assert equation_math("a_A = a") == twice("arrow(a)_(A)") + " = a"
+    """The driver's given right side is underlined twice; the sought left side, as the key says, not at all."""
+    assert equation_math("a_A = a") == "arrow(a)_(A) = " + twice("a")
+    assert equation_math("v_A = ω2 × OA") == "arrow(v)_(A) = " + twice("ω_2 times O A")
 
 
 def _steps(example, n, k):
@@ -69,7 +71,16 @@ def test_six_bar_e5b_once():
 def test_linear_arm_driver_steps():
     g = _steps("linear-arm", 8, 1)
     first = [step_lines(p.steps[0])[0][0] for p in (g.velocity_plan, g.acceleration_plan)]
-    assert [e.partition(" = ")[0] for e in first] == [twice("arrow(v)_(A)"), twice("arrow(a)_(A)")]
+    assert [e.partition(" = ")[0] for e in first] == ["arrow(v)_(A)", "arrow(a)_(A)"]
+    assert all("underline" in e.partition(" = ")[2] for e in first)
+
+
+def test_quick_return_driver_line_and_modulus():
+    """Issue 20 review: the driver's line ``v_A = ω₂ × OA (⊥ OA, |ω₂|·OA)``: v_A bare, ω₂ × OA twice, the modulus as abs()."""
+    g = _steps("quick-return", 12, 0)
+    ((eq, cond),) = step_lines(g.velocity_plan.steps[0])
+    assert eq == "arrow(v)_(A) = " + twice("ω_2 times O A")
+    assert "abs(ω_2)" in cond and "|" not in cond
 
 
 def test_double_underline_rules_apart():

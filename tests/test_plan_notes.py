@@ -251,7 +251,7 @@ def test_no_round_off_is_printed_in_the_tables(handouts):
 
 def _rows(source: str, heading: str) -> list[list[str]]:
     """The rows of the first table after *heading* in the Typst source: each cell's text (math as Typst writes it)."""
-    start = re.search(re.escape(heading) + r'[^\]]*\] \\\n#table\(', source).start()
+    start = re.search(re.escape(heading) + r'[^\n]*?\] \\\n#table\(', source).start()  # (a formula in it boxed: #box[…])
     table = source[source.index("#table(", start):]
     table = table[:table.index("table.hline(stroke: 0.7pt))")]
     cells = re.findall(r'text\(weight: "(?:bold|regular)"\)\[(.*?)\](?=, text\(|, table\.hline)', table)

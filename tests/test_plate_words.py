@@ -281,7 +281,7 @@ def test_centres_drawing_large_enough_to_read():
     """The linear-arm's centres (bg) were drawn at k_l 0.03 m/mm, the mechanism some 35 mm across under 16 labels:
     at least 60 mm now (its points' extent at the pages' k_l)."""
     doc = _built("linear-arm")
-    k = float(re.search(r'plate-kl\.update\(\[\$k_\(l \)\$#" = ([0-9,]+) ', doc.source).group(1).replace(",", "."))
+    k = float(re.search(r'plate-kl\.update\(\[(?:#box\[)?\$k_\(l \)\$#" = ([0-9,]+) ', doc.source).group(1).replace(",", "."))
     for h in doc.runs:
         zs = list(h.analytic.points.values())
         xs = [complex(p.r[0]).real for p in zs]

@@ -65,15 +65,17 @@ def test_most_marks_are_numbered(plans_of_positions):
         assert numbers <= marks
         numbers |= _scheme_labelled(run) & marks  # position 0's points labelled once, by the scheme
         # the linear arm's 12 positions crowd a 60 mm stroke: 28 of its 60 marks have room (18 before)
-        assert len(numbers) >= 0.45 * len(marks), (name, len(numbers), len(marks))
+        # (issue 20, 2nd review: a number that would lie nearer another point is left out, and the plan says so)
+        assert len(numbers) >= 0.4 * len(marks), (name, len(numbers), len(marks))
         if name == "rocker-limit":
             # its input swings over ±56° there and back (issue 19): the crank pin revisits its arc, positions pair up
             # (15 of 24 numbered); counted on its own so that the others' share stays what it was
             continue
         counted += len(marks)
         numbered += len(numbers)
-    # 218 of 318 marks (69 %) were numbered before; now 260 (82 %)
-    assert numbered >= 0.8 * counted, (numbered, counted)
+    # 218 of 318 marks (69 %) were numbered before; then 260 (82 %); 248 of 312 (79 %) with every number nearer its
+    # own mark than any other (issue 20, second review: the rest said under the plan)
+    assert numbered >= 0.75 * counted, (numbered, counted)
 
 
 def test_a_leader_line_crosses_no_label(plans_of_positions):

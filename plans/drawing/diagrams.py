@@ -666,7 +666,7 @@ def draw_cycle_diagrams(analytic, *, marked=None, lang: str = "en", components: 
     good = _well_conditioned(analytic)
     crank = hasattr(scene.driver, "omega")
     xwords = term("time", lang) if _swing(cycle) else term("turned_from_0", lang) if crank else term("driver_position", lang)
-    title = term("cycle_diagrams", lang)
+    title = term("cycle_diagrams" if crank or _swing(cycle) else "stroke_diagrams", lang)  # a sliding driver: one stroke
     subtitle = user_text(scene.title_in(lang) if hasattr(scene, "title_in") else scene.title)
     if cycle is not None:
         subtitle += "\n" + cycle.law.describe(lang, scene.driver.link, **({"phase": float(cycle.phase[0])} if _swing(cycle) else {}))

@@ -611,7 +611,7 @@ def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
         even = f" ({term('equal_time_steps', lang)} Δt)"
     return [
         f"{words['output']};  {term('positions', lang)}: {count}{even}" + law,
-        f"T = {_num(duration, lang, 4)} s ({term('cycle_time', lang)}){steps},  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
+        f"T = {_num(duration, lang, 4)} s ({term('cycle_time' if d.law is None or d.law.crank else 'stroke_time', lang)}){steps},  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
         f"$\\mu_{{t}}$ = T/L = {_short(sc.mu_t, lang)} s/mm",
         origin_line(d, lang),
     ]

@@ -49,6 +49,10 @@ NUMBER_CLEAR_MM = 0.25
 NEAR_GAPS = (0.5, 1.1, 1.8)
 LEADER_GAPS = (3.5, 5.0, 7.0, 9.5)
 LEADER_PT = 0.35
+#: Marks closer than this [mm] are all but one (a number beside one is beside the other): no rival to each other.
+SAME_MARK_MM = 1.0
+#: How many directions round its mark a number tries at each gap.
+DIRECTIONS = 32
 #: The most of a leader line that may run inside what its mark sits in (a pin, a block), as a fraction of its length.
 LEADER_INSIDE = 0.6
 #: A line or pin within this [mm] of a mark's edge is what the mark sits on: its leader may cross it.
@@ -165,18 +169,23 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     # position 0 of every point first, then the others in order
     centres = {p: (complex(np.nanmean(np.asarray(cycle.points[p].r)[assembled])) / k_l if p in cycle.points and assembled.any() else mech.centroid) for p in numbered}
     labelled = set(mechanism_labels(base))
+    # (a number nearer its own mark than any other: a reader takes a number for the nearest point's)
+    extreme_marks = [(label, p, complex(g.positions[p]) / k_l) for label, g in (extremes or {}).items() for p in numbered if p in g.positions]
+    every = np.array([at for _, _, at in marks] + [at for _, _, at in extreme_marks], dtype=complex)
+    left_out = []
     for index, p, at in sorted(marks, key=lambda m: (m[0] != runs[0].index, m[0], numbered.index(m[1]))):
         if index == runs[0].index and p in labelled:
             continue  # position 0 is the one drawn in full: its points are labelled once, by the scheme
         away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
-        place_number(sketch, at, f"{p}{_sub(index)}", gid=f"position-{index}-{p}", size=NUMBER_PT, prefer=away)
-    for label, g in (extremes or {}).items():
-        for p in numbered:
-            if p in g.positions:
-                at = complex(g.positions[p]) / k_l
-                sketch.circle(at, MARK_R, fc="#000000", lw=0, gid=f"mark-extreme-{p}", zorder=4.5, obstacle=True)
-                away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
-                place_number(sketch, at, f"{p}{label.translate(SUBSCRIPT)}", gid=f"position-extreme-{p}", size=NUMBER_PT, prefer=away)
+        # position 0 (the scheme drawn in full) numbered first, wherever it has room; the others nearest their marks
+        rivals = None if index == runs[0].index else every
+        if place_number(sketch, at, f"{p}{_sub(index)}", gid=f"position-{index}-{p}", size=NUMBER_PT, prefer=away, rivals=rivals) is None:
+            left_out.append(f"{p}{_sub(index)}")
+    for label, p, at in extreme_marks:
+        sketch.circle(at, MARK_R, fc="#000000", lw=0, gid=f"mark-extreme-{p}", zorder=4.5, obstacle=True)
+        away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
+        if place_number(sketch, at, f"{p}{label.translate(SUBSCRIPT)}", gid=f"position-extreme-{p}", size=NUMBER_PT, prefer=away, rivals=every) is None:
+            left_out.append(f"{p}{label.translate(SUBSCRIPT)}")
 
     # caption
     b = sketch.bounds
@@ -205,6 +214,17 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
                     complex(x, y), f"{term('not_drawn', lang)} ({term(cause, lang)}): {number_ranges(numbers)}",
                     size=CAPTION_PT, ha="left", va="top", gid=f"skipped-{cause}", obstacle=False,
                 )
+    if left_out:  # the marks whose number found no room of its own, said (never silently left out)
+        words, lines = f"{term('not_numbered', lang)}:", []
+        for item in left_out:  # lines as wide as the drawing (a caption never widens it)
+            if text_size(f"{words} {item},", CAPTION_PT)[0] > max(b.width, 60.0) and words.strip():
+                lines.append(words)
+                words = "    "
+            words += f" {item},"
+        lines.append(words.rstrip(","))
+        for n, line in enumerate(lines):
+            y -= 4.5
+            sketch.text(complex(x, y), line, size=CAPTION_PT, ha="left", va="top", gid=f"unnumbered-{n}", obstacle=False)
     y -= 5.0
     # the paths' legend in words (the path of point A), in rows no wider than the drawing
     row_width = max(b.xmax - b.xmin, 60.0)
@@ -259,19 +279,21 @@ def _closer_than(geoms, shapes, limit: float):
     return out
 
 
-def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: float, prefer: complex | None = None):
+def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: float, prefer: complex | None = None, rivals=None):
     """A position number beside its mark where it has room; else at the end of a short leader line; else none.
 
     Room means its box keeps :data:`NUMBER_CLEAR_MM` from every obstacle
     (marks, the scheme, its labels, the numbers already placed) and a leader
-    crosses no other label.  Returns the Text, or None when there is no room.
+    crosses no other label; and, with *rivals* (the other marks [mm]), its
+    centre is nearer its own mark than any rival.  Returns the Text, or None
+    when there is no room.
     """
     w, h = text_size(text, size)
     base = cmath.phase(prefer) if prefer else math.radians(45)
     candidates = []  # (centre, unit direction, on a leader), in the order they are preferred
     for gap, leader in [(g, False) for g in NEAR_GAPS] + [(g, True) for g in LEADER_GAPS]:
-        for k in range(16):
-            theta = base + 2 * math.pi * (k // 2 + 1) / 16 * (1 if k % 2 else -1) if k else base
+        for k in range(DIRECTIONS):
+            theta = base + 2 * math.pi * (k // 2 + 1) / DIRECTIONS * (1 if k % 2 else -1) if k else base
             u = cmath.exp(1j * theta)
             candidates.append((at + u * (gap + abs(u.real) * w / 2 + abs(u.imag) * h / 2), u, leader))
     # only what lies within reach of the farthest candidate can be in the way
@@ -282,6 +304,13 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         shapes = shapes[(x0 <= at.real + reach) & (x1 >= at.real - reach) & (y0 <= at.imag + reach) & (y1 >= at.imag - reach)]
     boxes = np.array([box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2) for c, _, _ in candidates], dtype=object)
     crowded = _closer_than(boxes, shapes, NUMBER_CLEAR_MM)
+    if rivals is not None and len(rivals):
+        others_at = np.asarray(rivals, dtype=complex)
+        others_at = others_at[np.abs(others_at - at) > SAME_MARK_MM]  # (marks all but on one another: no label tells them apart)
+        if len(others_at):
+            centres_c = np.array([c for c, _, _ in candidates], dtype=complex)
+            nearest = np.min(np.abs(centres_c[:, None] - others_at[None, :]), axis=1)
+            crowded |= nearest <= np.abs(centres_c - at)
     # what the mark sits in (the pin of position 0's scheme, a block, the ring of a slot): a leader starts inside
     # it and may cross it on its way out, as long as most of the leader is outside (never along a link)
     mark = shapely.Point(at.real, at.imag)

@@ -23,7 +23,7 @@ from .equations import step_lines
 from .typesetting import FONT as _FONT, MATH_FONT as _MATH, image, mixed, string, text
 from .words import block_words, units
 
-__all__ = ["bbox", "plan_extent", "fit_factor", "fitted", "Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "TEXT_PT", "SMALL_PT"]
+__all__ = ["bbox", "plan_extent", "fit_factor", "fitted", "fitted_line", "formula_parts", "Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "TEXT_PT", "SMALL_PT"]
 
 GUTTER = 5.0  # mm between drawings and between columns
 TEXT_PT = 9.5
@@ -114,6 +114,37 @@ def fitted(draw, extent, box, k0: float, given: float | None):
 
 
 #: a symbol with a subscript written in plain text (``t_w``), or a ``$…$`` part left as it is
+#: a formula that must not break across lines: ``ω₂ = 6 rad/s``, ``$k_l$ = 0,006 m/mm`` (a name, ``=``, a number and
+#: its unit; ``$…$`` math whole)
+_FORMULA = re.compile(r"(?:\$[^$]*\$|[^\s=$]+) = [−-]?\d+(?:[.,]\d+)*"
+                      r" \(?(?:rad|m|mm|µm|s|N|kg|м|мм|с|мкм|Н|кг)(?![^\W\d_])[^\s,;]*|\$[^$]*\$")
+
+
+def formula_parts(line: str) -> list[tuple[str, bool]]:
+    """*line* cut into ``(piece, formula)``: a formula (``ω₂ = 6 rad/s``) is set in one box on a page, never broken
+    across lines; the rest, and ``$…$`` math standing alone, as it is."""
+    out: list[tuple[str, bool]] = []
+    last = 0
+    for m in _FORMULA.finditer(line):
+        if " = " not in m.group(0) or (m.group(0).startswith("$") and m.group(0).endswith("$") and m.group(0).count("$") == 2):
+            continue
+        if m.start() > last:
+            out.append((line[last:m.start()], False))
+        out.append((m.group(0), True))
+        last = m.end()
+    if last < len(line):
+        out.append((line[last:], False))
+    return out
+
+
+def fitted_line(content: str, size_pt: float, least_pt: float = 8.0) -> str:
+    """Typst code setting *content* (a content expression) at *size_pt*, or smaller so that it fits the width it is
+    given on one line (measured by Typst), never under *least_pt* (there it wraps)."""
+    return (f"#layout(room => {{ let body(s) = {{ set text(size: s); {content} }}; "
+            f"let w = measure(body({size_pt}pt)).width; "
+            f"if w <= room.width {{ body({size_pt}pt) }} else {{ body(calc.max({least_pt}pt, {size_pt}pt * (room.width / w) * 0.99)) }} }})")
+
+
 _SUBSCRIPTED = re.compile(r"\$[^$]*\$|(?<![\w\\])([A-Za-zα-ωΑ-Ω])_([A-Za-z0-9]+)(?!\w)")
 
 
@@ -144,7 +175,8 @@ class Document:
         for name in self.scene.names:
             line = re.sub(rf"(?<![\w.]){re.escape(name)}(?!\w)", lambda m: self.scene.name_in(name, self.lang), line)
         line = _SUBSCRIPTED.sub(lambda m: m.group(0) if m.group(0).startswith("$") else f"${m.group(1)}_{{{m.group(2)}}}$", line)
-        return mixed(units(decimal_comma(line, self.lang), self.lang))
+        line = units(decimal_comma(line, self.lang), self.lang)
+        return "".join(f"#box[{mixed(piece)}]" if formula else mixed(piece) for piece, formula in formula_parts(line))
 
     def section(self, name: str) -> None:
         self.order.append(name)
@@ -157,6 +189,13 @@ class Document:
             # the title block is set at the page's end: the name changes on the page a section starts
             self.body.append(f"#plate-name.update({string(term(self.plate_name, self.lang))})")
             self._named = self.plate_name
+
+    def title(self, plate: str, title: str) -> None:
+        """The first page's heading as a plate prints it: the plate's name (a level-1 heading), the scene's *title*
+        on its own line under it, one line: set smaller where it is long (:func:`fitted_line`, down to 8 pt; below
+        that it wraps)."""
+        self.body.append("= " + self.words(plate))
+        self.body.append(fitted_line(f"text(weight: \"bold\")[{self.words(title)}]", 12.0) + "\n")
 
     def line_markup(self, words: str, size: float = TEXT_PT) -> str:
         return f"#text(size: {size}pt)[{self.words(words)}]"
@@ -377,9 +416,10 @@ class Document:
             sheet = f"{text(term('sheet', lang))} {self.sheet_number[0]} {text(term('of_sheets', lang))} {self.sheet_number[1]}"
         else:
             sheet = f"{text(term('sheet', lang))} #context counter(page).get().first() {text(term('of_sheets', lang))} #context counter(page).final().first()"
+        named = fitted_line('[#text(weight: "bold")[#context plate-name.get()] — ' + text(self.scene.title_in(lang)) + "]", 10.0, 6.0)
         title_block = (
             f"table(columns: (1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
-            f" table.cell(colspan: 2)[#text(size: 10pt, weight: \"bold\")[#context plate-name.get()] — #text(size: 10pt)[{text(self.scene.title_in(lang))}]],"
+            f" table.cell(colspan: 2)[{named}],"
             f" [#text(size: 9pt)[{sheet}]],"
             f" table.cell(colspan: 3)[#text(size: 8.5pt)[{text(term('scale_factors', lang))}: {scale_text}]],"
             f" [#text(size: 8pt)[{text(term('drawn_by', lang))}:]], [#text(size: 8pt)[{text(term('checked_by', lang))}:]], [#text(size: 8pt)[{text(term('date', lang))}:]])"

@@ -16,7 +16,9 @@ dead centre): a term whose direction alone the conditions give (``v_ED ⊥
 DE``, ``a^r_EE0 ∥ ram``) is underlined once unless it is a normal or a
 Coriolis component (``a^n``, ``a^k``: magnitude and direction known).  A
 driver's equation (no vector on its right: ``v_A = ω2 × OA``, ``a_A = a``)
-gives its left side in full: twice.
+gives its right side in full: the right side is underlined twice, the
+sought left side, as everywhere, not at all.  A modulus ``|ω2|`` is set as
+Typst's ``abs(ω_2)`` (bars that fit the symbol, no space inside).
 
 The second line of a double underline is a thin rule (:data:`DOUBLE_STROKE_PT`)
 drawn :data:`DOUBLE_GAP_PT` below the bounds of the first (the math font's
@@ -55,6 +57,7 @@ def twice(body: str) -> str:
 #: a vector as the graphical method names it: ``v_B``, ``a^n_CB``, ``v_A4A3``
 VECTOR = re.compile(r"(?<![\w^])([a-z])(?:\^([a-z]+))?_([A-Za-z0-9′]+)")
 _RATE = re.compile(r"([α-ωΑ-Ω])(\d+²?|²)")
+_ABS = re.compile(r"\|([^|]+)\|")
 _WORD = re.compile(r"[^\W\d_]+[0-9]*")
 
 
@@ -79,6 +82,11 @@ def _plain_math(part: str, name) -> str:
     out = []
     k = 0
     while k < len(part):
+        m = _ABS.match(part, k)
+        if m:  # a modulus |ω2| → abs(ω_2)
+            out.append(f"abs({_plain_math(m.group(1), name)})")
+            k = m.end()
+            continue
         m = _RATE.match(part, k)
         if m:
             number, squared = m.group(2).rstrip("²"), m.group(2).endswith("²")
@@ -128,6 +136,12 @@ def direction_only(condition: str) -> set[str]:
     return out
 
 
+def term_math(piece: str, name=lambda word: word) -> str:
+    """One term (a vector or a formula) as Typst math, not underlined."""
+    m = VECTOR.fullmatch(piece.strip())
+    return vector_math(*m.groups()) if m else condition_math(piece.strip(), name)
+
+
 def equation_math(equation: str, known=(), found=(), name=lambda word: word, condition: str = "") -> str:
     """One vector equation ``lhs = t1 + t2 …`` as Typst math with the known parts underlined (see the module).
 
@@ -138,10 +152,10 @@ def equation_math(equation: str, known=(), found=(), name=lambda word: word, con
     if not eq:
         return condition_math(equation, name)
     known, found = set(known), set(found) | direction_only(condition)
-    if not any(VECTOR.fullmatch(t.strip()) for t in rhs.split(" + ")):
-        known.add(lhs.strip())  # a driver's equation: the left side given in full
+    if not any(VECTOR.fullmatch(t.strip()) for t in rhs.split(" + ")):  # a driver's equation: the right side given in full
+        return f"{term_math(lhs, name)} = {twice(condition_math(rhs.strip(), name))}"
 
-    def term(piece: str, right: bool) -> str:
+    def term(piece: str) -> str:
         m = VECTOR.fullmatch(piece.strip())
         if not m:
             return condition_math(piece.strip(), name)
@@ -149,12 +163,10 @@ def equation_math(equation: str, known=(), found=(), name=lambda word: word, con
         label = m.group(0)
         if label in found:
             return once(body)
-        if right or label in known:
-            return twice(body)
-        return body
+        return twice(body)
 
-    terms = [term(t, True) for t in rhs.split(" + ")]
-    return f"{term(lhs, False)} = " + " + ".join(terms)
+    terms = [term(t) for t in rhs.split(" + ")]
+    return f"{term_math(lhs, name)} = " + " + ".join(terms)  # the sought vector: never underlined
 
 
 def step_lines(step, name=lambda word: word) -> list[tuple[str, str]]:

@@ -50,7 +50,7 @@ from .document import bbox as _bbox, fitted as _fitted, plan_extent as _plan_ext
 from .typesetting import compile_document
 from .words import assembly_lines, formula_words, namer
 
-__all__ = ["Handout", "build_handout", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
+__all__ = ["Handout", "build_handout", "position_entry", "angles_key", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
 
 #: The sections of a multi-position handout, in the plate's order (names as :attr:`Handout.order` lists them).
 ORDER = ("data", "positions", "velocity-equations", "velocity-plans", "acceleration-equations", "acceleration-plans",
@@ -251,6 +251,29 @@ def _reason(r, lang: str) -> str:
 
     words = reason_text(str(r.error), lang, r.cause)
     return re.sub(r"\b[RP]{3}\([^,()]+,[^,()]+\)", lambda m: group_words(m.group(0), lang), words)
+
+
+def angles_key(doc, plans) -> str:
+    """What the angles in the plans' notes are measured from (``∠(pa) = 181,3°``: from the x axis, counter-clockwise),
+    said once beside the plans' scale, as markup; empty when none of *plans* has such a note
+    (:func:`plans.drawing.plan_drawing.alongside`)."""
+    from ..drawing.plan_drawing import alongside
+
+    if not any(alongside(plan) for plan in plans):
+        return ""
+    return doc.line_markup(";   " + term("angle_from_x", doc.lang), SMALL_PT)
+
+
+def position_entry(r, lang: str, accelerated: bool = False, stroke: str = "") -> str:
+    """One line of the positions' list: ``4:  φ₂ = 91,3°  (план убрзања — радни ход)``: a position whose acceleration
+    plan is drawn says so (with its stroke, when known), an unsolved one says that."""
+    entry = f"{r.index}:  {r.label}"
+    if not r.ok:
+        return entry + f"  ({term('not_solved', lang)})"
+    if accelerated:
+        plan = term("acceleration_plan", lang).lower()
+        entry += f"  ({plan} — {stroke})" if stroke else f"  ({plan})"
+    return entry
 
 
 def _turning_driver(run) -> bool:
@@ -460,10 +483,13 @@ def build_handout(
     working = (1.0 if plus >= minus else -1.0) if plus and minus else 0.0
 
     doc.section("data")
-    doc.heading(f"{term('plate_title', lang)}: {scene.title_in(lang)}", level=1)
+    doc.title(term("plate_title", lang), scene.title_in(lang))  # the plate's name, the scene's title under it
     from .words import cycle_lines
 
-    doc.lines([formula_words(line) for line in data_lines(scene, lang) + (_with_given_note(cycle_lines(run, lang), run, lang) if multi else [])],
+    cycle_law = run.motion.law if multi and run.motion is not None else None  # the cycle's law, stated below the data
+    said_once = cycle_law is not None and cycle_law.kind == "constant"  # the rate in the driver's line, ε = 0 in the law's
+    doc.lines([formula_words(line) for line in data_lines(scene, lang, cycle_law)
+               + (_with_given_note(cycle_lines(run, lang, rate=not said_once), run, lang) if multi else [])],
               size=TEXT_PT)
     doc.line(f"{term('structural_formula', lang)}:  {formula_words(run.structure.formula)}", size=TEXT_PT)
     branch_words = assembly_lines(sample.analytic.branches, scene, lang, sample.graphical.positions)
@@ -475,13 +501,8 @@ def build_handout(
     if multi:
         entries = []
         for r in run.runs:
-            entry = f"{r.index}:  {r.label}"
-            if not r.ok:
-                entry += f"  ({term('not_solved', lang)})"
-            elif r.index in chosen:
-                stroke = _stroke(r, working, lang, phases)
-                entry += f"  ({stroke})" if stroke else ""
-            entries.append(entry)
+            accelerated = r.ok and r.index in chosen
+            entries.append(position_entry(r, lang, accelerated, _stroke(r, working, lang, phases) if accelerated else ""))
         if run.strokes is not None and run.motion is not None and run.motion.start == "output" and run.strokes.law.crank:
             from ..positions import position_text
 
@@ -492,7 +513,8 @@ def build_handout(
     doc.equations(f"{term('vector_equations', lang)}: {term('velocity_plan', lang).lower()}", sample.graphical.velocity_plan.steps, name)
     doc.section("velocity-plans")
     doc.headed_legend(term("velocity_plans", lang) + (f" ({term('each_from_its_pole', lang)})" if multi else ""),
-                      doc.scale_markup("k_v", plate["k_v"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
+                      (doc.scale_markup("k_v", plate["k_v"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT))
+                      + angles_key(doc, [h.graphical.velocity_plan for h in here.values()]),
                       "legend-v", legend_v)
     cells = []
     for r in run.runs:
@@ -545,7 +567,8 @@ def build_handout(
                       name, new_page=not multi and not eq_under_v)
         doc.section("acceleration-plans")
         doc.headed_legend(term("acceleration_plans", lang),
-                          doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT),
+                          (doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT))
+                          + angles_key(doc, [here[k].graphical.acceleration_plan for k in chosen]),
                           "legend-a", legend_a)
         cells = []
         for k in chosen:
@@ -587,7 +610,7 @@ def build_handout(
     doc.mark("loops-end")
 
     if multi:
-        say(term("cycle_diagrams", lang))
+        say(term("cycle_diagrams" if _turning_driver(run) else "stroke_diagrams", lang))
         from ..drawing.diagrams import draw_cycle_diagrams
         from ..drawing.svgblocks import figure_svg
 
@@ -1012,10 +1035,11 @@ def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
     doc.beside(None, table, centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
 
 
-def data_lines(scene, lang: str) -> list[str]:
-    """The scene's data as a few lines of text in *lang*: driver, link lengths, fixed points (names in *lang*)."""
+def data_lines(scene, lang: str, law=None) -> list[str]:
+    """The scene's data as a few lines of text in *lang*: driver, link lengths, fixed points (names in *lang*);
+    *law*: the cycle's law stated below them (:func:`plans.pages.words.scene_data_lines`)."""
     from .words import scene_data_lines
 
-    return scene_data_lines(scene, lang)
+    return scene_data_lines(scene, lang, law)
 
 

@@ -123,8 +123,33 @@ def assembly_text(branch, scene, lang: str, positions=None) -> str | None:
     m = re.fullmatch(rf"line ({_NAME}(?:\.{_NAME})?) pointing from ({_NAME}) towards ({_NAME})", words)
     if m:
         key, a, b = m.groups()
+        g = _GROUP.match(branch.group)
+        points = _points_along(scene, key, a, b, positions, g.groups() if g else ())
+        if points:
+            return term("assembly_directed_points", lang).format(key=name(key.rpartition(".")[2]), points=" → ".join(points))
         return term("assembly_directed", lang).format(key=name(key.rpartition(".")[2]), a=a, b=b)
     return None
+
+
+def _points_along(scene, key: str, a: str, b: str, positions, links=()) -> list[str]:
+    """The named points of the group's *links* lying on the guide line *key* (through its ``through`` point and the pin *a*), in the
+    order of the line's direction u (the branch's words say ``u·(b − a) > 0``): ``["F", "K", "G"]`` for the
+    linear-arm's sleeve; empty when the line is not known so (no positions, *a* off the line, under 3 points)."""
+    body, _, line_name = key.partition(".")
+    line = scene.bodies.get(body).lines.get(line_name) if body in scene.bodies else None
+    if not positions or line is None or line.through not in positions or a not in positions or b not in positions:
+        return []
+    t, pa, pb = complex(positions[line.through]), complex(positions[a]), complex(positions[b])
+    if abs(pa - t) == 0:
+        return []
+    d = (pa - t) / abs(pa - t)
+    if ((pb - pa) * d.conjugate()).real < 0:
+        d = -d
+    size = max(abs(complex(z)) for z in positions.values()) or 1.0
+    mine = {n for link in links if link in scene.bodies for n in scene.bodies[link].points}
+    on = [(((complex(z) - pa) * d.conjugate()).real, n) for n, z in positions.items()
+          if n in mine and abs(((complex(z) - pa) * d.conjugate()).imag) <= 1e-9 * size]
+    return [n for _, n in sorted(on)] if len(on) >= 3 else []
 
 
 def _frame_line(scene, key: str) -> float | None:
@@ -181,22 +206,25 @@ def _data_guide_angle(scene: Scene, name: str) -> float:
     return line.angle if line is not None else 0.0
 
 
-def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
-    """The scene's data as a few lines of text: driver, link lengths, fixed points."""
+def scene_data_lines(scene: Scene, lang: str = "en", law=None) -> list[str]:
+    """The scene's data as a few lines of text: driver, link lengths, fixed points.
+
+    *law*: the cycle's driver law (:class:`plans.motion.DriverLaw`) when the page states it below; under a
+    constant law the driver's line gives its rate only (ω or v): the law's line says ε = 0 (a = 0), and a scene's
+    own ε (a) at its instant, which the cycle does not use, is said once beside the law (its ``given_note``)."""
     unit, factor = _length_unit(scene)
     driver = scene.driver
     name_in = scene.name_in
     link = driver.link
+    constant = law is not None and law.kind == "constant"
     if isinstance(driver, Crank):
-        first = (
-            f"{term('driver', lang)} {link} ({driver.pivot}):  ω{subscript(link)} = {_fmt(driver.omega)} rad/s,  "
-            f"ε{subscript(link)} = {_fmt(driver.epsilon)} rad/s²"
-        )
+        first = f"{term('driver', lang)} {link} ({driver.pivot}):  ω{subscript(link)} = {_fmt(driver.omega)} rad/s"
+        if not constant:
+            first += f",  ε{subscript(link)} = {_fmt(driver.epsilon)} rad/s²"
     else:
-        first = (
-            f"{term('driver', lang)} {link} ({driver.point}, {name_in(driver.guide, lang)} ∥ {_fmt(math.degrees(_data_guide_angle(scene, driver.guide)))}°):  v = {_fmt(driver.velocity)} m/s,  "
-            f"a = {_fmt(driver.acceleration)} m/s²"
-        )
+        first = f"{term('driver', lang)} {link} ({driver.point}, {name_in(driver.guide, lang)} ∥ {_fmt(math.degrees(_data_guide_angle(scene, driver.guide)))}°):  v = {_fmt(driver.velocity)} m/s"
+        if not constant:
+            first += f",  a = {_fmt(driver.acceleration)} m/s²"
         if driver.stroke:
             first += f",  s ∈ [{_fmt(driver.stroke[0] * factor)}, {_fmt(driver.stroke[1] * factor)}] {unit}"
     lengths = []
@@ -220,16 +248,17 @@ def scene_data_lines(scene: Scene, lang: str = "en") -> list[str]:
     return [line for line in (first, second, third) if line]
 
 
-def cycle_lines(run, lang: str = "en") -> list[str]:
+def cycle_lines(run, lang: str = "en", rate: bool = True) -> list[str]:
     """What the plate states of a cycle (issue 19): the driver's law, the Grashof class of every four-bar loop,
-    the output's stroke H (or swing ψ), θ, K and the working stroke (:mod:`plans.motion`)."""
+    the output's stroke H (or swing ψ), θ, K and the working stroke (:mod:`plans.motion`).  *rate*: False leaves a
+    constant law's rate out (the driver's line above gives it: :func:`scene_data_lines` with the law)."""
     from ..motion import four_bar_loops
 
     lines = []
     if run.motion is not None:  # a long law in lines a page's width (about 110 characters), the rest indented
         import textwrap
 
-        lines += textwrap.wrap(run.motion.law.describe(lang, run.scene.driver.link), 110, subsequent_indent="    ")
+        lines += textwrap.wrap(run.motion.law.describe(lang, run.scene.driver.link, rate=rate), 110, subsequent_indent="    ")
     for loop in four_bar_loops(run.scene, run.structure):
         turning = loop.turning_links()
         turns = f"{', '.join(turning)}: {term('turn_fully', lang)}" if turning else term("none_turns", lang)

@@ -1,0 +1,59 @@
+"""The plan of positions of the three reviewed handouts (issue 20, second review): every number nearer its own mark
+than any other mark, no two numbers on one another, and the marks left without a number stated under the plan."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+import plans
+from plans.drawing.positions_plan import draw_positions_plan
+from plans.positions import run_positions
+
+_DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
+
+
+@pytest.fixture(scope="module", params=[("quick-return", 12, 0.006), ("linear-arm", 8, 0.006), ("six-bar", 12, None)],
+                ids=lambda p: p[0])
+def drawn(request):
+    name, n, k_l = request.param
+    run = run_positions(plans.load(plans.example_path(name)), n)
+    artists = draw_positions_plan(run, k_l=k_l, lang="en")
+    fig = artists[0].figure
+    FigureCanvasAgg(fig)
+    return name, run, fig, fig.canvas.get_renderer()
+
+
+def test_numbers_nearest_their_marks_apart_and_every_mark_accounted_for(drawn):
+    name, run, fig, renderer = drawn
+    texts = [t for t in fig.findobj(lambda a: hasattr(a, "get_text") and (a.get_gid() or "")) if t.get_text().strip()]
+    numbers = [t for t in texts if re.fullmatch(r"pos-position-\d+-\w+", t.get_gid())]
+    # the marks where they are drawn [mm] (tests/test_positions_plan_labels.py checks them against the analytic positions)
+    drawn_marks = {m.get_gid()[len("pos-mark-"):]: complex(*m.center) for m in fig.findobj(lambda a: (a.get_gid() or "").startswith("pos-mark-") and hasattr(a, "center"))}
+    assert drawn_marks, name
+    labelled = set()
+    for t in numbers:
+        index, point = t.get_gid()[len("pos-position-"):].split("-", 1)
+        own = drawn_marks[f"{index}-{point}"]
+        x, y = t.get_position()
+        at = complex(x, y)
+        assert t.get_text().translate(_DIGITS) == f"{point}{index}"
+        others = [z for key, z in drawn_marks.items() if key != f"{index}-{point}" and abs(z - own) > 1.0]  # (1 mm: one place)
+        if index != "0":  # (position 0, the scheme in full, is numbered wherever it has room, on a leader if need be)
+            assert all(abs(at - z) > abs(at - own) for z in others), (name, t.get_text())
+        labelled.add(f"{point}{index}")
+    boxes = [(t.get_text(), t.get_window_extent(renderer)) for t in numbers]
+    for k, (ta, a) in enumerate(boxes):
+        for tb, b in boxes[k + 1:]:
+            assert not (min(a.x1, b.x1) - max(a.x0, b.x0) > 0 and min(a.y1, b.y1) - max(a.y0, b.y0) > 0), (name, ta, tb)
+    stated = " ".join(t.get_text() for t in texts if t.get_gid().startswith("pos-unnumbered"))
+    left = {w.translate(_DIGITS) for w in re.findall(r"\b[A-Z][₀-₉]+", stated)}
+    expected = {key for key in drawn_marks if re.fullmatch(r"\d+-\w+", key)}
+    expected = {f"{key.split('-', 1)[1]}{key.split('-', 1)[0]}" for key in expected}
+    assert labelled | left == expected, (name, sorted(expected - labelled - left))
+    assert not labelled & left
+    if left:
+        assert stated.startswith("not numbered")
