@@ -11,8 +11,6 @@ import pytest
 
 import plans
 from plans.drawing.diagrams import draw_cycle_diagrams
-from plans.drawing.style import MM_PER_PT
-from plans.drawing.typeset import runs, text_width
 from plans.i18n import term
 from plans.motion import driver_cycle, strokes
 
@@ -32,14 +30,6 @@ def four_bar():
 
 def _curves(ax):
     return [line for line in ax.get_lines() if not line.get_label().startswith("_")]
-
-
-@pytest.mark.parametrize("symbol", ["t", "s", "v", "a", "\\omega", "\\varepsilon"])
-def test_a_subscript_of_mu_clears_its_foot(symbol):
-    # set at μ's advance, a subscript touches the foot of DejaVu's μ and μₜ reads as "ɥ": a gap of a tenth of the size
-    (mu, sub), _, _ = runs(f"$\\mu_{{{symbol}}}$", 8.0)
-    assert mu[0] == "μ"
-    assert sub[1] - (mu[1] + text_width("μ", 8.0)) >= 0.09 * 8.0 * MM_PER_PT
 
 
 def test_a_turn_is_closed_at_360_degrees(four_bar):
@@ -192,12 +182,6 @@ def sheets():
     from plans.differentiation import kinematic_diagrams
 
     return {name: kinematic_diagrams(plans.load(plans.example_path(name)), 12) for name in ("four-bar", "rocker-limit", "slider-crank")}
-
-
-def _page_text(fig):
-    from plans.drawing.typeset import TypesetText
-
-    return " ".join(a.get_text() for a in fig.findobj(TypesetText))
 
 
 def test_the_kinematic_sheet_defines_its_displacement(sheets):

@@ -11,9 +11,7 @@ from matplotlib.figure import Figure
 
 import plans
 from plans._text import user_text
-from plans.drawing.blocks import break_math
 from plans.drawing.svg import drawing_rc
-from plans.drawing.typeset import measure, plain_runs, runs
 from plans.handout import handout
 from plans.loops import loop_equations
 
@@ -75,34 +73,6 @@ def test_a_crowded_plan_has_its_enlarged_detail_where_it_fits(plate):
             assert 'id="vel-detail' not in svg, r.index
 
 
-LONG = r"$a_{B} = a_{A} + (i\varepsilon_{3} - \omega_{3}^2)\,l_{AB}\,e^{i\varphi_{3}} = (-8.604 - 12.29i) + (i(-17.61) - 0.2502^2)\cdot0.45\,e^{i\,117.52^\circ} = (-1.561 - 8.65i)\ \mathrm{m/s^2}$"
-
-
-@pytest.mark.parametrize("width", [0.5, 3.0, 10.0, 25.0, 60.0, 120.0, 400.0])
-def test_a_long_equation_is_broken_for_any_width_and_nothing_is_lost(width):
-    rows = break_math(LONG, width, 8.0)
-    assert rows
-    for text, size in rows:
-        assert size >= 8.0 * 0.8 - 1e-9
-        # every row fits, except a single character that is wider than the width itself
-        assert measure(text, size)[0] <= width + 1e-6 or len(plain_runs(text).strip("…")) <= 1
-    shown = "".join(plain_runs(t) for t, _ in rows).replace("…", "")
-    shown = "".join(ch for ch in shown if not ch.isspace())
-    for piece in ("−8.604", "12.29", "117.52", "1.561", "8.65"):
-        assert piece in shown, (piece, shown)
-
-
-def test_a_point_named_with_80_letters_breaks_too():
-    name = "P" + "x" * 79
-    rows = break_math(f"$v_{{{name}}} = v_{{A}} + v_{{{name}A}}$", 40.0, 8.0)
-    assert len(rows) >= 2
-
-
-def test_what_a_math_parser_refuses_is_still_set():
-    for text in (r"$\undefinedmacro$", r"$x^{2}^2$", "$5\\cdot10^{4}^2$", "${unbalanced$", "$$", "50 $ off", r"a \$ b"):
-        items, width, _ = runs(text, 8.0)
-        assert width > 0 or text == "$$"
-    assert plain_runs(user_text("Costs $5 and $6")) == "Costs $5 and $6"  # a title: two dollars are dollars
 
 
 def test_user_text_is_plain_and_visible():

@@ -97,7 +97,7 @@ def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
 def test_the_checker_sees_a_cycle_and_the_modules():
     # the checker itself: a planted cycle is found, and the package is really read
     assert _cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
-    assert {"plans.drawing.layout", "plans.drawing.blocks", "plans.graphical.plan", "plans.handout", "plans.pages.handout"} <= set(MODULES)
+    assert {"plans.drawing.readings", "plans.graphical.plan", "plans.handout", "plans.pages.handout"} <= set(MODULES)
     assert "plans.drawing.svgblocks" in _graph()["plans.pages.handout"]
 
 

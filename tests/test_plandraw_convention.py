@@ -24,7 +24,7 @@ from matplotlib.colors import to_rgb
 from matplotlib.text import Text
 
 from plans.drawing import draw_plan
-from plans.drawing.blocks import plan_readings
+from plans.drawing.readings import plan_readings
 from plans.drawing.style import VECTOR_STYLE
 from plans.graphical import construct
 from plans.scene import example_path, load, loads

@@ -67,17 +67,16 @@ def test_the_sheet_legend_follows_the_plans_too(drawn):
 
 
 def _page_legend(example: str) -> set[str]:
-    """The kinds a page's legend block (one legend for the page's plans) lists, at the sheet's scales."""
+    """The kinds a page's legend (one legend for the page's plans, the block the pages place) lists, at the sheet's
+    scales."""
     import plans
-    from plans.drawing._canvas import sketch_on
-    from plans.drawing.blocks import legend_block
+    from plans.drawing.svgblocks import legend_svg
     from plans.graphical import construct
     from plans.positions import at_page_precision
 
     g = construct(at_page_precision(plans.load(plans.example_path(example))))
-    block = legend_block(g, "en", plans=("acceleration",))
-    artists = sketch_on(None, "page", lambda sketch: block.place(sketch, 0.0, 0.0, (210.0, 297.0)))
-    return {a.get_gid()[len("page-legend-"):] for a in artists if re.fullmatch(r"page-legend-[a-z]+", a.get_gid() or "")}
+    block = legend_svg((g.acceleration_plan,), "en")
+    return set(re.findall(r'id="legend-legend-([a-z]+)"', block.svg.decode()))
 
 
 def test_a_page_legend_lists_every_kind_drawn():

@@ -96,7 +96,7 @@ def _number(cell: str) -> str:
 def test_the_readings_and_the_comparison_print_one_number_per_quantity(slider_crank_set):
     """Issue 20 (sheets §3): ε₃ was 17690 in the readings and 17688 in the comparison on one sheet."""
     from plans.compare import compare
-    from plans.drawing.blocks import plan_readings
+    from plans.drawing.readings import plan_readings
     from plans.report import sheet_table
 
     run, sheets, _ = slider_crank_set
@@ -146,7 +146,7 @@ def test_a_short_segment_is_read_as_its_note_gives_it():
     """Issue 20 (sheets §4): the slider-crank at position 2 of 4, k_a 60: the note under the plan says
     n₁ b′ = 2,65 mm, the readings table used 2,6 and got ε₃ = 624 against the analytic 634,8 (1,7 %).  A segment
     under 3 mm is read to 0.01 mm, as its note gives it: n₁ b′ = |ε₃| · l_AB / k_a from the analytic solution."""
-    from plans.drawing.blocks import plan_readings
+    from plans.drawing.readings import plan_readings
 
     scene = at_page_precision(plans.load(plans.example_path("slider-crank")))
     run = run_positions(scene, 4, k_l=0.004, k_v=0.15, k_a=60.0)

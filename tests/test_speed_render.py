@@ -1,8 +1,7 @@
 """Rendering made faster without changing what is drawn (issue 11 §6).
 
 Each shortcut is checked against matplotlib doing the same work its own way:
-plain text in a PDF (the same bytes as ``RendererPdf.draw_text``), embedded
-font subsets (the same outlines as the font file), math parses and text sizes
+math parses and text sizes
 shared among parsers and renderers (the same numbers as a fresh parse), the
 axes of plans' figures (the same SVG as matplotlib's Axes), and the clearance
 tests of the positions plan (the same answers as measuring every pair).
@@ -10,19 +9,17 @@ tests of the positions plan (the same answers as measuring every pair).
 
 from __future__ import annotations
 
-import io
 
 import numpy as np
 import pytest
 import shapely
 from matplotlib.backends.backend_svg import FigureCanvasSVG
 from matplotlib.figure import Figure
-from matplotlib.font_manager import FontProperties, findfont
+from matplotlib.font_manager import FontProperties
 from matplotlib.mathtext import MathTextParser
 from matplotlib.textpath import TextToPath
 
-from plans.drawing import svg, typeset
-from plans.drawing.formats import LAYOUT_TABLES, render_pdf
+from plans.drawing import svg
 from plans.drawing.svg import drawing_rc, new_figure, render_svg
 
 pypdf = pytest.importorskip("pypdf")
@@ -40,71 +37,6 @@ def _text_figure():
     ax.text(0.05, 0.4, "two\nlines", fontsize=8)
     ax.text(0.95, 0.1, "right, top", fontsize=7, ha="right", va="top")
     return fig
-
-
-def test_plain_text_in_a_pdf_is_written_byte_for_byte_as_matplotlib_writes_it(monkeypatch):
-    runs = []
-    real_run = typeset._pdf_run
-    monkeypatch.setattr(typeset, "_pdf_run", lambda renderer, text, prop: runs.append(text) or real_run(renderer, text, prop))
-    fast = render_pdf([_text_figure()])
-    assert "A₀, B, C" in runs and "two" in runs and "lines" in runs  # the plain lines took the short way
-    assert "rotated" not in runs and not any("$" in r for r in runs)  # rotated and math text did not
-    monkeypatch.setattr(typeset, "_pdf_renderer", lambda renderer: None)  # everything through RendererPdf.draw_text
-    reference = render_pdf([_text_figure()])
-    assert fast == reference
-
-
-def _embedded_fonts(data: bytes):
-    from fontTools.ttLib import TTFont
-
-    reader = pypdf.PdfReader(io.BytesIO(data))
-    fonts = []
-    for font in reader.pages[0]["/Resources"]["/Font"].values():
-        descriptor = font.get_object()["/DescendantFonts"][0].get_object()["/FontDescriptor"].get_object()
-        name = str(descriptor["/FontName"]).split("+", 1)[-1]
-        fonts.append((name, TTFont(io.BytesIO(descriptor["/FontFile2"].get_object().get_data()))))
-    return fonts
-
-
-def test_embedded_fonts_have_no_layout_tables_and_the_font_file_s_outlines():
-    from fontTools.ttLib import TTFont
-
-    data = render_pdf([_text_figure()])
-    fonts = _embedded_fonts(data)
-    assert {"DejaVuSans", "DejaVuSans-Bold", "DejaVuSans-Oblique"} <= {name for name, _ in fonts}
-    compared = 0
-    for name, font in fonts:
-        assert not set(LAYOUT_TABLES) & set(font.keys()), name
-        weight = "bold" if "Bold" in name else "normal"
-        style = "oblique" if "Oblique" in name else "normal"
-        source = TTFont(findfont(FontProperties(family="DejaVu Sans", weight=weight, style=style)))
-        drawn = [g for g in font.getGlyphOrder() if g != ".notdef" and font["glyf"][g].numberOfContours]
-        assert drawn, name
-        compared += len(drawn)
-        for glyph in drawn:  # every glyph drawn is the font file's glyph: same points, same advance
-            mine, theirs = font["glyf"][glyph], source["glyf"][glyph]
-            assert mine.getCoordinates(font["glyf"])[0] == theirs.getCoordinates(source["glyf"])[0], (name, glyph)
-            assert font["hmtx"][glyph][0] == source["hmtx"][glyph][0], (name, glyph)
-    assert compared >= 30  # Latin, Cyrillic, Greek, digits
-
-
-def test_fonts_are_subset_by_matplotlib_alone_when_its_subsetter_is_not_fonttools(monkeypatch):
-    from matplotlib.backends import _backend_pdf_ps
-
-    from plans.drawing import formats
-
-    class Other:  # stands for a subsetting module plans does not know
-        __name__ = "other.subset"
-
-    other = Other()
-    monkeypatch.setattr(_backend_pdf_ps, "subset", other)
-    with formats._fonts_without_layout_tables():
-        assert _backend_pdf_ps.subset is other
-    monkeypatch.undo()
-    module = _backend_pdf_ps.subset
-    with formats._fonts_without_layout_tables():
-        assert _backend_pdf_ps.subset is not module and set(LAYOUT_TABLES) <= set(_backend_pdf_ps.subset.Options().drop_tables)
-    assert _backend_pdf_ps.subset is module  # put back
 
 
 def test_a_math_string_is_parsed_once_for_every_parser_and_as_matplotlib_parses_it():

@@ -57,12 +57,6 @@ def test_math_name_escapes_what_math_would_read():
     assert "".join(chr(g[2]) for g in glyphs) == "vA_1_2"
 
 
-def test_math_name_reads_the_same_in_the_page_typesetter():
-    from plans.drawing.typeset import plain_runs
-
-    assert plain_runs(rf"$\omega_{{{math_name('r_5_1')}}}$") == "ωr_5_1"
-
-
 def test_draw_with_underscored_names(scene, tmp_path, capsys):
     out = tmp_path / "out"
     assert main(["draw", str(scene), "-o", str(out)]) == 0
@@ -81,12 +75,3 @@ def test_draw_positions_with_underscored_names(scene, tmp_path):
     out = tmp_path / "pos"
     assert main(["draw", str(scene), "--positions", "2", "-o", str(out)]) == 0
     assert (out / "sheet-01.svg").exists()
-
-
-def test_equations_set_underscored_names_as_written():
-    from plans.drawing.blocks import pretty_equation
-    from plans.drawing.typeset import plain_runs
-
-    line = pretty_equation("v_C_1_2 = v_A_1_2 + v_C_1_2A_1_2  (⊥ C_1_2A_1_2)")
-    assert plain_runs(line) == "vC_1_2 = vA_1_2 + vC_1_2A_1_2  (⊥ C_1_2A_1_2)"
-    assert pretty_equation("v_C = v_B + v_CB") == "$v_{CB}$".replace("CB", "C") + " = $v_{B}$ + $v_{CB}$"

@@ -71,7 +71,7 @@ from .._files import replace_all
 from .._text import math_name, subscript, user_text
 from ..i18n import term
 from .numerals import MINUS, localised
-from .layout import A4
+from .style import A4
 from .svg import drawing_rc
 
 __all__ = ["NEAR_DEAD_CENTRE", "QUANTITIES", "draw_cycle_diagrams", "write_cycle_diagrams", "plot_cycle", "cycle_axis", "marks_shown"]

@@ -31,7 +31,7 @@ from matplotlib.figure import Figure
 from .._text import user_text
 from ..rounding import round_up
 from ..i18n import term
-from .layout import A4
+from .style import A4
 from ..forces.cycle import is_swing
 from .numerals import localised
 from .svg import drawing_rc

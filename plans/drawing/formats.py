@@ -10,7 +10,6 @@ deterministic: the same figure gives the same bytes.
 from __future__ import annotations
 
 import io
-from contextlib import contextmanager
 from pathlib import Path
 
 __all__ = ["FORMATS", "PNG_DPI", "PDF_RC", "render", "render_png", "render_pdf", "format_of", "save_figure", "save_pages"]
@@ -89,58 +88,13 @@ def render_pdf(figures, progress=None) -> bytes:
 
     from .svg import drawing_rc
 
-    from .typeset import fast_pdf_text
-
-    with drawing_rc(), matplotlib.rc_context(PDF_RC), _fonts_without_layout_tables(), fast_pdf_text():
+    with drawing_rc(), matplotlib.rc_context(PDF_RC):
         with PdfPages(buffer, metadata={"CreationDate": None, "ModDate": None, "Creator": "plans", "Producer": "plans (matplotlib)"}) as pdf:
             for number, fig in enumerate(figures, start=1):
                 pdf.savefig(fig)
                 if progress is not None:
                     progress(number)
     return buffer.getvalue()
-
-
-#: OpenType layout tables: how a text engine substitutes and positions glyphs.  A PDF places
-#: every glyph itself, so a viewer never reads them from an embedded font; fontTools spent
-#: three quarters of the subsetting of DejaVu Sans on them.
-LAYOUT_TABLES = ("GSUB", "GPOS", "GDEF", "kern")
-
-
-class _SubsetWithoutLayout:
-    """``fontTools.subset`` as matplotlib's PDF backend uses it, with :data:`LAYOUT_TABLES` dropped."""
-
-    def __init__(self, module):
-        self._module = module
-
-    def __getattr__(self, name):
-        return getattr(self._module, name)
-
-    def Options(self, *args, **kwargs):  # noqa: N802 (fontTools' name)
-        options = self._module.Options(*args, **kwargs)
-        options.drop_tables = list(options.drop_tables) + [t for t in LAYOUT_TABLES if t not in options.drop_tables]
-        return options
-
-
-@contextmanager
-def _fonts_without_layout_tables():
-    """Within: fonts embedded in a PDF are subset without :data:`LAYOUT_TABLES`.
-
-    The same glyph outlines, widths and character maps, so the pages look
-    the same, in a quarter of the time.  matplotlib subsets through its
-    ``_backend_pdf_ps.subset`` (fontTools.subset); where it does not, nothing
-    is changed.
-    """
-    from matplotlib.backends import _backend_pdf_ps
-
-    module = getattr(_backend_pdf_ps, "subset", None)
-    if getattr(module, "__name__", None) != "fontTools.subset" or not hasattr(module, "Options"):
-        yield
-        return
-    _backend_pdf_ps.subset = _SubsetWithoutLayout(module)
-    try:
-        yield
-    finally:
-        _backend_pdf_ps.subset = module
 
 
 def save_figure(fig, path) -> Path:

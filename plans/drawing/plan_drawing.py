@@ -549,7 +549,6 @@ def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[c
     lettered end within *join* of an image shares that image's label ("a′, n₁").
     """
     groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [(pole_text(plan), "pole-label")])]
-    short = {v.label for v in shorts}
 
     def add(z: complex, piece: tuple[str, str], within: float) -> None:
         for at, pieces in groups:

@@ -63,6 +63,7 @@ TITLE_PT = 15.0  # sheet title
 
 INK = "#000000"
 PLATE_FILL = "#dfe8f3"
+A4 = (210.0, 297.0)  # mm, portrait: the page a figure of diagrams is drawn for
 MARGIN_MM = 4.0  # white space around the content of a drawing
 
 #: kind -> (colour, line width [pt], dash pattern or None, arrowhead length [mm]).

@@ -583,7 +583,7 @@ def build_handout(
     doc.heading(term("comparison", lang), level=2)
     doc.tables([(f"{term('position', lang)} {h.index}:  {h.label}" if multi else h.label, _table(h, lang, h.index in acceleration_blocks)) for h in here.values()])
     # what a student measures on the plans of the chosen positions and what it gives (segment, mm, × k, = value)
-    from ..drawing.blocks import plan_readings
+    from ..drawing.readings import plan_readings
 
     readings = []
     for k in chosen or [sample.index]:

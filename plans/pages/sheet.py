@@ -250,7 +250,7 @@ def _needs(kind: str, objs) -> list[tuple[float, float]]:
 
 
 def _readings(doc: Document, graphical, lang: str) -> list:
-    from ..drawing.blocks import plan_readings
+    from ..drawing.readings import plan_readings
 
     out = []
     for kind in ("velocity", "acceleration"):

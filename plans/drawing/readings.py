@@ -1,0 +1,143 @@
+"""What a student measures on each plan and computes from it: segment, its length as printed, × the scale factor
+(÷ a link's length) = the value (:func:`plan_readings`); the sheets and the handout set these tables (Typst,
+:mod:`plans.pages`).
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..i18n import term
+from .._text import decimal_comma, math_name
+from .plan_drawing import aliases, end_letters, segment, vectors_drawn
+
+__all__ = ["plan_readings", "link_length", "printed_length"]
+
+
+_UNIT = {"velocity": "m/s", "acceleration": "m/s²"}
+_RATE = {"velocity": ("omega", r"\omega", "rad/s"), "acceleration": ("epsilon", r"\varepsilon", "rad/s²")}
+
+
+def printed_length(length: float, precision: float | None) -> str:
+    """A measured length [mm] as a sheet prints it: to the drafting precision's decimals (0.1 mm: ``"59.2"``),
+    to 0.001 mm when readings are exact (no precision); a segment under 3 mm to a tenth of the precision, as
+    the note under the plan gives it (:func:`plans.graphical.scales.read_segment`)."""
+    from ..graphical.scales import SHORT_READ_MM
+
+    if precision is not None and abs(length) < SHORT_READ_MM:
+        precision = precision / 10  # a short segment is read as its note under the plan gives it (0.01 mm)
+    decimals = 3 if precision is None else max(0, math.ceil(-math.log10(precision) - 1e-9))
+    return f"{abs(length):.{decimals}f}"
+
+
+def _vector_symbol(label: str) -> str:
+    head, _, sub = label.partition("_")
+    base, _, sup = head.partition("^")
+    return f"${base}" + (f"^{{{sup}}}" if sup else "") + (f"_{{{math_name(sub)}}}" if sub else "") + "$"
+
+
+def link_length(graphical, between: str) -> str:
+    """The length a link's ω (ε) is divided by, as mathtext the textbook writes: ``l_{AC}``.
+
+    *between* is the subscript of the plan vector it is read from (``"A4C"``: the point A of link 4 and C); the two
+    points are named as the scene names them (A, C), without the link number that tells the plan's coincident points
+    apart.  A subscript not made of two points of the plans is written as it is.
+    """
+    written: dict[str, str] = {}
+    for plan in (graphical.velocity_plan, graphical.acceleration_plan):
+        for name, body in (getattr(plan, "points", None) or {}).values():
+            written.setdefault(name + body, name)
+    for cut in range(1, len(between)):
+        first, second = between[:cut], between[cut:]
+        if first in written and second in written:
+            return f"l_{{{math_name(written[first] + written[second])}}}"
+    return f"l_{{{math_name(between)}}}"
+
+
+def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
+    """The readings table of one plan (*kind* ``"velocity"`` or ``"acceleration"``): header, then one row per value.
+
+    Columns: the quantity, the segment measured (``pa``, ``n₁ c′``), its
+    length [mm] as printed (to the drafting precision), × the scale factor,
+    ÷ the link length [m] (ω, ε only), and = the value, which is exactly
+    what the results table calls graphical: point velocities
+    (accelerations), the drawn relative vectors of sliders, then ω (ε) of the
+    links with the sense.  Values to the digits one drafting step of the segment justifies
+    (:func:`plans.report.reading_number`; 4 significant digits when readings are exact).
+    """
+    from ..report import reading_number, table_number
+
+    plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
+    if plan is None:
+        return []
+    k = plan.scale
+    key = "k_v" if kind == "velocity" else "k_a"
+    drawn = vectors_drawn(plan)
+    letters = end_letters(drawn, plan)
+    by_label = {v.label: v for v in plan.vectors}
+    precision = graphical.precision
+    unit = _UNIT[kind]
+    rows = [["", term("segment", lang), "mm", f"× ${key[0]}_{{{key[2]}}}$  (÷ l [m])", "="]]
+
+    def row(symbol: str, v, divide: float | None = None, sense: float | None = None, between: str = "") -> list[str]:
+        length = v.value / k if v is not None else 0.0
+        measured = segment(plan, v, letters) if v is not None else "—"
+        value = (v.value if v is not None else 0.0) / (divide or 1.0)
+        # to the digits one drafting step of the segment justifies, as the results table prints the same reading
+        # (plans.report.reading_step): one number for one quantity on a page
+        step = precision * k / (divide or 1.0) if precision else None
+        if sense is not None:  # ω, ε: the magnitude measured, the sense seen on the plan
+            value = math.copysign(value, sense)
+            rate_unit = _RATE[kind][2]
+            # the sense as the arc arrow a plan or a scheme draws it (↺ counter-clockwise, ↻ clockwise): the
+            # same narrow sign in every language, so the readings stand beside the results table
+            arrow = "" if value == 0 else (" ↺" if value > 0 else " ↻")
+            text = f"{reading_number(abs(value), step)} {rate_unit}{arrow}"
+        else:
+            text = f"{reading_number(value, step)} {unit}"
+        factor = f"×\u00a0{fmt(k)}" if divide is not None else f"× {fmt(k)}"
+        if divide is not None:
+            # the link length by the textbook's name, the segment between the two points as the scene names them;
+            # no-break spaces: the cell never wraps inside it
+            factor += f"\u00a0÷\u00a0{table_number(divide)}\u00a0(${link_length(graphical, between)}$)"
+        return [symbol, measured, printed_length(length, precision), factor, text]
+
+    from ._canvas import fmt_number as fmt
+
+    symbol = "v" if kind == "velocity" else "a"
+    # a vector drawn once under several names is one row naming it each way: "v_A4 = v_A4C"
+    also = aliases(plan)
+    listed: set[str] = set()  # every name a row gives
+
+    def symbols(label: str) -> str:
+        listed.update([label] + also.get(label, []))
+        return " = ".join(_vector_symbol(x)[1:-1] for x in [label] + also.get(label, [])).join("$$")
+
+    for name in graphical.scene.report:
+        label = f"{symbol}_{name}"
+        v = by_label.get(label)
+        if v is not None:
+            rows.append(row(symbols(label), v))
+    # the points of links at sliders (A4, E5): their absolute vectors too
+    reported = {f"{symbol}_{name}" for name in graphical.scene.report} | {f"{symbol}_{name}" for name in graphical.scene.point_names}
+    for v in plan.vectors:
+        if v.kind == "absolute" and v.label not in reported:
+            rows.append(row(symbols(v.label), v))
+    for name, entry in getattr(graphical, "relative", {}).items():
+        for q in (("v_rel",) if kind == "velocity" else ("coriolis", "a_rel")):
+            label = entry.get(q)
+            v = by_label.get(label) if label else None
+            if v is not None and label not in listed:
+                rows.append(row(_vector_symbol(label), v))
+    rate, tex, _ = _RATE[kind]
+    shared: dict[tuple, list[str]] = {}
+    for link, entry in getattr(graphical, "rotations", {}).items():
+        if rate in entry:
+            shared.setdefault(entry[rate], []).append(link)
+    for (label, between, length), links in shared.items():
+        v = by_label.get(label)
+        symbol_text = "$" + " = ".join(f"{tex}_{{{math_name(link)}}}" for link in links) + "$"
+        rows.append(row(symbol_text, v, divide=length, sense=graphical.links[links[0]][rate], between=between))
+    if len(rows) == 1:
+        return []
+    return [[decimal_comma(cell, lang) for cell in r] for r in rows]
