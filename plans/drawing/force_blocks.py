@@ -15,11 +15,9 @@ the μ_F, k_l and k_v the page states hold on the printed paper.
 
 from __future__ import annotations
 
-from ._canvas import Sketch, fit_axes
 from .force_drawing import draw_force_plan_into, draw_free_bodies_into, draw_lever_into
-from .style import CONSTRUCTION_STYLE, FORCE_STYLE, MARGIN_MM
-from .svg import drawing_rc, new_figure
-from .svgblocks import SvgBlock, figure_svg
+from .style import CONSTRUCTION_STYLE, FORCE_STYLE
+from .svgblocks import SvgBlock, sketched
 
 __all__ = ["free_bodies_svg", "force_plan_svg", "lever_svg", "force_key_svg", "KEY_KINDS"]
 
@@ -28,32 +26,22 @@ __all__ = ["free_bodies_svg", "force_plan_svg", "lever_svg", "force_key_svg", "K
 KEY_KINDS = tuple(FORCE_STYLE) + ("construction", "arm")
 
 
-def _block(tag: str, draw, lang: str, margin: float = MARGIN_MM) -> SvgBlock:
-    with drawing_rc():
-        fig = new_figure()
-        ax = fig.add_axes([0, 0, 1, 1])
-        sketch = Sketch(ax, tag)
-        draw(sketch)
-        fit_axes(ax, sketch.bounds, margin)
-        return figure_svg(fig, lang)
-
-
 def free_bodies_svg(forces, k_l: float, lang: str = "en", per_row: int | None = None, names: dict | None = None,
                     columns: tuple[int, ...] | None = None) -> SvgBlock:
     """The free bodies of *forces* (:class:`plans.forces.force_plans.ForcePlans`) at *k_l* [m/mm], *per_row* to a row
     (or in *columns*, how many each holds); *names*: group -> the words written over its body."""
-    return _block("fbody", lambda s: draw_free_bodies_into(s, forces, lang=lang, caption=False, k_l=k_l, per_row=per_row, names=names,
+    return sketched("fbody", lambda s: draw_free_bodies_into(s, forces, lang=lang, caption=False, k_l=k_l, per_row=per_row, names=names,
                                                            columns=columns), lang)
 
 
 def force_plan_svg(plan, lang: str = "en") -> SvgBlock:
     """One force plan (:class:`plans.forces.force_plans.ForcePlan`), drawn at the μ_F it was constructed at."""
-    return _block("fplan", lambda s: draw_force_plan_into(s, plan, lang=lang, legend=False, caption=False), lang)
+    return sketched("fplan", lambda s: draw_force_plan_into(s, plan, lang=lang, legend=False, caption=False), lang)
 
 
 def lever_svg(lever, lang: str = "en") -> SvgBlock:
     """Joukowski's lever (:class:`plans.forces.lever.JoukowskiLever`), at its velocity plan's k_v."""
-    return _block("lever", lambda s: draw_lever_into(s, lever, lang=lang, caption=False), lang)
+    return sketched("lever", lambda s: draw_lever_into(s, lever, lang=lang, caption=False), lang)
 
 
 def force_key_svg(kind: str) -> SvgBlock:
@@ -70,4 +58,4 @@ def force_key_svg(kind: str) -> SvgBlock:
         else:
             raise ValueError(f"no legend sample for {kind!r}: one of {', '.join(KEY_KINDS)}")
 
-    return _block("fkey", draw, "en", margin=0.6)
+    return sketched("fkey", draw, "en", margin=0.6)

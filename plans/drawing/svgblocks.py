@@ -25,7 +25,7 @@ from ._canvas import Sketch, fit_axes
 from .style import MARGIN_MM
 from .svg import drawing_rc, new_figure, render_svg
 
-__all__ = ["SvgBlock", "mechanism_svg", "plan_svg", "legend_svg", "positions_svg", "centres_svg", "circle_diagram_svg", "figure_svg"]
+__all__ = ["SvgBlock", "mechanism_svg", "plan_svg", "legend_svg", "positions_svg", "centres_svg", "circle_diagram_svg", "figure_svg", "sketched"]
 
 
 @dataclass(frozen=True)
@@ -81,7 +81,7 @@ def _rendered(fig, lang: str) -> bytes:
     return render_svg(fig)
 
 
-def _sketched(tag: str, draw, lang: str, margin: float = MARGIN_MM) -> SvgBlock:
+def sketched(tag: str, draw, lang: str, margin: float = MARGIN_MM) -> SvgBlock:
     """Run ``draw(sketch)`` on a new figure sized to what it drew plus the *margin* [mm]."""
     with drawing_rc():
         fig = new_figure()
@@ -96,7 +96,7 @@ def mechanism_svg(graphical, lang: str = "en") -> SvgBlock:
     """The kinematic scheme of a :class:`plans.graphical.GraphicalSolution` at its k_l, without heading and scale."""
     from .mechanism import MechanismDrawing
 
-    return _sketched("mech", lambda sketch: MechanismDrawing(sketch, graphical, lang=lang, caption=False).draw(), lang)
+    return sketched("mech", lambda sketch: MechanismDrawing(sketch, graphical, lang=lang, caption=False).draw(), lang)
 
 
 def plan_svg(plan, lang: str = "en", detail: bool = True, margin: float = MARGIN_MM) -> SvgBlock:
@@ -105,7 +105,7 @@ def plan_svg(plan, lang: str = "en", detail: bool = True, margin: float = MARGIN
     from .plan_drawing import draw_plan_into
 
     tag = "vel" if plan.kind == "velocity" else "acc"
-    return _sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang,
+    return sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang,
                      margin)
 
 
@@ -119,7 +119,7 @@ def legend_svg(plans, lang: str = "en") -> SvgBlock:
         for k, (kind, text) in enumerate(entries):
             legend_row(sketch, kind, text, 0.0, -4.2 * k, text_gid="legend-text")
 
-    return _sketched("legend", draw, lang)
+    return sketched("legend", draw, lang)
 
 
 def positions_svg(positions_run, k_l: float, lang: str = "en", extremes: dict | None = None) -> SvgBlock:
@@ -127,7 +127,7 @@ def positions_svg(positions_run, k_l: float, lang: str = "en", extremes: dict | 
     output's other extreme position, *extremes* ``{"0′": GraphicalSolution}``)."""
     from .positions_plan import draw_positions_into
 
-    return _sketched("positions", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l, heading=False,
+    return sketched("positions", lambda sketch: draw_positions_into(sketch, positions_run, lang=lang, k_l=k_l, heading=False,
                                                                      extremes=extremes), lang)
 
 

@@ -371,6 +371,22 @@ def _signed(terms) -> str:
     return out
 
 
+
+def _moment_terms(letters: list, numbers: list, terms, lang: str) -> tuple[list, list]:
+    """A moment equation's terms after its first ones, in letters (``F dot h_1``) and in numbers (``1500 dot 0,042``):
+    a couple as it is, a force with its arm h_k (the arms numbered in order)."""
+    k = 0
+    for t in terms:
+        symbol = _typst_symbol(t.label, lang)
+        if t.arm is None:
+            letters.append((t.moment, symbol))
+            numbers.append((t.moment, _quoted(t.size, lang)))
+        else:
+            k += 1
+            letters.append((t.moment, f"{symbol} dot h_{k}"))
+            numbers.append((t.moment, f"{_quoted(t.size, lang)} dot {_quoted(t.arm, lang)}"))
+    return letters, numbers
+
 def _equation_lines(eq, lang: str) -> list[str]:
     """A plan's equations as Typst markup lines: the polygon's vector equation (known parts underlined); each
     moment equation that gives an Rᵗ first, in letters and in numbers (arms measured on the drawing, m) with the
@@ -382,35 +398,14 @@ def _equation_lines(eq, lang: str) -> list[str]:
         lines.append("$" + " + ".join(_marked(label, known, lang) for label, known in eq.polygon) + " = 0$")
     for m in eq.moments:
         r = _typst_symbol(m.label, lang)
-        letters = [(m.sign, f'{r} dot l_("{m.joint}{m.about}")')]
-        numbers = [(m.sign, f"{r} dot {_quoted(m.length, lang)}")]
-        k = 0
-        for t in m.terms:
-            symbol = _typst_symbol(t.label, lang)
-            if t.arm is None:
-                letters.append((t.moment, symbol))
-                numbers.append((t.moment, _quoted(t.size, lang)))
-            else:
-                k += 1
-                letters.append((t.moment, f"{symbol} dot h_{k}"))
-                numbers.append((t.moment, f"{_quoted(t.size, lang)} dot {_quoted(t.arm, lang)}"))
+        letters, numbers = _moment_terms([(m.sign, f'{r} dot l_("{m.joint}{m.about}")')], [(m.sign, f"{r} dot {_quoted(m.length, lang)}")], m.terms, lang)
         lines.append(f'$Σ M_("{m.about}") ("{m.link}") = 0: quad {_signed(letters)} = 0$')
         lines.append(f'${_signed(numbers)} = 0 quad ⇒ quad {r} = {_quoted(m.value, lang)} "{newton}"$')
     if eq.inner:
         lines.append("$" + " + ".join(_marked(label, known, lang) for label, known in eq.inner) + " = 0$")
     if eq.balancing:
         b = _typst_symbol("M_b", lang)
-        letters, numbers = [(1, b)], [(1, b)]
-        k = 0
-        for t in eq.balancing:
-            symbol = _typst_symbol(t.label, lang)
-            if t.arm is None:
-                letters.append((t.moment, symbol))
-                numbers.append((t.moment, _quoted(t.size, lang)))
-            else:
-                k += 1
-                letters.append((t.moment, f"{symbol} dot h_{k}"))
-                numbers.append((t.moment, f"{_quoted(t.size, lang)} dot {_quoted(t.arm, lang)}"))
+        letters, numbers = _moment_terms([(1, b)], [(1, b)], eq.balancing, lang)
         value = -sum(t.moment for t in eq.balancing)
         lines.append(f'$Σ M_("{eq.pivot}") ("{eq.crank}") = 0: quad {_signed(letters)} = 0$')
         lines.append(f'${_signed(numbers)} = 0 quad ⇒ quad {b} = {_quoted(value, lang)} "{newton}·{metre}"$')
