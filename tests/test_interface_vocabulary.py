@@ -362,8 +362,8 @@ VOCABULARY = {
     # the plate's data line: a four-bar loop named by its links
     "four_bar_loop": {"sr": "зглавкасти четвороугао", "ru": "шарнирный четырёхзвенник", "bg": "шарнирен четиризвенник", "sl": "štirizgibni mehanizem"},
     # the scene's own ε (a) beside a law that does not keep it
-    "law_given_instant_only": {"sr": "задато {q} важи само у задатом тренутку", "ru": "заданное {q} относится только к заданному моменту",
-                               "bg": "зададеното {q} се отнася само за зададения момент", "sl": "podani {q} velja le v podanem trenutku"},
+    "law_given_instant_only": {"sr": "задато {q} важи само у задатом положају, не током циклуса", "ru": "заданное {q} относится только к заданному положению, не к циклу",
+                               "bg": "зададеното {q} се отнася само за зададеното положение, не за цикъла", "sl": "podani {q} velja le v podani legi, ne med ciklom"},
     # a plan's enlarged detail named in its notes ("detail I"; ГОСТ 2.305 "выносной элемент")
     "detail": {"sr": "детаљ", "ru": "выносной элемент", "bg": "детайл", "sl": "detajl"},
     "plan_notes_legend": {
