@@ -224,3 +224,18 @@ def test_the_lever_page_title_block_states_k_v(slider_crank_ru):
     stated = re.search(r"kv = ([0-9,]+) \(м/с\)/мм;", page)
     assert stated and _title_block_scale(page, "ru", "v") == stated[1]
     assert "μF" not in page[page.rindex(term("scale_factors", "ru")):]
+
+
+def test_a_couple_enters_the_moment_equation_by_its_magnitude():
+    """A review read 'R·l + G·h − F_Φ3·h − M_Φ3 = 0' with the table's signed M_Φ3 = −162,8 N·m put in: the couple is
+    written |M_Φ3| (its sense is the term's sign), so the number put in is the magnitude."""
+    import re as _re
+
+    from plans.handout import handout
+    from plans.scene import example_path, load
+
+    doc = handout(load(example_path("slider-crank-loads")), forces=True, lang="ru")
+    letters = [line for line in doc.source.split("], [") if "Σ M_(\"B\")" in line]
+    assert letters and 'abs(M_("Φ3" ))' in letters[0], letters
+    numbers = doc.source.split(letters[0], 1)[1].split("], [", 2)[1]
+    assert _re.search(r'− "162,8" = 0', numbers), numbers  # |M_Φ3| = J_S3·|ε3|, with the term's minus

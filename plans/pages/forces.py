@@ -374,12 +374,13 @@ def _signed(terms) -> str:
 
 def _moment_terms(letters: list, numbers: list, terms, lang: str) -> tuple[list, list]:
     """A moment equation's terms after its first ones, in letters (``F dot h_1``) and in numbers (``1500 dot 0,042``):
-    a couple as it is, a force with its arm h_k (the arms numbered in order)."""
+    a couple by its magnitude (``|M_Φ3|``: the pages' tables list it signed), a force with its arm h_k (numbered in
+    order); each term's sign is its sense, counter-clockwise positive."""
     k = 0
     for t in terms:
         symbol = _typst_symbol(t.label, lang)
-        if t.arm is None:
-            letters.append((t.moment, symbol))
+        if t.arm is None:  # a couple by its magnitude, its sense in the term's sign (the table lists it signed)
+            letters.append((t.moment, f"abs({symbol})"))
             numbers.append((t.moment, _quoted(t.size, lang)))
         else:
             k += 1
