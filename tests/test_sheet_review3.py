@@ -1,0 +1,62 @@
+"""Issue 20 (a teacher's review of the A3 sheets): what the printed sheet says must be checkable from the sheet.
+
+Expected values come from the printed numbers themselves and from the scene file's numbers, never from the code
+that printed them.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import pytest
+
+from plans.cli import main
+from test_tables_readings import _number, results_table, sheet_lines
+
+
+def _half_unit(text: str) -> float:
+    """Half a unit of the last printed digit of a number as printed (``17680`` → 0.5 for 4+ digits shown)."""
+    text = text.strip().replace("−", "-")
+    if "·10" in text:
+        mantissa, exponent = text.split("·10")
+        from test_tables_readings import SUPERSCRIPT
+
+        decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+        return 0.5 * 10 ** (int(exponent.translate(SUPERSCRIPT)) - decimals)
+    decimals = len(text.split(".")[1]) if "." in text else 0
+    return 0.5 * 10 ** -decimals
+
+
+def _magnitude(cell: str) -> tuple[float, float]:
+    """A cell's printed magnitude and half a unit of its last digit."""
+    magnitude = cell.split("∠")[0]
+    return _number(magnitude), _half_unit(magnitude)
+
+
+@pytest.fixture(scope="module")
+def slider_crank_sheets(tmp_path_factory):
+    out = tmp_path_factory.mktemp("sc")
+    assert main(["draw", "--example", "slider-crank", "--positions", "4", "--format", "pdf", "-o", str(out), "-q"]) == 0
+    return sorted(out.glob("sheet-*.pdf"))
+
+
+def test_every_printed_error_is_the_error_of_the_two_printed_numbers(slider_crank_sheets):
+    """|g − a|/|a| from the printed graphical and analytic values (each ± half its last digit) contains the printed
+    relative error (± half its last digit): a reader can recompute the error from the row."""
+    assert len(slider_crank_sheets) == 4
+    checked = 0
+    for path in slider_crank_sheets:
+        for (name, unit), (g, a, e) in results_table(sheet_lines(path)).items():
+            if e == "—" or "∠" in g and g.split("∠")[1] != a.split("∠")[1]:
+                continue
+            (gv, gh), (av, ah), (ev, eh) = _magnitude(g), _magnitude(a), (_number(e), _half_unit(e))
+            if "∠" not in g:
+                low = max(0.0, abs(gv - av) - gh - ah) / (abs(av) + ah)
+                high = (abs(gv - av) + gh + ah) / max(abs(av) - ah, 1e-300)
+            else:
+                low = max(0.0, abs(gv - av) - gh - ah) / (abs(av) + ah)
+                high = (abs(gv - av) + gh + ah) / max(abs(av) - ah, 1e-300)
+            assert low <= ev + eh and ev - eh <= high, f"{path.name}: {name} [{unit}] {g} | {a} | {e}: the numbers give {low:.2e} … {high:.2e}"
+            checked += 1
+    assert checked >= 12
