@@ -60,3 +60,27 @@ def test_every_printed_error_is_the_error_of_the_two_printed_numbers(slider_cran
             assert low <= ev + eh and ev - eh <= high, f"{path.name}: {name} [{unit}] {g} | {a} | {e}: the numbers give {low:.2e} … {high:.2e}"
             checked += 1
     assert checked >= 12
+
+
+def test_the_slider_crank_data_lines_state_the_guide_s_offset_from_the_crank_pivot():
+    """The offset e of the cylinder's line: the perpendicular distance from O (0, 0) to the line through (0, 50 mm)
+    at 0° (plans/examples/slider-crank.toml), |(0 − 0)·sin 0 − (0 − 50)·cos 0| = 50 mm, in every language's words."""
+    import plans
+    from plans.pages.words import scene_data_lines
+
+    scene = plans.load(plans.example_path("slider-crank"))
+    origin, angle, pivot = complex(0, 50), 0.0, 0j  # the TOML's through, angle and O [mm, rad]
+    e = abs((pivot.real - origin.real) * math.sin(angle) - (pivot.imag - origin.imag) * math.cos(angle))
+    words = {"en": ("cylinder", "from"), "sr": ("цилиндар", "од"), "ru": ("цилиндр", "от"), "bg": ("цилиндър", "от"), "sl": ("valj", "od")}
+    for lang, (guide, from_word) in words.items():
+        text = " ".join(scene_data_lines(scene, lang))
+        assert f"{guide}: ∠0°, e = {e:g} mm {from_word} O" in text, text
+
+
+def test_a_guide_off_the_crank_pivot_states_its_distance_from_it():
+    """The quick-return's ram line y = 520 mm at 0° and its crank's pivot O (0, 250 mm): e = 270 mm."""
+    import plans
+    from plans.pages.words import scene_data_lines
+
+    text = " ".join(scene_data_lines(plans.load(plans.example_path("quick-return")), "en"))
+    assert re.search(r": ∠0°, e = 270 mm from O\b", text), text
