@@ -84,3 +84,12 @@ def test_a_guide_off_the_crank_pivot_states_its_distance_from_it():
 
     text = " ".join(scene_data_lines(plans.load(plans.example_path("quick-return")), "en"))
     assert re.search(r": ∠0°, e = 270 mm from O\b", text), text
+
+
+def test_the_quick_return_sheet_names_the_ram_s_guide_not_the_ram(tmp_path):
+    """sr: the condition of v_EE1 and the fixed line are the slider's guide (вођица клизача), not the slider (клизач)."""
+    out = tmp_path / "qr.pdf"
+    assert main(["draw", "--example", "quick-return", "--lang", "sr", "--format", "pdf", "-o", str(out), "-q"]) == 0
+    text = "\n".join(sheet_lines(out))
+    assert "вођица клизача: ∠0°" in text and "∥ вођица клизача" in text, text
+    assert not re.search(r"(∥ клизач|клизач: ∠)", text.replace("вођица клизача", "")), text
