@@ -93,3 +93,11 @@ def test_the_quick_return_sheet_names_the_ram_s_guide_not_the_ram(tmp_path):
     text = "\n".join(sheet_lines(out))
     assert "вођица клизача: ∠0°" in text and "∥ вођица клизача" in text, text
     assert not re.search(r"(∥ клизач|клизач: ∠)", text.replace("вођица клизача", "")), text
+
+
+def test_a_guide_name_that_contains_its_key_is_named_once(tmp_path):
+    """en: the guide ``ram`` is called "ram guide": the data line says "ram guide: ∠0°", never "ram guide guide"."""
+    out = tmp_path / "qr.pdf"
+    assert main(["draw", "--example", "quick-return", "--format", "pdf", "-o", str(out), "-q"]) == 0
+    text = "\n".join(sheet_lines(out))
+    assert "ram guide: ∠0°" in text and "∥ ram guide" in text and "guide guide" not in text, text
