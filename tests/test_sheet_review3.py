@@ -101,3 +101,27 @@ def test_a_guide_name_that_contains_its_key_is_named_once(tmp_path):
     assert main(["draw", "--example", "quick-return", "--format", "pdf", "-o", str(out), "-q"]) == 0
     text = "\n".join(sheet_lines(out))
     assert "ram guide: ∠0°" in text and "∥ ram guide" in text and "guide guide" not in text, text
+
+
+def _read_before(a, b) -> bool:
+    """Whether drawing box *a* (x0, y0, x1, y1) [mm] is read before *b*: side by side (their heights overlap) the left
+    one first, one over the other the upper one first."""
+    if a[1] < b[3] and b[1] < a[3]:
+        return a[0] < b[0]
+    return a[1] < b[1]
+
+
+@pytest.mark.parametrize("example, lang, positions", [("slider-crank", "sr", 4), ("four-bar", "ru", None)])
+def test_the_velocity_plan_is_read_before_the_acceleration_plan(example, lang, positions, tmp_path):
+    """The textbook's order, scheme → velocity plan → acceleration plan: the sheets the review found the acceleration
+    plan left of / over the velocity plan keep the order, read from where their images are embedded."""
+    from sheet_pages import by_kind
+
+    args = ["draw", "--example", example, "--lang", lang, "-q", "-o", str(tmp_path if positions else tmp_path / "sheet.svg")]
+    assert main(args + (["--positions", str(positions)] if positions else [])) == 0
+    pages = sorted(tmp_path.glob("sheet*.svg"))
+    assert len(pages) == (positions or 1)
+    for page in pages:
+        placed = by_kind(page.read_bytes())
+        mechanism, velocity, acceleration = placed["mechanism"].box, placed["velocity"].box, placed["acceleration"].box
+        assert _read_before(mechanism, velocity) and _read_before(velocity, acceleration), (page.name, mechanism, velocity, acceleration)

@@ -227,7 +227,23 @@ def _ranked_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=N
                     least = min(least, size * length / mm)
         if score > -math.inf:
             scored.append(((least, score), len(scored), boxes))
-    return [boxes for _, _, boxes in sorted(scored, key=lambda t: (-t[0][0], -t[0][1], t[1]))]
+    # every drawing at its least size first; of those, the ones that keep the textbook's order (scheme, velocity
+    # plan, acceleration plan: left to right, top to bottom) before any that does not; then the largest
+    order = [k for k in ("mechanism", "velocity", "acceleration") if k in extents]
+    return [boxes for _, _, boxes in sorted(scored, key=lambda t: (-min(t[0][0], 1.0), not in_reading_order(t[2], order),
+                                                                  -t[0][0], -t[0][1], t[1]))]
+
+
+def in_reading_order(boxes: dict, kinds: list) -> bool:
+    """Whether the regions *boxes* {kind: (x, y, w, h)} [mm] are read in the order *kinds*: of two regions side by
+    side (their heights overlap) the left one first, else the upper one first."""
+    def before(a, b) -> bool:
+        (ax, ay, _, ah), (bx, by, _, bh) = a, b
+        if ay < by + bh and by < ay + ah:  # side by side
+            return ax <= bx
+        return ay <= by
+
+    return all(before(boxes[a], boxes[b]) for n, a in enumerate(kinds) for b in kinds[n + 1:])
 
 
 #: the least sizes [mm] a sheet gives its drawings (issue 11 §1): the mechanism 100 mm across, a plan's
