@@ -34,17 +34,17 @@ def _magnitude(cell: str) -> tuple[float, float]:
     return _number(magnitude), _half_unit(magnitude)
 
 
-@pytest.fixture(scope="module")
-def slider_crank_sheets(tmp_path_factory):
+@pytest.fixture(scope="module", params=[4, 3])
+def slider_crank_sheets(request, tmp_path_factory):
     out = tmp_path_factory.mktemp("sc")
-    assert main(["draw", "--example", "slider-crank", "--positions", "4", "--format", "pdf", "-o", str(out), "-q"]) == 0
+    assert main(["draw", "--example", "slider-crank", "--positions", str(request.param), "--format", "pdf", "-o", str(out), "-q"]) == 0
     return sorted(out.glob("sheet-*.pdf"))
 
 
 def test_every_printed_error_is_the_error_of_the_two_printed_numbers(slider_crank_sheets):
     """|g − a|/|a| from the printed graphical and analytic values (each ± half its last digit) contains the printed
     relative error (± half its last digit): a reader can recompute the error from the row."""
-    assert len(slider_crank_sheets) == 4
+    assert len(slider_crank_sheets) in (3, 4)
     checked = 0
     for path in slider_crank_sheets:
         for (name, unit), (g, a, e) in results_table(sheet_lines(path)).items():
@@ -59,7 +59,7 @@ def test_every_printed_error_is_the_error_of_the_two_printed_numbers(slider_cran
                 high = (abs(gv - av) + gh + ah) / max(abs(av) - ah, 1e-300)
             assert low <= ev + eh and ev - eh <= high, f"{path.name}: {name} [{unit}] {g} | {a} | {e}: the numbers give {low:.2e} … {high:.2e}"
             checked += 1
-    assert checked >= 12
+    assert checked >= 9
 
 
 def test_the_slider_crank_data_lines_state_the_guide_s_offset_from_the_crank_pivot():
