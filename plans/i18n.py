@@ -119,6 +119,7 @@ TERMS: dict[str, dict[str, str]] = {
     "positions": {"en": "positions", "sr": "положаја", "ru": "положений", "bg": "положения", "sl": "leg"},
     "positions_list": {"en": "Positions", "sr": "Положаји", "ru": "Положения", "bg": "Положения", "sl": "Lege"},
     "lengths": {"en": "lengths", "sr": "дужине", "ru": "длины", "bg": "дължини", "sl": "dolžine"},
+    "from_point": {"en": "from", "sr": "од", "ru": "от", "bg": "от", "sl": "od"},  # a guide's offset e from the crank's pivot
     "fixed_points": {"en": "fixed points", "sr": "непокретне тачке", "ru": "неподвижные точки", "bg": "неподвижни точки", "sl": "nepomične točke"},
     # --- plan legends ---------------------------------------------------------------
     "absolute_velocity": {

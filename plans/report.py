@@ -477,6 +477,13 @@ def _magnitude(value, step: float | None = None) -> str:
     return reading_number(value, step)
 
 
+def _finer(value: float, step: float | None) -> bool:
+    """Whether *value* to the decimals of a reading of resolution *step* shows more than its 4 significant digits."""
+    if step is None or step <= 0 or value == 0 or not math.isfinite(value):
+        return False
+    return max(0, -math.floor(math.log10(step))) > 3 - math.floor(math.log10(value))
+
+
 def table_error(value: float) -> str:
     """A relative error as ``1.0·10⁻⁴`` (``0`` for none, and for one of round-off size, at most :data:`TABLE_ROUNDOFF`:
     two methods that agree to the last bits of a double agree exactly, as far as a table can say)."""
@@ -655,8 +662,10 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
             text = f"{_symbol(label)} [{_UNITS[row.quantity]}]"
         kind = _KIND.get(row.quantity, row.quantity)
         zero_a, zero_g = noise(row.analytic, kind), noise(row.graphical, kind)
-        a_text = "0" if zero_a else _magnitude(row.analytic)
         step = None if given(graphical, row) else reading_step(graphical, row)  # a given value as given
+        # the analytic value to the graphical one's decimals where they give more digits than its 4 significant
+        # (−18854 beside a reading of −18864, not −18850): the error printed is then the error of the two numbers
+        a_text = "0" if zero_a else _magnitude(row.analytic, step if _finer(abs(row.analytic), step) else None)
         g_text = "0" if zero_g else _magnitude(row.graphical, step)
         # a relative error is not defined for a zero quantity, nor for a given one (the driver's ω, v_A: drawn from
         # the data, not read); an error of round-off size is none

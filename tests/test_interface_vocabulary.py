@@ -41,6 +41,7 @@ VOCABULARY = {
     "positions": {"sr": "положаја", "ru": "положений", "bg": "положения", "sl": "leg"},
     "positions_list": {"sr": "Положаји", "ru": "Положения", "bg": "Положения", "sl": "Lege"},
     "lengths": {"sr": "дужине", "ru": "длины", "bg": "дължини", "sl": "dolžine"},
+    "from_point": {"sr": "од", "ru": "от", "bg": "от", "sl": "od"},
     "fixed_points": {"sr": "непокретне тачке", "ru": "неподвижные точки", "bg": "неподвижни точки", "sl": "nepomične točke"},
     "absolute_velocity": {"sr": "апсолутна брзина", "ru": "абсолютная скорость", "bg": "абсолютна скорост", "sl": "absolutna hitrost"},
     "relative_velocity": {"sr": "релативна брзина", "ru": "относительная скорость", "bg": "относителна скорост", "sl": "relativna hitrost"},

@@ -173,7 +173,10 @@ class Document:
     def words(self, line: str) -> str:
         """A line of the program's text (with ``$…$`` math) as markup in the page's language, names and units."""
         for name in self.scene.names:
-            line = re.sub(rf"(?<![\w.]){re.escape(name)}(?!\w)", lambda m: self.scene.name_in(name, self.lang), line)
+            called = self.scene.name_in(name, self.lang)
+            # a name already in the page's words (a data line's "ram guide" for the guide ram) is left as it is
+            line = re.sub(rf"(?<![\w.]){re.escape(name)}(?!\w)",
+                          lambda m: m.group(0) if m.string.startswith(called, m.start()) else called, line)
         line = _SUBSCRIPTED.sub(lambda m: m.group(0) if m.group(0).startswith("$") else f"${m.group(1)}_{{{m.group(2)}}}$", line)
         line = units(decimal_comma(line, self.lang), self.lang)
         return "".join(f"#box[{mixed(piece)}]" if formula else mixed(piece) for piece, formula in formula_parts(line))

@@ -39,7 +39,7 @@ from .typesetting import compile_document, image, query_value
 from .words import assembly_lines, formula_words, namer, scene_data_lines
 
 __all__ = ["Sheet", "PAPERS", "sheet_page", "build_sheet", "fitted_sheet", "sheet_at", "position_sheets", "position_heading", "positions_page",
-           "write_drawings", "write_position_sheets", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION"]
+           "write_drawings", "write_position_sheets", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION", "in_reading_order"]
 
 #: the ISO sheets a sheet may take, smallest first, landscape [mm]
 PAPERS = (("A3", (420.0, 297.0)), ("A2", (594.0, 420.0)), ("A1", (841.0, 594.0)), ("A0", (1189.0, 841.0)))
@@ -227,7 +227,23 @@ def _ranked_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=N
                     least = min(least, size * length / mm)
         if score > -math.inf:
             scored.append(((least, score), len(scored), boxes))
-    return [boxes for _, _, boxes in sorted(scored, key=lambda t: (-t[0][0], -t[0][1], t[1]))]
+    # every drawing at its least size first; of those, the ones that keep the textbook's order (scheme, velocity
+    # plan, acceleration plan: left to right, top to bottom) before any that does not; then the largest
+    order = [k for k in ("mechanism", "velocity", "acceleration") if k in extents]
+    return [boxes for _, _, boxes in sorted(scored, key=lambda t: (-min(t[0][0], 1.0), not in_reading_order(t[2], order),
+                                                                  -t[0][0], -t[0][1], t[1]))]
+
+
+def in_reading_order(boxes: dict, kinds: list) -> bool:
+    """Whether the regions *boxes* {kind: (x, y, w, h)} [mm] are read in the order *kinds*: of two regions side by
+    side (their heights overlap) the left one first, else the upper one first."""
+    def before(a, b) -> bool:
+        (ax, ay, _, ah), (bx, by, _, bh) = a, b
+        if ay < by + bh and by < ay + ah:  # side by side
+            return ax <= bx
+        return ay <= by
+
+    return all(before(boxes[a], boxes[b]) for n, a in enumerate(kinds) for b in kinds[n + 1:])
 
 
 #: the least sizes [mm] a sheet gives its drawings (issue 11 §1): the mechanism 100 mm across, a plan's

@@ -10,6 +10,7 @@ never as a program token (``RRR(3,4): … (−1)``).
 
 from __future__ import annotations
 
+import cmath
 import math
 import re
 
@@ -243,7 +244,13 @@ def scene_data_lines(scene: Scene, lang: str = "en", law=None) -> list[str]:
     second = f"{term('lengths', lang)} [{unit}]:  " + ";  ".join(lengths)
     frame = scene.bodies[FRAME]
     fixed = [f"{n} ({_fmt(z.real * factor)}, {_fmt(z.imag * factor)})" for n, z in frame.points.items()]
-    fixed += [f"{name_in(line.name, lang)}: ∠{_fmt(math.degrees(line.angle))}°" for line in frame.lines.values()]
+    pivot = frame.points.get(driver.pivot) if isinstance(driver, Crank) else None
+    for line in frame.lines.values():
+        text = f"{name_in(line.name, lang)}: ∠{_fmt(math.degrees(line.angle))}°"
+        if pivot is not None:  # the guide's offset e: its perpendicular distance from the crank's pivot
+            offset = abs(((pivot - line.origin) * cmath.exp(-1j * line.angle)).imag)
+            text += f", e = {_fmt(offset * factor)} {unit} {term('from_point', lang)} {driver.pivot}"
+        fixed.append(text)
     third = f"{term('fixed_points', lang)} [{unit}]:  " + ",  ".join(fixed) if fixed else ""
     return [line for line in (first, second, third) if line]
 
