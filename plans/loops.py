@@ -491,8 +491,19 @@ def _driver_block(b: _Builder) -> LoopBlock:
         lines.append(rf"$v_{{{p}}} = \dot{{s}}\,u = {_paren(s_dot)}\,{e} = {_cplx(m.v[b.k], True)}\ \mathrm{{m/s}}$")
         if scene.accelerations:
             lines.append(rf"$a_{{{p}}} = \ddot{{s}}\,u = {_paren(s_ddot)}\,{e} = {_cplx(m.a[b.k], True)}\ \mathrm{{m/s^2}}$")
-        joints = {driver.point: body.points[driver.point]}
-        lines += _point_lines(b, link, joints, {driver.point})
+        # the sliding link translates (no ω, no φ of its own): its other points at a fixed offset, with A's v and a
+        at = body.points[driver.point]
+        for name, local in body.points.items():
+            if name == driver.point or name not in b.sol.points or (name not in scene.report and len(scene.bodies_with(name)) < 2):
+                continue
+            n = _sub(name)
+            arm = complex(local) - complex(at)
+            turn = rf"e^{{i\,{_deg(b.phi(link) + cmath.phase(arm))}}}"
+            point = b.sol.points[name]
+            lines.append(rf"$z_{{{n}}} = z_{{{p}}} + l_{{{p}{n}}}\,{turn} = {_cplx(m.r[b.k])} + {_num(abs(arm))}\,{turn} = {_cplx(point.r[b.k], True)}\ \mathrm{{m}}$")
+            lines.append(rf"$v_{{{n}}} = v_{{{p}}} = {_cplx(point.v[b.k], True)}\ \mathrm{{m/s}}$")
+            if scene.accelerations:
+                lines.append(rf"$a_{{{n}}} = a_{{{p}}} = {_cplx(point.a[b.k], True)}\ \mathrm{{m/s^2}}$")
     return LoopBlock(f"I({scene.frame_number},{link})", tuple(lines))
 
 
