@@ -18,7 +18,6 @@ page states holds on the printed paper.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
 from ._canvas import Sketch, fit_axes
@@ -59,22 +58,6 @@ def _course_texts(fig, lang: str) -> None:
                 artist.set_text(swapped)
 
 
-def _units(svg: bytes, lang: str) -> bytes:
-    """The drawing's unit symbols as the course in *lang* writes them (``м/с`` on a Russian or Bulgarian page).
-
-    Every drawing writes the international symbols; its texts are rewritten before it is rendered
-    (:func:`_course_texts`) and the text nodes of its SVG here, whole symbols only (a plan's image
-    ``m`` stays).
-    """
-    if lang not in ("ru", "bg"):
-        return svg
-    from .._text import course_units
-
-    text = svg.decode("utf-8")
-    text = re.sub(r">([^<>]+)<", lambda m: ">" + course_units(m.group(1), lang, drawn=True) + "<", text)
-    return text.encode("utf-8")
-
-
 def _rendered(fig, lang: str) -> bytes:
     """*fig* as SVG, its texts' units first in the course's symbols (:func:`_course_texts`)."""
     _course_texts(fig, lang)
@@ -89,7 +72,7 @@ def sketched(tag: str, draw, lang: str, margin: float = MARGIN_MM) -> SvgBlock:
         sketch = Sketch(ax, tag)
         draw(sketch)
         width, height = fit_axes(ax, sketch.bounds, margin)
-        return SvgBlock(_units(_rendered(fig, lang), lang), width, height)
+        return SvgBlock(_rendered(fig, lang), width, height)
 
 
 def mechanism_svg(graphical, lang: str = "en") -> SvgBlock:
@@ -160,11 +143,11 @@ def circle_diagram_svg(result, lang: str = "en") -> SvgBlock:
 def _fitted(fig, ax, width: float, height: float, lang: str) -> SvgBlock:
     fig.set_size_inches(width / 25.4, height / 25.4)
     ax.set_position([0.0, 0.0, 1.0, 1.0])
-    return SvgBlock(_units(_rendered(fig, lang), lang), width, height)
+    return SvgBlock(_rendered(fig, lang), width, height)
 
 
 def figure_svg(fig, lang: str = "en") -> SvgBlock:
     """A whole figure (drawn for a page in *lang*) as a block of its own size."""
     width, height = (x * 25.4 for x in fig.get_size_inches())
     with drawing_rc():
-        return SvgBlock(_units(_rendered(fig, lang), lang), width, height)
+        return SvgBlock(_rendered(fig, lang), width, height)

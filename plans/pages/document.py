@@ -344,20 +344,23 @@ class Document:
                          f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.3mm), align: left + horizon,\n  "
                          + ",\n  ".join(rows) + ")]]\n")
 
-    def table_markup(self, heading: str, rows, aligns: str = "(left, right, right, right, right)", full_width: bool = False) -> str:
-        """A table of values under its *heading*, as Typst code (a block never parted, *full_width*: as wide as its
-        place; first row the header)."""
-        header = rows[0]
-        ncol = len(header)
+    def table_code(self, rows, aligns: str = "(left, right, right, right, right)") -> str:
+        """Rows of values as a Typst ``table(…)`` expression: the first row the header, in bold, between rules."""
+        ncol = len(rows[0])
         body = []
         for i, row in enumerate(rows):
             cells = list(row) + [""] * (ncol - len(row))
             weight = "bold" if i == 0 else "regular"
             body.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in cells))
+        return (f"table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns}, table.hline(stroke: 0.7pt), "
+                + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))")
+
+    def table_markup(self, heading: str, rows, aligns: str = "(left, right, right, right, right)", full_width: bool = False) -> str:
+        """A table of values under its *heading*, as Typst code (a block never parted, *full_width*: as wide as its
+        place; first row the header)."""
         width = ", width: 100%" if full_width else ""
         return (f"block(breakable: false{width})[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)[{self.words(heading)}] \\\n"
-                f"#table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: {aligns},"
-                f" table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]")
+                f"#{self.table_code(rows, aligns)}]")
 
     def tables(self, tables, aligns: str = "(left, right, right, right, right)") -> None:
         """Tables of values, two across the page, each whole under its caption (*aligns*: Typst's alignment of
@@ -384,15 +387,8 @@ class Document:
 
     def beside(self, drawing, table, lines) -> None:
         """*table* (none: empty) and *lines* beside a *drawing* ``(key, block)``; with *drawing* None, alone (the page's width)."""
-        rows = []
-        for i, row in enumerate(table):
-            weight = "bold" if i == 0 else "regular"
-            rows.append(", ".join(f"text(weight: \"{weight}\")[{self.words(c)}]" for c in row))
-        ncol = len(table[0]) if table else 1
-        tab = (f"table(columns: {ncol}, stroke: none, inset: (x: 1.2mm, y: 0.9mm), align: (left, left, right, right, right), table.hline(stroke: 0.7pt), "
-               + ", table.hline(stroke: 0.4pt), ".join([rows[0], ", ".join(rows[1:])]) + ", table.hline(stroke: 0.7pt))") if rows else "[]"
         words = " \\\n".join(self.words(line) for line in lines)
-        content = f"#{tab} \\\n{words}" if rows else words
+        content = f"#{self.table_code(table, '(left, left, right, right, right)')} \\\n{words}" if table else words
         if drawing is None:
             self.body.append(f"#text(size: {SMALL_PT}pt)[{content}]\n")
             return

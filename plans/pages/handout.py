@@ -362,7 +362,7 @@ def build_handout(
             if p in run.cycle.points:
                 path = np.asarray(run.cycle.points[p].r)
                 zs.extend(complex(z) for z in path[np.isfinite(path.real) & np.isfinite(path.imag)])
-        extremes = _other_extreme(run, scene)
+        extremes = run.other_extreme()
         zs += [z for g in extremes.values() for z in g.positions.values()]
         extent = _bbox(zs)
         k_l_plate, first = _fitted(lambda k: positions_svg(run, k, lang, extremes), extent, POSITIONS_BOX, k_l0, given["k_l"])
@@ -760,24 +760,6 @@ def _acceleration_cells(runs, room: float | None = None) -> tuple[int, tuple[flo
         options.append((need, columns, cell))
     need, columns, cell = min(options)
     return columns, cell
-
-
-def _other_extreme(run, scene) -> dict:
-    """``{"0′": GraphicalSolution}``: the mechanism at the output's other extreme position, for the plan of positions,
-    when the positions start at the output's extreme (a crank's, :class:`plans.motion.Strokes`); else empty."""
-    from ..errors import PlansError
-    from ..positions import run_positions
-
-    st = getattr(run, "strokes", None)
-    motion = getattr(run, "motion", None)
-    if st is None or motion is None or motion.start != "output" or not st.law.crank:
-        return {}
-    try:
-        other = run_positions(scene, [float(st.other_position)], precision=None, start="scene")
-    except PlansError:
-        return {}
-    solved = [r for r in other.runs if r.ok]
-    return {"0′": solved[0].graphical} if solved else {}
 
 
 def _kinematic(scene, positions, count: int, precision, law=None, start: str = "output"):

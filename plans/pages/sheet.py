@@ -680,7 +680,7 @@ def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: t
     # the data lines under the drawing: beside the title block, and over it as far as they need
     under = max(len(lines) * DATA_LINE - (TITLE_BLOCK_ROOM - 2.0), 0.0)
     room = (page.text_width, page.text_height - CAPTION - 2.0 - under)
-    extremes = run.other_extreme() if hasattr(run, "other_extreme") else {}
+    extremes = run.other_extreme()
     zs = [complex(z) for r in run.runs if r.ok for z in r.graphical.positions.values()]
     zs += [complex(z) for g in extremes.values() for z in g.positions.values()]
     for p in run.scene.report:
