@@ -178,7 +178,7 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "построителна линия",
         "sl": "konstrukcijska črta",
     },
-    "path": {"en": "path of a point", "sr": "путања тачке", "ru": "траектория точки", "bg": "траектория на точка", "sl": "tirnica točke"},
+    "path": {"en": "path of point", "sr": "путања тачке", "ru": "траектория точки", "bg": "траектория на точка", "sl": "tirnica točke"},
     # --- cycle diagrams -------------------------------------------------------------
     "cycle_diagrams": {
         "en": "Kinematic diagrams over the cycle",
