@@ -210,5 +210,5 @@ def sliding_equation(symbol: str, moving: str, reference: str, turning: str, gui
     if turning == FRAME:
         return f"a_{moving} = a_{reference} + a^r_{rel}  (a_{reference} = 0, a^r_{rel} ∥ {guide})"
     if not turns:
-        return f"a_{moving} = a_{reference} + a^r_{rel}  (ω{body_label(turning, frame)} = 0: no Coriolis; a^r_{rel} ∥ {guide})"
+        return f"a_{moving} = a_{reference} + a^r_{rel}  (ω{body_label(turning, frame)} = 0 ⇒ a^k_{rel} = 0, a^r_{rel} ∥ {guide})"
     return f"a_{moving} = a_{reference} + a^k_{rel} + a^r_{rel}  (a^k_{rel} = 2 ω{body_label(turning, frame)} × v_{rel}, a^r_{rel} ∥ {guide})"
