@@ -1015,11 +1015,11 @@ TERMS: dict[str, dict[str, str]] = {
                    "bg": "се завъртат изцяло", "sl": "se zavrtijo v celoti"},
     "none_turns": {"en": "no link turns fully", "sr": "ниједан члан се не окреће пуним кругом", "ru": "ни одно звено не проворачивается",
                    "bg": "никое звено не се завърта изцяло", "sl": "noben člen se ne zavrti v celoti"},
-    "law_given_instant_only": {"en": "the scene's {q} holds at its own position only, not over the cycle",
-                               "sr": "задато {q} важи само у задатом положају, не током циклуса",
-                               "ru": "заданное {q} относится только к заданному положению, не к циклу",
-                               "bg": "зададеното {q} се отнася само за зададеното положение, не за цикъла",
-                               "sl": "podani {q} velja le v podani legi, ne med ciklom"},
+    "law_given_instant_only": {"en": "the scene's {q} is not used: the cycle follows this law",
+                               "sr": "задато {q} се не користи: циклус прати овај закон",
+                               "ru": "заданное {q} не используется: цикл следует этому закону",
+                               "bg": "зададеното {q} не се използва: цикълът следва този закон",
+                               "sl": "podani {q} se ne uporablja: cikel sledi temu zakonu"},
     # --- the force pages set by Typst (plans.pages.forces) ---
     "image": {"en": "image", "sr": "слика", "ru": "изображение", "bg": "образ", "sl": "slika"},
     "lever_moments": {

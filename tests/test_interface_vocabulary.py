@@ -363,8 +363,10 @@ VOCABULARY = {
     # the plate's data line: a four-bar loop named by its links
     "four_bar_loop": {"sr": "зглавкасти четвороугао", "ru": "шарнирный четырёхзвенник", "bg": "шарнирен четиризвенник", "sl": "štirizgibni mehanizem"},
     # the scene's own ε (a) beside a law that does not keep it
-    "law_given_instant_only": {"sr": "задато {q} важи само у задатом положају, не током циклуса", "ru": "заданное {q} относится только к заданному положению, не к циклу",
-                               "bg": "зададеното {q} се отнася само за зададеното положение, не за цикъла", "sl": "podani {q} velja le v podani legi, ne med ciklom"},
+    "law_given_instant_only": {"sr": "задато {q} се не користи: циклус прати овај закон",
+                               "ru": "заданное {q} не используется: цикл следует этому закону",
+                               "bg": "зададеното {q} не се използва: цикълът следва този закон",
+                               "sl": "podani {q} se ne uporablja: cikel sledi temu zakonu"},
     # a plan's enlarged detail named in its notes ("detail I"; ГОСТ 2.305 "выносной элемент")
     "detail": {"sr": "детаљ", "ru": "выносной элемент", "bg": "детайл", "sl": "detajl"},
     "plan_notes_legend": {

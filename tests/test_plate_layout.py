@@ -184,14 +184,14 @@ def test_no_two_text_lines_of_a_handout_page_overlap(reviewed, key):
 # --- the data do not contradict each other ---------------------------------------------------------
 
 
-@pytest.mark.parametrize("lang, given", [("en", "the scene's a₂ = 2 m/s² holds at its own position only, not over the cycle"),
-                                         ("bg", "зададеното a₂ = 2 m/s² се отнася само за зададеното положение, не за цикъла"),
-                                         ("sr", "задато a₂ = 2 m/s² важи само у задатом положају, не током циклуса"),
-                                         ("ru", "заданное a₂ = 2 m/s² относится только к заданному положению, не к циклу"),
-                                         ("sl", "podani a₂ = 2 m/s² velja le v podani legi, ne med ciklom")])
+@pytest.mark.parametrize("lang, given", [("en", "the scene's a₂ = 2 m/s² is not used: the cycle follows this law"),
+                                         ("bg", "зададеното a₂ = 2 m/s² не се използва: цикълът следва този закон"),
+                                         ("sr", "задато a₂ = 2 m/s² се не користи: циклус прати овај закон"),
+                                         ("ru", "заданное a₂ = 2 m/s² не используется: цикл следует этому закону"),
+                                         ("sl", "podani a₂ = 2 m/s² se ne uporablja: cikel sledi temu zakonu")])
 def test_a_given_acceleration_under_the_constant_law_is_said_to_be_its_instants(lang, given):
     """linear-arm.toml gives v = 0.5 m/s, a = 2 m/s² and no law: the cycle runs at constant speed (the course's
-    assumption, domain.md §10), and the law's line says that the 2 m/s² is the given instant's only."""
+    assumption, domain.md §10), and the law's line says that the 2 m/s² is not used."""
     scene = plans.load(plans.example_path("linear-arm"))
     assert scene.driver.law is None and scene.driver.acceleration == 2.0  # the file's numbers
     law = driver_cycle(scene, 8).law
@@ -204,7 +204,7 @@ def test_no_such_words_where_the_scene_gives_no_acceleration_or_the_law_keeps_it
     quick = driver_cycle(plans.load(plans.example_path("quick-return")), 8).law  # ε not given
     assert quick.given_note("en", "2") == ""
     four_bar = plans.load(plans.example_path("four-bar"))  # ε = 5 rad/s²: stated under constant, the law's under uniform
-    assert driver_cycle(four_bar, 8).law.given_note("en", "2") == "the scene's ε₂ = 5 rad/s² holds at its own position only, not over the cycle"
+    assert driver_cycle(four_bar, 8).law.given_note("en", "2") == "the scene's ε₂ = 5 rad/s² is not used: the cycle follows this law"
     assert driver_cycle(four_bar, 8, law="uniform").law.given_note("en", "2") == ""
 
 
@@ -213,14 +213,14 @@ def test_plans_sweep_says_the_same(tmp_path, capsys):
 
     assert main(["sweep", "--example", "linear-arm", "--steps", "8", "-o", str(tmp_path / "arm.csv"), "--lang", "sr"]) == 0
     out = capsys.readouterr().out
-    assert "константна брзина: v₂ = 0,5 m/s, a₂ = 0; задато a₂ = 2 m/s² важи само у задатом положају, не током циклуса" in out
+    assert "константна брзина: v₂ = 0,5 m/s, a₂ = 0; задато a₂ = 2 m/s² се не користи: циклус прати овај закон" in out
 
 
 def test_the_linear_arm_handout_states_the_given_acceleration_as_its_instants(reviewed):
     _, _, pages = reviewed["linear-arm-bg"]
     first = " ".join(line[4] for line in pages[0])  # (NFKC: a₂ reads a2, m/s² m/s2)
     assert "v = 0,5 м/с" in first and "a = 2 м/с2" not in first  # the data: what the cycle uses (issue 20, 2nd review)
-    assert re.search(r"постоянна скорост, a ?2 = 0\s+\(зададеното a ?2 = 2 м/с2 се отнася само за зададеното положение, не за цикъла\)",
+    assert re.search(r"постоянна скорост, a ?2 = 0\s+\(зададеното a ?2 = 2 м/с2 не се използва: цикълът следва този закон\)",
                      first), first
 
 
