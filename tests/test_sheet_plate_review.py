@@ -1,0 +1,24 @@
+"""The A3 sheet's plate, as a teacher reviewed it (issue 20): one arrangement, the comparison table's decimals,
+the driver's position in the given data, the driver's acceleration drawn as an absolute vector, the title block's
+student fields, the proportions of the plans' similar images."""
+
+from __future__ import annotations
+
+from plans.compare import Comparison
+from plans.report import sheet_table
+
+
+def test_analytic_column_keeps_the_graphical_decimals():
+    # hand rows: ω₃ analytic exactly 0.25 rad/s, read 0.2504 at no resolution (4 significant digits: 0.2504);
+    # ε₃ analytic 2 rad/s², read 2.001: the analytic one is printed 2.000, never 2; v_C 1.5 m/s along 90°
+    rows = [Comparison("links", "3", "omega", 0.25, 0.2504, 4e-4, 1.6e-3),
+            Comparison("links", "3", "epsilon", 2.0, 2.001, 1e-3, 5e-4),
+            Comparison("points", "C", "v", 1.5j, 1.512j, 0.012, 8e-3)]
+    table = sheet_table(rows)
+    cells = {row[0]: (row[1], row[2]) for row in table[1:]}
+    omega = next(v for k, v in cells.items() if "omega" in k)
+    epsilon = next(v for k, v in cells.items() if "varepsilon" in k)
+    velocity = next(v for k, v in cells.items() if "v_" in k)
+    assert omega == ("0.2504", "0.2500")
+    assert epsilon == ("2.001", "2.000")
+    assert velocity == ("1.512 ∠ 90.0°", "1.500 ∠ 90.0°")
