@@ -22,3 +22,17 @@ def test_analytic_column_keeps_the_graphical_decimals():
     assert omega == ("0.2504", "0.2500")
     assert epsilon == ("2.001", "2.000")
     assert velocity == ("1.512 ∠ 90.0°", "1.500 ∠ 90.0°")
+
+
+def test_the_sliding_drivers_acceleration_is_drawn_solid_as_an_absolute_vector():
+    # the scheme's a_A is the driver point's given absolute acceleration: a solid shaft as the plans' legend draws
+    # an absolute vector (a dashed one reads as a component)
+    from plans.drawing import draw_mechanism
+    from plans.graphical import construct
+    from plans.scene import example_path, load
+
+    artists = draw_mechanism(construct(load(example_path("linear-arm"))))
+    shafts = {a.get_gid(): a for a in artists if a.get_gid() in ("mech-velocity", "mech-acceleration")}
+    assert set(shafts) == {"mech-velocity", "mech-acceleration"}
+    for shaft in shafts.values():
+        assert shaft.get_linestyle() == "-", shaft.get_gid()
