@@ -36,3 +36,23 @@ def test_the_sliding_drivers_acceleration_is_drawn_solid_as_an_absolute_vector()
     assert set(shafts) == {"mech-velocity", "mech-acceleration"}
     for shaft in shafts.values():
         assert shaft.get_linestyle() == "-", shaft.get_gid()
+
+
+def _arm_at(s: float):
+    import dataclasses
+
+    from plans.graphical import construct
+    from plans.scene import example_path, load
+
+    scene = load(example_path("linear-arm"))
+    scene = dataclasses.replace(scene, driver=dataclasses.replace(scene.driver, s=s))
+    return construct(scene)
+
+
+def test_the_sliding_drivers_position_is_in_the_given_data():
+    # the Bulgarian linear-arm sheet at s = 25 mm along the floor: the driver's line says so (decimal comma, мм)
+    from plans.pages.sheet import sheet_at
+
+    source = sheet_at(_arm_at(0.025), lang="bg").source
+    driver_line = next(line for line in source.splitlines() if "Водещо звено" in line)
+    assert "s = 25,0 мм" in driver_line.replace("#box[", "").replace("]", "")

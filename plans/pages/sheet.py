@@ -285,7 +285,9 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
         if heading:
             doc.heading(heading, level=2)
         # the given data (the driver's ω, ε or v, a; the link lengths; the fixed points), as the handout states them
-        for line in scene_data_lines(doc.scene, lang):
+        for n, line in enumerate(scene_data_lines(doc.scene, lang)):
+            if n == 0:  # the driver's line with its position at the sheet's instant (a crank's φ, a sliding driver's s)
+                line += ",  " + _driver_position(doc.scene)
             doc.line(_capitalised(line), size=SMALL_PT + 0.5)
         if formula:
             doc.line(f"{term('structural_formula', lang)}:  {formula_words(formula)}", size=TEXT_PT)
@@ -650,6 +652,18 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
                             number=(i + 2, total), **_text_parts(r.scene, g, r.analytic, lang))
         sheets.append((h, sheet))
     return sheets, scales
+
+
+def _driver_position(scene) -> str:
+    """The driver's position the sheet is drawn at: ``φ₂ = 30.0°`` (a crank, from the x axis, counter-clockwise) or
+    ``s = 20.0 mm`` (a sliding driver: along its guide from the guide's origin, the symbol of its stroke ``s ∈ […]``)."""
+    from ..positions import position_text
+    from ..scene import Crank
+
+    driver = scene.driver
+    if isinstance(driver, Crank):
+        return position_text(scene, driver.phi)
+    return f"s = {driver.s * 1e3:.1f} mm".replace("-", "\u2212")
 
 
 def _capitalised(line: str) -> str:
