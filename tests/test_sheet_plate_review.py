@@ -56,3 +56,35 @@ def test_the_sliding_drivers_position_is_in_the_given_data():
     source = sheet_at(_arm_at(0.025), lang="bg").source
     driver_line = next(line for line in source.splitlines() if "Водещо звено" in line)
     assert "s = 25,0 мм" in driver_line.replace("#box[", "").replace("]", "")
+
+
+import pytest
+
+#: the title block's student fields as a course plate writes them (the words written out here, not read from i18n)
+STUDENT_FIELDS = {
+    "en": ("Institution", "Drawn by", "Student no.", "Group", "Checked by", "Date"),
+    "sr": ("Установа", "Цртао", "Бр. индекса", "Група", "Прегледао", "Датум"),
+    "ru": ("Учебное заведение", "Разработал", "№ зач. книжки", "Группа", "Проверил", "Дата"),
+    "bg": ("Учебно заведение", "Изработил", "Фак. №", "Група", "Проверил", "Дата"),
+    "sl": ("Ustanova", "Risal", "Vpisna št.", "Skupina", "Pregledal", "Datum"),
+}
+
+
+@pytest.mark.parametrize("lang", sorted(STUDENT_FIELDS))
+@pytest.mark.parametrize("page", ["A3_LANDSCAPE", "A4_PORTRAIT"])
+def test_title_block_has_the_students_fields(lang, page):
+    # the same title block on a sheet (A3) and a handout page (A4): set, compiled, and its words read off the PDF
+    import io
+
+    from pypdf import PdfReader
+
+    from plans.pages import document
+    from plans.pages.typesetting import compile_document
+    from plans.scene import example_path, load
+
+    doc = document.Document(load(example_path("four-bar")), lang, getattr(document, page))
+    doc.line("x")
+    pdf = compile_document(doc.source(), doc.images, "pdf")
+    words = " ".join(PdfReader(io.BytesIO(pdf)).pages[0].extract_text().split())
+    for field in STUDENT_FIELDS[lang]:
+        assert f"{field}:" in words, (lang, field)
