@@ -484,13 +484,6 @@ def _decimals(text: str) -> int:
     return len(m.group(1)) if m and m.group(1) and "·" not in text else 0
 
 
-def _significant_decimals(value: float, digits: int = 4) -> int:
-    """The decimals that print *value* to *digits* significant digits (0 for a value of *digits* integer digits or more)."""
-    if value == 0 or not math.isfinite(value) or not 1e-3 <= value < 1e6:
-        return 0
-    return max(0, digits - 1 - math.floor(math.log10(float(f"{value:.{digits}g}"))))
-
-
 def _finer(value: float, step: float | None) -> bool:
     """Whether *value* to the decimals of a reading of resolution *step* shows more than its 4 significant digits."""
     if step is None or step <= 0 or value == 0 or not math.isfinite(value):
@@ -681,8 +674,8 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
         # (−18854 beside a reading of −18864, not −18850): the error printed is then the error of the two numbers
         a_text = "0" if zero_a else _magnitude(row.analytic, step if _finer(abs(row.analytic), step) else None)
         g_text = "0" if zero_g else _magnitude(row.graphical, step)
-        if not zero_a and 1e-3 <= abs(row.analytic) < 1e6:  # the analytic value to at least the graphical one's decimals, its trailing zeros kept (0.2500 beside 0.250)
-            a_text = _magnitude(row.analytic, 10.0 ** -max(_decimals(g_text), _decimals(a_text), _significant_decimals(abs(row.analytic))))
+        if not zero_a and 1e-3 <= abs(row.analytic) < 1e6:  # the analytic value to at least the graphical one's decimals, its trailing zeros kept (0.250 beside 0.250, not 0.25)
+            a_text = _magnitude(row.analytic, 10.0 ** -max(_decimals(g_text), _decimals(a_text)))
         # a relative error is not defined for a zero quantity, nor for a given one (the driver's ω, v_A: drawn from
         # the data, not read); an error of round-off size is none
         if zero_a or given(graphical, row):

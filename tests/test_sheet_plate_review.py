@@ -22,6 +22,10 @@ def test_analytic_column_keeps_the_graphical_decimals():
     assert omega == ("0.2504", "0.2500")
     assert epsilon == ("2.001", "2.000")
     assert velocity == ("1.512 ∠ 90.0°", "1.500 ∠ 90.0°")
+    # and no decimals the graphical one does not have: 6 beside 6, 0.72 beside 0.72
+    same = sheet_table([Comparison("links", "2", "omega", 6.0, 6.0, 0.0, 0.0), Comparison("points", "A", "v", 0.72j, 0.72j, 0.0, 0.0)])
+    assert [row[1:3] for row in same[1:]] == [["6", "6"], ["0.72 ∠ 90.0°", "0.72 ∠ 90.0°"]] or \
+        [row[1:3] for row in same[1:]] == [["0.72 ∠ 90.0°", "0.72 ∠ 90.0°"], ["6", "6"]]
 
 
 def test_the_sliding_drivers_acceleration_is_drawn_solid_as_an_absolute_vector():
@@ -88,3 +92,49 @@ def test_title_block_has_the_students_fields(lang, page):
     words = " ".join(PdfReader(io.BytesIO(pdf)).pages[0].extract_text().split())
     for field in STUDENT_FIELDS[lang]:
         assert f"{field}:" in words, (lang, field)
+
+
+def test_the_quick_returns_plans_state_the_proportion_of_images():
+    # D is placed on the velocity plan by similarity: pd / pa₄ = CD / CA (C at the pole).  By hand: O (0, 250) mm,
+    # OA = 120 mm at φ = 30°: A = (103.92, 310.0), CA = 326.96 mm; CD = 550 mm.  |v_A4| = ω₄·CA, |v_D| = ω₄·CD with
+    # ω₄ from the analytic solution (the other method): the numbers printed are these over k_v
+    import re
+
+    import plans
+    from plans.drawing.readings import similarity_lines
+    from plans.graphical import construct
+
+    scene = plans.load(plans.example_path("quick-return"))
+    g = construct(scene)
+    omega4 = abs(float(plans.solve(scene).links["4"].omega[0]))
+    ca = abs(complex(120 * 3 ** 0.5 / 2, 250 + 60))
+    (line,) = similarity_lines(g, "velocity")
+    assert line.startswith("pd / p a₄ = CD / CA:  pd = ")
+    pa4, cd, ca_printed, pd = (float(x) for x in re.findall(r"\d+\.\d", line.split(":  ")[1]))
+    k_v = g.scales["k_v"]
+    assert (cd, ca_printed) == (550.0, round(ca, 1))
+    assert abs(pa4 - omega4 * ca / 1e3 / k_v) <= 0.06
+    assert abs(pd - omega4 * 0.55 / k_v) <= 0.1
+    (accel,) = similarity_lines(g, "acceleration")
+    assert accel.startswith("π d′ / π a₄′ = CD / CA:  π d′ = ")
+
+
+def test_a_triangle_of_images_states_both_sides():
+    # four-bar's M on coupler 3 (A, B, M not on a line): △abm ∼ △ABM, am = ab·AM/AB and bm = ba·BM/BA
+    import re
+
+    import plans
+    from plans.drawing.readings import similarity_lines
+    from plans.graphical import construct
+
+    scene = plans.load(plans.example_path("four-bar"))
+    g = construct(scene)
+    (line,) = similarity_lines(g, "velocity")
+    assert line.startswith("△abm ∼ △ABM:  am = ab · AM / AB = ")
+    numbers = [float(x) for x in re.findall(r"\d+\.\d", line)]
+    ab, am_len, ab_len, am_mm, _, bm_len, _, bm_mm = numbers
+    # the printed side equals the plan's segment measured between the images
+    assert abs(am_mm - abs(g.velocity_plan.images["a"] - g.velocity_plan.images["m"])) <= 0.06
+    assert abs(bm_mm - abs(g.velocity_plan.images["b"] - g.velocity_plan.images["m"])) <= 0.06
+    # the link's sides from the scene's data (link 3: A (0, 0), B (250, 0), M (100, 60) mm)
+    assert (ab_len, am_len, bm_len) == (250.0, round((100 ** 2 + 60 ** 2) ** 0.5, 1), round((150 ** 2 + 60 ** 2) ** 0.5, 1))

@@ -39,7 +39,7 @@ from .typesetting import compile_document, image, query_value
 from .words import assembly_lines, formula_words, namer, scene_data_lines
 
 __all__ = ["Sheet", "PAPERS", "sheet_page", "build_sheet", "fitted_sheet", "sheet_at", "position_sheets", "position_heading", "positions_page",
-           "write_drawings", "write_position_sheets", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION", "in_reading_order"]
+           "write_drawings", "write_position_sheets", "similarity_markup", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION", "in_reading_order"]
 
 #: the ISO sheets a sheet may take, smallest first, landscape [mm]
 PAPERS = (("A3", (420.0, 297.0)), ("A2", (594.0, 420.0)), ("A1", (841.0, 594.0)), ("A0", (1189.0, 841.0)))
@@ -300,6 +300,9 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
         if readings:  # the readings of the two plans side by side
             doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (1fr, 1fr), column-gutter: {GUTTER}mm, align: top + left, "
                             + ", ".join(readings) + ")]\n")
+        similar = similarity_markup(doc, [("", graphical)])
+        if similar:
+            doc.body.append(similar)
         results = doc.table_markup(term("comparison", lang), table) if table and len(table) > 1 else "[]"
         # under the plans' legend, what the notes under a plan are (short segments, near-coincident directions)
         legend_cell = (f"align(right)[#{doc.add_image('legend', legend)}]" + f" + block(width: 100%)[#text(size: {SMALL_PT - 0.5}pt)["
@@ -308,6 +311,19 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
         return doc.body
     finally:
         doc.body = body
+
+
+def similarity_markup(doc: Document, solutions) -> str:
+    """The proportions by which the plans of *solutions* (``(words, GraphicalSolution)``: the words before its lines,
+    a handout's position, or "") place images by similarity (:func:`plans.drawing.readings.similarity_lines`) under
+    their heading, as Typst markup ("" when there are none)."""
+    from ..drawing.readings import similarity_lines
+
+    lines = [where + line for where, g in solutions for kind in ("velocity", "acceleration") for line in similarity_lines(g, kind)]
+    if not lines:
+        return ""
+    return (f"#block(breakable: false)[#text(size: {SMALL_PT}pt)[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)"
+            f"[{doc.words(term('similar_images', doc.lang))}] \\\n" + " \\\n".join(doc.words(line) for line in lines) + "]]\n")
 
 
 def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "en", table=None, formula: str = "",
