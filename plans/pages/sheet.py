@@ -673,12 +673,13 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
 def _driver_position(scene) -> str:
     """The driver's position the sheet is drawn at: ``φ₂ = 30.0°`` (a crank, from the x axis, counter-clockwise) or
     ``s = 20.0 mm`` (a sliding driver: along its guide from the guide's origin, the symbol of its stroke ``s ∈ […]``)."""
-    from ..positions import position_text
+    from .._text import subscript
     from ..scene import Crank
 
     driver = scene.driver
     if isinstance(driver, Crank):
-        return position_text(scene, driver.phi)
+        degrees = round(math.degrees(driver.phi) % 360.0, 1) % 360.0
+        return f"φ{subscript(driver.link)} = {degrees:.1f}°"
     return f"s = {driver.s * 1e3:.1f} mm".replace("-", "\u2212")
 
 
