@@ -138,3 +138,22 @@ def test_a_triangle_of_images_states_both_sides():
     assert abs(bm_mm - abs(g.velocity_plan.images["b"] - g.velocity_plan.images["m"])) <= 0.06
     # the link's sides from the scene's data (link 3: A (0, 0), B (250, 0), M (100, 60) mm)
     assert (ab_len, am_len, bm_len) == (250.0, round((100 ** 2 + 60 ** 2) ** 0.5, 1), round((150 ** 2 + 60 ** 2) ** 0.5, 1))
+
+
+@pytest.mark.parametrize("example, lang", [("six-bar", "en"), ("quick-return", "sr")])
+def test_the_scheme_is_in_the_sheets_top_left_corner(example, lang, tmp_path):
+    # one place for the scheme on every sheet, whatever its shape (the six-bar's tall one had its plans beside it and
+    # stood in the middle of the left column; the quick-return's over its plans): the drawings' room starts at the text
+    # area's top left corner (25 mm from the page's left edge, 10 mm from its top), the scheme 10.5 mm under it (its
+    # name and k_l over it)
+    import sheet_pages
+    from plans.cli import main
+
+    assert main(["draw", "--example", example, "--lang", lang, "-o", str(tmp_path / "sheet.svg"), "-q"]) == 0
+    placed = {d.kind: d for d in sheet_pages.drawings((tmp_path / "sheet.svg").read_bytes())}
+    mechanism = placed["mechanism"]
+    assert abs(mechanism.x - 25.0) < 0.05 and abs(mechanism.y - (10.0 + 10.5)) < 0.05, (mechanism.x, mechanism.y)
+    # the plans after it in reading order: to its right or under it, never above it or left of it
+    for kind in ("velocity", "acceleration"):
+        plan = placed[kind]
+        assert plan.x >= mechanism.x + mechanism.width - 0.5 or plan.y >= mechanism.y + mechanism.height - 0.5, kind

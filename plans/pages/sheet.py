@@ -300,13 +300,14 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
         if readings:  # the readings of the two plans side by side
             doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (1fr, 1fr), column-gutter: {GUTTER}mm, align: top + left, "
                             + ", ".join(readings) + ")]\n")
-        similar = similarity_markup(doc, [("", graphical)])
-        if similar:
-            doc.body.append(similar)
         results = doc.table_markup(term("comparison", lang), table) if table and len(table) > 1 else "[]"
         # under the plans' legend, what the notes under a plan are (short segments, near-coincident directions)
         legend_cell = (f"align(right)[#{doc.add_image('legend', legend)}]" + f" + block(width: 100%)[#text(size: {SMALL_PT - 0.5}pt)["
                        f"{doc.words(term('plan_notes_legend', lang))}]]") if legend is not None else "[]"
+        # the proportions of the images placed by similarity, beside the table under the legend
+        similar = similarity_markup(doc, [("", graphical)])
+        if similar:
+            legend_cell += f" + block(above: 3mm)[{similar}]"
         doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {results}, {legend_cell})]\n")
         return doc.body
     finally:
@@ -345,12 +346,14 @@ def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "e
     names = {"mechanism": term("mechanism", lang), "velocity": term("velocity_plan", lang), "acceleration": term("acceleration_plan", lang)}
     for kind, block in blocks.items():
         x, y, w, h = regions[kind]
-        bx = x + (w - block.width) / 2
-        by = y + CAPTION + max(h - CAPTION - block.height, 0.0) / 2
+        # every drawing in the top-left corner of its region (the plate's one arrangement: the scheme at the sheet's
+        # top left whatever its shape, the plans beside and under it), its name and scale centred over it
+        bx, by = x, y + CAPTION
+        cw = min(max(block.width, 70.0), w)  # (a narrow drawing's caption wider than it, from the region's left)
         key = SCALE_OF[kind]
         caption = (f"#text(size: {TEXT_PT + 0.5}pt, weight: \"bold\")[{doc.words(names[kind])}] \\\n"
                    f"{doc.scale_markup(key, graphical.scales[key])}")
-        doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {by - CAPTION:.3f}mm, block(width: {w:.3f}mm, height: {CAPTION}mm)[#align(center)[{caption}]])")
+        doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {by - CAPTION:.3f}mm, block(width: {cw:.3f}mm, height: {CAPTION}mm)[#align(center)[{caption}]])")
         doc.add_image(kind, block)
         doc.body.append(f"#place(top + left, dx: {bx:.3f}mm, dy: {by:.3f}mm, {image(kind, block.width)})")
         placed[kind] = (page.margins[0] + bx, page.margins[2] + by, block.width, block.height)
