@@ -189,7 +189,7 @@ def similarity_lines(graphical, kind: str) -> list[str]:
     to the link's lengths [mm]:
 
     - three points on a line: ``pd / pa₄ = CD / CA:  pd = 45.0 · 550.0 / 327.0 = 75.7 mm``;
-    - a triangle: ``△ab m ∼ △ABM:  am = ab · AM / AB = …,  bm = ba · BM / BA = …``.
+    - a triangle (yzx similar to YZX): its two sides, ``am / ab = AM / AB:  am = …;  bm / ba = BM / BA:  bm = …``.
     """
     plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
     if plan is None:
@@ -222,8 +222,8 @@ def similarity_lines(graphical, kind: str) -> list[str]:
         if line_up:  # yx / yz = YX / YZ
             lines.append(f"{seg(y, x)} / {seg(y, z)} = {Y}{X} / {Y}{Z}:  {seg(y, x)} = {on_plan(y, z):.1f} · {real(y, x):.1f} / "
                          f"{real(y, z):.1f} = {on_plan(y, z) * real(y, x) / real(y, z):.1f} mm")
-        else:  # the triangle yzx similar to YZX: its two other sides from yz
-            sides = [f"{seg(a, x)} = {seg(a, b)} · {A}{X} / {A}{B} = {on_plan(a, b):.1f} · {real(a, x):.1f} / {real(a, b):.1f} = "
-                     f"{on_plan(a, b) * real(a, x) / real(a, b):.1f} mm" for a, b, A, B in ((y, z, Y, Z), (z, y, Z, Y))]
-            lines.append(f"△{letter(y)}{letter(z)}{letter(x)} ∼ △{Y}{Z}{X}:  " + ",  ".join(sides))
+        else:  # the triangle yzx similar to YZX: its two other sides from yz, each in the same proportion
+            lines.append(";  ".join(
+                f"{seg(a, x)} / {seg(a, b)} = {A}{X} / {A}{B}:  {seg(a, x)} = {on_plan(a, b):.1f} · {real(a, x):.1f} / {real(a, b):.1f} = "
+                f"{on_plan(a, b) * real(a, x) / real(a, b):.1f} mm" for a, b, A, B in ((y, z, Y, Z), (z, y, Z, Y))))
     return lines
