@@ -595,12 +595,6 @@ def build_handout(
                 readings.append((f"{where}{term(kind + '_plan', lang)}: {term('readings', lang)}", rows))
     if readings:
         doc.tables(readings, aligns="(left, left, right, left, right)")
-    # the proportions by which the plans place images by similarity (pd / pa₄ = CD / CA), with their numbers
-    from .sheet import similarity_markup
-
-    similar = similarity_markup(doc, [(f"{term('position', lang)} {here[k].index}:  " if multi else "", here[k].graphical) for k in chosen or [sample.index]])
-    if similar:
-        doc.body.append(similar)
 
     loops_of = [here[k] for k in chosen] or [sample]
     doc.section("loops")
