@@ -286,7 +286,7 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
             doc.heading(heading, level=2)
         # the given data (the driver's ω, ε or v, a; the link lengths; the fixed points), as the handout states them
         for n, line in enumerate(scene_data_lines(doc.scene, lang)):
-            if n == 0:  # the driver's line with its position at the sheet's instant (a crank's φ, a sliding driver's s)
+            if n == 0 and not heading:  # the driver's position at the sheet's instant (a crank's φ, a sliding driver's s), where no heading states it
                 line += ",  " + _driver_position(doc.scene)
             doc.line(_capitalised(line), size=SMALL_PT + 0.5)
         if formula:
