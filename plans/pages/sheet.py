@@ -329,7 +329,7 @@ def similarity_markup(doc: Document, solutions) -> str:
 
 def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "en", table=None, formula: str = "",
                 assembly=(), legend=None, heading: str = "", paper: str = "A3", number: tuple[int, int] | None = None) -> Sheet:
-    """The sheet of *graphical* (drawn already: *blocks* kind -> SvgBlock at its factor) with its drawings centred
+    """The sheet of *graphical* (drawn already: *blocks* kind -> SvgBlock at its factor) with its drawings at the top left
     in *regions* (kind -> (x, y, w, h) [mm] in the drawings' room), the text column beside them.
 
     *table*: the results table (rows of text, the header first, in *lang*); *formula*: the structural formula;
