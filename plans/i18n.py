@@ -660,6 +660,11 @@ TERMS: dict[str, dict[str, str]] = {
     "drawn_by": {"en": "Drawn by", "sr": "Цртао", "ru": "Разработал", "bg": "Изработил", "sl": "Risal"},
     "checked_by": {"en": "Checked by", "sr": "Прегледао", "ru": "Проверил", "bg": "Проверил", "sl": "Pregledal"},
     "date": {"en": "Date", "sr": "Датум", "ru": "Дата", "bg": "Дата", "sl": "Datum"},
+    "institution": {"en": "Institution", "sr": "Установа", "ru": "Учебное заведение", "bg": "Учебно заведение", "sl": "Ustanova"},
+    "index_number": {"en": "Student no.", "sr": "Бр. индекса", "ru": "№ зач. книжки", "bg": "Фак. №", "sl": "Vpisna št."},
+    "similar_images": {"en": "Images by similarity", "sr": "Слике по сличности", "ru": "Изображения по подобию", "bg": "Образи по подобие",
+                       "sl": "Slike po podobnosti"},
+    "student_group": {"en": "Group", "sr": "Група", "ru": "Группа", "bg": "Група", "sl": "Skupina"},
     "sheet": {"en": "Sheet", "sr": "Лист", "ru": "Лист", "bg": "Лист", "sl": "List"},
     "of_sheets": {"en": "of", "sr": "од", "ru": "из", "bg": "от", "sl": "od"},
     "underlines": {

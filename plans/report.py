@@ -11,6 +11,7 @@ import cmath
 import io
 import json
 import math
+import re
 
 from ._text import math_name
 from .compare import PLAN_QUANTITIES, QUANTITIES, ZERO_FRACTION, Comparison
@@ -477,6 +478,12 @@ def _magnitude(value, step: float | None = None) -> str:
     return reading_number(value, step)
 
 
+def _decimals(text: str) -> int:
+    """How many decimals the first number of *text* is printed with (``0.250 ∠ 12.0°``: 3)."""
+    m = re.match(r"[−-]?\d+(?:\.(\d+))?", text)
+    return len(m.group(1)) if m and m.group(1) and "·" not in text else 0
+
+
 def _finer(value: float, step: float | None) -> bool:
     """Whether *value* to the decimals of a reading of resolution *step* shows more than its 4 significant digits."""
     if step is None or step <= 0 or value == 0 or not math.isfinite(value):
@@ -667,6 +674,8 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
         # (−18854 beside a reading of −18864, not −18850): the error printed is then the error of the two numbers
         a_text = "0" if zero_a else _magnitude(row.analytic, step if _finer(abs(row.analytic), step) else None)
         g_text = "0" if zero_g else _magnitude(row.graphical, step)
+        if not zero_a and 1e-3 <= abs(row.analytic) < 1e6:  # the analytic value to at least the graphical one's decimals, its trailing zeros kept (0.250 beside 0.250, not 0.25)
+            a_text = _magnitude(row.analytic, 10.0 ** -max(_decimals(g_text), _decimals(a_text)))
         # a relative error is not defined for a zero quantity, nor for a given one (the driver's ω, v_A: drawn from
         # the data, not read); an error of round-off size is none
         if zero_a or given(graphical, row):

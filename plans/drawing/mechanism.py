@@ -981,8 +981,9 @@ class MechanismDrawing:
                 best = (d, side)
         side = best[1]
         labels = []
+        # both given absolute vectors of the driver's point, solid as the plans' legend draws an absolute vector
         for k, (symbol, value, dashes, gid) in enumerate(
-            (("v", driver.velocity, None, "velocity"), ("a", driver.acceleration, (3.0, 1.5), "acceleration"))
+            (("v", driver.velocity, None, "velocity"), ("a", driver.acceleration, None, "acceleration"))
         ):
             if not value:
                 continue

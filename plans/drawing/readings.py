@@ -9,9 +9,9 @@ import math
 
 from ..i18n import term
 from .._text import decimal_comma, math_name
-from .plan_drawing import aliases, end_letters, segment, vectors_drawn
+from .plan_drawing import aliases, end_letters, image_text, pole_text, segment, vectors_drawn
 
-__all__ = ["plan_readings", "link_length", "printed_length"]
+__all__ = ["plan_readings", "link_length", "printed_length", "similar_images", "similarity_lines"]
 
 
 _UNIT = {"velocity": "m/s", "acceleration": "m/s²"}
@@ -141,3 +141,89 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
     if len(rows) == 1:
         return []
     return [[decimal_comma(cell, lang) for cell in r] for r in rows]
+
+
+# --- images placed by similarity ----------------------------------------------------------------------------------
+
+
+def similar_images(plan) -> list[tuple[str, str, str]]:
+    """The images of *plan* placed by the similarity theorem: ``(y, z, x)`` image labels, *x* placed from the known
+    images *y*, *z* of the same link (the figure yzx similar to the link's YZX, lettered in the same sense).
+
+    Read from the plan's construction: the images at rest (the pole) and each step's image are constructed; a link
+    with two images known has the rest of its images by similarity (*y* the one at the pole when there is one); a
+    link that translates has every image at one place (no proportion).  In the order they are placed.
+    """
+    known = {label for label, z in plan.images.items() if z == 0}
+    out = []
+
+    def spread() -> None:
+        changed = True
+        while changed:
+            changed = False
+            for labels in plan.links.values():
+                have = [label for label in labels if label in known]
+                rest = [label for label in labels if label not in known and label in plan.images]
+                if not have or not rest:
+                    continue
+                zs = [plan.images[label] for label in labels if label in plan.images]
+                if max(abs(z - zs[0]) for z in zs) <= 1e-9 * max(1.0, max(abs(z) for z in zs)):
+                    known.update(rest)  # a link that translates: its images at one place
+                    changed = True
+                elif len(have) >= 2:
+                    y, z = sorted(have[:2], key=lambda label: plan.images[label] != 0)
+                    for x in rest:
+                        out.append((y, z, x))
+                        known.add(x)
+                    changed = True
+
+    for step in plan.steps:
+        known.add(step.image)
+        spread()
+    return out
+
+
+def similarity_lines(graphical, kind: str) -> list[str]:
+    """The proportions by which the images of the plan of *kind* (``"velocity"``, ``"acceleration"``) were placed
+    by similarity (:func:`similar_images`), with their numbers: the plan's segments [mm on the plan] in proportion
+    to the link's lengths [mm]:
+
+    - three points on a line: ``pd / pa₄ = CD / CA:  pd = 45.0 · 550.0 / 327.0 = 75.7 mm``;
+    - a triangle (yzx similar to YZX): its two sides, ``am / ab = AM / AB:  am = …;  bm / ba = BM / BA:  bm = …``.
+    """
+    plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
+    if plan is None:
+        return []
+    points = getattr(plan, "points", None) or {}
+
+    def letter(label: str) -> str:
+        return pole_text(plan) if plan.images[label] == 0 and label not in {s.image for s in plan.steps} else image_text(label, points)
+
+    def seg(a: str, b: str) -> str:
+        first, second = letter(a), letter(b)
+        return first + second if (first + second).isascii() and len(first) == len(second) == 1 else f"{first} {second}"
+
+    def name(label: str) -> str:
+        return points[label][0] if label in points else label.rstrip("′").upper()
+
+    def on_plan(a: str, b: str) -> float:
+        return abs(plan.images[a] - plan.images[b])
+
+    def real(a: str, b: str) -> float:  # [mm]
+        return abs(graphical.positions[name(a)] - graphical.positions[name(b)]) * 1e3
+
+    lines = []
+    for y, z, x in similar_images(plan):
+        Y, Z, X = name(y), name(z), name(x)
+        if any(n not in graphical.positions for n in (Y, Z, X)) or real(y, z) == 0:
+            continue
+        zy, zx = graphical.positions[Y] - graphical.positions[Z], graphical.positions[X] - graphical.positions[Z]
+        line_up = abs((zy.conjugate() * zx).imag) <= 1e-9 * max(abs(zy) * abs(zx), 1e-30)
+        if line_up:  # yx / yz = YX / YZ
+            lines.append(f"{seg(y, x)} / {seg(y, z)} = {Y}{X} / {Y}{Z}:  {seg(y, x)} = {on_plan(y, z):.1f} · {real(y, x):.1f} / "
+                         f"{real(y, z):.1f} = {on_plan(y, z) * real(y, x) / real(y, z):.1f} mm")
+        else:  # the triangle yzx similar to YZX: its two other sides from yz, each in the same proportion
+            lines.append(";  ".join(
+                f"{seg(a, x)} / {seg(a, b)} = {A}{X} / {A}{B}:  {seg(a, x)} = {on_plan(a, b):.1f} · {real(a, x):.1f} / {real(a, b):.1f} = "
+                f"{on_plan(a, b) * real(a, x) / real(a, b):.1f} mm" for a, b, A, B in ((y, z, Y, Z), (z, y, Z, Y))))
+    return lines

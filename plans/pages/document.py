@@ -415,13 +415,18 @@ class Document:
             sheet = f"{text(term('sheet', lang))} {self.sheet_number[0]} {text(term('of_sheets', lang))} {self.sheet_number[1]}"
         else:
             sheet = f"{text(term('sheet', lang))} #context counter(page).get().first() {text(term('of_sheets', lang))} #context counter(page).final().first()"
+        def field(key: str) -> str:  # a title block's field to fill in by hand: its name
+            return f"#text(size: 8pt)[{text(term(key, lang))}:]"
+
         named = fitted_line('[#text(weight: "bold")[#context plate-name.get()] — ' + text(self.scene.title_in(lang)) + "]", 10.0, 6.0)
         title_block = (
-            f"table(columns: (1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
-            f" table.cell(colspan: 2)[{named}],"
+            f"table(columns: (1fr, 1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
+            f" table.cell(colspan: 3)[{named}],"
             f" [#text(size: 9pt)[{sheet}]],"
-            f" table.cell(colspan: 3)[#text(size: 8.5pt)[{text(term('scale_factors', lang))}: {scale_text}]],"
-            f" [#text(size: 8pt)[{text(term('drawn_by', lang))}:]], [#text(size: 8pt)[{text(term('checked_by', lang))}:]], [#text(size: 8pt)[{text(term('date', lang))}:]])"
+            f" table.cell(colspan: 4)[#text(size: 8.5pt)[{text(term('scale_factors', lang))}: {scale_text}]],"
+            # the student's fields, as a course plate has them: the institution and group, who drew it (and index number)
+            f" table.cell(colspan: 3)[{field('institution')}], [{field('student_group')}],"
+            f" [{field('drawn_by')}], [{field('index_number')}], [{field('checked_by')}], [{field('date')}])"
         )
         g = self.page
         inner_w = g.size[0] - g.frame[0] - g.frame[1]

@@ -39,7 +39,7 @@ from .typesetting import compile_document, image, query_value
 from .words import assembly_lines, formula_words, namer, scene_data_lines
 
 __all__ = ["Sheet", "PAPERS", "sheet_page", "build_sheet", "fitted_sheet", "sheet_at", "position_sheets", "position_heading", "positions_page",
-           "write_drawings", "write_position_sheets", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION", "in_reading_order"]
+           "write_drawings", "write_position_sheets", "similarity_markup", "TEXT_COLUMN", "TITLE_BLOCK_ROOM", "CAPTION", "in_reading_order"]
 
 #: the ISO sheets a sheet may take, smallest first, landscape [mm]
 PAPERS = (("A3", (420.0, 297.0)), ("A2", (594.0, 420.0)), ("A1", (841.0, 594.0)), ("A0", (1189.0, 841.0)))
@@ -285,7 +285,9 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
         if heading:
             doc.heading(heading, level=2)
         # the given data (the driver's ω, ε or v, a; the link lengths; the fixed points), as the handout states them
-        for line in scene_data_lines(doc.scene, lang):
+        for n, line in enumerate(scene_data_lines(doc.scene, lang)):
+            if n == 0 and not heading:  # the driver's position at the sheet's instant (a crank's φ, a sliding driver's s), where no heading states it
+                line += ",  " + _driver_position(doc.scene)
             doc.line(_capitalised(line), size=SMALL_PT + 0.5)
         if formula:
             doc.line(f"{term('structural_formula', lang)}:  {formula_words(formula)}", size=TEXT_PT)
@@ -302,15 +304,32 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
         # under the plans' legend, what the notes under a plan are (short segments, near-coincident directions)
         legend_cell = (f"align(right)[#{doc.add_image('legend', legend)}]" + f" + block(width: 100%)[#text(size: {SMALL_PT - 0.5}pt)["
                        f"{doc.words(term('plan_notes_legend', lang))}]]") if legend is not None else "[]"
+        # the proportions of the images placed by similarity, beside the table under the legend
+        similar = similarity_markup(doc, [("", graphical)])
+        if similar:
+            legend_cell += f" + block(above: 3mm)[{similar}]"
         doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {results}, {legend_cell})]\n")
         return doc.body
     finally:
         doc.body = body
 
 
+def similarity_markup(doc: Document, solutions) -> str:
+    """The proportions by which the plans of *solutions* (``(words, GraphicalSolution)``: the words before its lines,
+    a handout's position, or "") place images by similarity (:func:`plans.drawing.readings.similarity_lines`) under
+    their heading, as Typst markup ("" when there are none)."""
+    from ..drawing.readings import similarity_lines
+
+    lines = [where + line for where, g in solutions for kind in ("velocity", "acceleration") for line in similarity_lines(g, kind)]
+    if not lines:
+        return ""
+    return (f"#block(breakable: false)[#text(size: {SMALL_PT}pt)[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)"
+            f"[{doc.words(term('similar_images', doc.lang))}] \\\n" + " \\\n".join(doc.words(line) for line in lines) + "]]\n")
+
+
 def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "en", table=None, formula: str = "",
                 assembly=(), legend=None, heading: str = "", paper: str = "A3", number: tuple[int, int] | None = None) -> Sheet:
-    """The sheet of *graphical* (drawn already: *blocks* kind -> SvgBlock at its factor) with its drawings centred
+    """The sheet of *graphical* (drawn already: *blocks* kind -> SvgBlock at its factor) with its drawings at the top left
     in *regions* (kind -> (x, y, w, h) [mm] in the drawings' room), the text column beside them.
 
     *table*: the results table (rows of text, the header first, in *lang*); *formula*: the structural formula;
@@ -327,12 +346,14 @@ def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "e
     names = {"mechanism": term("mechanism", lang), "velocity": term("velocity_plan", lang), "acceleration": term("acceleration_plan", lang)}
     for kind, block in blocks.items():
         x, y, w, h = regions[kind]
-        bx = x + (w - block.width) / 2
-        by = y + CAPTION + max(h - CAPTION - block.height, 0.0) / 2
+        # every drawing in the top-left corner of its region (the plate's one arrangement: the scheme at the sheet's
+        # top left whatever its shape, the plans beside and under it), its name and scale centred over it
+        bx, by = x, y + CAPTION
+        cw = min(max(block.width, 70.0), w)  # (a narrow drawing's caption wider than it, from the region's left)
         key = SCALE_OF[kind]
         caption = (f"#text(size: {TEXT_PT + 0.5}pt, weight: \"bold\")[{doc.words(names[kind])}] \\\n"
                    f"{doc.scale_markup(key, graphical.scales[key])}")
-        doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {by - CAPTION:.3f}mm, block(width: {w:.3f}mm, height: {CAPTION}mm)[#align(center)[{caption}]])")
+        doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {by - CAPTION:.3f}mm, block(width: {cw:.3f}mm, height: {CAPTION}mm)[#align(center)[{caption}]])")
         doc.add_image(kind, block)
         doc.body.append(f"#place(top + left, dx: {bx:.3f}mm, dy: {by:.3f}mm, {image(kind, block.width)})")
         placed[kind] = (page.margins[0] + bx, page.margins[2] + by, block.width, block.height)
@@ -650,6 +671,19 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
                             number=(i + 2, total), **_text_parts(r.scene, g, r.analytic, lang))
         sheets.append((h, sheet))
     return sheets, scales
+
+
+def _driver_position(scene) -> str:
+    """The driver's position the sheet is drawn at: ``φ₂ = 30.0°`` (a crank, from the x axis, counter-clockwise) or
+    ``s = 20.0 mm`` (a sliding driver: along its guide from the guide's origin, the symbol of its stroke ``s ∈ […]``)."""
+    from .._text import subscript
+    from ..scene import Crank
+
+    driver = scene.driver
+    if isinstance(driver, Crank):
+        degrees = round(math.degrees(driver.phi) % 360.0, 1) % 360.0
+        return f"φ{subscript(driver.link)} = {degrees:.1f}°"
+    return f"s = {driver.s * 1e3:.1f} mm".replace("-", "\u2212")
 
 
 def _capitalised(line: str) -> str:
