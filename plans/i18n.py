@@ -1330,7 +1330,7 @@ TERMS.update({
     },
     "mass_centre": {"en": "centre of mass S", "sr": "тежиште S", "ru": "центр масс S", "bg": "масов център S", "sl": "težišče S"},
     # the offset of a slider-crank's guide from the crank's pivot (Russian, Bulgarian: дезаксиал e)
-    "offset_e": {"en": "offset", "sr": "ексцентрицитет", "ru": "дезаксиал", "bg": "дезаксиал", "sl": "izmik"},
+    "offset_e": {"en": "offset", "sr": "ексцентрицитет", "ru": "дезаксаж", "bg": "дезаксаж", "sl": "izmik"},
     "gravity_g": {
         "en": "gravity",
         "sr": "убрзање Земљине теже",

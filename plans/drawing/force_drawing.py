@@ -30,6 +30,7 @@ from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
 from .numerals import localised, scale_caption
 from .style import CAPTION_PT, CONSTRUCTION_STYLE, FIGURE_STYLE, FORCE_STYLE, HEADING_PT, INK, LABEL_PT, SMALL_PT
+from ..forces.notation import course_label
 from ..i18n import term
 
 __all__ = [
@@ -95,24 +96,6 @@ def _escape(text: str) -> str:
     for c in "$_%#&^~":
         text = text.replace(c, "\\" + c)
     return text
-
-
-#: the subscripts a course writes for the program's symbols, by language: the balancing moment and force (M_b,
-#: F_b and the lever's arm h_b: Russian M_ур, F_ур, уравновешивающий; Bulgarian уравновесяващ) and the useful
-#: resistance F_r (F_пс: сила полезного сопротивления / сила на полезното съпротивление).  Serbian, Slovenian
-#: and English keep b and r.
-COURSE_SUBSCRIPTS = {"ru": {"b": "ур", "r": "пс"}, "bg": {"b": "ур", "r": "пс"}}
-#: the program's symbols whose subscript is the course's (symbol -> the subscript key of COURSE_SUBSCRIPTS)
-_COURSE_SYMBOLS = {"M_b": "b", "F_b": "b", "h_b": "b", "F_r": "r"}
-
-
-def course_label(label: str, lang: str = "en") -> str:
-    """A force's label with the subscript the course in *lang* writes: ``"M_b"`` → ``"M_ур"`` in Russian and
-    Bulgarian (``"F_b"``, ``"h_b"`` likewise; the resistance ``"F_r"`` → ``"F_пс"``); any other label as it is."""
-    key = _COURSE_SYMBOLS.get(label)
-    if key is None or lang not in COURSE_SUBSCRIPTS:
-        return label
-    return f"{label.partition('_')[0]}_{COURSE_SUBSCRIPTS[lang][key]}"
 
 
 def force_math(label: str, lang: str = "en") -> str:

@@ -175,9 +175,9 @@ def _extent(plan) -> tuple[float, float]:
     return (max(xs) - min(xs)) * plan.scale, (max(ys) - min(ys)) * plan.scale
 
 
-def _cells(plans, width: float, columns: int) -> tuple[int, float, list[float]]:
-    """(columns, the cell's width [mm], the height of the readings under each row [mm]) of the force plans' page
-    with *columns* plans across."""
+def _cells(plans, width: float, columns: int, equations: dict | None = None) -> tuple[int, float, list[float]]:
+    """(columns, the cell's width [mm], the height of the words of each row [mm]: its equations above each plan,
+    *equations*: group -> its lines, and the readings under it) of the force plans' page with *columns* plans across."""
     n = len(plans)
     columns = min(columns, n)
     cell = (width - (columns - 1) * GUTTER) / columns
@@ -186,9 +186,19 @@ def _cells(plans, width: float, columns: int) -> tuple[int, float, list[float]]:
     texts = []
     for r in range(0, n, columns):
         row = plans[r:r + columns]
-        texts.append(max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)) + 1 for p in row)
-                     * READING_LINE + 4.0)
+        texts.append(max((sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)) + 1)
+                         * READING_LINE + _equations_height((equations or {}).get(p.group, ())) for p in row) + 4.0)
     return columns, cell, texts
+
+
+def _equations_height(lines) -> float:
+    """The height [mm] a plan's equations take above it (nothing without them)."""
+    return EQUATION_LINE * len(lines) + 2.0 if lines else 0.0
+
+
+def _equations_fit(equations: dict | None, cell: float) -> bool:
+    """Whether every equation line fits a cell *cell* mm wide (8 pt math: ~1.6 mm a character, a line never breaks)."""
+    return all(_visible(re.sub(r"#?\w+\(|\b(?:dot|quad|abs)\b", "", line)) * 1.6 <= cell for lines in (equations or {}).values() for line in lines)
 
 
 def _visible(line: str) -> int:
@@ -197,9 +207,10 @@ def _visible(line: str) -> int:
     return len(re.sub(r"\\mathrm|[${}_^\\]", "", line))
 
 
-def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], room: float = PLAN_ROOM):
+def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], room: float = PLAN_ROOM, equations: dict | None = None):
     """(μ_F [N/mm], the plans constructed at it, their SVG blocks, columns): the smallest round μ_F with which every
-    force plan fits its cell's width and the rows of plans with their readings fit *room* [mm] down the page.
+    force plan fits its cell's width and the rows of plans with their readings (and *equations* above them: group ->
+    its lines) fit *room* [mm] down the page.
 
     Found from geometry: the plans are constructed once at their own scales and drawn once (what does not
     scale — labels, margins — is what a drawing takes beyond its polygon), the sizes at any μ_F follow; then
@@ -216,7 +227,7 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
         sizes.append((block.width - ex / plan.scale, block.height - ey / plan.scale, ex, ey))
 
     def fits(mu: float, drawn=None, columns: int = 2) -> bool:
-        columns, cell, texts = _cells(first.plans, width, columns)
+        columns, cell, texts = _cells(first.plans, width, columns, equations)
         wide = [fw + ex / mu for fw, _, ex, _ in sizes] if drawn is None else [b.width for b in drawn]
         tall = [fh + ey / mu for _, fh, _, ey in sizes] if drawn is None else [b.height for b in drawn]
         rows = [max(tall[k:k + columns]) for k in range(0, len(tall), columns)]
@@ -225,6 +236,8 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
     best = None
     for columns in (1, 2):  # one plan under the other, or two across: whichever draws them larger
         cell = _cells(first.plans, width, columns)[1]
+        if columns > 1 and not _equations_fit(equations, cell):
+            continue  # the equations above each plan need the page's width
         mu = round_up(max(ex / max(cell - fw, 0.3 * cell) for fw, _, ex, _ in sizes) or max(p.scale for p in first.plans))
         for _ in range(60):  # the round values upwards (no drawing: the sizes above)
             if fits(mu, columns=columns):
@@ -307,9 +320,13 @@ def _step(plan) -> float | None:
     return plan.precision * plan.scale if plan.precision else None
 
 
-def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en") -> list[str]:
+def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en", equations=None) -> list[str]:
     """The lines under a force plan: reactions carried from a plan before, the components Rᵗ found first, the
-    reactions read off it (drawn mm × μ_F), the vectors too short for an arrow, M_b on the driver's."""
+    reactions read off it (drawn mm × μ_F), the vectors too short for an arrow, M_b on the driver's.
+
+    An Rᵗ is written with the value its moment equation gives (*equations*: the plan's
+    :class:`plans.forces.plan_equations.PlanEquations`, the value the page's equation states), to 4 significant
+    figures, and its length at μ_F: one value, one rounding, on the plan's lines and in its equation."""
     from ..drawing.force_drawing import SHORT_MM, sense_arrow
 
     vectors = [v for v in plan.vectors if v.length > 1e-9]
@@ -323,8 +340,10 @@ def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en") -> list[s
                          f"({term('carried', lang)})")
     tangential = [v for v in vectors if v.kind == "tangential"]
     if tangential:
+        stated = {m.label: m.value for m in equations.moments} if equations is not None else {}
+        found = [(v, stated.get(v.label, v.value)) for v in tangential]
         lines.append(f"{term('found_first', lang)}: " + ";  ".join(
-            f"{_math(v.label, lang)} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm" for v in tangential))
+            f"{_math(v.label, lang)} = {_number(value)} N → {_reading(value / plan.scale, plan.precision)} mm" for v, value in found))
     for v in vectors:
         if v.label in plan.found:
             lines.append(f"{_math(v.label, lang)} = {_reading(v.length, plan.precision)} mm · {mu} N/mm = {_reading(v.value, _step(plan))} N")
@@ -662,13 +681,14 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     from ..forces.plan_equations import plan_equations
 
     lang = doc.lang
-    # the plans' equations under them on their page when that costs the plans at most one round step of μ_F;
-    # else the plans keep their room and the equations go over to the next page
+    # each plan's equations above it (the order a student works in), all on the plans' page when that costs the
+    # plans at most EQUATION_COST in μ_F; else the plans keep the scale they fit a page at alone, and each plan with
+    # its equations goes on as a whole (over the page where the rest of it does not hold it)
     room = doc.page.text_height - 33.0
     alone = force_scale(graphical, lang, doc.page.text_width, room)
-    equations = sum(EQUATION_LINE * (len(_equation_lines(e, lang)) + 1) + 2.0 for e in plan_equations(alone[1])) + 3.0
-    together = force_scale(graphical, lang, doc.page.text_width, room - equations) if equations < room / 2 else None
-    mu, plans, blocks, columns = together if together is not None and together[0] <= EQUATION_COST * alone[0] else alone
+    equation_lines = {e.group: _equation_lines(e, lang) for e in plan_equations(alone[1])}
+    together = force_scale(graphical, lang, doc.page.text_width, room, equation_lines)
+    mu, plans, blocks, columns = together if together[0] <= EQUATION_COST * alone[0] else alone
     names = group_names(plans.plans, lang)
     loads = _loads_table(plans, lang)
     data_heading, data, data_lines = _data_rows(graphical.scene, lang)
@@ -714,23 +734,18 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         image_key = f"{key}-plan-{len(items) + 1}" if plan.group != "driver" else f"{key}-plan-driver"
         pages.images[image_key] = f"plan:{plan.group}"
         moment = plans.balancing_moment if plan.group == "driver" else None
-        lines = _plan_lines(plan, given, moment, lang)
+        lines = _plan_lines(plan, given, moment, lang, written[plan.group])
         parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]"]
+        equations = _equation_lines(written[plan.group], lang)
+        if equations:  # the vector and moment equations the plan is drawn from, before it
+            rows = ", ".join(f"[{line}]" for line in equations)
+            parts.append(f"#text(size: {SMALL_PT}pt)[#table(columns: 1, stroke: none, inset: (x: 0mm, y: 0.9mm), row-gutter: 1.2mm, {rows})]")
         parts.append(f"#align(center)[#{doc.add_image(image_key, block)}]")
         parts += [f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}]" for line in lines]
         items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]")
     doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
     kinds, closing = legend_kinds(plans.plans)
     doc.body.append("#v(2mm)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
-    # the equations each plan is drawn from, across the page under the plans and their legend (on the next page
-    # when they do not fit: the plans keep the room μ_F was chosen for); each plan's whole
-    doc.body.append("#v(3mm)\n")
-    for plan in plans.plans:
-        lines = _equation_lines(written[plan.group], lang)
-        if lines:
-            rows = [f"[#text(weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]]"] + [f"[{line}]" for line in lines]
-            doc.body.append(f"#block(breakable: false, below: 1.5mm)[#text(size: {SMALL_PT}pt)[#table(columns: 1, stroke: none, "
-                            f"inset: (x: 0mm, y: 0.9mm), row-gutter: 1.2mm, {', '.join(rows)})]]\n")
 
     # 3. Joukowski's lever and the three methods
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
