@@ -116,7 +116,7 @@ def forces_json(run: KinetostaticRun) -> dict:
                                     "abs_error": _num(row.abs_error), "rel_error": _num(row.rel_error)}
         doc["reactions"][label] = entry
     for method in ("force_plans", "lever"):
-        row = rows.get((key, method))
+        row = rows.get((symbol, method))
         if row is not None:
             doc["balancing"][method] = {"value": _num(row.value.real), "abs_error": _num(row.abs_error), "rel_error": _num(row.rel_error)}
     lever = run.lever
