@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["COURSE_SUBSCRIPTS", "course_label"]
+__all__ = ["COURSE_SUBSCRIPTS", "course_label", "plain_centres", "centre_text"]
 
 #: the subscripts a course writes for the program's symbols, by language (b: balancing, r: useful resistance)
 COURSE_SUBSCRIPTS = {"ru": {"b": "ур", "r": "пс"}, "bg": {"b": "ур", "r": "пс"}}
@@ -45,4 +45,24 @@ def course_label(label: str, lang: str = "en") -> str:
     if key is None or lang not in COURSE_SUBSCRIPTS:
         return label
     return f"{label.partition('_')[0]}_{COURSE_SUBSCRIPTS[lang][key]}"
+
+
+
+def plain_centres(scene) -> bool:
+    """Whether the scene names a centre of mass itself in the plain form S and its link's number (``S3`` on link 3,
+    the number on the line): its pages print that name as written (the kinematic pages do), and so every centre
+    the program names on them (S2, its image s2), one spelling on every page; else the course's S₂, s₂."""
+    for mass in scene.masses.values():
+        point = mass.point
+        if point and point[:1] in "Ss" and point[1:] == mass.body and len(scene.bodies_with(point)) == 1:
+            return True
+    return False
+
+
+def centre_text(scene, body: str) -> str:
+    """The name of link *body*'s centre of mass on a page: ``"S₃"``, or ``"S3"`` where the scene writes its centres so
+    (:func:`plain_centres`)."""
+    from .._text import subscript
+
+    return f"S{body}" if plain_centres(scene) else f"S{subscript(body)}"
 

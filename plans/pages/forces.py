@@ -468,10 +468,10 @@ def _centre_words(scene, mass, lang: str) -> str:
     """Where the centre of mass S of a body lies, as a course's data state it: at a joint (``S₄ ≡ B``), or its distance
     from the body's first point along the line to the next (``l_OS₂ = 40 mm``), with the angle from that line when
     off it."""
-    from .._text import subscript
+    from ..forces.notation import centre_text
 
     body = scene.bodies[mass.body]
-    s = f"S{subscript(mass.body)}"
+    s = centre_text(scene, mass.body)
     if mass.point is not None and len(scene.bodies_with(mass.point)) > 1:  # at a joint (a block's pin)
         return f"{s} ≡ {mass.point}"
     at = {n: z for n, z in body.points.items() if n != mass.point}
@@ -787,7 +787,7 @@ def _lever_kinds(lever) -> list[str]:
 def _lever_rows(lever, lang: str) -> list[list[str]]:
     """The moments about the pole: force, its image, |F| [N], arm h [mm], F·h [N·mm], and for a couple's pair how it was found."""
     from ..drawing.force_drawing import lever_names
-    from ..drawing.plan_drawing import image_text
+    from ..drawing.force_drawing import lever_image_text
 
     names = lever_names(lever)
     moments = {(load.name, load.body): float(load.moment) for load in lever.loads if load.is_couple}
@@ -808,8 +808,8 @@ def _lever_rows(lever, lang: str) -> list[list[str]]:
             length = abs(couple) / abs(f.force)
             note = f"= {_math(f.name, lang)}/$l_{{\\mathrm{{{ends}}}}}$ = {_number(abs(couple))} N·m / {length:.4g} m"
             if f is pair[0]:
-                note += f"; {term('lever_pair', lang).format(points=', '.join(image_text(q.image) for q in pair))}"
-        rows.append([_math(names[id(f)], lang), image_text(f.image), _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
+                note += f"; {term('lever_pair', lang).format(points=', '.join(lever_image_text(q.image, lever.scene) for q in pair))}"
+        rows.append([_math(names[id(f)], lang), lever_image_text(f.image, lever.scene), _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
     return rows
 
 
