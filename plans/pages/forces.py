@@ -510,9 +510,11 @@ def _offset(scene) -> float | None:
     return e if e > 1e-9 else None
 
 
-def _data_rows(scene, lang: str) -> tuple[str, list[list[str]], list[str]]:
+def _data_rows(scene, lang: str, loads=()) -> tuple[str, list[list[str]], list[str]]:
     """The input data of the force analysis: (heading with the offset e of an offset slider-crank, the table of the
-    links' masses — link, m [kg], centre of mass S, J_S [kg·m²] — and the lines of gravity and the external loads)."""
+    links' masses — link, m [kg], centre of mass S, J_S [kg·m²] — and the lines of gravity and the external loads:
+    each its magnitude, point and link, and its direction: a resistance against a point's velocity with the angle
+    that gives at the position, from *loads*, the plans' applied forces)."""
     kg = "kg"
     heading = term("force_data", lang)
     e = _offset(scene)
@@ -535,6 +537,9 @@ def _data_rows(scene, lang: str) -> tuple[str, list[list[str]], list[str]]:
         at = term("load_at", lang).format(point=where, link=load.body)
         if load.kind == "resistance":
             line = f"{name} = {_number(load.magnitude)} N, {at}, {term('against_velocity', lang).format(point=where)}"
+            acting = next((f for f in loads if f.label == load.name and abs(f.force) > 0), None)
+            if acting is not None:
+                line += f" (∠ {math.degrees(math.atan2(acting.force.imag, acting.force.real)) % 360:.1f}°)"
         else:
             f = complex(load.force)
             line = f"{name} = {_number(abs(f))} N ∠ {math.degrees(math.atan2(f.imag, f.real)) % 360:.1f}°, {at}"
@@ -691,7 +696,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     mu, plans, blocks, columns = together if together[0] <= EQUATION_COST * alone[0] else alone
     names = group_names(plans.plans, lang)
     loads = _loads_table(plans, lang)
-    data_heading, data, data_lines = _data_rows(graphical.scene, lang)
+    data_heading, data, data_lines = _data_rows(graphical.scene, lang, plans.loads)
     # what the free bodies' page sets beside them: heading (and the position), k_l, legend, the input data and the
     # loads' table side by side
     tables = max(4.2 * len(loads) + 6.0, 4.2 * len(data) + 6.0 + 4.6 * len(data_lines))
@@ -715,7 +720,10 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     _scale_note(doc, mu_words)
     doc.figure(f"{key}-free-bodies", free)
     pages.images[f"{key}-free-bodies"] = "free-bodies"
-    doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}", lang), size=SMALL_PT)
+    coarser = ""
+    if plate_kl is not None and abs(k_l - plate_kl) > 1e-12 * plate_kl:  # none of the arrangements fits at the plate's k_l
+        coarser = ";  " + term("free_bodies_coarser", lang).format(scale=f"$k_{{l}}$ = {_scale(plate_kl)} m/mm")
+    doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}{coarser}", lang), size=SMALL_PT)
     doc.body.append(_legend(doc, f"{key}-bodies-legend", _body_kinds(plans), lang))
     given_data = _table(doc, data, "(left, right, left, right)", data_heading) + "".join(
         f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines)
