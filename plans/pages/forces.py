@@ -183,11 +183,14 @@ def _cells(plans, width: float, columns: int, equations: dict | None = None) -> 
     cell = (width - (columns - 1) * GUTTER) / columns
     # a line of readings runs over into a second where it is longer than the cell is wide (8 pt: ~1.45 mm a character)
     per_line = max(20, int(cell / 1.45))
+    across = columns > 1 and not _equations_fit(equations, cell)  # the equations then go across the page above the row
     texts = []
     for r in range(0, n, columns):
         row = plans[r:r + columns]
-        texts.append(max((sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)) + 1)
-                         * READING_LINE + _equations_height((equations or {}).get(p.group, ())) for p in row) + 4.0)
+        readings = max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)) + 1 for p in row)
+        written = [_equations_height((equations or {}).get(p.group, ())) for p in row]
+        above = sum(h + READING_LINE for h in written if h) if across else max(written)
+        texts.append(readings * READING_LINE + above + 4.0)
     return columns, cell, texts
 
 
@@ -196,9 +199,20 @@ def _equations_height(lines) -> float:
     return EQUATION_LINE * len(lines) + 2.0 if lines else 0.0
 
 
+def _equation_width(line: str) -> float:
+    """About how wide [mm] a line of the plans' equations (Typst math markup) is set: 8 pt math, ~1.45 mm a
+    character and ~1.2 mm more about each operator (its spaces)."""
+    t = re.sub(r"#box\([^$]*\$underline\(", "", line).replace(")$})", "").replace("underline(", "")
+    t = re.sub(r"\bquad\b", "  ", t)
+    t = re.sub(r"\bdot\b", "·", t)
+    t = re.sub(r"\babs\(", "|", t)
+    t = re.sub(r'[$"(){}_^ ]', "", t)
+    return 1.45 * len(t) + 1.2 * len(re.findall(r"[=+−·⇒:]", t))
+
+
 def _equations_fit(equations: dict | None, cell: float) -> bool:
-    """Whether every equation line fits a cell *cell* mm wide (8 pt math: ~1.6 mm a character, a line never breaks)."""
-    return all(_visible(re.sub(r"#?\w+\(|\b(?:dot|quad|abs)\b", "", line)) * 1.6 <= cell for lines in (equations or {}).values() for line in lines)
+    """Whether every equation line fits a cell *cell* mm wide (a line of math is not broken)."""
+    return all(_equation_width(line) <= cell for lines in (equations or {}).values() for line in lines)
 
 
 def _visible(line: str) -> int:
@@ -207,10 +221,13 @@ def _visible(line: str) -> int:
     return len(re.sub(r"\\mathrm|[${}_^\\]", "", line))
 
 
-def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], room: float = PLAN_ROOM, equations: dict | None = None):
+def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], room: float = PLAN_ROOM, equations: dict | None = None,
+                heights: bool = True):
     """(μ_F [N/mm], the plans constructed at it, their SVG blocks, columns): the smallest round μ_F with which every
     force plan fits its cell's width and the rows of plans with their readings (and *equations* above them: group ->
-    its lines) fit *room* [mm] down the page.
+    its lines; two plans across only where every line of them fits a cell) fit *room* [mm] down the page (with
+    *heights* false, a row of two plans or two rows of one with their words to a page: the plans then run over
+    pages).
 
     Found from geometry: the plans are constructed once at their own scales and drawn once (what does not
     scale — labels, margins — is what a drawing takes beyond its polygon), the sizes at any μ_F follow; then
@@ -231,13 +248,16 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
         wide = [fw + ex / mu for fw, _, ex, _ in sizes] if drawn is None else [b.width for b in drawn]
         tall = [fh + ey / mu for _, fh, _, ey in sizes] if drawn is None else [b.height for b in drawn]
         rows = [max(tall[k:k + columns]) for k in range(0, len(tall), columns)]
-        return max(wide) <= cell + 0.5 and sum(rows) + sum(texts) + 5.0 * (len(rows) - 1) <= room + 0.5 and max(tall) <= PLAN_CELL_MAX + 0.5
+        # with *heights*, all the rows with their words on one page; else a row of two plans to a page, or two rows
+        # of one (a page not left half empty by a plan too tall to have the next under it)
+        per_page = 1 if columns > 1 else 2
+        pairs = [(rows[k:k + per_page], texts[k:k + per_page]) for k in range(0, len(rows), per_page)]
+        down = sum(rows) + sum(texts) + 5.0 * (len(rows) - 1) if heights else max(sum(r) + sum(t) + 5.0 * (len(r) - 1) for r, t in pairs)
+        return max(wide) <= cell + 0.5 and down <= room + 0.5 and max(tall) <= PLAN_CELL_MAX + 0.5
 
     best = None
     for columns in (1, 2):  # one plan under the other, or two across: whichever draws them larger
         cell = _cells(first.plans, width, columns)[1]
-        if columns > 1 and not _equations_fit(equations, cell):
-            continue  # the equations above each plan need the page's width
         mu = round_up(max(ex / max(cell - fw, 0.3 * cell) for fw, _, ex, _ in sizes) or max(p.scale for p in first.plans))
         for _ in range(60):  # the round values upwards (no drawing: the sizes above)
             if fits(mu, columns=columns):
@@ -689,9 +709,11 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     # each plan's equations above it (the order a student works in), all on the plans' page when that costs the
     # plans at most EQUATION_COST in μ_F; else the plans keep the scale they fit a page at alone, and each plan with
     # its equations goes on as a whole (over the page where the rest of it does not hold it)
+    from ..forces.force_plans import construct_force_plans
+
     room = doc.page.text_height - 33.0
-    alone = force_scale(graphical, lang, doc.page.text_width, room)
-    equation_lines = {e.group: _equation_lines(e, lang) for e in plan_equations(alone[1])}
+    equation_lines = {e.group: _equation_lines(e, lang) for e in plan_equations(construct_force_plans(graphical, mu_F=None))}
+    alone = force_scale(graphical, lang, doc.page.text_width, room, equation_lines, heights=False)
     together = force_scale(graphical, lang, doc.page.text_width, room, equation_lines)
     mu, plans, blocks, columns = together if together[0] <= EQUATION_COST * alone[0] else alone
     names = group_names(plans.plans, lang)
@@ -737,21 +759,45 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     _scale_note(doc, mu_words)
     given = given_loads(plans)
     written = {e.group: e for e in plan_equations(plans)}
-    items = []
-    for plan, block in zip(plans.plans, blocks):
-        image_key = f"{key}-plan-{len(items) + 1}" if plan.group != "driver" else f"{key}-plan-driver"
+    # each plan under its equations: in its cell, or (where a line of them is wider than a cell) the equations of a
+    # row's plans across the page above the row
+    cell = (doc.page.text_width - (columns - 1) * GUTTER) / columns
+    lines_of = {plan.group: _equation_lines(written[plan.group], lang) for plan in plans.plans}
+    across = columns > 1 and not _equations_fit(lines_of, cell)
+
+    def equations_markup(plan) -> str:
+        rows = ", ".join(f"[{line}]" for line in lines_of[plan.group])
+        return f"#text(size: {SMALL_PT}pt)[#table(columns: 1, stroke: none, inset: (x: 0mm, y: 0.9mm), row-gutter: 1.2mm, {rows})]"
+
+    def item(k: int, with_equations: bool) -> str:
+        plan, block = plans.plans[k], blocks[k]
+        image_key = f"{key}-plan-{k + 1}" if plan.group != "driver" else f"{key}-plan-driver"
         pages.images[image_key] = f"plan:{plan.group}"
         moment = plans.balancing_moment if plan.group == "driver" else None
         lines = _plan_lines(plan, given, moment, lang, written[plan.group])
         parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]"]
-        equations = _equation_lines(written[plan.group], lang)
-        if equations:  # the vector and moment equations the plan is drawn from, before it
-            rows = ", ".join(f"[{line}]" for line in equations)
-            parts.append(f"#text(size: {SMALL_PT}pt)[#table(columns: 1, stroke: none, inset: (x: 0mm, y: 0.9mm), row-gutter: 1.2mm, {rows})]")
+        if lines_of[plan.group] and with_equations:  # the vector and moment equations the plan is drawn from, before it
+            parts.append(equations_markup(plan))
         parts.append(f"#align(center)[#{doc.add_image(image_key, block)}]")
         parts += [f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}]" for line in lines]
-        items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]")
-    doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
+        return "block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]"
+
+    count = len(plans.plans)
+    if across:
+        for r in range(0, count, columns):
+            row = list(range(r, min(r + columns, count)))
+            if r:
+                _scale_note(doc, mu_words)  # a row that runs over to a page of its own: its title block states μ_F
+            if len(row) == 1:  # a plan alone in its row: the page's width, its equations in its cell
+                doc.body.append(f"#{item(row[0], True)}\n")
+                continue
+            above = " \\\n".join(f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plans.plans[k], names, lang))}] \\\n"
+                                  f"{equations_markup(plans.plans[k])}" for k in row if lines_of[plans.plans[k].group])
+            doc.body.append(f"#block(breakable: false, below: 5mm)[{above}\n#grid(columns: {columns}, column-gutter: {GUTTER}mm, align: top + left,\n  "
+                            + ",\n  ".join(item(k, False) for k in row) + ")]\n")
+    else:
+        doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  "
+                        + ",\n  ".join(item(k, True) for k in range(count)) + ")\n")
     kinds, closing = legend_kinds(plans.plans)
     doc.body.append("#v(2mm)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
 
