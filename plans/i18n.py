@@ -344,6 +344,20 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "стрелките не са в мащаб",
         "sl": "puščice niso v merilu",
     },
+    "guide_origin": {
+        "en": "{q}: the point of the guide from which the slider's travel {s} is measured",
+        "sr": "{q}: тачка вођице од које се мери пут {s} клизача",
+        "ru": "{q} — точка направляющей, от которой отсчитывается перемещение {s} ползуна",
+        "bg": "{q} — точка от водача, от която се отчита преместването {s} на плъзгача",
+        "sl": "{q}: točka vodila, od katere se meri pot {s} drsnika",
+    },
+    "free_bodies_coarser": {
+        "en": "the free bodies do not fit the page at the plate's {scale}",
+        "sr": "слободна тела не стају на страну у размери плана {scale}",
+        "ru": "при масштабе плана {scale} свободные тела не помещаются на странице",
+        "bg": "при мащаба на чертежа {scale} свободните тела не се побират на страницата",
+        "sl": "prosta telesa pri merilu risbe {scale} ne gredo na stran",
+    },
     "force_weight": {"en": "weight G", "sr": "тежина G", "ru": "сила тяжести G", "bg": "сила на тежестта G", "sl": "teža G"},
     "force_inertia": {"en": "inertia force", "sr": "сила инерције", "ru": "сила инерции", "bg": "инерционна сила", "sl": "vztrajnostna sila"},
     "force_external": {"en": "given force", "sr": "задата сила", "ru": "заданная сила", "bg": "зададена сила", "sl": "dana sila"},
@@ -1335,7 +1349,7 @@ TERMS.update({
     },
     "mass_centre": {"en": "centre of mass S", "sr": "тежиште S", "ru": "центр масс S", "bg": "масов център S", "sl": "težišče S"},
     # the offset of a slider-crank's guide from the crank's pivot (Russian, Bulgarian: дезаксиал e)
-    "offset_e": {"en": "offset", "sr": "ексцентрицитет", "ru": "дезаксиал", "bg": "дезаксиал", "sl": "izmik"},
+    "offset_e": {"en": "offset", "sr": "ексцентрицитет", "ru": "дезаксаж", "bg": "дезаксаж", "sl": "izmik"},
     "gravity_g": {
         "en": "gravity",
         "sr": "убрзање Земљине теже",

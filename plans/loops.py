@@ -58,6 +58,9 @@ class LoopBlock:
 
     title: str
     lines: tuple[str, ...]
+    #: the pins whose guide point Q (s = 0 there, :func:`_origin`) the first lines place, one line each (a page
+    #: says in words what that point is: it is not a load)
+    origins: tuple[str, ...] = ()
 
 
 # --- numbers ------------------------------------------------------------------------
@@ -516,6 +519,7 @@ def _group_block(b: _Builder, group, done: set[str]) -> LoopBlock:
     left = _path(b, group, i, group.outer_i, meet_name, meet_local)
     right = _path(b, group, j, group.outer_j, meet_name, meet_local)
     lines = _origin_lines(b, left + right)
+    origins = tuple(t.label[3:-1] for t in left + right if isinstance(t, _Point) and t.label.startswith("Q_{"))
     stages = 3 if scene.accelerations else 2
     for stage in range(stages):
         symbolic = f"{_side(left, stage, False)} = {_side(right, stage, False)}"
@@ -528,7 +532,7 @@ def _group_block(b: _Builder, group, done: set[str]) -> LoopBlock:
         lines += _point_lines(b, link, joints, done)
     for n in group.points:
         done.add(n)
-    return LoopBlock(group.name, tuple(lines))
+    return LoopBlock(group.name, tuple(lines), origins)
 
 
 def loop_equations(analytic, position: int = 0) -> list[LoopBlock]:

@@ -24,12 +24,14 @@ from __future__ import annotations
 
 import cmath
 import math
+import re
 from pathlib import Path
 
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
 from .numerals import localised, scale_caption
 from .style import CAPTION_PT, CONSTRUCTION_STYLE, FIGURE_STYLE, FORCE_STYLE, HEADING_PT, INK, LABEL_PT, SMALL_PT
+from ..forces.notation import centre_text, course_label, plain_centres
 from ..i18n import term
 
 __all__ = [
@@ -44,6 +46,7 @@ __all__ = [
     "force_drawing_files",
     "force_math",
     "course_label",
+    "lever_image_text",
     "draw_lever",
     "draw_lever_into",
     "FORCE_LEGEND",
@@ -95,24 +98,6 @@ def _escape(text: str) -> str:
     for c in "$_%#&^~":
         text = text.replace(c, "\\" + c)
     return text
-
-
-#: the subscripts a course writes for the program's symbols, by language: the balancing moment and force (M_b,
-#: F_b and the lever's arm h_b: Russian M_ур, F_ур, уравновешивающий; Bulgarian уравновесяващ) and the useful
-#: resistance F_r (F_пс: сила полезного сопротивления / сила на полезното съпротивление).  Serbian, Slovenian
-#: and English keep b and r.
-COURSE_SUBSCRIPTS = {"ru": {"b": "ур", "r": "пс"}, "bg": {"b": "ур", "r": "пс"}}
-#: the program's symbols whose subscript is the course's (symbol -> the subscript key of COURSE_SUBSCRIPTS)
-_COURSE_SYMBOLS = {"M_b": "b", "F_b": "b", "h_b": "b", "F_r": "r"}
-
-
-def course_label(label: str, lang: str = "en") -> str:
-    """A force's label with the subscript the course in *lang* writes: ``"M_b"`` → ``"M_ур"`` in Russian and
-    Bulgarian (``"F_b"``, ``"h_b"`` likewise; the resistance ``"F_r"`` → ``"F_пс"``); any other label as it is."""
-    key = _COURSE_SYMBOLS.get(label)
-    if key is None or lang not in COURSE_SUBSCRIPTS:
-        return label
-    return f"{label.partition('_')[0]}_{COURSE_SUBSCRIPTS[lang][key]}"
 
 
 def force_math(label: str, lang: str = "en") -> str:
@@ -527,7 +512,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             labelled.add(n)
             if len(g.scene.bodies_with(n)) > 1:
                 sketch.circle(z, 1.1, fc="white", ec=INK, lw=0.8, gid=f"pin-{n}", zorder=4.5)
-            labels.append((z, [(_centre_name(n, body), f"point-{n}")], dict(size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0), leader_from=4.0)))
+            labels.append((z, [(n, f"point-{n}")], dict(size=LABEL_PT, gaps=(1.2, 2.2, 3.4, 5.0), leader_from=4.0)))
     for body in links:
         centre = forces.centres.get(body)
         if centre is not None:
@@ -535,8 +520,9 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             sketch.circle(c, 1.0, fc="white", ec=INK, lw=0.7, gid=f"centre-{body}", zorder=4.6)
             sketch.polygon([c + 1.0, c + 1.0j, c - 1.0, c - 1.0j], fc=INK, ec=INK, lw=0.1, gid=f"centre-mark-{body}", zorder=4.7, obstacle=False)
             if not any(abs(centre.at - g.positions[n]) <= 1e-9 * (1 + abs(centre.at)) for n in g.scene.bodies[body].points):
-                labels.append((c, [(f"S{_digits(body)}", f"centre-label-{body}")], dict(size=SMALL_PT, gaps=(1.4, 2.4, 3.6), leader_from=4.0)))
+                labels.append((c, [(centre_text(g.scene, body), f"centre-label-{body}")], dict(size=SMALL_PT, gaps=(1.4, 2.4, 3.6), leader_from=4.0)))
     drawn: list = []
+    arrows = []  # [force, tail, tip, into, its point (beside a bar it lies along)] [mm]
     for f in acting:
         size = abs(f.force)
         if size == 0:
@@ -562,6 +548,20 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         else:
             point = point + _beside(drawn, point, u)
             tail, tip = point, point + u * FREE_ARROW_MM
+        arrows.append([f, tail, tip, into, point])
+    # a reaction drawn into its joint across another arrow is drawn from the joint instead (the same force, its tail
+    # at the point it acts at): no arrow crosses another's shaft, head or name
+    for k, arrow in enumerate(arrows):
+        f, tail, tip, into, point = arrow
+        others = [(a[1], a[2]) for j, a in enumerate(arrows) if j != k]
+        if into and _crossings((tail, tip), others):
+            u = f.force / abs(f.force)
+            start = point + _beside(drawn, point, u)
+            out = (start + u * 1.2, start + u * (FREE_ARROW_MM + 1.2))
+            if not _crossings(out, others):
+                arrow[1:4] = [out[0], out[1], False]
+    for f, tail, tip, into, point in arrows:
+        u = f.force / abs(f.force)
         color, lw, dashes, head = FORCE_STYLE[f.kind]
         sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0)
         sketch.obstacles.append(_segment_shape(tail, tip))
@@ -569,6 +569,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         labels.append((end, [(force_math(f.label, lang), f"force-label-{_gid(f.label)}")],
                        dict(size=LABEL_PT, prefer=-u if into else u, gaps=(0.8, 1.8, 3.0, 4.5), mathtext=True, leader_from=4.0,
                             color=color if f.kind != "reaction" else INK)))
+    shafts = [(a[1], a[2]) for a in arrows]
     for c in couples:
         if c.moment == 0:
             continue
@@ -577,16 +578,19 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             where = at(_pivot(g, c.body))
         else:
             where = at(body_centre.at)
-        radius = COUPLE_R_MM
+        radii = (COUPLE_R_MM, COUPLE_R_MM * 0.75, COUPLE_R_MM * 1.4)
         near_block = next((b for b in blocks.values() if abs(b[0] - where) < b[1]), None)
         if near_block is not None:
-            radius = max(radius, abs(where - near_block[0]) + near_block[1] + 1.0)  # round the block, not through it
+            radii = (max(COUPLE_R_MM, abs(where - near_block[0]) + near_block[1] + 1.0),)  # round the block, not through it
         sweep = math.radians(250) * (1 if c.moment > 0 else -1)
         color = FORCE_STYLE["balancing" if c.kind == "balancing" else "inertia" if c.kind == "inertia" else "external"][0]
-        # the arc starts (and its name stands) where it is farthest from the other points of the free body
+        # the arc crosses as few arrows as it can (an arrow from its own centre it must cross), at its usual radius
+        # where that crosses no more; it starts (and its name stands) where it is farthest from the other points
         marks = [z for z, _, _ in labels if abs(z - where) > 1e-6]
-        start = max((math.radians(145 + 45 * k) for k in range(8)),
-                    key=lambda a: (round(min((abs(where + (radius + 3.0) * cmath.exp(1j * a) - z) for z in marks), default=0.0), 1), -abs(a - math.radians(145))))
+        radius, start = max(((r, math.radians(145 + 45 * k)) for r in radii for k in range(8)),
+                            key=lambda ra: (-_arc_crossings(where, ra[0], ra[1], sweep, shafts), ra[0] == radii[0],
+                                            round(min((abs(where + (ra[0] + 3.0) * cmath.exp(1j * ra[1]) - z) for z in marks), default=0.0), 1),
+                                            -abs(ra[1] - math.radians(145))))
         sketch.arc_arrow(where, radius, start, sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
         labels.append((where + radius * cmath.exp(1j * start), [(force_math(c.label, lang), f"couple-label-{_gid(c.label)}")],
                        dict(size=LABEL_PT, prefer=cmath.exp(1j * start), gaps=(0.8, 1.8, 3.0), mathtext=True, leader_from=4.0, color=color)))
@@ -594,12 +598,32 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         place_label(sketch, anchor, pieces, **options)
 
 
-def _centre_name(point: str, body: str) -> str:
-    """A point's label on a free body: as the scene names it, but a centre of mass the scene names S and its link's
-    number (``S3`` on link 3) as the course writes it, S₃ (the number a subscript: it is the link's)."""
-    if point[:1] in "Ss" and point[1:] == body:
-        return point[0] + _digits(body)
-    return point
+def lever_image_text(label: str, scene) -> str:
+    """An image's label on the lever as the pages print it: a centre's image ``"s3"`` as the scene's centres are
+    written (:func:`plans.forces.notation.plain_centres`: s3 beside the scene's S3, else s₃), any other image as
+    the plans print it."""
+    from .plan_drawing import image_text
+
+    if plain_centres(scene) and re.fullmatch(r"s\d+", label.rstrip("′")):
+        return label
+    return image_text(label)
+
+
+def _crossings(segment: tuple[complex, complex], others, clearance: float = 1.2) -> int:
+    """How many of the arrows *others* (tail, tip) [mm] the arrow *segment* comes within *clearance* of (a head's
+    half width and a little: a shaft through a head counts), an arrow from the same point excepted."""
+    a, b = segment
+    line = _segment_shape(a, b).buffer(clearance)
+    return sum(1 for p, q in others if abs(p - a) > 0.5 and line.intersects(_segment_shape(p, q)))
+
+
+def _arc_crossings(centre: complex, radius: float, start: float, sweep: float, arrows) -> int:
+    """How many arrows (tail, tip) [mm] a couple's arc about *centre* from *start* turning *sweep* [rad] meets."""
+    from shapely.geometry import LineString
+
+    zs = [centre + radius * cmath.exp(1j * (start + sweep * k / 24)) for k in range(25)]
+    arc = LineString([(z.real, z.imag) for z in zs]).buffer(0.8)
+    return sum(1 for p, q in arrows if arc.intersects(_segment_shape(p, q)))
 
 
 def _on_segment(z: complex, a: complex, b: complex, tolerance: float = 0.3) -> bool:
@@ -623,12 +647,6 @@ def _pivot(g, body: str) -> complex:
     if body == driver.link and hasattr(driver, "pivot"):
         return g.positions[driver.pivot]
     return g.positions[next(iter(g.scene.bodies[body].points))]
-
-
-def _digits(body: str) -> str:
-    from .._text import subscript
-
-    return subscript(body)
 
 
 def _block(sketch: Sketch, forces, body: str, centre: complex, at, mass_centre: complex | None = None) -> float:
@@ -749,8 +767,6 @@ def draw_lever(lever, ax=None, *, lang: str = "en") -> list:
 
 def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = True) -> None:
     """Draw the lever into *sketch* (see :func:`draw_lever`)."""
-    from .plan_drawing import image_text
-
     edge, lw_figure, fill = FIGURE_STYLE
     images = {k: complex(z) for k, z in lever.images.items()}
     for link, labels in lever.links.items():
@@ -802,10 +818,10 @@ def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = 
     for label, z in images.items():
         for at, pieces in groups:
             if abs(at - z) <= 1e-3:
-                pieces.append((image_text(label), f"image-{label}"))
+                pieces.append((lever_image_text(label, lever.scene), f"image-{label}"))
                 break
         else:
-            groups.append((z, [(image_text(label), f"image-{label}")]))
+            groups.append((z, [(lever_image_text(label, lever.scene), f"image-{label}")]))
     for at, pieces in groups:
         rivals = tuple(q for q, _ in groups if q != at)
         place_label(sketch, at, pieces, size=LABEL_PT, gaps=GAPS, leader_from=4.0, rivals=rivals)

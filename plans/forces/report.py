@@ -13,6 +13,7 @@ import math
 from ..i18n import term
 from ..scene import FRAME, Crank
 from .compare import KinetostaticRun
+from .notation import course_label
 
 __all__ = ["FORCES_SCHEMA", "forces_json", "forces_table", "LOAD_TERMS", "method_name", "course_formula", "COURSE_KINDS"]
 
@@ -205,9 +206,9 @@ def forces_table(run: KinetostaticRun, lang: str = "en") -> str:
         r = complex(_first(load.r))
         kind = term(LOAD_TERMS[load.kind], lang)
         if load.is_couple:
-            w(f"{load.name:8} {load.body:6} {kind[:24]:24} {'':11} {'':11} {'':13} {'':13} {'':13} {'':9} {float(_first(load.moment)) + 0.0:13.6g}\n")
+            w(f"{course_label(load.name, lang):8} {load.body:6} {kind[:24]:24} {'':11} {'':11} {'':13} {'':13} {'':13} {'':9} {float(_first(load.moment)) + 0.0:13.6g}\n")
         else:
-            w(f"{load.name:8} {load.body:6} {kind[:24]:24} {r.real:11.5g} {r.imag:11.5g} {_cells(_first(load.force))}\n")
+            w(f"{course_label(load.name, lang):8} {load.body:6} {kind[:24]:24} {r.real:11.5g} {r.imag:11.5g} {_cells(_first(load.force))}\n")
 
     w(f"\n{term('reactions', lang)} [N]; {term('reaction_convention', lang).format(frame=scene.frame_number)}\n")
     w(f"{'':8} {'':6} {'':20} {'Rx':>13} {'Ry':>13} {'|R|':>13} {'∠ [°]':>9} {'Δ':>10} {'δ':>10}\n")
@@ -222,14 +223,15 @@ def forces_table(run: KinetostaticRun, lang: str = "en") -> str:
         if row is not None:
             w(f"{'':8} {'':6} {method_name('force_plans', lang)[:20]:20} {_cells(row.value)}{_errors(row)}\n")
 
-    symbol = "M_b" if analytic.balancing_kind == "moment" else "F_b"
+    key = "M_b" if analytic.balancing_kind == "moment" else "F_b"
+    symbol = course_label(key, lang)
     if analytic.balancing_kind == "moment":
         w(f"\n{term('balancing_moment', lang)} {symbol} [N·m], {term('ccw_positive', lang)}\n")
     else:
         w(f"\n{term('balancing_force', lang)} {symbol} [N], {term('along_guide', lang)}\n")
     w(f"{method_name('analytic', lang)[:24]:24} {float(analytic.balancing[0]):16.9g}\n")
     for method in ("force_plans", "lever"):
-        row = rows.get((symbol, method))
+        row = rows.get((key, method))
         if row is not None:
             w(f"{method_name(method, lang)[:24]:24} {row.value.real:16.9g}   Δ = {row.abs_error:.3g}, δ = {row.rel_error:.2e}\n")
     if run.graphical is not None and run.lever is None:

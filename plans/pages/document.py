@@ -377,8 +377,13 @@ class Document:
     def loop_block(self, block) -> None:
         """A loop's equations under its title (their size :attr:`loops_scale` of the small text's)."""
         self.body.append(f"#block(sticky: true)[#text(size: loops-size + 0.5pt, weight: \"bold\")[{self.words(block_words(block.title, self.lang))}]]\n")
-        for line in block.lines:
+        origins = block.origins
+        for k, line in enumerate(block.lines):
             self.body.append(f"#text(size: loops-size)[{self.words(line)}]\n")
+            if k == len(origins) - 1:  # what the guide points Q_B just placed are, in words
+                for pin in origins:
+                    words = term("guide_origin", self.lang).format(q=f"$Q_{{{pin}}}$", s=f"$s_{{{pin}}}$")
+                    self.body.append(f"#text(size: loops-size)[{self.words(words)}]\n")
 
     def mark(self, name: str) -> None:
         """A mark in the flow that the laid-out document reports: its *name*, page and height on the page [mm

@@ -175,20 +175,44 @@ def _extent(plan) -> tuple[float, float]:
     return (max(xs) - min(xs)) * plan.scale, (max(ys) - min(ys)) * plan.scale
 
 
-def _cells(plans, width: float, columns: int) -> tuple[int, float, list[float]]:
-    """(columns, the cell's width [mm], the height of the readings under each row [mm]) of the force plans' page
-    with *columns* plans across."""
+def _cells(plans, width: float, columns: int, equations: dict | None = None) -> tuple[int, float, list[float]]:
+    """(columns, the cell's width [mm], the height of the words of each row [mm]: its equations above each plan,
+    *equations*: group -> its lines, and the readings under it) of the force plans' page with *columns* plans across."""
     n = len(plans)
     columns = min(columns, n)
     cell = (width - (columns - 1) * GUTTER) / columns
     # a line of readings runs over into a second where it is longer than the cell is wide (8 pt: ~1.45 mm a character)
     per_line = max(20, int(cell / 1.45))
+    across = columns > 1 and not _equations_fit(equations, cell)  # the equations then go across the page above the row
     texts = []
     for r in range(0, n, columns):
         row = plans[r:r + columns]
-        texts.append(max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)) + 1 for p in row)
-                     * READING_LINE + 4.0)
+        readings = max(sum(-(-_visible(line) // per_line) for line in _plan_lines(p, {}, 1.0 if p.group == "driver" else None)) + 1 for p in row)
+        written = [_equations_height((equations or {}).get(p.group, ())) for p in row]
+        above = sum(h + READING_LINE for h in written if h) if across else max(written)
+        texts.append(readings * READING_LINE + above + 4.0)
     return columns, cell, texts
+
+
+def _equations_height(lines) -> float:
+    """The height [mm] a plan's equations take above it (nothing without them)."""
+    return EQUATION_LINE * len(lines) + 2.0 if lines else 0.0
+
+
+def _equation_width(line: str) -> float:
+    """About how wide [mm] a line of the plans' equations (Typst math markup) is set: 8 pt math, ~1.45 mm a
+    character and ~1.2 mm more about each operator (its spaces)."""
+    t = re.sub(r"#box\([^$]*\$underline\(", "", line).replace(")$})", "").replace("underline(", "")
+    t = re.sub(r"\bquad\b", "  ", t)
+    t = re.sub(r"\bdot\b", "·", t)
+    t = re.sub(r"\babs\(", "|", t)
+    t = re.sub(r'[$"(){}_^ ]', "", t)
+    return 1.45 * len(t) + 1.2 * len(re.findall(r"[=+−·⇒:]", t))
+
+
+def _equations_fit(equations: dict | None, cell: float) -> bool:
+    """Whether every equation line fits a cell *cell* mm wide (a line of math is not broken)."""
+    return all(_equation_width(line) <= cell for lines in (equations or {}).values() for line in lines)
 
 
 def _visible(line: str) -> int:
@@ -197,9 +221,13 @@ def _visible(line: str) -> int:
     return len(re.sub(r"\\mathrm|[${}_^\\]", "", line))
 
 
-def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], room: float = PLAN_ROOM):
+def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], room: float = PLAN_ROOM, equations: dict | None = None,
+                heights: bool = True):
     """(μ_F [N/mm], the plans constructed at it, their SVG blocks, columns): the smallest round μ_F with which every
-    force plan fits its cell's width and the rows of plans with their readings fit *room* [mm] down the page.
+    force plan fits its cell's width and the rows of plans with their readings (and *equations* above them: group ->
+    its lines; two plans across only where every line of them fits a cell) fit *room* [mm] down the page (with
+    *heights* false, a row of two plans or two rows of one with their words to a page: the plans then run over
+    pages).
 
     Found from geometry: the plans are constructed once at their own scales and drawn once (what does not
     scale — labels, margins — is what a drawing takes beyond its polygon), the sizes at any μ_F follow; then
@@ -216,11 +244,16 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
         sizes.append((block.width - ex / plan.scale, block.height - ey / plan.scale, ex, ey))
 
     def fits(mu: float, drawn=None, columns: int = 2) -> bool:
-        columns, cell, texts = _cells(first.plans, width, columns)
+        columns, cell, texts = _cells(first.plans, width, columns, equations)
         wide = [fw + ex / mu for fw, _, ex, _ in sizes] if drawn is None else [b.width for b in drawn]
         tall = [fh + ey / mu for _, fh, _, ey in sizes] if drawn is None else [b.height for b in drawn]
         rows = [max(tall[k:k + columns]) for k in range(0, len(tall), columns)]
-        return max(wide) <= cell + 0.5 and sum(rows) + sum(texts) + 5.0 * (len(rows) - 1) <= room + 0.5 and max(tall) <= PLAN_CELL_MAX + 0.5
+        # with *heights*, all the rows with their words on one page; else a row of two plans to a page, or two rows
+        # of one (a page not left half empty by a plan too tall to have the next under it)
+        per_page = 1 if columns > 1 else 2
+        pairs = [(rows[k:k + per_page], texts[k:k + per_page]) for k in range(0, len(rows), per_page)]
+        down = sum(rows) + sum(texts) + 5.0 * (len(rows) - 1) if heights else max(sum(r) + sum(t) + 5.0 * (len(r) - 1) for r, t in pairs)
+        return max(wide) <= cell + 0.5 and down <= room + 0.5 and max(tall) <= PLAN_CELL_MAX + 0.5
 
     best = None
     for columns in (1, 2):  # one plan under the other, or two across: whichever draws them larger
@@ -307,9 +340,13 @@ def _step(plan) -> float | None:
     return plan.precision * plan.scale if plan.precision else None
 
 
-def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en") -> list[str]:
+def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en", equations=None) -> list[str]:
     """The lines under a force plan: reactions carried from a plan before, the components Rᵗ found first, the
-    reactions read off it (drawn mm × μ_F), the vectors too short for an arrow, M_b on the driver's."""
+    reactions read off it (drawn mm × μ_F), the vectors too short for an arrow, M_b on the driver's.
+
+    An Rᵗ is written with the value its moment equation gives (*equations*: the plan's
+    :class:`plans.forces.plan_equations.PlanEquations`, the value the page's equation states), to 4 significant
+    figures, and its length at μ_F: one value, one rounding, on the plan's lines and in its equation."""
     from ..drawing.force_drawing import SHORT_MM, sense_arrow
 
     vectors = [v for v in plan.vectors if v.length > 1e-9]
@@ -323,8 +360,10 @@ def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en") -> list[s
                          f"({term('carried', lang)})")
     tangential = [v for v in vectors if v.kind == "tangential"]
     if tangential:
+        stated = {m.label: m.value for m in equations.moments} if equations is not None else {}
+        found = [(v, stated.get(v.label, v.value)) for v in tangential]
         lines.append(f"{term('found_first', lang)}: " + ";  ".join(
-            f"{_math(v.label, lang)} = {_reading(v.value, _step(plan))} N → {_reading(v.length, plan.precision)} mm" for v in tangential))
+            f"{_math(v.label, lang)} = {_number(value)} N → {_reading(value / plan.scale, plan.precision)} mm" for v, value in found))
     for v in vectors:
         if v.label in plan.found:
             lines.append(f"{_math(v.label, lang)} = {_reading(v.length, plan.precision)} mm · {mu} N/mm = {_reading(v.value, _step(plan))} N")
@@ -449,10 +488,10 @@ def _centre_words(scene, mass, lang: str) -> str:
     """Where the centre of mass S of a body lies, as a course's data state it: at a joint (``S₄ ≡ B``), or its distance
     from the body's first point along the line to the next (``l_OS₂ = 40 mm``), with the angle from that line when
     off it."""
-    from .._text import subscript
+    from ..forces.notation import centre_text
 
     body = scene.bodies[mass.body]
-    s = f"S{subscript(mass.body)}"
+    s = centre_text(scene, mass.body)
     if mass.point is not None and len(scene.bodies_with(mass.point)) > 1:  # at a joint (a block's pin)
         return f"{s} ≡ {mass.point}"
     at = {n: z for n, z in body.points.items() if n != mass.point}
@@ -491,9 +530,11 @@ def _offset(scene) -> float | None:
     return e if e > 1e-9 else None
 
 
-def _data_rows(scene, lang: str) -> tuple[str, list[list[str]], list[str]]:
+def _data_rows(scene, lang: str, loads=()) -> tuple[str, list[list[str]], list[str]]:
     """The input data of the force analysis: (heading with the offset e of an offset slider-crank, the table of the
-    links' masses — link, m [kg], centre of mass S, J_S [kg·m²] — and the lines of gravity and the external loads)."""
+    links' masses — link, m [kg], centre of mass S, J_S [kg·m²] — and the lines of gravity and the external loads:
+    each its magnitude, point and link, and its direction: a resistance against a point's velocity with the angle
+    that gives at the position, from *loads*, the plans' applied forces)."""
     kg = "kg"
     heading = term("force_data", lang)
     e = _offset(scene)
@@ -516,6 +557,9 @@ def _data_rows(scene, lang: str) -> tuple[str, list[list[str]], list[str]]:
         at = term("load_at", lang).format(point=where, link=load.body)
         if load.kind == "resistance":
             line = f"{name} = {_number(load.magnitude)} N, {at}, {term('against_velocity', lang).format(point=where)}"
+            acting = next((f for f in loads if f.label == load.name and abs(f.force) > 0), None)
+            if acting is not None:
+                line += f" (∠ {math.degrees(math.atan2(acting.force.imag, acting.force.real)) % 360:.1f}°)"
         else:
             f = complex(load.force)
             line = f"{name} = {_number(abs(f))} N ∠ {math.degrees(math.atan2(f.imag, f.real)) % 360:.1f}°, {at}"
@@ -662,16 +706,19 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     from ..forces.plan_equations import plan_equations
 
     lang = doc.lang
-    # the plans' equations under them on their page when that costs the plans at most one round step of μ_F;
-    # else the plans keep their room and the equations go over to the next page
+    # each plan's equations above it (the order a student works in), all on the plans' page when that costs the
+    # plans at most EQUATION_COST in μ_F; else the plans keep the scale they fit a page at alone, and each plan with
+    # its equations goes on as a whole (over the page where the rest of it does not hold it)
+    from ..forces.force_plans import construct_force_plans
+
     room = doc.page.text_height - 33.0
-    alone = force_scale(graphical, lang, doc.page.text_width, room)
-    equations = sum(EQUATION_LINE * (len(_equation_lines(e, lang)) + 1) + 2.0 for e in plan_equations(alone[1])) + 3.0
-    together = force_scale(graphical, lang, doc.page.text_width, room - equations) if equations < room / 2 else None
-    mu, plans, blocks, columns = together if together is not None and together[0] <= EQUATION_COST * alone[0] else alone
+    equation_lines = {e.group: _equation_lines(e, lang) for e in plan_equations(construct_force_plans(graphical, mu_F=None))}
+    alone = force_scale(graphical, lang, doc.page.text_width, room, equation_lines, heights=False)
+    together = force_scale(graphical, lang, doc.page.text_width, room, equation_lines)
+    mu, plans, blocks, columns = together if together[0] <= EQUATION_COST * alone[0] else alone
     names = group_names(plans.plans, lang)
     loads = _loads_table(plans, lang)
-    data_heading, data, data_lines = _data_rows(graphical.scene, lang)
+    data_heading, data, data_lines = _data_rows(graphical.scene, lang, plans.loads)
     # what the free bodies' page sets beside them: heading (and the position), k_l, legend, the input data and the
     # loads' table side by side
     tables = max(4.2 * len(loads) + 6.0, 4.2 * len(data) + 6.0 + 4.6 * len(data_lines))
@@ -695,7 +742,10 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     _scale_note(doc, mu_words)
     doc.figure(f"{key}-free-bodies", free)
     pages.images[f"{key}-free-bodies"] = "free-bodies"
-    doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}", lang), size=SMALL_PT)
+    coarser = ""
+    if plate_kl is not None and abs(k_l - plate_kl) > 1e-12 * plate_kl:  # none of the arrangements fits at the plate's k_l
+        coarser = ";  " + term("free_bodies_coarser", lang).format(scale=f"$k_{{l}}$ = {_scale(plate_kl)} m/mm")
+    doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}{coarser}", lang), size=SMALL_PT)
     doc.body.append(_legend(doc, f"{key}-bodies-legend", _body_kinds(plans), lang))
     given_data = _table(doc, data, "(left, right, left, right)", data_heading) + "".join(
         f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines)
@@ -709,28 +759,47 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     _scale_note(doc, mu_words)
     given = given_loads(plans)
     written = {e.group: e for e in plan_equations(plans)}
-    items = []
-    for plan, block in zip(plans.plans, blocks):
-        image_key = f"{key}-plan-{len(items) + 1}" if plan.group != "driver" else f"{key}-plan-driver"
+    # each plan under its equations: in its cell, or (where a line of them is wider than a cell) the equations of a
+    # row's plans across the page above the row
+    cell = (doc.page.text_width - (columns - 1) * GUTTER) / columns
+    lines_of = {plan.group: _equation_lines(written[plan.group], lang) for plan in plans.plans}
+    across = columns > 1 and not _equations_fit(lines_of, cell)
+
+    def equations_markup(plan) -> str:
+        rows = ", ".join(f"[{line}]" for line in lines_of[plan.group])
+        return f"#text(size: {SMALL_PT}pt)[#table(columns: 1, stroke: none, inset: (x: 0mm, y: 0.9mm), row-gutter: 1.2mm, {rows})]"
+
+    def item(k: int, with_equations: bool) -> str:
+        plan, block = plans.plans[k], blocks[k]
+        image_key = f"{key}-plan-{k + 1}" if plan.group != "driver" else f"{key}-plan-driver"
         pages.images[image_key] = f"plan:{plan.group}"
         moment = plans.balancing_moment if plan.group == "driver" else None
-        lines = _plan_lines(plan, given, moment, lang)
+        lines = _plan_lines(plan, given, moment, lang, written[plan.group])
         parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]"]
+        if lines_of[plan.group] and with_equations:  # the vector and moment equations the plan is drawn from, before it
+            parts.append(equations_markup(plan))
         parts.append(f"#align(center)[#{doc.add_image(image_key, block)}]")
         parts += [f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}]" for line in lines]
-        items.append("block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]")
-    doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
+        return "block(breakable: false, width: 100%)[" + " \\\n".join(parts) + "]"
+
+    count = len(plans.plans)
+    if across:
+        for r in range(0, count, columns):
+            row = list(range(r, min(r + columns, count)))
+            if r:
+                _scale_note(doc, mu_words)  # a row that runs over to a page of its own: its title block states μ_F
+            if len(row) == 1:  # a plan alone in its row: the page's width, its equations in its cell
+                doc.body.append(f"#{item(row[0], True)}\n")
+                continue
+            above = " \\\n".join(f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plans.plans[k], names, lang))}] \\\n"
+                                  f"{equations_markup(plans.plans[k])}" for k in row if lines_of[plans.plans[k].group])
+            doc.body.append(f"#block(breakable: false, below: 5mm)[{above}\n#grid(columns: {columns}, column-gutter: {GUTTER}mm, align: top + left,\n  "
+                            + ",\n  ".join(item(k, False) for k in row) + ")]\n")
+    else:
+        doc.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 5mm, align: top + left,\n  "
+                        + ",\n  ".join(item(k, True) for k in range(count)) + ")\n")
     kinds, closing = legend_kinds(plans.plans)
     doc.body.append("#v(2mm)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
-    # the equations each plan is drawn from, across the page under the plans and their legend (on the next page
-    # when they do not fit: the plans keep the room μ_F was chosen for); each plan's whole
-    doc.body.append("#v(3mm)\n")
-    for plan in plans.plans:
-        lines = _equation_lines(written[plan.group], lang)
-        if lines:
-            rows = [f"[#text(weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]]"] + [f"[{line}]" for line in lines]
-            doc.body.append(f"#block(breakable: false, below: 1.5mm)[#text(size: {SMALL_PT}pt)[#table(columns: 1, stroke: none, "
-                            f"inset: (x: 0mm, y: 0.9mm), row-gutter: 1.2mm, {', '.join(rows)})]]\n")
 
     # 3. Joukowski's lever and the three methods
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
@@ -772,7 +841,7 @@ def _lever_kinds(lever) -> list[str]:
 def _lever_rows(lever, lang: str) -> list[list[str]]:
     """The moments about the pole: force, its image, |F| [N], arm h [mm], F·h [N·mm], and for a couple's pair how it was found."""
     from ..drawing.force_drawing import lever_names
-    from ..drawing.plan_drawing import image_text
+    from ..drawing.force_drawing import lever_image_text
 
     names = lever_names(lever)
     moments = {(load.name, load.body): float(load.moment) for load in lever.loads if load.is_couple}
@@ -793,8 +862,8 @@ def _lever_rows(lever, lang: str) -> list[list[str]]:
             length = abs(couple) / abs(f.force)
             note = f"= {_math(f.name, lang)}/$l_{{\\mathrm{{{ends}}}}}$ = {_number(abs(couple))} N·m / {length:.4g} m"
             if f is pair[0]:
-                note += f"; {term('lever_pair', lang).format(points=', '.join(image_text(q.image) for q in pair))}"
-        rows.append([_math(names[id(f)], lang), image_text(f.image), _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
+                note += f"; {term('lever_pair', lang).format(points=', '.join(lever_image_text(q.image, lever.scene) for q in pair))}"
+        rows.append([_math(names[id(f)], lang), lever_image_text(f.image, lever.scene), _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
     return rows
 
 
