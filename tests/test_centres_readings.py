@@ -40,8 +40,16 @@ def _expected():
     p24 = _meet(p12, p14, p23, p34)  # P24 on P12P14 and on P23P34
     sign3 = 1.0 if ((p23 - p12) / (p23 - p13)).real > 0 else -1.0
     sign4 = 1.0 if ((p24 - p12) / (p24 - p14)).real > 0 else -1.0
-    omega3 = omega2 * sign3 * _read(abs(p23 - p12)) / _read(abs(p23 - p13))
     omega4 = omega2 * sign4 * _read(abs(p24 - p12)) / _read(abs(p24 - p14))
+    # a student takes, of the paths to link 3, the one whose shortest length is longest: from the crank through P23
+    # (P12P23, P13P23), or from the rocker 4 (found through P24: P12P24, P14P24) through P34 (P14P34, P13P34)
+    direct = min(abs(p23 - p12), abs(p23 - p13))
+    via_4 = min(abs(p24 - p12), abs(p24 - p14), abs(p34 - p14), abs(p34 - p13))
+    if direct >= via_4:
+        omega3 = omega2 * sign3 * _read(abs(p23 - p12)) / _read(abs(p23 - p13))
+    else:
+        sign = 1.0 if ((p34 - p14) / (p34 - p13)).real > 0 else -1.0
+        omega3 = omega4 * sign * _read(abs(p34 - p14)) / _read(abs(p34 - p13))
     return {"omega3": omega3, "omega4": omega4, "vB": abs(omega3) * _read(abs(B - p13)), "vA": abs(omega2) * _read(abs(A - O))}
 
 

@@ -99,6 +99,18 @@ def _through(known: Motion, p1j: Centre, pjk: Centre, size: float, read=_exact) 
     return Motion(0.0, 0j, known.v0 + t * across_jk)
 
 
+def _lengths(known: Motion, p1j: Centre, pjk: Centre, k_l: float, size: float) -> list[float]:
+    """The lengths [mm of the drawing at *k_l*] that :func:`_through` reads for body j from body k: P_1kP_jk (when k
+    turns) and P_1jP_jk (when both are finite); a length that is zero exactly (P_jk on P_1k: ω_j = 0, read as 0) is
+    not a reading."""
+    if pjk.point is None:
+        return []
+    arms = [pjk.point - known.about] if known.omega != 0.0 else []
+    if p1j.point is not None:
+        arms.append(pjk.point - p1j.point)
+    return [abs(arm) / k_l for arm in arms if abs(arm) > JOIN_TOL * size]
+
+
 def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], size: float, read=None) -> dict[str, Motion]:
     """The motion of every body (the frame's is zero), found from the driver through the centres.
 
@@ -127,23 +139,35 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
         line = scene.frame.lines[driver.guide]
         start = Motion(0.0, 0j, driver.velocity * line.direction)
     motions = {FRAME: Motion(0.0, 0j), driver.link: start}
+    width = {driver.link: float("inf")}  # with a reading: the shortest length [mm] read on the way to each link
     left = [name for name in scene.links if name != driver.link]
     while left:
+        best = None  # (width, j, motion)
         for j in left:
             p1j = by_pair[(FRAME, j)]
-            found = None
             # a body that shares a centre at infinity with j first (ω_j = ω_k, nothing measured), then the driver (the
             # rule the page states: ω_j from the driver's), then the others in the order they were found
             for k, known in sorted(motions.items(), key=lambda item: item[0] == FRAME or by_pair[(j, item[0])].point is not None):
                 if k == FRAME:
                     continue
                 found = _through(known, p1j, by_pair[(j, k)], size, read or _exact)
-                if found is not None:
+                if found is None:
+                    continue
+                if read is None:
+                    best = (0.0, j, found)
                     break
-            if found is not None:
-                motions[j] = found
-                left.remove(j)
+                # a student takes the path whose lengths read best: of the links found next, the one whose shortest
+                # length on its way from the driver is longest (a length that reads 0 on the drawing gives no ω)
+                shortest = min([width[k]] + _lengths(known, p1j, by_pair[(j, k)], read.k_l, size))
+                if shortest > 0.5 * read.precision and (best is None or shortest > best[0]):
+                    best = (shortest, j, found)
+            if best is not None and read is None:
                 break
+        if best is not None:
+            _, j, found = best
+            motions[j] = found
+            width[j] = best[0]
+            left.remove(j)
         else:
             j = left[0]
             p1j = by_pair[(FRAME, j)]
