@@ -383,8 +383,9 @@ class _CentresDrawing:
             self.label(q, centre_text(centre.label), f"label-{centre.label}", q - self.middle, clear)
 
 
-def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> None:
-    """Bodies on a circle (1 at the top, clockwise), primary centres as sides, Kennedy ones as dashed diagonals."""
+def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en", caption: bool = True) -> None:
+    """Bodies on a circle (1 at the top, clockwise), primary centres as sides, Kennedy ones as dashed diagonals;
+    *caption* False leaves its heading and legend to the page (set in the page's typeface)."""
     names = list(result.numbers)
     n = len(names)
     at = {name: centre + DIAGRAM_R * cmath.exp(1j * (math.pi / 2 - 2 * math.pi * k / n)) for k, name in enumerate(names)}
@@ -401,6 +402,8 @@ def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> Non
     for name, q in at.items():
         s.circle(q, 1.0, fc=INK, ec=INK, lw=0.3, gid=f"diagram-body-{result.numbers[name]}", zorder=4.0)
         s.text(q + 4.2 * unit(q - centre), result.numbers[name], size=HEADING_PT, gid=f"diagram-number-{result.numbers[name]}")
+    if not caption:
+        return
     s.text(centre - 1j * (DIAGRAM_R + 8.0), term("circle_diagram", lang), size=CAPTION_PT, weight="bold", gid="diagram-heading", obstacle=False)
     lines = []
     for part in term("circle_diagram_legend", lang).split("\n"):  # each part wrapped to the diagram's width
@@ -586,10 +589,11 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     return xmax - xmin + 2 * MARGIN_MM, ymax - ymin + 2 * MARGIN_MM
 
 
-def draw_circle_diagram_into(ax, result, lang: str = "en") -> tuple[float, float]:
-    """The circle diagram alone, drawn into *ax* (one data unit a millimetre); returns its (width, height) [mm]."""
+def draw_circle_diagram_into(ax, result, lang: str = "en", caption: bool = True) -> tuple[float, float]:
+    """The circle diagram alone, drawn into *ax* (one data unit a millimetre); returns its (width, height) [mm]
+    (*caption* False: without its heading and legend, which a page sets as its text)."""
     s = Sketch(ax, "centres")
-    _circle_diagram(s, result, 0j, lang)
+    _circle_diagram(s, result, 0j, lang, caption)
     b = s.bounds
     ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
     ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM)
