@@ -60,3 +60,49 @@ def test_no_two_texts_overlap(drawings):
     for where, svg in drawings:
         found += [(where, pair) for pair in overlaps(text_boxes(svg), clear=0.2)]
     assert not found, found
+
+
+def _edge_shafts(svg: str) -> dict[str, list]:
+    """Edge arrow label -> the point lists [SVG units] of its shaft and head paths."""
+    out: dict[str, list] = {}
+    for label, d in re.findall(r'<g id="centres-edge-(P[0-9]+)">\s*<path d="([^"]+)"', svg):
+        out.setdefault(label, []).append([(float(x), float(y)) for x, y in re.findall(r"([-0-9.]+) ([-0-9.]+)", d)])
+    return out
+
+
+def test_no_edge_arrow_over_a_text(drawings):
+    # the Serbian quick-return's edge arrow ran over the k_l caption (teacher's review): no arrow crosses any text but
+    # its own label
+    from shapely.geometry import LineString, box
+
+    found = []
+    for where, svg in drawings:
+        texts = text_boxes(svg)
+        for label, paths in _edge_shafts(svg).items():
+            for points in paths:
+                line = LineString(points) if len(points) > 1 else None
+                if line is None:
+                    continue
+                for gid, text, (x0, y0, x1, y1) in texts:
+                    if gid == f"centres-label-{label}":
+                        continue
+                    if line.intersects(box(x0, y0, x1, y1)):
+                        found.append((where, label, gid, text))
+    assert not found, found
+
+
+def test_centres_at_one_spot_share_one_label(drawings):
+    # centres within 0.5 mm of each other on the drawing read as one spot: one label names them all (the quick-return's
+    # P₃₅, P₃₆, P₄₅, P₄₆ at D at position 4 were four labels piled at one place)
+    spot = 0.5 * 72 / 25.4
+    apart, four = [], False
+    for where, svg in drawings:
+        marks = _marks(svg)
+        labelled = [m.group(1).split("-") for m in re.finditer(r'<g id="centres-label-(P[0-9]+(?:-P[0-9]+)*)"', svg)]
+        four |= any({"P35", "P36", "P45", "P46"} <= set(group) for group in labelled)
+        for a, qa in marks.items():
+            for b, qb in marks.items():
+                if a < b and abs(qa - qb) < spot and not any(a in g and b in g for g in labelled):
+                    apart.append((where, a, b))
+    assert not apart, apart
+    assert four  # the review's case is drawn and named once

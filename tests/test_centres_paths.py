@@ -85,6 +85,6 @@ def test_six_bar_legend_and_rules_said_once_and_circle_caption_typeset():
                   "v of a point from the centre its link turns about", "ω of a link from a link already known"):
         assert len(re.findall(re.escape(words), text, re.IGNORECASE)) <= 1, words
     # the circle diagram's caption is the page's text (its typeface), not the drawing's
-    assert len(re.findall("Circle diagram: sides: centres at the kinematic pairs", text)) == 1
+    assert len(re.findall("circle diagram: sides: centres at the kinematic pairs", text)) == 1
     svgs = [svg for key, svg in doc.images.items() if key.startswith("circle")]
     assert svgs and all(b'id="centres-diagram-circle"' in svg and b"centres-diagram-heading" not in svg for svg in svgs)

@@ -59,6 +59,8 @@ LABEL_RINGS = (1, 2, 3, 4.5, 6.5, 9, 12)
 LEADER_RING = 2.5
 #: Room [mm] a centre's label keeps from what is drawn (the font's box is an estimate of the ink's).
 LABEL_CLEAR_MM = 0.3
+#: centres closer than this on the drawing [mm] are one spot: one label names them all
+CLUSTER_MM = 1.5
 
 
 def centre_text(label: str) -> str:
@@ -297,7 +299,7 @@ class _CentresDrawing:
             hits += 300 * sum(1 for o in self.bodies if shape.intersects(o))  # nor under a block, a support, its hatching
             # read as its own: nearer its own mark than any other centre's (or a joint's)
             own = abs(c - at)
-            hits += 200 * sum(1 for q in self.marks if abs(q - at) > 1e-6 and abs(c - q) < own)
+            hits += 200 * sum(1 for q in self.marks if abs(q - at) > 0.5 * CLUSTER_MM and abs(c - q) < own)
             f = self.frame
             if not (f.outer_lo.real <= c.real - w / 2 and c.real + w / 2 <= f.outer_hi.real and f.outer_lo.imag <= c.imag - h / 2 and c.imag + h / 2 <= f.outer_hi.imag):
                 hits += 100  # within the drawing's frame, whose size the page found beforehand
@@ -360,8 +362,7 @@ class _CentresDrawing:
         for e in self.frame.edges:
             self.s.arrow(e.tail, e.tip, color=CENTRE_COLOUR, lw=1.0, head=2.4, gid=f"edge-{e.label}")
             self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}")
-            w, h = text_size(e.text, LABEL_PT)
-            self.words.append(box(e.at.real - w / 2, e.at.imag - h / 2, e.at.real + w / 2, e.at.imag + h / 2))
+        self.words += _edge_shapes(self.frame)  # no label over an edge arrow or its label
         # every mark first (each an obstacle), then the labels: a label keeps off every mark, not only those before it
         near = [c for c in self.r.centres if c.determined and c.label in self.frame.near]
         self.marks += [self.mm(z) for z in self.r.positions.values()]
@@ -376,11 +377,27 @@ class _CentresDrawing:
                 clear = 1.2
             self.marks.append(q)
             placed.append((centre, q, clear))
+        # centres at one spot of the drawing (the quick-return's P₃₅, P₃₆, P₄₅, P₄₆ at D) take one label, "P₃₅, P₃₆, …"
+        groups: list[list] = []
+        for item in placed:
+            near_group = [g for g in groups if any(abs(item[1] - other[1]) < CLUSTER_MM for other in g)]
+            merged = [item] + [x for g in near_group for x in g]
+            groups = [g for g in groups if g not in near_group] + [sorted(merged, key=lambda x: placed.index(x))]
+        labels = []
+        for group in sorted(groups, key=lambda g: placed.index(g[0])):
+            at = sum(x[1] for x in group) / len(group)
+            spread = max(abs(x[1] - at) for x in group)
+            text = ", ".join(centre_text(x[0].label) for x in group)
+            gid = "label-" + "-".join(x[0].label for x in group)
+            labels.append((at, text, gid, max(x[2] for x in group) + spread))
+            if len(group) > 1:  # the marks of one spot count as one: a label is nearer it than any other
+                self.marks = [m for m in self.marks if all(abs(m - x[1]) > 1e-9 for x in group)] + [at]
+
         # the most crowded first: a centre with marks close around it takes its place before its neighbours
         def crowd(item):
-            return -sum(1 for other in self.marks if abs(other - item[1]) < 8.0)
-        for centre, q, clear in sorted(placed, key=crowd):
-            self.label(q, centre_text(centre.label), f"label-{centre.label}", q - self.middle, clear)
+            return -sum(1 for other in self.marks if abs(other - item[0]) < 8.0)
+        for at, text, gid, clear in sorted(labels, key=crowd):
+            self.label(at, text, gid, at - self.middle, clear)
 
 
 def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en", caption: bool = True) -> None:
@@ -533,6 +550,37 @@ class CentresSizer:
         return frame.width, frame.height
 
 
+def _edge_shapes(frame: CentresFrame) -> list:
+    """The edge arrows and their labels [mm] as shapes (what the k_l caption and the near centres' labels keep off)."""
+    shapes = []
+    for e in frame.edges:
+        w, h = text_size(e.text, LABEL_PT)
+        shapes.append(LineString([(e.tail.real, e.tail.imag), (e.tip.real, e.tip.imag)]).buffer(1.2))
+        shapes.append(box(e.at.real - w / 2, e.at.imag - h / 2, e.at.real + w / 2, e.at.imag + h / 2).buffer(0.5))
+    return shapes
+
+
+def _caption_corner(frame: CentresFrame, caption: str, obstacles: list) -> tuple[complex, str, str]:
+    """Where the k_l caption goes: (anchor [mm], ha, va) of the first corner of the room, lower left first, whose box
+    crosses no edge arrow or its label (an arrow pulled back over the room ran over it on the quick-return's page),
+    and then the fewest of the mechanism's lines."""
+    w, h = text_size(caption, CAPTION_PT, "normal", True)
+    lo, hi = frame.lo, frame.hi
+    edges = _edge_shapes(frame)
+    best = None
+    for k, (x, y, ha, va) in enumerate(((lo.real, lo.imag, "left", "bottom"), (hi.real, lo.imag, "right", "bottom"),
+                                        (lo.real, hi.imag, "left", "top"), (hi.real, hi.imag, "right", "top"))):
+        x0 = x if ha == "left" else x - w
+        y0 = y if va == "bottom" else y - h
+        shape = box(x0, y0, x0 + w, y0 + h)
+        cost = (sum(1 for e in edges if shape.intersects(e)), sum(1 for o in obstacles if shape.intersects(o)), k)
+        if best is None or cost < best[0]:
+            best = (cost, complex(x, y), ha, va)
+        if cost[:2] == (0, 0):
+            break
+    return best[1], best[2], best[3]
+
+
 def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | None = None, legend: bool = True, diagram: bool = True,
                       room_min: float = ROOM_MIN, limit: tuple[float, float] | None = None, cycle=None):
     """The mechanism at k_l with every instant centre, and the circle diagram beside it, drawn into *ax*.
@@ -558,10 +606,12 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     (x0, y0), (x1, y1) = (frame.outer_lo.real, frame.outer_lo.imag), (frame.outer_hi.real, frame.outer_hi.imag)
     s = Sketch(ax, "centres")
     s.obstacles.extend(_shapes(artists))
-    # the scale, in the room's lower left corner (inside the frame the page sized)
-    s.text(complex(lo.real, lo.imag), scale_caption("k_l", fmt_number(k_l), "m/mm", lang), size=CAPTION_PT, ha="left", va="bottom", gid="scale", math=True)
+    # the scale, in a corner of the room (inside the frame the page sized) that no edge arrow or its label crosses
+    caption = scale_caption("k_l", fmt_number(k_l), "m/mm", lang)
+    at, ha, va = _caption_corner(frame, caption, s.obstacles)
+    s.text(at, caption, size=CAPTION_PT, ha=ha, va=va, gid="scale", math=True)
     drawing = _CentresDrawing(s, result, frame, lang)
-    drawing.words += _text_shapes(artists)
+    drawing.words += _text_shapes(artists) + [s.obstacles[-1]]
     drawing.bodies += _body_shapes(artists)
     drawing.kennedy_lines()
     drawing.centres()

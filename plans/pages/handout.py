@@ -996,8 +996,7 @@ def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
     kennedy = term("kennedy_theorem", lang)
     doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=TEXT_PT)
     if diagram is not None and result is not None:
-        circle = term("circle_diagram", lang)
-        circle = f"{circle[0].upper() + circle[1:]}: {term('circle_diagram_legend', lang).replace(chr(10), ' ')}"
+        circle = f"{term('circle_diagram', lang)}: {term('circle_diagram_legend', lang).replace(chr(10), ' ')}"
         doc.beside(diagram, [], [circle, term("centres_legend", lang), term("centres_edge_legend", lang)]
                    + centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
         doc.tables([(term("centres_order", lang), centres_order_table(result, lang))], aligns="(left, left)")
