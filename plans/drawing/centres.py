@@ -57,6 +57,8 @@ LABEL_PT = SMALL_PT + 1.5
 #: Gaps tried for a centre's label, in units of its mark's clearance; from LEADER_RING on, with a leader line.
 LABEL_RINGS = (1, 2, 3, 4.5, 6.5, 9, 12)
 LEADER_RING = 2.5
+#: the cost of a ring farther out from a centre for its label, in Kennedy lines crossed
+RING_COST = 1.5
 #: Room [mm] a centre's label keeps from what is drawn (the font's box is an estimate of the ink's).
 LABEL_CLEAR_MM = 0.3
 #: centres closer than this on the drawing [mm] are one spot: one label names them all
@@ -288,13 +290,18 @@ class _CentresDrawing:
         start = cmath.phase(away) if abs(away) > 1e-9 else math.pi / 4
         best = None
         for k in range(16 * len(LABEL_RINGS)):
+            if k % 16 == 0 and best is not None and best[0] <= RING_COST * (k // 16):
+                break  # no place farther out can cost less
             turn = (k % 16 + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
             d = cmath.exp(1j * (start + turn))
             ring = LABEL_RINGS[k // 16]
             gap = clear * ring + 0.6 + 0.5 * (abs(d.real) * w + abs(d.imag) * h)
             c = at + d * gap
             shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2).buffer(LABEL_CLEAR_MM, join_style=2)
-            hits = 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
+            # beside its own mark: each ring farther out costs as much as crossing RING_COST dashed Kennedy lines (the
+            # linear-arm's P₂₃ went 8 mm from F to keep off the thin lines through it)
+            hits = RING_COST * (k // 16)
+            hits += 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
             hits += 1000 * sum(1 for o in self.words if shape.intersects(o))  # never over another label or name
             hits += 300 * sum(1 for o in self.bodies if shape.intersects(o))  # nor under a block, a support, its hatching
             # read as its own: nearer its own mark than any other centre's (or a joint's)
@@ -312,7 +319,7 @@ class _CentresDrawing:
                 hits += 10 * sum(1 for o in self.s.obstacles if line.intersects(o))
             if best is None or hits < best[0]:
                 best = (hits, c, leader)
-            if hits == 0:
+            if hits == RING_COST * (k // 16):
                 break
         _, c, leader = best
         if leader is not None:
