@@ -106,3 +106,37 @@ def test_centres_at_one_spot_share_one_label(drawings):
                     apart.append((where, a, b))
     assert not apart, apart
     assert four  # the review's case is drawn and named once
+
+
+def _subpaths(d: str) -> list[list[tuple[float, float]]]:
+    """The point lists of an SVG path's subpaths (each M starts one) [SVG units]."""
+    out = []
+    for part in re.split(r"(?=M)", d):
+        points = [(float(x), float(y)) for x, y in re.findall(r"([-0-9.]+) ([-0-9.]+)", part)]
+        if points:
+            out.append(points)
+    return out
+
+
+def test_labels_off_bodies_and_hatching(drawings):
+    # a centre's label is not set over a slider's block, a sleeve, a support or the ground's hatching (teacher's
+    # review of the Bulgarian linear-arm pages)
+    from shapely.geometry import LineString, Polygon, box
+
+    found = []
+    for where, svg in drawings:
+        marks = _marks(svg)
+        bodies = []
+        for gid, group in re.findall(r'<g id="(mech-(?:block|sleeve|hatch|ground|support)[^"]*)">(.*?)</g>', svg, re.S):
+            for d in re.findall(r'<path d="([^"]+)"', group):
+                for points in _subpaths(d):
+                    closed = len(points) >= 3 and d.rstrip().endswith("z")
+                    bodies.append((gid, Polygon(points) if closed else LineString(points) if len(points) > 1 else None))
+        assert any(name.startswith("mech-hatch") for name, _ in bodies), where
+        for gid, text, (x0, y0, x1, y1) in text_boxes(svg):
+            m = re.fullmatch(r"centres-label-(P[0-9]+(?:-P[0-9]+)*)", gid)
+            if not m or m.group(1).split("-")[0] not in marks:
+                continue
+            label = box(x0 + 0.3, y0 + 0.3, x1 - 0.3, y1 - 0.3)
+            found += [(where, text, name) for name, shape in bodies if shape is not None and shape.intersects(label)]
+    assert not found, found
