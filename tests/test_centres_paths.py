@@ -61,7 +61,7 @@ WORDS = {  # hand-written: the page's note where no path of centres reads
 def test_no_readable_path_is_said_on_the_page(monkeypatch, lang):
     exact = plans.centres.instant_centres
 
-    def unreadable(scene, structure=None, *, k_l=None, precision=None):
+    def unreadable(scene, structure=None, *, k_l=None, precision=None, room=None):
         if k_l is not None:  # every path of centres has two on one spot of the drawing
             raise CentreError("the velocity of link 3 is not determined by the instant centres at this position")
         return exact(scene, structure)

@@ -928,6 +928,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
     from ..errors import PlansError
 
     pages = []  # (h, result, comparisons, table, box) or (h, error)
+    sizers = {}
     k = k_l
     diagram = None
     for n, h in enumerate(positions, start=1):
@@ -944,7 +945,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         table = centres_page_table(result, comparisons, lang)
         box = (TEXT_WIDTH, min(CENTRES_DRAWING_MAX, TEXT_HEIGHT - CENTRES_PAGE_TEXT - CENTRES_ROW * len(table)))
         # sizes from geometry (two drawings of the mechanism alone, plans.drawing.centres.CentresSizer)
-        sizer = CentresSizer(result, lang, room_min=ROOM_MIN, cycle=_centres_cycle(h))
+        sizer = sizers[h.index] = CentresSizer(result, lang, room_min=ROOM_MIN, cycle=_centres_cycle(h))
         for _ in range(24):
             width, height = sizer.size(k, box)
             if width <= box[0] + 0.5 and height <= box[1] + 0.5:
@@ -968,12 +969,14 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         if len(page) > 2:
             h, result = page[0], page[1]
             try:
-                read = instant_centres(h.scene, h.analytic.structure, k_l=k, precision=h.scene.scales.precision)
+                frame = sizers[h.index].frame(k, page[4])  # the centres drawn where they are: the lengths read
+                read = instant_centres(h.scene, h.analytic.structure, k_l=k, precision=h.scene.scales.precision,
+                                       room=(frame.lo * k, frame.hi * k))
             except PlansError:  # every path of centres has two on one spot of the drawing: exact values, said on the page
                 pages[n] = page[:4] + (page[4], term("centres_read_exact", lang))
                 continue
             comparisons = compare_centres(h.analytic, read)
-            pages[n] = (h, result, comparisons, centres_page_table(read, comparisons, lang), page[4])
+            pages[n] = (h, result, comparisons, centres_page_table(read, comparisons, lang, k_l=k), page[4])
     _centres_method(doc, diagram, k, lang, drawn[0][1] if drawn else None)
     for page in pages:
         _centres_page(doc, page, k, blocks, lang, multi)
