@@ -522,6 +522,13 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "правите на Кенеди за него съвпадат в това положение (скоростите не се нуждаят от него)",
         "sl": "njegove Kennedyjeve premice v tej legi sovpadajo (hitrosti ga ne potrebujejo)",
     },
+    "centres_read_exact": {
+        "en": "ω and v computed from the exact centres, not read off the drawing: centres coincide on the drawing at this kₗ, on every path of centres",
+        "sr": "ω и v израчунати из тачних положаја полова, не очитани са цртежа: полови се на цртежу при овом kₗ поклапају, на сваком путу преко полова",
+        "ru": "ω и v вычислены по точным положениям центров, а не измерены на чертеже: центры на чертеже при этом kₗ совпадают, на любом пути через центры",
+        "bg": "ω и v са изчислени по точните положения на центровете, не са измерени от чертежа: центровете на чертежа при този kₗ съвпадат, по всеки път през центровете",
+        "sl": "ω in v izračunani iz natančnih leg polov, ne odčitani z risbe: poli na risbi pri tem kₗ sovpadajo, na vsaki poti prek polov",
+    },
     "by_centres": {"en": "instant centres", "sr": "тренутни полови", "ru": "мгн. центры", "bg": "моментни центрове", "sl": "trenutni poli"},
     "centres_results": {
         "en": "Velocities from the instant centres and analytic values",
@@ -531,11 +538,11 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "Hitrosti iz trenutnih polov in analitične vrednosti",
     },
     "centres_omega_rule": {
-        "en": "ω of a link from the driver's, through the centres",
-        "sr": "ω члана из ω погонског члана, преко полова",
-        "ru": "ω звена по ω ведущего звена, через центры",
-        "bg": "ω на звеното от ω на водещото звено, чрез центровете",
-        "sl": "ω člena iz ω pogonskega člena, prek polov",
+        "en": "ω of a link from a link already known (first the driver), through their common centre, on the path of centres whose shortest length on the drawing is longest",
+        "sr": "ω члана из ω већ познатог члана (прво погонског), преко њиховог заједничког пола, путем преко полова чија је најкраћа дуж на цртежу најдужа",
+        "ru": "ω звена по ω уже известного звена (сначала ведущего), через их общий центр, по пути через центры, кратчайший отрезок которого на чертеже длиннее всего",
+        "bg": "ω на звеното от ω на вече известно звено (първо водещото), чрез общия им център, по пътя през центровете с най-дълга най-къса отсечка на чертежа",
+        "sl": "ω člena iz ω že znanega člena (najprej pogonskega), prek njunega skupnega pola, po poti prek polov, katere najkrajša daljica na risbi je najdaljša",
     },
     "centres_v_rule": {
         "en": "v of a point from the centre its link turns about",

@@ -40,9 +40,18 @@ def _expected():
     p24 = _meet(p12, p14, p23, p34)  # P24 on P12P14 and on P23P34
     sign3 = 1.0 if ((p23 - p12) / (p23 - p13)).real > 0 else -1.0
     sign4 = 1.0 if ((p24 - p12) / (p24 - p14)).real > 0 else -1.0
-    omega3 = omega2 * sign3 * _read(abs(p23 - p12)) / _read(abs(p23 - p13))
     omega4 = omega2 * sign4 * _read(abs(p24 - p12)) / _read(abs(p24 - p14))
-    return {"omega3": omega3, "omega4": omega4, "vB": abs(omega3) * _read(abs(B - p13)), "vA": abs(omega2) * _read(abs(A - O))}
+    # a student takes, of the paths to link 3, the one whose shortest length is longest: from the crank through P23
+    # (P12P23, P13P23), or from the rocker 4 (found through P24: P12P24, P14P24) through P34 (P14P34, P13P34)
+    direct = min(abs(p23 - p12), abs(p23 - p13))
+    via_4 = min(abs(p24 - p12), abs(p24 - p14), abs(p34 - p14), abs(p34 - p13))
+    path3 = "direct" if direct >= via_4 else "via 4"
+    if direct >= via_4:
+        omega3 = omega2 * sign3 * _read(abs(p23 - p12)) / _read(abs(p23 - p13))
+    else:
+        sign = 1.0 if ((p34 - p14) / (p34 - p13)).real > 0 else -1.0
+        omega3 = omega4 * sign * _read(abs(p34 - p14)) / _read(abs(p34 - p13))
+    return {"path3": path3, "omega3": omega3, "omega4": omega4, "vB": abs(omega3) * _read(abs(B - p13)), "vA": abs(omega2) * _read(abs(A - O))}
 
 
 def test_six_bar_readings_at_the_drawings_precision():
@@ -66,6 +75,9 @@ def test_six_bar_handout_table_prints_the_readings(tmp_path):
     page = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, check=True).stdout.decode().split("\f")[-2]
     want = _expected()
     rows = {m.group(1): m.group(2).split() for m in re.finditer(r"𝜔(\d) \[rad/s\]\s+P\S+\s+(.*)", page)}
-    assert rows["3"][0] == f"{want['omega3']:.4g}", rows
-    assert rows["4"][0] == f"{want['omega4']:.4g}".replace("-", "−"), rows
+    # the cells: P_1j, the lengths read for ω (the path: "P₁₂P₂₄ / P₁₄P₂₄ = 40.0 / 25.3"), the value, analytic, error
+    assert rows["3"][-3] == f"{want['omega3']:.4g}", rows
+    assert rows["4"][-3] == f"{want['omega4']:.4g}".replace("-", "−"), rows
+    assert rows["3"][:3] == (["P₁₂P₂₃", "/", "P₁₃P₂₃"] if want["path3"] == "direct" else ["P₁₄P₃₄", "/", "P₁₃P₃₄"]), rows
+    assert rows["4"][:3] == ["P₁₂P₂₄", "/", "P₁₄P₂₄"], rows
     assert rows["3"][-1] != "0" and rows["4"][-1] != "0", rows  # a real error, as the velocity plans' tables show

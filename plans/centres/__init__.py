@@ -86,7 +86,7 @@ def _size(positions: dict[str, complex]) -> float:
 
 
 def instant_centres(scene: Scene, structure: Structure | None = None, *, k_l: float | None = None,
-                    precision: float | None = None) -> InstantCentres:
+                    precision: float | None = None, room: tuple[complex, complex] | None = None) -> InstantCentres:
     """Place the bodies, find every instant centre, and the velocities from them.
 
     Parameters
@@ -99,7 +99,11 @@ def instant_centres(scene: Scene, structure: Structure | None = None, *, k_l: fl
         reads off the drawing — every length the rules use (P_1kP_jk, P_1jP_jk, P_1jM) measured in mm,
         rounded to *precision*, times k_l (:class:`plans.centres.velocities.Reading`); exact when either is
         None (``plans solve``, ``plans centres``; a handout asked for exact readings), as the graphical
-        plans are exact without a precision.
+        plans are exact without a precision.  ω of each link is read along the path of centres whose shortest
+        length is longest (:func:`plans.centres.velocities.body_motions`).
+    room : (complex, complex), optional
+        With a reading, the part of the plane [m] (lower-left, upper-right) the drawing shows where it is: a path
+        through a centre outside it (an arrow at the drawing's edge) is taken only where no other gives ω.
 
     Raises
     ------
@@ -115,7 +119,7 @@ def instant_centres(scene: Scene, structure: Structure | None = None, *, k_l: fl
     positions = {name: point_at(poses[scene.home_of(name)], scene.bodies[scene.home_of(name)].points[name]) for name in scene.point_names}
     size = _size(positions)
     centres = find_centres(scene, poses)
-    read = Reading(k_l, precision) if k_l is not None and precision is not None else None
+    read = Reading(k_l, precision, room) if k_l is not None and precision is not None else None
     motions = body_motions(scene, poses, centres, size, read)
     return InstantCentres(
         scene=scene,

@@ -23,18 +23,24 @@ translation's velocity).  Units SI, ω counter-clockwise positive.
 Readings: with a :class:`Reading` (the drawing's k_l and the drafting
 precision), every length the rules use (P_1kP_jk, P_1jP_jk, P_1jM) is taken
 as a student measures it on the drawing — its millimetres rounded to the
-precision, times k_l — and its direction as it is; without one, exactly.
+precision (one under SHORT_READ_MM to a tenth of it, as the plans read a short
+segment), times k_l — and its direction as it is; without one, exactly.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..scene import FRAME, Crank, Scene
 from .kennedy import JOIN_TOL, Centre, CentreError
 from .pose import Pose, point_at
 
-__all__ = ["Motion", "Reading", "body_motions", "point_velocities"]
+__all__ = ["Motion", "Reading", "body_motions", "point_velocities", "SHORT_READ_MM"]
+
+#: a length shorter than this on the drawing [mm] is read to a tenth of the drafting precision, as the plans read their
+#: short segments (a 10:1 detail; the page prints it to 0.01 mm): the same rule, kept here so that the methods share
+#: no code
+SHORT_READ_MM = 3.0
 
 
 @dataclass(frozen=True)
@@ -43,13 +49,28 @@ class Reading:
 
     k_l: float
     precision: float
+    #: the part of the plane drawn where it is (lower-left, upper-right) [m]; a centre outside (an arrow at the drawing's
+    #: edge) gives no length to measure, so a path of centres off it is taken only where none on it gives ω
+    room: tuple | None = None
+
+    def on_drawing(self, *centres) -> bool:
+        """Whether every finite one of *centres* (points [m] or None) lies on the drawing (always, without a room)."""
+        if self.room is None:
+            return True
+        lo, hi = self.room
+        return all(z is None or (lo.real <= z.real <= hi.real and lo.imag <= z.imag <= hi.imag) for z in centres)
+
+    def step(self, mm: float) -> float:
+        """The step [mm] a length of *mm* on the drawing is read to: the precision, a tenth of it under SHORT_READ_MM."""
+        return self.precision / 10 if mm < SHORT_READ_MM else self.precision
 
     def __call__(self, arm: complex) -> complex:
-        """*arm* [m] with its length as measured: round(|arm|/k_l to precision)·k_l, its direction kept."""
+        """*arm* [m] with its length as measured: round(|arm|/k_l to its step)·k_l, its direction kept."""
         length = abs(arm)
         if length == 0.0:
             return arm
-        return arm * (round(length / self.k_l / self.precision) * self.precision * self.k_l / length)
+        step = self.step(length / self.k_l)
+        return arm * (round(length / self.k_l / step) * step * self.k_l / length)
 
 
 def _exact(arm: complex) -> complex:
@@ -63,6 +84,11 @@ class Motion:
     omega: float
     about: complex
     v0: complex = 0j
+    #: with a reading, the lengths ω was read from: ``(("P12", "P24", 1.1), ("P14", "P24", 25.3))`` — each centre pair's
+    #: length [mm of the drawing] as read (P_1kP_jk, then P_1jP_jk); empty where nothing was measured or exactly
+    via: tuple = ()
+    #: with a reading, the link whose ω this one's was found from ("" for the driver and the frame, or exactly)
+    from_link: str = ""
 
     def velocity(self, z: complex, read=_exact) -> complex:
         """The velocity [m/s] of the body's point at z [m] (*read*: the arm z − about as measured, :class:`Reading`)."""
@@ -99,6 +125,29 @@ def _through(known: Motion, p1j: Centre, pjk: Centre, size: float, read=_exact) 
     return Motion(0.0, 0j, known.v0 + t * across_jk)
 
 
+def _lengths(known: Motion, p1j: Centre, pjk: Centre, k_l: float, size: float) -> list[float]:
+    """The lengths [mm of the drawing at *k_l*] that :func:`_through` reads for body j from body k: P_1kP_jk (when k
+    turns) and P_1jP_jk (when both are finite); a length that is zero exactly (P_jk on P_1k: ω_j = 0, read as 0) is
+    not a reading."""
+    if pjk.point is None:
+        return []
+    arms = [pjk.point - known.about] if known.omega != 0.0 else []
+    if p1j.point is not None:
+        arms.append(pjk.point - p1j.point)
+    return [abs(arm) / k_l for arm in arms if abs(arm) > JOIN_TOL * size]
+
+
+def _via(known: Motion, p1k: Centre | None, p1j: Centre, pjk: Centre, read: "Reading") -> tuple:
+    """The lengths ω_j is read from (see :attr:`Motion.via`): P_1kP_jk when k turns, P_1jP_jk when both are finite."""
+    if pjk.point is None:
+        return ()
+    out = []
+    for centre, at in ((p1k, known.about if known.omega != 0.0 else None), (p1j, p1j.point)):
+        if centre is not None and at is not None:
+            out.append((centre.label, pjk.label, abs(read(pjk.point - at)) / read.k_l))
+    return tuple(out)
+
+
 def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], size: float, read=None) -> dict[str, Motion]:
     """The motion of every body (the frame's is zero), found from the driver through the centres.
 
@@ -127,23 +176,40 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
         line = scene.frame.lines[driver.guide]
         start = Motion(0.0, 0j, driver.velocity * line.direction)
     motions = {FRAME: Motion(0.0, 0j), driver.link: start}
+    # with a reading: for the way to each link, (all its centres on the drawing, the shortest length [mm] read on it)
+    width = {driver.link: (True, float("inf"))}
     left = [name for name in scene.links if name != driver.link]
     while left:
+        best = None  # (width, j, motion)
         for j in left:
             p1j = by_pair[(FRAME, j)]
-            found = None
             # a body that shares a centre at infinity with j first (ω_j = ω_k, nothing measured), then the driver (the
             # rule the page states: ω_j from the driver's), then the others in the order they were found
             for k, known in sorted(motions.items(), key=lambda item: item[0] == FRAME or by_pair[(j, item[0])].point is not None):
                 if k == FRAME:
                     continue
                 found = _through(known, p1j, by_pair[(j, k)], size, read or _exact)
-                if found is not None:
+                if found is None:
+                    continue
+                if read is None:
+                    best = (0.0, j, found)
                     break
-            if found is not None:
-                motions[j] = found
-                left.remove(j)
+                # a student takes the path whose lengths read best: of the links found next, the one whose centres are
+                # on the drawing and whose shortest length on its way from the driver is longest (a length that reads 0
+                # on the drawing gives no ω)
+                pjk = by_pair[(j, k)]
+                measured = _lengths(known, p1j, pjk, read.k_l, size)
+                on = width[k][0] and (not measured or read.on_drawing(pjk.point, p1j.point, known.about if known.omega else None))
+                shortest = (on, min([width[k][1]] + measured))
+                if shortest[1] > 0.5 * read.step(0.0) and (best is None or shortest > best[0]):
+                    best = (shortest, j, replace(found, via=_via(known, by_pair.get((FRAME, k)), p1j, by_pair[(j, k)], read), from_link=k))
+            if best is not None and read is None:
                 break
+        if best is not None:
+            _, j, found = best
+            motions[j] = found
+            width[j] = best[0]
+            left.remove(j)
         else:
             j = left[0]
             p1j = by_pair[(FRAME, j)]

@@ -57,8 +57,12 @@ LABEL_PT = SMALL_PT + 1.5
 #: Gaps tried for a centre's label, in units of its mark's clearance; from LEADER_RING on, with a leader line.
 LABEL_RINGS = (1, 2, 3, 4.5, 6.5, 9, 12)
 LEADER_RING = 2.5
+#: the cost of a ring farther out from a centre for its label, in Kennedy lines crossed
+RING_COST = 1.5
 #: Room [mm] a centre's label keeps from what is drawn (the font's box is an estimate of the ink's).
 LABEL_CLEAR_MM = 0.3
+#: centres closer than this on the drawing [mm] are one spot: one label names them all
+CLUSTER_MM = 1.5
 
 
 def centre_text(label: str) -> str:
@@ -286,18 +290,23 @@ class _CentresDrawing:
         start = cmath.phase(away) if abs(away) > 1e-9 else math.pi / 4
         best = None
         for k in range(16 * len(LABEL_RINGS)):
+            if k % 16 == 0 and best is not None and best[0] <= RING_COST * (k // 16):
+                break  # no place farther out can cost less
             turn = (k % 16 + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
             d = cmath.exp(1j * (start + turn))
             ring = LABEL_RINGS[k // 16]
             gap = clear * ring + 0.6 + 0.5 * (abs(d.real) * w + abs(d.imag) * h)
             c = at + d * gap
             shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2).buffer(LABEL_CLEAR_MM, join_style=2)
-            hits = 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
+            # beside its own mark: each ring farther out costs as much as crossing RING_COST dashed Kennedy lines (the
+            # linear-arm's P₂₃ went 8 mm from F to keep off the thin lines through it)
+            hits = RING_COST * (k // 16)
+            hits += 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
             hits += 1000 * sum(1 for o in self.words if shape.intersects(o))  # never over another label or name
             hits += 300 * sum(1 for o in self.bodies if shape.intersects(o))  # nor under a block, a support, its hatching
             # read as its own: nearer its own mark than any other centre's (or a joint's)
             own = abs(c - at)
-            hits += 200 * sum(1 for q in self.marks if abs(q - at) > 1e-6 and abs(c - q) < own)
+            hits += 200 * sum(1 for q in self.marks if abs(q - at) > 0.5 * CLUSTER_MM and abs(c - q) < own)
             f = self.frame
             if not (f.outer_lo.real <= c.real - w / 2 and c.real + w / 2 <= f.outer_hi.real and f.outer_lo.imag <= c.imag - h / 2 and c.imag + h / 2 <= f.outer_hi.imag):
                 hits += 100  # within the drawing's frame, whose size the page found beforehand
@@ -310,7 +319,7 @@ class _CentresDrawing:
                 hits += 10 * sum(1 for o in self.s.obstacles if line.intersects(o))
             if best is None or hits < best[0]:
                 best = (hits, c, leader)
-            if hits == 0:
+            if hits == RING_COST * (k // 16):
                 break
         _, c, leader = best
         if leader is not None:
@@ -360,8 +369,7 @@ class _CentresDrawing:
         for e in self.frame.edges:
             self.s.arrow(e.tail, e.tip, color=CENTRE_COLOUR, lw=1.0, head=2.4, gid=f"edge-{e.label}")
             self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}")
-            w, h = text_size(e.text, LABEL_PT)
-            self.words.append(box(e.at.real - w / 2, e.at.imag - h / 2, e.at.real + w / 2, e.at.imag + h / 2))
+        self.words += _edge_shapes(self.frame)  # no label over an edge arrow or its label
         # every mark first (each an obstacle), then the labels: a label keeps off every mark, not only those before it
         near = [c for c in self.r.centres if c.determined and c.label in self.frame.near]
         self.marks += [self.mm(z) for z in self.r.positions.values()]
@@ -376,15 +384,32 @@ class _CentresDrawing:
                 clear = 1.2
             self.marks.append(q)
             placed.append((centre, q, clear))
+        # centres at one spot of the drawing (the quick-return's P₃₅, P₃₆, P₄₅, P₄₆ at D) take one label, "P₃₅, P₃₆, …"
+        groups: list[list] = []
+        for item in placed:
+            near_group = [g for g in groups if any(abs(item[1] - other[1]) < CLUSTER_MM for other in g)]
+            merged = [item] + [x for g in near_group for x in g]
+            groups = [g for g in groups if g not in near_group] + [sorted(merged, key=lambda x: placed.index(x))]
+        labels = []
+        for group in sorted(groups, key=lambda g: placed.index(g[0])):
+            at = sum(x[1] for x in group) / len(group)
+            spread = max(abs(x[1] - at) for x in group)
+            text = ", ".join(centre_text(x[0].label) for x in group)
+            gid = "label-" + "-".join(x[0].label for x in group)
+            labels.append((at, text, gid, max(x[2] for x in group) + spread))
+            if len(group) > 1:  # the marks of one spot count as one: a label is nearer it than any other
+                self.marks = [m for m in self.marks if all(abs(m - x[1]) > 1e-9 for x in group)] + [at]
+
         # the most crowded first: a centre with marks close around it takes its place before its neighbours
         def crowd(item):
-            return -sum(1 for other in self.marks if abs(other - item[1]) < 8.0)
-        for centre, q, clear in sorted(placed, key=crowd):
-            self.label(q, centre_text(centre.label), f"label-{centre.label}", q - self.middle, clear)
+            return -sum(1 for other in self.marks if abs(other - item[0]) < 8.0)
+        for at, text, gid, clear in sorted(labels, key=crowd):
+            self.label(at, text, gid, at - self.middle, clear)
 
 
-def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> None:
-    """Bodies on a circle (1 at the top, clockwise), primary centres as sides, Kennedy ones as dashed diagonals."""
+def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en", caption: bool = True) -> None:
+    """Bodies on a circle (1 at the top, clockwise), primary centres as sides, Kennedy ones as dashed diagonals;
+    *caption* False leaves its heading and legend to the page (set in the page's typeface)."""
     names = list(result.numbers)
     n = len(names)
     at = {name: centre + DIAGRAM_R * cmath.exp(1j * (math.pi / 2 - 2 * math.pi * k / n)) for k, name in enumerate(names)}
@@ -401,6 +426,8 @@ def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en") -> Non
     for name, q in at.items():
         s.circle(q, 1.0, fc=INK, ec=INK, lw=0.3, gid=f"diagram-body-{result.numbers[name]}", zorder=4.0)
         s.text(q + 4.2 * unit(q - centre), result.numbers[name], size=HEADING_PT, gid=f"diagram-number-{result.numbers[name]}")
+    if not caption:
+        return
     s.text(centre - 1j * (DIAGRAM_R + 8.0), term("circle_diagram", lang), size=CAPTION_PT, weight="bold", gid="diagram-heading", obstacle=False)
     lines = []
     for part in term("circle_diagram_legend", lang).split("\n"):  # each part wrapped to the diagram's width
@@ -530,6 +557,37 @@ class CentresSizer:
         return frame.width, frame.height
 
 
+def _edge_shapes(frame: CentresFrame) -> list:
+    """The edge arrows and their labels [mm] as shapes (what the k_l caption and the near centres' labels keep off)."""
+    shapes = []
+    for e in frame.edges:
+        w, h = text_size(e.text, LABEL_PT)
+        shapes.append(LineString([(e.tail.real, e.tail.imag), (e.tip.real, e.tip.imag)]).buffer(1.2))
+        shapes.append(box(e.at.real - w / 2, e.at.imag - h / 2, e.at.real + w / 2, e.at.imag + h / 2).buffer(0.5))
+    return shapes
+
+
+def _caption_corner(frame: CentresFrame, caption: str, obstacles: list) -> tuple[complex, str, str]:
+    """Where the k_l caption goes: (anchor [mm], ha, va) of the first corner of the room, lower left first, whose box
+    crosses no edge arrow or its label (an arrow pulled back over the room ran over it on the quick-return's page),
+    and then the fewest of the mechanism's lines."""
+    w, h = text_size(caption, CAPTION_PT, "normal", True)
+    lo, hi = frame.lo, frame.hi
+    edges = _edge_shapes(frame)
+    best = None
+    for k, (x, y, ha, va) in enumerate(((lo.real, lo.imag, "left", "bottom"), (hi.real, lo.imag, "right", "bottom"),
+                                        (lo.real, hi.imag, "left", "top"), (hi.real, hi.imag, "right", "top"))):
+        x0 = x if ha == "left" else x - w
+        y0 = y if va == "bottom" else y - h
+        shape = box(x0, y0, x0 + w, y0 + h)
+        cost = (sum(1 for e in edges if shape.intersects(e)), sum(1 for o in obstacles if shape.intersects(o)), k)
+        if best is None or cost < best[0]:
+            best = (cost, complex(x, y), ha, va)
+        if cost[:2] == (0, 0):
+            break
+    return best[1], best[2], best[3]
+
+
 def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | None = None, legend: bool = True, diagram: bool = True,
                       room_min: float = ROOM_MIN, limit: tuple[float, float] | None = None, cycle=None):
     """The mechanism at k_l with every instant centre, and the circle diagram beside it, drawn into *ax*.
@@ -555,10 +613,12 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     (x0, y0), (x1, y1) = (frame.outer_lo.real, frame.outer_lo.imag), (frame.outer_hi.real, frame.outer_hi.imag)
     s = Sketch(ax, "centres")
     s.obstacles.extend(_shapes(artists))
-    # the scale, in the room's lower left corner (inside the frame the page sized)
-    s.text(complex(lo.real, lo.imag), scale_caption("k_l", fmt_number(k_l), "m/mm", lang), size=CAPTION_PT, ha="left", va="bottom", gid="scale", math=True)
+    # the scale, in a corner of the room (inside the frame the page sized) that no edge arrow or its label crosses
+    caption = scale_caption("k_l", fmt_number(k_l), "m/mm", lang)
+    at, ha, va = _caption_corner(frame, caption, s.obstacles)
+    s.text(at, caption, size=CAPTION_PT, ha=ha, va=va, gid="scale", math=True)
     drawing = _CentresDrawing(s, result, frame, lang)
-    drawing.words += _text_shapes(artists)
+    drawing.words += _text_shapes(artists) + [s.obstacles[-1]]
     drawing.bodies += _body_shapes(artists)
     drawing.kennedy_lines()
     drawing.centres()
@@ -586,10 +646,11 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     return xmax - xmin + 2 * MARGIN_MM, ymax - ymin + 2 * MARGIN_MM
 
 
-def draw_circle_diagram_into(ax, result, lang: str = "en") -> tuple[float, float]:
-    """The circle diagram alone, drawn into *ax* (one data unit a millimetre); returns its (width, height) [mm]."""
+def draw_circle_diagram_into(ax, result, lang: str = "en", caption: bool = True) -> tuple[float, float]:
+    """The circle diagram alone, drawn into *ax* (one data unit a millimetre); returns its (width, height) [mm]
+    (*caption* False: without its heading and legend, which a page sets as its text)."""
     s = Sketch(ax, "centres")
-    _circle_diagram(s, result, 0j, lang)
+    _circle_diagram(s, result, 0j, lang, caption)
     b = s.bounds
     ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
     ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM)

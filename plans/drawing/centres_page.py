@@ -18,6 +18,7 @@ import math
 
 from .._text import decimal_comma, math_name
 from ..i18n import term
+from ..centres.velocities import SHORT_READ_MM
 from ..report import table_error, table_number
 from .centres import centre_text
 
@@ -55,7 +56,10 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
     value, the relative error (of the vector for v).  *comparisons* from
     :func:`plans.compare.compare_centres`.  With *k_l* [m/mm] (the drawing's), a column
     more after P_1j: the reading P_1jM [mm] on the drawing, from which
-    v_M = |ω_j| · P_1jM × k_l (a dash for ω, and where P_1j is at infinity: the link translates).
+    v_M = |ω_j| · P_1jM × k_l (a dash where P_1j is at infinity: the link translates); for ω,
+    the lengths it was read from, P_1kP_jk / P_1jP_jk [mm] (:attr:`plans.centres.Motion.via`: the
+    path of centres the reading took), or ω_k (P_jk ∞) for a link that turns with link k (their centre at
+    infinity: nothing measured); a dash for the driver.
     """
     frame = result.scene.frame_number
     header = [term("quantity", lang), f"$P_{{{frame}j}}$", term("by_centres", lang), term("analytic", lang), term("rel_error", lang)]
@@ -70,12 +74,26 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
         centre = result.centre("frame", result.scene.home_of(name))
         if centre.point is None:
             return ["—"]
-        return [f"{abs(result.positions[name] - centre.point) / k_l:.1f}"]
+        mm = abs(result.positions[name] - centre.point) / k_l
+        return [f"{mm:.2f}" if mm < SHORT_READ_MM else f"{mm:.1f}"]  # as it is read (plans.centres.Reading)
+
+    def path(name: str) -> list[str]:
+        """The lengths ω was read from, as the rule writes them: ``P₁₂P₂₄ / P₁₄P₂₄ = 1.1 / 25.3`` (a dash where none)."""
+        if k_l is None:
+            return []
+        motion = result.motions[name]
+        via = motion.via
+        if not via and motion.from_link:  # through a centre at infinity: it turns with the other, nothing measured
+            return [f"$\\omega_{{{math_name(motion.from_link)}}}$ ({centre_text(result.centre(name, motion.from_link).label)} ∞)"]
+        if not via:
+            return ["—"]
+        segments = " / ".join(centre_text(a) + centre_text(b) for a, b, _ in via)
+        return [f"{segments} = {' / '.join(f'{mm:.2f}' if mm < SHORT_READ_MM else f'{mm:.1f}' for _, _, mm in via)}"]
 
     for name in result.scene.links:
         row = by.get(("links", name))
         if row is not None:
-            rows.append([f"$\\omega_{{{math_name(name)}}}$ [rad/s]", _about(result, name)] + (["—"] if k_l is not None else [])
+            rows.append([f"$\\omega_{{{math_name(name)}}}$ [rad/s]", _about(result, name)] + path(name)
                         + [_number(row.graphical), _number(row.analytic), table_error(row.rel_error)])
     for name in result.scene.report:
         row = by.get(("points", name))

@@ -129,14 +129,14 @@ def centres_svg(result, k_l: float, lang: str = "en", room_min: float | None = N
         return _fitted(fig, ax, width, height, lang)
 
 
-def circle_diagram_svg(result, lang: str = "en") -> SvgBlock:
-    """The circle diagram of the instant centres."""
+def circle_diagram_svg(result, lang: str = "en", caption: bool = True) -> SvgBlock:
+    """The circle diagram of the instant centres (*caption* False: without its heading and legend)."""
     from .centres import draw_circle_diagram_into
 
     with drawing_rc():
         fig = new_figure()
         ax = fig.add_axes([0, 0, 1, 1])
-        width, height = draw_circle_diagram_into(ax, result, lang)
+        width, height = draw_circle_diagram_into(ax, result, lang, caption)
         return _fitted(fig, ax, width, height, lang)
 
 

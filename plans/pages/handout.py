@@ -928,6 +928,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
     from ..errors import PlansError
 
     pages = []  # (h, result, comparisons, table, box) or (h, error)
+    sizers = {}
     k = k_l
     diagram = None
     for n, h in enumerate(positions, start=1):
@@ -939,12 +940,12 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
             pages.append((h, exc))
             continue
         if diagram is None:
-            diagram = (f"circle-{h.index}", circle_diagram_svg(result, lang))
+            diagram = (f"circle-{h.index}", circle_diagram_svg(result, lang, caption=False))
         # the drawing gets what the page leaves under its heading and the legend, over the table and the rules
         table = centres_page_table(result, comparisons, lang)
         box = (TEXT_WIDTH, min(CENTRES_DRAWING_MAX, TEXT_HEIGHT - CENTRES_PAGE_TEXT - CENTRES_ROW * len(table)))
         # sizes from geometry (two drawings of the mechanism alone, plans.drawing.centres.CentresSizer)
-        sizer = CentresSizer(result, lang, room_min=ROOM_MIN, cycle=_centres_cycle(h))
+        sizer = sizers[h.index] = CentresSizer(result, lang, room_min=ROOM_MIN, cycle=_centres_cycle(h))
         for _ in range(24):
             width, height = sizer.size(k, box)
             if width <= box[0] + 0.5 and height <= box[1] + 0.5:
@@ -968,11 +969,14 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         if len(page) > 2:
             h, result = page[0], page[1]
             try:
-                read = instant_centres(h.scene, h.analytic.structure, k_l=k, precision=h.scene.scales.precision)
-            except PlansError:
-                continue  # a reading that leaves a link undetermined (two centres one point on the drawing): exact values
+                frame = sizers[h.index].frame(k, page[4])  # the centres drawn where they are: the lengths read
+                read = instant_centres(h.scene, h.analytic.structure, k_l=k, precision=h.scene.scales.precision,
+                                       room=(frame.lo * k, frame.hi * k))
+            except PlansError:  # every path of centres has two on one spot of the drawing: exact values, said on the page
+                pages[n] = page[:4] + (page[4], term("centres_read_exact", lang))
+                continue
             comparisons = compare_centres(h.analytic, read)
-            pages[n] = (h, result, comparisons, centres_page_table(read, comparisons, lang), page[4])
+            pages[n] = (h, result, comparisons, centres_page_table(read, comparisons, lang, k_l=k), page[4])
     _centres_method(doc, diagram, k, lang, drawn[0][1] if drawn else None)
     for page in pages:
         _centres_page(doc, page, k, blocks, lang, multi)
@@ -995,15 +999,14 @@ def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
     kennedy = term("kennedy_theorem", lang)
     doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=TEXT_PT)
     if diagram is not None and result is not None:
-        doc.beside(diagram, [], [term("centres_legend", lang), term("centres_edge_legend", lang)]
+        circle = f"{term('circle_diagram', lang)}: {term('circle_diagram_legend', lang).replace(chr(10), ' ')}"
+        doc.beside(diagram, [], [circle, term("centres_legend", lang), term("centres_edge_legend", lang)]
                    + centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
         doc.tables([(term("centres_order", lang), centres_order_table(result, lang))], aligns="(left, left)")
 
 
 def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
     """The page of instant centres of one position (:func:`_centres_pages`), headed by the position in one line."""
-    from ..drawing.centres_page import centres_rules
-
     h = page[0]
     where = f"{term('position', lang)} {h.index}:  {h.label}"
     doc.heading(f"{term('instant_centres', lang)} — {where}" if multi else f"{term('instant_centres', lang)}:  {h.label}",
@@ -1011,10 +1014,11 @@ def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
     if len(page) == 2:
         doc.line(str(page[1]), size=TEXT_PT)
         return
-    _, result, _, table, _ = page
+    result, table = page[1], page[3]
     doc.figure(f"centres-{h.index}", blocks[h.index][1])
-    doc.line(f"{term('centres_legend', lang)};  {term('centres_edge_legend', lang)}", size=SMALL_PT)
-    doc.beside(None, table, centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
+    if len(page) > 5:  # the values not read off the drawing, and why (the legend and rules: on the method's page)
+        doc.line(page[5], size=SMALL_PT)
+    doc.beside(None, table, [])
 
 
 def data_lines(scene, lang: str, law=None) -> list[str]:
