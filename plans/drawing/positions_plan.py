@@ -68,7 +68,7 @@ DETAIL_RATIOS = (2, 2.5, 4, 5, 10, 20)
 DETAIL_APART_MM = 2.2
 #: The largest radius [mm] of a detail (a crowd that needs more is stated under the plan).
 DETAIL_MOST_MM = 32.0
-#: A detail finds room within the drawing, or under it within this fraction of its size (not wider: a page is fitted by width).
+#: A detail finds room within the drawing, or beside it within this fraction of its size.
 DETAIL_GROW = 0.3
 #: The least radius [mm] of the ring on the plan (a crowd's neighbours show in its detail).
 RING_LEAST_MM = 3.5
@@ -302,9 +302,12 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
     for part in sorted(shapely.get_parts(disks), key=lambda g: (-g.centroid.y, g.centroid.x)):
         crowds.append([(text, at) for text, at in left_out if part.contains(Point(at.real, at.imag))])
     still = []
-    b = sketch.bounds  # the details find room within the drawing, or beside it within DETAIL_GROW of its size
+    lines = [LineString([(z.real, z.imag) for z in pts]) for pts, _, _, _ in figure if len(pts) >= 2]  # (no detail over them)
+    # the details find room within the drawing, or beside it within DETAIL_GROW of its size: under a wide drawing,
+    # right of a tall one (a page is filled by the drawing's longer side: the other has room to spare)
+    b = sketch.bounds
     grow = DETAIL_GROW * max(b.width, b.height)
-    limit = (b.xmin, b.ymin - grow, b.xmax, b.ymax)
+    limit = (b.xmin, b.ymin - grow, b.xmax, b.ymax) if b.width > b.height else (b.xmin, b.ymin, b.xmax + grow, b.ymax)
     names = 0
     for crowd in crowds:
         name = "I" * (names + 1) if names < 3 else ("IV", "V", "VI", "VII", "VIII", "IX", "X")[min(names - 3, 6)]
@@ -324,7 +327,7 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
         big = r * ratio
         title = f"{term('detail', lang)[:1].upper()}{term('detail', lang)[1:]} {name} ({localised(fmt_number(ratio), lang)} : 1)"
         tw, th = text_size(title, CAPTION_PT)
-        at = _free_spot(sketch, centre, big + 1.0, (tw + 1.0, th + 4.0), limit)
+        at = _free_spot(sketch, centre, big + 1.0, (tw + 1.0, th + 4.0), limit, lines)
         if at is None:
             still.extend(crowd)  # (no room for its detail: its marks are stated under the plan)
             continue
@@ -370,16 +373,16 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
     return still
 
 
-def _free_spot(sketch: Sketch, near: complex, radius: float, title: tuple[float, float], limit) -> complex | None:
+def _free_spot(sketch: Sketch, near: complex, radius: float, title: tuple[float, float], limit, lines=()) -> complex | None:
     """The centre [mm] of a disk of *radius* with a *title* (width, height [mm]) under it that meet no obstacle, in
     the drawing's bounds nearest *near*, else beside (under, or right of) the drawing where it grows least, within
-    *limit* (x0, y0, x1, y1 [mm]); None where there is no such room."""
+    *limit* (x0, y0, x1, y1 [mm]), clear of the drawing's *lines* too; None where there is no such room."""
     b = sketch.bounds
     step = 2.0
     x0, y0, x1, y1 = limit
     xs = np.arange(x0 + radius, x1 - radius + 1e-9, step)
     ys = np.arange(y0 + radius + title[1], y1 - radius + 1e-9, step)
-    obstacles = np.array([o for o in sketch.obstacles if not o.is_empty], dtype=object)
+    obstacles = np.array([o for o in list(sketch.obstacles) + list(lines) if not o.is_empty], dtype=object)
     if len(xs) and len(ys) and len(obstacles):
         spots = np.array([complex(x, y) for x in xs for y in ys])
         outside = (spots.imag - radius < b.ymin) | (spots.real + radius > b.xmax)
