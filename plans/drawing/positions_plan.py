@@ -292,7 +292,8 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
     says its name and ratio in the reader's language ("detail I (5 : 1)").
     Returns the marks numbered neither on the plan nor in a detail.
     Gids: ``detail-ring-<name>``, ``detail-mark-<name>``, ``detail-<name>``, ``detail-<name>-line``,
-    ``detail-<name>-dot-<number>``, ``detail-<name>-number-<number>``, ``detail-<name>-title``.
+    ``detail-<name>-dot-<number>``, ``detail-<name>-number-<number>`` (the number in ASCII: ``H3``, ``B0p`` for B₀′),
+    ``detail-<name>-title``.
     """
     from shapely.geometry import Point
 
@@ -356,7 +357,7 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
         sketch.text(at - 1j * (big + 3.0), title, size=CAPTION_PT, gid=f"detail-{name}-title", zorder=6.0)  # (before its numbers)
         big_marks = [(text, f(q)) for text, q in inside]
         for text, q in big_marks:
-            sketch.circle(q, MARK_R, fc="#000000", lw=0, gid=f"detail-{name}-dot-{text}", zorder=4.5, obstacle=True)
+            sketch.circle(q, MARK_R, fc="#000000", lw=0, gid=f"detail-{name}-dot-{_ascii(text)}", zorder=4.5, obstacle=True)
         rivals = np.array([q for _, q in big_marks], dtype=complex)
         # the marks lie along a path: their numbers either side of it in turn, across it
         ends = max(((q, w) for _, q in big_marks for _, w in big_marks), key=lambda qw: abs(qw[0] - qw[1]))
@@ -365,8 +366,8 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
         for turn, i in enumerate(order):
             text, q = big_marks[i]
             away = along * (1j if turn % 2 == 0 else -1j)
-            if (place_number(sketch, q, text, gid=f"detail-{name}-number-{text}", size=NUMBER_PT, prefer=away, rivals=rivals) is None
-                    and place_number(sketch, q, text, gid=f"detail-{name}-number-{text}", size=NUMBER_PT, prefer=away) is None):
+            if (place_number(sketch, q, text, gid=f"detail-{name}-number-{_ascii(text)}", size=NUMBER_PT, prefer=away, rivals=rivals) is None
+                    and place_number(sketch, q, text, gid=f"detail-{name}-number-{_ascii(text)}", size=NUMBER_PT, prefer=away) is None):
                 if any(text == t for t, _ in crowd):
                     still.append((text, centre))
         sketch.obstacles.append(Point(at.real, at.imag).buffer(big + 1.0))  # (the next detail finds room beside it)
@@ -518,6 +519,14 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         sketch.obstacles.append(label.buffer(LABEL_SPACE_MM, join_style=2))
         return artist
     return None
+
+
+def _ascii(text: str) -> str:
+    """A mark's number as a gid writes it: ``B₀′`` → ``B0p``."""
+    return text.translate(_ASCII)
+
+
+_ASCII = str.maketrans({**{c: str(n) for n, c in enumerate("₀₁₂₃₄₅₆₇₈₉")}, "′": "p"})
 
 
 def _sub(k: int) -> str:
