@@ -6,13 +6,17 @@ every reported point over the driver's cycle (a coupler curve) is drawn from
 the run's analytic sweep, broken where the mechanism cannot assemble.  The
 positions are numbered 0, 1, 2, … at the driver's moving point and at every
 moving reported point, as the course numbers them, where a number has room:
-beside its mark, else at the end of a short leader line, else not at all
-(no number is ever drawn over another mark or label).  Paths are drawn only
-where the mechanism assembles, and the caption names the positions that are
-not drawn and why.
+beside its mark, else at the end of a short leader line (no number is ever
+drawn over another mark or label, on a guide's hatching or in a guideway); marks
+too close together for their numbers are ringed and drawn again, enlarged n : 1,
+in a drafting detail ("detail I (5 : 1)", :func:`draw_details`) where each is
+numbered; only a mark that finds room in neither is listed under the plan.  The
+frame guides keep off the paths and every position's links: their lines and
+hatching are broken where one passes through.  Paths are drawn only where the
+mechanism assembles, and the caption names the positions that are not drawn and why.
 
 Gids: ``pos-link-<k>-<body>``, ``pos-path-<point>``, ``pos-position-<k>-<point>`` (a number; ``…-leader`` its leader line), ``pos-mark-<k>-<point>``,
-and the ``mech-…`` gids of the scheme of position 0 (prefix ``pos``).
+``pos-detail-…`` (see :func:`draw_details`), and the ``mech-…`` gids of the scheme of position 0 (prefix ``pos``).
 """
 
 from __future__ import annotations
