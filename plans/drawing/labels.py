@@ -90,6 +90,7 @@ def place_label(
     own: tuple[complex, complex] | None = None,
     rival_segments: tuple[tuple[complex, complex], ...] = (),
     by_box: bool = False,
+    leader_ok: bool = False,
 ) -> list:
     """Place one label (several names written ``"p, o, d"``) near *anchor*.
 
@@ -193,6 +194,8 @@ def place_label(
             else:
                 mine = _to_segment(center, own) if own is not None else abs(center - anchor)
                 astray = any(abs(center - q) < mine for q in rivals) or any(_to_segment(center, seg) < mine for seg in rival_segments)
+            if astray and leader_ok and leader_from is not None and gap >= leader_from:
+                astray = False
             score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - (OVERLAP_MM if astray else 0.0) - gap - 0.15 * turn - 1e-6 * order
             order += 1
             if best is None or score > best[0]:

@@ -25,7 +25,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 
 from .._text import SUBSCRIPT, math_name
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
-from .labels import place_label
+from .labels import LABEL_SPACE_MM, place_label
 from .numerals import localised, scale_caption
 
 from .style import (
@@ -61,6 +61,9 @@ __all__ = [
     "legend_entries",
     "ZERO_MM",
     "SHORT_MM",
+    "enlarged",
+    "whole_detail_ratios",
+    "detail_caption",
 ]
 
 #: A vector shorter than this [mm] is not drawn (it has no direction to show).
@@ -78,6 +81,8 @@ BESIDE_MM = 1.2
 #: π→m′ on π→a′, quick-return v_A4C = p→a₄ on p→d) is drawn on it, as the
 #: textbook draws it: its head stands on that shaft with a white rim this wide [pt].
 HALO_PT = 1.2
+#: Two plan labels' boxes sharing more than this [mm²] overlap (one is then placed before the other).
+LABEL_CLASH_MM2 = 0.01
 #: A label set further than this from its point [mm] gets a leader line.
 LEADER_FROM_MM = 2.0
 #: Label gaps [mm] tried in turn on a plan (the far ones with a leader line).
@@ -101,7 +106,47 @@ DETAIL_RATIOS = (2, 2.5, 4, 5, 10)
 #: The detail's name on the plan and over the detail (a drafting detail numeral).
 DETAIL_NAME = "I"
 
+#: A plan no larger than this [mm] across whose short components are given only in notes (quick-return position 4's
+#: acceleration plan, 22 mm at the plate's k_a) is drawn again whole, enlarged n : 1, beside itself (a detail)...
+SMALL_PLAN_MM = 30.0
+#: ...at most this large [mm].
+ENLARGED_MAX_MM = 120.0
+
 _UNITS = {"velocity": ("k_v", "(m/s)/mm"), "acceleration": ("k_a", "(m/s²)/mm")}
+
+
+def enlarged(plan, ratio: float):
+    """*plan* drawn *ratio* times larger: every image, vector end and construction line's point [mm] multiplied by
+    *ratio*, the scale factor divided by it (the same plan at k / n; nothing solved again)."""
+    from dataclasses import replace
+
+    def vector(v):
+        return replace(v, tail=complex(v.tail) * ratio, tip=complex(v.tip) * ratio)
+
+    steps = tuple(replace(s, known=tuple(vector(v) for v in s.known), found=tuple(vector(v) for v in s.found),
+                          lines=tuple(replace(cl, through=complex(cl.through) * ratio) for cl in s.lines)) for s in plan.steps)
+    return replace(plan, scale=plan.scale / ratio, images={k: complex(z) * ratio for k, z in plan.images.items()},
+                   vectors=tuple(vector(v) for v in plan.vectors), steps=steps)
+
+
+def whole_detail_ratios(plan) -> tuple[float, ...]:
+    """The ratios n, largest first, at which a small *plan* is drawn again whole beside itself (a detail; none for a plan
+    larger than :data:`SMALL_PLAN_MM`, one without components too short for an arrow, or one with a crowd detailed
+    within it): each makes it at most :data:`ENLARGED_MAX_MM` across and draws one more of its short vectors as an arrow."""
+    vectors = vectors_drawn(plan)
+    shorts = [v for v in vectors if v.length < SHORT_MM]
+    if not shorts or _crowds(plan, plan.images, vectors):
+        return ()
+    zs = [0j] + [complex(z) for z in plan.images.values()] + [complex(v.tip) for v in vectors]
+    extent = max(max(z.real for z in zs) - min(z.real for z in zs), max(z.imag for z in zs) - min(z.imag for z in zs))
+    if extent >= SMALL_PLAN_MM:
+        return ()
+    return tuple(n for n in reversed(DETAIL_RATIOS) if extent * n <= ENLARGED_MAX_MM and any(v.length * n >= SHORT_MM for v in shorts))
+
+
+def detail_caption(ratio: float, lang: str = "en") -> str:
+    """The heading of a plan's whole detail, in the reader's language: ``detail I (5 : 1)``."""
+    return f"{term('detail', lang)} {DETAIL_NAME} ({fmt_number(ratio)} : 1)"
 
 
 def _same(v, w) -> bool:
@@ -361,12 +406,13 @@ def _check(z: complex, what: str) -> complex:
 
 
 def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True, detail: bool = True,
-                   heading: bool = True) -> None:
+                   heading: bool = True, whole: float | None = None) -> None:
     """Draw *plan* into *sketch* (one data unit = 1 mm): what :func:`draw_plan` does on a page's own Sketch.
 
     *caption* False leaves out the heading, scale and legend; *legend* False only the legend;
     *detail* False the enlarged detail of crowded images; *heading* False the heading and the
-    scale factor only (a page that states them itself keeps the notes on short vectors).
+    scale factor only (a page that states them itself keeps the notes on short vectors); *whole* the ratio of a detail
+    of the whole plan drawn beside it (:func:`whole_detail_ratios`: its notes say which short vectors it draws).
     """
     images = {name: _check(z, f"image {name}") for name, z in plan.images.items()}
     vectors = vectors_drawn(plan)
@@ -464,20 +510,59 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     # every dot of the plan: a label stands nearer its own point than any other (it reads as that point's)
     where = {"pole-label": 0j} | {f"image-{name}": z for name, z in images.items()} | {f"end-{label}": z for z, _, label in ends}
-    for at, pieces in groups:
-        mine = [where[gid] for _, gid in pieces if gid in where]
-        rivals = tuple(q for q in where.values() if all(abs(q - m) > SAME_MM for m in mine))
-        place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM, rivals=rivals,
-                    by_box=True)
+
+    def place_labels(order: list[int], led: frozenset = frozenset()) -> list[tuple[int, int]]:
+        """Place the groups' labels in *order* (those in *led* may stand off with a leader); the pairs (later, earlier)
+        whose boxes overlap."""
+        boxes: list[tuple[int, object]] = []
+        clashes = []
+        for i in order:
+            at, pieces = groups[i]
+            mine = [where[gid] for _, gid in pieces if gid in where]
+            rivals = tuple(q for q in where.values() if all(abs(q - m) > SAME_MM for m in mine))
+            place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM, rivals=rivals,
+                        by_box=True, leader_ok=i in led)
+            drawn = sketch.obstacles[-1].buffer(-LABEL_SPACE_MM, join_style=2)  # the label's own box
+            clashes += [(i, j) for j, other in boxes if drawn.intersection(other).area > LABEL_CLASH_MM2]
+            boxes.append((i, drawn))
+        return clashes
+
+    # labels where they fit, the pole's and the coincident images' first; a label that lands on one placed before it
+    # (linear-arm position 2: n₁ 2.3 mm off the pole under "π, d′, q′, a′, f′") is placed before that one instead,
+    # the other taking the room it leaves, with a leader when it must stand off
+    order, led = list(range(len(groups))), frozenset()
+    state = sketch.checkpoint()
+    clashes = place_labels(order)
+    for _ in range(3):
+        if not clashes:
+            break
+        earlier = list(order)
+        led_more = led | {i for pair in clashes for i in pair}
+        for later, first in clashes:
+            if earlier.index(later) > earlier.index(first):
+                earlier.remove(later)
+                earlier.insert(earlier.index(first), later)
+        sketch.restore(state)
+        tried = place_labels(earlier, led_more)
+        if len(tried) < len(clashes):
+            order, led, clashes = earlier, led_more, tried
+        else:  # no better: as it was
+            sketch.restore(state)
+            place_labels(order, led)
+            break
 
     for ring, names in rings:
         name = next_name()
         for label in _detail(sketch, plan, vectors, images, ends, ring, names, name):
             in_detail.setdefault(label, name)
 
+    if whole:
+        for v in shorts:
+            if v.length * whole >= SHORT_MM:
+                in_detail.setdefault(v.label, DETAIL_NAME)
     if caption:
         _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, in_detail.get(v.label)) for v in shorts],
-                 along=alongside(plan), heading=heading, letters=letters)
+                 along=alongside(plan), heading=heading, letters=letters, narrow=bool(whole))
 
 
 def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[str]]]:
@@ -914,9 +999,9 @@ def notes_text(plan, notes, lang: str = "en", letters: dict[str, str] | None = N
 
 
 def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True, notes=(), along=(), heading: bool = True,
-             letters: dict[str, str] | None = None) -> None:
+             letters: dict[str, str] | None = None, narrow: bool = False) -> None:
     """Heading, scale factor, notes on vectors too short to draw and on vectors that lie one along the other, and the legend, below the plan
-    (*heading* False: no heading and scale)."""
+    (*heading* False: no heading and scale; *narrow*: the notes side by side only as far as the plan itself is wide, a detail beside it)."""
     symbol, units = _UNITS[plan.kind]
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
@@ -929,7 +1014,7 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
         y += 4.6
     # notes side by side as far as the plan is wide (a plan with many of them grows by a line, not by a line each):
     # first the segments too short for an arrow, then the directions of vectors that lie one along another
-    width = max(b.width, 60.0)
+    width = b.width if narrow else max(b.width, 60.0)
     items = [(text, f"short-{v.label}") for (v, _), text in zip(notes, notes_text(plan, notes, lang, letters))]
     if along:
         items += [(text, f"along-{along[0][0].label}" + (f"-{k}" if k else "")) for k, text in enumerate(along_note(plan, along, lang))]
