@@ -50,6 +50,7 @@ __all__ = [
     "aliases",
     "alongside",
     "pole_text",
+    "at_rest_texts",
     "along_note",
     "kinds_drawn",
     "vector_math",
@@ -198,13 +199,14 @@ def vector_math(label: str) -> str:
 
 #: The letter of a Coriolis component's end as textbooks letter it...
 CORIOLIS_LETTER = "k"
-#: ...and the one used when an image of the scene is lettered k (linear-arm's point K: k′ beside k₁ would read as
-#: the images of K and of its point on link 1).  No point name is Greek.
-CORIOLIS_LETTER_ELSE = "κ"
+#: ...and, when an image of the scene is lettered k (linear-arm's point K: its image k′ beside a Coriolis end k or κ
+#: reads as one letter), the Coriolis component's own symbol as the legend, the equations and the readings write it
+#: (aᵏ; aᵏ₁, aᵏ₂ in the order of the equations when there are several), the component named at its end.
+CORIOLIS_LETTER_ELSE = "aᵏ"
 
 
 def coriolis_letter(plan=None) -> str:
-    """The letter of the Coriolis components' ends on *plan*: ``k``, or ``κ`` when an image of a scene point is lettered k."""
+    """The letter of the Coriolis components' ends on *plan*: ``k``, or ``aᵏ`` when an image of a scene point is lettered k."""
     images = getattr(plan, "images", {}) or {}
     points = getattr(plan, "points", None)
     for name in images:
@@ -217,7 +219,7 @@ def coriolis_letter(plan=None) -> str:
 def end_letters(vectors, plan=None) -> dict[str, str]:
     """Vector label -> the letter of its end point, as textbooks letter the plan: normal
     components end at n₁, n₂, …, Coriolis components at k (k₁, k₂, … when there are several;
-    κ, κ₁, … when the scene has a point K, see :func:`coriolis_letter`)."""
+    aᵏ, aᵏ₁, … when the scene has a point K, see :func:`coriolis_letter`)."""
     out = {}
     for kind, letter in (("normal", "n"), ("coriolis", coriolis_letter(plan))):
         these = [v for v in vectors if v.kind == kind]
@@ -242,6 +244,7 @@ def segment(plan, v, letters: dict[str, str] | None = None) -> str:
             ends.setdefault(letters[w.label], complex(w.tip))
     sub = v.label.partition("_")[2]
     points = getattr(plan, "points", None) or {}
+    rest = at_rest_texts(plan)
 
     def written(name: str) -> str:
         return "".join(points[name]) if name in points else name.rstrip("′").upper()
@@ -258,13 +261,14 @@ def segment(plan, v, letters: dict[str, str] | None = None) -> str:
         here = [name for name, w in plan.images.items() if abs(w - z) <= SAME_MM]
         named = [name for name in here if fits(name, tail)]
         if named:
-            return image_text(max(named, key=lambda n: fits(n, tail)), points)
+            best = max(named, key=lambda n: fits(n, tail))
+            return rest.get(best) or image_text(best, points)
         for text, at in ends.items():
             if abs(at - z) <= SAME_MM:
                 return text
         if abs(z) <= SAME_MM:
             return pole_text(plan)
-        return image_text(here[0], points) if here else "?"
+        return (rest.get(here[0]) or image_text(here[0], points)) if here else "?"
 
     a = pole_text(plan) if v.kind == "absolute" else letter(complex(v.tail), True)
     b = letter(complex(v.tip), False)
@@ -338,6 +342,26 @@ def pole_text(plan) -> str:
     if pole in texts:
         return pole + ("ᵥ" if plan.kind == "velocity" else "ₐ")
     return pole
+
+
+def at_rest_texts(plan) -> dict[str, str]:
+    """Image label -> its label when the plan's vectors name the point at rest differently: a point of the frame only
+    (of no moving link's figure) whose image is at the pole, named by a vector from the pole with a link's number (six-bar: the sleeve 6 pivoted at the
+    frame point E, ``v_E5E6``, whose equations read v_E6 = 0: the image e at the pole is lettered ``e₆``, ``e₆′``)."""
+    points = getattr(plan, "points", None) or {}
+    on_links = {n for names in getattr(plan, "links", {}).values() for n in names}
+    out = {}
+    for name, z in plan.images.items():
+        if abs(z) > SAME_MM or name not in points or points[name][1] or name in on_links:
+            continue  # (a point of a moving link at rest for the instant keeps its letter: linear-arm's f′)
+        point = points[name][0]
+        written = {"".join(points[n]) for n in plan.images if n in points}
+        for v in plan.vectors:
+            m = re.search(rf"(?<![A-Za-z]){re.escape(point)}([0-9]+)$", v.label.partition("_")[2])
+            if abs(v.tail) <= SAME_MM and v.kind != "absolute" and m and point + m.group(1) not in written:
+                out[name] = point.lower() + m.group(1).translate(SUBSCRIPT) + name[len(name.rstrip("′")):]
+                break
+    return out
 
 
 def aliases(plan) -> dict[str, list[str]]:
@@ -507,6 +531,17 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             name = next_name()
             for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, at):
                 in_detail.setdefault(label, name)
+    if detail:
+        # a vector from the pole along a longer one (six-bar π m′ on π a′, 0.6° apart): its tip, under a millimetre off
+        # the other's shaft, is ringed and drawn enlarged, where the two read apart
+        for v, w in alongside(plan):
+            tip = complex(v.tip)
+            u = unit(complex(w.tip) - complex(w.tail))
+            foot = complex(w.tail) + u * ((tip - complex(w.tail)) * u.conjugate()).real
+            if all(abs(tip - c) > r for (c, r, _), _ in rings):
+                ring = _ring([tip, foot])
+                _draw_ring(sketch, ring)
+                rings.append((ring, []))
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     # every dot of the plan: a label stands nearer its own point than any other (it reads as that point's)
     where = {"pole-label": 0j} | {f"image-{name}": z for name, z in images.items()} | {f"end-{label}": z for z, _, label in ends}
@@ -642,8 +677,9 @@ def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[c
                 return
         groups.append((z, [piece]))
 
+    rest = at_rest_texts(plan)
     for name, z in images.items():
-        add(z, (image_text(name, getattr(plan, "points", None)), f"image-{name}"), SAME_MM)
+        add(z, (rest.get(name) or image_text(name, getattr(plan, "points", None)), f"image-{name}"), SAME_MM)
     for z, letter, label in ends:
         # a lettered end within *join* of an image shares its label whether its own vector or the next one is the
         # short one (quick-return position 4: n₁ 0.16 mm from a₄′, the tangential component between them)
