@@ -533,15 +533,17 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
                 in_detail.setdefault(label, name)
     if detail:
         # a vector from the pole along a longer one (six-bar π m′ on π a′, 0.6° apart): its tip, under a millimetre off
-        # the other's shaft, is ringed and drawn enlarged, where the two read apart
+        # the other's shaft, is ringed and drawn enlarged within the plan, where the two read apart
         for v, w in alongside(plan):
             tip = complex(v.tip)
             u = unit(complex(w.tip) - complex(w.tail))
             foot = complex(w.tail) + u * ((tip - complex(w.tail)) * u.conjugate()).real
-            if all(abs(tip - c) > r for (c, r, _), _ in rings):
-                ring = _ring([tip, foot])
-                _draw_ring(sketch, ring)
-                rings.append((ring, []))
+            ring = _ring([tip, foot])
+            if all(abs(tip - c) > r for (c, r, _), _ in rings) and (at := _spot(sketch, ring, within=True)) is not None:
+                _draw_ring(sketch, ring)  # (only where the plan has room for it: the page's plan keeps its scale)
+                name = next_name()
+                for label in _detail(sketch, plan, vectors, images, ends, ring, [], name, at):
+                    in_detail.setdefault(label, name)
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     # every dot of the plan: a label stands nearer its own point than any other (it reads as that point's)
     where = {"pole-label": 0j} | {f"image-{name}": z for name, z in images.items()} | {f"end-{label}": z for z, _, label in ends}
