@@ -110,8 +110,9 @@ DETAIL_NAME = "I"
 #: A plan no larger than this [mm] across whose short components are given only in notes (quick-return position 4's
 #: acceleration plan, 22 mm at the plate's k_a) is drawn again whole, enlarged n : 1, beside itself (a detail)...
 SMALL_PLAN_MM = 30.0
-#: ...at most this large [mm].
+#: ...at most this large [mm]; the plan's notes then wrapped this wide [mm].
 ENLARGED_MAX_MM = 120.0
+NARROW_NOTES_MM = 30.0
 
 _UNITS = {"velocity": ("k_v", "(m/s)/mm"), "acceleration": ("k_a", "(m/s²)/mm")}
 
@@ -145,9 +146,10 @@ def whole_detail_ratios(plan) -> tuple[float, ...]:
     return tuple(n for n in reversed(DETAIL_RATIOS) if extent * n <= ENLARGED_MAX_MM and any(v.length * n >= SHORT_MM for v in shorts))
 
 
-def detail_caption(ratio: float, lang: str = "en") -> str:
-    """The heading of a plan's whole detail, in the reader's language: ``detail I (5 : 1)``."""
-    return f"{term('detail', lang)} {DETAIL_NAME} ({fmt_number(ratio)} : 1)"
+def detail_caption(ratio: float, lang: str = "en") -> tuple[str, str]:
+    """The heading of a plan's whole detail in the reader's language, as (word, numeral and ratio): ``("detail", "I (5 : 1)")``,
+    written ``detail I (5 : 1)`` (the word over the rest where the detail is narrower than the whole)."""
+    return term("detail", lang), f"{DETAIL_NAME} ({fmt_number(ratio)} : 1)"
 
 
 def _same(v, w) -> bool:
@@ -1052,14 +1054,24 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
         y += 4.6
     # notes side by side as far as the plan is wide (a plan with many of them grows by a line, not by a line each):
     # first the segments too short for an arrow, then the directions of vectors that lie one along another
-    width = b.width if narrow else max(b.width, 60.0)
+    width = max(b.width, NARROW_NOTES_MM) if narrow else max(b.width, 60.0)
     items = [(text, f"short-{v.label}") for (v, _), text in zip(notes, notes_text(plan, notes, lang, letters))]
+    if narrow:
+        # beside a detail, a note wider than the plan says where it is drawn on a line of its own ("(выносной элемент I)")
+        split = []
+        for text, gid in items:
+            head, _, where = text.rpartition(" (")
+            if head and text_size(text, CAPTION_PT)[0] > width:
+                split += [(head, gid), ("(" + where, "where-" + gid[len("short-"):])]
+            else:
+                split.append((text, gid))
+        items = split
     if along:
         items += [(text, f"along-{along[0][0].label}" + (f"-{k}" if k else "")) for k, text in enumerate(along_note(plan, along, lang))]
     cursor, cursor_along = None, False
     for note, gid in items:
         w = text_size(note, CAPTION_PT)[0]
-        if cursor is None or cursor + w > x + width or (gid.startswith("along") and not cursor_along):
+        if cursor is None or cursor + w > x + width or gid.startswith("where-") or (gid.startswith("along") and not cursor_along):
             y -= 4.6
             cursor = x
         cursor_along = gid.startswith("along")

@@ -104,13 +104,14 @@ def plan_svg(plan, lang: str = "en", detail: bool = True, margin: float = MARGIN
     return plain()
 
 
-#: Gap [mm] between a plan and its whole detail beside it (besides their margins).
-DETAIL_GAP_MM = 2.0
+#: Gap [mm] between a plan's drawing and its whole detail beside it (besides the detail's margin).
+DETAIL_GAP_MM = 4.0
 
 
 def _beside_its_detail(plan, big, ratio: float, tag: str, lang: str, margin: float) -> SvgBlock:
     """The plan (its notes under it, one to a line where it is narrow) and, to its right, *big* (the plan enlarged
     *ratio* : 1) under its heading, tops level, in one block."""
+    from ._canvas import text_size
     from .plan_drawing import detail_caption, draw_plan_into
     from .style import LABEL_PT
 
@@ -123,10 +124,15 @@ def _beside_its_detail(plan, big, ratio: float, tag: str, lang: str, margin: flo
         large = Sketch(ax2, f"{tag}-detail")
         draw_plan_into(large, big, lang=lang, legend=False, caption=False, detail=False)
         b = large.bounds
-        large.text(complex(b.xmin, b.ymax + 3.0), detail_caption(ratio, lang), size=LABEL_PT, ha="left", va="bottom", gid="name", obstacle=False)
+        word, numeral = detail_caption(ratio, lang)
+        if text_size(f"{word} {numeral}", LABEL_PT)[0] > b.width:  # (a long word, "выносной элемент", over the rest)
+            large.text(complex(b.xmin, b.ymax + 3.0), numeral, size=LABEL_PT, ha="left", va="bottom", gid="name-ratio", obstacle=False)
+            large.text(complex(b.xmin, large.bounds.ymax + 1.0), word, size=LABEL_PT, ha="left", va="bottom", gid="name", obstacle=False)
+        else:
+            large.text(complex(b.xmin, b.ymax + 3.0), f"{word} {numeral}", size=LABEL_PT, ha="left", va="bottom", gid="name", obstacle=False)
         w1, h1 = small.bounds.width + 2 * margin, small.bounds.height + 2 * margin
         w2, h2 = large.bounds.width + 2 * margin, large.bounds.height + 2 * margin
-        x2 = w1 + DETAIL_GAP_MM
+        x2 = w1 - margin + DETAIL_GAP_MM  # (the plan's margin the gap's first part)
         width, height = x2 + w2, max(h1, h2)
         fig.set_size_inches(width / 25.4, height / 25.4)
         fit_axes(ax, small.bounds, margin, (0.0, height - h1), (width, height))
