@@ -93,8 +93,10 @@ def plan_svg(plan, lang: str = "en", detail: bool = True, margin: float = MARGIN
     from .plan_drawing import draw_plan_into, enlarged, whole_detail_ratios
 
     tag = "vel" if plan.kind == "velocity" else "acc"
-    plain = lambda: sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang,
-                             margin)
+
+    def plain() -> SvgBlock:
+        return sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang, margin)
+
     if not detail or room is None:
         return plain()
     for ratio in whole_detail_ratios(plan):
