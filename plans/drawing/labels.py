@@ -127,6 +127,10 @@ def place_label(
         *rivals* are measured to the label's box (its nearest side, as the eye
         joins a name to the nearest point: a long label "p, o, d, e"), not to
         its centre.
+    leader_ok : bool
+        A place far enough off to get a leader line (*leader_from*) is never
+        astray: the leader joins the label to its point (a long label of
+        coincident images kept off a neighbour's label).
 
     Returns
     -------
