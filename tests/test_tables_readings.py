@@ -105,7 +105,7 @@ def results_table(lines: list[str]) -> dict[tuple[str, str], tuple[str, str, str
     return out
 
 
-_SEGMENT = r"[a-zπκ][a-zπκ₀-₉′]*(?: [a-zπκ][a-zπκ₀-₉′]*)?"
+_SEGMENT = r"[a-zπκ][a-zπκᵏ₀-₉′]*(?: [a-zπκ][a-zπκᵏ₀-₉′]*)?"
 _READING = re.compile(rf"(?P<symbol>.+?) (?P<segment>{_SEGMENT}) (?P<mm>[0-9]+\.[0-9]+) (?P<factor>× [0-9.]+(?: ÷ [0-9.]+ \([^)]*\))?) "
                       r"(?P<value>[0-9.]+) (?P<unit>m/s²|m/s|rad/s²|rad/s)(?: (?P<sense>[↻↺]))?")
 

@@ -436,7 +436,7 @@ def build_handout(
     velocity_blocks, acceleration_blocks = {}, {}
 
     def fitting(plan, cell, **margin):
-        block = plan_svg(plan, lang, **margin)
+        block = plan_svg(plan, lang, room=cell, **margin)  # (a small plan drawn again whole, enlarged, when its cell has room)
         if block.width > cell[0] + 0.5:
             block = plan_svg(plan, lang, detail=False, **margin)
         return block
