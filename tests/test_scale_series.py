@@ -86,3 +86,23 @@ def test_every_factor_an_a3_sheet_states_is_standard(tmp_path, example, lang):
     assert {"kl", "kv", "ka"} <= {key for key, _ in stated}, stated
     off = sorted({(key, v) for key, v in stated if not _standard(v)})
     assert not off, off
+
+
+#: the line's words in each language, written out here (μ the diagrams' scales, not the plans' k)
+NOT_K = {"en": "the scales of these diagrams, not the plans'", "sr": "размере ових дијаграма, а не размере планова",
+         "ru": "масштабы этих диаграмм, а не масштабы планов", "bg": "мащабите на тези диаграми, а не мащабите на плановете",
+         "sl": "merila teh diagramov, ne merila načrtov"}
+
+
+@pytest.mark.parametrize("lang", sorted(NOT_K))
+def test_the_diagrams_page_says_its_mu_are_not_the_plans_k(lang):
+    """One plate holds the plans' k_v and the v–t diagram's μ_v, different values: the diagrams' page says in the
+    reader's language that its μ are its own scales."""
+    from plans.differentiation import kinematic_diagrams
+    from plans.drawing import kinematic_diagrams as kd
+
+    d = kinematic_diagrams(load(example_path("quick-return")), 12)
+    lines = kd.header_lines(d, lang)
+    (line,) = [x for x in lines if NOT_K[lang] in x]
+    assert line.startswith("$\\mu_{t}$, $\\mu_{s}$, $\\mu_{v}$, $\\mu_{a}$: ") and line.endswith("$k_{l}$, $k_{v}$, $k_{a}$")
+    assert lines.index(line) == [i for i, x in enumerate(lines) if "T/L" in x][0] + 1  # under the time scale
