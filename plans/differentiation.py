@@ -757,9 +757,9 @@ def rescaled(diagrams: KinematicDiagrams, height: float) -> KinematicDiagrams:
     return replace(diagrams, scales=scales, velocity=velocity, acceleration=acceleration)
 
 
-#: The height [mm] a page aims each diagram's ordinate range at (its round scale draws it between 3/4 of this and
-#: this: at least 40 mm).
-READABLE_HEIGHT = 54.0
+#: The height [mm] a page aims each diagram's ordinate range at (its round scale draws it between 1/1.6 of this and
+#: this, consecutive standard values differing by 1.6 at most (2.5 → 4): at least 40 mm).
+READABLE_HEIGHT = 64.0
 #: The shortest pole distance [mm] a page draws (a shorter one makes the rays too steep to carry a chord's slope).
 POLE_MIN = 10.0
 
@@ -822,7 +822,7 @@ def readable(diagrams: KinematicDiagrams, room: float, *, height: float = READAB
     """The same diagrams at the round scales a page prints them readably (the construction's numbers unchanged).
 
     μ_s (rad/mm or m/mm), μ_v and μ_a are the smallest round values of the standard's series (1, 1.5, 2, 2.5, 4, 5, 7.5 × 10ⁿ, :data:`plans.rounding.STANDARD_MANTISSAS`, as the plans' k) that draw each
-    diagram's ordinate range (its values with the abscissa) at most *height* mm tall — so at least ¾ of it; the
+    diagram's ordinate range (its values with the abscissa) at most *height* mm tall — so at least 1/1.6 of it (2.5 → 4, the standard series' widest step); the
     pole distances follow, H₁ = μ_s/(μ_t·μ_v) and H₂ = μ_v/(μ_t·μ_a) [mm], at least :data:`POLE_MIN`.  *room*
     [mm] is what the page gives the abscissa and the longer pole together (L + max(H₁, H₂)): L is the longest
     whole number of millimetres per interval within *length_max* (as :func:`abscissa_length`) with which both
