@@ -18,8 +18,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["round_up", "round_down", "STANDARD_MANTISSAS", "TEXTBOOK_MANTISSAS", "DRAWING_SCALES", "drawing_scale_up",
-           "drawing_scale_down", "is_standard"]
+__all__ = ["round_up", "round_down", "STANDARD_MANTISSAS", "TEXTBOOK_MANTISSAS", "is_standard"]
 
 #: The one series of every scale a page states: m·10ⁿ with m among these, the reduction scales of GOST 2.302
 #: (1:1, 1:2, 1:2.5, 1:4, 1:5, 1:10, 1:15, 1:20, 1:25, 1:40, 1:50, 1:75, 1:100 …) read as mantissas.
@@ -28,13 +27,6 @@ STANDARD_MANTISSAS = (1, 1.5, 2, 2.5, 4, 5, 7.5)
 #: where a value must draw its figure 60–120 mm long (consecutive values differ by 2 at most), the automatic
 #: factor of one construction (:func:`plans.graphical.scales.round_scale`) and of the diagrams' first draft.
 TEXTBOOK_MANTISSAS = (1, 2, 2.5, 5)
-#: The mechanism's drawing scales as k_l [m/mm]: GOST 2.302's, 1:N drawn at k_l = N/1000 — the enlargements 100:1,
-#: 50:1, 40:1, 20:1, 10:1, 5:1, 4:1, 2.5:1, 2:1, full size 1:1, the reductions 1:2, 1:2.5, 1:4, 1:5, 1:10, 1:15,
-#: 1:20, 1:25, 1:40, 1:50, 1:75, 1:100, 1:200, 1:400, 1:500, 1:1000 (its 1:800 left out: 8 is not in the series).
-#: Every one is in :data:`STANDARD_MANTISSAS`; the series itself is not GOST's in every decade (1:7.5, 1:1.5, 1:250
-#: are not scales of the standard), so k_l takes these.
-DRAWING_SCALES = (1e-05, 2e-05, 2.5e-05, 5e-05, 0.0001, 0.0002, 0.00025, 0.0004, 0.0005, 0.001, 0.002, 0.0025, 0.004,
-                  0.005, 0.01, 0.015, 0.02, 0.025, 0.04, 0.05, 0.075, 0.1, 0.2, 0.4, 0.5, 1.0)
 
 
 def round_up(need: float, mantissas=STANDARD_MANTISSAS) -> float:
@@ -57,22 +49,6 @@ def round_down(below: float, mantissas=STANDARD_MANTISSAS) -> float:
             if value <= below * (1 + 1e-12):
                 return value
         n -= 1
-
-
-def drawing_scale_up(need: float) -> float:
-    """The smallest k_l [m/mm] of :data:`DRAWING_SCALES` not below *need* > 0; beyond them (a mechanism drawn finer
-    than 100:1 or coarser than 1:1000) the textbook's 1, 2, 2.5, 5 × 10ⁿ, as GOST 2.302 goes on (1:2000, 1:5000 …,
-    200:1, 500:1 …)."""
-    if DRAWING_SCALES[0] <= need * (1 - 1e-12) and need * (1 - 1e-12) <= DRAWING_SCALES[-1]:
-        return next(k for k in DRAWING_SCALES if k >= need * (1 - 1e-12))
-    return round_up(need, TEXTBOOK_MANTISSAS)
-
-
-def drawing_scale_down(below: float) -> float:
-    """The largest k_l [m/mm] of :data:`DRAWING_SCALES` not above *below* > 0 (beyond them as :func:`drawing_scale_up`)."""
-    if DRAWING_SCALES[0] <= below * (1 + 1e-12) and below * (1 + 1e-12) <= DRAWING_SCALES[-1] * (1 + 1e-9):
-        return next(k for k in reversed(DRAWING_SCALES) if k <= below * (1 + 1e-12))
-    return round_down(below, TEXTBOOK_MANTISSAS)
 
 
 def is_standard(value: float, mantissas=STANDARD_MANTISSAS) -> bool:

@@ -25,15 +25,15 @@ def _title_block(page: str) -> str | None:
     return found[-1] if found else None
 
 
-#: The plate's k_l: the smallest drawing scale of GOST 2.302 (… 1:4, 1:5, 1:10, 1:15 …, k_l = N/1000 m/mm for 1:N)
-#: with which the drawing fits its box.  quick-return, linear-arm: their plans of positions do not fit at 1:5,
-#: 0.005 m/mm (with the former finer series 0.006 was the finest that fitted), so the standard's next, 1:10 (0.01;
-#: 1:6 and 1:7.5 are not scales of the standard).  six-bar: its joints span 0.928 m vertically, 186 mm at 1:5,
-#: taller than any box of an A4 page's mechanism (≤ 150 mm), so 1:10, at which it is 93 mm.
+#: The plate's k_l: the smallest standard value (GOST 2.302, 1, 1.5, 2, 2.5, 4, 5, 7.5 × 10ⁿ m/mm) with which the
+#: drawing fits its box.  quick-return, linear-arm: their plans of positions do not fit at 0.005 m/mm (1:5; with the
+#: former finer series 0.006 was the finest that fitted), so the next standard value, 0.0075 (1:7.5).  six-bar: its
+#: joints span 0.928 m vertically, 186 mm at 0.005 m/mm, taller than any box of an A4 page's mechanism (≤ 150 mm),
+#: so 0.0075, at which it is 124 mm.
 @pytest.mark.parametrize("name, positions, lang, plate, count", [
-    ("quick-return", 12, "sr", "0,01", 12),  # the plan of positions: 0.55 m rocker on an A4 page
-    ("linear-arm", 8, "bg", "0,01", 8),
-    ("six-bar", None, "en", "0.01", 1),
+    ("quick-return", 12, "sr", "0,0075", 12),  # the plan of positions: 0.55 m rocker on an A4 page
+    ("linear-arm", 8, "bg", "0,0075", 8),
+    ("six-bar", None, "en", "0.0075", 1),
 ])
 def test_centres_at_the_plates_k_l(tmp_path, name, positions, lang, plate, count):
     doc = handout(load(example_path(name)), positions=positions, centres=True, lang=lang)

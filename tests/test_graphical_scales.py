@@ -130,13 +130,3 @@ def test_the_pages_standard_round_values_by_hand(need, up, down):
 
     assert round_up(need) == up and round_down(need) == down
     assert page_up(need) == up and page_down(need) == down
-
-
-@pytest.mark.parametrize("need, up, down", [(0.006, 0.01, 0.005), (0.0123, 0.015, 0.01), (0.06, 0.075, 0.05),
-                                            (0.3, 0.4, 0.2), (3e-4, 4e-4, 2.5e-4), (1.2e-5, 2e-5, 1e-5), (3.0, 5.0, 2.5)])
-def test_the_mechanisms_drawing_scales_by_hand(need, up, down):
-    # k_l = N/1000 m/mm at GOST 2.302's 1:N: … 4:1, 2.5:1, 2:1, 1:1, 1:2, 1:2.5, 1:4, 1:5, 1:10, 1:15 … 1:75, 1:100,
-    # 1:200, 1:400, 1:500, 1:1000, worked by hand (1:6, 1:7.5 are not among them); beyond 1:1000, 1, 2, 2.5, 5 × 10ⁿ
-    from plans.graphical.scales import round_down, round_up
-
-    assert round_up(need, "k_l") == up and round_down(need, "k_l") == down

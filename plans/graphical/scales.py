@@ -4,12 +4,10 @@ A scale factor k maps a physical quantity to millimetres of drawing:
 physical = k × drawn length.  Every factor a page states (handouts, A3
 sheets, centres and force pages) is m·10ⁿ with m in the standard's series
 :data:`STANDARD_MANTISSAS` = 1, 1.5, 2, 2.5, 4, 5, 7.5
-(:mod:`plans.rounding`), GOST 2.302's reduction scales read as mantissas
-(1:10, 1:15, 1:20, 1:25, 1:40, 1:50, 1:75, 1:100); k_v, k_a, μ_F use the
-series, and k_l [m/mm], the drawing scale 1 : (1000·k_l), is moreover one of
-the standard's own scales (:data:`plans.rounding.DRAWING_SCALES`: 1:1, 1:2,
-1:2.5, 1:4, 1:5, 1:10, 1:15 … 1:75, 1:100, 1:200 …; 1:7.5 is not one).  A
-page takes the smallest with which its drawing fits its box
+(:mod:`plans.rounding`): k_l [m/mm] is the drawing scale 1 : (1000·k_l),
+one of GOST 2.302's reduction scales (1:2, 1:2.5, 1:4, 1:5, 1:10, 1:15,
+1:20, 1:25, 1:40, 1:50, 1:75, 1:100 …), and k_v, k_a use the same
+series; a page takes the smallest with which its drawing fits its box
 (:func:`round_up`).  One construction on its own (``plans solve``, the
 first draft of a page) takes the textbook's coarser 1, 2, 2.5, 5 × 10ⁿ
 (:data:`MANTISSAS`, a subset of the standard's, so also standard): the
@@ -71,20 +69,14 @@ DRAWN_LARGEST = 1165.0
 _UNITS = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}
 
 
-def round_up(need: float, key: str | None = None) -> float:
-    """The smallest page factor not below *need*: m·10ⁿ with m in :data:`STANDARD_MANTISSAS`
-    (:func:`plans.rounding.round_up`); for *key* ``"k_l"`` (the mechanism's drawing scale) one of GOST 2.302's
-    (:func:`plans.rounding.drawing_scale_up`)."""
-    if key == "k_l":
-        return rounding.drawing_scale_up(need)
-    return rounding.round_up(need, STANDARD_MANTISSAS)
+def round_up(need: float, mantissas=STANDARD_MANTISSAS) -> float:
+    """The smallest m·10ⁿ (m in *mantissas*, the standard's by default) not below *need* (:func:`plans.rounding.round_up`)."""
+    return rounding.round_up(need, mantissas)
 
 
-def round_down(below: float, key: str | None = None) -> float:
-    """The largest page factor not above *below* (as :func:`round_up`: *key* ``"k_l"`` a GOST 2.302 scale)."""
-    if key == "k_l":
-        return rounding.drawing_scale_down(below)
-    return rounding.round_down(below, STANDARD_MANTISSAS)
+def round_down(below: float, mantissas=STANDARD_MANTISSAS) -> float:
+    """The largest m·10ⁿ (m in *mantissas*, the standard's by default) not above *below* (:func:`plans.rounding.round_down`)."""
+    return rounding.round_down(below, mantissas)
 
 
 def round_scale(largest: float, fallback: float = 1.0) -> float:

@@ -82,17 +82,16 @@ def plan_extent(plan) -> tuple[float, float]:
     return bbox([z * plan.scale for z in plan.images.values()] + [0j])
 
 
-def fit_factor(extent, box, fixed, key: str | None = None) -> float:
-    """The round factor with which a drawing of *extent* (physical) plus *fixed* [mm] fits *box* [mm] (*key*
-    ``"k_l"``: a drawing scale of the standard, :func:`plans.graphical.scales.round_up`)."""
+def fit_factor(extent, box, fixed) -> float:
+    """The round factor with which a drawing of *extent* (physical) plus *fixed* [mm] fits *box* [mm]."""
     need = 0.0
     for e, b, f in zip(extent, box, fixed):
         if e > 0:
             need = max(need, e / max(b - f, 0.25 * b))
-    return round_up(need, key) if need > 0 and math.isfinite(need) else 0.0
+    return round_up(need) if need > 0 and math.isfinite(need) else 0.0
 
 
-def fitted(draw, extent, box, k0: float, given: float | None, key: str | None = None):
+def fitted(draw, extent, box, k0: float, given: float | None):
     """(k, block): the round factor with which ``draw(k)`` fits *box*, measured (at most a few drawings), and the drawing at it.
 
     The part that does not scale (labels, margins, supports) is what the
@@ -104,13 +103,13 @@ def fitted(draw, extent, box, k0: float, given: float | None, key: str | None = 
         return given, draw(given)
     block = draw(k0)
     fixed = (block.width - extent[0] / k0, block.height - extent[1] / k0)
-    k = fit_factor(extent, box, fixed, key) or k0
+    k = fit_factor(extent, box, fixed) or k0
     for _ in range(6):
         if k != k0:
             block = draw(k)
         if block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5:
             break
-        k0, k = k, round_up(k * 1.0001, key)
+        k0, k = k, round_up(k * 1.0001)
     return k, block
 
 

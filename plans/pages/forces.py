@@ -282,12 +282,12 @@ def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, 
             fixed = size_drawn - size / k0
             if size > 0:
                 need = max(need, size / max(room - fixed, 0.3 * room))
-        k = round_up(need, "k_l") if need > 0 else k0
+        k = round_up(need) if need > 0 else k0
         for _ in range(6):
             block = free_bodies_svg(plans, k, lang, per_row, drawn)
             if fits(block):
                 break
-            k = round_up(k * 1.0001, "k_l")
+            k = round_up(k * 1.0001)
         if best is None or k < best[0]:
             best = (k, block)
     return best

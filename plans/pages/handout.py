@@ -365,7 +365,7 @@ def build_handout(
         extremes = run.other_extreme()
         zs += [z for g in extremes.values() for z in g.positions.values()]
         extent = _bbox(zs)
-        k_l_plate, first = _fitted(lambda k: positions_svg(run, k, lang, extremes), extent, POSITIONS_BOX, k_l0, given["k_l"], "k_l")
+        k_l_plate, first = _fitted(lambda k: positions_svg(run, k, lang, extremes), extent, POSITIONS_BOX, k_l0, given["k_l"])
     else:
         # one position: each drawing a region of its own, drawn large: the mechanism under the data with the
         # velocity equations under it (page 1), the velocity plan (page 2), the acceleration plan with its equations
@@ -373,7 +373,7 @@ def build_handout(
         room = _first_page_room(scene, lang, solved[0])
         extent = _bbox(solved[0].graphical.positions.values())
         k_l_plate, first = _fitted(lambda k: mechanism_svg(scaled(solved[0], "k_l", k).graphical, lang), extent,
-                                   (TEXT_WIDTH, min(max(room, SINGLE_MECHANISM[0]), SINGLE_MECHANISM[1])), k_l0, given["k_l"], "k_l")
+                                   (TEXT_WIDTH, min(max(room, SINGLE_MECHANISM[0]), SINGLE_MECHANISM[1])), k_l0, given["k_l"])
         # the velocity plan under the equations when page 1 leaves it room enough (a flat mechanism), else page 2
         room_v = room - first.height - VELOCITY_PAGE_TEXT
         if room_v < SINGLE_VELOCITY_MIN:
@@ -949,7 +949,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
             width, height = sizer.size(k, box)
             if width <= box[0] + 0.5 and height <= box[1] + 0.5:
                 break
-            k = round_up(k * max(width / box[0], height / box[1], 1.0001), "k_l")
+            k = round_up(k * max(width / box[0], height / box[1], 1.0001))
         pages.append((h, result, comparisons, table, box))
     drawn = [p for p in pages if len(p) > 2]
     blocks = {}
@@ -962,7 +962,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
             over = max(over, block.width / (box[0] + 0.5), block.height / (box[1] + 0.5))
         if over <= 1.0:
             break
-        k = round_up(k * over * 1.0001, "k_l")
+        k = round_up(k * over * 1.0001)
     # the table's values as a student reads them off the drawing at its k_l, to the handout's drafting precision
     for n, page in enumerate(pages):
         if len(page) > 2:

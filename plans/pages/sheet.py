@@ -220,7 +220,7 @@ def _ranked_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=N
             if size <= 0:
                 score = -math.inf
                 break
-            size = 1.0 / round_up(1.0 / size, SCALE_OF.get(kind))  # at the round factor it will be drawn at
+            size = 1.0 / round_up(1.0 / size)  # at the round factor it will be drawn at
             score += math.log(size)
             for length, mm in (needs or {}).get(kind, ()):
                 if length > 0:
@@ -458,11 +458,11 @@ def _factors_in(kinds, regions, extents, largest, samples, first, given, block_a
         def draw(k, kind=kind, key=key, i=i):
             return block_at(i, kind, {**scales, key: k})
 
-        scales[key], block = fitted(draw, extents[kind], boxes[kind], samples[i].scales[key], given.get(key), key)
+        scales[key], block = fitted(draw, extents[kind], boxes[kind], samples[i].scales[key], given.get(key))
         # finer while it still fits (what does not scale was over-reckoned): a step or three for one position's
         # drawing, one for several (each position's drawing of the kind must fit at it)
         for _ in range((3 if len(samples) == 1 else 1) if given.get(key) is None else 0):
-            finer = round_down(scales[key] * 0.9999, key)
+            finer = round_down(scales[key] * 0.9999)
             trials = (block_at(j, kind, {**scales, key: finer}) for j in [i] + [j for j in range(len(samples)) if j != i])
             if any(t.width > boxes[kind][0] + 0.5 or t.height > boxes[kind][1] + 0.5 for t in trials):  # (the first over ends it)
                 break
@@ -488,7 +488,7 @@ def _every_sample(samples, kinds, regions, first, given, block_at, construct_at)
         if not over:
             break
         for kind, f in over.items():
-            scales[SCALE_OF[kind]] = round_up(scales[SCALE_OF[kind]] * f * 1.0001, SCALE_OF[kind])
+            scales[SCALE_OF[kind]] = round_up(scales[SCALE_OF[kind]] * f * 1.0001)
     if any(block.width > boxes[kind][0] + 0.5 or block.height > boxes[kind][1] + 0.5
            for _, blocks in out.values() for kind, block in blocks.items()):
         return None  # drawings at given factors larger than this sheet's regions
@@ -688,11 +688,11 @@ def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: t
             path = np.asarray(run.cycle.points[p].r)
             zs.extend(complex(z) for z in path[np.isfinite(path.real) & np.isfinite(path.imag)])
     k0 = run.scales["k_l"] if k_l is None else k_l
-    k_l, block = fitted(lambda k: positions_svg(run, k, lang, extremes), bbox(zs), room, k0, None if k_l is None else k_l, "k_l")
+    k_l, block = fitted(lambda k: positions_svg(run, k, lang, extremes), bbox(zs), room, k0, None if k_l is None else k_l)
     for _ in range(6):  # a given factor coarser while it runs over the page
         if block.width <= room[0] + 0.5 and block.height <= room[1] + 0.5:
             break
-        k_l = round_up(k_l * max(block.width / room[0], block.height / room[1]) * 1.0001, "k_l")
+        k_l = round_up(k_l * max(block.width / room[0], block.height / room[1]) * 1.0001)
         block = positions_svg(run, k_l, lang, extremes)
     doc.plate = {"k_l": k_l}
     doc.sheet_number = number
