@@ -95,9 +95,8 @@ POLE_DISTANCES = (10.0, 12.0, 15.0, 20.0, 25.0, 30.0)
 ABSCISSA_MAX = 125.0
 #: The tallest a diagram's ordinate range may be drawn [mm].
 ORDINATE_MAX = 40.0
-#: Round mantissas of μ_s in the diagrams' first draft (:func:`diagram_scales`): the textbook's 1, 2, 2.5, 5 × 10ⁿ,
-#: a subset of the standard's series a page's diagrams use (:func:`readable`, :data:`plans.rounding.STANDARD_MANTISSAS`).
-TIME_MANTISSAS = rounding.TEXTBOOK_MANTISSAS
+#: Round mantissas of μ_t and μ_s (textbooks' 1, 2, 2.5, 5 × 10ⁿ).
+TIME_MANTISSAS = (1, 2, 2.5, 5)
 
 
 class DiagramsError(PlansError, ValueError):
@@ -757,11 +756,13 @@ def rescaled(diagrams: KinematicDiagrams, height: float) -> KinematicDiagrams:
     return replace(diagrams, scales=scales, velocity=velocity, acceleration=acceleration)
 
 
-#: The height [mm] a page aims each diagram's ordinate range at (its round scale draws it between 1/1.6 of this and
-#: this, consecutive standard values differing by 1.6 at most (2.5 → 4): at least 40 mm).
-READABLE_HEIGHT = 64.0
+#: The height [mm] a page aims each diagram's ordinate range at (its round scale draws it between 3/4 of this and
+#: this: at least 40 mm).
+READABLE_HEIGHT = 54.0
 #: The shortest pole distance [mm] a page draws (a shorter one makes the rays too steep to carry a chord's slope).
 POLE_MIN = 10.0
+#: Round mantissas of μ_s, μ_v, μ_a on a page (finer than the textbook's, so a diagram fills its height).
+PAGE_MANTISSAS = (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)
 
 
 def _extent(values) -> float:
@@ -804,16 +805,16 @@ def _rate_scale(extent: float, mu_below: float, mu_t: float, height: float, pole
     [mm] the pole distance that gives it (μ = μ_below/(μ_t·H)); H at least :data:`POLE_MIN` (a taller diagram
     then); *fits*: H within *pole_max* (else μ is the smallest round value with H ≤ *pole_max*, a shorter diagram)."""
     if extent <= 0:
-        mu = round_up(mu_below / (mu_t * min(20.0, pole_max)), rounding.STANDARD_MANTISSAS)
+        mu = round_up(mu_below / (mu_t * min(20.0, pole_max)), PAGE_MANTISSAS)
         return mu, mu_below / (mu_t * mu), True
-    mu = round_up(extent / height, rounding.STANDARD_MANTISSAS)
+    mu = round_up(extent / height, PAGE_MANTISSAS)
     pole = mu_below / (mu_t * mu)
     if pole < POLE_MIN:
-        mu = rounding.round_down(mu_below / (mu_t * POLE_MIN), rounding.STANDARD_MANTISSAS)
+        mu = rounding.round_down(mu_below / (mu_t * POLE_MIN), PAGE_MANTISSAS)
         pole = mu_below / (mu_t * mu)
     if pole <= pole_max:
         return mu, pole, True
-    mu = round_up(mu_below / (mu_t * pole_max), rounding.STANDARD_MANTISSAS)
+    mu = round_up(mu_below / (mu_t * pole_max), PAGE_MANTISSAS)
     return mu, mu_below / (mu_t * mu), False
 
 
@@ -821,8 +822,8 @@ def readable(diagrams: KinematicDiagrams, room: float, *, height: float = READAB
              length_max: float = ABSCISSA_MAX) -> KinematicDiagrams:
     """The same diagrams at the round scales a page prints them readably (the construction's numbers unchanged).
 
-    μ_s (rad/mm or m/mm), μ_v and μ_a are the smallest round values of the standard's series (1, 1.5, 2, 2.5, 4, 5, 7.5 × 10ⁿ, :data:`plans.rounding.STANDARD_MANTISSAS`, as the plans' k) that draw each
-    diagram's ordinate range (its values with the abscissa) at most *height* mm tall — so at least 1/1.6 of it (2.5 → 4, the standard series' widest step); the
+    μ_s (rad/mm or m/mm), μ_v and μ_a are the smallest round values (:data:`PAGE_MANTISSAS`) that draw each
+    diagram's ordinate range (its values with the abscissa) at most *height* mm tall — so at least ¾ of it; the
     pole distances follow, H₁ = μ_s/(μ_t·μ_v) and H₂ = μ_v/(μ_t·μ_a) [mm], at least :data:`POLE_MIN`.  *room*
     [mm] is what the page gives the abscissa and the longer pole together (L + max(H₁, H₂)): L is the longest
     whole number of millimetres per interval within *length_max* (as :func:`abscissa_length`) with which both
@@ -841,7 +842,7 @@ def readable(diagrams: KinematicDiagrams, room: float, *, height: float = READAB
     t, s = motion.points()
     vel, acc = diagrams.velocity, diagrams.acceleration
     extent_s = _extent(np.concatenate([motion.s, smooth(t, s, dense, period=motion.period)]))
-    mu_s = round_up(extent_s / height, rounding.STANDARD_MANTISSAS) if extent_s > 0 else 1.0
+    mu_s = round_up(extent_s / height, PAGE_MANTISSAS) if extent_s > 0 else 1.0
     extent_v = 0.0 if flat(diagrams, "v") is not None else _extent(np.concatenate([vel.rates, smooth(vel.middles, vel.rates, dense, period=motion.period)]))
     extent_a = 0.0 if flat(diagrams, "a") is not None else _extent(np.concatenate([acc.rates, smooth(acc.middles, acc.rates, dense, period=motion.period)]))
     longest = abscissa_length(intervals, length_max)

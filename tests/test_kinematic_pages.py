@@ -163,7 +163,7 @@ def test_a_constant_rate_is_said_not_drawn():
 
 @pytest.mark.parametrize("name, count", [("quick-return", 12), ("linear-arm", 8), ("six-bar", 12), ("four-bar", 12), ("ladder", 12)])
 def test_readable_scales_are_round_and_the_diagrams_tall(name, count):
-    from plans.rounding import STANDARD_MANTISSAS as PAGE_MANTISSAS
+    from plans.differentiation import PAGE_MANTISSAS
 
     d = kd.page_diagrams(kinematic_diagrams(plans.load(plans.example_path(name)), count), 175.0)
     sc = d.scales

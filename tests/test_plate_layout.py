@@ -275,7 +275,7 @@ def test_a_single_positions_drawings_are_each_drawn_large(reviewed):
     assert 0.15 / doc.scales["k_l"] >= 15.0, doc.scales["k_l"]
     for key in ("k_l", "k_v", "k_a"):  # round factors: m·10ⁿ, m one of the usual mantissas
         mantissa = doc.scales[key] / 10 ** math.floor(math.log10(doc.scales[key]) + 1e-9)
-        assert any(abs(mantissa - m) < 1e-9 for m in (1, 1.5, 2, 2.5, 4, 5, 7.5)), (key, doc.scales[key])
+        assert any(abs(mantissa - m) < 1e-9 for m in (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)), (key, doc.scales[key])
     # ω₃ … ω₆ as the plan gives them (the relative velocity's length at k_v over the link's length) against analytic
     for name, link in r.analytic.links.items():
         analytic = float(link.omega[0])

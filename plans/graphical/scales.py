@@ -1,21 +1,12 @@
 """Automatic round scale factors and the drafting precision of a measurement.
 
 A scale factor k maps a physical quantity to millimetres of drawing:
-physical = k × drawn length.  Every factor a page states (handouts, A3
-sheets, centres and force pages) is m·10ⁿ with m in the standard's series
-:data:`STANDARD_MANTISSAS` = 1, 1.5, 2, 2.5, 4, 5, 7.5
-(:mod:`plans.rounding`): k_l [m/mm] is the drawing scale 1 : (1000·k_l),
-one of GOST 2.302's reduction scales (1:2, 1:2.5, 1:4, 1:5, 1:10, 1:15,
-1:20, 1:25, 1:40, 1:50, 1:75, 1:100 …), and k_v, k_a use the same
-series; a page takes the smallest with which its drawing fits its box
-(:func:`round_up`).  One construction on its own (``plans solve``, the
-first draft of a page) takes the textbook's coarser 1, 2, 2.5, 5 × 10ⁿ
-(:data:`MANTISSAS`, a subset of the standard's, so also standard): the
+physical = k × drawn length.  Textbooks choose k among the round values
+1, 2, 2.5 and 5 × 10ⁿ so that the figure fills the page; plans chooses the
 smallest such value that draws the largest vector (or the larger side of the
 mechanism's bounding box) at most :data:`DRAWN_MAX` = 120 mm long, which
-then is more than :data:`DRAWN_MIN` = 60 mm long (consecutive values of the
-subset differ by a factor of 2 at most, which the standard's 2.5 → 4 would
-not keep to within 1.6).
+then is more than :data:`DRAWN_MIN` = 60 mm long (consecutive round values
+differ by a factor of 2 at most).
 
 A scale factor given by the user (an argument, or the scene's ``[scales]``)
 must draw the figure at least :data:`DRAWN_LEAST` = 1 mm and at most
@@ -37,11 +28,10 @@ import math
 import sys
 
 from .. import rounding
-from ..rounding import STANDARD_MANTISSAS, TEXTBOOK_MANTISSAS
 
 __all__ = [
     "MANTISSAS",
-    "STANDARD_MANTISSAS",
+    "PAGE_MANTISSAS",
     "round_up",
     "round_down",
     "DRAWN_MIN",
@@ -55,9 +45,10 @@ __all__ = [
     "check_scale",
 ]
 
-#: The round mantissas of one construction's automatic factor: the textbook's, a subset of the standard's
-#: :data:`STANDARD_MANTISSAS` with which every page's drawings fill their boxes.
-MANTISSAS = TEXTBOOK_MANTISSAS
+#: The round mantissas of a scale factor.
+MANTISSAS = (1, 2, 2.5, 5)
+#: The finer mantissas with which a page's drawings fill their boxes (handouts, the centres page).
+PAGE_MANTISSAS = (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8)
 #: The range [mm] the largest drawn length falls into.
 DRAWN_MIN = 60.0
 DRAWN_MAX = 120.0
@@ -69,13 +60,13 @@ DRAWN_LARGEST = 1165.0
 _UNITS = {"k_l": "m/mm", "k_v": "(m/s)/mm", "k_a": "(m/s²)/mm"}
 
 
-def round_up(need: float, mantissas=STANDARD_MANTISSAS) -> float:
-    """The smallest m·10ⁿ (m in *mantissas*, the standard's by default) not below *need* (:func:`plans.rounding.round_up`)."""
+def round_up(need: float, mantissas=PAGE_MANTISSAS) -> float:
+    """The smallest m·10ⁿ (m in *mantissas*, the pages' by default) not below *need* (:func:`plans.rounding.round_up`)."""
     return rounding.round_up(need, mantissas)
 
 
-def round_down(below: float, mantissas=STANDARD_MANTISSAS) -> float:
-    """The largest m·10ⁿ (m in *mantissas*, the standard's by default) not above *below* (:func:`plans.rounding.round_down`)."""
+def round_down(below: float, mantissas=PAGE_MANTISSAS) -> float:
+    """The largest m·10ⁿ (m in *mantissas*, the pages' by default) not above *below* (:func:`plans.rounding.round_down`)."""
     return rounding.round_down(below, mantissas)
 
 
