@@ -884,6 +884,13 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "Диаграмите не са построени",
         "sl": "Diagrami niso narisani",
     },
+    "kd_mu_not_k": {
+        "en": "{mu}: the scales of these diagrams, not the plans' {k}",
+        "sr": "{mu}: размере ових дијаграма, а не размере планова {k}",
+        "ru": "{mu}: масштабы этих диаграмм, а не масштабы планов {k}",
+        "bg": "{mu}: мащабите на тези диаграми, а не мащабите на плановете {k}",
+        "sl": "{mu}: merila teh diagramov, ne merila načrtov {k}",
+    },
     "chords_order": {
         "en": "the error of the chords falls as Δt²: with twice the positions, to about a quarter",
         "sr": "грешка метода тетива опада као Δt²: са двоструко више положаја на око четвртину",
