@@ -532,8 +532,11 @@ def row_texts(graphical, analytic, step: float | None = None, given: bool = Fals
     reader recomputes it from the table.  A *given* value (the driver's ω, a crank pin's v) is printed as
     given in both columns and has no error (:data:`NO_ERROR`), nor has a quantity printed as 0.
     """
-    if given:
-        return _magnitude(graphical), _magnitude(analytic), NO_ERROR
+    if given:  # to the reading's decimals where the plan draws it (v_A = 1.500, as the readings print it)
+        decimals = max(0, -math.floor(math.log10(step))) if step else None
+        if decimals is None:
+            return _magnitude(graphical), _magnitude(analytic), NO_ERROR
+        return _to_decimals(graphical, decimals), _to_decimals(analytic, decimals), NO_ERROR
     if step is None and graphical == analytic:  # the same number by both (exact readings): as given, no difference
         text = _magnitude(analytic)
         return text, text, NO_ERROR if text == "0" else table_error(0.0)

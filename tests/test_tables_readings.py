@@ -69,7 +69,7 @@ def _rows(lines: list[str], heading: str, row: re.Pattern) -> list[re.Match]:
     """The rows under *heading* matching *row*; a line that is not a row yet (a superscript set on a line of its
     own: ``a^n`` then ``AO …``) is joined to the next."""
     k = lines.index(heading) + 1
-    k = next(j for j in range(k, len(lines)) if lines[j].endswith("=")) + 1  # past the header row
+    k = next(j for j in range(k, len(lines)) if lines[j].endswith("= value")) + 1  # past the header row
     out, buffer = [], ""
     for line in lines[k:]:
         if line.endswith("readings") or line == "Graphical and analytic values":
