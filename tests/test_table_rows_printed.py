@@ -23,7 +23,8 @@ SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 NUMBER = r"−?\d+(?:[.,]\d+)?"
 CELL = rf"{NUMBER}(?: ∠ {NUMBER}°)?"
 ERROR = rf"(?:—|0|\d[.,]\d·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)"
-ROW = re.compile(rf"^\s*(?P<q>\S+) \[[^\]]+\](?:\s+P\S+)?\s+(?P<g>{CELL})\s+(?P<a>{CELL})\s+(?P<e>{ERROR})\s*$")
+# the centres page puts its centre and the lengths ω was read from between the quantity and the values
+ROW = re.compile(rf"^\s*(?P<q>\S+) \[[^\]]+\](?:\s+P\S+)?(?:\s+\S.*?)??\s+(?P<g>{CELL})\s+(?P<a>{CELL})\s+(?P<e>{ERROR})\s*$")
 
 
 def _number(text: str) -> float:
