@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-__all__ = ["SUBSCRIPT", "subscript", "user_text", "math_name", "decimal_comma", "DECIMAL_COMMA"]
+__all__ = ["SUBSCRIPT", "SUPERSCRIPT", "subscript", "user_text", "math_name", "decimal_comma", "DECIMAL_COMMA"]
 
 #: languages whose numbers are written with a decimal comma (0,025)
 DECIMAL_COMMA = ("sr", "ru", "bg", "sl")
@@ -19,6 +19,8 @@ _DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
 
 #: Digits to subscript digits, for :meth:`str.translate`.
 SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+#: position numbers on the plan of positions (``E¹``), apart from a link's subscript (``E₁``)
+SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
 def subscript(name: str) -> str:

@@ -66,8 +66,8 @@ def test_every_drawn_number_is_beside_its_own_mark(drawn):
         if not t.get_gid().startswith("pos-position-"):
             continue
         text = t.get_text()
-        point = text.rstrip("₀₁₂₃₄₅₆₇₈₉")
-        index = int(text[len(point):].translate(str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")))
+        point = text.rstrip("⁰¹²³⁴⁵⁶⁷⁸⁹")  # (a position's number a superscript: E¹, apart from E₁, point E of link 1)
+        index = int(text[len(point):].translate(str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789")))
         assert index in solved, (name, text)
         mark = complex(solved[index].analytic.points[point].r[0]) / k_l  # [mm] by the analytic solution
         x, y = t.get_position()

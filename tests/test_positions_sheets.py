@@ -55,8 +55,8 @@ def test_the_plan_of_positions_draws_each_position_and_closed_paths(sheets):
     run, _, _, pdfs = sheets
     texts = _text(pdfs[2], plain=False)
     for point in numbered_points(run.scene):
-        assert f"{point}₁" in texts
-        assert f"{point}₀" not in texts  # position 0 is the scheme drawn in full: its points labelled once, by the scheme
+        assert f"{point}¹" in texts  # (a position's number a superscript, apart from a link's subscript)
+        assert f"{point}⁰" not in texts  # position 0 is the scheme drawn in full: its points labelled once, by the scheme
     artists = draw_positions_plan(run)
     by_gid = {}
     for artist in artists:

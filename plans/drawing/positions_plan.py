@@ -24,7 +24,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, box
 
-from .._text import SUBSCRIPT
+from .._text import SUPERSCRIPT
 from ..i18n import term
 from ..sweep import line_travel
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
@@ -98,7 +98,7 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     """Draw the plan of positions into a sketch (one data unit = 1 mm); *heading* False leaves out the heading and
     k_l (a page that states them), keeping the legend of the paths; *law* states the driver's law under it;
     *extremes* (label -> GraphicalSolution, ``{"0′": …}``) adds the output's other extreme position, dash-dotted,
-    its points numbered with the label (``E₀′``)."""
+    its points numbered with the label (``E⁰′``)."""
     runs = [r for r in positions_run.runs if r.ok]
     if not runs:
         raise ValueError("no position of the run could be solved: there is nothing to draw")
@@ -184,8 +184,8 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     for label, p, at in extreme_marks:
         sketch.circle(at, MARK_R, fc="#000000", lw=0, gid=f"mark-extreme-{p}", zorder=4.5, obstacle=True)
         away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
-        if place_number(sketch, at, f"{p}{label.translate(SUBSCRIPT)}", gid=f"position-extreme-{p}", size=NUMBER_PT, prefer=away, rivals=every) is None:
-            left_out.append(f"{p}{label.translate(SUBSCRIPT)}")
+        if place_number(sketch, at, f"{p}{label.translate(SUPERSCRIPT)}", gid=f"position-extreme-{p}", size=NUMBER_PT, prefer=away, rivals=every) is None:
+            left_out.append(f"{p}{label.translate(SUPERSCRIPT)}")
 
     # caption
     b = sketch.bounds
@@ -352,7 +352,10 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
 
 
 def _sub(k: int) -> str:
-    return str(k).translate(SUBSCRIPT)
+    """Position *k*'s number as the plan of positions writes it beside a point's mark: a superscript (``E¹``), apart
+    from a subscript, which names the point of a link (``E₁``, point E of link 1: ``v_E = v_E1 + v_EE1``, domain.md
+    §4) on the same page."""
+    return str(k).translate(SUPERSCRIPT)
 
 
 def _hull(pts: list[complex]) -> list[complex]:
