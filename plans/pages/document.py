@@ -388,9 +388,19 @@ class Document:
             else:
                 kept.append([line])
         for lines in kept:
-            words = " \\\n".join(self.words(line) for line in lines)
+            words = " \\\n".join(self.loop_line(line) for line in lines)
             self.body.append(f"#block(breakable: false, spacing: 0.6em)[#text(size: loops-size)[{words}]]\n" if len(lines) > 1
                              else f"#text(size: loops-size)[{words}]\n")
+
+    def loop_line(self, line: str) -> str:
+        """A line of loop equations as markup: a solution's results (``⇒ ω₄ = 1,946, ṡ_A = −0,01116``) each in a box,
+        so that a long line breaks between them, never inside one (``ω₄ =`` at a line's end, its value under it)."""
+        arrow = r"\ \Rightarrow\ "
+        if not (line.startswith("$") and line.endswith("$") and line.count("$") == 2 and arrow in line):
+            return self.words(line)
+        left, right = line[1:-1].split(arrow, 1)
+        results = ", ".join(f"#box[{self.words('$' + part + '$')}]" for part in right.split(r",\ "))
+        return self.words("$" + left + arrow.rstrip("\\ ") + "$") + " " + results
 
     def mark(self, name: str, solid: bool = False) -> None:
         """A mark in the flow that the laid-out document reports: its *name*, page and height on the page [mm

@@ -598,15 +598,19 @@ def build_handout(
 
     loops_of = [here[k] for k in chosen] or [sample]
     doc.section("loops")
-    doc.heading(term("loop_equations", lang), level=2)
     from ..loops import loop_equations
 
+    heading_at = len(doc.body)  # the heading kept with the first position's heading and the driver's equations under it
+    doc.heading(term("loop_equations", lang), level=2)
     doc.mark("loops-start")
     for h in loops_of:
         if multi:
             doc.heading(f"{term('position', lang)} {h.index}:  {h.label}", level=3)
         for block in loop_equations(h.analytic):
             doc.loop_block(block)
+            if heading_at is not None:
+                _kept(doc, heading_at)
+                heading_at = None
     doc.mark("loops-end", solid=True)
 
     loops_fitted = False
