@@ -266,7 +266,7 @@ def _centre(svg: str, gid: str) -> complex:
 
 def test_the_plan_of_positions_draws_the_other_extreme_position(quick_return_sr):
     """Position 0 is the output's extreme that starts the working stroke; 0′, the other, is drawn dash-dotted and
-    numbered (A₀′): the crank pin there lies at the crank angle plans.motion gives for 0′, as seen from O."""
+    numbered (A⁰′: a position's number a superscript, apart from a link's subscript): the crank pin there lies at the crank angle plans.motion gives for 0′, as seen from O."""
     import cmath
     import math
 
@@ -274,7 +274,7 @@ def test_the_plan_of_positions_draws_the_other_extreme_position(quick_return_sr)
 
     doc, _ = quick_return_sr
     svg = doc.images["positions"].decode()
-    assert 'id="positions-link-extreme-2"' in svg and "A₀′" in svg
+    assert 'id="positions-link-extreme-2"' in svg and "A⁰′" in svg
     other = strokes(doc.runs[0].scene).other_position  # the crank angle of 0′ [rad]
     drawn = _centre(svg, "positions-mark-extreme-A") - _centre(svg, "positions-pin-O")
     assert math.degrees(abs(cmath.phase(drawn / cmath.exp(1j * other)))) < 1.0

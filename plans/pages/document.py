@@ -120,7 +120,7 @@ def fitted(draw, extent, box, k0: float, given: float | None):
 #: a formula that must not break across lines: ``ω₂ = 6 rad/s``, ``$k_l$ = 0,006 m/mm``, ``|a_A| = 0`` (a name, ``=``, a
 #: number and its unit, if any; ``$…$`` math whole)
 _FORMULA = re.compile(r"(?:\$[^$]*\$|[^\s=$]+) = [−-]?\d+(?:[.,]\d+)*"
-                      r"(?: \(?(?:rad|m|mm|µm|s|N|kg|м|мм|с|мкм|Н|кг)(?![^\W\d_])[^\s,;]*)?|\$[^$]*\$")
+                      r"(?: \(?(?:rad|m|mm|µm|s|N|kg|м|мм|с|мкм|Н|кг)(?![^\W\d_])[^\s,;]*|(?=[\s;)]|,\s|,?$))|\$[^$]*\$")
 
 
 def formula_parts(line: str) -> list[tuple[str, bool]]:
