@@ -462,10 +462,13 @@ def _loads_table(plans, lang: str) -> list[list[str]]:
         for v in plan.vectors:
             if v.kind in _LOAD_KIND:
                 drawn.setdefault(v.label, (v.length, plan.precision))
+    # a resistance named as the course names it (the useful resistance), not as "a force"
+    resisting = {load.name for load in plans.graphical.scene.loads if load.kind == "resistance"}
     rows = [["", term("link", lang), term("kind", lang), "N, N·m", "mm ($μ_F$)"]]
     for f in plans.loads:
         length = drawn.get(f.label)
-        rows.append([_math(f.label, lang), f.body, term(_LOAD_KIND.get(f.kind, "external_force"), lang), f"{_number(abs(f.force))} N",
+        kind = "useful_resistance" if f.kind == "external" and f.label in resisting else _LOAD_KIND.get(f.kind, "external_force")
+        rows.append([_math(f.label, lang), f.body, term(kind, lang), f"{_number(abs(f.force))} N",
                      _reading(*length) if length else "—"])
     for c in plans.couples:
         if c.kind == "balancing" or c.moment == 0:
@@ -539,7 +542,7 @@ def _data_rows(scene, lang: str, loads=()) -> tuple[str, list[list[str]], list[s
     heading = term("force_data", lang)
     e = _offset(scene)
     if e is not None:
-        heading += f";  {term('offset_e', lang)} e = {_mm(e)} mm"
+        heading += f";  {term('offset_e', lang)}\u00a0e = {_mm(e)} mm"  # the word and its value on one line
     rows = [[term("link", lang), f"$m$ [{kg}]", term("mass_centre", lang), f"$J_{{S}}$ [{kg}·m²]"]]
     for name, mass in scene.masses.items():
         rows.append([name, _given(mass.mass), _centre_words(scene, mass, lang), _given(mass.inertia)])
@@ -556,7 +559,7 @@ def _data_rows(scene, lang: str, loads=()) -> tuple[str, list[list[str]], list[s
             continue
         at = term("load_at", lang).format(point=where, link=load.body)
         if load.kind == "resistance":
-            line = f"{name} = {_number(load.magnitude)} N, {at}, {term('against_velocity', lang).format(point=where)}"
+            line = f"{term('useful_resistance', lang)} {name} = {_number(load.magnitude)} N, {at}, {term('against_velocity', lang).format(point=where)}"
             acting = next((f for f in loads if f.label == load.name and abs(f.force) > 0), None)
             if acting is not None:
                 line += f" (∠ {math.degrees(math.atan2(acting.force.imag, acting.force.real)) % 360:.1f}°)"
@@ -747,10 +750,11 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         coarser = ";  " + term("free_bodies_coarser", lang).format(scale=f"$k_{{l}}$ = {_scale(plate_kl)} m/mm")
     doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}{coarser}", lang), size=SMALL_PT)
     doc.body.append(_legend(doc, f"{key}-bodies-legend", _body_kinds(plans), lang))
-    given_data = _table(doc, data, "(left, right, left, right)", data_heading) + "".join(
-        f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines)
+    given_data = _table(doc, data, "(left, right, left, right)", data_heading)
     given_loads_table = _table(doc, loads, "(left, left, left, right, right)", f"{term('loads', lang)}: {mu_words}")
+    # the two tables side by side, then g and the external loads across the page (a long line would narrow them)
     doc.body.append(f"#grid(columns: (auto, auto), column-gutter: {GUTTER}mm, align: top + left,\n  [{given_data}],\n  [{given_loads_table}])\n")
+    doc.body.append("".join(f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines))
 
     # 2. the force plans at one μ_F
     heading(f"{_lower(term('force_plans', lang))}; {mu_words}")

@@ -1,0 +1,89 @@
+"""The force pages and the forces table after the second teacher's review (issue 20, branch forces2).
+
+Expected words and units are typed here from the courses (the useful resistance: сила полезного сопротивления,
+сила на полезното съпротивление, сила корисног отпора, sila koristnega upora; Н, Н·м, рад/с, Вт in the Russian and
+Bulgarian courses), never read from the program's own tables.
+"""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+import plans
+from plans.scene import example_path
+
+USEFUL_RESISTANCE = {"en": "useful resistance", "sr": "сила корисног отпора", "ru": "сила полезного сопротивления",
+                     "bg": "сила на полезното съпротивление", "sl": "sila koristnega upora"}
+
+
+@pytest.fixture(scope="module")
+def run():
+    from plans.forces.compare import kinetostatics
+
+    return kinetostatics(plans.load(example_path("slider-crank-loads")))
+
+
+@pytest.mark.parametrize("lang", ["en", "sr", "ru", "bg", "sl"])
+def test_the_resistance_is_named_the_useful_resistance_on_the_data_page(run, lang):
+    from plans.pages.forces import force_document
+
+    source = force_document(run, lang)[0].source()
+    cell = r'text\(weight: "regular"\)\[([^\]]*)\]'
+    # the loads' table: the resistance's row (on the slider, link 4) says what the load is in the course's words
+    rows = re.findall(r'text\(weight: "regular"\)\[\$F_[^$]*\$\], ' + cell + ", " + cell, source)
+    kinds = [kind for link, kind in rows if link == '#"4"']  # (en: the inertia force F_Φ4 first)
+    assert kinds[-1] == f'#"{USEFUL_RESISTANCE[lang]}"' and len(kinds) <= 2
+    # and the input data's line of it
+    assert re.search(re.escape(f'#"{USEFUL_RESISTANCE[lang]} "') + r"#box\[\$F_", source)
+
+
+def _table(run, lang):
+    from plans.forces.report import forces_table
+
+    return forces_table(run, lang)
+
+
+@pytest.mark.parametrize("lang", ["ru", "bg"])
+def test_the_forces_table_writes_the_units_as_the_course_does(run, lang):
+    table = _table(run, lang)
+    lines = table.splitlines()
+    assert "ω = 150 рад/с, ε = 0 рад/с²" in lines[2]
+    loads = next(line for line in lines if line.endswith("[Н, Н·м]"))
+    assert loads
+    assert re.search(r"x \[м\] +y \[м\]", table)
+    assert re.search(r"\[Н\]; R_ij", table)
+    assert "N = -2077.57 Н ∥" in table and ") м\n" in table
+    assert re.search(r"M_ур \[Н·м\]", table)
+    assert re.search(r"\[Вт\]: M_ур·ω = ", table)
+    # no English unit symbol left outside the symbols of quantities (N: the normal force, Fx, ω…)
+    words = re.sub(r"\bN = ", "", table)
+    assert not re.search(r"(?<![\w/])(N|N·m|W|rad/s²?|m/s²?|m)(?![\w/])", words)
+
+
+@pytest.mark.parametrize("lang", ["en", "sr", "sl"])
+def test_the_forces_table_keeps_the_international_units_elsewhere(run, lang):
+    table = _table(run, lang)
+    assert "ω = 150 rad/s" in table and "[N, N·m]" in table and "[W]:" in table and "[N·m]" in table
+
+
+def test_the_json_keys_do_not_follow_the_language(run):
+    from plans.forces.report import forces_json
+
+    doc = forces_json(run)
+    assert {"reactions", "balancing"} <= set(doc)
+    assert "R_23" in doc["reactions"]
+
+
+def test_a_colon_after_a_math_name_in_the_loop_block_sits_outside_math():
+    from types import SimpleNamespace
+
+    from plans.pages.document import Document
+
+    doc = Document(plans.load(example_path("quick-return")), "sr")
+    doc.loop_block(SimpleNamespace(title="група 5–6", lines=["$z_{Q_E}$ = 0,52 i m"], origins=["E"]))
+    line = next(piece for piece in doc.body if "тачка вођице" in piece)
+    # Q_E in math, the colon in the text after it (a colon in math is a relation: a space before it)
+    assert re.search(r'\$Q_\(?E ?\)?\$#": тачка вођице', line), line
+    assert not re.search(r":[^$]*\$#\" тачка", line)
