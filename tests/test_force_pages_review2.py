@@ -87,3 +87,36 @@ def test_a_colon_after_a_math_name_in_the_loop_block_sits_outside_math():
     # Q_E in math, the colon in the text after it (a colon in math is a relation: a space before it)
     assert re.search(r'\$Q_\(?E ?\)?\$#": тачка вођице', line), line
     assert not re.search(r":[^$]*\$#\" тачка", line)
+
+
+# labels clear of the bodies' names and of each other --------------------------------------------------------------
+
+
+def _drawing_words(pdf: bytes):
+    """The words of the free bodies' drawing on the first page (pdftotext -bbox, mm): under the page's heading and
+    over the line that states the drawing's k_l."""
+    from sheet_pages import words
+
+    found = words(pdf)
+    heading = found[0][1][3]
+    scale = min(box[1] for word, box in found if re.search(r"/(mm|мм);", word))
+    return [(word, box) for word, box in found if box[1] > heading + 0.5 and box[3] < scale - 0.5]
+
+
+@pytest.mark.parametrize("example, lang, k_l", [("slider-crank-loads", "ru", 0.003), ("six-bar-loads", "en", 0.008),
+                                                ("quick-return-loads", "bg", 0.005), ("scotch-yoke-loads", "ru", 0.003)])
+def test_no_label_on_the_free_bodies_overlaps_a_name_or_another_label(example, lang, k_l):
+    """At each handout's plate k_l (the review's R₂₃ on "group 3–4 (II₂)" of the Russian slider-crank fails)."""
+    from sheet_pages import overlap
+
+    from plans.forces.compare import kinetostatics
+    from plans.pages.forces import force_document
+
+    from plans.pages.typesetting import compile_document
+
+    doc = force_document(kinetostatics(plans.load(example_path(example)), k_l=k_l), lang)[0]
+    drawn = _drawing_words(compile_document(doc.source(), doc.images, "pdf"))
+    assert len(drawn) > 10
+    # two words overlap when their boxes share more than 0.4 mm both ways (a letter and its subscript only touch)
+    hits = [(a[0], b[0]) for k, a in enumerate(drawn) for b in drawn[k + 1:] if overlap(a[1], b[1], 0.4)]
+    assert not hits, hits

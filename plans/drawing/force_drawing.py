@@ -419,13 +419,17 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
         bodies.append((plan, links, box, acting, couples, what))
     placed = [(body[0], body[1], complex(x - body[2][0], y - body[2][3]), body[3], body[4], body[2], body[5]) for body, (x, y) in
               zip(bodies, _arrange([b[2] for b in bodies], per_row, columns))]
-    for plan, links, shift, acting, couples, _, _ in placed:
-        _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
-    # each body's name over it
+    # each body's name over it, first: the bodies' labels are then placed clear of it
+    from shapely.geometry import box as shapely_box
+
     for plan, links, shift, _, _, box, what in placed:
         for k, line in enumerate(what.split("\n")):
-            sketch.text(complex(box[0] + shift.real, box[3] + shift.imag - k * FREE_NAME_MM), line, size=CAPTION_PT, ha="left", va="top",
-                        gid=f"heading-{plan.group}" + (f"-{k}" if k else ""))
+            corner = complex(box[0] + shift.real, box[3] + shift.imag - k * FREE_NAME_MM)
+            sketch.text(corner, line, size=CAPTION_PT, ha="left", va="top", gid=f"heading-{plan.group}" + (f"-{k}" if k else ""))
+            w, h = text_size(line, CAPTION_PT)
+            sketch.obstacles.append(shapely_box(corner.real, corner.imag - h, corner.real + w, corner.imag).buffer(1.2))  # and a margin
+    for plan, links, shift, acting, couples, _, _ in placed:
+        _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
     if caption:
         b = sketch.bounds
         sketch.text(complex(b.xmin, b.ymax + 6.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
