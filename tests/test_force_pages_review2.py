@@ -120,3 +120,63 @@ def test_no_label_on_the_free_bodies_overlaps_a_name_or_another_label(example, l
     # two words overlap when their boxes share more than 0.4 mm both ways (a letter and its subscript only touch)
     hits = [(a[0], b[0]) for k, a in enumerate(drawn) for b in drawn[k + 1:] if overlap(a[1], b[1], 0.4)]
     assert not hits, hits
+
+
+# the crank's free body: arrows and arcs clear of each other and of the bars ---------------------------------------
+
+
+def _free_body_shapes(k_l: float):
+    """The Russian slider-crank's free bodies as the handout draws them at *k_l*: {gid: shapely shape} of the bars
+    (centre lines), the force arrows' shafts (centre lines) and heads, and the couples' arcs and heads [mm]."""
+    from shapely.geometry import LineString, Polygon
+
+    from plans.drawing._canvas import sketch_on
+    from plans.drawing.force_drawing import draw_free_bodies_into
+    from plans.forces.compare import kinetostatics
+    from plans.forces.force_plans import construct_force_plans
+    from plans.pages.forces import drawn_group_names
+
+    run = kinetostatics(plans.load(example_path("slider-crank-loads")), k_l=k_l)
+    forces = construct_force_plans(run.graphical, mu_F=80.0)
+    names = drawn_group_names(forces.plans, "ru")
+    artists = sketch_on(None, "fbody", lambda sketch: draw_free_bodies_into(sketch, forces, lang="ru", k_l=k_l, names=names))
+    shapes = {}
+    for a in artists:
+        gid = a.get_gid() or ""
+        if not gid.startswith(("fbody-force-", "fbody-couple-", "fbody-link-")) or "label" in gid:
+            continue
+        if hasattr(a, "get_xy") and gid.endswith("-head"):
+            shapes[gid] = Polygon(a.get_xy())
+        elif hasattr(a, "get_data"):
+            xs, ys = a.get_data()
+            shapes[gid] = LineString(list(zip(xs, ys)))
+    return shapes
+
+
+@pytest.mark.parametrize("k_l", [0.003, 0.005])
+def test_an_arrow_along_a_bar_is_drawn_clear_of_it(k_l):
+    """F_Ф2 (Ф₂) acts at S₂ along the crank: it is drawn beside the bar, its head a visible gap (≥ 1 mm) off the
+    bar's edge (the bar 2.2 pt wide: 0.39 mm a side)."""
+    shapes = _free_body_shapes(k_l)
+    bar, head, shaft = shapes["fbody-link-2"], shapes["fbody-force-F_Phi2-head"], shapes["fbody-force-F_Phi2"]
+    assert shaft.distance(bar) > 0  # drawn beside it, not on it
+    assert head.distance(bar) - 0.39 >= 1.0
+
+
+@pytest.mark.parametrize("k_l", [0.003, 0.005])
+def test_a_couples_arrowhead_lands_on_no_arrow(k_l):
+    """The review's M_Ф3 head running into G₃: every couple's head, and the way it points for a head's length more
+    (2.6 mm), stands off every force arrow (shaft and head) by ≥ 1 mm (a gap that reads at print size)."""
+    from shapely.geometry import LineString
+
+    shapes = _free_body_shapes(k_l)
+    arrows = {gid: s for gid, s in shapes.items() if gid.startswith("fbody-force-")}
+    heads = {gid: s for gid, s in shapes.items() if gid.startswith("fbody-couple-") and gid.endswith("-head")}
+    assert {"fbody-couple-M_Phi3-head", "fbody-couple-M_b-head"} <= set(heads)
+    near = []
+    for h, head in heads.items():
+        tip, left, right = (complex(x, y) for x, y in list(head.exterior.coords)[:3])
+        u = (tip - (left + right) / 2) / abs(tip - (left + right) / 2)
+        ahead = LineString([(tip.real, tip.imag), ((tip + 2.6 * u).real, (tip + 2.6 * u).imag)]).union(head)
+        near += [(h, a, round(ahead.distance(t), 2)) for a, t in arrows.items() if ahead.distance(t) < 1.0]
+    assert not near
