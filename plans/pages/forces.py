@@ -733,10 +733,17 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     mu_words = f"$μ_{{F}}$ = {_scale(mu)} N/mm"
     head = term("kinetostatics", lang)
 
-    def heading(what: str) -> None:
-        doc.heading(_newtons(f"{head} — {what}", lang), level=2, new_page=True)
-        if where:
-            doc.line(_newtons(where, lang), size=TEXT_PT)
+    def heading(what: str, new_page: bool = True, under=()) -> None:
+        """A section's heading, the position under it and the lines *under* that ((words, size) each): on a page of its
+        own, or (*new_page* false) where the section before ends, kept with what follows (never left at a page's foot)."""
+        lines = ([(where, TEXT_PT)] if where else []) + list(under)
+        if new_page:
+            doc.heading(_newtons(f"{head} — {what}", lang), level=2, new_page=True)
+            for line, size in lines:
+                doc.line(_newtons(line, lang), size=size)
+            return
+        doc.body.append(f"#v(4mm)\n#block(sticky: true, breakable: false)[#heading(level: 2)[{doc.words(_newtons(f'{head} — {what}', lang))}]\n"
+                        + "".join(doc.line_markup(_newtons(line, lang), size) + "\n" for line, size in lines) + "]\n")
 
     # 1. the free bodies, the given loads and the legend
     heading(_lower(term("free_bodies", lang)))
@@ -744,6 +751,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])")  # the title block states the free bodies' k_l
     _scale_note(doc, mu_words)
     doc.figure(f"{key}-free-bodies", free)
+    doc.body.append(f"#metadata(none) <{key}-free-bodies>\n")
     pages.images[f"{key}-free-bodies"] = "free-bodies"
     coarser = ""
     if plate_kl is not None and abs(k_l - plate_kl) > 1e-12 * plate_kl:  # none of the arrangements fits at the plate's k_l
@@ -757,10 +765,14 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     doc.body.append("".join(f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines))
 
     # 2. the force plans at one μ_F
-    heading(f"{_lower(term('force_plans', lang))}; {mu_words}")
-    if plate_kl is not None:
-        doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', plate_kl)}])")
+    # where the free bodies end, kept with the first plan
+    heading(f"{_lower(term('force_plans', lang))}; {mu_words}", new_page=False)
     _scale_note(doc, mu_words)
+    # a title block states the free bodies' k_l on their page, the plate's on a page of plans after it
+    reset = ""
+    if plate_kl is not None and coarser:
+        reset = (f"#context {{ if here().page() != locate(<{key}-free-bodies>).page() "
+                 f"{{ plate-kl.update([{doc.scale_words('k_l', plate_kl)}]) }} }}")
     given = given_loads(plans)
     written = {e.group: e for e in plan_equations(plans)}
     # each plan under its equations: in its cell, or (where a line of them is wider than a cell) the equations of a
@@ -779,7 +791,8 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         pages.images[image_key] = f"plan:{plan.group}"
         moment = plans.balancing_moment if plan.group == "driver" else None
         lines = _plan_lines(plan, given, moment, lang, written[plan.group])
-        parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]"]
+        # the title block of the page the plan lands on states μ_F
+        parts = [f"{reset}#metadata([{_words(doc, mu_words)}]) <plans-page-scale>#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]"]
         if lines_of[plan.group] and with_equations:  # the vector and moment equations the plan is drawn from, before it
             parts.append(equations_markup(plan))
         parts.append(f"#align(center)[#{doc.add_image(image_key, block)}]")
@@ -809,15 +822,17 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
     pages.comparisons = comparisons
     if lever is not None:
-        heading(term("joukowski_lever", lang))
-        doc.line(_newtons(f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", lang), size=SMALL_PT)
-        doc.line(_newtons(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + " = 0$", lang), size=TEXT_PT)
+        # where the plans end, its heading kept with the lever
+        heading(term("joukowski_lever", lang), new_page=False, under=[
+            (f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", SMALL_PT),
+            (r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + " = 0$", TEXT_PT)])
         doc.figure(f"{key}-lever", lever_svg(lever, lang))
+        doc.body.append(reset + "\n")
         pages.images[f"{key}-lever"] = "lever"
         doc.body.append(_legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang))
-        doc.body.append(_table(doc, _lever_rows(lever, lang), "(left, left, right, right, right, left)", term("lever_moments", lang)))
-        for line in _lever_result(lever, lang):
-            doc.line(_newtons(line, lang), size=TEXT_PT)
+        # the moments about the pole and the balancing moment they give, on one page
+        doc.body.append("#block(breakable: false)[" + _table(doc, _lever_rows(lever, lang), "(left, left, right, right, right, left)", term("lever_moments", lang))
+                        + "".join(doc.line_markup(_newtons(line, lang), TEXT_PT) + "\n" for line in _lever_result(lever, lang)) + "]\n")
     elif comparisons:
         doc.body.append("#v(4mm)")
     if comparisons:
