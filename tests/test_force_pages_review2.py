@@ -180,3 +180,30 @@ def test_a_couples_arrowhead_lands_on_no_arrow(k_l):
         ahead = LineString([(tip.real, tip.imag), ((tip + 2.6 * u).real, (tip + 2.6 * u).imag)]).union(head)
         near += [(h, a, round(ahead.distance(t), 2)) for a, t in arrows.items() if ahead.distance(t) < 1.0]
     assert not near
+
+
+# the pages flow --------------------------------------------------------------------------------------------------
+
+
+def test_the_force_plans_follow_the_free_bodies_and_each_title_block_states_its_page(tmp_path):
+    """The scotch-yoke's free bodies (a coarser k_l than the plate's 0.003 m/mm: 0.005) leave half their page empty:
+    the force plans start under them; that page's title block states the free bodies' k_l and μ_F, the next the
+    plate's k_l; no heading stands at a page's foot (the lever's heading is on the page of its drawing)."""
+    import io
+
+    import pypdf
+
+    from plans.forces.compare import kinetostatics
+    from plans.pages.forces import force_document
+    from plans.pages.typesetting import compile_document
+
+    doc = force_document(kinetostatics(plans.load(example_path("scotch-yoke-loads")), k_l=0.003), "ru")[0]
+    pages = [" ".join((p.extract_text() or "").split()) for p in pypdf.PdfReader(io.BytesIO(compile_document(doc.source(), doc.images, "pdf"))).pages]
+    first = pages[0]
+    assert "нагрузки и реакции групп" in first and "планы сил" in first
+    assert first.index("нагрузки и реакции групп") < first.index("планы сил")
+    scale = [re.search(r"Масштабы: (.*)", p)[1] for p in pages]
+    assert re.search(r"0,005 м/мм", scale[0]) and "2,5 Н/мм" in scale[0]
+    assert all("0,003 м/мм" in s for s in scale[1:])
+    lever = next(p for p in pages if "Рычаг Жуковского" in p)
+    assert "Моменты относительно полюса" in lever
