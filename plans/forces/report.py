@@ -1,8 +1,10 @@
 """The kinetostatics of one position as a table (in the reader's language) and as JSON.
 
 Both read a :class:`plans.forces.compare.KinetostaticRun`; neither computes.
-Units: N, N·m, m, W; angles in degrees from +x, counter-clockwise; on the
-lever, mm of the velocity plan and N·mm.
+Units: N, N·m, m, W (the table writes them as the course does: Н, Н·м, м, Вт,
+рад/с in ru and bg; the JSON's keys and values do not change); angles in
+degrees from +x, counter-clockwise; on the lever, mm of the velocity plan and
+N·mm.
 """
 
 from __future__ import annotations

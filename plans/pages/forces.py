@@ -23,11 +23,15 @@ balancing moment and force and the useful resistance carry the course's
 subscripts on a Russian or Bulgarian page (M_ур, F_ур, F_пс:
 :func:`plans.drawing.force_drawing.course_label`).
 
-Three pages a position: the free bodies with the input data and the given
-loads; the force plans (μ_F stated in the heading and in the title block) with
-their equations (on a page after them when keeping them on it would cost the
-plans more than :data:`EQUATION_COST` in μ_F); Joukowski's lever with the table
-of the three methods.
+The sections of a position follow one another without a forced page break
+after the first (a page with the free bodies starts the position): the free
+bodies with the input data and the given loads; the force plans (μ_F stated in
+the heading and in the title block of every page a plan lands on) each under
+its equations, a plan with its equations never split (all on the plans' page
+when keeping them there costs the plans at most :data:`EQUATION_COST` in μ_F);
+Joukowski's lever with the table of the three methods.  A section's heading is
+kept with what follows it; a title block states the free bodies' k_l on their
+page and the plate's on the pages after it.
 
 μ_F is found from geometry: the plans are constructed once at their own round
 scales, drawn once to learn what does not scale (labels, margins), and μ_F is
