@@ -647,6 +647,13 @@ TERMS: dict[str, dict[str, str]] = {
     },
     "external_force": {"en": "force", "sr": "сила", "ru": "сила", "bg": "сила", "sl": "sila"},
     "resistance": {"en": "resistance", "sr": "сила отпора", "ru": "сила сопротивления", "bg": "съпротивителна сила", "sl": "sila upora"},
+    "useful_resistance": {
+        "en": "useful resistance",
+        "sr": "сила корисног отпора",
+        "ru": "сила полезного сопротивления",
+        "bg": "сила на полезното съпротивление",
+        "sl": "sila koristnega upora",
+    },
     "couple": {"en": "couple", "sr": "спрег сила", "ru": "пара сил", "bg": "двоица сили", "sl": "dvojica sil"},
     "normal_force": {"en": "normal force", "sr": "нормална сила", "ru": "нормальная сила", "bg": "нормална сила", "sl": "normalna sila"},
     "point_of_action": {"en": "point of action", "sr": "нападна тачка", "ru": "точка приложения", "bg": "приложна точка", "sl": "prijemališče"},

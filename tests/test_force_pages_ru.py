@@ -63,7 +63,7 @@ def test_the_guide_point_q_b_is_said_in_words_and_the_load_is_input_data(scl_ru)
     # the resistance as the scene gives it: 1500 N at B of link 4, against B's velocity; v_B < 0 here (domain.md
     # §11) so it acts along +x: 0°
     magnitude = load_["force"]["magnitude"].split()[0]
-    assert re.search(rf"{magnitude} Н, в точке {load_['at']} звена {load_['link']}, против скорости точки {load_['at']} \(∠ 0,0°\)", first), first
+    assert re.search(rf"сила полезного сопротивления Fпс = {magnitude} Н, в точке {load_['at']} звена {load_['link']}, против скорости точки {load_['at']} \(∠ 0,0°\)", " ".join(first.split())), first
 
 
 # 2. each plan's equations before it; one value of Rᵗ --------------------------------------------------------------

@@ -173,6 +173,8 @@ VOCABULARY = {
                        "sl": "moment vztrajnostnih sil"},
     "external_force": {"sr": "сила", "ru": "сила", "bg": "сила", "sl": "sila"},
     "resistance": {"sr": "сила отпора", "ru": "сила сопротивления", "bg": "съпротивителна сила", "sl": "sila upora"},
+    "useful_resistance": {"sr": "сила корисног отпора", "ru": "сила полезного сопротивления", "bg": "сила на полезното съпротивление",
+                          "sl": "sila koristnega upora"},
     "couple": {"sr": "спрег сила", "ru": "пара сил", "bg": "двоица сили", "sl": "dvojica sil"},
     "normal_force": {"sr": "нормална сила", "ru": "нормальная сила", "bg": "нормална сила", "sl": "normalna sila"},
     "point_of_action": {"sr": "нападна тачка", "ru": "точка приложения", "bg": "приложна точка", "sl": "prijemališče"},

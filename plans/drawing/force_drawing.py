@@ -419,19 +419,27 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
         bodies.append((plan, links, box, acting, couples, what))
     placed = [(body[0], body[1], complex(x - body[2][0], y - body[2][3]), body[3], body[4], body[2], body[5]) for body, (x, y) in
               zip(bodies, _arrange([b[2] for b in bodies], per_row, columns))]
-    for plan, links, shift, acting, couples, _, _ in placed:
-        _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
-    # each body's name over it
+    # each body's name over it, first: the bodies' labels are then placed clear of it
+    from shapely.geometry import box as shapely_box
+
     for plan, links, shift, _, _, box, what in placed:
         for k, line in enumerate(what.split("\n")):
-            sketch.text(complex(box[0] + shift.real, box[3] + shift.imag - k * FREE_NAME_MM), line, size=CAPTION_PT, ha="left", va="top",
-                        gid=f"heading-{plan.group}" + (f"-{k}" if k else ""))
+            corner = complex(box[0] + shift.real, box[3] + shift.imag - k * FREE_NAME_MM)
+            sketch.text(corner, line, size=CAPTION_PT, ha="left", va="top", gid=f"heading-{plan.group}" + (f"-{k}" if k else ""))
+            w, h = text_size(line, CAPTION_PT)
+            sketch.obstacles.append(shapely_box(corner.real, corner.imag - h, corner.real + w, corner.imag).buffer(1.2))  # and a margin
+    for plan, links, shift, acting, couples, _, _ in placed:
+        _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
     if caption:
         b = sketch.bounds
         sketch.text(complex(b.xmin, b.ymax + 6.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
         sketch.text(complex(b.xmin, b.ymin - 3.0), f"{scale_caption('k_l', fmt_number(k_l), 'm/mm', lang)};  {term('not_to_scale', lang)}",
                     size=CAPTION_PT, ha="left", va="top", gid="scale", obstacle=False, math=True)
 
+
+#: how far [mm] an arrow along a bar through its point is drawn beside the bar: its head (~0.7 mm a side) and the
+#: bar (~0.4 mm) clear of each other with a gap that reads at print size
+BESIDE_BAR_MM = 3.0
 
 #: the height [mm] a line of a body's name takes over it
 FREE_NAME_MM = 4.5
@@ -538,7 +546,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         along = next((b - a for a, b in segments if _on_segment(point, a, b) and abs(((b - a) / abs(b - a) * u.conjugate()).imag) < 0.15), None)
         if along is not None:
             side = 1j * along / abs(along)
-            point = point + side * 1.8
+            point = point + side * BESIDE_BAR_MM
         if into:
             stop = 1.2
             near_block = next((b for n, b in blocks.items() if abs(at(g.positions[n]) - at(f.at)) < 1e-6), None)
@@ -584,11 +592,16 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
             radii = (max(COUPLE_R_MM, abs(where - near_block[0]) + near_block[1] + 1.0),)  # round the block, not through it
         sweep = math.radians(250) * (1 if c.moment > 0 else -1)
         color = FORCE_STYLE["balancing" if c.kind == "balancing" else "inertia" if c.kind == "inertia" else "external"][0]
-        # the arc crosses as few arrows as it can (an arrow from its own centre it must cross), at its usual radius
+        # the arc crosses as few arrows as it can (an arrow from its own centre it may cross), at its usual radius
         # where that crosses no more; it starts (and its name stands) where it is farthest from the other points
         marks = [z for z, _, _ in labels if abs(z - where) > 1e-6]
-        radius, start = max(((r, math.radians(145 + 45 * k)) for r in radii for k in range(8)),
-                            key=lambda ra: (-_arc_crossings(where, ra[0], ra[1], sweep, shafts), ra[0] == radii[0],
+        # an arrow at the arc's own centre it may cross (a textbook does), any other it keeps off; its head clear of both
+        own = [s for s in shafts if min(abs(s[0] - where), abs(s[1] - where)) < 2.5]
+        others = [s for s in shafts if s not in own]
+        radius, start = max(((r, math.radians(145 + 15 * k)) for r in radii for k in range(24)),
+                            key=lambda ra: (-_arc_crossings(where, ra[0], ra[1], sweep, others),
+                                            _ends_clear(where, ra[0], ra[1], sweep, shafts + segments),
+                                            -_arc_crossings(where, ra[0], ra[1], sweep, own), ra[0] == radii[0],
                                             round(min((abs(where + (ra[0] + 3.0) * cmath.exp(1j * ra[1]) - z) for z in marks), default=0.0), 1),
                                             -abs(ra[1] - math.radians(145))))
         sketch.arc_arrow(where, radius, start, sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
@@ -624,6 +637,17 @@ def _arc_crossings(centre: complex, radius: float, start: float, sweep: float, a
     zs = [centre + radius * cmath.exp(1j * (start + sweep * k / 24)) for k in range(25)]
     arc = LineString([(z.real, z.imag) for z in zs]).buffer(0.8)
     return sum(1 for p, q in arrows if arc.intersects(_segment_shape(p, q)))
+
+
+def _ends_clear(centre: complex, radius: float, start: float, sweep: float, lines, clearance: float = 2.4) -> bool:
+    """Whether both ends of a couple's arc about *centre* (its tail, and its head from base to point and a head's length on) stand *clearance* [mm] off every one of
+    *lines* (tail, tip) [mm]: the arrows and the bars (an arc crosses an arrow from its own centre; its head never
+    lands on one)."""
+    from shapely.geometry import LineString, Point
+
+    head = min(abs(sweep) * 0.4, 2.6 / radius) * (1 if sweep > 0 else -1)  # the head's turn (Sketch.arc_arrow's 2.6 mm head)
+    ends = [centre + radius * cmath.exp(1j * a) for a in (start, start + sweep + 1.5 * head, start + sweep + head, start + sweep, start + sweep - head, start + sweep - 1.5 * head)]
+    return all(LineString([(p.real, p.imag), (q.real, q.imag)]).distance(Point(z.real, z.imag)) >= clearance for z in ends for p, q in lines)
 
 
 def _on_segment(z: complex, a: complex, b: complex, tolerance: float = 0.3) -> bool:

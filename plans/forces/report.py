@@ -1,8 +1,10 @@
 """The kinetostatics of one position as a table (in the reader's language) and as JSON.
 
 Both read a :class:`plans.forces.compare.KinetostaticRun`; neither computes.
-Units: N, N·m, m, W; angles in degrees from +x, counter-clockwise; on the
-lever, mm of the velocity plan and N·mm.
+Units: N, N·m, m, W (the table writes them as the course does: Н, Н·м, м, Вт,
+рад/с in ru and bg; the JSON's keys and values do not change); angles in
+degrees from +x, counter-clockwise; on the lever, mm of the velocity plan and
+N·mm.
 """
 
 from __future__ import annotations
@@ -10,12 +12,13 @@ from __future__ import annotations
 import io
 import math
 
+from .._text import course_units
 from ..i18n import term
 from ..scene import FRAME, Crank
 from .compare import KinetostaticRun
 from .notation import course_label
 
-__all__ = ["FORCES_SCHEMA", "forces_json", "forces_table", "LOAD_TERMS", "method_name", "course_formula", "COURSE_KINDS"]
+__all__ = ["FORCES_SCHEMA", "forces_json", "forces_table", "LOAD_TERMS", "method_name", "course_formula", "COURSE_KINDS", "unit"]
 
 #: Version of the JSON document of ``plans forces --json``.
 FORCES_SCHEMA = 1
@@ -160,6 +163,18 @@ def _clean(z: complex) -> complex:
     return complex(x + 0.0, y + 0.0)
 
 
+#: the units the kinetostatics adds to the kinematics', as the Russian and Bulgarian courses write them
+_FORCE_UNITS = {"N": "Н", "W": "Вт"}
+
+
+def unit(symbol: str, lang: str = "en") -> str:
+    """A unit *symbol* (``"N·m"``, ``"rad/s"``, ``"W"``) as the course in *lang* writes it: ``Н·м``, ``рад/с``, ``Вт`` in
+    ru and bg (:func:`plans._text.course_units`), the international symbol elsewhere."""
+    if lang not in ("ru", "bg"):
+        return symbol
+    return "·".join(_FORCE_UNITS.get(part, course_units(part, lang)) for part in symbol.split("·"))
+
+
 def _cells(z: complex) -> str:
     z = _clean(z)
     direction = f"{_deg(z):9.3f}" if abs(z) > 0 and math.isfinite(abs(z)) else "        —"
@@ -188,20 +203,25 @@ def forces_table(run: KinetostaticRun, lang: str = "en") -> str:
     rows = _rows(run)
     out = io.StringIO()
     w = out.write
+
+    def u(symbol: str) -> str:
+        return unit(symbol, lang)
+
     w(f"{scene.title_in(lang)}\n")
     w(f"{term('kinetostatics', lang)}: {course_formula(analytic.structure.formula)}\n")
     driver = scene.driver
     if isinstance(driver, Crank):
-        w(f"{term('driver', lang)} {driver.link}: φ = {math.degrees(driver.phi):.3f}°, ω = {driver.omega:.6g} rad/s, ε = {driver.epsilon:.6g} rad/s²\n")
+        w(f"{term('driver', lang)} {driver.link}: φ = {math.degrees(driver.phi):.3f}°, ω = {driver.omega:.6g} {u('rad/s')}, ε = {driver.epsilon:.6g} {u('rad/s²')}\n")
     else:
-        w(f"{term('driver', lang)} {driver.link}: s = {driver.s:.6g} m, v = {driver.velocity:.6g} m/s, a = {driver.acceleration:.6g} m/s²\n")
+        w(f"{term('driver', lang)} {driver.link}: s = {driver.s:.6g} {u('m')}, v = {driver.velocity:.6g} {u('m/s')}, a = {driver.acceleration:.6g} {u('m/s²')}\n")
     if run.graphical is not None:
         scales = ", ".join(f"{key} = {value:g}" for key, value in run.graphical.scales.items())
-        precision = f", {run.graphical.precision:g} mm" if run.graphical.precision else ""
+        precision = f", {run.graphical.precision:g} {u('mm')}" if run.graphical.precision else ""
         w(f"{term('scale_factors', lang)}: {scales}{precision}\n")
 
-    w(f"\n{term('loads', lang)} [N, N·m]\n")
-    w(f"{'':8} {term('link', lang)[:6]:6} {term('kind', lang)[:24]:24} {'x [m]':>11} {'y [m]':>11} {'Fx':>13} {'Fy':>13} {'|F|':>13} {'∠ [°]':>9} {'M':>13}\n")
+    w(f"\n{term('loads', lang)} [{u('N')}, {u('N·m')}]\n")
+    x, y = (f"{axis} [{u('m')}]" for axis in "xy")
+    w(f"{'':8} {term('link', lang)[:6]:6} {term('kind', lang)[:24]:24} {x:>11} {y:>11} {'Fx':>13} {'Fy':>13} {'|F|':>13} {'∠ [°]':>9} {'M':>13}\n")
     for load in analytic.loads:
         r = complex(_first(load.r))
         kind = term(LOAD_TERMS[load.kind], lang)
@@ -210,15 +230,15 @@ def forces_table(run: KinetostaticRun, lang: str = "en") -> str:
         else:
             w(f"{course_label(load.name, lang):8} {load.body:6} {kind[:24]:24} {r.real:11.5g} {r.imag:11.5g} {_cells(_first(load.force))}\n")
 
-    w(f"\n{term('reactions', lang)} [N]; {term('reaction_convention', lang).format(frame=scene.frame_number)}\n")
+    w(f"\n{term('reactions', lang)} [{u('N')}]; {term('reaction_convention', lang).format(frame=scene.frame_number)}\n")
     w(f"{'':8} {'':6} {'':20} {'Rx':>13} {'Ry':>13} {'|R|':>13} {'∠ [°]':>9} {'Δ':>10} {'δ':>10}\n")
     for label, reaction in analytic.reactions.items():
         w(f"{label:8} {reaction.joint:6} {method_name('analytic', lang)[:20]:20} {_cells(reaction.force[0])}\n")
         if reaction.kind == "P":
             point = complex(reaction.point[0])
-            where = f"({point.real:.6g}, {point.imag:.6g}) m" if math.isfinite(abs(point)) else "—"
+            where = f"({point.real:.6g}, {point.imag:.6g}) {u('m')}" if math.isfinite(abs(point)) else "—"
             n = _clean(reaction.normal[0])
-            w(f"{'':8} {'':6} {'':20} N = {float(reaction.normal_force[0]):.6g} N ∥ n = ({n.real:.6g}, {n.imag:.6g}); {term('point_of_action', lang)} {where}\n")
+            w(f"{'':8} {'':6} {'':20} N = {float(reaction.normal_force[0]):.6g} {u('N')} ∥ n = ({n.real:.6g}, {n.imag:.6g}); {term('point_of_action', lang)} {where}\n")
         row = rows.get((label, "force_plans"))
         if row is not None:
             w(f"{'':8} {'':6} {method_name('force_plans', lang)[:20]:20} {_cells(row.value)}{_errors(row)}\n")
@@ -226,9 +246,9 @@ def forces_table(run: KinetostaticRun, lang: str = "en") -> str:
     key = "M_b" if analytic.balancing_kind == "moment" else "F_b"
     symbol = course_label(key, lang)
     if analytic.balancing_kind == "moment":
-        w(f"\n{term('balancing_moment', lang)} {symbol} [N·m], {term('ccw_positive', lang)}\n")
+        w(f"\n{term('balancing_moment', lang)} {symbol} [{u('N·m')}], {term('ccw_positive', lang)}\n")
     else:
-        w(f"\n{term('balancing_force', lang)} {symbol} [N], {term('along_guide', lang)}\n")
+        w(f"\n{term('balancing_force', lang)} {symbol} [{u('N')}], {term('along_guide', lang)}\n")
     w(f"{method_name('analytic', lang)[:24]:24} {float(analytic.balancing[0]):16.9g}\n")
     for method in ("force_plans", "lever"):
         row = rows.get((key, method))
@@ -239,5 +259,5 @@ def forces_table(run: KinetostaticRun, lang: str = "en") -> str:
 
     driving, loads, residual = (float(x[0]) for x in (analytic.driving_power(), analytic.load_power(), analytic.power_residual()))
     product = f"{symbol}·ω" if analytic.balancing_kind == "moment" else f"{symbol}·v"
-    w(f"\n{term('power_balance', lang)} [W]: {product} = {driving:.9g}; Σ F·v + Σ M·ω = {loads:.9g}; {term('residual', lang)} {residual:.3g}\n")
+    w(f"\n{term('power_balance', lang)} [{u('W')}]: {product} = {driving:.9g}; Σ F·v + Σ M·ω = {loads:.9g}; {term('residual', lang)} {residual:.3g}\n")
     return out.getvalue()

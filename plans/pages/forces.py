@@ -23,11 +23,15 @@ balancing moment and force and the useful resistance carry the course's
 subscripts on a Russian or Bulgarian page (M_ур, F_ур, F_пс:
 :func:`plans.drawing.force_drawing.course_label`).
 
-Three pages a position: the free bodies with the input data and the given
-loads; the force plans (μ_F stated in the heading and in the title block) with
-their equations (on a page after them when keeping them on it would cost the
-plans more than :data:`EQUATION_COST` in μ_F); Joukowski's lever with the table
-of the three methods.
+The sections of a position follow one another without a forced page break
+after the first (a page with the free bodies starts the position): the free
+bodies with the input data and the given loads; the force plans (μ_F stated in
+the heading and in the title block of every page a plan lands on) each under
+its equations, a plan with its equations never split (all on the plans' page
+when keeping them there costs the plans at most :data:`EQUATION_COST` in μ_F);
+Joukowski's lever with the table of the three methods.  A section's heading is
+kept with what follows it; a title block states the free bodies' k_l on their
+page and the plate's on the pages after it.
 
 μ_F is found from geometry: the plans are constructed once at their own round
 scales, drawn once to learn what does not scale (labels, margins), and μ_F is
@@ -462,10 +466,13 @@ def _loads_table(plans, lang: str) -> list[list[str]]:
         for v in plan.vectors:
             if v.kind in _LOAD_KIND:
                 drawn.setdefault(v.label, (v.length, plan.precision))
+    # a resistance named as the course names it (the useful resistance), not as "a force"
+    resisting = {load.name for load in plans.graphical.scene.loads if load.kind == "resistance"}
     rows = [["", term("link", lang), term("kind", lang), "N, N·m", "mm ($μ_F$)"]]
     for f in plans.loads:
         length = drawn.get(f.label)
-        rows.append([_math(f.label, lang), f.body, term(_LOAD_KIND.get(f.kind, "external_force"), lang), f"{_number(abs(f.force))} N",
+        kind = "useful_resistance" if f.kind == "external" and f.label in resisting else _LOAD_KIND.get(f.kind, "external_force")
+        rows.append([_math(f.label, lang), f.body, term(kind, lang), f"{_number(abs(f.force))} N",
                      _reading(*length) if length else "—"])
     for c in plans.couples:
         if c.kind == "balancing" or c.moment == 0:
@@ -539,7 +546,7 @@ def _data_rows(scene, lang: str, loads=()) -> tuple[str, list[list[str]], list[s
     heading = term("force_data", lang)
     e = _offset(scene)
     if e is not None:
-        heading += f";  {term('offset_e', lang)} e = {_mm(e)} mm"
+        heading += f";  {term('offset_e', lang)}\u00a0e = {_mm(e)} mm"  # the word and its value on one line
     rows = [[term("link", lang), f"$m$ [{kg}]", term("mass_centre", lang), f"$J_{{S}}$ [{kg}·m²]"]]
     for name, mass in scene.masses.items():
         rows.append([name, _given(mass.mass), _centre_words(scene, mass, lang), _given(mass.inertia)])
@@ -556,7 +563,7 @@ def _data_rows(scene, lang: str, loads=()) -> tuple[str, list[list[str]], list[s
             continue
         at = term("load_at", lang).format(point=where, link=load.body)
         if load.kind == "resistance":
-            line = f"{name} = {_number(load.magnitude)} N, {at}, {term('against_velocity', lang).format(point=where)}"
+            line = f"{term('useful_resistance', lang)} {name} = {_number(load.magnitude)} N, {at}, {term('against_velocity', lang).format(point=where)}"
             acting = next((f for f in loads if f.label == load.name and abs(f.force) > 0), None)
             if acting is not None:
                 line += f" (∠ {math.degrees(math.atan2(acting.force.imag, acting.force.real)) % 360:.1f}°)"
@@ -762,10 +769,17 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     mu_words = f"$μ_{{F}}$ = {_scale(mu)} N/mm"
     head = term("kinetostatics", lang)
 
-    def heading(what: str) -> None:
-        doc.heading(_newtons(f"{head} — {what}", lang), level=2, new_page=True)
-        if where:
-            doc.line(_newtons(where, lang), size=TEXT_PT)
+    def heading(what: str, new_page: bool = True, under=()) -> None:
+        """A section's heading, the position under it and the lines *under* that ((words, size) each): on a page of its
+        own, or (*new_page* false) where the section before ends, kept with what follows (never left at a page's foot)."""
+        lines = ([(where, TEXT_PT)] if where else []) + list(under)
+        if new_page:
+            doc.heading(_newtons(f"{head} — {what}", lang), level=2, new_page=True)
+            for line, size in lines:
+                doc.line(_newtons(line, lang), size=size)
+            return
+        doc.body.append(f"#v(4mm)\n#block(sticky: true, breakable: false)[#heading(level: 2)[{doc.words(_newtons(f'{head} — {what}', lang))}]\n"
+                        + "".join(doc.line_markup(_newtons(line, lang), size) + "\n" for line, size in lines) + "]\n")
 
     # 1. the free bodies, the given loads and the legend
     heading(_lower(term("free_bodies", lang)))
@@ -773,22 +787,28 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])")  # the title block states the free bodies' k_l
     _scale_note(doc, mu_words)
     doc.figure(f"{key}-free-bodies", free)
+    doc.body.append(f"#metadata(none) <{key}-free-bodies>\n")
     pages.images[f"{key}-free-bodies"] = "free-bodies"
     coarser = ""
     if plate_kl is not None and abs(k_l - plate_kl) > 1e-12 * plate_kl:  # none of the arrangements fits at the plate's k_l
         coarser = ";  " + term("free_bodies_coarser", lang).format(scale=f"$k_{{l}}$ = {_scale(plate_kl)} m/mm")
     doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}{coarser}", lang), size=SMALL_PT)
     doc.body.append(_legend(doc, f"{key}-bodies-legend", _body_kinds(plans), lang))
-    given_data = _table(doc, data, "(left, right, left, right)", data_heading) + "".join(
-        f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines)
+    given_data = _table(doc, data, "(left, right, left, right)", data_heading)
     given_loads_table = _table(doc, loads, "(left, left, left, right, right)", f"{term('loads', lang)}: {mu_words}")
+    # the two tables side by side, then g and the external loads across the page (a long line would narrow them)
     doc.body.append(f"#grid(columns: (auto, auto), column-gutter: {GUTTER}mm, align: top + left,\n  [{given_data}],\n  [{given_loads_table}])\n")
+    doc.body.append("".join(f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines))
 
     # 2. the force plans at one μ_F
-    heading(f"{_lower(term('force_plans', lang))}; {mu_words}")
-    if plate_kl is not None:
-        doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', plate_kl)}])")
+    # where the free bodies end, kept with the first plan
+    heading(f"{_lower(term('force_plans', lang))}; {mu_words}", new_page=False)
     _scale_note(doc, mu_words)
+    # a title block states the free bodies' k_l on their page, the plate's on a page of plans after it
+    reset = ""
+    if plate_kl is not None and coarser:
+        reset = (f"#context {{ if here().page() != locate(<{key}-free-bodies>).page() "
+                 f"{{ plate-kl.update([{doc.scale_words('k_l', plate_kl)}]) }} }}")
     given = given_loads(plans)
     written = {e.group: e for e in plan_equations(plans)}
     # each plan under its equations: in its cell, or (where a line of them is wider than a cell) the equations of a
@@ -807,7 +827,8 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         pages.images[image_key] = f"plan:{plan.group}"
         moment = plans.balancing_moment if plan.group == "driver" else None
         lines = _plan_lines(plan, given, moment, lang, written[plan.group])
-        parts = [f"#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]"]
+        # the title block of the page the plan lands on states μ_F
+        parts = [f"{reset}#metadata([{_words(doc, mu_words)}]) <plans-page-scale>#text(size: {SMALL_PT + 1}pt, weight: \"bold\")[{_words(doc, _plan_title(plan, names, lang))}]"]
         if lines_of[plan.group] and with_equations:  # the vector and moment equations the plan is drawn from, before it
             parts.append(equations_markup(plan))
         parts.append(f"#align(center)[#{doc.add_image(image_key, block)}]")
@@ -837,15 +858,17 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
     pages.comparisons = comparisons
     if lever is not None:
-        heading(term("joukowski_lever", lang))
-        doc.line(_newtons(f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", lang), size=SMALL_PT)
-        doc.line(_newtons(r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + " = 0$", lang), size=TEXT_PT)
+        # where the plans end, its heading kept with the lever
+        heading(term("joukowski_lever", lang), new_page=False, under=[
+            (f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", SMALL_PT),
+            (r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + " = 0$", TEXT_PT)])
         doc.figure(f"{key}-lever", lever_svg(lever, lang))
+        doc.body.append(reset + "\n")
         pages.images[f"{key}-lever"] = "lever"
         doc.body.append(_legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang))
-        doc.body.append(_table(doc, _lever_rows(lever, lang), "(left, left, right, right, right, left)", term("lever_moments", lang)))
-        for line in _lever_result(lever, lang):
-            doc.line(_newtons(line, lang), size=TEXT_PT)
+        # the moments about the pole and the balancing moment they give, on one page
+        doc.body.append("#block(breakable: false)[" + _table(doc, _lever_rows(lever, lang), "(left, left, right, right, right, left)", term("lever_moments", lang))
+                        + "".join(doc.line_markup(_newtons(line, lang), TEXT_PT) + "\n" for line in _lever_result(lever, lang)) + "]\n")
     elif comparisons:
         doc.body.append("#v(4mm)")
     if comparisons:
