@@ -989,6 +989,17 @@ def _centres_cycle(h):
     return getattr(g, "travel", None), getattr(g, "cycle_poses", None)
 
 
+#: the centres' tables at the text's size, the labels' subscripts (P₁₂: the content of the order table and the P₁ⱼ column)
+#: set as digits at 0.8 of it (7.6 pt; the font's subscript glyphs are about 5 pt), in a scope of their own
+CENTRES_TABLE_PT = TEXT_PT
+CENTRES_SUBSCRIPT_EM = 0.8
+_CENTRES_TABLE_OPEN = (
+    "#[\n"
+    f"#show table: set text(size: {CENTRES_TABLE_PT}pt)\n"
+    f"#show regex(\"[₀-₉ⱼₖ]+\"): it => sub(typographic: false, size: {CENTRES_SUBSCRIPT_EM}em, it.text.clusters().map("
+    "c => if c == \"ⱼ\" {\"j\"} else if c == \"ₖ\" {\"k\"} else {str(str.to-unicode(c) - 0x2080)}).join())\n")
+
+
 def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
     """The centres' first page: the method's title, Kennedy's theorem, the circle diagram (once: it is the same for
     every position), the rules and the order of finding the centres (*result*: a position's centres)."""
@@ -1002,7 +1013,9 @@ def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
         circle = f"{term('circle_diagram', lang)}: {term('circle_diagram_legend', lang).replace(chr(10), ' ')}"
         doc.beside(diagram, [], [circle, term("centres_legend", lang), term("centres_edge_legend", lang)]
                    + centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
+        doc.body.append(_CENTRES_TABLE_OPEN)
         doc.tables([(term("centres_order", lang), centres_order_table(result, lang))], aligns="(left, left)")
+        doc.body.append("]\n")
 
 
 def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
@@ -1018,7 +1031,9 @@ def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
     doc.figure(f"centres-{h.index}", blocks[h.index][1])
     if len(page) > 5:  # the values not read off the drawing, and why (the legend and rules: on the method's page)
         doc.line(page[5], size=SMALL_PT)
+    doc.body.append(_CENTRES_TABLE_OPEN)
     doc.beside(None, table, [])
+    doc.body.append("]\n")
 
 
 def data_lines(scene, lang: str, law=None) -> list[str]:
