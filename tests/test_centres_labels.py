@@ -226,3 +226,16 @@ def test_an_edge_arrows_label_at_its_own_tip(drawings):
             if own > near or any(d < own for d in others):
                 found.append((where, text, round(own / 72 * 25.4, 1)))
     assert not found, found
+
+
+def test_two_centres_labels_read_as_two(drawings):
+    # third review: the linear-arm's P₁₄ and P₁₅ side by side at D (position 6), 1.7 mm apart: at least 2 mm between
+    # the boxes of any two centres' labels
+    from shapely.geometry import box
+
+    found = []
+    for where, svg in drawings:
+        labels = [(text, box(*b)) for gid, text, b in text_boxes(svg) if gid.startswith("centres-label-")]
+        for k, (a, box_a) in enumerate(labels):
+            found += [(where, a, b) for b, box_b in labels[k + 1:] if box_a.distance(box_b) < 2.0 * 72 / 25.4]
+    assert not found, found

@@ -64,6 +64,8 @@ RING_COST = 1.5
 LABEL_CLEAR_MM = 0.3
 #: centres closer than this on the drawing [mm] are one spot: one label names them all
 CLUSTER_MM = 1.5
+#: the least room [mm] between two centres' labels (beyond LABEL_CLEAR_MM around each)
+LABEL_SPACING_MM = 2.0
 #: the cost of a centre's label struck through by a link's bar, a slot or the ω arc (a Kennedy line costs 1)
 STROKE_COST = 400
 #: a centre's dot closer than this [mm] to a joint is under its pin: its label gets a leader
@@ -284,6 +286,7 @@ class _CentresDrawing:
         self.marks: list = []  # the centres' marks and the joints [mm]: a label is nearer its own than any of these
         self.bodies: list = []  # the mechanism's blocks, supports and hatching: no label under one
         self.strokes: list = []  # the links' bars, slots and the ω arc: no label struck through by one
+        self.placed: list = []  # the boxes of the centres' labels placed so far: the next keeps LABEL_SPACING_MM from them
 
     def mm(self, z: complex) -> complex:
         return z / self.k_l
@@ -313,6 +316,8 @@ class _CentresDrawing:
             hits = RING_COST * (k // 16)
             hits += 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
             hits += 1000 * sum(1 for o in self.words if shape.intersects(o))  # never over another label or name
+            # two centres' labels apart enough to read as two (the linear-arm's P₁₅ and P₁₄ side by side at D)
+            hits += 1000 * sum(1 for o in self.placed if shape.distance(o) < LABEL_SPACING_MM)
             hits += 300 * sum(1 for o in self.bodies if shape.intersects(o))  # nor under a block, a support, its hatching
             hits += STROKE_COST * sum(1 for o in self.strokes if shape.intersects(o))  # nor struck through by a link
             # read as its own: nearer its own mark than any other centre's (or a joint's); a leader says it otherwise
@@ -339,6 +344,7 @@ class _CentresDrawing:
             self.s.line(list(leader), color=CENTRE_COLOUR, lw=0.4, gid=f"{gid}-leader", zorder=4.9)
         self.s.text(c, text, size=LABEL_PT, color=CENTRE_COLOUR, gid=gid)
         self.words.append(box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2))
+        self.placed.append(self.words[-1])
 
     def kennedy_lines(self) -> None:
         """Each Kennedy line that gave a centre, through its three centres, inside the room."""
