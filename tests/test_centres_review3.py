@@ -75,3 +75,15 @@ def test_centre_subscripts_in_the_tables_at_least_7_5_pt(six_bar_pdf):
                 assert chunks[k + 1][1] >= 7.5, chunks[k: k + 2]
                 checked += 1
     assert checked >= 30  # 15 centres in the order table, the P₁ⱼ column and the readings' paths
+
+
+def test_the_method_page_is_filled(six_bar_pdf):
+    # third review: the six-bar's method page was ~40 % empty (its order table ended at 54 % of the page's text area):
+    # the circle diagram large, the legend and rules at the text's size, the order table across: past 60 %
+    page = next(p for p in six_bar_pdf.pages if "The order of finding the centres" in p.extract_text())
+    ys = []
+    page.extract_text(visitor_text=lambda t, cm, tm, fd, fs: ys.append((cm[5] + tm[5], t)) if t.strip() else None)
+    top = max(y for y, _ in ys)  # the page's heading
+    block = max(y for y, t in ys if t.startswith("Kinematic analysis of the mechanism"))  # the title block's first line
+    lowest = min(y for y, _ in ys if y > block + 5)
+    assert (top - lowest) / (top - block) > 0.6

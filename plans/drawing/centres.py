@@ -429,13 +429,13 @@ class _CentresDrawing:
             self.label(at, text, gid, at - self.middle, clear, hidden)
 
 
-def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en", caption: bool = True) -> None:
-    """Bodies on a circle (1 at the top, clockwise), primary centres as sides, Kennedy ones as dashed diagonals;
-    *caption* False leaves its heading and legend to the page (set in the page's typeface)."""
+def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en", caption: bool = True, radius: float = DIAGRAM_R) -> None:
+    """Bodies on a circle of *radius* [mm] (1 at the top, clockwise), primary centres as solid lines, Kennedy ones as
+    dashed; *caption* False leaves its heading and legend to the page (set in the page's typeface)."""
     names = list(result.numbers)
     n = len(names)
-    at = {name: centre + DIAGRAM_R * cmath.exp(1j * (math.pi / 2 - 2 * math.pi * k / n)) for k, name in enumerate(names)}
-    s.circle(centre, DIAGRAM_R, fc="none", ec="#b0b0b0", lw=0.5, gid="diagram-circle", zorder=1.0, obstacle=False)
+    at = {name: centre + radius * cmath.exp(1j * (math.pi / 2 - 2 * math.pi * k / n)) for k, name in enumerate(names)}
+    s.circle(centre, radius, fc="none", ec="#b0b0b0", lw=0.5, gid="diagram-circle", zorder=1.0, obstacle=False)
     colour, lw, dashes = CONSTRUCTION_STYLE
     for c in result.centres:
         a, b = at[c.bodies[0]], at[c.bodies[1]]
@@ -450,20 +450,20 @@ def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en", captio
         s.text(q + 4.2 * unit(q - centre), result.numbers[name], size=HEADING_PT, gid=f"diagram-number-{result.numbers[name]}")
     if not caption:
         return
-    s.text(centre - 1j * (DIAGRAM_R + 8.0), term("circle_diagram", lang), size=CAPTION_PT, weight="bold", gid="diagram-heading", obstacle=False)
+    s.text(centre - 1j * (radius + 8.0), term("circle_diagram", lang), size=CAPTION_PT, weight="bold", gid="diagram-heading", obstacle=False)
     lines = []
     for part in term("circle_diagram_legend", lang).split("\n"):  # each part wrapped to the diagram's width
         current = ""
         for word in part.split():
             trial = f"{current} {word}".strip()
-            if current and text_size(trial, CAPTION_PT)[0] > 2 * DIAGRAM_R + 6.0:
+            if current and text_size(trial, CAPTION_PT)[0] > 2 * radius + 6.0:
                 lines.append(current)
                 current = word
             else:
                 current = trial
         lines.append(current)
     for k, line in enumerate(lines):
-        s.text(centre - 1j * (DIAGRAM_R + 12.5 + 4.0 * k), line, size=CAPTION_PT, gid="diagram-legend", obstacle=False)
+        s.text(centre - 1j * (radius + 12.5 + 4.0 * k), line, size=CAPTION_PT, gid="diagram-legend", obstacle=False)
 
 
 def _text_shapes(artists) -> list:
@@ -680,11 +680,11 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     return xmax - xmin + 2 * MARGIN_MM, ymax - ymin + 2 * MARGIN_MM
 
 
-def draw_circle_diagram_into(ax, result, lang: str = "en", caption: bool = True) -> tuple[float, float]:
+def draw_circle_diagram_into(ax, result, lang: str = "en", caption: bool = True, radius: float = DIAGRAM_R) -> tuple[float, float]:
     """The circle diagram alone, drawn into *ax* (one data unit a millimetre); returns its (width, height) [mm]
-    (*caption* False: without its heading and legend, which a page sets as its text)."""
+    (*caption* False: without its heading and legend, which a page sets as its text; *radius* [mm] of its circle)."""
     s = Sketch(ax, "centres")
-    _circle_diagram(s, result, 0j, lang, caption)
+    _circle_diagram(s, result, 0j, lang, caption, radius)
     b = s.bounds
     ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
     ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM)
