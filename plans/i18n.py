@@ -109,6 +109,10 @@ TERMS: dict[str, dict[str, str]] = {
     "quantity": {"en": "quantity", "sr": "величина", "ru": "величина", "bg": "величина", "sl": "količina"},
     "graphical": {"en": "graphical", "sr": "графички", "ru": "графически", "bg": "графично", "sl": "grafično"},
     "analytic": {"en": "analytic", "sr": "аналитички", "ru": "аналитически", "bg": "аналитично", "sl": "analitično"},
+    # a comparison table's column of the plans' values: the course's "по плану" (from the plan), not an adverb
+    "by_plan": {"en": "from the plan", "sr": "са плана", "ru": "по плану", "bg": "от плана", "sl": "iz načrta"},
+    # the readings table's last column: the value the segment × the scale factor gives
+    "reading_value": {"en": "value", "sr": "вредност", "ru": "значение", "bg": "стойност", "sl": "vrednost"},
     "rel_error": {"en": "rel. error", "sr": "рел. грешка", "ru": "отн. погр.", "bg": "отн. грешка", "sl": "rel. napaka"},
     "link": {"en": "link", "sr": "члан", "ru": "звено", "bg": "звено", "sl": "člen"},
     "slider": {"en": "slider", "sr": "клизач", "ru": "ползун", "bg": "плъзгач", "sl": "drsnik"},
@@ -886,6 +890,13 @@ TERMS: dict[str, dict[str, str]] = {
         "ru": "Диаграммы не построены",
         "bg": "Диаграмите не са построени",
         "sl": "Diagrami niso narisani",
+    },
+    "kd_mu_not_k": {
+        "en": "{mu}: the scales of these diagrams, not the plans' {k}",
+        "sr": "{mu}: размере ових дијаграма, а не размере планова {k}",
+        "ru": "{mu}: масштабы этих диаграмм, а не масштабы планов {k}",
+        "bg": "{mu}: мащабите на тези диаграми, а не мащабите на плановете {k}",
+        "sl": "{mu}: merila teh diagramov, ne merila načrtov {k}",
     },
     "chords_order": {
         "en": "the error of the chords falls as Δt²: with twice the positions, to about a quarter",

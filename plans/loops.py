@@ -182,6 +182,12 @@ def _ds(name: str, order: int) -> str:
     return (r"\dot{s}" if order == 1 else r"\ddot{s}") + rf"_{{{_sub(name)}}}"
 
 
+def _i_times(factor: str) -> str:
+    """``i`` times *factor*: ``i\\omega_{4}`` for a symbol, ``i\\cdot0.2502`` for a number (``i0.2502`` would read as one
+    token, and next to ``·0.45`` as ``i0.2502·0.45``)."""
+    return rf"i{factor}" if factor.startswith("\\") else rf"i\cdot{factor}"
+
+
 def _signed(sign: int, text: str, first: bool) -> str:
     if first:
         return text if sign > 0 else f"-{text}"
@@ -226,9 +232,9 @@ def _numeric(term, stage: int) -> str:
             return e
         if stage == 1:
             w = _omega(term.body) if term.unknown else _paren(term.omega)
-            return rf"i{w}\cdot{e}"
+            return rf"{_i_times(w)}\cdot{e}"
         eps = _eps(term.body) if term.unknown else _paren(term.epsilon)
-        return rf"(i{eps} - {_power_base(term.omega)}^2)\cdot{e}"
+        return rf"({_i_times(eps)} - {_power_base(term.omega)}^2)\cdot{e}"
     angle = _phi_symbol(term.body, term.alpha) if (stage == 0 and term.angle_unknown) else _deg(term.phi + term.alpha)
     e = rf"e^{{i\,{angle}}}"
     n = term.name
@@ -238,11 +244,11 @@ def _numeric(term, stage: int) -> str:
         return rf"{_s(n)}\,{e}"
     w = _omega(term.body) if (stage == 1 and term.angle_unknown) else _paren(term.omega)
     if stage == 1:
-        return rf"{_ds(n, 1)}\,{e} + i{w}\cdot{_paren(term.s)}\,{e}"
+        return rf"{_ds(n, 1)}\,{e} + {_i_times(w)}\cdot{_paren(term.s)}\,{e}"
     eps = _eps(term.body) if term.angle_unknown else _paren(term.epsilon)
     return (
         rf"{_ds(n, 2)}\,{e} + 2i\cdot{_paren(term.omega)}\cdot{_paren(term.v_rel)}\,{e}"
-        rf" + (i{eps} - {_power_base(term.omega)}^2)\cdot{_paren(term.s)}\,{e}"
+        rf" + ({_i_times(eps)} - {_power_base(term.omega)}^2)\cdot{_paren(term.s)}\,{e}"
     )
 
 

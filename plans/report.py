@@ -11,7 +11,6 @@ import cmath
 import io
 import json
 import math
-import re
 
 from ._text import math_name
 from .compare import PLAN_QUANTITIES, QUANTITIES, ZERO_FRACTION, Comparison
@@ -478,17 +477,86 @@ def _magnitude(value, step: float | None = None) -> str:
     return reading_number(value, step)
 
 
-def _decimals(text: str) -> int:
-    """How many decimals the first number of *text* is printed with (``0.250 ∠ 12.0°``: 3)."""
-    m = re.match(r"[−-]?\d+(?:\.(\d+))?", text)
-    return len(m.group(1)) if m and m.group(1) and "·" not in text else 0
+def _significant(value: float, digits: int = 4) -> str:
+    """*value* to *digits* significant digits with its trailing zeros (``14.70``, ``−1.810``; ``12160``):
+    :func:`table_number` keeps the zeros a reading gives."""
+    if value == 0 or not math.isfinite(value):
+        return table_number(value)
+    text = f"{value:#.{digits}g}"
+    if "e" in text:
+        return table_number(value, digits)
+    return text.rstrip(".").replace("-", "−")
 
 
-def _finer(value: float, step: float | None) -> bool:
-    """Whether *value* to the decimals of a reading of resolution *step* shows more than its 4 significant digits."""
-    if step is None or step <= 0 or value == 0 or not math.isfinite(value):
-        return False
-    return max(0, -math.floor(math.log10(step))) > 3 - math.floor(math.log10(value))
+def _printed_decimals(text: str) -> int | None:
+    """The decimals of a printed magnitude (``14.70 ∠ 180.0°`` → 2, ``−10`` → 0); None for ``2.6·10⁻⁹``."""
+    magnitude = text.split(" ∠")[0]
+    if "·10" in magnitude:
+        return None
+    return len(magnitude.partition(".")[2])
+
+
+def _printed_value(text: str) -> complex | float:
+    """A printed cell back to its number: ``0.775 ∠ 263.4°`` → the vector, ``−3.35`` → −3.35, ``2.6·10⁻⁹`` → 2.6e-9."""
+    def number(t: str) -> float:
+        t = t.strip().replace("−", "-")
+        if "·10" in t:
+            mantissa, exponent = t.split("·10")
+            return float(mantissa) * 10 ** int(exponent.translate(str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")))
+        return float(t)
+
+    if "∠" in text:
+        magnitude, angle = text.split("∠")
+        return number(magnitude) * cmath.exp(1j * math.radians(number(angle.replace("°", ""))))
+    return number(text)
+
+
+def _to_decimals(value, decimals: int) -> str:
+    """*value* (a number, or a vector as magnitude ∠ direction) to *decimals* places, trailing zeros kept; 0 as ``0``."""
+    magnitude = abs(value) if isinstance(value, complex) else value
+    text = f"{magnitude:.{decimals}f}"
+    if float(text) == 0:
+        return "0"
+    if isinstance(value, complex):
+        text += f" ∠ {_deg(cmath.phase(value)):.1f}°"
+    return text.replace("-", "−")
+
+
+def row_texts(graphical, analytic, step: float | None = None, given: bool = False) -> tuple[str, str, str]:
+    """The three cells of a comparison row: the graphical (or instant-centre) value, the analytic one, the relative error.
+
+    The rule of every comparison table (the sheet's, the handout's, the centres page's): the graphical value to
+    the digits its reading justifies (:func:`reading_number` with the resolution *step* [SI]; 4 significant digits,
+    trailing zeros kept, when there is no step), the analytic value to the same decimals, and the relative error
+    of the two numbers as printed, |g − a| / |a| (of the vectors, for a magnitude ∠ direction), so that a
+    reader recomputes it from the table.  A *given* value (the driver's ω, a crank pin's v) is printed as
+    given in both columns and has no error (:data:`NO_ERROR`), nor has a quantity printed as 0.
+    """
+    if given:  # to the reading's decimals where the plan draws it (v_A = 1.500, as the readings print it)
+        decimals = max(0, -math.floor(math.log10(step))) if step else None
+        if decimals is None:
+            return _magnitude(graphical), _magnitude(analytic), NO_ERROR
+        return _to_decimals(graphical, decimals), _to_decimals(analytic, decimals), NO_ERROR
+    if step is None and graphical == analytic:  # the same number by both (exact readings): as given, no difference
+        text = _magnitude(analytic)
+        return text, text, NO_ERROR if text == "0" else table_error(0.0)
+    if step is None:
+        g_text = "0" if graphical == 0 else (_significant(abs(graphical)) + f" ∠ {_deg(cmath.phase(graphical)):.1f}°"
+                                              if isinstance(graphical, complex) else _significant(graphical))
+    else:
+        g_text = _magnitude(graphical, step)
+    decimals = _printed_decimals(g_text) if g_text != "0" else None
+    if decimals is None and step is not None and step > 0:
+        decimals = max(0, -math.floor(math.log10(step)))
+    if decimals is None:
+        a_text = "0" if analytic == 0 else (_significant(abs(analytic)) + f" ∠ {_deg(cmath.phase(analytic)):.1f}°"
+                                             if isinstance(analytic, complex) else _significant(analytic))
+    else:
+        a_text = _to_decimals(analytic, decimals)
+    a = _printed_value(a_text)
+    if a == 0:
+        return g_text, a_text, NO_ERROR
+    return g_text, a_text, table_error(abs(complex(_printed_value(g_text)) - complex(a)) / abs(a))
 
 
 def table_error(value: float) -> str:
@@ -669,19 +737,10 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
             text = f"{_symbol(label)} [{_UNITS[row.quantity]}]"
         kind = _KIND.get(row.quantity, row.quantity)
         zero_a, zero_g = noise(row.analytic, kind), noise(row.graphical, kind)
-        step = None if given(graphical, row) else reading_step(graphical, row)  # a given value as given
-        # the analytic value to the graphical one's decimals where they give more digits than its 4 significant
-        # (−18854 beside a reading of −18864, not −18850): the error printed is then the error of the two numbers
-        a_text = "0" if zero_a else _magnitude(row.analytic, step if _finer(abs(row.analytic), step) else None)
-        g_text = "0" if zero_g else _magnitude(row.graphical, step)
-        if not zero_a and 1e-3 <= abs(row.analytic) < 1e6:  # the analytic value to at least the graphical one's decimals, its trailing zeros kept (0.250 beside 0.250, not 0.25)
-            a_text = _magnitude(row.analytic, 10.0 ** -max(_decimals(g_text), _decimals(a_text)))
-        # a relative error is not defined for a zero quantity, nor for a given one (the driver's ω, v_A: drawn from
-        # the data, not read); an error of round-off size is none
-        if zero_a or given(graphical, row):
-            error = NO_ERROR
-        else:
-            error = table_error(row.rel_error)
+        # both values to the reading's decimals, the error of the two printed numbers; a given value (the driver's ω,
+        # v_A: drawn from the data, not read) as given, without error (:func:`row_texts`); round-off of a zero as 0
+        g_text, a_text, error = row_texts(0 if zero_g else row.graphical, 0 if zero_a else row.analytic,
+                                          reading_step(graphical, row), given(graphical, row))
         rows.append([text, g_text, a_text, error])
     return rows
 
@@ -718,7 +777,7 @@ def reading_step(graphical, row: Comparison) -> float | None:
 
 # --- instant centres (plans.centres) ---------------------------------------------
 
-__all__ += ["given", "reading_step", "reading_number", "centres_json", "add_centres_json", "centres_table", "centres_comparison_table"]
+__all__ += ["row_texts", "given", "reading_step", "reading_number", "centres_json", "add_centres_json", "centres_table", "centres_comparison_table"]
 
 
 def _centre_where(centre) -> list:

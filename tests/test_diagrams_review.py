@@ -158,7 +158,7 @@ def test_the_cranks_rate_reads_the_same_in_the_panel_and_the_law():
     page = " ".join(t.get_text() for t in points.texts)
     assert "ω₂ = 209,4 rad/s" in page  # the law under the title: 2000 rpm = 209.44 rad/s
     links = figures["links"]
-    notes = " ".join(t.get_text().replace("\n", " ") for ax in links.axes for t in ax.texts)
+    notes = " ".join(t.get_text().replace("\n", " ").replace("\u00a0", " ") for ax in links.axes for t in ax.texts)  # (no-break spaces)
     assert "ω₂ = 209,4 rad/s" in notes and "209 rad/s" not in notes
 
 

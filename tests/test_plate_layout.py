@@ -150,6 +150,30 @@ def test_no_page_of_the_flow_is_less_than_half_used(reviewed, key):
     assert not short, (key, short)
 
 
+@pytest.mark.parametrize("key", ["quick-return-sr", "linear-arm-bg"])
+def test_the_loop_equations_last_page_is_filled_by_what_follows(reviewed, key):
+    """The page the loop equations end on is filled: the kinematic diagrams' heading, words and first diagram flow up
+    under them (it was 64 % used in the Serbian quick-return, 66 % in the Bulgarian linear-arm, the diagrams starting
+    a page of their own)."""
+    from plans.pages.typesetting import query_document
+
+    doc, pdf, _ = reviewed[key]
+    marks = {m["name"]: m for m in query_document(doc.source, doc.images, "<plans-mark>")}
+    page = marks["loops-end"]["page"]
+    use = _page_use(pdf)
+    assert use[page - 1] >= 0.85 * A4_PORTRAIT.text_height, (key, page, round(use[page - 1] / A4_PORTRAIT.text_height, 2))
+
+
+@pytest.mark.parametrize("key", list(HANDOUTS))
+def test_no_line_breaks_inside_a_formula(reviewed, key):
+    """No line of a page ends in a name and its ``=`` with the value on the next line (``|a_A| =`` / ``0`` in a
+    diagram's note, ``ε₃ =`` / ``0,9695`` in a loop equation's results)."""
+    _, _, pages = reviewed[key]
+    for n, page in enumerate(pages, start=1):
+        broken = [line[4] for line in page if re.search(r"\S\s*=$", line[4])]
+        assert not broken, (key, n, broken)
+
+
 #: the headings of a handout's sections, each kept with the first row of what it heads (the words of plans.i18n)
 HEADINGS = ("positions_plan", "mechanism", "velocity_plans", "acceleration_plans", "comparison", "loop_equations", "vector_equations")
 
@@ -304,7 +328,7 @@ def test_a_single_positions_plans_each_have_a_page_region(reviewed):
 @pytest.mark.parametrize("key", list(HANDOUTS))
 def test_the_scene_title_on_one_line_under_the_plate_name(reviewed, key):
     """Page 1 prints the plate's name, then the scene's title whole on one line (smaller where it is long), and the
-    title block "plate name — title" on one line too."""
+    title block "plate name — title" (on two lines where it is long: never under 8 pt, tests/test_page_flow.py)."""
     import unicodedata
 
     from plans.i18n import term
@@ -316,7 +340,7 @@ def test_the_scene_title_on_one_line_under_the_plate_name(reviewed, key):
     texts = [line[4] for line in pages[0]]
     assert texts[0] == plate, texts[:3]
     assert texts[1] == title, texts[:3]
-    assert f"{plate} — {title}" in texts, [t for t in texts if t.startswith(plate)]
+    assert any(f"{plate} — {title}" in " ".join(texts[k:k + 2]) for k in range(len(texts))), [t for t in texts if t.startswith(plate)]
 
 
 def test_the_angles_in_the_notes_are_said_from_what(reviewed):

@@ -178,6 +178,21 @@ class Sketch:
 
     # -- bookkeeping ---------------------------------------------------------
 
+    def checkpoint(self) -> tuple:
+        """What has been drawn so far, for :meth:`restore` (a placement tried and then undone)."""
+        b = self.bounds
+        return len(self.artists), len(self.obstacles), (b.xmin, b.ymin, b.xmax, b.ymax), dict(self._gids)
+
+    def restore(self, state: tuple) -> None:
+        """Undo everything drawn since :meth:`checkpoint` gave *state* (artists, obstacles, bounds and gids)."""
+        artists, obstacles, (x0, y0, x1, y1), gids = state
+        for artist in self.artists[artists:]:
+            artist.remove()
+        del self.artists[artists:]
+        self.obstacles = Obstacles(self.obstacles[:obstacles])
+        self.bounds.xmin, self.bounds.ymin, self.bounds.xmax, self.bounds.ymax = x0, y0, x1, y1
+        self._gids = dict(gids)
+
     def gid(self, name: str) -> str:
         base = _GID_CHARS.sub("_", f"{self.prefix}-{name}").strip("_")
         count = self._gids.get(base, 0) + 1

@@ -13,31 +13,18 @@ Words from :mod:`plans.i18n`, decimal comma in sr, ru, bg, sl.
 
 from __future__ import annotations
 
-import cmath
-import math
 
 from .._text import decimal_comma, math_name
 from ..i18n import term
 from ..centres.velocities import SHORT_READ_MM
-from ..report import table_error, table_number
+from ..report import row_texts
+from ..scene import LinearDriver
 from .centres import centre_text
 
 __all__ = ["centres_page_table", "centres_rules", "centres_order_table", "guide_words", "ROOM_MIN"]
 
 #: the least room [mm] around the mechanism on the page (its near centres widen it; far ones are arrows outside)
 ROOM_MIN = 12.0
-
-
-def _number(value: float) -> str:
-    """*value* as every table prints numbers: 4 significant digits (:func:`plans.report.table_number`)."""
-    return table_number(value)
-
-
-def _vector(z: complex) -> str:
-    """``0.4993 ∠ 27.0°``: the direction 0…360° counter-clockwise from x, as on every other page."""
-    if z == 0:
-        return "0"
-    return f"{_number(abs(z))} ∠ {math.degrees(cmath.phase(z)) % 360.0:.1f}°".replace("-", "−")
 
 
 def _about(result, body: str) -> str:
@@ -90,16 +77,22 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
         segments = " / ".join(centre_text(a) + centre_text(b) for a, b, _ in via)
         return [f"{segments} = {' / '.join(f'{mm:.2f}' if mm < SHORT_READ_MM else f'{mm:.1f}' for _, _, mm in via)}"]
 
+    # the values and errors by the rule of every comparison table (plans.report.row_texts): the centres' value to
+    # 4 significant digits, the analytic one to its decimals, the error of the two printed numbers; the driver's
+    # ω (and a sliding driver's v) is given: "—", as on the plans' pages
+    driver = result.scene.driver
+    linear = isinstance(driver, LinearDriver)
     for name in result.scene.links:
         row = by.get(("links", name))
         if row is not None:
             rows.append([f"$\\omega_{{{math_name(name)}}}$ [rad/s]", _about(result, name)] + path(name)
-                        + [_number(row.graphical), _number(row.analytic), table_error(row.rel_error)])
+                        + list(row_texts(float(row.graphical), float(row.analytic), given=name == driver.link)))
     for name in result.scene.report:
         row = by.get(("points", name))
         if row is not None:
+            given = linear and result.scene.home_of(name) == driver.link
             rows.append([f"$v_{{{math_name(name)}}}$ [m/s]", _about(result, result.scene.home_of(name))] + reading(name)
-                        + [_vector(complex(row.graphical)), _vector(complex(row.analytic)), table_error(row.rel_error)])
+                        + list(row_texts(complex(row.graphical), complex(row.analytic), given=given)))
     return [[decimal_comma(cell, lang) for cell in row] for row in rows]
 
 

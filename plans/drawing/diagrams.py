@@ -402,7 +402,8 @@ def _panel(series, valid, lang: str, unit: str, extra_notes=()) -> _Panel:
         scale = max(float(np.max(np.abs(values))), 1e-300)
         if float(np.ptp(values)) <= 1e-9 * scale:
             value = float(values[0]) if abs(float(values[0])) > 1e-12 * scale else 0.0
-            notes.append(f"{name} = {_stated(value, lang)}{(' ' + unit) if unit and value else ''}")
+            # (no-break spaces: a note wrapped into the legend's column never breaks inside "|a_A| = 0")
+            notes.append(f"{name}\u00a0=\u00a0{_stated(value, lang)}{(chr(0xa0) + unit) if unit and value else ''}")
             continue
         for curve in curves:
             other = curve[1]

@@ -45,7 +45,7 @@ from .numerals import localised
 from .svg import drawing_rc, new_figure, render_svg
 
 __all__ = ["diagram_svgs", "diagram_title", "flat_line", "legend_items", "diagrams_table", "table_header", "header_lines",
-           "origin_line", "page_heading", "notes", "unavailable_reason", "diagram_words", "page_diagrams", "draw_kinematic_figure",
+           "origin_line", "scales_line", "page_heading", "notes", "unavailable_reason", "diagram_words", "page_diagrams", "draw_kinematic_figure",
            "block_room", "table_heading", "KEYS", "TEXT_PT", "DIAGRAM_GAP", "PAGE_ROOM", "PEAK_NOTE", "analytic_cut"]
 
 #: Size [pt] of every text in the diagrams and their table.
@@ -613,8 +613,17 @@ def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
         f"{words['output']};  {term('positions', lang)}: {count}{even}" + law,
         f"T = {_num(duration, lang, 4)} s ({term('cycle_time' if d.law is None or d.law.crank else 'stroke_time', lang)}){steps},  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
         f"$\\mu_{{t}}$ = T/L = {_short(sc.mu_t, lang)} s/mm",
+        scales_line(d, lang),
         origin_line(d, lang),
     ]
+
+
+def scales_line(d: KinematicDiagrams, lang: str = "en") -> str:
+    """That the diagrams' μ are theirs, not the plans' k (one plate holds both: the v–t diagram's μ_v is not the
+    velocity plans' k_v), in the reader's language."""
+    words = diagram_words(d, lang)
+    mu = ", ".join(["$\\mu_{t}$"] + [f"$\\mu_{{{words[k + '_tex']}}}$" for k in KEYS])
+    return term("kd_mu_not_k", lang).format(mu=mu, k="$k_{l}$, $k_{v}$, $k_{a}$")
 
 
 def origin_line(d: KinematicDiagrams, lang: str = "en") -> str:

@@ -90,6 +90,7 @@ def place_label(
     own: tuple[complex, complex] | None = None,
     rival_segments: tuple[tuple[complex, complex], ...] = (),
     by_box: bool = False,
+    leader_ok: bool = False,
 ) -> list:
     """Place one label (several names written ``"p, o, d"``) near *anchor*.
 
@@ -126,6 +127,10 @@ def place_label(
         *rivals* are measured to the label's box (its nearest side, as the eye
         joins a name to the nearest point: a long label "p, o, d, e"), not to
         its centre.
+    leader_ok : bool
+        A place far enough off to get a leader line (*leader_from*) is never
+        astray: the leader joins the label to its point (a long label of
+        coincident images kept off a neighbour's label).
 
     Returns
     -------
@@ -193,6 +198,8 @@ def place_label(
             else:
                 mine = _to_segment(center, own) if own is not None else abs(center - anchor)
                 astray = any(abs(center - q) < mine for q in rivals) or any(_to_segment(center, seg) < mine for seg in rival_segments)
+            if astray and leader_ok and leader_from is not None and gap >= leader_from:
+                astray = False
             score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - (OVERLAP_MM if astray else 0.0) - gap - 0.15 * turn - 1e-6 * order
             order += 1
             if best is None or score > best[0]:

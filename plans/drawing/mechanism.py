@@ -55,6 +55,7 @@ HATCH_LEN = 2.4  # mm
 OMEGA_R = 8.0  # mm
 LEADER_FROM_MM = 4.5  # a label further than this from its point gets a leader line
 EPSILON_R = 12.5  # mm
+CLEAR_MM = 1.0  # mm a guide's hatching keeps from a path or link it is broken for
 
 
 def _sub(symbol: str, name: str) -> tuple[str, bool]:
@@ -173,9 +174,17 @@ class MechanismDrawing:
     """The kinematic scheme of a solution drawn into a :class:`Sketch`: ``MechanismDrawing(sketch, solution).draw()``.
 
     *caption* False leaves out the heading and the scale statement (a page that states them itself).
+    *clear* (shapely geometries [mm]: the paths of the points and the links at the other positions of a plan of
+    positions) is what a frame guide keeps off: a guide line and its hatching are broken where one of them passes
+    through the band the hatching takes.  :attr:`guide_bands` holds the bands drawn (each line with its hatching)
+    and :attr:`guideways` the room between the two lines of a guideway (numbers keep out of both).
     """
 
-    def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True, slots: dict | None = None, cycle=None):
+    def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True, slots: dict | None = None, cycle=None,
+                 clear=()):
+        self.clear = [g for g in clear if g is not None and not g.is_empty]
+        self.guide_bands: list = []
+        self.guideways: list = []
         self.slots = dict(slots if slots is not None else getattr(solution, "travel", None) or {})
         self.cycle = tuple(cycle if cycle is not None else getattr(solution, "cycle_poses", None) or ())
         self._plates: dict[str, bool] = {}  # body -> drawn as a plate (:meth:`_is_plate`)
@@ -372,19 +381,57 @@ class MechanismDrawing:
                             across = rod.buffer(BAR_PT * MM_PER_PT / 2 + 0.3).intersection(band)
                             ts = [((complex(x, y) - a) * u.conjugate()).real for x, y in (across.exterior.coords if across.geom_type == "Polygon" else [])]
                             spans.append((a + u * (min([t] + ts) - 2.0), a + u * (max([t] + ts) + 2.0)))
+                    spans += self._clear_spans(a, b, n * side)
                     for p0, p1 in _outside(a, b, spans):
                         if abs(p1 - p0) < 1.0:
                             continue
                         self.s.line([p0, p1], lw=1.1, gid=f"guide-{name}", zorder=1.2)
                         self._hatch(p0, p1, n * side) if side > 0 else self._hatch(p1, p0, n * side)
+                        self.guide_bands.append(self._band(p0, p1, n * side))
+                a, b = origin + u * lo, origin + u * hi
+                self.guideways.append(ShapelyPolygon([(z.real, z.imag) for z in (a + n * gap, b + n * gap, b - n * gap, a - n * gap)]))
                 self.guides.append((origin + u * lo, origin + u * hi))
                 continue
             a = origin + u * lo
             b = origin + u * hi
             side = choice if choice is not None else (-1.0 if self._mechanism_side(FRAME, name, origin, n) > 0 else 1.0)
-            self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=1.2)
-            self._hatch(a, b, n * side)
+            for p0, p1 in _outside(a, b, self._clear_spans(a, b, n * side)):
+                if abs(p1 - p0) < 1.0:
+                    continue
+                self.s.line([p0, p1], lw=1.1, gid=f"guide-{name}", zorder=1.2)
+                self._hatch(p0, p1, n * side)
+                self.guide_bands.append(self._band(p0, p1, n * side))
             self.guides.append((a, b))
+
+    def _band(self, a: complex, b: complex, outward: complex):
+        """The band [mm] a guide line a–b and its hatching (on the side *outward*, strokes leaning back) take."""
+        u = unit(b - a)
+        out = outward * (HATCH_LEN + 0.2)
+        back = u * (HATCH_LEN * 0.8 + 0.2) * (1 if ((b - a) * (outward * 1j).conjugate()).real >= 0 else -1)
+        pts = [a - back, b + back, b + back + out, a - back + out]
+        return ShapelyPolygon([(z.real, z.imag) for z in pts]).convex_hull.buffer(0.3)
+
+    def _clear_spans(self, a: complex, b: complex, outward: complex) -> list[tuple[complex, complex]]:
+        """The stretches of guide line a–b to leave out so that neither it nor its hatching crosses what it keeps
+        clear of (:attr:`clear`): each passage of a path or link through the band, and :data:`CLEAR_MM` more."""
+        if not self.clear or abs(b - a) == 0:
+            return []
+        u = unit(b - a)
+        out = outward * (HATCH_LEN + 0.2)
+        ext = u * (HATCH_LEN + 0.5)
+        off = unit(outward) * 0.3  # (a link or path that only meets the line, a slider's own, breaks nothing)
+        band = ShapelyPolygon([(z.real, z.imag) for z in (a - ext + off, b + ext + off, b + ext + out, a - ext + out)]).convex_hull
+        spans = []
+        for geom in self.clear:
+            if not geom.intersects(band):
+                continue
+            for part in shapely.get_parts(geom.intersection(band)):
+                coords = shapely.get_coordinates(part)
+                if not len(coords):
+                    continue
+                ts = [((complex(x, y) - a) * u.conjugate()).real for x, y in coords]
+                spans.append((a + u * (min(ts) - CLEAR_MM - HATCH_LEN), a + u * (max(ts) + CLEAR_MM + HATCH_LEN)))
+        return spans
 
     def _bearing(self, body: str, name: str, line) -> None:
         """A bar sliding along a frame line (a yoke on its rail): the prismatic pair with the frame

@@ -25,7 +25,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 
 from .._text import SUBSCRIPT, math_name
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
-from .labels import place_label
+from .labels import LABEL_SPACE_MM, place_label
 from .numerals import localised, scale_caption
 
 from .style import (
@@ -50,6 +50,7 @@ __all__ = [
     "aliases",
     "alongside",
     "pole_text",
+    "at_rest_texts",
     "along_note",
     "kinds_drawn",
     "vector_math",
@@ -61,6 +62,9 @@ __all__ = [
     "legend_entries",
     "ZERO_MM",
     "SHORT_MM",
+    "enlarged",
+    "whole_detail_ratios",
+    "detail_caption",
 ]
 
 #: A vector shorter than this [mm] is not drawn (it has no direction to show).
@@ -78,6 +82,8 @@ BESIDE_MM = 1.2
 #: π→m′ on π→a′, quick-return v_A4C = p→a₄ on p→d) is drawn on it, as the
 #: textbook draws it: its head stands on that shaft with a white rim this wide [pt].
 HALO_PT = 1.2
+#: Two plan labels' boxes sharing more than this [mm²] overlap (one is then placed before the other).
+LABEL_CLASH_MM2 = 0.01
 #: A label set further than this from its point [mm] gets a leader line.
 LEADER_FROM_MM = 2.0
 #: Label gaps [mm] tried in turn on a plan (the far ones with a leader line).
@@ -101,7 +107,49 @@ DETAIL_RATIOS = (2, 2.5, 4, 5, 10)
 #: The detail's name on the plan and over the detail (a drafting detail numeral).
 DETAIL_NAME = "I"
 
+#: A plan no larger than this [mm] across whose short components are given only in notes (quick-return position 4's
+#: acceleration plan, 22 mm at the plate's k_a) is drawn again whole, enlarged n : 1, beside itself (a detail)...
+SMALL_PLAN_MM = 30.0
+#: ...at most this large [mm]; the plan's notes then wrapped this wide [mm].
+ENLARGED_MAX_MM = 120.0
+NARROW_NOTES_MM = 30.0
+
 _UNITS = {"velocity": ("k_v", "(m/s)/mm"), "acceleration": ("k_a", "(m/s²)/mm")}
+
+
+def enlarged(plan, ratio: float):
+    """*plan* drawn *ratio* times larger: every image, vector end and construction line's point [mm] multiplied by
+    *ratio*, the scale factor divided by it (the same plan at k / n; nothing solved again)."""
+    from dataclasses import replace
+
+    def vector(v):
+        return replace(v, tail=complex(v.tail) * ratio, tip=complex(v.tip) * ratio)
+
+    steps = tuple(replace(s, known=tuple(vector(v) for v in s.known), found=tuple(vector(v) for v in s.found),
+                          lines=tuple(replace(cl, through=complex(cl.through) * ratio) for cl in s.lines)) for s in plan.steps)
+    return replace(plan, scale=plan.scale / ratio, images={k: complex(z) * ratio for k, z in plan.images.items()},
+                   vectors=tuple(vector(v) for v in plan.vectors), steps=steps)
+
+
+def whole_detail_ratios(plan) -> tuple[float, ...]:
+    """The ratios n, largest first, at which a small *plan* is drawn again whole beside itself (a detail; none for a plan
+    larger than :data:`SMALL_PLAN_MM`, one without components too short for an arrow, or one with a crowd detailed
+    within it): each makes it at most :data:`ENLARGED_MAX_MM` across and draws one more of its short vectors as an arrow."""
+    vectors = vectors_drawn(plan)
+    shorts = [v for v in vectors if v.length < SHORT_MM]
+    if not shorts or _crowds(plan, plan.images, vectors):
+        return ()
+    zs = [0j] + [complex(z) for z in plan.images.values()] + [complex(v.tip) for v in vectors]
+    extent = max(max(z.real for z in zs) - min(z.real for z in zs), max(z.imag for z in zs) - min(z.imag for z in zs))
+    if extent >= SMALL_PLAN_MM:
+        return ()
+    return tuple(n for n in reversed(DETAIL_RATIOS) if extent * n <= ENLARGED_MAX_MM and any(v.length * n >= SHORT_MM for v in shorts))
+
+
+def detail_caption(ratio: float, lang: str = "en") -> tuple[str, str]:
+    """The heading of a plan's whole detail in the reader's language, as (word, numeral and ratio): ``("detail", "I (5 : 1)")``,
+    written ``detail I (5 : 1)`` (the word over the rest where the detail is narrower than the whole)."""
+    return term("detail", lang), f"{DETAIL_NAME} ({fmt_number(ratio)} : 1)"
 
 
 def _same(v, w) -> bool:
@@ -153,13 +201,14 @@ def vector_math(label: str) -> str:
 
 #: The letter of a Coriolis component's end as textbooks letter it...
 CORIOLIS_LETTER = "k"
-#: ...and the one used when an image of the scene is lettered k (linear-arm's point K: k′ beside k₁ would read as
-#: the images of K and of its point on link 1).  No point name is Greek.
-CORIOLIS_LETTER_ELSE = "κ"
+#: ...and, when an image of the scene is lettered k (linear-arm's point K: its image k′ beside a Coriolis end k or κ
+#: reads as one letter), the Coriolis component's own symbol as the legend, the equations and the readings write it
+#: (aᵏ; aᵏ₁, aᵏ₂ in the order of the equations when there are several), the component named at its end.
+CORIOLIS_LETTER_ELSE = "aᵏ"
 
 
 def coriolis_letter(plan=None) -> str:
-    """The letter of the Coriolis components' ends on *plan*: ``k``, or ``κ`` when an image of a scene point is lettered k."""
+    """The letter of the Coriolis components' ends on *plan*: ``k``, or ``aᵏ`` when an image of a scene point is lettered k."""
     images = getattr(plan, "images", {}) or {}
     points = getattr(plan, "points", None)
     for name in images:
@@ -172,7 +221,7 @@ def coriolis_letter(plan=None) -> str:
 def end_letters(vectors, plan=None) -> dict[str, str]:
     """Vector label -> the letter of its end point, as textbooks letter the plan: normal
     components end at n₁, n₂, …, Coriolis components at k (k₁, k₂, … when there are several;
-    κ, κ₁, … when the scene has a point K, see :func:`coriolis_letter`)."""
+    aᵏ, aᵏ₁, … when the scene has a point K, see :func:`coriolis_letter`)."""
     out = {}
     for kind, letter in (("normal", "n"), ("coriolis", coriolis_letter(plan))):
         these = [v for v in vectors if v.kind == kind]
@@ -197,6 +246,7 @@ def segment(plan, v, letters: dict[str, str] | None = None) -> str:
             ends.setdefault(letters[w.label], complex(w.tip))
     sub = v.label.partition("_")[2]
     points = getattr(plan, "points", None) or {}
+    rest = at_rest_texts(plan)
 
     def written(name: str) -> str:
         return "".join(points[name]) if name in points else name.rstrip("′").upper()
@@ -213,13 +263,14 @@ def segment(plan, v, letters: dict[str, str] | None = None) -> str:
         here = [name for name, w in plan.images.items() if abs(w - z) <= SAME_MM]
         named = [name for name in here if fits(name, tail)]
         if named:
-            return image_text(max(named, key=lambda n: fits(n, tail)), points)
+            best = max(named, key=lambda n: fits(n, tail))
+            return rest.get(best) or image_text(best, points)
         for text, at in ends.items():
             if abs(at - z) <= SAME_MM:
                 return text
         if abs(z) <= SAME_MM:
             return pole_text(plan)
-        return image_text(here[0], points) if here else "?"
+        return (rest.get(here[0]) or image_text(here[0], points)) if here else "?"
 
     a = pole_text(plan) if v.kind == "absolute" else letter(complex(v.tail), True)
     b = letter(complex(v.tip), False)
@@ -295,6 +346,26 @@ def pole_text(plan) -> str:
     return pole
 
 
+def at_rest_texts(plan) -> dict[str, str]:
+    """Image label -> its label when the plan's vectors name the point at rest differently: a point of the frame only
+    (of no moving link's figure) whose image is at the pole, named by a vector from the pole with a link's number (six-bar: the sleeve 6 pivoted at the
+    frame point E, ``v_E5E6``, whose equations read v_E6 = 0: the image e at the pole is lettered ``e₆``, ``e₆′``)."""
+    points = getattr(plan, "points", None) or {}
+    on_links = {n for names in getattr(plan, "links", {}).values() for n in names}
+    out = {}
+    for name, z in plan.images.items():
+        if abs(z) > SAME_MM or name not in points or points[name][1] or name in on_links:
+            continue  # (a point of a moving link at rest for the instant keeps its letter: linear-arm's f′)
+        point = points[name][0]
+        written = {"".join(points[n]) for n in plan.images if n in points}
+        for v in plan.vectors:
+            m = re.search(rf"(?<![A-Za-z]){re.escape(point)}([0-9]+)$", v.label.partition("_")[2])
+            if abs(v.tail) <= SAME_MM and v.kind != "absolute" and m and point + m.group(1) not in written:
+                out[name] = point.lower() + m.group(1).translate(SUBSCRIPT) + name[len(name.rstrip("′")):]
+                break
+    return out
+
+
 def aliases(plan) -> dict[str, list[str]]:
     """Absolute vector label -> the other names of the same vector, which the drawing draws once with it.
 
@@ -361,12 +432,13 @@ def _check(z: complex, what: str) -> complex:
 
 
 def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True, detail: bool = True,
-                   heading: bool = True) -> None:
+                   heading: bool = True, whole: float | None = None) -> None:
     """Draw *plan* into *sketch* (one data unit = 1 mm): what :func:`draw_plan` does on a page's own Sketch.
 
     *caption* False leaves out the heading, scale and legend; *legend* False only the legend;
     *detail* False the enlarged detail of crowded images; *heading* False the heading and the
-    scale factor only (a page that states them itself keeps the notes on short vectors).
+    scale factor only (a page that states them itself keeps the notes on short vectors); *whole* the ratio of a detail
+    of the whole plan drawn beside it (:func:`whole_detail_ratios`: its notes say which short vectors it draws).
     """
     images = {name: _check(z, f"image {name}") for name, z in plan.images.items()}
     vectors = vectors_drawn(plan)
@@ -461,23 +533,75 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             name = next_name()
             for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, at):
                 in_detail.setdefault(label, name)
+    if detail:
+        # a vector from the pole along a longer one (six-bar π m′ on π a′, 0.6° apart): its tip, under a millimetre off
+        # the other's shaft, is ringed and drawn enlarged within the plan, where the two read apart
+        for v, w in alongside(plan):
+            tip = complex(v.tip)
+            u = unit(complex(w.tip) - complex(w.tail))
+            foot = complex(w.tail) + u * ((tip - complex(w.tail)) * u.conjugate()).real
+            ring = _ring([tip, foot])
+            if all(abs(tip - c) > r for (c, r, _), _ in rings) and (at := _spot(sketch, ring, within=True)) is not None:
+                _draw_ring(sketch, ring)  # (only where the plan has room for it: the page's plan keeps its scale)
+                name = next_name()
+                for label in _detail(sketch, plan, vectors, images, ends, ring, [], name, at):
+                    in_detail.setdefault(label, name)
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     # every dot of the plan: a label stands nearer its own point than any other (it reads as that point's)
     where = {"pole-label": 0j} | {f"image-{name}": z for name, z in images.items()} | {f"end-{label}": z for z, _, label in ends}
-    for at, pieces in groups:
-        mine = [where[gid] for _, gid in pieces if gid in where]
-        rivals = tuple(q for q in where.values() if all(abs(q - m) > SAME_MM for m in mine))
-        place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM, rivals=rivals,
-                    by_box=True)
+
+    def place_labels(order: list[int], led: frozenset = frozenset()) -> list[tuple[int, int]]:
+        """Place the groups' labels in *order* (those in *led* may stand off with a leader); the pairs (later, earlier)
+        whose boxes overlap."""
+        boxes: list[tuple[int, object]] = []
+        clashes = []
+        for i in order:
+            at, pieces = groups[i]
+            mine = [where[gid] for _, gid in pieces if gid in where]
+            rivals = tuple(q for q in where.values() if all(abs(q - m) > SAME_MM for m in mine))
+            place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM, rivals=rivals,
+                        by_box=True, leader_ok=i in led)
+            drawn = sketch.obstacles[-1].buffer(-LABEL_SPACE_MM, join_style=2)  # the label's own box
+            clashes += [(i, j) for j, other in boxes if drawn.intersection(other).area > LABEL_CLASH_MM2]
+            boxes.append((i, drawn))
+        return clashes
+
+    # labels where they fit, the pole's and the coincident images' first; a label that lands on one placed before it
+    # (linear-arm position 2: n₁ 2.3 mm off the pole under "π, d′, q′, a′, f′") is placed before that one instead,
+    # the other taking the room it leaves, with a leader when it must stand off
+    order, led = list(range(len(groups))), frozenset()
+    state = sketch.checkpoint()
+    clashes = place_labels(order)
+    for _ in range(3):
+        if not clashes:
+            break
+        earlier = list(order)
+        led_more = led | {i for pair in clashes for i in pair}
+        for later, first in clashes:
+            if earlier.index(later) > earlier.index(first):
+                earlier.remove(later)
+                earlier.insert(earlier.index(first), later)
+        sketch.restore(state)
+        tried = place_labels(earlier, led_more)
+        if len(tried) < len(clashes):
+            order, led, clashes = earlier, led_more, tried
+        else:  # no better: as it was
+            sketch.restore(state)
+            place_labels(order, led)
+            break
 
     for ring, names in rings:
         name = next_name()
         for label in _detail(sketch, plan, vectors, images, ends, ring, names, name):
             in_detail.setdefault(label, name)
 
+    if whole:
+        for v in shorts:
+            if v.length * whole >= SHORT_MM:
+                in_detail.setdefault(v.label, DETAIL_NAME)
     if caption:
         _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, in_detail.get(v.label)) for v in shorts],
-                 along=alongside(plan), heading=heading, letters=letters)
+                 along=alongside(plan), heading=heading, letters=letters, narrow=bool(whole))
 
 
 def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[str]]]:
@@ -557,8 +681,9 @@ def _label_groups(plan, images: dict, ends, shorts, join: float) -> list[tuple[c
                 return
         groups.append((z, [piece]))
 
+    rest = at_rest_texts(plan)
     for name, z in images.items():
-        add(z, (image_text(name, getattr(plan, "points", None)), f"image-{name}"), SAME_MM)
+        add(z, (rest.get(name) or image_text(name, getattr(plan, "points", None)), f"image-{name}"), SAME_MM)
     for z, letter, label in ends:
         # a lettered end within *join* of an image shares its label whether its own vector or the next one is the
         # short one (quick-return position 4: n₁ 0.16 mm from a₄′, the tangential component between them)
@@ -914,9 +1039,9 @@ def notes_text(plan, notes, lang: str = "en", letters: dict[str, str] | None = N
 
 
 def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", legend: bool = True, notes=(), along=(), heading: bool = True,
-             letters: dict[str, str] | None = None) -> None:
+             letters: dict[str, str] | None = None, narrow: bool = False) -> None:
     """Heading, scale factor, notes on vectors too short to draw and on vectors that lie one along the other, and the legend, below the plan
-    (*heading* False: no heading and scale)."""
+    (*heading* False: no heading and scale; *narrow*: the notes side by side only as far as the plan itself is wide, a detail beside it)."""
     symbol, units = _UNITS[plan.kind]
     b = sketch.bounds
     x, y = b.xmin, b.ymin - 3.0
@@ -929,14 +1054,24 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
         y += 4.6
     # notes side by side as far as the plan is wide (a plan with many of them grows by a line, not by a line each):
     # first the segments too short for an arrow, then the directions of vectors that lie one along another
-    width = max(b.width, 60.0)
+    width = max(b.width, NARROW_NOTES_MM) if narrow else max(b.width, 60.0)
     items = [(text, f"short-{v.label}") for (v, _), text in zip(notes, notes_text(plan, notes, lang, letters))]
+    if narrow:
+        # beside a detail, a note wider than the plan says where it is drawn on a line of its own ("(выносной элемент I)")
+        split = []
+        for text, gid in items:
+            head, _, where = text.rpartition(" (")
+            if head and text_size(text, CAPTION_PT)[0] > width:
+                split += [(head, gid), ("(" + where, "where-" + gid[len("short-"):])]
+            else:
+                split.append((text, gid))
+        items = split
     if along:
         items += [(text, f"along-{along[0][0].label}" + (f"-{k}" if k else "")) for k, text in enumerate(along_note(plan, along, lang))]
     cursor, cursor_along = None, False
     for note, gid in items:
         w = text_size(note, CAPTION_PT)[0]
-        if cursor is None or cursor + w > x + width or (gid.startswith("along") and not cursor_along):
+        if cursor is None or cursor + w > x + width or gid.startswith("where-") or (gid.startswith("along") and not cursor_along):
             y -= 4.6
             cursor = x
         cursor_along = gid.startswith("along")

@@ -6,13 +6,17 @@ every reported point over the driver's cycle (a coupler curve) is drawn from
 the run's analytic sweep, broken where the mechanism cannot assemble.  The
 positions are numbered 0, 1, 2, … at the driver's moving point and at every
 moving reported point, as the course numbers them, where a number has room:
-beside its mark, else at the end of a short leader line, else not at all
-(no number is ever drawn over another mark or label).  Paths are drawn only
-where the mechanism assembles, and the caption names the positions that are
-not drawn and why.
+beside its mark, else at the end of a short leader line (no number is ever
+drawn over another mark or label, on a guide's hatching or in a guideway); marks
+too close together for their numbers are ringed and drawn again, enlarged n : 1,
+in a drafting detail ("detail I (5 : 1)", :func:`draw_details`) where each is
+numbered; only a mark that finds room in neither is listed under the plan.  The
+frame guides keep off the paths and every position's links: their lines and
+hatching are broken where one passes through.  Paths are drawn only where the
+mechanism assembles, and the caption names the positions that are not drawn and why.
 
 Gids: ``pos-link-<k>-<body>``, ``pos-path-<point>``, ``pos-position-<k>-<point>`` (a number; ``…-leader`` its leader line), ``pos-mark-<k>-<point>``,
-and the ``mech-…`` gids of the scheme of position 0 (prefix ``pos``).
+``pos-detail-…`` (see :func:`draw_details`), and the ``mech-…`` gids of the scheme of position 0 (prefix ``pos``).
 """
 
 from __future__ import annotations
@@ -29,11 +33,11 @@ from ..i18n import term
 from ..sweep import line_travel
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import LABEL_SPACE_MM
-from .mechanism import FRAME, MechanismDrawing, mechanism_labels
+from .mechanism import BAR_PT, FRAME, MechanismDrawing, mechanism_labels
 from .numerals import localised
 from .style import CAPTION_PT, HEADING_PT, SMALL_PT
 
-__all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points", "place_number", "number_ranges"]
+__all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points", "place_number", "number_ranges", "draw_details"]
 
 GHOST = "#8c8c8c"
 PATH_COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
@@ -61,6 +65,21 @@ OWN_MM = 0.6
 THIN_MM = 0.42
 #: ... and longer than this [mm] (a driver's arrow, 0.9 pt, is shorter).
 LONG_MM = 30.0
+#: Marks left without a number within this [mm] of one another are one crowd, drawn again in one detail...
+CROWD_MM = 3.0
+#: ... enlarged n : 1 by the first of these drafting ratios that sets its two closest marks this far [mm] apart.
+DETAIL_RATIOS = (2, 2.5, 4, 5, 10, 20)
+DETAIL_APART_MM = 2.2
+#: The largest radius [mm] of a detail (a crowd that needs more is stated under the plan).
+DETAIL_MOST_MM = 32.0
+#: A detail finds room within the drawing, or beside it within this fraction of its size.
+DETAIL_GROW = 0.3
+#: The least radius [mm] of the ring on the plan (a crowd's neighbours show in its detail).
+RING_LEAST_MM = 3.5
+#: Marks nearer than this [mm] on the plan are one place at any ratio (their numbers stand side by side).
+ONE_PLACE_MM = 0.15
+#: Room [mm] the ring on the plan leaves round the crowd's outer marks.
+RING_MARGIN_MM = 0.8
 
 
 def numbered_points(scene) -> list[str]:
@@ -114,13 +133,27 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     assembled = np.asarray(cycle.valid, dtype=bool)
     frame = scene.bodies[FRAME].points
     moving = [p for p in scene.report if p not in frame and p in cycle.points]
+    clear = []  # the paths and every position's links [mm]: a frame guide's hatching keeps off them
+    figure = []  # (points [mm], colour, width [pt], dashes) of the lines a detail draws again, enlarged
     for n, name in enumerate(moving):
         colour = PATH_COLOURS[n % len(PATH_COLOURS)]
         track = np.where(assembled, np.asarray(cycle.points[name].r), np.nan + 0j)
         for seg in _segments(track / k_l):
             pts = [complex(z) for z in seg]
+            clear.append(LineString([(z.real, z.imag) for z in pts]))
             # over the blocks and slots of the scheme (a point's path runs through its block), under pins and labels
             sketch.line(pts, color=colour, lw=PATH_PT, dashes=(4.0, 1.5), gid=f"path-{name}", zorder=3.1, obstacle=False)
+            figure.append((pts, colour, PATH_PT, (4.0, 1.5)))
+
+    # every position's links, as a guide keeps clear of them (position 0's are drawn in full below)
+    for g in [r.graphical for r in runs] + list((extremes or {}).values()):
+        for body_name, body in scene.bodies.items():
+            pts = [complex(g.positions[p]) / k_l for p in body.points if p in g.positions]
+            if body_name != FRAME and len(pts) >= 2:
+                ring = pts if len(pts) == 2 else _hull(pts) + _hull(pts)[:1]
+                clear.append(LineString([(z.real, z.imag) for z in ring]))
+                first_one = g is runs[0].graphical
+                figure.append((ring, "#000000" if first_one else GHOST, BAR_PT / 2 if first_one else GHOST_PT, None))
 
     # the other positions, thin
     for run in runs[1:]:
@@ -160,17 +193,23 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
                 at = complex(run.graphical.positions[p]) / k_l
                 sketch.circle(at, MARK_R, fc="#000000", lw=0, gid=f"mark-{run.index}-{p}", zorder=4.5, obstacle=True)
                 marks.append((run.index, p, at))
+    # (the other extreme's too, before any number: a number is never set on a mark drawn after it)
+    extreme_marks = [(label, p, complex(g.positions[p]) / k_l) for label, g in (extremes or {}).items() for p in numbered if p in g.positions]
+    for label, p, at in extreme_marks:
+        sketch.circle(at, MARK_R, fc="#000000", lw=0, gid=f"mark-extreme-{p}", zorder=4.5, obstacle=True)
 
-    # position 0 in full (its labels keep clear of the marks)
-    mech = MechanismDrawing(sketch, base, lang=lang, caption=False, slots=line_travel(cycle))  # guides over the stroke
+    # position 0 in full (its labels keep clear of the marks), its guides over the stroke, broken where a path
+    # or a link of any position passes through their hatching
+    mech = MechanismDrawing(sketch, base, lang=lang, caption=False, slots=line_travel(cycle), clear=clear)
     mech.draw()
+    # a number stands neither on a guide's hatching nor in a guideway (its leader may cross them)
+    keep_out = [g for g in mech.guide_bands + mech.guideways]
 
     # numbers where they have room: beside the mark, else on a short leader line, else left out;
     # position 0 of every point first, then the others in order
     centres = {p: (complex(np.nanmean(np.asarray(cycle.points[p].r)[assembled])) / k_l if p in cycle.points and assembled.any() else mech.centroid) for p in numbered}
     labelled = set(mechanism_labels(base))
     # (a number nearer its own mark than any other: a reader takes a number for the nearest point's)
-    extreme_marks = [(label, p, complex(g.positions[p]) / k_l) for label, g in (extremes or {}).items() for p in numbered if p in g.positions]
     every = np.array([at for _, _, at in marks] + [at for _, _, at in extreme_marks], dtype=complex)
     left_out = []
     for index, p, at in sorted(marks, key=lambda m: (m[0] != runs[0].index, m[0], numbered.index(m[1]))):
@@ -179,13 +218,18 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
         away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
         # position 0 (the scheme drawn in full) numbered first, wherever it has room; the others nearest their marks
         rivals = None if index == runs[0].index else every
-        if place_number(sketch, at, f"{p}{_sub(index)}", gid=f"position-{index}-{p}", size=NUMBER_PT, prefer=away, rivals=rivals) is None:
-            left_out.append(f"{p}{_sub(index)}")
+        if place_number(sketch, at, f"{p}{_sub(index)}", gid=f"position-{index}-{p}", size=NUMBER_PT, prefer=away, rivals=rivals,
+                        keep_out=keep_out) is None:
+            left_out.append((f"{p}{_sub(index)}", at))
     for label, p, at in extreme_marks:
-        sketch.circle(at, MARK_R, fc="#000000", lw=0, gid=f"mark-extreme-{p}", zorder=4.5, obstacle=True)
         away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
-        if place_number(sketch, at, f"{p}{label.translate(SUBSCRIPT)}", gid=f"position-extreme-{p}", size=NUMBER_PT, prefer=away, rivals=every) is None:
-            left_out.append(f"{p}{label.translate(SUBSCRIPT)}")
+        if place_number(sketch, at, f"{p}{label.translate(SUBSCRIPT)}", gid=f"position-extreme-{p}", size=NUMBER_PT, prefer=away, rivals=every,
+                        keep_out=keep_out) is None:
+            left_out.append((f"{p}{label.translate(SUBSCRIPT)}", at))
+    # the marks too close together for their numbers: drawn again, enlarged, in a detail, and numbered there
+    if left_out:
+        every_mark = [(f"{p}{_sub(index)}", at) for index, p, at in marks] + [(f"{p}{label.translate(SUBSCRIPT)}", at) for label, p, at in extreme_marks]
+        left_out = draw_details(sketch, left_out, every_mark, figure, lang=lang)
 
     # caption
     b = sketch.bounds
@@ -216,7 +260,7 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
                 )
     if left_out:  # the marks whose number found no room of its own, said (never silently left out)
         words, lines = f"{term('not_numbered', lang)}:", []
-        for item in left_out:  # lines as wide as the drawing (a caption never widens it)
+        for item, _ in left_out:  # lines as wide as the drawing (a caption never widens it)
             if text_size(f"{words} {item},", CAPTION_PT)[0] > max(b.width, 60.0) and words.strip():
                 lines.append(words)
                 words = "    "
@@ -238,6 +282,132 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
         sketch.line([complex(xx, yy - 1.4), complex(xx + 8.0, yy - 1.4)], color=colour, lw=PATH_PT, dashes=(4.0, 1.5), gid=f"legend-path-{name}", obstacle=False)
         sketch.text(complex(xx + 9.5, yy - 1.4), words, size=CAPTION_PT, ha="left", va="center", gid="legend-path", obstacle=False)
         xx += width
+
+
+def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark: list[tuple[str, complex]], figure, *,
+                 lang: str = "en") -> list[tuple[str, complex]]:
+    """Crowds of marks whose numbers found no room drawn again, enlarged n : 1, each in a drafting detail.
+
+    The crowd is ringed on the plan and named (I, II, …); the detail, a circle in
+    free room of the drawing (else below it), shows what the ring holds — the
+    lines of *figure* (points [mm], colour, width [pt], dashes) and every mark of
+    *every_mark* (number text, place [mm]) — at n times its size on the plan, so
+    that its length scale is k_l / n, and numbers every mark there.  Its title
+    says its name and ratio in the reader's language ("detail I (5 : 1)").
+    Returns the marks numbered neither on the plan nor in a detail.
+    Gids: ``detail-ring-<name>``, ``detail-mark-<name>``, ``detail-<name>``, ``detail-<name>-line``,
+    ``detail-<name>-dot-<number>``, ``detail-<name>-number-<number>`` (the number in ASCII: ``H3``, ``B0p`` for B₀′),
+    ``detail-<name>-title``.
+    """
+    from shapely.geometry import Point
+
+    # crowds: the left-out marks within CROWD_MM of one another, by one union of disks
+    disks = shapely.union_all([Point(at.real, at.imag).buffer(CROWD_MM / 2) for _, at in left_out])
+    crowds = []
+    for part in sorted(shapely.get_parts(disks), key=lambda g: (-g.centroid.y, g.centroid.x)):
+        crowds.append([(text, at) for text, at in left_out if part.contains(Point(at.real, at.imag))])
+    still = []
+    lines = [LineString([(z.real, z.imag) for z in pts]) for pts, _, _, _ in figure if len(pts) >= 2]  # (no detail over them)
+    # the details find room within the drawing, or beside it within DETAIL_GROW of its size: under a wide drawing,
+    # right of a tall one (a page is filled by the drawing's longer side: the other has room to spare)
+    b = sketch.bounds
+    grow = DETAIL_GROW * max(b.width, b.height)
+    limit = (b.xmin, b.ymin - grow, b.xmax, b.ymax) if b.width > b.height else (b.xmin, b.ymin, b.xmax + grow, b.ymax)
+    names = 0
+    for crowd in crowds:
+        name = "I" * (names + 1) if names < 3 else ("IV", "V", "VI", "VII", "VIII", "IX", "X")[min(names - 3, 6)]
+        pts = [at for _, at in crowd]
+        centre = sum(pts) / len(pts)
+        r = max(abs(q - centre) for q in pts) + RING_MARGIN_MM
+        inside = [(text, at) for text, at in every_mark if abs(at - centre) <= max(r, RING_LEAST_MM)]
+        apart = [abs(q - w) for i, (_, q) in enumerate(inside) for _, w in inside[:i] if abs(q - w) > ONE_PLACE_MM]
+        closest = min(apart) if apart else DETAIL_APART_MM  # (a lone mark: the least enlargement)
+        fits = [n for n in DETAIL_RATIOS if r * n <= DETAIL_MOST_MM]
+        if not fits:
+            still.extend(crowd)  # (a crowd too wide for any detail: its marks are stated under the plan)
+            continue
+        ratio = next((n for n in fits if closest * n >= DETAIL_APART_MM), fits[-1])
+        r = min(max(r, RING_LEAST_MM), DETAIL_MOST_MM / ratio)  # (its neighbours shown too, where there is room)
+        inside = [(text, at) for text, at in every_mark if abs(at - centre) <= r]
+        big = r * ratio
+        title = f"{term('detail', lang)[:1].upper()}{term('detail', lang)[1:]} {name} ({localised(fmt_number(ratio), lang)} : 1)"
+        tw, th = text_size(title, CAPTION_PT)
+        at = _free_spot(sketch, centre, big + 1.0, (tw + 1.0, th + 4.0), limit, lines)
+        if at is None:
+            still.extend(crowd)  # (no room for its detail: its marks are stated under the plan)
+            continue
+        names += 1
+        sketch.circle(centre, r, fc="none", ec="#000000", lw=0.5, gid=f"detail-ring-{name}", zorder=4.6, obstacle=False)
+        sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
+        rim = centre + r * cmath.exp(1j * math.pi / 4)
+        place_number(sketch, rim, name, gid=f"detail-mark-{name}", size=CAPTION_PT, prefer=cmath.exp(1j * math.pi / 4))
+
+        def f(z: complex) -> complex:
+            return at + (z - centre) * ratio
+
+        disk = Point(centre.real, centre.imag).buffer(r, quad_segs=32)
+        sketch.circle(at, big, fc="white", ec="#000000", lw=0.6, gid=f"detail-{name}", zorder=0.9, obstacle=False)
+        sketch.obstacles.append(Point(at.real, at.imag).buffer(big).exterior.buffer(0.3))
+        sketch.bounds.add_box(at.real - big, at.imag - big, at.real + big, at.imag + big)
+        for pts_line, colour, lw, dashes in figure:
+            line = LineString([(z.real, z.imag) for z in pts_line]) if len(pts_line) >= 2 else None
+            if line is None or not line.intersects(disk):
+                continue
+            for part in shapely.get_parts(line.intersection(disk)):
+                xy = shapely.get_coordinates(part)
+                if len(xy) >= 2:
+                    sketch.line([f(complex(x, y)) for x, y in xy], color=colour, lw=lw, dashes=dashes, gid=f"detail-{name}-line",
+                                zorder=1.0 if colour == GHOST else 1.1, obstacle=colour != GHOST and dashes is None)
+        sketch.text(at - 1j * (big + 3.0), title, size=CAPTION_PT, gid=f"detail-{name}-title", zorder=6.0)  # (before its numbers)
+        big_marks = [(text, f(q)) for text, q in inside]
+        for text, q in big_marks:
+            sketch.circle(q, MARK_R, fc="#000000", lw=0, gid=f"detail-{name}-dot-{_ascii(text)}", zorder=4.5, obstacle=True)
+        rivals = np.array([q for _, q in big_marks], dtype=complex)
+        # the marks lie along a path: their numbers either side of it in turn, across it
+        ends = max(((q, w) for _, q in big_marks for _, w in big_marks), key=lambda qw: abs(qw[0] - qw[1]))
+        along = unit(ends[1] - ends[0]) if abs(ends[1] - ends[0]) > 1e-9 else 1.0
+        order = sorted(range(len(big_marks)), key=lambda i: ((big_marks[i][1] - at) * along.conjugate()).real)
+        for turn, i in enumerate(order):
+            text, q = big_marks[i]
+            away = along * (1j if turn % 2 == 0 else -1j)
+            if (place_number(sketch, q, text, gid=f"detail-{name}-number-{_ascii(text)}", size=NUMBER_PT, prefer=away, rivals=rivals) is None
+                    and place_number(sketch, q, text, gid=f"detail-{name}-number-{_ascii(text)}", size=NUMBER_PT, prefer=away) is None):
+                if any(text == t for t, _ in crowd):
+                    still.append((text, centre))
+        sketch.obstacles.append(Point(at.real, at.imag).buffer(big + 1.0))  # (the next detail finds room beside it)
+    return still
+
+
+def _free_spot(sketch: Sketch, near: complex, radius: float, title: tuple[float, float], limit, lines=()) -> complex | None:
+    """The centre [mm] of a disk of *radius* with a *title* (width, height [mm]) under it that meet no obstacle, in
+    the drawing's bounds nearest *near*, else beside (under, or right of) the drawing where it grows least, within
+    *limit* (x0, y0, x1, y1 [mm]), clear of the drawing's *lines* too; None where there is no such room."""
+    b = sketch.bounds
+    step = 2.0
+    x0, y0, x1, y1 = limit
+    xs = np.arange(x0 + radius, x1 - radius + 1e-9, step)
+    ys = np.arange(y0 + radius + title[1], y1 - radius + 1e-9, step)
+    obstacles = np.array([o for o in list(sketch.obstacles) + list(lines) if not o.is_empty], dtype=object)
+    if len(xs) and len(ys) and len(obstacles):
+        spots = np.array([complex(x, y) for x in xs for y in ys])
+        outside = (spots.imag - radius < b.ymin) | (spots.real + radius > b.xmax)
+        # within the drawing first, nearest the crowd; else beside it where it adds least
+        grows = np.maximum(b.ymin - (spots.imag - radius - title[1]), 0) + np.maximum(spots.real + radius - b.xmax, 0)
+        spots = spots[np.lexsort((np.abs(spots - near), np.where(outside, grows, 0.0), outside))]
+        tree = shapely.STRtree(obstacles)
+        for start in range(0, len(spots), 1024):
+            batch = spots[start:start + 1024]
+            points = shapely.points(np.column_stack([batch.real, batch.imag]))
+            pairs = tree.query(points, predicate="dwithin", distance=radius)
+            busy = np.zeros(len(batch), dtype=bool)
+            busy[pairs[0]] = True
+            tops = batch.imag - radius
+            boxes = shapely.box(batch.real - title[0] / 2, tops - title[1], batch.real + title[0] / 2, tops)
+            busy[tree.query(boxes, predicate="intersects")[0]] = True
+            free = np.flatnonzero(~busy)
+            if len(free):
+                return complex(batch[int(free[0])])
+    return None
 
 
 def number_ranges(numbers: list[int]) -> str:
@@ -279,14 +449,16 @@ def _closer_than(geoms, shapes, limit: float):
     return out
 
 
-def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: float, prefer: complex | None = None, rivals=None):
+def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: float, prefer: complex | None = None, rivals=None,
+                 keep_out=()):
     """A position number beside its mark where it has room; else at the end of a short leader line; else none.
 
     Room means its box keeps :data:`NUMBER_CLEAR_MM` from every obstacle
     (marks, the scheme, its labels, the numbers already placed) and a leader
     crosses no other label; and, with *rivals* (the other marks [mm]), its
-    centre is nearer its own mark than any rival.  Returns the Text, or None
-    when there is no room.
+    centre is nearer its own mark than any rival; and it keeps off *keep_out*
+    (shapes [mm] its leader may cross: a guide's hatching).  Returns the Text, or
+    None when there is no room.
     """
     w, h = text_size(text, size)
     base = cmath.phase(prefer) if prefer else math.radians(45)
@@ -304,6 +476,8 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         shapes = shapes[(x0 <= at.real + reach) & (x1 >= at.real - reach) & (y0 <= at.imag + reach) & (y1 >= at.imag - reach)]
     boxes = np.array([box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2) for c, _, _ in candidates], dtype=object)
     crowded = _closer_than(boxes, shapes, NUMBER_CLEAR_MM)
+    if len(keep_out):
+        crowded |= _closer_than(boxes, np.array(list(keep_out), dtype=object), NUMBER_CLEAR_MM)
     if rivals is not None and len(rivals):
         others_at = np.asarray(rivals, dtype=complex)
         others_at = others_at[np.abs(others_at - at) > SAME_MARK_MM]  # (marks all but on one another: no label tells them apart)
@@ -349,6 +523,14 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         sketch.obstacles.append(label.buffer(LABEL_SPACE_MM, join_style=2))
         return artist
     return None
+
+
+def _ascii(text: str) -> str:
+    """A mark's number as a gid writes it: ``B₀′`` → ``B0p``."""
+    return text.translate(_ASCII)
+
+
+_ASCII = str.maketrans({**{c: str(n) for n, c in enumerate("₀₁₂₃₄₅₆₇₈₉")}, "′": "p"})
 
 
 def _sub(k: int) -> str:

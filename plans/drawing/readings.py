@@ -77,7 +77,7 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
     by_label = {v.label: v for v in plan.vectors}
     precision = graphical.precision
     unit = _UNIT[kind]
-    rows = [["", term("segment", lang), "mm", f"× ${key[0]}_{{{key[2]}}}$  (÷ l [m])", "="]]
+    rows = [["", term("segment", lang), "mm", f"× ${key[0]}_{{{key[2]}}}$  (÷ l [m])", f"= {term('reading_value', lang)}"]]
 
     def row(symbol: str, v, divide: float | None = None, sense: float | None = None, between: str = "") -> list[str]:
         length = v.value / k if v is not None else 0.0

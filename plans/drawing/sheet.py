@@ -55,7 +55,7 @@ def translate_table(table: list[list[str]], lang: str) -> list[list[str]]:
     """The sheet table with its header row and the words link/slider in *lang*."""
     if lang == "en" or not table or list(table[0]) != _TABLE_HEADER:
         return table
-    header = [term(k, lang) for k in ("quantity", "graphical", "analytic", "rel_error")]
+    header = [term(k, lang) for k in ("quantity", "by_plan", "analytic", "rel_error")]  # "по плану", not an adverb
     words = {" link ": f" {term('link', lang)} ", " slider ": f" {term('slider', lang)} "}
     rows = [header]
     for row in table[1:]:

@@ -82,14 +82,64 @@ def mechanism_svg(graphical, lang: str = "en") -> SvgBlock:
     return sketched("mech", lambda sketch: MechanismDrawing(sketch, graphical, lang=lang, caption=False).draw(), lang)
 
 
-def plan_svg(plan, lang: str = "en", detail: bool = True, margin: float = MARGIN_MM) -> SvgBlock:
+def plan_svg(plan, lang: str = "en", detail: bool = True, margin: float = MARGIN_MM, room: tuple[float, float] | None = None) -> SvgBlock:
     """A velocity or acceleration plan at its own scale, without heading, scale and legend (the page states them);
-    *margin* [mm] of white around it (less for a plan across a page, whose edges are the text area's)."""
-    from .plan_drawing import draw_plan_into
+    *margin* [mm] of white around it (less for a plan across a page, whose edges are the text area's).
+
+    With *room* (width, height [mm], the page's cell) a small plan whose short components are given only in notes is
+    drawn again whole beside itself, enlarged n : 1 (the largest of
+    :func:`plans.drawing.plan_drawing.whole_detail_ratios` that keeps the block in *room*), headed in the reader's
+    language (gids ``…-detail-…``)."""
+    from .plan_drawing import draw_plan_into, enlarged, whole_detail_ratios
 
     tag = "vel" if plan.kind == "velocity" else "acc"
-    return sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang,
-                     margin)
+
+    def plain() -> SvgBlock:
+        return sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang, margin)
+
+    if not detail or room is None:
+        return plain()
+    for ratio in whole_detail_ratios(plan):
+        block = _beside_its_detail(plan, enlarged(plan, ratio), ratio, tag, lang, margin)
+        if block.width <= room[0] + 0.5 and block.height <= room[1] + 0.5:
+            return block
+    return plain()
+
+
+#: Gap [mm] between a plan's drawing and its whole detail beside it (besides the detail's margin).
+DETAIL_GAP_MM = 4.0
+
+
+def _beside_its_detail(plan, big, ratio: float, tag: str, lang: str, margin: float) -> SvgBlock:
+    """The plan (its notes under it, one to a line where it is narrow) and, to its right, *big* (the plan enlarged
+    *ratio* : 1) under its heading, tops level, in one block."""
+    from ._canvas import text_size
+    from .plan_drawing import detail_caption, draw_plan_into
+    from .style import LABEL_PT
+
+    with drawing_rc():
+        fig = new_figure()
+        ax = fig.add_axes([0, 0, 1, 1])
+        small = Sketch(ax, tag)
+        draw_plan_into(small, plan, lang=lang, legend=False, detail=True, heading=False, whole=ratio)
+        ax2 = fig.add_axes([0, 0, 1, 1])
+        large = Sketch(ax2, f"{tag}-detail")
+        draw_plan_into(large, big, lang=lang, legend=False, caption=False, detail=False)
+        b = large.bounds
+        word, numeral = detail_caption(ratio, lang)
+        if text_size(f"{word} {numeral}", LABEL_PT)[0] > b.width:  # (a long word, "выносной элемент", over the rest)
+            large.text(complex(b.xmin, b.ymax + 3.0), numeral, size=LABEL_PT, ha="left", va="bottom", gid="name-ratio", obstacle=False)
+            large.text(complex(b.xmin, large.bounds.ymax + 1.0), word, size=LABEL_PT, ha="left", va="bottom", gid="name", obstacle=False)
+        else:
+            large.text(complex(b.xmin, b.ymax + 3.0), f"{word} {numeral}", size=LABEL_PT, ha="left", va="bottom", gid="name", obstacle=False)
+        w1, h1 = small.bounds.width + 2 * margin, small.bounds.height + 2 * margin
+        w2, h2 = large.bounds.width + 2 * margin, large.bounds.height + 2 * margin
+        x2 = w1 - margin + DETAIL_GAP_MM  # (the plan's margin the gap's first part)
+        width, height = x2 + w2, max(h1, h2)
+        fig.set_size_inches(width / 25.4, height / 25.4)
+        fit_axes(ax, small.bounds, margin, (0.0, height - h1), (width, height))
+        fit_axes(ax2, large.bounds, margin, (x2, height - h2), (width, height))
+        return SvgBlock(_rendered(fig, lang), width, height)
 
 
 def legend_svg(plans, lang: str = "en") -> SvgBlock:

@@ -23,11 +23,14 @@ from .equations import step_lines
 from .typesetting import FONT as _FONT, MATH_FONT as _MATH, image, mixed, string, text
 from .words import block_words, units
 
-__all__ = ["bbox", "plan_extent", "fit_factor", "fitted", "fitted_line", "formula_parts", "Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "TEXT_PT", "SMALL_PT"]
+__all__ = ["bbox", "plan_extent", "fit_factor", "fitted", "fitted_line", "formula_parts", "Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "TEXT_PT", "SMALL_PT", "TITLE_BLOCK_LEAST_PT"]
 
 GUTTER = 5.0  # mm between drawings and between columns
 TEXT_PT = 9.5
 SMALL_PT = 8.0
+#: the least size [pt] of the title block's words (the plate's name and the scene's title): a long title wraps to
+#: two lines rather than shrink below it
+TITLE_BLOCK_LEAST_PT = 8.0
 
 
 @dataclass(frozen=True)
@@ -114,10 +117,10 @@ def fitted(draw, extent, box, k0: float, given: float | None):
 
 
 #: a symbol with a subscript written in plain text (``t_w``), or a ``$…$`` part left as it is
-#: a formula that must not break across lines: ``ω₂ = 6 rad/s``, ``$k_l$ = 0,006 m/mm`` (a name, ``=``, a number and
-#: its unit; ``$…$`` math whole)
+#: a formula that must not break across lines: ``ω₂ = 6 rad/s``, ``$k_l$ = 0,006 m/mm``, ``|a_A| = 0`` (a name, ``=``, a
+#: number and its unit, if any; ``$…$`` math whole)
 _FORMULA = re.compile(r"(?:\$[^$]*\$|[^\s=$]+) = [−-]?\d+(?:[.,]\d+)*"
-                      r" \(?(?:rad|m|mm|µm|s|N|kg|м|мм|с|мкм|Н|кг)(?![^\W\d_])[^\s,;]*|\$[^$]*\$")
+                      r"(?: \(?(?:rad|m|mm|µm|s|N|kg|м|мм|с|мкм|Н|кг)(?![^\W\d_])[^\s,;]*|(?=[\s;)]|,\s|,?$))|\$[^$]*\$")
 
 
 def formula_parts(line: str) -> list[tuple[str, bool]]:
@@ -377,18 +380,40 @@ class Document:
     def loop_block(self, block) -> None:
         """A loop's equations under its title (their size :attr:`loops_scale` of the small text's)."""
         self.body.append(f"#block(sticky: true)[#text(size: loops-size + 0.5pt, weight: \"bold\")[{self.words(block_words(block.title, self.lang))}]]\n")
+        # an equation and the lines of its solution under it (``$\quad …``) one block, never parted by a page's end;
+        # what the guide points Q_B are, in words, under the line that places them
         origins = block.origins
+        kept: list[list[str]] = []
         for k, line in enumerate(block.lines):
-            self.body.append(f"#text(size: loops-size)[{self.words(line)}]\n")
-            if k == len(origins) - 1:  # what the guide points Q_B just placed are, in words
-                for pin in origins:
-                    words = term("guide_origin", self.lang).format(q=f"$Q_{{{pin}}}$", s=f"$s_{{{pin}}}$")
-                    self.body.append(f"#text(size: loops-size)[{self.words(words)}]\n")
+            if kept and line.startswith("$\\quad"):
+                kept[-1].append(line)
+            else:
+                kept.append([line])
+            if k == len(origins) - 1:
+                kept.extend([term("guide_origin", self.lang).format(q=f"$Q_{{{pin}}}$", s=f"$s_{{{pin}}}$")] for pin in origins)
+        for lines in kept:
+            words = " \\\n".join(self.loop_line(line) for line in lines)
+            self.body.append(f"#block(breakable: false, spacing: 0.6em)[#text(size: loops-size)[{words}]]\n" if len(lines) > 1
+                             else f"#text(size: loops-size)[{words}]\n")
 
-    def mark(self, name: str) -> None:
+    def loop_line(self, line: str) -> str:
+        """A line of loop equations as markup: a solution's results (``⇒ ω₄ = 1,946, ṡ_A = −0,01116``) each in a box,
+        so that a long line breaks between them, never inside one (``ω₄ =`` at a line's end, its value under it)."""
+        arrow = r"\ \Rightarrow\ "
+        if not (line.startswith("$") and line.endswith("$") and line.count("$") == 2 and arrow in line):
+            return self.words(line)
+        left, right = line[1:-1].split(arrow, 1)
+        results = ", ".join(f"#box[{self.words('$' + part + '$')}]" for part in right.split(r",\ "))
+        return self.words("$" + left + arrow.rstrip("\\ ") + "$") + " " + results
+
+    def mark(self, name: str, solid: bool = False) -> None:
         """A mark in the flow that the laid-out document reports: its *name*, page and height on the page [mm
-        from the top] (:func:`plans.pages.typesetting.query_document` with ``"<plans-mark>"``)."""
-        self.body.append(f"#context [#metadata((name: {string(name)}, page: here().page(), y: here().position().y.mm())) <plans-mark>]\n")
+        from the top] (:func:`plans.pages.typesetting.query_document` with ``"<plans-mark>"``).
+
+        A mark alone travels with what follows it (to the next page, when that does not fit); a *solid* one is a
+        block of no height that stays where the content before it ends."""
+        mark = f"#context [#metadata((name: {string(name)}, page: here().page(), y: here().position().y.mm())) <plans-mark>]"
+        self.body.append(f"#block(height: 0pt, above: 0pt, below: 0pt)[{mark}]\n" if solid else mark + "\n")
 
     def beside(self, drawing, table, lines) -> None:
         """*table* (none: empty) and *lines* beside a *drawing* ``(key, block)``; with *drawing* None, alone (the page's width)."""
@@ -423,7 +448,7 @@ class Document:
         def field(key: str) -> str:  # a title block's field to fill in by hand: its name
             return f"#text(size: 8pt)[{text(term(key, lang))}:]"
 
-        named = fitted_line('[#text(weight: "bold")[#context plate-name.get()] — ' + text(self.scene.title_in(lang)) + "]", 10.0, 6.0)
+        named = fitted_line('[#text(weight: "bold")[#context plate-name.get()] — ' + text(self.scene.title_in(lang)) + "]", 10.0, TITLE_BLOCK_LEAST_PT)
         title_block = (
             f"table(columns: (1fr, 1fr, 1fr, 42mm), stroke: 0.6pt, inset: (x: 2mm, y: 1.4mm), align: left + horizon,"
             f" table.cell(colspan: 3)[{named}],"

@@ -573,8 +573,10 @@ def _methods_table(comparisons, analytic, lang: str, plans=None, lever=None) -> 
     """The three methods side by side: M_b (or F_b) by analytic, force plans and the lever; each reaction by
     analytic and force plans; each method's difference from the analytic value [%].
 
-    The analytic values to 4 significant figures; a graphical value to the digits its reading justifies
-    (:func:`_method_steps`), as the kinematic tables print the plans' readings."""
+    As every comparison table prints (:func:`plans.report.row_texts`): the graphical values to the digits their
+    readings justify (:func:`_method_steps`; a row of two methods to the coarser of the two), the analytic value
+    to the same decimals, and δ the difference of the printed numbers, |g − a| / |a| (of the vectors for a
+    reaction), so that a reader recomputes it from the row.  Without drafting precision: 4 significant figures."""
     from ..forces.report import method_name
 
     rows = [[term("quantity", lang), method_name("analytic", lang), method_name("force_plans", lang), "δ [%]", method_name("lever", lang), "δ [%]"]]
@@ -583,18 +585,55 @@ def _methods_table(comparisons, analytic, lang: str, plans=None, lever=None) -> 
     unit = "N·m" if symbol == "M_b" else "N"
     exact = float(analytic.balancing[0])
     steps = _method_steps(plans, lever, symbol)
-    row = [f"{_math(symbol, lang)} [{unit}]", _number(exact)]
+    present = [m for m in ("force_plans", "lever") if by.get((symbol, m)) is not None]
+    decimals = [_decimals(steps[m]) for m in present if steps[m]]
+    places = min(decimals) if decimals and len(decimals) == len(present) else None
+    a_text = _fixed(exact, places)
+    row = [f"{_math(symbol, lang)} [{unit}]", a_text]
     for method in ("force_plans", "lever"):
         c = by.get((symbol, method))
-        row += [_stepped(c.value.real, steps[method]), _percent(c.rel_error)] if c is not None else ["—", "—"]
+        if c is None:
+            row += ["—", "—"]
+            continue
+        g_text = _fixed(c.value.real, places)
+        row += [g_text, _printed_percent(_plain(g_text), _plain(a_text))]
     rows.append(row)
+    places = _decimals(steps["reaction"]) if steps["reaction"] else None
     for label, reaction in analytic.reactions.items():
         force = complex(reaction.force[0])
         c = by.get((label, "force_plans"))
-        cell = _polar(force)
-        rows.append([f"{_math(label, lang)} [N]", cell, _polar(complex(c.value), steps["reaction"]) if c is not None else "—",
-                     _percent(c.rel_error) if c is not None else "—", "", ""])
+        cell = _polar(force, places)
+        if c is None:
+            rows.append([f"{_math(label, lang)} [N]", cell, "—", "—", "", ""])
+            continue
+        g_cell = _polar(complex(c.value), places)
+        rows.append([f"{_math(label, lang)} [N]", cell, g_cell, _printed_percent(_plain(g_cell), _plain(cell)), "", ""])
     return rows
+
+
+def _decimals(step: float) -> int:
+    """The decimals a reading of resolution *step* justifies (as :func:`plans.report.reading_number`)."""
+    return max(0, -math.floor(math.log10(step)))
+
+
+def _fixed(value: float, places: int | None) -> str:
+    """*value* to *places* decimals (trailing zeros kept), or to 4 significant figures when None."""
+    if places is None or value == 0:
+        return _number(value)
+    return _minus(f"{value:.{places}f}")
+
+
+def _plain(cell: str) -> complex:
+    """A printed cell back to its number: ``9640 ∠ 199.9°`` → the vector, ``−619`` → −619."""
+    if "∠" in cell:
+        magnitude, angle = cell.split("∠")
+        return float(magnitude.replace("−", "-")) * cmath.exp(1j * math.radians(float(angle.strip().rstrip("°").replace("−", "-"))))
+    return complex(float(cell.replace("−", "-")))
+
+
+def _printed_percent(g: complex, a: complex) -> str:
+    """δ [%] of the two printed values, |g − a| / |a|; "—" for an analytic 0."""
+    return _percent(abs(g - a) / abs(a)) if a != 0 else "—"
 
 
 def _method_steps(plans, lever, symbol: str) -> dict[str, float | None]:
@@ -623,18 +662,11 @@ def _method_steps(plans, lever, symbol: str) -> dict[str, float | None]:
     return steps
 
 
-def _stepped(value: float, step: float | None) -> str:
-    """A graphical value to the decimals its resolution *step* justifies (4 significant figures without one)."""
-    from ..report import reading_number
-
-    return _minus(reading_number(value, step)) if step else _number(value)
-
-
-def _polar(z: complex, step: float | None = None) -> str:
-    """|z| ∠ its angle: the analytic value to 4 significant figures, a reading to its *step* [N]; 0…360° to 0.1°."""
+def _polar(z: complex, places: int | None = None) -> str:
+    """|z| ∠ its angle: |z| to *places* decimals (4 significant figures when None); 0…360° to 0.1°."""
     if abs(z) == 0:
         return "0"
-    return f"{_stepped(abs(z), step)} ∠ {math.degrees(math.atan2(z.imag, z.real)) % 360.0:.1f}°"
+    return f"{_fixed(abs(z), places)} ∠ {math.degrees(math.atan2(z.imag, z.real)) % 360.0:.1f}°"
 
 
 def _percent(rel: float) -> str:

@@ -436,7 +436,7 @@ def build_handout(
     velocity_blocks, acceleration_blocks = {}, {}
 
     def fitting(plan, cell, **margin):
-        block = plan_svg(plan, lang, **margin)
+        block = plan_svg(plan, lang, room=cell, **margin)  # (a small plan drawn again whole, enlarged, when its cell has room)
         if block.width > cell[0] + 0.5:
             block = plan_svg(plan, lang, detail=False, **margin)
         return block
@@ -598,17 +598,22 @@ def build_handout(
 
     loops_of = [here[k] for k in chosen] or [sample]
     doc.section("loops")
-    doc.heading(term("loop_equations", lang), level=2)
     from ..loops import loop_equations
 
+    heading_at = len(doc.body)  # the heading kept with the first position's heading and the driver's equations under it
+    doc.heading(term("loop_equations", lang), level=2)
     doc.mark("loops-start")
     for h in loops_of:
         if multi:
             doc.heading(f"{term('position', lang)} {h.index}:  {h.label}", level=3)
         for block in loop_equations(h.analytic):
             doc.loop_block(block)
-    doc.mark("loops-end")
+            if heading_at is not None:
+                _kept(doc, heading_at)
+                heading_at = None
+    doc.mark("loops-end", solid=True)
 
+    loops_fitted = False
     if multi:
         say(term("cycle_diagrams" if _turning_driver(run) else "stroke_diagrams", lang))
         from ..drawing.diagrams import draw_cycle_diagrams
@@ -630,6 +635,8 @@ def build_handout(
         # the output's kinematic diagrams and their table first; the cycle pages after them, the one with the fewest
         # panels under the table when the rest of its page holds it readably (each panel CYCLE_PANEL_MIN tall)
         _kinematic_pages(doc, kinematic, lang)
+        _fit_loops(doc)  # (the loops' size settled first: what follows is measured where it then falls)
+        loops_fitted = True
         pages = cycle_pages((DIAGRAM_PAGE[0], DIAGRAM_PAGE[1] - words_room))
         rest = _rest_of_page(doc, "kinematic-end") if pages and not isinstance(kinematic, Exception) else None
         under = None
@@ -652,7 +659,8 @@ def build_handout(
     if centres:
         doc.section("centres")
         _centres_pages(doc, list(here.values()), k_l_plate, lang, multi, say)
-    _fit_loops(doc)
+    if not loops_fitted:
+        _fit_loops(doc)
     return Handout(doc.source(), doc.images, plate, per_position, doc.order, chosen, doc.sizes, list(here.values()))
 
 
@@ -690,26 +698,35 @@ LOOPS_SCALE = (0.9, 1.2)
 
 
 def _fit_loops(doc) -> None:
-    """The loop equations end the flow of text before the pages of their own (diagrams, forces, centres): when they
-    run a few lines onto a page and leave it nearly empty, their text is set a little smaller so that those lines
-    go back onto the page before, or else a little larger so that their last page is at least
-    :data:`PAGE_USE_MIN` filled (within :data:`LOOPS_SCALE`).  Where they end is read from the laid-out document
+    """The loop equations end the flow of text before the pages of their own (diagrams, forces, centres).  Where
+    the kinematic diagrams follow them, their heading, words and first diagram (one block) flow up onto the loops'
+    last page when it holds them, and the loops' text is set a little smaller (within :data:`LOOPS_SCALE`) when
+    that lets them; otherwise, when the loops run a few lines onto a page and leave it nearly empty, their text is
+    set a little smaller so that those lines go back onto the page before, or else a little larger so that their
+    last page is at least :data:`PAGE_USE_MIN` filled.  Where they end is read from the laid-out document
     (:meth:`Document.mark`); the handout's last page may stay short."""
     from .typesetting import query_document
 
     top, height = doc.page.margins[2], doc.page.text_height
 
-    def measure():  # (one layout: the page count and the two marks)
+    def measure():  # (one layout: the page count and the marks)
         doc.body.insert(0, "#context [#metadata((name: \"pages\", page: counter(page).final().first(), y: 0)) <plans-mark>]\n")
         try:
             marks = {m["name"]: m for m in query_document(doc.source(), doc.images, "<plans-mark>")}
         finally:
             doc.body.pop(0)
-        return marks["pages"]["page"], marks["loops-start"], marks["loops-end"]
+        return marks["pages"]["page"], marks["loops-start"], marks["loops-end"], marks.get("kinematic-first")
 
-    pages, start, end = measure()
+    pages, start, end, first = measure()
+    if first is not None and first["page"] != end["page"] and (end["y"] - top) / height < LOOPS_FLOW_USE:
+        for scale in LOOPS_FLOW_SCALES:  # (the diagrams' first block onto the loops' last page, their text smaller)
+            doc.loops_scale = scale
+            _, _, end_now, first_now = measure()
+            if first_now["page"] == end_now["page"]:
+                return
+        doc.loops_scale = 1.0
     used = (end["y"] - top) / height
-    if end["page"] == pages or used >= PAGE_USE_MIN or end["page"] == start["page"]:
+    if end["page"] == pages or used >= PAGE_USE_MIN or end["page"] == start["page"] or (first is not None and first["page"] == end["page"]):
         return
     length = (end["page"] - start["page"]) * height + (end["y"] - start["y"])  # the loops' run [mm]
     tries = [1.0 - (end["y"] - top + 4.0) / length, 1.0 + (PAGE_USE_MIN * height - (end["y"] - top) + 12.0) / length]
@@ -717,10 +734,16 @@ def _fit_loops(doc) -> None:
         if not LOOPS_SCALE[0] <= scale <= LOOPS_SCALE[1]:
             continue
         doc.loops_scale = round(scale, 3)
-        pages_now, _, end_now = measure()
+        pages_now, _, end_now, _ = measure()
         if end_now["page"] == pages_now or (end_now["y"] - top) / height >= PAGE_USE_MIN:
             return
     doc.loops_scale = 1.0
+
+
+#: the loops' last page is filled by the kinematic diagrams' first block when the loops leave more than this share
+#: of it; the loops' text scales tried (smaller, not under :data:`LOOPS_SCALE`'s least) to let that block flow up
+LOOPS_FLOW_USE = 0.75
+LOOPS_FLOW_SCALES = (0.95, 0.9)
 
 
 #: a one-position handout's regions [mm]: the mechanism's height (at least, at most: what page 1 leaves under the
@@ -846,7 +869,7 @@ def _rest_of_page(doc, name: str) -> float | None:
     document, :meth:`Document.mark`)."""
     from .typesetting import query_document
 
-    doc.mark(name)
+    doc.mark(name, solid=True)
     marks = [m for m in query_document(doc.source(), doc.images, "<plans-mark>") if m["name"] == name]
     if not marks:
         return None
@@ -862,10 +885,14 @@ def _kinematic_pages(doc, kinematic, lang: str) -> None:
     or rocker, or not solved at one of the positions, gets a page that says so."""
     from ..drawing import kinematic_diagrams as kd
 
-    doc.heading(kd.page_heading(lang), level=2, new_page=True)
+    # the heading flows on from the loop equations where their last page leaves room for it, its words and its first
+    # diagram, all one block (never a heading at a page's foot with its diagram on the next page)
+    start = len(doc.body)
+    doc.heading(kd.page_heading(lang), level=2)
     if isinstance(kinematic, Exception):  # said on the page, in the reader's language
         doc.body.append(f"#text(weight: \"bold\")[{doc.words(term('kd_not_drawn', lang) + ':')}]\n")
         doc.line(kd.unavailable_reason(kinematic, lang))
+        _kept(doc, start)
         return
     d = kd.page_diagrams(kinematic, doc.page.text_width)
     doc.lines(kd.header_lines(d, lang), size=SMALL_PT + 0.5)
@@ -876,9 +903,23 @@ def _kinematic_pages(doc, kinematic, lang: str) -> None:
             doc.captioned(kd.diagram_title(d, key, lang), f"kinematic-{key}", blocks[key])
         else:
             doc.line(kd.flat_line(d, key, lang), size=SMALL_PT + 0.5)
+        if start is not None and key in blocks:
+            _kept(doc, start)
+            doc.mark("kinematic-first", solid=True)  # (where the first diagram ends: on the loops' last page when it flowed there)
+            start = None
+    if start is not None:
+        _kept(doc, start)
     table = kd.diagrams_table(d, lang)
     doc.grouped_table(kd.table_heading(lang), *kd.table_header(d, lang), table[1:])
     doc.lines(kd.notes(d, lang), size=SMALL_PT)
+
+
+def _kept(doc, start: int) -> None:
+    """What the document's body gained from *start* on, one block that does not break (moves whole to the next page
+    when the rest of this one does not hold it)."""
+    inside = "\n".join(doc.body[start:])
+    del doc.body[start:]
+    doc.body.append(f"#block(breakable: false, width: 100%)[\n{inside}\n]\n")
 
 
 #: the quantities read off a velocity plan (a position without its acceleration plan on the plate tabulates only these)
@@ -1009,7 +1050,10 @@ def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
     every position), the rules and the order of finding the centres (*result*: a position's centres)."""
     from ..drawing.centres_page import centres_order_table, centres_rules
 
-    doc.heading(term("centres_page", lang), level=2, new_page=True)
+    # one block that flows on under what comes before it where the rest of that page holds it (a page of cycle
+    # diagrams with few panels), else heads a page
+    start = len(doc.body)
+    doc.heading(term("centres_page", lang), level=2)
     doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k)}])")  # the title block of the centres' pages
     kennedy = term("kennedy_theorem", lang)
     doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=TEXT_PT)
@@ -1029,6 +1073,7 @@ def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
         doc.body.append(_CENTRES_TABLE_OPEN)
         doc.body.append("#" + doc.table_markup(term("centres_order", lang), centres_order_table(result, lang), "(left, left)") + "\n")
         doc.body.append("]\n")
+    _kept(doc, start)
 
 
 def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:

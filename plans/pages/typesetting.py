@@ -163,7 +163,21 @@ def math(body: str) -> str:
             m = re.match(r"[0-9]+(?:[.,][0-9]+)?", body[k:])
             token = m.group(0)
             if "," in token:  # a decimal comma: one number, not a list (Typst math spaces a comma)
+                # a string keeps the spaces written around it (a number does not): set it tight, so that a unary
+                # minus sits against it as against 25.64 (−25,64, not − 25,64), and 7,5i, i0,97 read as 7.5i, i0.97
                 token = _math_string(token)
+                while out and out[-1].endswith(" ") and not out[-1].rstrip().endswith('"'):  # two strings stay apart
+                    out[-1] = out[-1].rstrip()
+                    if not out[-1]:
+                        out.pop()
+                if after_script and len(token) > 1:
+                    token = f"({token})"
+                out.append(token)
+                k += len(m.group(0))
+                while k < n and body[k] == " ":
+                    k += 1
+                after_script = False
+                continue
             if after_script and len(token) > 1:
                 token = f"({token})"
             out.append(token + " ")

@@ -1,0 +1,172 @@
+"""Issue 20, a teacher's review of the plate's plans (sr quick-return 12 positions, bg linear-arm 8, en six-bar).
+
+1. The quick-return's position-4 acceleration plan, 22 mm at the plate's one k_a, is drawn again whole beside itself,
+   enlarged 5 : 1, headed "detail I (5 : 1)" in the reader's language; the plan itself stays at the plate's k_a.
+2. No plan label runs into another (linear-arm position 2: "π, d′, q′, a′, f′" over n₁).
+3. Beside the image k′ of the linear-arm's point K, the Coriolis ends are named by the component's symbol (aᵏ₁, aᵏ₂),
+   the same on the plan and in the readings, never κ.
+4. The six-bar's frame point E, which its equations call E6 (v_E6 = 0), is lettered e₆ at the pole; π m′, 0.6° off
+   π a′, is drawn apart in an enlarged detail.
+
+Expected values come from the analytic solution (|a_A|, a_M, a_E) and the scale factors the pages print, never from
+the drawing's own numbers; what is drawn is read back from the SVG (dots by their ids, texts) or measured with
+matplotlib's renderer.
+"""
+
+from __future__ import annotations
+
+import cmath
+import itertools
+import re
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+import plans
+from plans.drawing.plan_drawing import draw_plan
+from plans.drawing.svgblocks import plan_svg
+from plans.handout import handout
+from plans.scene import example_path
+
+from plandraw_overlaps import SLIVER_MM2, label_boxes
+
+pytestmark = pytest.mark.filterwarnings("ignore")
+
+SVG = "{http://www.w3.org/2000/svg}"
+REVIEWED = [("quick-return", 12, "sr"), ("linear-arm", 8, "bg"), ("six-bar", None, "en")]
+
+
+@pytest.fixture(scope="module")
+def handouts():
+    return {name: (handout(plans.load(example_path(name)), positions=n, lang=lang), lang) for name, n, lang in REVIEWED}
+
+
+def _svg(svg: bytes):
+    root = ET.fromstring(svg)
+    per_mm = float(root.get("viewBox").split()[2]) / float(root.get("width").removesuffix("mm"))
+    return root, per_mm
+
+
+def _centre(root, gid: str) -> complex:
+    """The centre [SVG units] of the drawn element *gid* (a dot: its path's bounding box)."""
+    g = next(g for g in root.iter(f"{SVG}g") if g.get("id") == gid)
+    numbers = [float(x) for x in re.findall(r"-?[0-9]+(?:\.[0-9]+)?", next(g.iter(f"{SVG}path")).get("d"))]
+    xs, ys = numbers[0::2], numbers[1::2]
+    return complex((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2)
+
+
+def _texts(root) -> dict[str, str]:
+    return {g.get("id"): "".join(t.text or "" for t in g.iter(f"{SVG}text")) for g in root.iter(f"{SVG}g") if g.get("id")}
+
+
+def _first(x) -> complex:
+    return complex(np.ravel(x)[0])
+
+
+def _run(doc, index: int):
+    return next(r for r in doc.runs if r.index == index)
+
+
+# --- 1. a small plan's enlarged detail -----------------------------------------------------------------------------
+
+def test_the_small_acceleration_plan_is_drawn_again_enlarged_beside_itself(handouts):
+    doc = handouts["quick-return"][0]
+    k_a = doc.scales["k_a"]
+    assert k_a == pytest.approx(0.2)  # the plate's one k_a, as the page prints it
+    a_a = abs(_first(_run(doc, 4).analytic.points["A"].a))  # |a_A| = ω₂²·OA, the analytic solution
+    root, per_mm = _svg(doc.images["a-4"])
+    texts = _texts(root)
+    assert texts["acc-detail-name"] == "детаљ I (5 : 1)"
+    # the plan at k_a: π a′ = |a_A| / k_a (22 mm); its detail five times that
+    drawn = abs(_centre(root, "acc-dot-a") - _centre(root, "acc-pole")) / per_mm
+    enlarged = abs(_centre(root, "acc-detail-dot-a") - _centre(root, "acc-detail-pole")) / per_mm
+    assert drawn == pytest.approx(a_a / k_a, abs=0.1)
+    assert enlarged == pytest.approx(5 * a_a / k_a, abs=0.3)
+    # the detail beside the plan, its top level with the plan's
+    assert _centre(root, "acc-detail-pole").real > _centre(root, "acc-dot-a").real + 10 * per_mm
+    assert abs(_centre(root, "acc-detail-pole").imag - _centre(root, "acc-pole").imag) < 15 * per_mm
+    # and, being a short component on the plan, π e′ is an arrow there: |a_E| / k_a · 5 long
+    a_e = abs(_first(_run(doc, 4).analytic.points["E"].a))
+    assert abs(_centre(root, "acc-detail-dot-e") - _centre(root, "acc-detail-pole")) / per_mm == pytest.approx(5 * a_e / k_a, abs=0.2)
+
+
+@pytest.mark.parametrize("lang, words", [("en", "detail I (5 : 1)"), ("sr", "детаљ I (5 : 1)"), ("ru", "выносной элемент I (5 : 1)"),
+                                         ("bg", "детайл I (5 : 1)"), ("sl", "detajl I (5 : 1)")])
+def test_the_enlarged_detail_is_headed_in_the_readers_language(handouts, lang, words):
+    plan = _run(handouts["quick-return"][0], 4).graphical.acceleration_plan
+    root, _ = _svg(plan_svg(plan, lang, room=(85.0, 200.0)).svg)
+    texts = _texts(root)
+    assert " ".join(t for t in (texts["acc-detail-name"], texts.get("acc-detail-name-ratio")) if t) == words
+
+
+def test_no_enlarged_copy_without_room_or_for_a_plan_of_fair_size(handouts):
+    doc = handouts["quick-return"][0]
+    small = _run(doc, 4).graphical.acceleration_plan
+    assert "acc-detail-name" not in _texts(_svg(plan_svg(small, "sr", room=(40.0, 200.0)).svg)[0])  # no room beside it
+    assert "acc-detail-name" not in _texts(_svg(plan_svg(small, "sr").svg)[0])  # a sheet's plan: no cell given
+    large = _run(doc, 10).graphical.acceleration_plan  # 95 mm on the page
+    assert "acc-detail-name" not in _texts(_svg(plan_svg(large, "sr", room=(200.0, 250.0)).svg)[0])
+
+
+# --- 2. no label on another ----------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", [n for n, _, _ in REVIEWED])
+def test_no_plan_label_runs_into_another(handouts, name):
+    doc, lang = handouts[name]
+    for r in doc.runs:
+        drawn = [r.graphical.velocity_plan] + ([r.graphical.acceleration_plan] if f"a-{r.index}" in doc.images else [])
+        for plan in drawn:
+            fig = draw_plan(plan, lang=lang, legend=False)[0].figure
+            boxes = label_boxes(fig)
+            for (g1, b1), (g2, b2) in itertools.combinations(boxes, 2):
+                assert b1.intersection(b2).area <= SLIVER_MM2, (name, r.index, plan.kind, g1, g2)
+
+
+# --- 3. the Coriolis ends beside k′ ----------------------------------------------------------------------------------
+
+def test_coriolis_ends_beside_the_image_of_k_are_named_by_the_component(handouts):
+    doc = handouts["linear-arm"][0]
+    for key in ("a-2", "a-5"):
+        texts = _texts(_svg(doc.images[key])[0])
+        assert texts["acc-image-k"] == "k′"  # the scene's point K, as written
+        ends = sorted(t for gid, t in texts.items() if gid.startswith("acc-end-a_k_"))
+        assert ends == ["aᵏ₁", "aᵏ₂"]
+        assert not any("κ" in t for t in texts.values())
+    # the readings measure the same segments: from f′ (F at the pole) to the first Coriolis end, thence to f₄′
+    source = doc.source
+    assert "κ" not in source
+    assert "f′ aᵏ₁" in source and "aᵏ₁ f₄′" in source and "h₃′ aᵏ₂" in source and "aᵏ₂ h′" in source
+
+
+# --- 4. the six-bar's pole and π m′ --------------------------------------------------------------------------------
+
+def test_the_frame_point_at_the_pole_is_lettered_as_the_equations_name_it(handouts):
+    doc = handouts["six-bar"][0]
+    assert re.search(r"v_\(?E ?6\)?|v_\(E6\)|E 6|E6", doc.source)  # the equations' v_E6 (the sleeve's point at E)
+    v = _texts(_svg(doc.images["v-0"])[0])
+    a = _texts(_svg(doc.images["a-0"])[0])
+    assert v["vel-pole-label"] == "p" and v["vel-image-e"] == "e₆" and a["acc-image-e"] == "e₆′"
+    assert '"p e₅"' in doc.source  # v_E5 = v_E5E6 read once, from the pole
+
+
+def test_a_vector_along_another_is_drawn_apart_in_a_detail(handouts):
+    doc = handouts["six-bar"][0]
+    k_a = doc.scales["k_a"]
+    r = _run(doc, 0)
+    a_a, a_m = _first(r.analytic.points["A"].a), _first(r.analytic.points["M"].a)
+    off = abs((a_m * (a_a / abs(a_a)).conjugate()).imag) / k_a  # m′ off the line π a′ [mm on the plan]: under a millimetre
+    assert 0.3 < off < 1.2
+    turn = abs(np.degrees(cmath.phase(a_m / a_a)))
+    assert 0.3 < turn < 1.0
+    root, per_mm = _svg(doc.images["a-0"])
+    texts = _texts(root)
+    ratio = float(re.fullmatch(r"I \(([0-9.]+) : 1\)", texts["acc-detail-name"]).group(1))
+    assert ratio >= 5
+    # in the detail, m′ stands off the enlarged shaft of π a′ by ratio × off
+    g = next(g for g in root.iter(f"{SVG}g") if g.get("id") == "acc-detail-a_A")
+    numbers = [float(x) for x in re.findall(r"-?[0-9]+(?:\.[0-9]+)?", next(g.iter(f"{SVG}path")).get("d"))]
+    p, q = complex(numbers[0], numbers[1]), complex(numbers[-2], numbers[-1])
+    m = _centre(root, "acc-detail-dot-m")
+    u = (q - p) / abs(q - p)
+    assert abs(((m - p) * u.conjugate()).imag) / per_mm == pytest.approx(ratio * off, abs=0.25)
