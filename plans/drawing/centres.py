@@ -46,6 +46,7 @@ ROOM_MIN = 25.0
 ROOM_FRACTION = 0.12
 EDGE_ARROW = 9.0  # mm
 EDGE_GAP = 2.0  # mm between the room and an edge arrow's tail
+EDGE_LABEL_GAP = 0.8  # mm between an edge arrow's tip and its label's box
 EDGE_SPACING = 13.0  # mm between the tails of two edge arrows, at least (wider for wide labels)
 #: room [mm] kept on every side of the room for the labels of centres near its edge
 LABEL_BAND = 7.0
@@ -63,6 +64,12 @@ RING_COST = 1.5
 LABEL_CLEAR_MM = 0.3
 #: centres closer than this on the drawing [mm] are one spot: one label names them all
 CLUSTER_MM = 1.5
+#: the least room [mm] between two centres' labels (beyond LABEL_CLEAR_MM around each)
+LABEL_SPACING_MM = 2.0
+#: the cost of a centre's label struck through by a link's bar, a slot or the ω arc (a Kennedy line costs 1)
+STROKE_COST = 400
+#: a centre's dot closer than this [mm] to a joint is under its pin: its label gets a leader
+PIN_HIDES_MM = 1.8
 
 
 def centre_text(label: str) -> str:
@@ -157,11 +164,12 @@ def _label_box(tail: complex, tip: complex, u: complex, text: str) -> tuple[comp
     arrow pointing up or down; over (or under) the shaft of one pointing sideways, its end at the tip,
     so that a wide label does not widen the drawing."""
     w, h = text_size(text, LABEL_PT)
-    if abs(u.imag) >= 0.6:
-        return tip + u * (0.8 + 0.5 * (abs(u.real) * w + abs(u.imag) * h)), w, h
+    if abs(u.imag) >= 0.6:  # the box's edge 0.8 mm from the tip along the arrow: at its own tip, never nearer another
+        reach = min(w / (2 * abs(u.real)) if abs(u.real) > 1e-9 else math.inf, h / (2 * abs(u.imag)))
+        return tip + u * (EDGE_LABEL_GAP + reach), w, h
     side = 1.0 if u.imag >= 0 else -1.0  # over an arrow rising a little, under one falling
     x = tip.real - w / 2 if u.real > 0 else tip.real + w / 2
-    y = max(tip.imag, tail.imag) + h / 2 + 0.8 if side > 0 else min(tip.imag, tail.imag) - h / 2 - 0.8
+    y = max(tip.imag, tail.imag) + h / 2 + EDGE_LABEL_GAP if side > 0 else min(tip.imag, tail.imag) - h / 2 - EDGE_LABEL_GAP
     return complex(x, y), w, h
 
 
@@ -277,6 +285,8 @@ class _CentresDrawing:
         self.words: list = []  # the boxes of the mechanism's names and numbers and of the labels placed so far
         self.marks: list = []  # the centres' marks and the joints [mm]: a label is nearer its own than any of these
         self.bodies: list = []  # the mechanism's blocks, supports and hatching: no label under one
+        self.strokes: list = []  # the links' bars, slots and the ω arc: no label struck through by one
+        self.placed: list = []  # the boxes of the centres' labels placed so far: the next keeps LABEL_SPACING_MM from them
 
     def mm(self, z: complex) -> complex:
         return z / self.k_l
@@ -284,8 +294,9 @@ class _CentresDrawing:
     def inside(self, q: complex) -> bool:
         return self.lo.real <= q.real <= self.hi.real and self.lo.imag <= q.imag <= self.hi.imag
 
-    def label(self, at: complex, text: str, gid: str, away: complex, clear: float) -> None:
-        """Text near *at*, at the first of eight places around it that overlaps nothing drawn before."""
+    def label(self, at: complex, text: str, gid: str, away: complex, clear: float, hidden: bool = False) -> None:
+        """Text near *at*, at the first of eight places around it that overlaps nothing drawn before (*hidden*: the
+        mark lies under a joint's pin, so the label is set out with a leader that shows where the centre is)."""
         w, h = text_size(text, LABEL_PT)
         start = cmath.phase(away) if abs(away) > 1e-9 else math.pi / 4
         best = None
@@ -295,6 +306,8 @@ class _CentresDrawing:
             turn = (k % 16 + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
             d = cmath.exp(1j * (start + turn))
             ring = LABEL_RINGS[k // 16]
+            if hidden and ring < LEADER_RING:
+                continue
             gap = clear * ring + 0.6 + 0.5 * (abs(d.real) * w + abs(d.imag) * h)
             c = at + d * gap
             shape = box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2).buffer(LABEL_CLEAR_MM, join_style=2)
@@ -303,10 +316,14 @@ class _CentresDrawing:
             hits = RING_COST * (k // 16)
             hits += 10 * sum(1 for o in self.s.obstacles if shape.intersects(o)) + sum(1 for o in self.soft if shape.intersects(o))
             hits += 1000 * sum(1 for o in self.words if shape.intersects(o))  # never over another label or name
+            # two centres' labels apart enough to read as two (the linear-arm's P₁₅ and P₁₄ side by side at D)
+            hits += 1000 * sum(1 for o in self.placed if shape.distance(o) < LABEL_SPACING_MM)
             hits += 300 * sum(1 for o in self.bodies if shape.intersects(o))  # nor under a block, a support, its hatching
-            # read as its own: nearer its own mark than any other centre's (or a joint's)
+            hits += STROKE_COST * sum(1 for o in self.strokes if shape.intersects(o))  # nor struck through by a link
+            # read as its own: nearer its own mark than any other centre's (or a joint's); a leader says it otherwise
             own = abs(c - at)
-            hits += 200 * sum(1 for q in self.marks if abs(q - at) > 0.5 * CLUSTER_MM and abs(c - q) < own)
+            if ring < LEADER_RING:
+                hits += 200 * sum(1 for q in self.marks if abs(q - at) > 0.5 * CLUSTER_MM and abs(c - q) < own)
             f = self.frame
             if not (f.outer_lo.real <= c.real - w / 2 and c.real + w / 2 <= f.outer_hi.real and f.outer_lo.imag <= c.imag - h / 2 and c.imag + h / 2 <= f.outer_hi.imag):
                 hits += 100  # within the drawing's frame, whose size the page found beforehand
@@ -317,6 +334,7 @@ class _CentresDrawing:
                 leader = (a, b)
                 line = LineString([(a.real, a.imag), (b.real, b.imag)])
                 hits += 10 * sum(1 for o in self.s.obstacles if line.intersects(o))
+                hits += 300 * sum(1 for o in self.words if line.intersects(o))  # a leader across a name or a number
             if best is None or hits < best[0]:
                 best = (hits, c, leader)
             if hits == RING_COST * (k // 16):
@@ -326,6 +344,7 @@ class _CentresDrawing:
             self.s.line(list(leader), color=CENTRE_COLOUR, lw=0.4, gid=f"{gid}-leader", zorder=4.9)
         self.s.text(c, text, size=LABEL_PT, color=CENTRE_COLOUR, gid=gid)
         self.words.append(box(c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2))
+        self.placed.append(self.words[-1])
 
     def kennedy_lines(self) -> None:
         """Each Kennedy line that gave a centre, through its three centres, inside the room."""
@@ -396,24 +415,27 @@ class _CentresDrawing:
             spread = max(abs(x[1] - at) for x in group)
             text = ", ".join(centre_text(x[0].label) for x in group)
             gid = "label-" + "-".join(x[0].label for x in group)
-            labels.append((at, text, gid, max(x[2] for x in group) + spread))
+            labels.append((at, text, gid, max(x[2] for x in group) + spread))  # (a ring's clearance 2.4, a dot's 1.2)
             if len(group) > 1:  # the marks of one spot count as one: a label is nearer it than any other
                 self.marks = [m for m in self.marks if all(abs(m - x[1]) > 1e-9 for x in group)] + [at]
 
         # the most crowded first: a centre with marks close around it takes its place before its neighbours
         def crowd(item):
             return -sum(1 for other in self.marks if abs(other - item[0]) < 8.0)
+        joints = [self.mm(z) for z in self.r.positions.values()]
         for at, text, gid, clear in sorted(labels, key=crowd):
-            self.label(at, text, gid, at - self.middle, clear)
+            # a dot under a joint's pin (the quick-return's P₂₆ under O) is shown by a leader
+            hidden = clear < 2.0 and any(abs(at - q) < PIN_HIDES_MM for q in joints)
+            self.label(at, text, gid, at - self.middle, clear, hidden)
 
 
-def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en", caption: bool = True) -> None:
-    """Bodies on a circle (1 at the top, clockwise), primary centres as sides, Kennedy ones as dashed diagonals;
-    *caption* False leaves its heading and legend to the page (set in the page's typeface)."""
+def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en", caption: bool = True, radius: float = DIAGRAM_R) -> None:
+    """Bodies on a circle of *radius* [mm] (1 at the top, clockwise), primary centres as solid lines, Kennedy ones as
+    dashed; *caption* False leaves its heading and legend to the page (set in the page's typeface)."""
     names = list(result.numbers)
     n = len(names)
-    at = {name: centre + DIAGRAM_R * cmath.exp(1j * (math.pi / 2 - 2 * math.pi * k / n)) for k, name in enumerate(names)}
-    s.circle(centre, DIAGRAM_R, fc="none", ec="#b0b0b0", lw=0.5, gid="diagram-circle", zorder=1.0, obstacle=False)
+    at = {name: centre + radius * cmath.exp(1j * (math.pi / 2 - 2 * math.pi * k / n)) for k, name in enumerate(names)}
+    s.circle(centre, radius, fc="none", ec="#b0b0b0", lw=0.5, gid="diagram-circle", zorder=1.0, obstacle=False)
     colour, lw, dashes = CONSTRUCTION_STYLE
     for c in result.centres:
         a, b = at[c.bodies[0]], at[c.bodies[1]]
@@ -428,20 +450,20 @@ def _circle_diagram(s: Sketch, result, centre: complex, lang: str = "en", captio
         s.text(q + 4.2 * unit(q - centre), result.numbers[name], size=HEADING_PT, gid=f"diagram-number-{result.numbers[name]}")
     if not caption:
         return
-    s.text(centre - 1j * (DIAGRAM_R + 8.0), term("circle_diagram", lang), size=CAPTION_PT, weight="bold", gid="diagram-heading", obstacle=False)
+    s.text(centre - 1j * (radius + 8.0), term("circle_diagram", lang), size=CAPTION_PT, weight="bold", gid="diagram-heading", obstacle=False)
     lines = []
     for part in term("circle_diagram_legend", lang).split("\n"):  # each part wrapped to the diagram's width
         current = ""
         for word in part.split():
             trial = f"{current} {word}".strip()
-            if current and text_size(trial, CAPTION_PT)[0] > 2 * DIAGRAM_R + 6.0:
+            if current and text_size(trial, CAPTION_PT)[0] > 2 * radius + 6.0:
                 lines.append(current)
                 current = word
             else:
                 current = trial
         lines.append(current)
     for k, line in enumerate(lines):
-        s.text(centre - 1j * (DIAGRAM_R + 12.5 + 4.0 * k), line, size=CAPTION_PT, gid="diagram-legend", obstacle=False)
+        s.text(centre - 1j * (radius + 12.5 + 4.0 * k), line, size=CAPTION_PT, gid="diagram-legend", obstacle=False)
 
 
 def _text_shapes(artists) -> list:
@@ -449,6 +471,17 @@ def _text_shapes(artists) -> list:
     from matplotlib.text import Text
 
     return _shapes([a for a in artists if isinstance(a, Text)])
+
+
+def _stroke_shapes(artists) -> list:
+    """The links' bars, slots and guides' lines and the ω arc among *artists* [mm] (what a label must not be struck
+    through by), each widened by half its stroke and a little."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Polygon
+
+    strokes = ("mech-link", "mech-omega", "mech-slot", "mech-line", "mech-block", "mech-sleeve")
+    return _shapes([a for a in artists if isinstance(a, (Line2D, Polygon)) and (a.get_gid() or "").startswith(strokes)
+                    and not (a.get_gid() or "").startswith("mech-omega-label")], pad=0.5)
 
 
 def _body_shapes(artists) -> list:
@@ -459,7 +492,7 @@ def _body_shapes(artists) -> list:
     return _shapes([a for a in artists if isinstance(a, (Polygon, LineCollection))])
 
 
-def _shapes(artists) -> list:
+def _shapes(artists, pad: float = 0.4) -> list:
     """Obstacles for the labels from the mechanism's artists: lines, circles, polygons, text boxes [mm]."""
     from matplotlib.collections import LineCollection
     from matplotlib.lines import Line2D
@@ -473,7 +506,7 @@ def _shapes(artists) -> list:
         if isinstance(artist, Line2D):
             xy = list(zip(artist.get_xdata(), artist.get_ydata()))
             if len(xy) >= 2:
-                shapes.append(LineString(xy).buffer(0.4))
+                shapes.append(LineString(xy).buffer(pad))
         elif isinstance(artist, Circle):
             x, y = artist.center
             shapes.append(Point(x, y).buffer(artist.radius))
@@ -620,6 +653,7 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     drawing = _CentresDrawing(s, result, frame, lang)
     drawing.words += _text_shapes(artists) + [s.obstacles[-1]]
     drawing.bodies += _body_shapes(artists)
+    drawing.strokes += _stroke_shapes(artists)
     drawing.kennedy_lines()
     drawing.centres()
     if diagram:
@@ -646,11 +680,11 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     return xmax - xmin + 2 * MARGIN_MM, ymax - ymin + 2 * MARGIN_MM
 
 
-def draw_circle_diagram_into(ax, result, lang: str = "en", caption: bool = True) -> tuple[float, float]:
+def draw_circle_diagram_into(ax, result, lang: str = "en", caption: bool = True, radius: float = DIAGRAM_R) -> tuple[float, float]:
     """The circle diagram alone, drawn into *ax* (one data unit a millimetre); returns its (width, height) [mm]
-    (*caption* False: without its heading and legend, which a page sets as its text)."""
+    (*caption* False: without its heading and legend, which a page sets as its text; *radius* [mm] of its circle)."""
     s = Sketch(ax, "centres")
-    _circle_diagram(s, result, 0j, lang, caption)
+    _circle_diagram(s, result, 0j, lang, caption, radius)
     b = s.bounds
     ax.set_xlim(b.xmin - MARGIN_MM, b.xmax + MARGIN_MM)
     ax.set_ylim(b.ymin - MARGIN_MM, b.ymax + MARGIN_MM)

@@ -21,7 +21,7 @@ from ..report import row_texts
 from ..scene import LinearDriver
 from .centres import centre_text
 
-__all__ = ["centres_page_table", "centres_rules", "centres_order_table", "ROOM_MIN"]
+__all__ = ["centres_page_table", "centres_rules", "centres_order_table", "guide_words", "ROOM_MIN"]
 
 #: the least room [mm] around the mechanism on the page (its near centres widen it; far ones are arrows outside)
 ROOM_MIN = 12.0
@@ -120,6 +120,31 @@ def centres_rules(lang: str, frame: str, driver=None, numbers=None) -> list[str]
     ]
 
 
+def guide_words(result, centre, lang: str = "en") -> str:
+    """Where the centre of a prismatic pair lies, naming its guide: "at infinity, perpendicular to the guide on link 4
+    (slot)" (the link that carries the guide, by its number; the frame's guide as the frame's), the guide's own name
+    after it where the scene gives it in ``[names]`` (in *lang*, else as written).  Three centres of the linear-arm
+    lie on three different guides: each says which."""
+    from ..scene import FRAME
+
+    scene = result.scene
+    name = centre.found_by.partition(" ")[2]
+    guides = {p.name: (p.guide, p.guide_line) for p in scene.prismatics}
+    driver = scene.driver
+    if getattr(driver, "guide", None) is not None and getattr(driver, "point", None) is not None:
+        guides.setdefault(f"{driver.point} on frame.{driver.guide}", (FRAME, driver.guide))
+    body, line = guides.get(name, (None, None))
+    if body == FRAME:
+        words = term("centre_perpendicular_frame_guide", lang)
+    elif body is not None:
+        words = term("centre_perpendicular_guide", lang).format(link=result.numbers.get(body, body))
+    else:
+        raise ValueError(f"no guide of the prismatic pair {name!r} in the scene")  # kennedy.py names every guide it uses
+    if line in scene.names:
+        words += f" ({scene.name_in(line, lang)})"
+    return words
+
+
 def centres_order_table(result, lang: str = "en") -> list[list[str]]:
     """How every centre is found, in the order a student finds them: header, then the centres at the pairs (a
     revolute's at its pin, a prismatic's at infinity perpendicular to the guide), then each of Kennedy's as the
@@ -131,7 +156,7 @@ def centres_order_table(result, lang: str = "en") -> list[list[str]]:
         if centre.found_by.startswith("revolute"):
             return term("centre_at_pin", lang).format(pin=centre.found_by.partition(" ")[2])
         if centre.found_by.startswith("prismatic"):
-            return term("centre_perpendicular_guide", lang)
+            return guide_words(result, centre, lang)
         (a, b), (c, d) = centre.lines
         return f"{centre_text(a)}{centre_text(b)} ∩ {centre_text(c)}{centre_text(d)}"
 

@@ -179,14 +179,15 @@ def centres_svg(result, k_l: float, lang: str = "en", room_min: float | None = N
         return _fitted(fig, ax, width, height, lang)
 
 
-def circle_diagram_svg(result, lang: str = "en", caption: bool = True) -> SvgBlock:
-    """The circle diagram of the instant centres (*caption* False: without its heading and legend)."""
+def circle_diagram_svg(result, lang: str = "en", caption: bool = True, radius: float | None = None) -> SvgBlock:
+    """The circle diagram of the instant centres (*caption* False: without its heading and legend; *radius* [mm] of its
+    circle, by default :data:`plans.drawing.centres.DIAGRAM_R`)."""
     from .centres import draw_circle_diagram_into
 
     with drawing_rc():
         fig = new_figure()
         ax = fig.add_axes([0, 0, 1, 1])
-        width, height = draw_circle_diagram_into(ax, result, lang, caption)
+        width, height = draw_circle_diagram_into(ax, result, lang, caption, **({"radius": radius} if radius else {}))
         return _fitted(fig, ax, width, height, lang)
 
 

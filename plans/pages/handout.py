@@ -981,7 +981,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
             pages.append((h, exc))
             continue
         if diagram is None:
-            diagram = (f"circle-{h.index}", circle_diagram_svg(result, lang, caption=False))
+            diagram = (f"circle-{h.index}", circle_diagram_svg(result, lang, caption=False, radius=CENTRES_DIAGRAM_R))
         # the drawing gets what the page leaves under its heading and the legend, over the table and the rules
         table = centres_page_table(result, comparisons, lang)
         box = (TEXT_WIDTH, min(CENTRES_DRAWING_MAX, TEXT_HEIGHT - CENTRES_PAGE_TEXT - CENTRES_ROW * len(table)))
@@ -1030,6 +1030,21 @@ def _centres_cycle(h):
     return getattr(g, "travel", None), getattr(g, "cycle_poses", None)
 
 
+#: the centres' tables at the text's size, the labels' subscripts (P₁₂: the content of the order table and the P₁ⱼ column)
+#: set as digits at 0.8 of it (7.6 pt; the font's subscript glyphs are about 5 pt), in a scope of their own
+CENTRES_TABLE_PT = TEXT_PT
+CENTRES_SUBSCRIPT_EM = 0.8
+_CENTRES_TABLE_OPEN = (
+    "#[\n"
+    f"#show table: set text(size: {CENTRES_TABLE_PT}pt)\n"
+    f"#show regex(\"[₀-₉ⱼₖ]+\"): it => sub(typographic: false, size: {CENTRES_SUBSCRIPT_EM}em, it.text.clusters().map("
+    "c => if c == \"ⱼ\" {\"j\"} else if c == \"ₖ\" {\"k\"} else {str(str.to-unicode(c) - 0x2080)}).join())\n")
+
+
+#: the circle diagram's radius on the centres' method page [mm]
+CENTRES_DIAGRAM_R = 32.0
+
+
 def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
     """The centres' first page: the method's title, Kennedy's theorem, the circle diagram (once: it is the same for
     every position), the rules and the order of finding the centres (*result*: a position's centres)."""
@@ -1043,10 +1058,21 @@ def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
     kennedy = term("kennedy_theorem", lang)
     doc.line(f"{kennedy[0].upper() + kennedy[1:]}: {term('kennedy_statement', lang)}", size=TEXT_PT)
     if diagram is not None and result is not None:
+        # the circle diagram large (the method's tool), its legend and the rules beside it at the text's size, the order
+        # of finding the centres under them across the page: the page read as a whole, not 40 % empty (third review)
         circle = f"{term('circle_diagram', lang)}: {term('circle_diagram_legend', lang).replace(chr(10), ' ')}"
-        doc.beside(diagram, [], [circle, term("centres_legend", lang), term("centres_edge_legend", lang)]
-                   + centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers))
-        doc.tables([(term("centres_order", lang), centres_order_table(result, lang))], aligns="(left, left)")
+        lines = [circle, term("centres_legend", lang), term("centres_edge_legend", lang)]
+        rules = centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers)
+        words = "".join(f"#block(above: 0pt, below: 2mm)[{doc.words(line)}]" for line in lines) + "#v(2mm)"
+        for rule in rules:  # the rule's words, its formula on a line of its own under them
+            said, _, formula = rule.partition(":  ")
+            words += f"#block(above: 0pt, below: 1mm)[{doc.words(said)}:]#block(above: 0pt, below: 2.5mm, inset: (left: 6mm))[{doc.words(formula)}]"
+        key, block = diagram
+        doc.body.append(f"#v(2mm)\n#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {doc.add_image(key, block)}, "
+                        f"text(size: {TEXT_PT}pt)[{words}])\n#v(3mm)\n")
+        doc.body.append(_CENTRES_TABLE_OPEN)
+        doc.body.append("#" + doc.table_markup(term("centres_order", lang), centres_order_table(result, lang), "(left, left)") + "\n")
+        doc.body.append("]\n")
     _kept(doc, start)
 
 
@@ -1063,7 +1089,9 @@ def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
     doc.figure(f"centres-{h.index}", blocks[h.index][1])
     if len(page) > 5:  # the values not read off the drawing, and why (the legend and rules: on the method's page)
         doc.line(page[5], size=SMALL_PT)
+    doc.body.append(_CENTRES_TABLE_OPEN)
     doc.beside(None, table, [])
+    doc.body.append("]\n")
 
 
 def data_lines(scene, lang: str, law=None) -> list[str]:
