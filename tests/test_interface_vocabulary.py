@@ -374,6 +374,12 @@ VOCABULARY = {
     # the plate's data line: a four-bar loop named by its links
     "four_bar_loop": {"sr": "зглавкасти четвороугао", "ru": "шарнирный четырёхзвенник", "bg": "шарнирен четиризвенник", "sl": "štirizgibni mehanizem"},
     # the scene's own ε (a) beside a law that does not keep it
+    # the comparison tables' column words (the review: "графически" an adverb, a bare "=" column)
+    "by_plan": {"sr": "са плана", "ru": "по плану", "bg": "от плана", "sl": "iz načrta"},
+    "reading_value": {"sr": "вредност", "ru": "значение", "bg": "стойност", "sl": "vrednost"},
+    # the kinematic diagrams' μ apart from the plans' k
+    "kd_mu_not_k": {"sr": "{mu}: размере ових дијаграма, а не размере планова {k}", "ru": "{mu}: масштабы этих диаграмм, а не масштабы планов {k}",
+                    "bg": "{mu}: мащабите на тези диаграми, а не мащабите на плановете {k}", "sl": "{mu}: merila teh diagramov, ne merila načrtov {k}"},
     "law_given_instant_only": {"sr": "задато {q} се не користи: циклус прати овај закон",
                                "ru": "заданное {q} не используется: цикл следует этому закону",
                                "bg": "зададеното {q} не се използва: цикълът следва този закон",
