@@ -347,8 +347,10 @@ class Scene:
     titles: dict[str, str] = field(default_factory=dict, compare=False)
     #: Names used in words on a page (a guide, a point, a link), per language:
     #: ``[names] slot = { en = "slot", sr = "кулиса" }`` → ``{"slot": {"en": "slot", "sr": "кулиса"}}``;
-    #: a language's other forms (:data:`NAME_FORMS`) under ``"ru.parallel"``, ``"ru.of"`` (:meth:`name_in`).
     names: dict[str, dict[str, str]] = field(default_factory=dict, compare=False)
+    #: A name's other forms per language (:data:`NAME_FORMS`, read by :meth:`name_in`):
+    #: ``ru = { name = "кулиса", parallel = "кулисе" }`` → ``{"slot": {"ru.parallel": "кулисе"}}``.
+    name_forms: dict[str, dict[str, str]] = field(default_factory=dict, compare=False)
 
     def title_in(self, lang: str) -> str:
         """The title in *lang*: as the scene gives it there, else as written (the English, else the first given)."""
@@ -358,8 +360,8 @@ class Scene:
         """A name (a guide's, a point's) in *lang* as the scene's ``[names]`` give it, else as written; *form* one of
         :data:`NAME_FORMS` (``"parallel"``: as it reads after ∥, ``"of"``: after "along the"), the name itself where
         the scene gives no such form."""
-        forms = self.names.get(name, {})
-        return (forms.get(f"{lang}.{form}") if form != "name" else None) or forms.get(lang) or name
+        other = self.name_forms.get(name, {}).get(f"{lang}.{form}") if form != "name" else None
+        return other or self.names.get(name, {}).get(lang) or name
     masses: dict[str, Mass] = field(default_factory=dict)
     gravity: Gravity | None = None
     loads: tuple[Load, ...] = ()
@@ -929,11 +931,13 @@ class _SceneReader:
             title = titles.get("en") or next(iter(titles.values()))
         if not isinstance(title, str):
             raise self.fail("title", f"expected text or a table of languages (en = \"…\", sr = \"…\"), got {_describe(title)}")
-        page_names = {}
+        page_names, page_forms = {}, {}
         for key, value in self.table(data.get("names", {}), "names").items():
             if not isinstance(value, dict):
                 raise self.fail(f"names.{key}", f"expected a table of languages (en = \"…\", sr = \"…\"), got {_describe(value)}")
-            page_names[key] = self.name_forms(value, f"names.{key}")
+            forms = self.name_forms(value, f"names.{key}")
+            page_names[key] = {k: v for k, v in forms.items() if "." not in k}
+            page_forms[key] = {k: v for k, v in forms.items() if "." in k}
 
         bodies: dict[str, Body] = {}
         frame = self.table(data.get("frame", {}), "frame")
@@ -1007,6 +1011,7 @@ class _SceneReader:
             source=self.source,
             titles=titles,
             names=page_names,
+            name_forms=page_forms,
             output=output,
             notes=self.length_notes(),
             readings=readings,
