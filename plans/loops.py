@@ -310,7 +310,7 @@ class _Builder:
     def slide(self, pair, guide_body: str, guide_line, unknown_angle: bool, sign: int = 1) -> _Slide:
         m = self.sol.sliders[pair.name]
         return _Slide(
-            pair.name, guide_body, guide_line.angle, self.phi(guide_body), self.omega(guide_body), self.epsilon(guide_body),
+            self.scene.pair_label(pair.name), guide_body, guide_line.angle, self.phi(guide_body), self.omega(guide_body), self.epsilon(guide_body),
             float(m.s[self.k]), float(m.v_rel[self.k]), float(m.a_rel[self.k]), unknown_angle, sign,
         )
 
@@ -356,13 +356,13 @@ def _path(b: _Builder, group, link: str, outer, meet_name, meet_local):
         known = outer.bodies[1]
         if pair.slider == link:  # the link slides on a line of the known body
             guide_line = scene.bodies[known].lines[pair.guide_line]
-            q_name = b.point_name(known, guide_line.origin, _origin(pair.name))
+            q_name = b.point_name(known, guide_line.origin, _origin(b.scene.pair_label(pair.name)))
             terms.append(b.known_point(known, guide_line.origin, q_name))
             terms.append(b.slide(pair, known, guide_line, unknown_angle=False))
             own_line = body.lines[pair.slider_line]
         else:  # the known body slides on a line of the link: Q_link = Q_known − s·u_link
             slider_line = scene.bodies[known].lines[pair.slider_line]
-            q_name = b.point_name(known, slider_line.origin, _origin(pair.name))
+            q_name = b.point_name(known, slider_line.origin, _origin(b.scene.pair_label(pair.name)))
             terms.append(b.known_point(known, slider_line.origin, q_name))
             own_line = body.lines[pair.guide_line]
             terms.append(b.slide(pair, link, own_line, unknown_angle=True, sign=-1))
@@ -408,7 +408,8 @@ def _results(b: _Builder, group, stage: int) -> str:
     for pair in pairs:
         m = b.sol.sliders[pair.name]
         value = (m.s, m.v_rel, m.a_rel)[stage][b.k]
-        symbol = _s(pair.name) if stage == 0 else _ds(pair.name, stage)
+        label = b.scene.pair_label(pair.name)  # the coincident points (F3F4), not a word
+        symbol = _s(label) if stage == 0 else _ds(label, stage)
         parts.append(f"{symbol} = {_num(value)}")
     return ",\\ ".join(parts)
 

@@ -46,6 +46,7 @@ __all__ = [
     "Line",
     "Body",
     "Prismatic",
+    "NAME_FORMS",
     "Crank",
     "LinearDriver",
     "Scales",
@@ -125,6 +126,10 @@ class Body:
     @property
     def is_frame(self) -> bool:
         return self.name == FRAME
+
+
+#: The forms of a name a page needs (``[names]``): itself, as it reads after ∥, after "along the" / "direction of the".
+NAME_FORMS = ("name", "parallel", "of")
 
 
 @dataclass(frozen=True)
@@ -341,16 +346,22 @@ class Scene:
     #: empty for a plain ``title = "…"``, which is printed as written in every language.
     titles: dict[str, str] = field(default_factory=dict, compare=False)
     #: Names used in words on a page (a guide, a point, a link), per language:
-    #: ``[names] slot = { en = "slot", sr = "кулиса" }`` → ``{"slot": {"en": "slot", "sr": "кулиса"}}``.
+    #: ``[names] slot = { en = "slot", sr = "кулиса" }`` → ``{"slot": {"en": "slot", "sr": "кулиса"}}``;
     names: dict[str, dict[str, str]] = field(default_factory=dict, compare=False)
+    #: A name's other forms per language (:data:`NAME_FORMS`, read by :meth:`name_in`):
+    #: ``ru = { name = "кулиса", parallel = "кулисе" }`` → ``{"slot": {"ru.parallel": "кулисе"}}``.
+    name_forms: dict[str, dict[str, str]] = field(default_factory=dict, compare=False)
 
     def title_in(self, lang: str) -> str:
         """The title in *lang*: as the scene gives it there, else as written (the English, else the first given)."""
         return self.titles.get(lang) or self.title
 
-    def name_in(self, name: str, lang: str) -> str:
-        """A name (a guide's, a point's) in *lang* as the scene's ``[names]`` give it, else as written."""
-        return self.names.get(name, {}).get(lang) or name
+    def name_in(self, name: str, lang: str, form: str = "name") -> str:
+        """A name (a guide's, a point's) in *lang* as the scene's ``[names]`` give it, else as written; *form* one of
+        :data:`NAME_FORMS` (``"parallel"``: as it reads after ∥, ``"of"``: after "along the"), the name itself where
+        the scene gives no such form."""
+        other = self.name_forms.get(name, {}).get(f"{lang}.{form}") if form != "name" else None
+        return other or self.names.get(name, {}).get(lang) or name
     masses: dict[str, Mass] = field(default_factory=dict)
     gravity: Gravity | None = None
     loads: tuple[Load, ...] = ()
@@ -370,6 +381,22 @@ class Scene:
     def links(self) -> list[str]:
         """Names of the moving bodies (driver, links, blocks), in scene order."""
         return [name for name in self.bodies if name != FRAME]
+
+    def pair_label(self, name: str) -> str:
+        """The subscript a page writes prismatic pair *name*'s relative motion with (s, v^r, a^r, a^k): the pair's
+        name where it is a point's label (``H``, ``C3``), else the two coincident points of the slider's line (its
+        through point) on the slider and on the guide, the slider's first as s is the slider's travel along the
+        guide: ``F3F4`` for rod 3 sliding in sleeve 4 (never a word such as ``s_sleeve``)."""
+        if re.fullmatch(r"(?:[A-Z][0-9]*′?)+", name):
+            return name
+        pair = next((p for p in self.prismatics if p.name == name), None)
+        if pair is None:
+            return name
+        point = self.bodies[pair.slider].lines[pair.slider_line].through
+        if not point:
+            return name
+        label = {FRAME: self.frame_number}
+        return f"{point}{label.get(pair.slider, pair.slider)}{point}{label.get(pair.guide, pair.guide)}"
 
     @property
     def frame_number(self) -> str:
@@ -870,6 +897,28 @@ class _SceneReader:
             out[lang] = text
         return out
 
+    def name_forms(self, table: dict, field: str) -> dict[str, str]:
+        """A ``[names]`` entry: per language the name as text, or its forms as a sentence needs them,
+        ``ru = { name = "направляющая ползуна", parallel = "направляющей ползуна", of = "направляющей ползуна" }``
+        (``parallel``: after ∥; ``of``: after "along the", "direction of the"; each defaults to ``name``).
+        Returned as ``{"ru": name, "ru.parallel": …, "ru.of": …}``."""
+        plain = {lang: text for lang, text in table.items() if not isinstance(text, dict)}
+        out = self.per_language(plain, field) if plain else {}
+        for lang, forms in table.items():
+            if not isinstance(forms, dict):
+                continue
+            self.per_language({lang: "·"}, field)  # the language itself checked
+            for form, text in forms.items():
+                if form not in NAME_FORMS:
+                    raise self.fail(f"{field}.{lang}.{form}", f"unknown form {form!r}; forms: {', '.join(NAME_FORMS)}")
+                if not isinstance(text, str) or not text.strip():
+                    raise self.fail(f"{field}.{lang}.{form}", f"expected text, got {_describe(text)}")
+            if "name" not in forms:
+                raise self.fail(f"{field}.{lang}", "give the name itself (name = \"…\") beside its other forms")
+            out[lang] = forms["name"]
+            out.update({f"{lang}.{form}": text for form, text in forms.items() if form != "name"})
+        return out
+
     # -- sections --------------------------------------------------------------
 
     def scene(self) -> Scene:
@@ -882,11 +931,13 @@ class _SceneReader:
             title = titles.get("en") or next(iter(titles.values()))
         if not isinstance(title, str):
             raise self.fail("title", f"expected text or a table of languages (en = \"…\", sr = \"…\"), got {_describe(title)}")
-        page_names = {}
+        page_names, page_forms = {}, {}
         for key, value in self.table(data.get("names", {}), "names").items():
             if not isinstance(value, dict):
                 raise self.fail(f"names.{key}", f"expected a table of languages (en = \"…\", sr = \"…\"), got {_describe(value)}")
-            page_names[key] = self.per_language(value, f"names.{key}")
+            forms = self.name_forms(value, f"names.{key}")
+            page_names[key] = {k: v for k, v in forms.items() if "." not in k}
+            page_forms[key] = {k: v for k, v in forms.items() if "." in k}
 
         bodies: dict[str, Body] = {}
         frame = self.table(data.get("frame", {}), "frame")
@@ -960,6 +1011,7 @@ class _SceneReader:
             source=self.source,
             titles=titles,
             names=page_names,
+            name_forms=page_forms,
             output=output,
             notes=self.length_notes(),
             readings=readings,

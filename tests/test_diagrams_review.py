@@ -238,8 +238,8 @@ def test_a_single_diagrams_note_stands_above_it():
     assert len(numbers) == 6 and all(not box.overlaps(n.get_window_extent().transformed(ax.transAxes.inverted())) for n in numbers)
 
 
-def test_a_sliders_name_in_the_diagrams_is_the_scenes_word_in_the_pages_language(tmp_path):
-    # linear-arm's pair "sleeve" is [names] sleeve = { bg = "втулка", … }: a Bulgarian legend says s_втулка
+def test_a_sliders_name_in_the_diagrams_is_its_coincident_points_not_a_word(tmp_path):
+    # linear-arm's pair "sleeve" (rod 3 in sleeve 4 through F): a Bulgarian legend says s_F3F4, no word in a subscript
     from plans.drawing.diagrams import draw_cycle_diagrams
 
     scene = plans.load(plans.example_path("linear-arm"))
@@ -248,4 +248,4 @@ def test_a_sliders_name_in_the_diagrams_is_the_scenes_word_in_the_pages_language
     for name, fig in draw_cycle_diagrams(run, lang="bg"):
         texts += [t.get_text() for t in fig.findobj(lambda a: hasattr(a, "get_text"))]
     joined = " ".join(texts)
-    assert "втулка" in joined and "sleeve" not in joined
+    assert "F3F4" in joined and "втулка" not in joined and "sleeve" not in joined

@@ -174,7 +174,7 @@ def test_the_scene_data_lines():
 
 def test_the_scene_data_lines_name_the_guides_in_the_readers_language():
     lines = scene_data_lines(plans.load(plans.example_path("quick-return")), "ru")
-    assert "направляющая ползуна: ∠0°" in lines[2] and "ram" not in " ".join(lines)
+    assert "направляющая ползуна под углом 0°" in lines[2] and "ram" not in " ".join(lines)
 
 
 def test_long_loop_equations_flow_on_and_nothing_is_lost():

@@ -73,7 +73,7 @@ def test_linear_arm_bulgarian_words():
     assert "стойка ∥ 0°" in driver and "под" not in driver, driver
     s = run.runs[0]
     words = assembly_lines(s.analytic.branches, run.scene, "bg", s.graphical.positions)
-    assert words[0] == "група 3–4: водачът „втулка“ е насочен F → K → G", words
+    assert words[0] == "група 3–4: посока на втулката: F → K → G", words
     assert "без K" not in term("one_way_stroke", "bg") and "коефициент" in term("one_way_stroke", "bg")
     assert term("stroke_time", "bg") == "време на хода"
     assert term("stroke_diagrams", "bg") == "Кинематични диаграми за един ход"

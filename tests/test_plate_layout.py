@@ -269,13 +269,13 @@ def test_a_line_known_is_a_direction_not_a_sense(lang, once):
 
 
 def test_a_guide_named_in_words_keeps_its_grammar():
-    """The guide's name (a noun of any gender, or a letter) stands beside a word for the guide that agrees with the verb."""
+    """The guide's name stands in the form its sentence needs (the scene's "of" form), without quotes."""
     from plans.i18n import term
 
-    directed = term("assembly_directed", "bg").format(key="втулка", a="F", b="D")
-    assert directed == "водачът „втулка“ е насочен от F към D"
-    assert term("assembly_along", "bg").format(c="H", where="пред", b="Q", key="прът") == "плъзгач H пред Q по водача „прът“"
-    assert term("assembly_directed", "ru").format(key="стержень", a="B", b="E") == "направляющая стержень направлена от B к E"
+    directed = term("assembly_directed", "bg").format(key="втулката", a="F", b="D")
+    assert directed == "посока на втулката: от F към D"
+    assert term("assembly_along", "bg").format(c="H", where="пред", b="Q", key="пръта") == "плъзгач H пред Q по направлението на пръта"
+    assert term("assembly_directed", "ru").format(key="стержня", a="B", b="E") == "направление стержня: от B к E"
 
 
 # --- a single position's drawings drawn large --------------------------------------------------------------

@@ -848,8 +848,8 @@ def _series(analytic, quantity: str, valid, swing: bool = False, lang: str = "en
         part = "real" if quantity[1] == "x" else "imag"
         return [(_name(quantity[0], f"{p},{quantity[1]}"), _finite(getattr(getattr(analytic.points[p], quantity[0]), part), valid)) for p in points]
     pairs = [p.name for p in scene.prismatics if p.name in analytic.sliders]
-    # a pair named in words by the scene (a sleeve) in the page's language ([names]), as written otherwise
-    called = {n: scene.name_in(n, lang) for n in pairs}
+    # a pair by its coincident points (F3F4) where the scene names it in words (a sleeve): no word in a subscript
+    called = {n: scene.pair_label(n) for n in pairs}
     if quantity == "s":
         return [(_name("s", called[n]), _finite(np.asarray(analytic.sliders[n].s, dtype=float), valid)) for n in pairs]
     if quantity == "coriolis":

@@ -176,6 +176,8 @@ class Document:
     def words(self, line: str) -> str:
         """A line of the program's text (with ``$…$`` math) as markup in the page's language, names and units."""
         for name in self.scene.names:
+            # after ∥ the name in the form that reads there ("∥ направляющей ползуна")
+            line = re.sub(rf"∥ {re.escape(name)}(?!\w)", lambda m: "∥ " + self.scene.name_in(name, self.lang, "parallel"), line)
             called = self.scene.name_in(name, self.lang)
             # a name already in the page's words (a data line's "ram guide" for the guide ram) is left as it is
             line = re.sub(rf"(?<![\w.]){re.escape(name)}(?!\w)",

@@ -334,7 +334,7 @@ def build_handout(
     multi = positions is not None
     eq_under_v = True  # (one position: whether the acceleration equations go under the velocity plan)
     solved = [r for r in run.runs if r.ok]
-    name = namer(scene, lang)
+    name = namer(scene, lang, "parallel")  # (the equations' guide names follow ∥)
     doc = Document(scene, lang)
 
     def at(r, ks):

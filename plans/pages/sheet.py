@@ -279,7 +279,7 @@ def _readings(doc: Document, graphical, lang: str) -> list:
 def _texts(doc: Document, graphical, *, table, formula, assembly, legend, heading) -> list[str]:
     """The text column's markup (collected from the document's own sections)."""
     lang = doc.lang
-    name = namer(doc.scene, lang)
+    name = namer(doc.scene, lang, "parallel")  # (the equations' guide names follow ∥)
     body, doc.body = doc.body, []
     try:
         if heading:

@@ -22,9 +22,10 @@ from ..scene import FRAME, Crank, Scene
 __all__ = ["scene_data_lines", "cycle_lines", "four_bar_kind", "namer", "assembly_lines", "group_words", "block_words", "assembly_text", "units", "formula_words", "KINDS"]
 
 
-def namer(scene, lang: str):
-    """A function: a name as the scene writes it → the name on a page in *lang*."""
-    return lambda name: scene.name_in(name, lang)
+def namer(scene, lang: str, form: str = "name"):
+    """A function: a name as the scene writes it → the name on a page in *lang*, in *form* (:data:`plans.scene.NAME_FORMS`:
+    ``"parallel"`` for the words of vector equations, where a guide's name follows ∥)."""
+    return lambda name: scene.name_in(name, lang, form)
 
 
 _GROUP = re.compile(r"^[A-Z]{3}\(([^,()]+),([^,()]+)\)$")
@@ -104,7 +105,6 @@ def assembly_text(branch, scene, lang: str, positions=None) -> str | None:
     *positions* (point name -> position [m]), when given, lets a group that
     closes a four-bar with the crank be called open or crossed.
     """
-    name = namer(scene, lang)
     words = branch.words.strip()
     m = re.fullmatch(rf"({_NAME}) to the (left|right) of ({_NAME})→({_NAME})", words)
     if m:
@@ -120,15 +120,15 @@ def assembly_text(branch, scene, lang: str, positions=None) -> str | None:
         side = _side(angle, sign, lang) if angle is not None else None
         if side is not None:
             return term("assembly_slider_side", lang).format(c=c, where=side, b=b)
-        return term("assembly_along", lang).format(c=c, where=term("ahead_of" if sign > 0 else "behind", lang), b=b, key=name(key.rpartition(".")[2]))
+        return term("assembly_along", lang).format(c=c, where=term("ahead_of" if sign > 0 else "behind", lang), b=b, key=scene.name_in(key.rpartition(".")[2], lang, "of"))
     m = re.fullmatch(rf"line ({_NAME}(?:\.{_NAME})?) pointing from ({_NAME}) towards ({_NAME})", words)
     if m:
         key, a, b = m.groups()
         g = _GROUP.match(branch.group)
         points = _points_along(scene, key, a, b, positions, g.groups() if g else ())
         if points:
-            return term("assembly_directed_points", lang).format(key=name(key.rpartition(".")[2]), points=" → ".join(points))
-        return term("assembly_directed", lang).format(key=name(key.rpartition(".")[2]), a=a, b=b)
+            return term("assembly_directed_points", lang).format(key=scene.name_in(key.rpartition(".")[2], lang, "of"), points=" → ".join(points))
+        return term("assembly_directed", lang).format(key=scene.name_in(key.rpartition(".")[2], lang, "of"), a=a, b=b)
     return None
 
 
@@ -238,7 +238,7 @@ def scene_data_lines(scene: Scene, lang: str = "en", law=None) -> list[str]:
             for b in range(a + 1, len(pts)):
                 (na, za), (nb, zb) = pts[a], pts[b]
                 pairs.append(f"{na}{nb} = {_fmt(abs(za - zb) * factor)}")
-        extra = [f"∠{name_in(line.name, lang)} = {_fmt(math.degrees(line.angle))}°" for line in body.lines.values() if line.angle]
+        extra = [term("line_at", lang).format(name=name_in(line.name, lang), angle=_fmt(math.degrees(line.angle))) for line in body.lines.values() if line.angle]
         if pairs or extra:
             lengths.append(f"{name}: " + ", ".join(pairs + extra))
     second = f"{term('lengths', lang)} [{unit}]:  " + ";  ".join(lengths)
@@ -246,7 +246,7 @@ def scene_data_lines(scene: Scene, lang: str = "en", law=None) -> list[str]:
     fixed = [f"{n} ({_fmt(z.real * factor)}, {_fmt(z.imag * factor)})" for n, z in frame.points.items()]
     pivot = frame.points.get(driver.pivot) if isinstance(driver, Crank) else None
     for line in frame.lines.values():
-        text = f"{name_in(line.name, lang)}: ∠{_fmt(math.degrees(line.angle))}°"
+        text = term("line_at", lang).format(name=name_in(line.name, lang), angle=_fmt(math.degrees(line.angle)))
         if pivot is not None:  # the guide's offset e: its perpendicular distance from the crank's pivot
             offset = abs(((pivot - line.origin) * cmath.exp(-1j * line.angle)).imag)
             text += f", e = {_fmt(offset * factor)} {unit} {term('from_point', lang)} {driver.pivot}"
