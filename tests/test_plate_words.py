@@ -217,8 +217,9 @@ def test_handouts_results_tables_hold_a_A4_and_a_E5():
 
 #: what the program writes and a page must not: a group's kind token, an assembly's sign, a guide's key, a name's "_"
 _TOKENS = re.compile(r"\b[RP]{3}\(|\(\+1\)|\(−1\)|\(-1\)|\bframe\.|[A-Za-z]_[A-Za-z0-9]")
-#: a group named as a structural formula names it (II₁(3,4)): only in the structural formula
-_ASSUR = re.compile(r"\bII ?[₁-₅1-5]? ?\(")
+#: a group named as a structural formula names it (II₁(3,4)): only in the structural formula (a detail's
+#: "Детайл II (4 : 1)" is a scale, not a group)
+_ASSUR = re.compile(r"\bII ?[₁-₅1-5]? ?\(\d+ ?,")
 
 
 @pytest.mark.parametrize("name", list(HANDOUTS))
