@@ -674,6 +674,8 @@ def sheet_table(comparisons: list[Comparison], graphical=None, analytic=None, po
         # (−18854 beside a reading of −18864, not −18850): the error printed is then the error of the two numbers
         a_text = "0" if zero_a else _magnitude(row.analytic, step if _finer(abs(row.analytic), step) else None)
         g_text = "0" if zero_g else _magnitude(row.graphical, step)
+        if step is None and given(graphical, row) and not zero_a:  # a given value prints as given in both columns (the
+            g_text = _magnitude(row.analytic, None)  # driver's a = 2 m/s², not the reading 2.001 of its drawn 66.7 mm)
         if not zero_a and 1e-3 <= abs(row.analytic) < 1e6:  # the analytic value to at least the graphical one's decimals, its trailing zeros kept (0.250 beside 0.250, not 0.25)
             a_text = _magnitude(row.analytic, 10.0 ** -max(_decimals(g_text), _decimals(a_text)))
         # a relative error is not defined for a zero quantity, nor for a given one (the driver's ω, v_A: drawn from

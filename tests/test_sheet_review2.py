@@ -1,0 +1,34 @@
+"""The A3 sheets as a teacher reviewed them a second time (issue 20): given values printed as given, the frame
+numbered at its supports on the scheme, the rigid joint's sign, legible text, one k_l across a set of sheets."""
+
+from __future__ import annotations
+
+import plans
+from plans.compare import compare
+from plans.graphical import construct
+from plans.report import sheet_table
+from plans.scene import example_path, load
+
+
+def _linear_arm():
+    scene = load(example_path("linear-arm"))
+    # at the sheet's factors: 2 m/s² at k_a 0.03 is 66.67 mm, drawn to the drafting precision as 66.7 mm
+    return scene, construct(scene, k_l=0.005, k_v=0.008, k_a=0.03, precision=0.1), plans.solve(scene)
+
+
+def test_the_drivers_given_acceleration_prints_as_given():
+    # linear-arm.toml gives the slider a = 2 m/s² (and v = 0.5 m/s) along the floor (0°): the table prints the given
+    # value in both columns as the scene writes it (as v_A 0.5 beside 0.5), not a reading of its drawn length (2.001)
+    from plans.drawing.readings import plan_readings
+
+    scene, g, analytic = _linear_arm()
+    assert scene.driver.acceleration == 2.0 and scene.driver.velocity == 0.5
+    rows = {r[0]: r[1:3] for r in sheet_table(compare(analytic, g), g, analytic)[1:]}
+    a_A = next(v for k, v in rows.items() if k.startswith("$a_{A}$"))
+    v_A = next(v for k, v in rows.items() if k.startswith("$v_{A}$"))
+    assert a_A == ["2 ∠ 0.0°", "2 ∠ 0.0°"], a_A
+    assert v_A == ["0.5 ∠ 0.0°", "0.5 ∠ 0.0°"], v_A
+    # the readings of the acceleration plan: the drawn segment (2 / 0.03 = 66.7 mm) and the given value, not 2.001
+    readings = plan_readings(g, "acceleration")
+    row = next(r for r in readings[1:] if r[0].startswith("$a_{A}"))
+    assert float(row[2]) == 66.7 and row[4].split()[0] in ("2", "2.000"), row
