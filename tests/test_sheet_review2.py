@@ -32,3 +32,35 @@ def test_the_drivers_given_acceleration_prints_as_given():
     readings = plan_readings(g, "acceleration")
     row = next(r for r in readings[1:] if r[0].startswith("$a_{A}"))
     assert float(row[2]) == 66.7 and row[4].split()[0] in ("2", "2.000"), row
+
+
+import pytest
+from plans.scene import loads
+
+
+def _crank_one_slider_crank():
+    # the slider-crank numbered as the Russian and Bulgarian courses number it: crank 1, frame 0
+    text = example_path("slider-crank").read_text()
+    text = text.replace("[link.2]", "[link.1]").replace("[link.3]", "[link.2]").replace('crank = "2"', 'crank = "1"')
+    return loads(text)
+
+
+@pytest.mark.parametrize("name, number, supports", [
+    # six-bar: pivots O, D and the sleeve's pivot E (crank 2: frame 1); four-bar: O and D; quick-return: O, C and the
+    # ram's guideway; the slider-crank renumbered (crank 1): frame 0 at O and at the slider's guide
+    ("six-bar", "1", 3), ("four-bar", "1", 2), ("quick-return", "1", 3), ("crank-1", "0", 2)])
+def test_the_frame_is_numbered_at_its_supports(name, number, supports):
+    from plans.drawing import draw_mechanism
+
+    scene = _crank_one_slider_crank() if name == "crank-1" else load(example_path(name))
+    artists = draw_mechanism(construct(scene))
+    numbers = [a for a in artists if (a.get_gid() or "").startswith("mech-frame-number")]
+    assert len(numbers) == supports, [a.get_gid() for a in numbers]
+    assert {a.get_text() for a in numbers} == {number}
+    # each by its support: within 9 mm of a hatch stroke (the number is written by the hatching)
+    import numpy as np
+
+    strokes = np.array([p for a in artists if (a.get_gid() or "").startswith("mech-hatch") for seg in a.get_segments() for p in seg])
+    for a in numbers:
+        x, y = a.get_position()
+        assert np.hypot(strokes[:, 0] - x, strokes[:, 1] - y).min() < 9.0, a.get_gid()

@@ -208,6 +208,8 @@ class MechanismDrawing:
         self.ground = GROUND * k
         self.omega_r = OMEGA_R * k
         self.epsilon_r = EPSILON_R * k
+        #: where the frame's number is written: (the hatching's end [mm], the spots beside it, a name for its gid)
+        self.frame_marks: list[tuple[complex, tuple[complex, ...], str]] = []
 
     # -- coordinates [mm on paper] -----------------------------------------
 
@@ -272,6 +274,7 @@ class MechanismDrawing:
         self.driver_arrows()
         self.point_labels()
         self.link_labels()
+        self.frame_numbers()
         self.caption()
 
     def _stack_side(self, body: str) -> float:
@@ -377,6 +380,7 @@ class MechanismDrawing:
                             continue
                         self.s.line([p0, p1], lw=1.1, gid=f"guide-{name}", zorder=1.2)
                         self._hatch(p0, p1, n * side) if side > 0 else self._hatch(p1, p0, n * side)
+                self._frame_mark(origin + u * hi + n * (gap + HATCH_LEN / 2), u, n, name)
                 self.guides.append((origin + u * lo, origin + u * hi))
                 continue
             a = origin + u * lo
@@ -384,6 +388,7 @@ class MechanismDrawing:
             side = choice if choice is not None else (-1.0 if self._mechanism_side(FRAME, name, origin, n) > 0 else 1.0)
             self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=1.2)
             self._hatch(a, b, n * side)
+            self._frame_mark(b + n * side * HATCH_LEN / 2, u, n * side, name)
             self.guides.append((a, b))
 
     def _bearing(self, body: str, name: str, line) -> None:
@@ -403,6 +408,7 @@ class MechanismDrawing:
             b = origin + u * (centre + half) + n * side * gap
             self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=2.2)
             self._hatch(a, b, n * side) if side > 0 else self._hatch(b, a, n * side)
+        self._frame_mark(origin + u * (centre + half) + n * (gap + HATCH_LEN / 2), u, n, name)
         self.guides.append((origin + u * (centre - half), origin + u * (centre + half)))
 
     def _over_cycle(self, measure) -> list:
@@ -672,6 +678,22 @@ class MechanismDrawing:
             a, b = base + n * (half + 2.0), base - n * (half + 2.0)
             self.s.line([a, b], lw=1.0, gid="ground-base", zorder=2.5)
             self._hatch(b, a, d)
+            # the frame's number by the hatching, at either end of the base (the textbook's small "1")
+            spots = tuple(base + e * (half + 2.0 + 2.2) + d * (HATCH_LEN * 0.5 + f) for f in (0.0, 1.5) for e in (n, -n))
+            self.frame_marks.append((base + d * HATCH_LEN * 0.5, spots, name))
+
+    def _frame_mark(self, end: complex, u: complex, out: complex, name: str) -> None:
+        """Where the frame's number goes by a guide's hatching that ends at *end* [mm] (*u*: along the guide, *out*:
+        towards its hatched side): beyond the end, or just off it on the hatched side."""
+        spots = (end + u * 3.0, end + u * 3.0 + out * 2.0, end - u * 3.0 + out * (HATCH_LEN / 2 + 2.5), end + u * 5.0)
+        self.frame_marks.append((end, spots, f"guide-{name}"))
+
+    def frame_numbers(self) -> None:
+        """The frame's number (the scene's: 1 when the crank is 2, 0 when it is 1) written small by the hatching of
+        every support and frame guide, as the textbook numbers the frame on a scheme (the equations name it: v_EE1)."""
+        number = self.scene.frame_number
+        for end, spots, name in self.frame_marks:
+            self._label(end, number, gid=f"frame-number-{name}", size=SMALL_PT + 0.5, first=spots, gaps=(2.5, 3.5, 5.0))
 
     def _support_footprint(self, q: complex, d: complex, height: float):
         """The area a support of *height* turned along *d* covers (triangle, base, hatching), less the pin."""
