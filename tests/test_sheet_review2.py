@@ -64,3 +64,24 @@ def test_the_frame_is_numbered_at_its_supports(name, number, supports):
     for a in numbers:
         x, y = a.get_position()
         assert np.hypot(strokes[:, 0] - x, strokes[:, 1] - y).min() < 9.0, a.get_gid()
+
+
+def test_the_plan_of_positions_data_under_the_drawing_legible():
+    # the cycle's data (law, stroke H, θ, K, working stroke) set at ≥ 10 pt, under the drawing and clear of the frame's
+    # foot by more than the title block's room (27 mm), not squeezed into the corner at its foot
+    import re
+
+    from plans.pages.sheet import positions_page
+    from plans.positions import run_positions
+
+    run = run_positions(load(example_path("slider-crank")), 4)
+    page = positions_page(run, 0.0025, lang="sr", number=(1, 5))
+    assert page.scales == {"k_l": 0.0025}
+    (found,) = re.finditer(r"#place\(top \+ left, dx: ([\d.]+)mm, dy: ([\d.]+)mm, block\(width: [\d.]+mm\)\[#text\(size: ([\d.]+)pt\)"
+                           r"\[(.*?Закон кретања.*?)\]\]\)", page.source, re.S)
+    dy, size, data = float(found.group(2)), float(found.group(3)), found.group(4)
+    assert "Радни ход" in data and size >= 10.0
+    x, y, w, h = page.placed["positions"]
+    assert dy + 10.0 >= y + h  # under the drawing (dy from the text area's top, 10 mm under the page's; placed: the page's)
+    lines = data.count("\\\n") + 1
+    assert 10.0 + dy + lines * size * 0.3528 * 1.3 < 297.0 - 5.0 - 27.0  # over the title block's room

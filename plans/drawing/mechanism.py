@@ -685,7 +685,9 @@ class MechanismDrawing:
     def _frame_mark(self, end: complex, u: complex, out: complex, name: str) -> None:
         """Where the frame's number goes by a guide's hatching that ends at *end* [mm] (*u*: along the guide, *out*:
         towards its hatched side): beyond the end, or just off it on the hatched side."""
-        spots = (end + u * 3.0, end + u * 3.0 + out * 2.0, end - u * 3.0 + out * (HATCH_LEN / 2 + 2.5), end + u * 5.0)
+        # (over the hatching first, inside the guide's length: beyond its end the number would widen the drawing)
+        spots = (end - u * 2.5 + out * (HATCH_LEN / 2 + 2.2), end - u * 5.0 + out * (HATCH_LEN / 2 + 2.2), end + u * 3.0,
+                 end + u * 3.0 + out * 2.0)
         self.frame_marks.append((end, spots, f"guide-{name}"))
 
     def frame_numbers(self) -> None:

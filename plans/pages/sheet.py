@@ -693,16 +693,20 @@ def _capitalised(line: str) -> str:
     return line[:1].upper() + line[1:] if re.match(r"[^\W\d_]{2}", line) else line
 
 
-#: the height [mm] of a line of the plan of positions' data (at TEXT_PT)
-DATA_LINE = 4.4
+#: the size [pt] of the plan of positions' data (the driver's law, the stroke, θ, K, the working stroke)
+DATA_PT = TEXT_PT + 1.0
+#: the height [mm] of a line of the plan of positions' data (at DATA_PT)
+DATA_LINE = 5.2
+#: the room [mm] between the plan of positions and its data under it
+DATA_GAP = 6.0
 
 
 def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: tuple[int, int] | None = None) -> Sheet:
-    """The plan of positions of *run* on a sheet of its own (sheet 1 of a set, the textbook's order), drawn at a
-    k_l of its own: the round factor with which it fills the page (a drawing of every position is another
-    drawing than a position's mechanism; its k_l is stated under its name and in the title block).  A *k_l*
-    given is kept (a coarser round one when it runs over the page).  The cycle's data (the driver's law, the
-    Grashof class, the stroke, θ and K) under the drawing, beside the title block."""
+    """The plan of positions of *run* on a sheet of its own (sheet 1 of a set, the textbook's order), drawn at *k_l*
+    (a set of sheets': the positions' sheets' k_l, one k_l across the plate; a coarser round one only when it runs
+    over the page), or without one at the round factor with which it fills the page; its k_l is stated under its
+    name and in the title block.  The cycle's data (the driver's law, the Grashof class, the stroke, θ and K, the
+    working stroke) under the drawing, left-aligned with it, at :data:`DATA_PT`."""
     import numpy as np
 
     from ..drawing.svgblocks import positions_svg
@@ -711,8 +715,8 @@ def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: t
     page = sheet_page("A3")
     doc = Document(run.scene, lang, page)
     lines = [_capitalised(line) for line in cycle_lines(run, lang)]
-    # the data lines under the drawing: beside the title block, and over it as far as they need
-    under = max(len(lines) * DATA_LINE - (TITLE_BLOCK_ROOM - 2.0), 0.0)
+    # the data lines under the drawing, over the title block
+    under = len(lines) * DATA_LINE + DATA_GAP if lines else 0.0
     room = (page.text_width, page.text_height - CAPTION - 2.0 - under)
     extremes = run.other_extreme()
     zs = [complex(z) for r in run.runs if r.ok for z in r.graphical.positions.values()]
@@ -732,12 +736,13 @@ def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: t
     doc.sheet_number = number
     doc.body.append(f"#align(center)[#text(size: {TEXT_PT + 1.5}pt, weight: \"bold\")[{doc.words(term('positions_plan', lang))}] \\\n"
                     f"{doc.scale_markup('k_l', k_l)}]\n")
-    if lines:
-        text = " \\\n".join(doc.words(formula_words(line)) for line in lines)
-        doc.body.append(f"#place(bottom + left, dx: 0mm, dy: {TITLE_BLOCK_ROOM - 2.0:.1f}mm, block(width: {page.text_width - 195.0:.1f}mm)"
-                        f"[#text(size: {TEXT_PT}pt)[{text}]])\n")
     y = CAPTION + 2.0 + max(room[1] - block.height, 0.0) / 2  # the drawing in the middle of its room
     x = (page.text_width - block.width) / 2
+    if lines:  # under the drawing, from its left edge (the page's left for a drawing as wide as the page)
+        text = " \\\n".join(doc.words(formula_words(line)) for line in lines)
+        left = min(max(x, 0.0), page.text_width / 2)
+        doc.body.append(f"#place(top + left, dx: {left:.3f}mm, dy: {y + block.height + DATA_GAP:.3f}mm, block(width: {page.text_width - left:.1f}mm)"
+                        f"[#text(size: {DATA_PT}pt)[{text}]])\n")
     doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {y:.3f}mm, {image('positions', block.width)})")
     doc.add_image("positions", block)
     return Sheet(doc.source(), doc.images, {"k_l": k_l}, "A3", {"positions": (page.margins[0] + x, page.margins[2] + y, block.width, block.height)})
@@ -798,7 +803,8 @@ def write_position_sheets(run, directory, *, lang: str = "en", format: str = "sv
         contents[directory / f"sheet-{r.index:0{width}d}.{format}"] = sheet.render(format)
     files = len(sheets) + 1
     say(f"sheet 1/{files}")
-    contents[directory / f"positions.{format}"] = positions_page(run, (given or {}).get("k_l"), lang=lang, number=(1, files)).render(format)
+    # the plan of positions at the sheets' k_l: one k_l across the plate (the schemes can be laid over it)
+    contents[directory / f"positions.{format}"] = positions_page(run, scales.get("k_l"), lang=lang, number=(1, files)).render(format)
     if format != "svg":
         return replace_all(contents)
     return replace_all(contents, stale=(directory, r"sheet-\d+\.svg", "positions.svg"))
