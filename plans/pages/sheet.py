@@ -276,8 +276,9 @@ def _readings(doc: Document, graphical, lang: str) -> list:
     return out
 
 
-def _texts(doc: Document, graphical, *, table, formula, assembly, legend, heading) -> list[str]:
-    """The text column's markup (collected from the document's own sections)."""
+def _texts(doc: Document, graphical, *, table, formula, assembly, legend, heading, split: bool = False) -> list[str]:
+    """The text column's markup (collected from the document's own sections); *split*: the comparison table in two
+    halves side by side (a long one: :data:`SPLIT_ROWS`), the legend under them."""
     lang = doc.lang
     name = namer(doc.scene, lang)
     body, doc.body = doc.body, []
@@ -302,16 +303,33 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
                             + ", ".join(readings) + ")]\n")
         results = doc.table_markup(term("comparison", lang), table) if table and len(table) > 1 else "[]"
         # under the plans' legend, what the notes under a plan are (short segments, near-coincident directions)
-        legend_cell = (f"align(right)[#{doc.add_image('legend', legend)}]" + f" + block(width: 100%)[#text(size: {SMALL_PT - 0.5}pt)["
-                       f"{doc.words(term('plan_notes_legend', lang))}]]") if legend is not None else "[]"
+        # (the legend as drawn, or narrower where the column is narrow: it never runs over the table beside it)
+        legend_image = f"align(right)[#layout(room => " + doc.add_image('legend', legend).replace(
+            f"width: {legend.width:.3f}mm", f"width: calc.min(room.width, {legend.width:.3f}mm)") + ")]" if legend is not None else ""
+        notes = (f"block(width: 100%)[#text(size: {SMALL_PT - 0.5}pt)[{doc.words(term('plan_notes_legend', lang))}]]"
+                 if legend is not None else "")
         # the proportions of the images placed by similarity, beside the table under the legend
         similar = similarity_markup(doc, [("", graphical)])
-        if similar:
-            legend_cell += f" + block(above: 3mm)[{similar}]"
-        doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {results}, {legend_cell})]\n")
+        if split and table and len(table) > SPLIT_ROWS:
+            # a long table in two halves side by side (the second under the same header, its heading line left blank),
+            # the legend under them, its notes and the proportions beside it
+            cut = (len(table) + 1) // 2
+            halves = (doc.table_markup(term("comparison", lang), table[:cut]), doc.table_markup("", [table[0]] + table[cut:]))
+            doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, auto), column-gutter: {2 * GUTTER}mm, align: top + left, "
+                            f"{halves[0]}, {halves[1]})]\n")
+            right = " + ".join(x for x in (notes, f"block(above: 3mm)[{similar}]" if similar else "") if x) or "[]"
+            doc.body.append(f"#text(size: {SMALL_PT}pt)[#block(above: 4mm)[#grid(columns: (auto, 1fr), column-gutter: {2 * GUTTER}mm, "
+                            f"align: top + left, {legend_image or '[]'}, {right})]]\n")
+        else:
+            legend_cell = " + ".join(x for x in (legend_image, notes, f"block(above: 3mm)[{similar}]" if similar else "") if x) or "[]"
+            doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {results}, {legend_cell})]\n")
         return doc.body
     finally:
         doc.body = body
+
+
+#: a comparison table longer than this (rows, with its header) is set in two halves side by side
+SPLIT_ROWS = 16
 
 
 def similarity_markup(doc: Document, solutions) -> str:
@@ -328,20 +346,22 @@ def similarity_markup(doc: Document, solutions) -> str:
 
 
 def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "en", table=None, formula: str = "",
-                assembly=(), legend=None, heading: str = "", paper: str = "A3", number: tuple[int, int] | None = None) -> Sheet:
+                assembly=(), legend=None, heading: str = "", paper: str = "A3", number: tuple[int, int] | None = None,
+                text_scale: float = 1.0, split: bool = False) -> Sheet:
     """The sheet of *graphical* (drawn already: *blocks* kind -> SvgBlock at its factor) with its drawings at the top left
     in *regions* (kind -> (x, y, w, h) [mm] in the drawings' room), the text column beside them.
 
     *table*: the results table (rows of text, the header first, in *lang*); *formula*: the structural formula;
     *assembly*: the groups' assembly in words; *legend*: the plans' legend (an SvgBlock); *heading*: a line over
-    the text (a position's sheet: the position); *number*: (n, m) of a set of sheets (else 1 of 1).
+    the text (a position's sheet: the position); *number*: (n, m) of a set of sheets (else 1 of 1); *text_scale*: the
+    text column's enlargement (:func:`_text_scale`); *split*: the comparison table in two halves (:func:`_texts`).
     """
     page = sheet_page(paper)
     doc = Document(scene, lang, page)
     doc.plate = dict(graphical.scales)
     doc.sheet_number = number
     width, _ = _drawing_room(page)
-    texts = _texts(doc, graphical, table=table, formula=formula, assembly=assembly, legend=legend, heading=heading)
+    texts = _texts(doc, graphical, table=table, formula=formula, assembly=assembly, legend=legend, heading=heading, split=split)
     placed = {}
     names = {"mechanism": term("mechanism", lang), "velocity": term("velocity_plan", lang), "acceleration": term("acceleration_plan", lang)}
     for kind, block in blocks.items():
@@ -357,7 +377,11 @@ def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "e
         doc.add_image(kind, block)
         doc.body.append(f"#place(top + left, dx: {bx:.3f}mm, dy: {by:.3f}mm, {image(kind, block.width)})")
         placed[kind] = (page.margins[0] + bx, page.margins[2] + by, block.width, block.height)
-    doc.body.append(f"#pad(left: {width + GUTTER:.3f}mm)[\n" + "\n".join(texts) + "]\n")
+    column = "\n".join(texts)
+    if text_scale != 1.0:  # set narrower, then enlarged: every size in the column × text_scale, its width TEXT_COLUMN
+        column = (f"#scale(x: {text_scale * 100:.1f}%, y: {text_scale * 100:.1f}%, origin: top + left, reflow: true)"
+                  f"[#block(width: {TEXT_COLUMN / text_scale:.3f}mm)[\n{column}]]")
+    doc.body.append(f"#pad(left: {width + GUTTER:.3f}mm)[\n" + column + "]\n")
     return Sheet(doc.source(), doc.images, dict(graphical.scales), paper, placed, graphical)
 
 
@@ -538,13 +562,46 @@ def _text_parts(scene, g, analytic, lang: str) -> dict:
 
 
 def _text_height(scene, g, parts: dict, lang: str, heading: str, paper: str) -> float:
-    """The height [mm] of the sheet's text column (measured by Typst before the page is laid out)."""
+    """The height [mm] of the sheet's text column (measured by Typst before the page is laid out) at its set size."""
+    return _text_heights(scene, g, parts, lang, heading, paper, (1.0,))[0]
+
+
+def _text_heights(scene, g, parts: dict, lang: str, heading: str, paper: str, scales, split: bool = False) -> list[float]:
+    """The heights [mm] of the sheet's text column enlarged by each of *scales* (set :data:`TEXT_COLUMN` / scale wide,
+    then enlarged: the lines wrap as they will on the page), measured by Typst in one pass (*split*: :func:`_texts`)."""
     doc = Document(scene, lang, sheet_page(paper))
     doc.plate = dict(g.scales)
-    texts = _texts(doc, g, heading=heading, **parts)
+    texts = _texts(doc, g, heading=heading, split=split, **parts)
     doc.body.append("#let plans-texts = [\n" + "\n".join(texts) + "]")
-    doc.body.append(f"#context [#metadata(measure(block(width: {TEXT_COLUMN}mm, plans-texts)).height.mm()) <plans-text-height>]")
-    return float(query_value(doc.source(), doc.images, "plans-text-height"))
+    heights = ", ".join(f"measure(block(width: {TEXT_COLUMN / f:.3f}mm, plans-texts)).height.mm() * {f}" for f in scales)
+    doc.body.append(f"#context [#metadata(({heights},)) <plans-text-height>]")
+    return [float(h) for h in query_value(doc.source(), doc.images, "plans-text-height")]
+
+
+def _text_layout(scene, g, parts: dict, lang: str, heading: str, paper: str, regions: dict) -> tuple[float, bool]:
+    """(enlargement, split) of the text column: the largest enlargement that fits (:func:`_text_scale`), the comparison
+    table whole where that is as large as in two halves."""
+    page = sheet_page(paper)
+    whole = _text_scale(dict(zip(TEXT_SCALES, _text_heights(scene, g, parts, lang, heading, paper, TEXT_SCALES))), page, regions)
+    if not parts.get("table") or len(parts["table"]) <= SPLIT_ROWS or whole == TEXT_SCALES[0]:
+        return whole, False
+    halves = _text_scale(dict(zip(TEXT_SCALES, _text_heights(scene, g, parts, lang, heading, paper, TEXT_SCALES, split=True))), page, regions)
+    return (halves, True) if halves > whole else (whole, False)
+
+
+#: how much a sheet's text column may be enlarged (its tables, equations and readings set at 8–9.5 pt, at 1.25 at
+#: 10–12 pt), the largest first: the largest that still fits over the drawings placed under it and the title block
+TEXT_SCALES = (1.25, 1.2, 1.15, 1.1, 1.05)
+
+
+def _text_scale(heights, page: PageGeometry, regions: dict) -> float:
+    """The enlargement of the text column (one of :data:`TEXT_SCALES`, else 1) whose height (*heights*: scale ->
+    height [mm]) fits the room the drawings leave it: down to the first drawing placed under it (*regions*: kind ->
+    (x, y, w, h) [mm] in the text area), else to the title block; the drawings keep their regions and factors."""
+    width, _ = _drawing_room(page)
+    tops = [y for x, y, w, h in regions.values() if x >= width]
+    limit = min(tops, default=page.text_height + GUTTER + 3.0) - GUTTER - 3.0
+    return next((f for f in TEXT_SCALES if heights[f] <= limit), 1.0)
 
 
 def _under(page: PageGeometry, text_height: float):
@@ -584,8 +641,10 @@ def fitted_sheet(scene, graphical, analytic, construct_at, *, lang: str = "en", 
             continue
         scales, regions, out = found
         g, blocks = out[0]
+        text = _text_parts(scene, g, analytic, lang)
+        text_scale, split = _text_layout(scene, g, text, lang, heading, paper, regions)
         sheet = build_sheet(scene, g, blocks, regions, lang=lang, heading=heading, paper=paper, number=number,
-                            **_text_parts(scene, g, analytic, lang))
+                            text_scale=text_scale, split=split, **text)
         if last or _fits_one_page(sheet):
             return sheet
     from ..errors import PlansError
@@ -662,13 +721,17 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
     else:
         raise PlansError("the drawings at the factors given are larger than A0: give larger scale factors (--k-l, --k-v, --k-a)")
     scales, regions, out = found
+    texts = [_text_parts(r.scene, out[i][0], r.analytic, lang) for i, r in enumerate(solved)]
+    # one size of text over the set: the enlargement every sheet's column takes (each sheet's table whole or halved)
+    layouts = [_text_layout(r.scene, out[i][0], t, lang, position_heading(r, lang), paper, regions) for i, (r, t) in enumerate(zip(solved, texts))]
+    text_scale = min(f for f, _ in layouts)
     sheets = []
     for i, r in enumerate(solved):
         say(f"sheet {i + 2}/{total}")
         g, blocks = out[i]
         h = replace(r, graphical=g, comparisons=compare(r.analytic, g))
         sheet = build_sheet(r.scene, g, blocks, regions, lang=lang, heading=position_heading(r, lang), paper=paper,
-                            number=(i + 2, total), **_text_parts(r.scene, g, r.analytic, lang))
+                            number=(i + 2, total), text_scale=text_scale, split=layouts[i][1], **texts[i])
         sheets.append((h, sheet))
     return sheets, scales
 
