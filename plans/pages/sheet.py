@@ -207,7 +207,7 @@ def _ranked_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=N
     """The arrangements in which the drawings fit, best first (:func:`_choose_regions`)."""
     scored = []
     for boxes in _arrangements(room, list(extents), under):
-        least, score = ENOUGH, 0.0
+        least, score, ratios = ENOUGH, 0.0, []
         for kind, extent in extents.items():
             box = boxes[kind]
             if kind in given_sizes:
@@ -222,16 +222,20 @@ def _ranked_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=N
                 break
             size = 1.0 / round_up(1.0 / size)  # at the round factor it will be drawn at
             score += math.log(size)
-            for length, mm in (needs or {}).get(kind, ()):
-                if length > 0:
-                    least = min(least, size * length / mm)
+            reached = [size * length / mm for length, mm in (needs or {}).get(kind, ()) if length > 0]
+            if reached:
+                least = min(least, min(reached))
+                ratios.append(min(reached))
         if score > -math.inf:
-            scored.append(((least, score), len(scored), boxes))
+            starved = len(ratios) > 1 and max(ratios) > STARVED * min(ratios)
+            scored.append(((least, score, starved), len(scored), boxes))
     # every drawing at its least size first; of those, the ones that keep the textbook's order (scheme, velocity
-    # plan, acceleration plan: left to right, top to bottom) before any that does not; then the largest
+    # plan, acceleration plan: left to right, top to bottom) before any that does not; then the one whose smallest
+    # drawing is largest (up to ENOUGH); then one where no drawing starves another (a velocity plan 200 mm across
+    # beside an acceleration plan at its least: STARVED); then the largest
     order = [k for k in ("mechanism", "velocity", "acceleration") if k in extents]
-    return [boxes for _, _, boxes in sorted(scored, key=lambda t: (-min(t[0][0], 1.0), not in_reading_order(t[2], order),
-                                                                  -t[0][0], -t[0][1], t[1]))]
+    return [boxes for _, _, boxes in sorted(scored, key=lambda t: (-min(t[0][0], 1.0), not in_reading_order(t[2], order), -t[0][0],
+                                                                  t[0][2], -t[0][1], t[1]))]
 
 
 def in_reading_order(boxes: dict, kinds: list) -> bool:
@@ -252,6 +256,9 @@ LEAST = {"mechanism": 100.0, "vector": 60.0, "plan": 40.0}
 #: how far over its least size a drawing counts in choosing the arrangement (the round factors and what does not
 #: scale take some of it back)
 ENOUGH = 1.3
+#: an arrangement starves a drawing where another is drawn more than this many times as far over its least size
+#: (the Russian four-bar's velocity plan 200 mm, 3.3 × its least, beside an acceleration plan at 1.05 ×)
+STARVED = 2.0
 
 
 def _needs(kind: str, objs) -> list[tuple[float, float]]:
