@@ -384,10 +384,7 @@ def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "e
         doc.add_image(kind, block)
         doc.body.append(f"#place(top + left, dx: {bx:.3f}mm, dy: {by:.3f}mm, {image(kind, block.width)})")
         placed[kind] = (page.margins[0] + bx, page.margins[2] + by, block.width, block.height)
-    column = "\n".join(texts)
-    if text_scale != 1.0:  # set narrower, then enlarged: every size in the column × text_scale, its width TEXT_COLUMN
-        column = (f"#scale(x: {text_scale * 100:.1f}%, y: {text_scale * 100:.1f}%, origin: top + left, reflow: true)"
-                  f"[#block(width: {TEXT_COLUMN / text_scale:.3f}mm)[\n{column}]]")
+    column = enlarged("\n".join(texts), text_scale)
     doc.body.append(f"#pad(left: {width + GUTTER:.3f}mm)[\n" + column + "]\n")
     return Sheet(doc.source(), doc.images, dict(graphical.scales), paper, placed, graphical)
 
@@ -574,13 +571,15 @@ def _text_height(scene, g, parts: dict, lang: str, heading: str, paper: str) -> 
 
 
 def _text_heights(scene, g, parts: dict, lang: str, heading: str, paper: str, scales, split: bool = False) -> list[float]:
-    """The heights [mm] of the sheet's text column enlarged by each of *scales* (set :data:`TEXT_COLUMN` / scale wide,
-    then enlarged: the lines wrap as they will on the page), measured by Typst in one pass (*split*: :func:`_texts`)."""
+    """The heights [mm] of the sheet's text column with its text enlarged by each of *scales* (:func:`enlarged`),
+    measured by Typst in one pass (*split*: :func:`_texts`)."""
     doc = Document(scene, lang, sheet_page(paper))
     doc.plate = dict(g.scales)
     texts = _texts(doc, g, heading=heading, split=split, **parts)
-    doc.body.append("#let plans-texts = [\n" + "\n".join(texts) + "]")
-    heights = ", ".join(f"measure(block(width: {TEXT_COLUMN / f:.3f}mm, plans-texts)).height.mm() * {f}" for f in scales)
+    column = "\n".join(texts)
+    for n, f in enumerate(scales):
+        doc.body.append(f"#let plans-texts-{n} = [\n" + enlarged(column, f) + "]")
+    heights = ", ".join(f"measure(block(width: {TEXT_COLUMN}mm, plans-texts-{n})).height.mm()" for n in range(len(scales)))
     doc.body.append(f"#context [#metadata(({heights},)) <plans-text-height>]")
     return [float(h) for h in query_value(doc.source(), doc.images, "plans-text-height")]
 
@@ -594,6 +593,15 @@ def _text_layout(scene, g, parts: dict, lang: str, heading: str, paper: str, reg
         return whole, False
     halves = _text_scale(dict(zip(TEXT_SCALES, _text_heights(scene, g, parts, lang, heading, paper, TEXT_SCALES, split=True))), page, regions)
     return (halves, True) if halves > whole else (whole, False)
+
+
+def enlarged(markup: str, factor: float) -> str:
+    """Typst *markup* with every text size it sets (``size: 8.0pt``) × *factor* (the legend, a drawing, as drawn)."""
+    import re
+
+    if factor == 1.0:
+        return markup
+    return re.sub(r"size: ([0-9.]+)pt", lambda m: f"size: {float(m.group(1)) * factor:.2f}pt", markup)
 
 
 #: how much a sheet's text column may be enlarged (its tables, equations and readings set at 8–9.5 pt, at 1.25 at
