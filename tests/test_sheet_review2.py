@@ -85,3 +85,36 @@ def test_the_plan_of_positions_data_under_the_drawing_legible():
     assert dy + 10.0 >= y + h  # under the drawing (dy from the text area's top, 10 mm under the page's; placed: the page's)
     lines = data.count("\\\n") + 1
     assert 10.0 + dy + lines * size * 0.3528 * 1.3 < 297.0 - 5.0 - 27.0  # over the title block's room
+
+
+def test_the_arm_welded_to_the_sliding_driver_carries_the_rigid_joint_sign():
+    # linear-arm: arm AF is rigid with slider 2 (one body, points A and F); where the arm leaves the block a solid
+    # triangle on the block's edge, its apex on the arm (a pin would be a circle; a rigid joint is this sign)
+    import numpy as np
+
+    from plans.drawing import draw_mechanism
+
+    scene = load(example_path("linear-arm"))
+    assert set(scene.bodies[scene.driver.link].points) >= {"A", "F"}
+    g = construct(scene)
+    artists = draw_mechanism(g)
+    (weld,) = [a for a in artists if a.get_gid() == "mech-weld-2"]
+    (block,) = [a for a in artists if a.get_gid() == "mech-block-2"]
+    assert weld.get_facecolor()[:3] == (0.0, 0.0, 0.0)
+    corners = np.asarray(block.get_xy())[:4]
+    a, f = (complex(*p) for p in np.asarray([a.get_xydata() for a in artists if a.get_gid() == "mech-link-2"][0])[[0, -1]])
+    tri = [complex(*p) for p in np.asarray(weld.get_xy())[:3]]
+
+    edges = [(complex(*p), complex(*q)) for p, q in zip(corners, np.roll(corners, -1, axis=0))]
+
+    def on_block_edge(z):
+        return min(_distance_to_segment(z, p, q) for p, q in edges) < 0.1
+
+    assert sum(on_block_edge(z) for z in tri) == 2
+    apex = next(z for z in tri if not on_block_edge(z))
+    assert _distance_to_segment(apex, a, f) < 0.1  # on the arm A–F
+
+
+def _distance_to_segment(z: complex, p: complex, q: complex) -> float:
+    t = max(0.0, min(1.0, ((z - p) * (q - p).conjugate()).real / abs(q - p) ** 2))
+    return abs(z - (p + t * (q - p)))

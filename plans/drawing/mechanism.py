@@ -914,6 +914,7 @@ class MechanismDrawing:
             rect = self._rect(self.p(driver.point), u)
             corners = [complex(x, y) for x, y in list(rect.exterior.coords)[:-1]]
             self.s.polygon(corners, fc="white", lw=1.1, gid=f"block-{driver.link}", zorder=3.0)
+            self._rigid_joints(driver.link, self.p(driver.point), u, rect)
         # a sleeve of a moving link that a rod (not a block) slides through
         for pr in self.scene.prismatics:
             if pr.guide == FRAME or self.is_block(pr.guide) or self.is_block(pr.slider):
@@ -924,6 +925,23 @@ class MechanismDrawing:
             rect = self._rect(centre, u, 0.8)
             corners = [complex(x, y) for x, y in list(rect.exterior.coords)[:-1]]
             self.s.polygon(corners, fc="white", lw=1.1, gid=f"sleeve-{pr.guide}", zorder=3.0)
+
+    def _rigid_joints(self, body: str, centre: complex, u: complex, rect) -> None:
+        """The sign of a rigid joint where an arm of *body* leaves its block (*rect*, centred at *centre*, along *u*):
+        a solid triangle on the block's edge, its apex along the arm (the arm is welded to the block, not pinned)."""
+        L, H = self.block[0] / 2, self.block[1] / 2
+        for q in self.body_points(body):
+            if abs(q - centre) <= math.hypot(L, H):
+                continue  # a point inside the block (the block's own point)
+            d = unit(q - centre)
+            # where the arm leaves the block: the nearer of the block's sides it crosses
+            along, across = (d * u.conjugate()).real, (d * u.conjugate()).imag
+            t = min(L / abs(along) if abs(along) > 1e-9 else math.inf, H / abs(across) if abs(across) > 1e-9 else math.inf)
+            hit = centre + d * t
+            edge = u * 1j if abs(along) * H > abs(across) * L else u  # the side's direction
+            half = min(2.2, 0.45 * self.block[0]) * self.symbol_scale
+            apex = hit + d * 3.2 * self.symbol_scale
+            self.s.polygon([hit + edge * half, hit - edge * half, apex], fc=INK, lw=0.6, gid=f"weld-{body}", zorder=3.1)
 
     def _rect(self, centre: complex, u: complex, scale: float = 1.0):
         L, H = self.block[0] / 2 * scale, self.block[1] / 2 * scale
