@@ -118,3 +118,54 @@ def test_the_arm_welded_to_the_sliding_driver_carries_the_rigid_joint_sign():
 def _distance_to_segment(z: complex, p: complex, q: complex) -> float:
     t = max(0.0, min(1.0, ((z - p) * (q - p).conjugate()).real / abs(q - p) ** 2))
     return abs(z - (p + t * (q - p)))
+
+
+def _font_sizes(pdf: bytes, word: str) -> list[float]:
+    """The sizes [pt] at which the PDF's first page sets the pieces of text containing *word*."""
+    import io
+
+    from pypdf import PdfReader
+
+    sizes = []
+
+    def visit(text, cm, tm, font, size):
+        if word in text:
+            # the text matrix times the page's: the vertical scale of the glyphs
+            sizes.append(round(size * abs(tm[2] * cm[1] + tm[3] * cm[3]), 2))
+
+    PdfReader(io.BytesIO(pdf)).pages[0].extract_text(visitor_text=visit)
+    return sizes
+
+
+def test_the_quick_return_sheet_sets_its_text_larger_and_keeps_its_drawings(tmp_path):
+    # the Serbian quick-return sheet: its tables were set at 8 pt with the bottom right quarter empty; now the column
+    # takes that room: the comparison table's header at ≥ 9.5 pt (never under 7 anywhere in the column), and the
+    # drawings at the reviewed sheet's factors or larger (k_l 0.005 m/mm, k_v 0.012 (m/s)/mm, k_a 0.05 (m/s²)/mm)
+    import sheet_pages
+
+    from plans.cli import main
+
+    assert main(["draw", "--example", "quick-return", "--lang", "sr", "-o", str(tmp_path / "sheet.pdf"), "-q"]) == 0
+    pdf = (tmp_path / "sheet.pdf").read_bytes()
+    header = _font_sizes(pdf, "аналитички")
+    assert header and min(header) >= 9.5, header
+    notes = _font_sizes(pdf, "Кратке дужи")  # the smallest words of the column (the notes under the legend)
+    assert notes and min(notes) >= 8.0, notes
+    k = sheet_pages.scales(sheet_pages.text(pdf))
+    assert k["k_l"] <= 0.005 and k["k_v"] <= 0.012 and k["k_a"] <= 0.05, k
+
+
+def test_the_four_bar_plans_are_balanced(tmp_path):
+    # the Russian four-bar sheet drew its velocity plan 200 mm long (pa at k_v 0.004) beside an acceleration plan
+    # whose longest vector is 67 mm: neither plan's drawing is now more than 1.6 times the other's (diagonal)
+    import math
+
+    import sheet_pages
+
+    from plans.cli import main
+
+    assert main(["draw", "--example", "four-bar", "--lang", "ru", "-o", str(tmp_path / "sheet.svg"), "-q"]) == 0
+    placed = sheet_pages.by_kind((tmp_path / "sheet.svg").read_bytes())
+    v, a = (math.hypot(placed[k].width, placed[k].height) for k in ("velocity", "acceleration"))
+    assert max(v, a) <= 1.6 * min(v, a), (v, a)
+    assert min(v, a) >= 60.0  # and neither small
