@@ -686,7 +686,7 @@ class MechanismDrawing:
         """Where the frame's number goes by a guide's hatching that ends at *end* [mm] (*u*: along the guide, *out*:
         towards its hatched side): beyond the end, or just off it on the hatched side."""
         # (over the hatching first, inside the guide's length: beyond its end the number would widen the drawing)
-        spots = (end - u * 2.5 + out * (HATCH_LEN / 2 + 2.2), end - u * 5.0 + out * (HATCH_LEN / 2 + 2.2), end + u * 3.0,
+        spots = (end - u * 2.5 + out * (HATCH_LEN / 2 + 2.7), end - u * 5.0 + out * (HATCH_LEN / 2 + 2.7), end + u * 3.0,
                  end + u * 3.0 + out * 2.0)
         self.frame_marks.append((end, spots, f"guide-{name}"))
 

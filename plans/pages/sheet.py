@@ -227,7 +227,7 @@ def _ranked_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=N
                 least = min(least, min(reached))
                 ratios.append(min(reached))
         if score > -math.inf:
-            starved = len(ratios) > 1 and max(ratios) > STARVED * min(ratios)
+            starved = len(ratios) > 1 and max(ratios) > STARVED * max(min(ratios), 1.0)
             scored.append(((least, score, starved), len(scored), boxes))
     # every drawing at its least size first; of those, the ones that keep the textbook's order (scheme, velocity
     # plan, acceleration plan: left to right, top to bottom) before any that does not; then the one whose smallest
@@ -257,7 +257,8 @@ LEAST = {"mechanism": 100.0, "vector": 60.0, "plan": 40.0}
 #: scale take some of it back)
 ENOUGH = 1.3
 #: an arrangement starves a drawing where another is drawn more than this many times as far over its least size
-#: (the Russian four-bar's velocity plan 200 mm, 3.3 × its least, beside an acceleration plan at 1.05 ×)
+#: (and more than this many times its least size: the Russian four-bar's velocity plan 200 mm, 3.3 × its least,
+#: beside an acceleration plan at 1.05 ×)
 STARVED = 2.0
 
 
