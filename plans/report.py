@@ -536,7 +536,8 @@ def row_texts(graphical, analytic, step: float | None = None, given: bool = Fals
         decimals = max(0, -math.floor(math.log10(step))) if step else None
         if decimals is None:
             return _magnitude(graphical), _magnitude(analytic), NO_ERROR
-        return _to_decimals(graphical, decimals), _to_decimals(analytic, decimals), NO_ERROR
+        text = _to_decimals(analytic, decimals)  # the given value in both columns (a = 2.000, not its drawn 2.001)
+        return text, text, NO_ERROR
     if step is None and graphical == analytic:  # the same number by both (exact readings): as given, no difference
         text = _magnitude(analytic)
         return text, text, NO_ERROR if text == "0" else table_error(0.0)

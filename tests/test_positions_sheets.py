@@ -48,7 +48,8 @@ def test_the_same_scale_factors_on_every_sheet(sheets):
     run, _, _, pdfs = sheets
     stated = [scales(_text(path)) for path in pdfs]
     assert stated[0] == stated[1] and set(stated[0]) == {"k_l", "k_v", "k_a"}
-    assert set(stated[2]) == {"k_l"}  # the plan of positions: a k_l of its own (a drawing of every position), stated
+    # the plan of positions at the sheets' k_l (issue 20: one k_l per kind across the plate), stated
+    assert set(stated[2]) == {"k_l"} and stated[2]["k_l"] == stated[0]["k_l"]
 
 
 def test_the_plan_of_positions_draws_each_position_and_closed_paths(sheets):

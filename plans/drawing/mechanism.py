@@ -217,6 +217,8 @@ class MechanismDrawing:
         self.ground = GROUND * k
         self.omega_r = OMEGA_R * k
         self.epsilon_r = EPSILON_R * k
+        #: where the frame's number is written: (the hatching's end [mm], the spots beside it, a name for its gid)
+        self.frame_marks: list[tuple[complex, tuple[complex, ...], str]] = []
 
     # -- coordinates [mm on paper] -----------------------------------------
 
@@ -281,6 +283,7 @@ class MechanismDrawing:
         self.driver_arrows()
         self.point_labels()
         self.link_labels()
+        self.frame_numbers()
         self.caption()
 
     def _stack_side(self, body: str) -> float:
@@ -390,6 +393,7 @@ class MechanismDrawing:
                         self.guide_bands.append(self._band(p0, p1, n * side))
                 a, b = origin + u * lo, origin + u * hi
                 self.guideways.append(ShapelyPolygon([(z.real, z.imag) for z in (a + n * gap, b + n * gap, b - n * gap, a - n * gap)]))
+                self._frame_mark(origin + u * hi + n * (gap + HATCH_LEN / 2), u, n, name)
                 self.guides.append((origin + u * lo, origin + u * hi))
                 continue
             a = origin + u * lo
@@ -401,6 +405,7 @@ class MechanismDrawing:
                 self.s.line([p0, p1], lw=1.1, gid=f"guide-{name}", zorder=1.2)
                 self._hatch(p0, p1, n * side)
                 self.guide_bands.append(self._band(p0, p1, n * side))
+            self._frame_mark(b + n * side * HATCH_LEN / 2, u, n * side, name)
             self.guides.append((a, b))
 
     def _band(self, a: complex, b: complex, outward: complex):
@@ -450,6 +455,7 @@ class MechanismDrawing:
             b = origin + u * (centre + half) + n * side * gap
             self.s.line([a, b], lw=1.1, gid=f"guide-{name}", zorder=2.2)
             self._hatch(a, b, n * side) if side > 0 else self._hatch(b, a, n * side)
+        self._frame_mark(origin + u * (centre + half) + n * (gap + HATCH_LEN / 2), u, n, name)
         self.guides.append((origin + u * (centre - half), origin + u * (centre + half)))
 
     def _over_cycle(self, measure) -> list:
@@ -719,6 +725,24 @@ class MechanismDrawing:
             a, b = base + n * (half + 2.0), base - n * (half + 2.0)
             self.s.line([a, b], lw=1.0, gid="ground-base", zorder=2.5)
             self._hatch(b, a, d)
+            # the frame's number by the hatching, at either end of the base (the textbook's small "1")
+            spots = tuple(base + e * (half + 2.0 + 2.2) + d * (HATCH_LEN * 0.5 + f) for f in (0.0, 1.5) for e in (n, -n))
+            self.frame_marks.append((base + d * HATCH_LEN * 0.5, spots, name))
+
+    def _frame_mark(self, end: complex, u: complex, out: complex, name: str) -> None:
+        """Where the frame's number goes by a guide's hatching that ends at *end* [mm] (*u*: along the guide, *out*:
+        towards its hatched side): beyond the end, or just off it on the hatched side."""
+        # (over the hatching first, inside the guide's length: beyond its end the number would widen the drawing)
+        spots = (end - u * 2.5 + out * (HATCH_LEN / 2 + 2.7), end - u * 5.0 + out * (HATCH_LEN / 2 + 2.7), end + u * 3.0,
+                 end + u * 3.0 + out * 2.0)
+        self.frame_marks.append((end, spots, f"guide-{name}"))
+
+    def frame_numbers(self) -> None:
+        """The frame's number (the scene's: 1 when the crank is 2, 0 when it is 1) written small by the hatching of
+        every support and frame guide, as the textbook numbers the frame on a scheme (the equations name it: v_EE1)."""
+        number = self.scene.frame_number
+        for end, spots, name in self.frame_marks:
+            self._label(end, number, gid=f"frame-number-{name}", size=SMALL_PT + 0.5, first=spots, gaps=(2.5, 3.5, 5.0))
 
     def _support_footprint(self, q: complex, d: complex, height: float):
         """The area a support of *height* turned along *d* covers (triangle, base, hatching), less the pin."""
@@ -937,6 +961,7 @@ class MechanismDrawing:
             rect = self._rect(self.p(driver.point), u)
             corners = [complex(x, y) for x, y in list(rect.exterior.coords)[:-1]]
             self.s.polygon(corners, fc="white", lw=1.1, gid=f"block-{driver.link}", zorder=3.0)
+            self._rigid_joints(driver.link, self.p(driver.point), u, rect)
         # a sleeve of a moving link that a rod (not a block) slides through
         for pr in self.scene.prismatics:
             if pr.guide == FRAME or self.is_block(pr.guide) or self.is_block(pr.slider):
@@ -947,6 +972,23 @@ class MechanismDrawing:
             rect = self._rect(centre, u, 0.8)
             corners = [complex(x, y) for x, y in list(rect.exterior.coords)[:-1]]
             self.s.polygon(corners, fc="white", lw=1.1, gid=f"sleeve-{pr.guide}", zorder=3.0)
+
+    def _rigid_joints(self, body: str, centre: complex, u: complex, rect) -> None:
+        """The sign of a rigid joint where an arm of *body* leaves its block (*rect*, centred at *centre*, along *u*):
+        a solid triangle on the block's edge, its apex along the arm (the arm is welded to the block, not pinned)."""
+        L, H = self.block[0] / 2, self.block[1] / 2
+        for q in self.body_points(body):
+            if abs(q - centre) <= math.hypot(L, H):
+                continue  # a point inside the block (the block's own point)
+            d = unit(q - centre)
+            # where the arm leaves the block: the nearer of the block's sides it crosses
+            along, across = (d * u.conjugate()).real, (d * u.conjugate()).imag
+            t = min(L / abs(along) if abs(along) > 1e-9 else math.inf, H / abs(across) if abs(across) > 1e-9 else math.inf)
+            hit = centre + d * t
+            edge = u * 1j if abs(along) * H > abs(across) * L else u  # the side's direction
+            half = min(2.2, 0.45 * self.block[0]) * self.symbol_scale
+            apex = hit + d * 3.2 * self.symbol_scale
+            self.s.polygon([hit + edge * half, hit - edge * half, apex], fc=INK, lw=0.6, gid=f"weld-{body}", zorder=3.1)
 
     def _rect(self, centre: complex, u: complex, scale: float = 1.0):
         L, H = self.block[0] / 2 * scale, self.block[1] / 2 * scale

@@ -83,6 +83,8 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
         length = v.value / k if v is not None else 0.0
         measured = segment(plan, v, letters) if v is not None else "—"
         value = (v.value if v is not None else 0.0) / (divide or 1.0)
+        if v is not None and v.label in given:  # a given vector (the driver's point): its given value, not its drawn length read
+            value = v.length * k
         # to the digits one drafting step of the segment justifies, as the results table prints the same reading
         # (plans.report.reading_step): one number for one quantity on a page
         step = precision * k / (divide or 1.0) if precision else None
@@ -105,6 +107,8 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
     from ._canvas import fmt_number as fmt
 
     symbol = "v" if kind == "velocity" else "a"
+    driver = graphical.scene.driver.link
+    given = {f"{symbol}_{name}" for name in graphical.scene.bodies[driver].points} if driver in graphical.scene.bodies else set()
     # a vector drawn once under several names is one row naming it each way: "v_A4 = v_A4C"
     also = aliases(plan)
     listed: set[str] = set()  # every name a row gives

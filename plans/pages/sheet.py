@@ -207,7 +207,7 @@ def _ranked_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=N
     """The arrangements in which the drawings fit, best first (:func:`_choose_regions`)."""
     scored = []
     for boxes in _arrangements(room, list(extents), under):
-        least, score = ENOUGH, 0.0
+        least, score, ratios = ENOUGH, 0.0, []
         for kind, extent in extents.items():
             box = boxes[kind]
             if kind in given_sizes:
@@ -222,16 +222,20 @@ def _ranked_regions(room, extents: dict, fixed: dict, given_sizes: dict, under=N
                 break
             size = 1.0 / round_up(1.0 / size)  # at the round factor it will be drawn at
             score += math.log(size)
-            for length, mm in (needs or {}).get(kind, ()):
-                if length > 0:
-                    least = min(least, size * length / mm)
+            reached = [size * length / mm for length, mm in (needs or {}).get(kind, ()) if length > 0]
+            if reached:
+                least = min(least, min(reached))
+                ratios.append(min(reached))
         if score > -math.inf:
-            scored.append(((least, score), len(scored), boxes))
+            starved = len(ratios) > 1 and max(ratios) > STARVED * max(min(ratios), 1.0)
+            scored.append(((least, score, starved), len(scored), boxes))
     # every drawing at its least size first; of those, the ones that keep the textbook's order (scheme, velocity
-    # plan, acceleration plan: left to right, top to bottom) before any that does not; then the largest
+    # plan, acceleration plan: left to right, top to bottom) before any that does not; then the one whose smallest
+    # drawing is largest (up to ENOUGH); then one where no drawing starves another (a velocity plan 200 mm across
+    # beside an acceleration plan at its least: STARVED); then the largest
     order = [k for k in ("mechanism", "velocity", "acceleration") if k in extents]
-    return [boxes for _, _, boxes in sorted(scored, key=lambda t: (-min(t[0][0], 1.0), not in_reading_order(t[2], order),
-                                                                  -t[0][0], -t[0][1], t[1]))]
+    return [boxes for _, _, boxes in sorted(scored, key=lambda t: (-min(t[0][0], 1.0), not in_reading_order(t[2], order), -t[0][0],
+                                                                  t[0][2], -t[0][1], t[1]))]
 
 
 def in_reading_order(boxes: dict, kinds: list) -> bool:
@@ -252,6 +256,10 @@ LEAST = {"mechanism": 100.0, "vector": 60.0, "plan": 40.0}
 #: how far over its least size a drawing counts in choosing the arrangement (the round factors and what does not
 #: scale take some of it back)
 ENOUGH = 1.3
+#: an arrangement starves a drawing where another is drawn more than this many times as far over its least size
+#: (and more than this many times its least size: the Russian four-bar's velocity plan 200 mm, 3.3 × its least,
+#: beside an acceleration plan at 1.05 ×)
+STARVED = 2.0
 
 
 def _needs(kind: str, objs) -> list[tuple[float, float]]:
@@ -276,8 +284,9 @@ def _readings(doc: Document, graphical, lang: str) -> list:
     return out
 
 
-def _texts(doc: Document, graphical, *, table, formula, assembly, legend, heading) -> list[str]:
-    """The text column's markup (collected from the document's own sections)."""
+def _texts(doc: Document, graphical, *, table, formula, assembly, legend, heading, split: bool = False) -> list[str]:
+    """The text column's markup (collected from the document's own sections); *split*: the comparison table in two
+    halves side by side (a long one: :data:`SPLIT_ROWS`), the legend under them."""
     lang = doc.lang
     name = namer(doc.scene, lang, "parallel")  # (the equations' guide names follow ∥)
     body, doc.body = doc.body, []
@@ -302,16 +311,33 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
                             + ", ".join(readings) + ")]\n")
         results = doc.table_markup(term("comparison", lang), table) if table and len(table) > 1 else "[]"
         # under the plans' legend, what the notes under a plan are (short segments, near-coincident directions)
-        legend_cell = (f"align(right)[#{doc.add_image('legend', legend)}]" + f" + block(width: 100%)[#text(size: {SMALL_PT - 0.5}pt)["
-                       f"{doc.words(term('plan_notes_legend', lang))}]]") if legend is not None else "[]"
+        # (the legend as drawn, or narrower where the column is narrow: it never runs over the table beside it)
+        legend_image = f"align(right)[#layout(room => " + doc.add_image('legend', legend).replace(
+            f"width: {legend.width:.3f}mm", f"width: calc.min(room.width, {legend.width:.3f}mm)") + ")]" if legend is not None else ""
+        notes = (f"block(width: 100%)[#text(size: {SMALL_PT - 0.5}pt)[{doc.words(term('plan_notes_legend', lang))}]]"
+                 if legend is not None else "")
         # the proportions of the images placed by similarity, beside the table under the legend
         similar = similarity_markup(doc, [("", graphical)])
-        if similar:
-            legend_cell += f" + block(above: 3mm)[{similar}]"
-        doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {results}, {legend_cell})]\n")
+        if split and table and len(table) > SPLIT_ROWS:
+            # a long table in two halves side by side (the second under the same header, its heading line left blank),
+            # the legend under them, its notes and the proportions beside it
+            cut = (len(table) + 1) // 2
+            halves = (doc.table_markup(term("comparison", lang), table[:cut]), doc.table_markup("", [table[0]] + table[cut:]))
+            doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, auto), column-gutter: {2 * GUTTER}mm, align: top + left, "
+                            f"{halves[0]}, {halves[1]})]\n")
+            right = " + ".join(x for x in (notes, f"block(above: 3mm)[{similar}]" if similar else "") if x) or "[]"
+            doc.body.append(f"#text(size: {SMALL_PT}pt)[#block(above: 4mm)[#grid(columns: (auto, 1fr), column-gutter: {2 * GUTTER}mm, "
+                            f"align: top + left, {legend_image or '[]'}, {right})]]\n")
+        else:
+            legend_cell = " + ".join(x for x in (legend_image, notes, f"block(above: 3mm)[{similar}]" if similar else "") if x) or "[]"
+            doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (auto, 1fr), column-gutter: {GUTTER}mm, align: top + left, {results}, {legend_cell})]\n")
         return doc.body
     finally:
         doc.body = body
+
+
+#: a comparison table longer than this (rows, with its header) is set in two halves side by side
+SPLIT_ROWS = 16
 
 
 def similarity_markup(doc: Document, solutions) -> str:
@@ -328,20 +354,22 @@ def similarity_markup(doc: Document, solutions) -> str:
 
 
 def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "en", table=None, formula: str = "",
-                assembly=(), legend=None, heading: str = "", paper: str = "A3", number: tuple[int, int] | None = None) -> Sheet:
+                assembly=(), legend=None, heading: str = "", paper: str = "A3", number: tuple[int, int] | None = None,
+                text_scale: float = 1.0, split: bool = False) -> Sheet:
     """The sheet of *graphical* (drawn already: *blocks* kind -> SvgBlock at its factor) with its drawings at the top left
     in *regions* (kind -> (x, y, w, h) [mm] in the drawings' room), the text column beside them.
 
     *table*: the results table (rows of text, the header first, in *lang*); *formula*: the structural formula;
     *assembly*: the groups' assembly in words; *legend*: the plans' legend (an SvgBlock); *heading*: a line over
-    the text (a position's sheet: the position); *number*: (n, m) of a set of sheets (else 1 of 1).
+    the text (a position's sheet: the position); *number*: (n, m) of a set of sheets (else 1 of 1); *text_scale*: the
+    text column's enlargement (:func:`_text_scale`); *split*: the comparison table in two halves (:func:`_texts`).
     """
     page = sheet_page(paper)
     doc = Document(scene, lang, page)
     doc.plate = dict(graphical.scales)
     doc.sheet_number = number
     width, _ = _drawing_room(page)
-    texts = _texts(doc, graphical, table=table, formula=formula, assembly=assembly, legend=legend, heading=heading)
+    texts = _texts(doc, graphical, table=table, formula=formula, assembly=assembly, legend=legend, heading=heading, split=split)
     placed = {}
     names = {"mechanism": term("mechanism", lang), "velocity": term("velocity_plan", lang), "acceleration": term("acceleration_plan", lang)}
     for kind, block in blocks.items():
@@ -357,7 +385,8 @@ def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "e
         doc.add_image(kind, block)
         doc.body.append(f"#place(top + left, dx: {bx:.3f}mm, dy: {by:.3f}mm, {image(kind, block.width)})")
         placed[kind] = (page.margins[0] + bx, page.margins[2] + by, block.width, block.height)
-    doc.body.append(f"#pad(left: {width + GUTTER:.3f}mm)[\n" + "\n".join(texts) + "]\n")
+    column = enlarged("\n".join(texts), text_scale)
+    doc.body.append(f"#pad(left: {width + GUTTER:.3f}mm)[\n" + column + "]\n")
     return Sheet(doc.source(), doc.images, dict(graphical.scales), paper, placed, graphical)
 
 
@@ -538,13 +567,57 @@ def _text_parts(scene, g, analytic, lang: str) -> dict:
 
 
 def _text_height(scene, g, parts: dict, lang: str, heading: str, paper: str) -> float:
-    """The height [mm] of the sheet's text column (measured by Typst before the page is laid out)."""
+    """The height [mm] of the sheet's text column (measured by Typst before the page is laid out) at its set size."""
+    return _text_heights(scene, g, parts, lang, heading, paper, (1.0,))[0]
+
+
+def _text_heights(scene, g, parts: dict, lang: str, heading: str, paper: str, scales, split: bool = False) -> list[float]:
+    """The heights [mm] of the sheet's text column with its text enlarged by each of *scales* (:func:`enlarged`),
+    measured by Typst in one pass (*split*: :func:`_texts`)."""
     doc = Document(scene, lang, sheet_page(paper))
     doc.plate = dict(g.scales)
-    texts = _texts(doc, g, heading=heading, **parts)
-    doc.body.append("#let plans-texts = [\n" + "\n".join(texts) + "]")
-    doc.body.append(f"#context [#metadata(measure(block(width: {TEXT_COLUMN}mm, plans-texts)).height.mm()) <plans-text-height>]")
-    return float(query_value(doc.source(), doc.images, "plans-text-height"))
+    texts = _texts(doc, g, heading=heading, split=split, **parts)
+    column = "\n".join(texts)
+    for n, f in enumerate(scales):
+        doc.body.append(f"#let plans-texts-{n} = [\n" + enlarged(column, f) + "]")
+    heights = ", ".join(f"measure(block(width: {TEXT_COLUMN}mm, plans-texts-{n})).height.mm()" for n in range(len(scales)))
+    doc.body.append(f"#context [#metadata(({heights},)) <plans-text-height>]")
+    return [float(h) for h in query_value(doc.source(), doc.images, "plans-text-height")]
+
+
+def _text_layout(scene, g, parts: dict, lang: str, heading: str, paper: str, regions: dict) -> tuple[float, bool]:
+    """(enlargement, split) of the text column: the largest enlargement that fits (:func:`_text_scale`), the comparison
+    table whole where that is as large as in two halves."""
+    page = sheet_page(paper)
+    whole = _text_scale(dict(zip(TEXT_SCALES, _text_heights(scene, g, parts, lang, heading, paper, TEXT_SCALES))), page, regions)
+    if not parts.get("table") or len(parts["table"]) <= SPLIT_ROWS or whole == TEXT_SCALES[0]:
+        return whole, False
+    halves = _text_scale(dict(zip(TEXT_SCALES, _text_heights(scene, g, parts, lang, heading, paper, TEXT_SCALES, split=True))), page, regions)
+    return (halves, True) if halves > whole else (whole, False)
+
+
+def enlarged(markup: str, factor: float) -> str:
+    """Typst *markup* with every text size it sets (``size: 8.0pt``) × *factor* (the legend, a drawing, as drawn)."""
+    import re
+
+    if factor == 1.0:
+        return markup
+    return re.sub(r"size: ([0-9.]+)pt", lambda m: f"size: {float(m.group(1)) * factor:.2f}pt", markup)
+
+
+#: how much a sheet's text column may be enlarged (its tables, equations and readings set at 8–9.5 pt, at 1.25 at
+#: 10–12 pt), the largest first: the largest that still fits over the drawings placed under it and the title block
+TEXT_SCALES = (1.25, 1.2, 1.15, 1.1, 1.05)
+
+
+def _text_scale(heights, page: PageGeometry, regions: dict) -> float:
+    """The enlargement of the text column (one of :data:`TEXT_SCALES`, else 1) whose height (*heights*: scale ->
+    height [mm]) fits the room the drawings leave it: down to the first drawing placed under it (*regions*: kind ->
+    (x, y, w, h) [mm] in the text area), else to the title block; the drawings keep their regions and factors."""
+    width, _ = _drawing_room(page)
+    tops = [y for x, y, w, h in regions.values() if x >= width]
+    limit = min(tops, default=page.text_height + GUTTER + 3.0) - GUTTER - 3.0
+    return next((f for f in TEXT_SCALES if heights[f] <= limit), 1.0)
 
 
 def _under(page: PageGeometry, text_height: float):
@@ -584,8 +657,10 @@ def fitted_sheet(scene, graphical, analytic, construct_at, *, lang: str = "en", 
             continue
         scales, regions, out = found
         g, blocks = out[0]
+        text = _text_parts(scene, g, analytic, lang)
+        text_scale, split = _text_layout(scene, g, text, lang, heading, paper, regions)
         sheet = build_sheet(scene, g, blocks, regions, lang=lang, heading=heading, paper=paper, number=number,
-                            **_text_parts(scene, g, analytic, lang))
+                            text_scale=text_scale, split=split, **text)
         if last or _fits_one_page(sheet):
             return sheet
     from ..errors import PlansError
@@ -662,13 +737,17 @@ def position_sheets(run, *, lang: str = "en", given: dict | None = None, progres
     else:
         raise PlansError("the drawings at the factors given are larger than A0: give larger scale factors (--k-l, --k-v, --k-a)")
     scales, regions, out = found
+    texts = [_text_parts(r.scene, out[i][0], r.analytic, lang) for i, r in enumerate(solved)]
+    # one size of text over the set: the enlargement every sheet's column takes (each sheet's table whole or halved)
+    layouts = [_text_layout(r.scene, out[i][0], t, lang, position_heading(r, lang), paper, regions) for i, (r, t) in enumerate(zip(solved, texts))]
+    text_scale = min(f for f, _ in layouts)
     sheets = []
     for i, r in enumerate(solved):
         say(f"sheet {i + 2}/{total}")
         g, blocks = out[i]
         h = replace(r, graphical=g, comparisons=compare(r.analytic, g))
         sheet = build_sheet(r.scene, g, blocks, regions, lang=lang, heading=position_heading(r, lang), paper=paper,
-                            number=(i + 2, total), **_text_parts(r.scene, g, r.analytic, lang))
+                            number=(i + 2, total), text_scale=text_scale, split=layouts[i][1], **texts[i])
         sheets.append((h, sheet))
     return sheets, scales
 
@@ -693,16 +772,20 @@ def _capitalised(line: str) -> str:
     return line[:1].upper() + line[1:] if re.match(r"[^\W\d_]{2}", line) else line
 
 
-#: the height [mm] of a line of the plan of positions' data (at TEXT_PT)
-DATA_LINE = 4.4
+#: the size [pt] of the plan of positions' data (the driver's law, the stroke, θ, K, the working stroke)
+DATA_PT = TEXT_PT + 1.0
+#: the height [mm] of a line of the plan of positions' data (at DATA_PT)
+DATA_LINE = 5.2
+#: the room [mm] between the plan of positions and its data under it
+DATA_GAP = 6.0
 
 
 def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: tuple[int, int] | None = None) -> Sheet:
-    """The plan of positions of *run* on a sheet of its own (sheet 1 of a set, the textbook's order), drawn at a
-    k_l of its own: the round factor with which it fills the page (a drawing of every position is another
-    drawing than a position's mechanism; its k_l is stated under its name and in the title block).  A *k_l*
-    given is kept (a coarser round one when it runs over the page).  The cycle's data (the driver's law, the
-    Grashof class, the stroke, θ and K) under the drawing, beside the title block."""
+    """The plan of positions of *run* on a sheet of its own (sheet 1 of a set, the textbook's order), drawn at *k_l*
+    (a set of sheets': the positions' sheets' k_l, one k_l across the plate; a coarser round one only when it runs
+    over the page), or without one at the round factor with which it fills the page; its k_l is stated under its
+    name and in the title block.  The cycle's data (the driver's law, the Grashof class, the stroke, θ and K, the
+    working stroke) under the drawing, left-aligned with it, at :data:`DATA_PT`."""
     import numpy as np
 
     from ..drawing.svgblocks import positions_svg
@@ -711,8 +794,8 @@ def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: t
     page = sheet_page("A3")
     doc = Document(run.scene, lang, page)
     lines = [_capitalised(line) for line in cycle_lines(run, lang)]
-    # the data lines under the drawing: beside the title block, and over it as far as they need
-    under = max(len(lines) * DATA_LINE - (TITLE_BLOCK_ROOM - 2.0), 0.0)
+    # the data lines under the drawing, over the title block
+    under = len(lines) * DATA_LINE + DATA_GAP if lines else 0.0
     room = (page.text_width, page.text_height - CAPTION - 2.0 - under)
     extremes = run.other_extreme()
     zs = [complex(z) for r in run.runs if r.ok for z in r.graphical.positions.values()]
@@ -732,12 +815,13 @@ def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: t
     doc.sheet_number = number
     doc.body.append(f"#align(center)[#text(size: {TEXT_PT + 1.5}pt, weight: \"bold\")[{doc.words(term('positions_plan', lang))}] \\\n"
                     f"{doc.scale_markup('k_l', k_l)}]\n")
-    if lines:
-        text = " \\\n".join(doc.words(formula_words(line)) for line in lines)
-        doc.body.append(f"#place(bottom + left, dx: 0mm, dy: {TITLE_BLOCK_ROOM - 2.0:.1f}mm, block(width: {page.text_width - 195.0:.1f}mm)"
-                        f"[#text(size: {TEXT_PT}pt)[{text}]])\n")
     y = CAPTION + 2.0 + max(room[1] - block.height, 0.0) / 2  # the drawing in the middle of its room
     x = (page.text_width - block.width) / 2
+    if lines:  # under the drawing, from its left edge (the page's left for a drawing as wide as the page)
+        text = " \\\n".join(doc.words(formula_words(line)) for line in lines)
+        left = min(max(x, 0.0), page.text_width / 2)
+        doc.body.append(f"#place(top + left, dx: {left:.3f}mm, dy: {y + block.height + DATA_GAP:.3f}mm, block(width: {page.text_width - left:.1f}mm)"
+                        f"[#text(size: {DATA_PT}pt)[{text}]])\n")
     doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {y:.3f}mm, {image('positions', block.width)})")
     doc.add_image("positions", block)
     return Sheet(doc.source(), doc.images, {"k_l": k_l}, "A3", {"positions": (page.margins[0] + x, page.margins[2] + y, block.width, block.height)})
@@ -798,7 +882,8 @@ def write_position_sheets(run, directory, *, lang: str = "en", format: str = "sv
         contents[directory / f"sheet-{r.index:0{width}d}.{format}"] = sheet.render(format)
     files = len(sheets) + 1
     say(f"sheet 1/{files}")
-    contents[directory / f"positions.{format}"] = positions_page(run, (given or {}).get("k_l"), lang=lang, number=(1, files)).render(format)
+    # the plan of positions at the sheets' k_l: one k_l across the plate (the schemes can be laid over it)
+    contents[directory / f"positions.{format}"] = positions_page(run, scales.get("k_l"), lang=lang, number=(1, files)).render(format)
     if format != "svg":
         return replace_all(contents)
     return replace_all(contents, stale=(directory, r"sheet-\d+\.svg", "positions.svg"))
