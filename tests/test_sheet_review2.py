@@ -28,7 +28,7 @@ def test_the_drivers_given_acceleration_prints_as_given():
     v_A = next(v for k, v in rows.items() if k.startswith("$v_{A}$"))
     # (to the reading's decimals, as the readings table and every comparison table print a given value)
     assert a_A == ["2.000 ∠ 0.0°", "2.000 ∠ 0.0°"], a_A
-    assert v_A == ["0.500 ∠ 0.0°", "0.500 ∠ 0.0°"], v_A
+    assert v_A == ["0.5000 ∠ 0.0°", "0.5000 ∠ 0.0°"], v_A  # k_v 0.008: a 0.1 mm reading is 0.0008 m/s
     # the readings of the acceleration plan: the drawn segment (2 / 0.03 = 66.7 mm) and the given value, not 2.001
     readings = plan_readings(g, "acceleration")
     row = next(r for r in readings[1:] if r[0].startswith("$a_{A}"))
