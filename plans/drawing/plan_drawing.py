@@ -98,6 +98,9 @@ BEHIND_MM = 3.0
 #: overlap and its figure cannot be read (six-bar a b c), so it is drawn again,
 #: enlarged, in a detail beside the plan.
 CROWD_MM = 8.0
+#: A link whose images span up to twice :data:`CROWD_MM` crowds too when two of them are closer than this [mm]
+#: (six-bar a b c at the handout's k_v: 10 mm across, b 2.5 mm from c: their heads pile on each other).
+CLOSE_MM = 4.0
 #: The detail enlarges the crowd to about this span [mm]...
 DETAIL_SPAN_MM = 28.0
 #: ...and its two closest images to at least this distance [mm] (two full heads apart)...
@@ -347,20 +350,28 @@ def pole_text(plan) -> str:
 
 
 def at_rest_texts(plan) -> dict[str, str]:
-    """Image label -> its label when the plan's vectors name the point at rest differently: a point of the frame only
-    (of no moving link's figure) whose image is at the pole, named by a vector from the pole with a link's number (six-bar: the sleeve 6 pivoted at the
-    frame point E, ``v_E5E6``, whose equations read v_E6 = 0: the image e at the pole is lettered ``e₆``, ``e₆′``)."""
+    """Image label -> its label when the plan's vectors name the point differently, with a link's number, as the
+    equations name it:
+
+    * a point of the frame only (of no moving link's figure) whose image is at the pole, named by a vector from the
+      pole (six-bar: the sleeve 6 pivoted at the frame point E, ``v_E5E6``, whose equations read v_E6 = 0: the image
+      e at the pole is lettered ``e₆``, ``e₆′``);
+    * the joint of a sliding block, whose image the relative velocity of the coincident point starts from
+      (quick-return: the crank pin A of links 2 and 3, ``v_A4 = v_A3 + v_A4A3``: its image is lettered ``a₃`` beside
+      ``a₄``; linear-arm ``f₃`` beside ``f₄``)."""
     points = getattr(plan, "points", None) or {}
     on_links = {n for names in getattr(plan, "links", {}).values() for n in names}
     out = {}
     for name, z in plan.images.items():
-        if abs(z) > SAME_MM or name not in points or points[name][1] or name in on_links:
-            continue  # (a point of a moving link at rest for the instant keeps its letter: linear-arm's f′)
+        if name not in points or points[name][1]:
+            continue
         point = points[name][0]
         written = {"".join(points[n]) for n in plan.images if n in points}
+        if not any(points[n][0] == point and points[n][1] for n in plan.images if n in points) and (abs(z) > SAME_MM or name in on_links):
+            continue  # no coincident point of another link, nor a frame point at the pole: the letter as it is
         for v in plan.vectors:
             m = re.search(rf"(?<![A-Za-z]){re.escape(point)}([0-9]+)$", v.label.partition("_")[2])
-            if abs(v.tail) <= SAME_MM and v.kind != "absolute" and m and point + m.group(1) not in written:
+            if abs(v.tail - z) <= SAME_MM and v.kind != "absolute" and m and point + m.group(1) not in written:
                 out[name] = point.lower() + m.group(1).translate(SUBSCRIPT) + name[len(name.rstrip("′")):]
                 break
     return out
@@ -385,8 +396,11 @@ def aliases(plan) -> dict[str, list[str]]:
 
 
 #: Two vectors from the pole closer than this in direction [degrees], the shorter's tip within
-#: :data:`BESIDE_MM` of the longer's shaft, lie one on the other: a note under the plan gives both directions.
+#: :data:`ALONG_OFF_MM` of the longer's shaft, lie one on the other: a note under the plan gives both directions.
 ALONG_DEG = 3.0
+#: ...and the shorter's tip closer than this [mm] to the longer's shaft: its head (1.2 mm wide) stands on that shaft or
+#: all but touches it (four-bar p m, 0.44° off p a and 158 mm long on the A3 sheet: 1.22 mm off).
+ALONG_OFF_MM = 2.0
 #: ...but more than this apart [degrees]: images on one line through the pole (quick-return a₄ on p d, the
 #: similarity of link 4's images) lie exactly along, as the construction makes them, and need no note.
 ALONG_MIN_DEG = 0.05
@@ -406,7 +420,7 @@ def alongside(plan) -> list[tuple]:
                 continue
             turn = abs(math.degrees(cmath.phase(complex(v.tip) / complex(w.tip))))
             off = (complex(v.tip) * unit(complex(w.tip)).conjugate()).imag
-            if ALONG_MIN_DEG < turn < ALONG_DEG and abs(off) < BESIDE_MM:
+            if ALONG_MIN_DEG < turn < ALONG_DEG and abs(off) < ALONG_OFF_MM:
                 out.append((v, w))
                 break
     return out
@@ -607,7 +621,8 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
 def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[str]]]:
     """What crowds on the plan, each as (its points, the images of its link figure):
 
-    * the images of a link, 3 or more distinct within :data:`CROWD_MM` (six-bar a b c);
+    * the images of a link, 3 or more distinct within :data:`CROWD_MM`, or within twice that with two of them
+      closer than :data:`CLOSE_MM` (six-bar a b c);
     * a chain of vectors too short for an arrow (under :data:`SHORT_MM`) but long enough to
       read at the largest ratio, joining 3 or more distinct points within :data:`CROWD_MM`
       (quick-return pos 2: a′ →k Coriolis 1.38 mm, k →a₄′ aʳ 1.26 mm), whose heads the plan cannot show.
@@ -622,7 +637,9 @@ def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[st
         pts = [images[n] for n in names]
         if len(pts) >= 3:
             span = max(abs(q - r) for q in pts for r in pts)
-            if 0.5 < span < CROWD_MM and not any(set(names) <= set(c) for _, c in out):
+            closest = min(abs(q - r) for i, q in enumerate(pts) for r in pts[:i])
+            crowded = span < CROWD_MM or (closest < CLOSE_MM and span < 2 * CROWD_MM)
+            if 0.5 < span and crowded and not any(set(names) <= set(c) for _, c in out):
                 out.append((pts, names))
     # chains of short vectors: their ends joined into clusters, in plan order
     readable = DETAIL_APART_MM / DETAIL_RATIOS[-1]
