@@ -555,11 +555,16 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             u = unit(complex(w.tip) - complex(w.tail))
             foot = complex(w.tail) + u * ((tip - complex(w.tail)) * u.conjugate()).real
             ring = _ring([tip, foot])
-            if all(abs(tip - c) > r for (c, r, _), _ in rings) and (at := _spot(sketch, ring, within=True)) is not None:
-                _draw_ring(sketch, ring)  # (only where the plan has room for it: the page's plan keeps its scale)
+            if any(abs(tip - c) <= r for (c, r, _), _ in rings):
+                continue  # within a crowd's detail
+            if (at := _spot(sketch, ring, within=True)) is not None:
+                _draw_ring(sketch, ring)
                 name = next_name()
                 for label in _detail(sketch, plan, vectors, images, ends, ring, [], name, at):
                     in_detail.setdefault(label, name)
+            else:  # no room within the plan: under it, after the labels (linear-arm π k′ on π g′, 0.1 mm apart on the A3 sheet)
+                _draw_ring(sketch, ring)
+                rings.append((ring, None))
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     # every dot of the plan: a label stands nearer its own point than any other (it reads as that point's)
     where = {"pole-label": 0j} | {f"image-{name}": z for name, z in images.items()} | {f"end-{label}": z for z, _, label in ends}
@@ -606,7 +611,12 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
 
     for ring, names in rings:
         name = next_name()
-        for label in _detail(sketch, plan, vectors, images, ends, ring, names, name):
+        at = None
+        if names is None:  # under the plan, below its lowest mark, as near the ring as the plan's width allows
+            b = sketch.bounds
+            big = ring[1] * ring[2]
+            at = complex(min(max(ring[0].real, b.xmin + big), max(b.xmax - big, b.xmin + big)), b.ymin - 7.0 - big)
+        for label in _detail(sketch, plan, vectors, images, ends, ring, names or [], name, at):
             in_detail.setdefault(label, name)
 
     if whole:
