@@ -37,6 +37,8 @@ LABEL_SPACE_MM = 0.9
 OVERLAP_MM = 12.0
 #: How far [mm] a label may be moved off its point, with a leader line, when nothing nearer is free.
 FARTHEST_MM = 30.0
+#: A label across a line moves at most this far [mm] off its point (with a leader) to a clear place.
+FREE_GAP_MM = 8.0
 _SEPARATOR = ", "
 
 
@@ -58,7 +60,7 @@ def _to_box(z: complex, center: complex, w: float, h: float) -> float:
 
 
 #: A leader line stops this far [mm] short of its label's box...
-LEADER_GAP_MM = 0.8
+LEADER_GAP_MM = 0.6
 #: ...and meets it on a side, this fraction of the side in from the corners, where a prime or a subscript
 #: stands ("e₅′": a leader to the corner ran into the prime and read as its stroke).
 LEADER_INSET = 0.3
@@ -178,7 +180,8 @@ def place_label(
     rings = ([[(c, 0.0, 0.0) for c in first]] if first else []) + [ring_at(g) for g in gaps]
     extra = gaps[-1] if gaps else 1.0
     best = None  # (score, centre, gap, clearance (0 when astray), clearance)
-    free = None  # the nearest place clear of every mark, its own point's or joined to it by a leader: (cost, centre, gap)
+    bounds = sketch.bounds
+    free = None  # the nearest place, within the drawing as drawn so far (its scale kept), clear of every mark, its own point's or joined to it by a leader: (cost, centre, gap)
     order = 0
     while rings:
         ring = rings.pop(0)
@@ -220,7 +223,9 @@ def place_label(
                 mine = _to_segment(center, own) if own is not None else abs(center - anchor)
                 astray = any(abs(center - q) < mine for q in rivals) or any(_to_segment(center, seg) < mine for seg in rival_segments)
             led = leader_from is not None and gap >= leader_from
-            if c >= CLEAR_MM / 2 and (led or not astray) and (free is None or gap + 0.15 * turn < free[0]):
+            inside = bounds.empty or (bounds.xmin - 1.0 <= center.real - w / 2 and center.real + w / 2 <= bounds.xmax + 1.0
+                                      and bounds.ymin - 1.0 <= center.imag - h / 2 and center.imag + h / 2 <= bounds.ymax + 1.0)
+            if c >= CLEAR_MM / 2 and inside and gap <= FREE_GAP_MM and (led or not astray) and (free is None or gap + 0.15 * turn < free[0]):
                 free = (gap + 0.15 * turn, center, gap)
             if astray and leader_ok and led:
                 astray = False

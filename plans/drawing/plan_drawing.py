@@ -99,8 +99,9 @@ BEHIND_MM = 3.0
 #: enlarged, in a detail beside the plan.
 CROWD_MM = 8.0
 #: A link whose images span up to twice :data:`CROWD_MM` crowds too when two of them are closer than this [mm]
-#: (six-bar a b c at the handout's k_v: 10 mm across, b 2.5 mm from c: their heads pile on each other).
-CLOSE_MM = 4.0
+#: (six-bar a b c at the handout's k_v: 10 mm across, b 2.5 mm from c: their heads pile on each other; not the
+#: quick-return's c a₄ d on one line through the pole, 3.4 mm apart at the least).
+CLOSE_MM = 3.0
 #: The detail enlarges the crowd to about this span [mm]...
 DETAIL_SPAN_MM = 28.0
 #: ...and its two closest images to at least this distance [mm] (two full heads apart)...
@@ -350,28 +351,20 @@ def pole_text(plan) -> str:
 
 
 def at_rest_texts(plan) -> dict[str, str]:
-    """Image label -> its label when the plan's vectors name the point differently, with a link's number, as the
-    equations name it:
-
-    * a point of the frame only (of no moving link's figure) whose image is at the pole, named by a vector from the
-      pole (six-bar: the sleeve 6 pivoted at the frame point E, ``v_E5E6``, whose equations read v_E6 = 0: the image
-      e at the pole is lettered ``e₆``, ``e₆′``);
-    * the joint of a sliding block, whose image the relative velocity of the coincident point starts from
-      (quick-return: the crank pin A of links 2 and 3, ``v_A4 = v_A3 + v_A4A3``: its image is lettered ``a₃`` beside
-      ``a₄``; linear-arm ``f₃`` beside ``f₄``)."""
+    """Image label -> its label when the plan's vectors name the point at rest differently: a point of the frame only
+    (of no moving link's figure) whose image is at the pole, named by a vector from the pole with a link's number (six-bar: the sleeve 6 pivoted at the
+    frame point E, ``v_E5E6``, whose equations read v_E6 = 0: the image e at the pole is lettered ``e₆``, ``e₆′``)."""
     points = getattr(plan, "points", None) or {}
     on_links = {n for names in getattr(plan, "links", {}).values() for n in names}
     out = {}
     for name, z in plan.images.items():
-        if name not in points or points[name][1]:
-            continue
+        if abs(z) > SAME_MM or name not in points or points[name][1] or name in on_links:
+            continue  # (a point of a moving link at rest for the instant keeps its letter: linear-arm's f′)
         point = points[name][0]
         written = {"".join(points[n]) for n in plan.images if n in points}
-        if not any(points[n][0] == point and points[n][1] for n in plan.images if n in points) and (abs(z) > SAME_MM or name in on_links):
-            continue  # no coincident point of another link, nor a frame point at the pole: the letter as it is
         for v in plan.vectors:
             m = re.search(rf"(?<![A-Za-z]){re.escape(point)}([0-9]+)$", v.label.partition("_")[2])
-            if abs(v.tail - z) <= SAME_MM and v.kind != "absolute" and m and point + m.group(1) not in written:
+            if abs(v.tail) <= SAME_MM and v.kind != "absolute" and m and point + m.group(1) not in written:
                 out[name] = point.lower() + m.group(1).translate(SUBSCRIPT) + name[len(name.rstrip("′")):]
                 break
     return out
@@ -558,13 +551,10 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             if any(abs(tip - c) <= r for (c, r, _), _ in rings):
                 continue  # within a crowd's detail
             if (at := _spot(sketch, ring, within=True)) is not None:
-                _draw_ring(sketch, ring)
+                _draw_ring(sketch, ring)  # (only where the plan has room for it: the page's plan keeps its scale)
                 name = next_name()
                 for label in _detail(sketch, plan, vectors, images, ends, ring, [], name, at):
                     in_detail.setdefault(label, name)
-            else:  # no room within the plan: under it, after the labels (linear-arm π k′ on π g′, 0.1 mm apart on the A3 sheet)
-                _draw_ring(sketch, ring)
-                rings.append((ring, None))
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     # every dot of the plan: a label stands nearer its own point than any other (it reads as that point's)
     where = {"pole-label": 0j} | {f"image-{name}": z for name, z in images.items()} | {f"end-{label}": z for z, _, label in ends}
@@ -611,12 +601,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
 
     for ring, names in rings:
         name = next_name()
-        at = None
-        if names is None:  # under the plan, below its lowest mark, as near the ring as the plan's width allows
-            b = sketch.bounds
-            big = ring[1] * ring[2]
-            at = complex(min(max(ring[0].real, b.xmin + big), max(b.xmax - big, b.xmin + big)), b.ymin - 7.0 - big)
-        for label in _detail(sketch, plan, vectors, images, ends, ring, names or [], name, at):
+        for label in _detail(sketch, plan, vectors, images, ends, ring, names, name):
             in_detail.setdefault(label, name)
 
     if whole:
