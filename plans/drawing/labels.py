@@ -21,7 +21,7 @@ import math
 
 import numpy as np
 import shapely
-from shapely.geometry import Point, box
+from shapely.geometry import LineString, Point, box
 
 from ._canvas import Sketch, text_size
 from .style import LEADER_STYLE
@@ -37,6 +37,8 @@ LABEL_SPACE_MM = 0.9
 OVERLAP_MM = 12.0
 #: How far [mm] a label may be moved off its point, with a leader line, when nothing nearer is free.
 FARTHEST_MM = 30.0
+#: A label across a line moves at most this far [mm] off its point (with a leader) to a clear place.
+FREE_GAP_MM = 8.0
 _SEPARATOR = ", "
 
 
@@ -57,18 +59,38 @@ def _to_box(z: complex, center: complex, w: float, h: float) -> float:
     return math.hypot(dx, dy)
 
 
+#: A leader line stops this far [mm] short of its label's box...
+LEADER_GAP_MM = 0.6
+#: ...and meets it on a side, this fraction of the side in from the corners, where a prime or a subscript
+#: stands ("e₅′": a leader to the corner ran into the prime and read as its stroke).
+LEADER_INSET = 0.3
+
+
 def _leader(sketch: Sketch, anchor: complex, center: complex, w: float, h: float) -> None:
-    """A thin line from just off *anchor* to the nearest side of the label's box."""
+    """A thin line from just off *anchor* towards the nearest side of the label's box (away from its corners), stopping
+    :data:`LEADER_GAP_MM` short of it."""
+    from shapely.geometry import MultiLineString
     from shapely.ops import nearest_points
 
-    label_box = box(center.real - w / 2, center.imag - h / 2, center.real + w / 2, center.imag + h / 2)
-    _, near = nearest_points(Point(anchor.real, anchor.imag), label_box.exterior)
+    x0, x1, y0, y1 = center.real - w / 2, center.real + w / 2, center.imag - h / 2, center.imag + h / 2
+    ix, iy = LEADER_INSET * w, LEADER_INSET * h
+    sides = MultiLineString([[(x0 + ix, y0), (x1 - ix, y0)], [(x0 + ix, y1), (x1 - ix, y1)], [(x0, y0 + iy), (x0, y1 - iy)], [(x1, y0 + iy), (x1, y1 - iy)]])
+    _, near = nearest_points(Point(anchor.real, anchor.imag), sides)
     end = complex(near.x, near.y)
-    if abs(end - anchor) < 1.2:
+    u = (end - anchor) / abs(end - anchor) if abs(end - anchor) > 0 else 1.0
+    # where it meets the box's outline grown by the gap
+    grown = box(x0, y0, x1, y1).buffer(LEADER_GAP_MM)
+    hit = grown.exterior.intersection(LineString([(anchor.real, anchor.imag), (end.real, end.imag)]))
+    if hit.is_empty:
         return
-    u = (end - anchor) / abs(end - anchor)
+    pts = [complex(g.x, g.y) for g in getattr(hit, "geoms", [hit]) if g.geom_type == "Point"]
+    if not pts:
+        return
+    stop = min(pts, key=lambda z: abs(z - anchor))
+    if abs(stop - anchor) < 1.2:
+        return
     color, lw = LEADER_STYLE
-    sketch.line([anchor + u * 0.5, end - u * 0.25], color=color, lw=lw, gid="leader", zorder=5.0, obstacle=True, bound=False)
+    sketch.line([anchor + u * 0.5, stop], color=color, lw=lw, gid="leader", zorder=5.0, obstacle=True, bound=False)
 
 
 def place_label(
@@ -157,13 +179,15 @@ def place_label(
     # (up to FARTHEST_MM) and the label gets a leader line.
     rings = ([[(c, 0.0, 0.0) for c in first]] if first else []) + [ring_at(g) for g in gaps]
     extra = gaps[-1] if gaps else 1.0
-    best = None  # (score, centre, gap, clearance)
+    best = None  # (score, centre, gap, clearance (0 when astray), clearance)
+    bounds = sketch.bounds
+    free = None  # the nearest place, within the drawing as drawn so far (its scale kept), clear of every mark, its own point's or joined to it by a leader: (cost, centre, gap)
     order = 0
     while rings:
         ring = rings.pop(0)
         gap = ring[0][1]
-        if best is not None and best[0] > 4.0 * CLEAR_MM - gap:
-            break
+        if best is not None and best[0] > 4.0 * CLEAR_MM - gap and (best[4] > 0.0 or free is not None):
+            break  # (a best across a line looks on for a clear place)
         xs = np.array([c.real for c, _, _ in ring])
         ys = np.array([c.imag for c, _, _ in ring])
         boxes = shapely.box(xs - w / 2, ys - h / 2, xs + w / 2, ys + h / 2)
@@ -198,17 +222,28 @@ def place_label(
             else:
                 mine = _to_segment(center, own) if own is not None else abs(center - anchor)
                 astray = any(abs(center - q) < mine for q in rivals) or any(_to_segment(center, seg) < mine for seg in rival_segments)
-            if astray and leader_ok and leader_from is not None and gap >= leader_from:
+            led = leader_from is not None and gap >= leader_from
+            inside = bounds.empty or (bounds.xmin - 1.0 <= center.real - w / 2 and center.real + w / 2 <= bounds.xmax + 1.0
+                                      and bounds.ymin - 1.0 <= center.imag - h / 2 and center.imag + h / 2 <= bounds.ymax + 1.0)
+            if c >= CLEAR_MM / 2 and inside and gap <= FREE_GAP_MM and (led or not astray) and (free is None or gap + 0.15 * turn < free[0]):
+                free = (gap + 0.15 * turn, center, gap)
+            if astray and leader_ok and led:
                 astray = False
             score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - (OVERLAP_MM if astray else 0.0) - gap - 0.15 * turn - 1e-6 * order
             order += 1
             if best is None or score > best[0]:
-                best = (score, center, gap, 0.0 if astray else c)  # astray: as bad as an overlap, look further out
-        if not rings and best[3] <= 0.0 and extra * 1.4 <= FARTHEST_MM:
+                best = (score, center, gap, 0.0 if astray else c, c)  # astray: as bad as an overlap, look further out
+        if not rings and (best[3] <= 0.0 or (best[4] <= 0.0 and free is None)) and extra * 1.4 <= FARTHEST_MM:
             extra *= 1.4
             rings.append(ring_at(extra))
             if leader_from is None:
                 leader_from = extra
+    if best[4] <= 0.0 and free is not None:
+        # the best place lies across a line (every place near enough to read as its point's is covered): rather the
+        # nearest clear place, with a leader line (linear-arm position 5: "π, d′, q′, a′, f₃′" over four lines from the pole)
+        best = (free[0], free[1], free[2], CLEAR_MM, CLEAR_MM)
+        if leader_from is None:
+            leader_from = free[2]
     center = best[1]
     if leader_from is not None and best[2] >= leader_from:
         _leader(sketch, anchor, center, w, h)

@@ -98,6 +98,10 @@ BEHIND_MM = 3.0
 #: overlap and its figure cannot be read (six-bar a b c), so it is drawn again,
 #: enlarged, in a detail beside the plan.
 CROWD_MM = 8.0
+#: A link whose images span up to twice :data:`CROWD_MM` crowds too when two of them are closer than this [mm]
+#: (six-bar a b c at the handout's k_v: 10 mm across, b 2.5 mm from c: their heads pile on each other; not the
+#: quick-return's c a₄ d on one line through the pole, 3.4 mm apart at the least).
+CLOSE_MM = 3.0
 #: The detail enlarges the crowd to about this span [mm]...
 DETAIL_SPAN_MM = 28.0
 #: ...and its two closest images to at least this distance [mm] (two full heads apart)...
@@ -385,8 +389,11 @@ def aliases(plan) -> dict[str, list[str]]:
 
 
 #: Two vectors from the pole closer than this in direction [degrees], the shorter's tip within
-#: :data:`BESIDE_MM` of the longer's shaft, lie one on the other: a note under the plan gives both directions.
+#: :data:`ALONG_OFF_MM` of the longer's shaft, lie one on the other: a note under the plan gives both directions.
 ALONG_DEG = 3.0
+#: ...and the shorter's tip closer than this [mm] to the longer's shaft: its head (1.2 mm wide) stands on that shaft or
+#: all but touches it (four-bar p m, 0.44° off p a and 158 mm long on the A3 sheet: 1.22 mm off).
+ALONG_OFF_MM = 2.0
 #: ...but more than this apart [degrees]: images on one line through the pole (quick-return a₄ on p d, the
 #: similarity of link 4's images) lie exactly along, as the construction makes them, and need no note.
 ALONG_MIN_DEG = 0.05
@@ -406,7 +413,7 @@ def alongside(plan) -> list[tuple]:
                 continue
             turn = abs(math.degrees(cmath.phase(complex(v.tip) / complex(w.tip))))
             off = (complex(v.tip) * unit(complex(w.tip)).conjugate()).imag
-            if ALONG_MIN_DEG < turn < ALONG_DEG and abs(off) < BESIDE_MM:
+            if ALONG_MIN_DEG < turn < ALONG_DEG and abs(off) < ALONG_OFF_MM:
                 out.append((v, w))
                 break
     return out
@@ -541,7 +548,9 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             u = unit(complex(w.tip) - complex(w.tail))
             foot = complex(w.tail) + u * ((tip - complex(w.tail)) * u.conjugate()).real
             ring = _ring([tip, foot])
-            if all(abs(tip - c) > r for (c, r, _), _ in rings) and (at := _spot(sketch, ring, within=True)) is not None:
+            if any(abs(tip - c) <= r for (c, r, _), _ in rings):
+                continue  # within a crowd's detail
+            if (at := _spot(sketch, ring, within=True)) is not None:
                 _draw_ring(sketch, ring)  # (only where the plan has room for it: the page's plan keeps its scale)
                 name = next_name()
                 for label in _detail(sketch, plan, vectors, images, ends, ring, [], name, at):
@@ -607,7 +616,8 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
 def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[str]]]:
     """What crowds on the plan, each as (its points, the images of its link figure):
 
-    * the images of a link, 3 or more distinct within :data:`CROWD_MM` (six-bar a b c);
+    * the images of a link, 3 or more distinct within :data:`CROWD_MM`, or within twice that with two of them
+      closer than :data:`CLOSE_MM` (six-bar a b c);
     * a chain of vectors too short for an arrow (under :data:`SHORT_MM`) but long enough to
       read at the largest ratio, joining 3 or more distinct points within :data:`CROWD_MM`
       (quick-return pos 2: a′ →k Coriolis 1.38 mm, k →a₄′ aʳ 1.26 mm), whose heads the plan cannot show.
@@ -622,7 +632,9 @@ def _crowds(plan, images: dict, vectors=()) -> list[tuple[list[complex], list[st
         pts = [images[n] for n in names]
         if len(pts) >= 3:
             span = max(abs(q - r) for q in pts for r in pts)
-            if 0.5 < span < CROWD_MM and not any(set(names) <= set(c) for _, c in out):
+            closest = min(abs(q - r) for i, q in enumerate(pts) for r in pts[:i])
+            crowded = span < CROWD_MM or (closest < CLOSE_MM and span < 2 * CROWD_MM)
+            if 0.5 < span and crowded and not any(set(names) <= set(c) for _, c in out):
                 out.append((pts, names))
     # chains of short vectors: their ends joined into clusters, in plan order
     readable = DETAIL_APART_MM / DETAIL_RATIOS[-1]
