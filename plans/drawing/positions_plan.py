@@ -10,7 +10,13 @@ beside its mark, else at the end of a short leader line (no number is ever
 drawn over another mark or label, on a guide's hatching or in a guideway); marks
 too close together for their numbers are ringed and drawn again, enlarged n : 1,
 in a drafting detail ("detail I (5 : 1)", :func:`draw_details`) where each is
-numbered; only a mark that finds room in neither is listed under the plan.  The
+numbered; only a mark that finds room in neither is listed under the plan.  A number is
+its point's letter and the position as an index in digits at the small text size
+(:func:`number_parts`), position 0 too (``A₀``, as ``A₀′``); it stands off the path
+lines (either side of a straight one in turn); marks on one another share one
+number (``Y₄, Y₈``); a lone crowded mark is numbered on a longer leader rather than
+in a detail of its own.  Every fixed point the scene lists is marked and lettered
+(one the scheme does not draw, an origin of coordinates, as a ring with a cross).  The
 frame guides keep off the paths and every position's links: their lines and
 hatching are broken where one passes through.  Paths are drawn only where the
 mechanism assembles, and the caption names the positions that are not drawn and why.
@@ -64,6 +70,8 @@ FIXED_R = 0.9
 LEADER_PT = 0.35
 #: Marks closer than this [mm] are all but one (a number beside one is beside the other): no rival to each other.
 SAME_MARK_MM = 1.0
+#: How much [mm] nearer its own mark than any other a number's centre is.
+RIVAL_MARGIN_MM = 0.6
 #: How many directions round its mark a number tries at each gap.
 DIRECTIONS = 32
 #: The most of a leader line that may run inside what its mark sits in (a pin, a block), as a fraction of its length.
@@ -87,6 +95,8 @@ DETAIL_GROW = 0.3
 RING_LEAST_MM = 3.5
 #: The least radius [mm] of a detail (room for its marks' numbers): the ring on the plan is this over the ratio.
 DETAIL_LEAST_MM = 7.0
+#: Room [mm] a detail leaves round its crowd's outer marks (their numbers), at its own size.
+DETAIL_MARGIN_MM = 6.0
 #: Marks nearer than this [mm] on the plan are one place at any ratio (their numbers stand side by side).
 ONE_PLACE_MM = 0.15
 #: Room [mm] the ring on the plan leaves round the crowd's outer marks.
@@ -257,48 +267,65 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     # (a number nearer its own mark than any other: a reader takes a number for the nearest point's)
     every = np.array([at for _, _, at in marks] + [at for _, _, at in extreme_marks], dtype=complex)
     left_out, gids = [], {}
+    # (every mark: its number's text, gid, place [mm], point, the index its side of the path alternates by, rivals)
+    todo = []
     for index, p, at in sorted(marks, key=lambda m: (m[0] != runs[0].index, m[0], numbered.index(m[1]))):
         # position 0 (the scheme drawn in full) numbered first, wherever it has room; the others nearest their marks
-        rivals = None if index == runs[0].index else every
-        text = f"{p}{_sub(index)}"
-        gids[text] = f"position-{index}-{p}"
-        if place_number(sketch, at, text, gid=gids[text], size=NUMBER_PT, prefer=prefer(p, at, index), rivals=rivals,
-                        keep_out=keep_out) is None:
-            left_out.append((text, at))
+        todo.append((f"{p}{_sub(index)}", f"position-{index}-{p}", at, p, index, None if index == runs[0].index else every))
     for label, p, at in extreme_marks:
-        text = f"{p}{label.translate(SUBSCRIPT)}"
-        gids[text] = f"position-extreme-{p}"
-        if place_number(sketch, at, text, gid=gids[text], size=NUMBER_PT, prefer=prefer(p, at, 1), rivals=every,
-                        keep_out=keep_out) is None:
-            left_out.append((text, at))
-    # a lone mark without room beside it: numbered on the plan itself, at the end of a longer leader
-    lone = []
-    for text, at in left_out:
-        if all(abs(at - other) > CROWD_MM for t, other in left_out if t != text) and any(
-                place_number(sketch, at, text, gid=gids[text], size=NUMBER_PT, keep_out=keep_out, gaps=FAR_GAPS, cross_lines=cross) is not None
-                for cross in (False, True)):
-            lone.append(text)
-    left_out = [(text, at) for text, at in left_out if text not in lone]
+        todo.append((f"{p}{label.translate(SUBSCRIPT)}", f"position-extreme-{p}", at, p, 1, every))
+    # marks on one another (the scotch yoke's A and Y, its Y₄ and Y₈) are numbered together: "Y₄, Y₈"
+    together = []
+    for item in todo:
+        group = next((g for g in together if abs(g[0][2] - item[2]) <= ONE_PLACE_MM), None)
+        if group is None:
+            together.append([item])
+        else:
+            group.append(item)
+    for group in together:
+        text, gid, at, p, turn, rivals = group[0]
+        for t, g, *_ in group:
+            gids[t] = g
+        if place_number(sketch, at, ", ".join(t for t, *_ in group), gid=gid, size=NUMBER_PT, prefer=prefer(p, at, turn), rivals=rivals,
+                        keep_out=keep_out, part_gids=[g for _, g, *_ in group]) is None:
+            left_out.extend((t, q) for t, _, q, *_ in group)
+    # marks all but on one another (the scotch yoke's A and Y, M₅ and M₀′ 0.1 mm apart: no detail parts them) share
+    # one number, side by side, on the plan; a lone mark without room beside it is numbered on the plan too, at the
+    # end of a longer leader (its leader says whose it is), not in a detail of its own
+    def grouped(marks):
+        groups = []
+        for text, at in marks:
+            group = next((g for g in groups if abs(g[0][1] - at) <= SAME_MARK_MM), None)
+            if group is None:
+                groups.append([(text, at)])
+            else:
+                group.append((text, at))
+        return groups
+
+    def joined(group, attempts) -> bool:
+        text, at = ", ".join(t for t, _ in group), sum(q for _, q in group) / len(group)
+        named = [gids.get(t, _ascii(t)) for t, _ in group]
+        # (beside the marks, nearer them than any other; on a leader, the leader says whose it is)
+        return any(place_number(sketch, at, text, gid=named[0], size=NUMBER_PT, keep_out=out, gaps=gaps, cross_lines=cross,
+                                part_gids=named, rivals=every if gaps == NEAR_GAPS else None) is not None for out, gaps, cross in attempts)
+
+    done = set()
+    for group in grouped(left_out):
+        at = group[0][1]
+        lone = all(abs(at - other) > CROWD_MM for t, other in left_out if t not in {g for g, _ in group})
+        if (lone or len(group) > 1) and joined(group, ((keep_out, NEAR_GAPS, False), (keep_out, LEADER_GAPS + FAR_GAPS, False),
+                                                       (keep_out, LEADER_GAPS + FAR_GAPS, True), ((), LEADER_GAPS + FAR_GAPS, True))):
+            done |= {t for t, _ in group}
+    left_out = [(text, at) for text, at in left_out if text not in done]
     # the marks too close together for their numbers: drawn again, enlarged, in a detail, and numbered there
     if left_out:
         every_mark = [(f"{p}{_sub(index)}", at) for index, p, at in marks] + [(f"{p}{label.translate(SUBSCRIPT)}", at) for label, p, at in extreme_marks]
         left_out = draw_details(sketch, left_out, every_mark, figure, lang=lang)
-    # a mark for which neither had room: a longer leader on the plan (its leader says whose it is); marks all but on
-    # one another (M₅ and M₀′ 0.1 mm apart) share one leader, their numbers side by side
-    groups = []
-    for text, at in left_out:
-        group = next((g for g in groups if abs(g[0][1] - at) <= SAME_MARK_MM), None)
-        if group is None:
-            groups.append([(text, at)])
-        else:
-            group.append((text, at))
-    left_out = []
-    for group in groups:
-        text, at = ", ".join(t for t, _ in group), sum(q for _, q in group) / len(group)
-        named = [gids.get(t, _ascii(t)) for t, _ in group]
-        if all(place_number(sketch, at, text, gid=named[0], size=NUMBER_PT, keep_out=out, gaps=LEADER_GAPS + FAR_GAPS, cross_lines=cross,
-                            part_gids=named) is None for out, cross in ((keep_out, False), (keep_out, True), ((), True))):
-            left_out.extend(group)
+    # a mark for which neither had room: a longer leader on the plan (its leader says whose it is)
+    left_out = [m for group in grouped(left_out)
+                if not joined(group, ((keep_out, LEADER_GAPS + FAR_GAPS, False), (keep_out, LEADER_GAPS + FAR_GAPS, True),
+                                      ((), LEADER_GAPS + FAR_GAPS, True)))
+                for m in group]
 
     # caption
     b = sketch.bounds
@@ -389,6 +416,9 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
         pts = [at for _, at in crowd]
         centre = sum(pts) / len(pts)
         r = max(abs(q - centre) for q in pts) + RING_MARGIN_MM
+        if len(crowd) > 1 and max(abs(q - w) for q in pts for w in pts) <= SAME_MARK_MM:
+            still.extend(crowd)  # (marks all but on one another: no enlargement parts them, one number on the plan names them)
+            continue
         if len(crowd) > 1 and r * DETAIL_RATIOS[0] > DETAIL_MOST_MM:
             # (a crowd strung out along a path, too long for one detail: its two halves along it, each a detail)
             ends = max(((q, w) for q in pts for w in pts), key=lambda qw: abs(qw[0] - qw[1]))
@@ -405,7 +435,8 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
             continue
         ratio = next((n for n in fits if closest * n >= DETAIL_APART_MM), fits[-1])
         # a compact frame: the crowd and its margin, at least DETAIL_LEAST_MM round on the detail (its numbers' room)
-        r = min(max(r, DETAIL_LEAST_MM / ratio), DETAIL_MOST_MM / ratio)
+        spread = max(abs(q - centre) for q in pts)
+        r = min(max(spread + DETAIL_MARGIN_MM / ratio, DETAIL_LEAST_MM / ratio), DETAIL_MOST_MM / ratio)
         inside = [(text, at) for text, at in every_mark if abs(at - centre) <= r]
         big = r * ratio
         title = f"{term('detail', lang)[:1].upper()}{term('detail', lang)[1:]} {name} ({localised(fmt_number(ratio), lang)} : 1)"
@@ -582,7 +613,7 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         if len(others_at):
             centres_c = np.array([c for c, _, _ in candidates], dtype=complex)
             nearest = np.min(np.abs(centres_c[:, None] - others_at[None, :]), axis=1)
-            crowded |= nearest <= np.abs(centres_c - at)
+            crowded |= nearest <= np.abs(centres_c - at) + RIVAL_MARGIN_MM  # (nearer by a margin: as the glyphs read)
     # what the mark sits in (the pin of position 0's scheme, a block, the ring of a slot): a leader starts inside
     # it and may cross it on its way out, as long as most of the leader is outside (never along a link)
     mark = shapely.Point(at.real, at.imag)
@@ -613,7 +644,8 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
             continue
         if leader:
             start = at + u * (MARK_R + 0.3)
-            end = centre - u * (abs(u.real) * w / 2 + abs(u.imag) * h / 2 + 0.3)
+            # (to the number's box, where the line towards its centre meets it)
+            end = centre - u * (min(w / 2 / max(abs(u.real), 1e-9), h / 2 / max(abs(u.imag), 1e-9)) + 0.3)
             line = LineString([(start.real, start.imag), (end.real, end.imag)])
             if len(others) and _closer_than(np.array([line], dtype=object), others, NUMBER_CLEAR_MM)[0]:  # the leader crosses nothing either
                 continue
