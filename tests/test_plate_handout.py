@@ -274,7 +274,8 @@ def test_the_plan_of_positions_draws_the_other_extreme_position(quick_return_sr)
 
     doc, _ = quick_return_sr
     svg = doc.images["positions"].decode()
-    assert 'id="positions-link-extreme-2"' in svg and "A₀′" in svg
+    # (its number: the letter A and its index 0′ set at the small text size, two texts)
+    assert 'id="positions-link-extreme-2"' in svg and 'id="positions-position-extreme-A-index"' in svg and "0′" in svg
     other = strokes(doc.runs[0].scene).other_position  # the crank angle of 0′ [rad]
     drawn = _centre(svg, "positions-mark-extreme-A") - _centre(svg, "positions-pin-O")
     assert math.degrees(abs(cmath.phase(drawn / cmath.exp(1j * other)))) < 1.0

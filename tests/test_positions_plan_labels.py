@@ -13,6 +13,8 @@ from plans.drawing.numerals import localised
 from plans.drawing.positions_plan import draw_positions_plan, number_ranges
 from plans.positions import run_positions
 
+from position_numbers import leader_says, read_texts
+
 
 def _cases():
     for name in plans.example_names():
@@ -33,7 +35,7 @@ def drawn(request):
 
 
 def _texts(fig):
-    return [t for t in fig.findobj(lambda a: hasattr(a, "get_text") and a.get_gid()) if t.get_text().strip()]
+    return read_texts([t for t in fig.findobj(lambda a: hasattr(a, "get_text") and a.get_gid()) if t.get_text().strip()])
 
 
 def _overlap(a, b, shrink=0.0) -> bool:
@@ -71,7 +73,7 @@ def test_every_drawn_number_is_beside_its_own_mark(drawn):
         assert index in solved, (name, text)
         mark = complex(solved[index].analytic.points[point].r[0]) / k_l  # [mm] by the analytic solution
         x, y = t.get_position()
-        assert abs(complex(x, y) - mark) < 14.0, (name, text)
+        assert abs(complex(x, y) - mark) < 14.0 or leader_says(t, mark), (name, text)
         numbered.add(point)
     if name == "six-bar":  # the crank's A, the coupler's B, the rocker's C and the coupler point M all get numbers
         assert numbered == {"A", "B", "C", "M"}

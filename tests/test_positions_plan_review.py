@@ -22,6 +22,8 @@ from plans.drawing.positions_plan import draw_positions_into
 from plans.i18n import term
 from plans.positions import run_positions
 
+from position_numbers import Number, read_texts
+
 _DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 #: How close [mm] a hatch stroke may come to a path or a link before it counts as crossing it.
 TOUCH_MM = 0.05
@@ -110,13 +112,17 @@ def test_no_hatch_stroke_crosses_a_path_or_a_link_of_any_position(drawn):
 
 
 def _numbers(fig):
-    return [t for t in fig.findobj(lambda a: hasattr(a, "get_text") and re.fullmatch(r"pos-(position|detail-[IVX]+-number)-.+", a.get_gid() or ""))
-            if t.get_text().strip()]
+    """The numbers, each its letter and index read as one label (A₁₀)."""
+    return [t for t in _texts(fig) if re.fullmatch(r"pos-(position|detail-[IVX]+-number)-.+", t.get_gid() or "")]
+
+
+def _texts(fig):
+    return read_texts([t for t in fig.findobj(lambda a: hasattr(a, "get_text") and (a.get_gid() or "").startswith("pos-")) if t.get_text().strip()])
 
 
 def _box(t, renderer, fig):
     """A text's box in drawing millimetres (data units)."""
-    ext = t.get_window_extent(renderer).transformed(t.axes.transData.inverted())
+    ext = t.get_window_extent(renderer).transformed((t.letter if isinstance(t, Number) else t).axes.transData.inverted())
     return box(ext.x0, ext.y0, ext.x1, ext.y1)
 
 
@@ -148,7 +154,7 @@ def test_no_number_on_hatching_or_in_a_guideway(drawn):
 def test_no_label_overlaps_another(drawn):
     name, _, _, _, _, fig = drawn
     renderer = fig.canvas.get_renderer()
-    texts = [t for t in fig.findobj(lambda a: hasattr(a, "get_text") and (a.get_gid() or "").startswith("pos-")) if t.get_text().strip()]
+    texts = _texts(fig)
     boxes = [(t.get_text(), _box(t, renderer, fig)) for t in texts]
     for k, (ta, a) in enumerate(boxes):
         for tb, b in boxes[k + 1:]:
@@ -163,7 +169,7 @@ def test_a_number_covers_no_mark(drawn):
 
     marks = [complex(r.graphical.positions[p]) / k_l for r in run.runs if r.ok for p in numbered_points(run.scene) if p in r.graphical.positions]
     marks += [complex(g.positions[p]) / k_l for g in extremes.values() for p in numbered_points(run.scene) if p in g.positions]
-    for t in fig.findobj(lambda a: hasattr(a, "get_text") and re.fullmatch(r"pos-position-.+", a.get_gid() or "")):
+    for t in [t for t in _numbers(fig) if t.get_gid().startswith("pos-position-")]:
         b = _box(t, renderer, fig)
         assert not any(b.intersects(Point(z.real, z.imag).buffer(0.3)) for z in marks), (name, t.get_text())
 
@@ -175,7 +181,7 @@ def test_every_position_numbered_on_the_plan_or_in_a_detail(drawn):
         pytest.skip("the crowded handout of the review")
     from plans.drawing.positions_plan import numbered_points
 
-    texts = [t for t in fig.findobj(lambda a: hasattr(a, "get_text") and (a.get_gid() or "").startswith("pos-")) if t.get_text().strip()]
+    texts = _texts(fig)
     assert not [t for t in texts if t.get_gid().startswith("pos-unnumbered")]
     written = {t.get_text().translate(_DIGITS) for t in _numbers(fig)}
     scheme = {t.get_text() for t in texts}

@@ -64,8 +64,12 @@ def test_the_plan_of_positions_is_sheet_1_at_its_own_stated_k_l(slider_crank_set
 def test_the_plan_of_positions_draws_0_prime_labels_each_point_once_and_names_the_paths(slider_crank_set):
     _, _, page = slider_crank_set
     inside = unicodedata.normalize("NFC", " ".join(t for t in _drawing_texts(page)))
-    assert "A₀′" in inside and "B₀′" in inside  # the other extreme position its list names
-    assert not re.search("[AB]₀(?!′)", inside)  # position 0 (the scheme in full) labelled once: A, not A and A₀
+    # the other extreme position its list names: A₀′, B₀′ (a number's letter and its index, set as two texts)
+    assert re.search(r"\bA 0′", inside) and re.search(r"\bB 0′", inside)
+    # position 0 lettered as the others, once: A₀ (issue 20's second review), not a plain A beside it
+    assert re.search(r"\bA 0(?!′)", inside) and re.search(r"\bB 0(?!′)", inside)
+    texts = [unicodedata.normalize("NFC", t) for t in _drawing_texts(page)]
+    assert all(k + 1 < len(texts) and re.fullmatch(r"[0-9]+′?", texts[k + 1]) for k, t in enumerate(texts) if t in ("A", "B"))
     assert "путања тачке A" in inside and "путања тачке B" in inside
 
 

@@ -178,10 +178,13 @@ class MechanismDrawing:
     positions) is what a frame guide keeps off: a guide line and its hatching are broken where one of them passes
     through the band the hatching takes.  :attr:`guide_bands` holds the bands drawn (each line with its hatching)
     and :attr:`guideways` the room between the two lines of a guideway (numbers keep out of both).
+    *names* (point -> label) letters a point otherwise than by its name, or (None) not at all: the plan of positions
+    letters the points it numbers itself (A₀ as A₁, A₂, …).
     """
 
     def __init__(self, sketch: Sketch, solution, lang: str = "en", caption: bool = True, slots: dict | None = None, cycle=None,
-                 clear=()):
+                 clear=(), names: dict | None = None):
+        self.names = dict(names or {})  # point -> the label it is lettered with, None: not lettered here
         self.clear = [g for g in clear if g is not None and not g.is_empty]
         self.guide_bands: list = []
         self.guideways: list = []
@@ -1090,10 +1093,12 @@ class MechanismDrawing:
 
     def point_labels(self) -> None:
         for name in mechanism_labels(self.sol):
+            if self.names.get(name, name) is None:
+                continue  # (lettered by the caller)
             q = self.p(name)
             away = q - self.centroid
             r = self.pin_r + 0.5
-            self._label(q, name, gid=f"point-{name}", size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=(r, r + 0.8, r + 1.8, r + 3.0, r + 5.0))
+            self._label(q, self.names.get(name, name), gid=f"point-{name}", size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=(r, r + 0.8, r + 1.8, r + 3.0, r + 5.0))
 
     def link_labels(self) -> None:
         # every bar and block centre once, as geometry: each bar's label keeps away from all but its own

@@ -10,7 +10,13 @@ beside its mark, else at the end of a short leader line (no number is ever
 drawn over another mark or label, on a guide's hatching or in a guideway); marks
 too close together for their numbers are ringed and drawn again, enlarged n : 1,
 in a drafting detail ("detail I (5 : 1)", :func:`draw_details`) where each is
-numbered; only a mark that finds room in neither is listed under the plan.  The
+numbered; only a mark that finds room in neither is listed under the plan.  A number is
+its point's letter and the position as an index in digits at the small text size
+(:func:`number_parts`), position 0 too (``A₀``, as ``A₀′``); it stands off the path
+lines (either side of a straight one in turn); marks on one another share one
+number (``Y₄, Y₈``); a lone crowded mark is numbered on a longer leader rather than
+in a detail of its own.  Every fixed point the scene lists is marked and lettered
+(one the scheme does not draw, an origin of coordinates, as a ring with a cross).  The
 frame guides keep off the paths and every position's links: their lines and
 hatching are broken where one passes through.  Paths are drawn only where the
 mechanism assembles, and the caption names the positions that are not drawn and why.
@@ -35,9 +41,9 @@ from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import LABEL_SPACE_MM
 from .mechanism import BAR_PT, FRAME, MechanismDrawing, mechanism_labels
 from .numerals import localised
-from .style import CAPTION_PT, HEADING_PT, SMALL_PT
+from .style import CAPTION_PT, HEADING_PT, LABEL_PT, SMALL_PT
 
-__all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points", "place_number", "number_ranges", "draw_details"]
+__all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points", "place_number", "number_ranges", "draw_details", "number_parts", "number_size"]
 
 GHOST = "#8c8c8c"
 PATH_COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
@@ -45,16 +51,27 @@ GHOST_PT = 0.8
 PATH_PT = 0.9
 #: Radius [mm] of the mark at a numbered point of a position.
 MARK_R = 0.45
-#: Size [pt] of a position number.
+#: Size [pt] of a position number's letter ...
 NUMBER_PT = SMALL_PT + 0.5
+#: ... and of its index, set in ordinary digits (the page's small text: a student reads it), lowered by this
+#: fraction of the letter's line; numbers side by side this far [mm] apart after their comma.
+INDEX_PT = SMALL_PT
+INDEX_DROP = 0.25
+INDEX_GAP_MM = 0.8
 #: Clearance [mm] a position number keeps from every other mark and label.
 NUMBER_CLEAR_MM = 0.25
 #: Gaps [mm] between mark and number tried beside the mark, then at the end of a leader line.
 NEAR_GAPS = (0.5, 1.1, 1.8)
 LEADER_GAPS = (3.5, 5.0, 7.0, 9.5)
+#: Longer leaders [mm]: a lone mark numbered on the plan rather than in a detail of its own (its leader says whose it is).
+FAR_GAPS = (12.0, 15.0, 19.0, 24.0, 30.0)
+#: Radius [mm] of the ring marking a fixed point the scheme does not draw (an origin of coordinates).
+FIXED_R = 0.9
 LEADER_PT = 0.35
 #: Marks closer than this [mm] are all but one (a number beside one is beside the other): no rival to each other.
 SAME_MARK_MM = 1.0
+#: How much [mm] nearer its own mark than any other a number's centre is.
+RIVAL_MARGIN_MM = 0.6
 #: How many directions round its mark a number tries at each gap.
 DIRECTIONS = 32
 #: The most of a leader line that may run inside what its mark sits in (a pin, a block), as a fraction of its length.
@@ -74,8 +91,12 @@ DETAIL_APART_MM = 2.2
 DETAIL_MOST_MM = 32.0
 #: A detail finds room within the drawing, or beside it within this fraction of its size.
 DETAIL_GROW = 0.3
-#: The least radius [mm] of the ring on the plan (a crowd's neighbours show in its detail).
+#: The least radius [mm] round a crowd within which its neighbours decide the ratio (their numbers share its detail).
 RING_LEAST_MM = 3.5
+#: The least radius [mm] of a detail (room for its marks' numbers): the ring on the plan is this over the ratio.
+DETAIL_LEAST_MM = 7.0
+#: Room [mm] a detail leaves round its crowd's outer marks (their numbers), at its own size.
+DETAIL_MARGIN_MM = 6.0
 #: Marks nearer than this [mm] on the plan are one place at any ratio (their numbers stand side by side).
 ONE_PLACE_MM = 0.15
 #: Room [mm] the ring on the plan leaves round the crowd's outer marks.
@@ -145,6 +166,7 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
             sketch.line(pts, color=colour, lw=PATH_PT, dashes=(4.0, 1.5), gid=f"path-{name}", zorder=3.1, obstacle=False)
             figure.append((pts, colour, PATH_PT, (4.0, 1.5)))
 
+    n_paths = len(clear)
     # every position's links, as a guide keeps clear of them (position 0's are drawn in full below)
     for g in [r.graphical for r in runs] + list((extremes or {}).values()):
         for body_name, body in scene.bodies.items():
@@ -200,36 +222,110 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
 
     # position 0 in full (its labels keep clear of the marks), its guides over the stroke, broken where a path
     # or a link of any position passes through their hatching
-    mech = MechanismDrawing(sketch, base, lang=lang, caption=False, slots=line_travel(cycle), clear=clear)
+    # (position 0's numbered points are lettered with the others, A₀ as A₁, A₂, … and A₀′, not by the scheme)
+    names = {p: None for p in numbered}
+    mech = MechanismDrawing(sketch, base, lang=lang, caption=False, slots=line_travel(cycle), clear=clear, names=names)
     mech.draw()
-    # a number stands neither on a guide's hatching nor in a guideway (its leader may cross them)
-    keep_out = [g for g in mech.guide_bands + mech.guideways]
+    # a number stands neither on a guide's hatching, nor in a guideway, nor on a path (its leader may cross them)
+    paths = [g for g in clear[:n_paths]]
+    keep_out = [g for g in mech.guide_bands + mech.guideways] + paths
+
+    # every fixed point the data lists (the frame's points) marked and lettered: the scheme letters the pivots, the
+    # rest (an origin of coordinates, a point a guide is given by) get a ring with a cross and their letter here
+    labelled = set(mechanism_labels(base))
+    for name, z in scene.bodies[FRAME].points.items():
+        if name in labelled:
+            continue
+        at = complex(z) / k_l
+        sketch.circle(at, FIXED_R, fc="white", ec="#000000", lw=0.6, gid=f"fixed-{name}", zorder=4.5, obstacle=True)
+        for u in (FIXED_R * 1.6, FIXED_R * 1.6j):
+            sketch.line([at - u, at + u], color="#000000", lw=0.5, gid=f"fixed-{name}-cross", zorder=4.6, obstacle=False)
+        place_number(sketch, at, name, gid=f"fixed-{name}-label", size=LABEL_PT, prefer=complex(-1, 1), keep_out=keep_out,
+                     gaps=NEAR_GAPS + LEADER_GAPS + FAR_GAPS)
 
     # numbers where they have room: beside the mark, else on a short leader line, else left out;
     # position 0 of every point first, then the others in order
     centres = {p: (complex(np.nanmean(np.asarray(cycle.points[p].r)[assembled])) / k_l if p in cycle.points and assembled.any() else mech.centroid) for p in numbered}
-    labelled = set(mechanism_labels(base))
+    tracks = {p: np.asarray(cycle.points[p].r)[assembled] / k_l for p in numbered if p in cycle.points and assembled.any()}
+
+    def prefer(p: str, at: complex, turn: int) -> complex | None:
+        """Off the point's path: across it, away from the path's middle, or (a straight path) either side in turn."""
+        away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
+        track = tracks.get(p)
+        if track is None or len(track) < 3:
+            return away
+        k = int(np.argmin(np.abs(track - at)))
+        tangent = track[min(k + 1, len(track) - 1)] - track[max(k - 1, 0)]
+        if abs(tangent) < 1e-9:
+            return away
+        normal = unit(tangent) * 1j
+        side = ((at - centres[p]) * normal.conjugate()).real
+        if abs(side) < 0.2 * abs(at - centres[p]) + 0.5:  # (along a straight path: above and below it in turn)
+            return normal * (1 if turn % 2 == 0 else -1)
+        return normal * (1 if side > 0 else -1)
+
     # (a number nearer its own mark than any other: a reader takes a number for the nearest point's)
     every = np.array([at for _, _, at in marks] + [at for _, _, at in extreme_marks], dtype=complex)
-    left_out = []
+    left_out, gids = [], {}
+    # (every mark: its number's text, gid, place [mm], point, the index its side of the path alternates by, rivals)
+    todo = []
     for index, p, at in sorted(marks, key=lambda m: (m[0] != runs[0].index, m[0], numbered.index(m[1]))):
-        if index == runs[0].index and p in labelled:
-            continue  # position 0 is the one drawn in full: its points are labelled once, by the scheme
-        away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
         # position 0 (the scheme drawn in full) numbered first, wherever it has room; the others nearest their marks
-        rivals = None if index == runs[0].index else every
-        if place_number(sketch, at, f"{p}{_sub(index)}", gid=f"position-{index}-{p}", size=NUMBER_PT, prefer=away, rivals=rivals,
-                        keep_out=keep_out) is None:
-            left_out.append((f"{p}{_sub(index)}", at))
+        todo.append((f"{p}{_sub(index)}", f"position-{index}-{p}", at, p, index, None if index == runs[0].index else every))
     for label, p, at in extreme_marks:
-        away = unit(at - centres[p]) if abs(at - centres[p]) > 1e-9 else None
-        if place_number(sketch, at, f"{p}{label.translate(SUBSCRIPT)}", gid=f"position-extreme-{p}", size=NUMBER_PT, prefer=away, rivals=every,
-                        keep_out=keep_out) is None:
-            left_out.append((f"{p}{label.translate(SUBSCRIPT)}", at))
+        todo.append((f"{p}{label.translate(SUBSCRIPT)}", f"position-extreme-{p}", at, p, 1, every))
+    # marks on one another (the scotch yoke's A and Y, its Y₄ and Y₈) are numbered together: "Y₄, Y₈"
+    together = []
+    for item in todo:
+        group = next((g for g in together if abs(g[0][2] - item[2]) <= ONE_PLACE_MM), None)
+        if group is None:
+            together.append([item])
+        else:
+            group.append(item)
+    for group in together:
+        text, gid, at, p, turn, rivals = group[0]
+        for t, g, *_ in group:
+            gids[t] = g
+        if place_number(sketch, at, ", ".join(t for t, *_ in group), gid=gid, size=NUMBER_PT, prefer=prefer(p, at, turn), rivals=rivals,
+                        keep_out=keep_out, part_gids=[g for _, g, *_ in group]) is None:
+            left_out.extend((t, q) for t, _, q, *_ in group)
+    # marks all but on one another (the scotch yoke's A and Y, M₅ and M₀′ 0.1 mm apart: no detail parts them) share
+    # one number, side by side, on the plan; a lone mark without room beside it is numbered on the plan too, at the
+    # end of a longer leader (its leader says whose it is), not in a detail of its own
+    def grouped(marks):
+        groups = []
+        for text, at in marks:
+            group = next((g for g in groups if abs(g[0][1] - at) <= SAME_MARK_MM), None)
+            if group is None:
+                groups.append([(text, at)])
+            else:
+                group.append((text, at))
+        return groups
+
+    def joined(group, attempts) -> bool:
+        text, at = ", ".join(t for t, _ in group), sum(q for _, q in group) / len(group)
+        named = [gids.get(t, _ascii(t)) for t, _ in group]
+        # (beside the marks, nearer them than any other; on a leader, the leader says whose it is)
+        return any(place_number(sketch, at, text, gid=named[0], size=NUMBER_PT, keep_out=out, gaps=gaps, cross_lines=cross,
+                                part_gids=named, rivals=every if gaps == NEAR_GAPS else None) is not None for out, gaps, cross in attempts)
+
+    done = set()
+    for group in grouped(left_out):
+        at = group[0][1]
+        lone = all(abs(at - other) > CROWD_MM for t, other in left_out if t not in {g for g, _ in group})
+        if (lone or len(group) > 1) and joined(group, ((keep_out, NEAR_GAPS, False), (keep_out, LEADER_GAPS + FAR_GAPS, False),
+                                                       (keep_out, LEADER_GAPS + FAR_GAPS, True), ((), LEADER_GAPS + FAR_GAPS, True))):
+            done |= {t for t, _ in group}
+    left_out = [(text, at) for text, at in left_out if text not in done]
     # the marks too close together for their numbers: drawn again, enlarged, in a detail, and numbered there
     if left_out:
         every_mark = [(f"{p}{_sub(index)}", at) for index, p, at in marks] + [(f"{p}{label.translate(SUBSCRIPT)}", at) for label, p, at in extreme_marks]
         left_out = draw_details(sketch, left_out, every_mark, figure, lang=lang)
+    # a mark for which neither had room: a longer leader on the plan (its leader says whose it is)
+    left_out = [m for group in grouped(left_out)
+                if not joined(group, ((keep_out, LEADER_GAPS + FAR_GAPS, False), (keep_out, LEADER_GAPS + FAR_GAPS, True),
+                                      ((), LEADER_GAPS + FAR_GAPS, True)))
+                for m in group]
 
     # caption
     b = sketch.bounds
@@ -314,11 +410,22 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
     grow = DETAIL_GROW * max(b.width, b.height)
     limit = (b.xmin, b.ymin - grow, b.xmax, b.ymax) if b.width > b.height else (b.xmin, b.ymin, b.xmax + grow, b.ymax)
     names = 0
-    for crowd in crowds:
+    while crowds:
+        crowd = crowds.pop(0)
         name = "I" * (names + 1) if names < 3 else ("IV", "V", "VI", "VII", "VIII", "IX", "X")[min(names - 3, 6)]
         pts = [at for _, at in crowd]
         centre = sum(pts) / len(pts)
         r = max(abs(q - centre) for q in pts) + RING_MARGIN_MM
+        if len(crowd) > 1 and max(abs(q - w) for q in pts for w in pts) <= SAME_MARK_MM:
+            still.extend(crowd)  # (marks all but on one another: no enlargement parts them, one number on the plan names them)
+            continue
+        if len(crowd) > 1 and r * DETAIL_RATIOS[0] > DETAIL_MOST_MM:
+            # (a crowd strung out along a path, too long for one detail: its two halves along it, each a detail)
+            ends = max(((q, w) for q in pts for w in pts), key=lambda qw: abs(qw[0] - qw[1]))
+            along = unit(ends[1] - ends[0])
+            order = sorted(crowd, key=lambda m: ((m[1] - centre) * along.conjugate()).real)
+            crowds[:0] = [order[: len(order) // 2], order[len(order) // 2:]]
+            continue
         inside = [(text, at) for text, at in every_mark if abs(at - centre) <= max(r, RING_LEAST_MM)]
         apart = [abs(q - w) for i, (_, q) in enumerate(inside) for _, w in inside[:i] if abs(q - w) > ONE_PLACE_MM]
         closest = min(apart) if apart else DETAIL_APART_MM  # (a lone mark: the least enlargement)
@@ -327,7 +434,9 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
             still.extend(crowd)  # (a crowd too wide for any detail: its marks are stated under the plan)
             continue
         ratio = next((n for n in fits if closest * n >= DETAIL_APART_MM), fits[-1])
-        r = min(max(r, RING_LEAST_MM), DETAIL_MOST_MM / ratio)  # (its neighbours shown too, where there is room)
+        # a compact frame: the crowd and its margin, at least DETAIL_LEAST_MM round on the detail (its numbers' room)
+        spread = max(abs(q - centre) for q in pts)
+        r = min(max(spread + DETAIL_MARGIN_MM / ratio, DETAIL_LEAST_MM / ratio), DETAIL_MOST_MM / ratio)
         inside = [(text, at) for text, at in every_mark if abs(at - centre) <= r]
         big = r * ratio
         title = f"{term('detail', lang)[:1].upper()}{term('detail', lang)[1:]} {name} ({localised(fmt_number(ratio), lang)} : 1)"
@@ -363,17 +472,30 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
         for text, q in big_marks:
             sketch.circle(q, MARK_R, fc="#000000", lw=0, gid=f"detail-{name}-dot-{_ascii(text)}", zorder=4.5, obstacle=True)
         rivals = np.array([q for _, q in big_marks], dtype=complex)
+        # marks all but on one another even enlarged (B₇ and B₀′) share one number, side by side: "B₇, B₀′"
+        joined = []
+        for text, q in big_marks:
+            group = next((g for g in joined if abs(g[0][1] - q) <= SAME_MARK_MM), None)
+            if group is None:
+                joined.append([(text, q)])
+            else:
+                group.append((text, q))
         # the marks lie along a path: their numbers either side of it in turn, across it
         ends = max(((q, w) for _, q in big_marks for _, w in big_marks), key=lambda qw: abs(qw[0] - qw[1]))
         along = unit(ends[1] - ends[0]) if abs(ends[1] - ends[0]) > 1e-9 else 1.0
-        order = sorted(range(len(big_marks)), key=lambda i: ((big_marks[i][1] - at) * along.conjugate()).real)
-        for turn, i in enumerate(order):
-            text, q = big_marks[i]
+        order = sorted(range(len(joined)), key=lambda i: ((joined[i][0][1] - at) * along.conjugate()).real)
+        # (either side in turn along the path; the middle ones numbered first, the ends have room outwards)
+        side = {i: turn for turn, i in enumerate(order)}
+        for i in sorted(order, key=lambda i: abs(side[i] - (len(order) - 1) / 2)):
+            turn = side[i]
+            text, q = ", ".join(t for t, _ in joined[i]), sum(w for _, w in joined[i]) / len(joined[i])
+            named = [f"detail-{name}-number-{_ascii(t)}" for t, _ in joined[i]]
             away = along * (1j if turn % 2 == 0 else -1j)
-            if (place_number(sketch, q, text, gid=f"detail-{name}-number-{_ascii(text)}", size=NUMBER_PT, prefer=away, rivals=rivals) is None
-                    and place_number(sketch, q, text, gid=f"detail-{name}-number-{_ascii(text)}", size=NUMBER_PT, prefer=away) is None):
-                if any(text == t for t, _ in crowd):
-                    still.append((text, centre))
+            if all(place_number(sketch, q, text, gid=named[0], size=NUMBER_PT, prefer=away, rivals=others, part_gids=named, gaps=gaps,
+                                cross_lines=cross) is None
+                   for others, gaps, cross in ((rivals, None, False), (None, None, False), (None, LEADER_GAPS + FAR_GAPS[:2], False),
+                                               (None, LEADER_GAPS + FAR_GAPS[:2], True))):
+                still.extend((t, dict(inside)[t]) for t, _ in joined[i] if any(t == c for c, _ in crowd))
         sketch.obstacles.append(Point(at.real, at.imag).buffer(big + 1.0))  # (the next detail finds room beside it)
     return still
 
@@ -450,26 +572,33 @@ def _closer_than(geoms, shapes, limit: float):
 
 
 def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: float, prefer: complex | None = None, rivals=None,
-                 keep_out=()):
+                 keep_out=(), gaps=None, cross_lines: bool = False, part_gids=None):
     """A position number beside its mark where it has room; else at the end of a short leader line; else none.
 
     Room means its box keeps :data:`NUMBER_CLEAR_MM` from every obstacle
     (marks, the scheme, its labels, the numbers already placed) and a leader
     crosses no other label; and, with *rivals* (the other marks [mm]), its
     centre is nearer its own mark than any rival; and it keeps off *keep_out*
-    (shapes [mm] its leader may cross: a guide's hatching).  Returns the Text, or
-    None when there is no room.
+    (shapes [mm] its leader may cross: a guide's hatching).  *gaps* [mm]: the
+    distances tried, the first of :data:`NEAR_GAPS` beside the mark and the rest on
+    a leader (default: :data:`NEAR_GAPS` then :data:`LEADER_GAPS`; all on a leader
+    when none of them is near); *cross_lines*: its leader may cross any line (a link
+    drawn in full), never a mark or a label.  The number is set as :func:`number_parts`
+    says (the letter, and its index lowered at :data:`INDEX_PT`); numbers joined by
+    ", " (marks all but on one another) take *part_gids*, one a number.  Returns the
+    letter's Text, or None when there is no room.
     """
-    w, h = text_size(text, size)
+    w, h = number_size(text, size)
     base = cmath.phase(prefer) if prefer else math.radians(45)
     candidates = []  # (centre, unit direction, on a leader), in the order they are preferred
-    for gap, leader in [(g, False) for g in NEAR_GAPS] + [(g, True) for g in LEADER_GAPS]:
+    tried = [(g, False) for g in NEAR_GAPS] + [(g, True) for g in LEADER_GAPS] if gaps is None else [(g, g not in NEAR_GAPS) for g in gaps]
+    for gap, leader in tried:
         for k in range(DIRECTIONS):
             theta = base + 2 * math.pi * (k // 2 + 1) / DIRECTIONS * (1 if k % 2 else -1) if k else base
             u = cmath.exp(1j * theta)
             candidates.append((at + u * (gap + abs(u.real) * w / 2 + abs(u.imag) * h / 2), u, leader))
     # only what lies within reach of the farthest candidate can be in the way
-    reach = max(LEADER_GAPS) + w + h + NUMBER_CLEAR_MM
+    reach = max(g for g, _ in tried) + w + h + NUMBER_CLEAR_MM
     shapes = np.array(sketch.obstacles, dtype=object) if sketch.obstacles else np.array([], dtype=object)
     if len(shapes):
         x0, y0, x1, y1 = shapely.bounds(shapes).T
@@ -484,7 +613,7 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         if len(others_at):
             centres_c = np.array([c for c, _, _ in candidates], dtype=complex)
             nearest = np.min(np.abs(centres_c[:, None] - others_at[None, :]), axis=1)
-            crowded |= nearest <= np.abs(centres_c - at)
+            crowded |= nearest <= np.abs(centres_c - at) + RIVAL_MARGIN_MM  # (nearer by a margin: as the glyphs read)
     # what the mark sits in (the pin of position 0's scheme, a block, the ring of a slot): a leader starts inside
     # it and may cross it on its way out, as long as most of the leader is outside (never along a link)
     mark = shapely.Point(at.real, at.imag)
@@ -506,23 +635,81 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         area, half_round = shapely.area(others), shapely.length(others) / 2
         guide = (2 * area / np.maximum(2 * half_round, 1e-12) < THIN_MM) & (half_round >= LONG_MM)
         others = others[(area > 0) & ~guide]
+    if cross_lines and len(others):  # (only the marks and the labels: small shapes and upright boxes)
+        upright = (shapely.get_num_coordinates(others) == 5) & np.isclose(shapely.area(others), shapely.area(shapely.envelope(others)))
+        others = others[upright | (shapely.area(others) < 1.0)]
 
     for (centre, u, leader), label, no_room in zip(candidates, boxes, crowded):
         if no_room:
             continue
         if leader:
             start = at + u * (MARK_R + 0.3)
-            end = centre - u * (abs(u.real) * w / 2 + abs(u.imag) * h / 2 + 0.3)
+            # (to the number's box, where the line towards its centre meets it)
+            end = centre - u * (min(w / 2 / max(abs(u.real), 1e-9), h / 2 / max(abs(u.imag), 1e-9)) + 0.3)
             line = LineString([(start.real, start.imag), (end.real, end.imag)])
             if len(others) and _closer_than(np.array([line], dtype=object), others, NUMBER_CLEAR_MM)[0]:  # the leader crosses nothing either
                 continue
             if len(around) and float(shapely.intersection(line, shapely.union_all(around)).length) > LEADER_INSIDE * line.length:
                 continue
             sketch.line([start, end], color=GHOST, lw=LEADER_PT, gid=f"{gid}-leader", zorder=4.4, obstacle=True)
-        artist = sketch.text(centre, text, size=size, ha="center", va="center", gid=gid, obstacle=False, zorder=6.0)
+        artist = _draw_number(sketch, centre, text, size, gid, part_gids)
         sketch.obstacles.append(label.buffer(LABEL_SPACE_MM, join_style=2))
         return artist
     return None
+
+
+def number_parts(text: str, size: float) -> list[tuple[str, float, str]]:
+    """How a position number is set: ``"A₁₀"`` → ``[("A", size, "letter"), ("10", INDEX_PT, "index")]``.
+
+    The index (the position's number, ``0′`` for the other extreme) is set in ordinary
+    digits at :data:`INDEX_PT`, lowered, rather than as Unicode subscripts (a subscript
+    glyph is 56 % of the size: 4.5 pt at 8 pt, too small to read on a plate).  Numbers
+    joined by ", " are set one after another (``("," , size, "comma")`` between).  A
+    text without an index is one letter part.
+    """
+    out = []
+    for k, one in enumerate(text.split(", ")):
+        if k:
+            out.append((",", size, "comma"))
+        name = one.rstrip("₀₁₂₃₄₅₆₇₈₉′")
+        index = one[len(name):]
+        out.append((name, size, "letter"))
+        if index and name:
+            out.append((index.translate(_ASCII_DIGITS), INDEX_PT, "index"))
+    return out
+
+
+def number_size(text: str, size: float) -> tuple[float, float]:
+    """Width and height [mm] of a position number set as :func:`number_parts` says."""
+    parts = number_parts(text, size)
+    w = sum(text_size(s, pt)[0] for s, pt, _ in parts) + INDEX_GAP_MM * sum(kind == "comma" for _, _, kind in parts)
+    h = text_size("A", size)[1]
+    if any(kind == "index" for _, _, kind in parts):
+        h = h / 2 + INDEX_DROP * h + text_size("1", INDEX_PT)[1] / 2
+    return w, h
+
+
+def _draw_number(sketch: Sketch, centre: complex, text: str, size: float, gid: str, part_gids=None):
+    """Set a position number with its box centred on *centre* [mm]: the letter (gid *gid*), its index (``…-index``)."""
+    parts = number_parts(text, size)
+    w, h = number_size(text, size)
+    h_letter = text_size("A", size)[1]
+    letter_y = centre.imag + h / 2 - h_letter / 2  # (the letter's line at the top of the box, its index lowered)
+    x = centre.real - w / 2
+    first, n = None, 0
+    for s, pt, kind in parts:
+        if kind == "letter":
+            name = (part_gids[n] if part_gids and n < len(part_gids) else f"{gid}-{n}") if n else gid
+            n += 1
+        y = letter_y - (INDEX_DROP * h_letter if kind == "index" else 0.0)
+        artist = sketch.text(complex(x, y), s, size=pt, ha="left", va="center", zorder=6.0, obstacle=False,
+                             gid={"letter": name, "index": f"{name}-index", "comma": f"{name}-comma"}[kind])
+        first = first or artist
+        x += text_size(s, pt)[0] + (INDEX_GAP_MM if kind == "comma" else 0.0)
+    return first
+
+
+_ASCII_DIGITS = str.maketrans({c: str(n) for n, c in enumerate("₀₁₂₃₄₅₆₇₈₉")})
 
 
 def _ascii(text: str) -> str:
