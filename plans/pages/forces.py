@@ -95,6 +95,7 @@ class ForcePages:
     plans: object
     images: dict[str, str] = field(default_factory=dict)
     comparisons: tuple = ()
+    lever: object = None
 
 
 # --- numbers as a page writes them -----------------------------------------------------------
@@ -858,22 +859,162 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
     pages.comparisons = comparisons
     if lever is not None:
-        # where the plans end, its heading kept with the lever
-        heading(term("joukowski_lever", lang), new_page=False, under=[
-            (f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", SMALL_PT),
-            (r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + " = 0$", TEXT_PT)])
-        doc.figure(f"{key}-lever", lever_svg(lever, lang))
-        doc.body.append(reset + "\n")
+        lever, comparisons = _lever_section(doc, graphical, lever, analytic, plans, key, heading, reset, mu_words)
         pages.images[f"{key}-lever"] = "lever"
-        doc.body.append(_legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang))
-        # the moments about the pole and the balancing moment they give, on one page
-        doc.body.append("#block(breakable: false)[" + _table(doc, _lever_rows(lever, lang), "(left, left, right, right, right, left)", term("lever_moments", lang))
-                        + "".join(doc.line_markup(_newtons(line, lang), TEXT_PT) + "\n" for line in _lever_result(lever, lang)) + "]\n")
+        pages.lever = lever
+        pages.comparisons = comparisons
     elif comparisons:
         doc.body.append("#v(4mm)")
-    if comparisons:
         doc.body.append(_table(doc, _methods_table(comparisons, analytic, lang, plans, lever), "(left, right, right, right, right, right)", term("force_methods", lang)))
     return pages
+
+
+#: the least size [mm] of the lever's largest vector (from the pole to the image of the fastest point) when it is
+#: drawn at a scale of its own to fit its page
+LEVER_LEAST = 60.0
+#: the share of its text height a page of the force pages fills at least (not the handout's last section's only page)
+PAGE_USE = 0.5
+#: room [mm] kept free under what a page is reckoned to hold (the typesetter's spacing between blocks)
+LEVER_SPARE = 1.5
+
+
+def _captured(doc: Document, write) -> str:
+    """The markup *write()* appends to *doc*'s body, taken back out (to measure it or place it later)."""
+    start = len(doc.body)
+    write()
+    markup = "".join(doc.body[start:])
+    del doc.body[start:]
+    return markup
+
+
+def _lever_pieces(doc: Document, lever, analytic, plans, key: str, heading, mu_words: str, k_plate: float):
+    """The lever section's markup in its four pieces (heading with the scale lines; the lever's legend; the moments
+    about the pole with M_b; the three methods' table) and the comparisons, for *lever* drawn at its k_v."""
+    from ..forces.compare import compare_forces
+
+    lang = doc.lang
+    own = ""
+    if abs(lever.k_v - k_plate) > 1e-12 * k_plate:  # the lever at a scale of its own: said on the page
+        own = ";  " + term("lever_own_scale", lang).format(scale=f"$k_{{v}}$ = {_scale(k_plate)} (m/s)/mm")
+    head = _captured(doc, lambda: heading(term("joukowski_lever", lang), new_page=False, under=[
+        (f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}{own}", SMALL_PT)]))
+    legend = _legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang)
+    # the lever's equation over the table of its terms
+    equation = r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + " = 0$"
+    moments = ("#block(breakable: false)[" + doc.line_markup(_newtons(equation, lang), TEXT_PT) + "\n" + _table(doc, _lever_rows(lever, lang), "(left, left, right, right, right, left)", term("lever_moments", lang))
+               + "".join(doc.line_markup(_newtons(line, lang), TEXT_PT) + "\n" for line in _lever_result(lever, lang)) + "]\n")
+    comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
+    methods = (_table(doc, _methods_table(comparisons, analytic, lang, plans, lever), "(left, right, right, right, right, right)", term("force_methods", lang))
+               if comparisons else "")
+    return head, legend, moments, methods, comparisons
+
+
+def _lever_layout(room: float, page: float, first: float, between: float, second: float, drawn, scales, least,
+                  legend: float = 0.0) -> tuple[str, float]:
+    """(layout, k_v): where the lever section goes and at which scale, from the heights [mm] the typesetter measured.
+
+    *room*: what is left of the page the force plans end on; *page*: a page's text height; *first*: the heading and
+    the legend (the lever's drawing, *drawn(k)* high at k_v = k, between them); *second*: the moments about the pole
+    with M_b and the methods' table; *between*: the space between the two; *scales*: the round k_v to try, the
+    plate's first; *least(k)*: whether the lever's largest vector keeps :data:`LEVER_LEAST` at k.  Layouts:
+    ``"rest"`` (all of it under the plans), ``"split"`` (the lever under the plans, its legend (*legend* high, in
+    *first*) and tables on the next page),
+    ``"page"`` (all of it from a new page).  The first of them that leaves no page under :data:`PAGE_USE` used, with
+    the lever drawn largest; else the one whose emptier page is fullest."""
+    used = page - room  # of the plans' page
+    options = []  # (every page used at least PAGE_USE, pages added, -k, layout, k, the emptier page's use)
+
+    def finest(limit: float, rest: float, bound: bool):
+        for k in scales:
+            if bound and not least(k) and k != scales[0]:
+                return None
+            if drawn(k) + rest + LEVER_SPARE <= limit:
+                return k
+        return None
+
+    k = finest(room, first + between + second, True)
+    if k is not None:
+        options.append((True, 0, -k, "rest", k, 1.0))
+    k = finest(room, first - legend, True)
+    if k is not None:
+        options.append(((second + legend) / page >= PAGE_USE, 1, -k, "split", k, min((second + legend) / page, 1.0)))
+    k = finest(page, first + between + second, False) or scales[-1]
+    whole = (first + drawn(k) + between + second) / page
+    options.append((used / page >= PAGE_USE and whole >= PAGE_USE, 1, -k, "page", k, min(used / page, whole)))
+    good = [o for o in options if o[0]]
+    best = min(good, key=lambda o: (o[1], o[2])) if good else max(options, key=lambda o: o[5])
+    return best[3], best[4]
+
+
+def _lever_section(doc: Document, graphical, lever, analytic, plans, key: str, heading, reset: str, mu_words: str):
+    """Set Joukowski's lever, the moments about the pole with M_b and the three methods' table where the force plans
+    end (:func:`_lever_layout`), the lever at the plate's k_v or, where that leaves a page nearly empty, at a coarser
+    round k_v of its own (its largest vector at least :data:`LEVER_LEAST`), stated under its heading and in the title
+    block of its page.  Returns (the lever drawn, the comparisons of the three methods)."""
+    from ..drawing.force_blocks import lever_svg
+    from ..forces.lever import joukowski_lever
+    from .typesetting import query_document
+
+    k_plate = lever.k_v
+    block = lever_svg(lever, doc.lang)
+    ys = [z.imag for z in lever.images.values()] + [0.0]
+    span = max(ys) - min(ys)  # [mm] at the plate's k_v: what scales
+    fixed = block.height - span
+    longest = max(abs(z) for z in lever.images.values())
+
+    def drawn(k: float) -> float:
+        return fixed + span * k_plate / k
+
+    def least(k: float) -> bool:
+        return longest * k_plate / k >= LEVER_LEAST - 1e-9
+
+    scales = [k_plate]
+    while len(scales) < 40:
+        scales.append(round_up(scales[-1] * 1.0001))
+    head, legend, moments, methods, comparisons = _lever_pieces(doc, lever, analytic, plans, key, heading, mu_words, k_plate)
+    # the room left under the plans and the pieces' heights, from one layout of the document so far
+    width = doc.page.text_width
+    image = doc.add_image(f"{key}-lever", block)
+    figure = f"#align(center)[#{image}]\n"
+    pieces = (("head", head), ("first", head + figure + legend), ("second", moments + methods), ("all", head + figure + legend + moments + methods))
+    sizes = ", ".join(f"{name}: measure(block(width: {width}mm)[{markup}]).height.mm()" for name, markup in pieces)
+    start = len(doc.body)
+    doc.mark(f"{key}-lever-room", solid=True)
+    doc.body.append(f"#context [#metadata((name: \"{key}-lever-sizes\", {sizes})) <plans-mark>]\n")
+    try:
+        marks = {m["name"]: m for m in query_document(doc.source(), doc.images, "<plans-mark>")}
+    finally:
+        del doc.body[start:]
+    top, page = doc.page.margins[2], doc.page.text_height
+    room = top + page - marks[f"{key}-lever-room"]["y"] - 4.0  # (the spacing above the section's heading)
+    h = marks[f"{key}-lever-sizes"]
+    drawn_plate = drawn(k_plate)
+    first, second = h["first"] - drawn_plate, h["second"]
+    legend_height = first - h["head"]  # with its spacing
+    between = h["all"] - h["first"] - h["second"]  # the spacing between the two
+    layout, k = _lever_layout(room, page, first, between, second, drawn, scales, least, legend_height)
+    for _ in range(8):  # drawn at k: a round step coarser while the drawing runs over what was reckoned
+        if k != lever.k_v:
+            lever = joukowski_lever(graphical, k_v=k)
+            block = lever_svg(lever, doc.lang)
+        if block.height <= drawn(k) + 0.5 or k == scales[-1]:
+            break
+        k = scales[scales.index(k) + 1]
+    head, legend, moments, methods, comparisons = _lever_pieces(doc, lever, analytic, plans, key, heading, mu_words, k_plate)
+    if layout == "page":
+        doc.body.append("#pagebreak(weak: true)\n")
+    doc.body.append(head)
+    if k != k_plate:  # the title block of the lever's page states its k_v
+        _scale_note(doc, f"{term('joukowski_lever', doc.lang)}: $k_{{v}}$ = {_scale(k)} (m/s)/mm")
+    doc.figure(f"{key}-lever", block)
+    doc.body.append(reset + "\n")
+    if layout == "split":  # the legend with the tables, over the page
+        doc.body.append("#pagebreak(weak: true)\n")
+    doc.body.append(legend)
+    doc.body.append(moments)
+    if methods:
+        doc.body.append(methods)
+    return lever, comparisons
 
 
 def _body_kinds(plans) -> list[str]:
