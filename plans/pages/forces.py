@@ -696,8 +696,9 @@ def _table(doc: Document, rows, aligns: str, heading: str | None = None) -> str:
             f"table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]]\n")
 
 
-def _legend(doc: Document, key: str, kinds, lang: str) -> str:
-    """The legend: each kind's sample (drawn) and its words (set), two columns of rows."""
+def _legend(doc: Document, key: str, kinds, lang: str, column: bool = False) -> str:
+    """The legend: each kind's sample (drawn) and its words (set), two columns of rows (*column*: one, to stand
+    beside a drawing)."""
     from ..drawing.force_blocks import force_key_svg
     from ..drawing.force_drawing import FORCE_LEGEND
 
@@ -705,7 +706,7 @@ def _legend(doc: Document, key: str, kinds, lang: str) -> str:
     for kind in kinds:
         words = term("construction_line", lang) if kind == "construction" else term("lever_arm_rule", lang) if kind == "arm" else _lower(term(FORCE_LEGEND[kind], lang))
         cells.append(f"[#{doc.add_image(f'{key}-key-{kind}', force_key_svg(kind))}], [#text(size: {SMALL_PT}pt)[{_words(doc, words)}]]")
-    columns = 4 if len(kinds) > 2 else 2
+    columns = 4 if len(kinds) > 2 and not column else 2
     sizes = ", ".join(["auto", "1fr"] * (columns // 2))
     return f"#grid(columns: ({sizes}), column-gutter: 2mm, row-gutter: 1.6mm, align: left + horizon, {', '.join(cells)})\n"
 
@@ -876,6 +877,10 @@ LEVER_LEAST = 60.0
 PAGE_USE = 0.5
 #: room [mm] kept free under what a page is reckoned to hold (the typesetter's spacing between blocks)
 LEVER_SPARE = 1.5
+#: the width [mm] of the lever's legend set in a column beside it
+LEGEND_COLUMN = 58.0
+#: the spacing [mm] above the lever's heading where it follows the force plans on their page
+LEVER_ABOVE = 4.0
 
 
 def _captured(doc: Document, write) -> str:
@@ -910,8 +915,8 @@ def _lever_pieces(doc: Document, lever, analytic, plans, key: str, heading, mu_w
 
 
 def _lever_layout(room: float, page: float, first: float, between: float, second: float, drawn, scales, least,
-                  legend: float = 0.0) -> tuple[str, float]:
-    """(layout, k_v): where the lever section goes and at which scale, from the heights [mm] the typesetter measured.
+                  legend: float = 0.0, with_legend=None) -> tuple[str, float, float]:
+    """(layout, k_v, the height [mm] the lever may take there: with its legend, or alone on ``"split"``): where the lever section goes and at which scale, from the heights [mm] the typesetter measured.
 
     *room*: what is left of the page the force plans end on; *page*: a page's text height; *first*: the heading and
     the legend (the lever's drawing, *drawn(k)* high at k_v = k, between them); *second*: the moments about the pole
@@ -919,31 +924,37 @@ def _lever_layout(room: float, page: float, first: float, between: float, second
     plate's first; *least(k)*: whether the lever's largest vector keeps :data:`LEVER_LEAST` at k.  Layouts:
     ``"rest"`` (all of it under the plans), ``"split"`` (the lever under the plans, its legend (*legend* high, in
     *first*) and tables on the next page),
-    ``"page"`` (all of it from a new page).  The first of them that leaves no page under :data:`PAGE_USE` used, with
+    ``"page"`` (all of it from a new page); *with_legend(k)*, where given, the height of the lever with its legend
+    (beside it where that is lower) in place of *drawn(k)* + *legend*.  The first of them that leaves no page under :data:`PAGE_USE` used, with
     the lever drawn largest; else the one whose emptier page is fullest."""
     used = page - room  # of the plans' page
+    room -= LEVER_ABOVE
     options = []  # (every page used at least PAGE_USE, pages added, -k, layout, k, the emptier page's use)
 
-    def finest(limit: float, rest: float, bound: bool):
+    def lever(k: float) -> float:  # the lever and its legend
+        return with_legend(k) if with_legend is not None else drawn(k) + legend
+
+    def finest(limit: float, rest: float, bound: bool, height=lever):
         for k in scales:
             if bound and not least(k) and k != scales[0]:
                 return None
-            if drawn(k) + rest + LEVER_SPARE <= limit:
+            if height(k) + rest + LEVER_SPARE <= limit:
                 return k
         return None
 
-    k = finest(room, first + between + second, True)
+    head = first - legend
+    k = finest(room, head + between + second, True)
     if k is not None:
-        options.append((True, 0, -k, "rest", k, 1.0))
-    k = finest(room, first - legend, True)
+        options.append((True, 0, -k, "rest", k, 1.0, room - head - between - second - LEVER_SPARE))
+    k = finest(room, head, True, drawn)
     if k is not None:
-        options.append(((second + legend) / page >= PAGE_USE, 1, -k, "split", k, min((second + legend) / page, 1.0)))
-    k = finest(page, first + between + second, False) or scales[-1]
-    whole = (first + drawn(k) + between + second) / page
-    options.append((used / page >= PAGE_USE and whole >= PAGE_USE, 1, -k, "page", k, min(used / page, whole)))
+        options.append(((second + legend) / page >= PAGE_USE, 1, -k, "split", k, min((second + legend) / page, 1.0), room - head - LEVER_SPARE))
+    k = finest(page, head + between + second, False) or scales[-1]
+    whole = (head + lever(k) + between + second) / page
+    options.append((used / page >= PAGE_USE and whole >= PAGE_USE, 1, -k, "page", k, min(used / page, whole), page - head - between - second - LEVER_SPARE))
     good = [o for o in options if o[0]]
-    best = min(good, key=lambda o: (o[1], o[2])) if good else max(options, key=lambda o: o[5])
-    return best[3], best[4]
+    best = min(good, key=lambda o: (o[1], -o[2])) if good else max(options, key=lambda o: o[5])  # the lever largest
+    return best[3], best[4], best[6]
 
 
 def _lever_section(doc: Document, graphical, lever, analytic, plans, key: str, heading, reset: str, mu_words: str):
@@ -976,8 +987,10 @@ def _lever_section(doc: Document, graphical, lever, analytic, plans, key: str, h
     width = doc.page.text_width
     image = doc.add_image(f"{key}-lever", block)
     figure = f"#align(center)[#{image}]\n"
-    pieces = (("head", head), ("first", head + figure + legend), ("second", moments + methods), ("all", head + figure + legend + moments + methods))
-    sizes = ", ".join(f"{name}: measure(block(width: {width}mm)[{markup}]).height.mm()" for name, markup in pieces)
+    column = _legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], doc.lang, column=True)
+    pieces = (("head", head), ("column", f"#box[{column}]"), ("first", head + figure + legend), ("second", moments + methods), ("all", head + figure + legend + moments + methods))
+    sizes = ", ".join(f"{name}: measure(block(width: {width if name != 'column' else LEGEND_COLUMN}mm)[{markup}]).height.mm()"
+                      for name, markup in pieces)
     start = len(doc.body)
     doc.mark(f"{key}-lever-room", solid=True)
     doc.body.append(f"#context [#metadata((name: \"{key}-lever-sizes\", {sizes})) <plans-mark>]\n")
@@ -986,31 +999,54 @@ def _lever_section(doc: Document, graphical, lever, analytic, plans, key: str, h
     finally:
         del doc.body[start:]
     top, page = doc.page.margins[2], doc.page.text_height
-    room = top + page - marks[f"{key}-lever-room"]["y"] - 4.0  # (the spacing above the section's heading)
+    room = top + page - marks[f"{key}-lever-room"]["y"]
     h = marks[f"{key}-lever-sizes"]
     drawn_plate = drawn(k_plate)
     first, second = h["first"] - drawn_plate, h["second"]
     legend_height = first - h["head"]  # with its spacing
     between = h["all"] - h["first"] - h["second"]  # the spacing between the two
-    layout, k = _lever_layout(room, page, first, between, second, drawn, scales, least, legend_height)
-    for _ in range(8):  # drawn at k: a round step coarser while the drawing runs over what was reckoned
-        if k != lever.k_v:
+    spans_x = [z.real for z in lever.images.values()] + [0.0]
+    across = max(spans_x) - min(spans_x)
+    fixed_w = block.width - across
+
+    def beside(k: float) -> bool:  # the legend in a column beside the lever, where the page is wide enough
+        return fixed_w + across * k_plate / k + GUTTER + LEGEND_COLUMN <= width
+
+    def with_legend(k: float) -> float:
+        return min(drawn(k) + legend_height, max(drawn(k), h["column"]) + 1.0 if beside(k) else math.inf)
+
+    layout, k, allowed = _lever_layout(room, page, first, between, second, drawn, scales, least, legend_height, with_legend)
+    def taken(block) -> float:  # the height [mm] the lever drawn (with its legend, but on a "split") takes
+        if layout == "split":
+            return block.height
+        stacked = block.height + legend_height
+        return min(stacked, max(block.height, h["column"]) + 1.0) if beside(k) else stacked
+
+    for _ in range(4):  # drawn at k: a round step coarser while the drawing runs over the room it has (its labels
+        if k != lever.k_v:  # need more of it than reckoned), as long as its largest vector keeps its least size
             lever = joukowski_lever(graphical, k_v=k)
             block = lever_svg(lever, doc.lang)
-        if block.height <= drawn(k) + 0.5 or k == scales[-1]:
+        step = scales.index(k) + 1
+        if taken(block) <= allowed + 0.5 or step >= len(scales) or not least(scales[step]):
             break
-        k = scales[scales.index(k) + 1]
+        k = scales[step]
     head, legend, moments, methods, comparisons = _lever_pieces(doc, lever, analytic, plans, key, heading, mu_words, k_plate)
     if layout == "page":
         doc.body.append("#pagebreak(weak: true)\n")
     doc.body.append(head)
     if k != k_plate:  # the title block of the lever's page states its k_v
         _scale_note(doc, f"{term('joukowski_lever', doc.lang)}: $k_{{v}}$ = {_scale(k)} (m/s)/mm")
-    doc.figure(f"{key}-lever", block)
-    doc.body.append(reset + "\n")
-    if layout == "split":  # the legend with the tables, over the page
-        doc.body.append("#pagebreak(weak: true)\n")
-    doc.body.append(legend)
+    if layout != "split" and beside(k) and max(block.height, h["column"]) + 1.0 < block.height + legend_height:
+        column = _legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], doc.lang, column=True)
+        doc.body.append(f"#grid(columns: (auto, {LEGEND_COLUMN}mm), column-gutter: {GUTTER}mm, align: horizon + left, "
+                        f"{doc.add_image(f'{key}-lever', block)}, [{column}])\n")
+        doc.body.append(reset + "\n")
+    else:
+        doc.figure(f"{key}-lever", block)
+        doc.body.append(reset + "\n")
+        if layout == "split":  # the legend with the tables, over the page
+            doc.body.append("#pagebreak(weak: true)\n")
+        doc.body.append(legend)
     doc.body.append(moments)
     if methods:
         doc.body.append(methods)
