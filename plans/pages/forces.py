@@ -280,10 +280,11 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
     return mu, plans, blocks, min(columns, len(plans.plans))
 
 
-def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, k_plate: float | None = None):
+def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, k_plate: float | None = None, skip: int = 0):
     """(k_l [m/mm], block): the free bodies in one row, two or a grid, at the plate's *k_plate* [m/mm] when they fit
     *box* at it in one of those arrangements (the plate's one k_l on every page), else at the round k_l that draws
-    them largest within *box* (coarser than the plate's: the page states it)."""
+    them largest within *box* (coarser than the plate's: the page states it); *skip*: how many of the arrangements that
+    fit at the plate's k_l to pass over (a taller one, to fill a page the force plans do not follow onto)."""
     from ..drawing.force_blocks import free_bodies_svg
 
     count = len(plans.plans)
@@ -299,6 +300,7 @@ def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, 
     def fits(block) -> bool:
         return block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5
 
+    passing = skip > 0
     if k_plate:
         # the plate's k_l in the first arrangement it fits: rows of bodies, or columns side by side (a tall body
         # beside a column of small ones)
@@ -308,7 +310,11 @@ def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, 
         for per_row, columns in tried:
             block = free_bodies_svg(plans, k_plate, lang, per_row, drawn, columns)
             if fits(block):
-                return k_plate, block
+                if skip <= 0:
+                    return k_plate, block
+                skip -= 1
+        if passing:
+            return None
     best = None
     for per_row in arrangements[:2]:
         rows = [spans[k:k + per_row] for k in range(0, count, per_row)]
@@ -788,6 +794,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     if plate_kl is not None:
         doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])")  # the title block states the free bodies' k_l
     _scale_note(doc, mu_words)
+    bodies_at = len(doc.body)
     doc.figure(f"{key}-free-bodies", free)
     doc.body.append(f"#metadata(none) <{key}-free-bodies>\n")
     pages.images[f"{key}-free-bodies"] = "free-bodies"
@@ -802,7 +809,9 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     doc.body.append(f"#grid(columns: (auto, auto), column-gutter: {GUTTER}mm, align: top + left,\n  [{given_data}],\n  [{given_loads_table}])\n")
     doc.body.append("".join(f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines))
 
+    doc.mark(f"{key}-bodies-end", solid=True)
     # 2. the force plans at one μ_F
+    doc.mark(f"{key}-plans-start")
     # where the free bodies end, kept with the first plan
     heading(f"{_lower(term('force_plans', lang))}; {mu_words}", new_page=False)
     _scale_note(doc, mu_words)
@@ -856,6 +865,8 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     kinds, closing = legend_kinds(plans.plans)
     doc.body.append("#v(2mm)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
 
+    if plate_kl is not None and not coarser:
+        _fill_bodies_page(doc, key, bodies_at, free, lambda: _free_bodies(plans, graphical, lang, names, box, plate_kl, skip=1))
     # 3. Joukowski's lever and the three methods
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
     pages.comparisons = comparisons
@@ -868,6 +879,29 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         doc.body.append("#v(4mm)")
         doc.body.append(_table(doc, _methods_table(comparisons, analytic, lang, plans, lever), "(left, right, right, right, right, right)", term("force_methods", lang)))
     return pages
+
+
+def _fill_bodies_page(doc: Document, key: str, at: int, block, taller) -> None:
+    """Where the force plans do not follow the free bodies onto their page and leave it less than :data:`PAGE_USE`
+    (and a margin) used, the free bodies in their next arrangement at the plate's k_l (*taller()*: (k_l, block) or None), when the
+    rest of that page holds what it adds (read from the laid-out document)."""
+    from .typesetting import query_document
+
+    marks = {m["name"]: m for m in query_document(doc.source(), doc.images, "<plans-mark>") if m["name"].startswith(key)}
+    end, plans = marks.get(f"{key}-bodies-end"), marks.get(f"{key}-plans-start")
+    if end is None or plans is None or plans["page"] == end["page"]:
+        return
+    top, page = doc.page.margins[2], doc.page.text_height
+    if (end["y"] - top) / page >= PAGE_USE + 0.1:  # (the mark stands a line's spacing under the last ink)
+        return
+    found = taller()
+    if found is None or found[1].height <= block.height:
+        return
+    if found[1].height - block.height > top + page - end["y"] - LEVER_ABOVE:
+        return
+    doc.body[at] = ""
+    doc.figure(f"{key}-free-bodies", found[1])
+    doc.body[at] = doc.body.pop()
 
 
 #: the least size [mm] of the lever's largest vector (from the pole to the image of the fastest point) when it is
