@@ -4,7 +4,7 @@ Matplotlib draws only the drawings (:mod:`plans.drawing.force_blocks`): the
 free bodies of the groups and of the driver at the plate's k_l (in a row, rows
 or columns, whichever fits; a coarser round k_l, stated in the title block,
 only where none does), each force plan at the position's one μ_F, Joukowski's
-lever at its velocity plan's k_v.  They are placed at 100 %, so the scale
+lever at its velocity plan's k_v (or a coarser one of its own, stated).  They are placed at 100 %, so the scale
 factors the pages state hold on paper.  Everything else is Typst's, in the
 reader's language: the headings (a group named as the course names it, "group
 3–4 (II₁)"), the input data of the force analysis (each link's m, centre of
@@ -31,7 +31,15 @@ its equations, a plan with its equations never split (all on the plans' page
 when keeping them there costs the plans at most :data:`EQUATION_COST` in μ_F);
 Joukowski's lever with the table of the three methods.  A section's heading is
 kept with what follows it; a title block states the free bodies' k_l on their
-page and the plate's on the pages after it.
+page and the plate's on the pages after it.  Where the plans leave the free
+bodies' page less than half used, the bodies take their next (taller)
+arrangement at the plate's k_l.  The lever, its moments about the pole with M_b
+and the methods' table go where the plans end, as the laid-out document shows
+(:func:`_lever_layout`): all under the plans, or the lever under them and its
+legend and tables over the page, or all from a new page, whichever leaves no
+page under half used; the lever at the plate's k_v or at a coarser round k_v
+of its own (its largest vector at least 60 mm), said under its heading and in
+its page's title block, its legend beside it where the page is wide enough.
 
 μ_F is found from geometry: the plans are constructed once at their own round
 scales, drawn once to learn what does not scale (labels, margins), and μ_F is
@@ -88,6 +96,8 @@ class ForcePages:
         What each drawing is: input key -> ``"free-bodies"``, ``"plan:<group>"``, ``"lever"``.
     comparisons : tuple
         :func:`plans.forces.compare.compare_forces` of the pages' plans and lever against the analytic values.
+    lever : plans.forces.lever.JoukowskiLever or None
+        The lever as drawn (at the plate's k_v or a coarser one of its own: its ``k_v``).
     """
 
     mu_F: float
