@@ -405,6 +405,13 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "рамо h: от p перпендикулярно на линията на действие; h > 0, когато силата върти около p обратно на часовниковата стрелка",
         "sl": "ročica h: iz p pravokotno na nosilko sile; h > 0, ko sila vrti okoli p v nasprotni smeri urinega kazalca",
     },
+    "lever_own_scale": {
+        "en": "the lever drawn at a scale of its own (the plate's velocity plans: {scale})",
+        "sr": "полуга нацртана у сопственој размери (планови брзина на листу: {scale})",
+        "ru": "рычаг построен в своём масштабе (планы скоростей на листе: {scale})",
+        "bg": "лостът е начертан в собствен мащаб (плановете на скоростите на листа: {scale})",
+        "sl": "vzvod narisan v lastnem merilu (načrti hitrosti na listu: {scale})",
+    },
     "lever_pair": {
         "en": "the couple as a pair of forces at {points}",
         "sr": "спрег као пар сила у {points}",

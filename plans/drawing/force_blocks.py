@@ -40,7 +40,8 @@ def force_plan_svg(plan, lang: str = "en") -> SvgBlock:
 
 
 def lever_svg(lever, lang: str = "en") -> SvgBlock:
-    """Joukowski's lever (:class:`plans.forces.lever.JoukowskiLever`), at its velocity plan's k_v."""
+    """Joukowski's lever (:class:`plans.forces.lever.JoukowskiLever`), at the k_v it was constructed at (its velocity
+    plan's, or one of its own: :func:`plans.forces.lever.joukowski_lever`)."""
     return sketched("lever", lambda s: draw_lever_into(s, lever, lang=lang, caption=False), lang)
 
 

@@ -143,12 +143,15 @@ class JoukowskiLever:
     crank_length: float | None
 
 
-def joukowski_lever(graphical) -> JoukowskiLever:
+def joukowski_lever(graphical, k_v: float | None = None) -> JoukowskiLever:
     """Joukowski's lever on a graphical solution's velocity plan, its loads from its acceleration plan.
 
     Parameters
     ----------
     graphical : plans.graphical.GraphicalSolution
+    k_v : float, optional
+        The lever's own scale [(m/s)/mm]: the velocity plan redrawn at it (every image from the pole times
+        k_v(plan)/k_v, the arms measured on the lever so drawn); by default the velocity plan's own.
 
     Raises
     ------
@@ -160,13 +163,17 @@ def joukowski_lever(graphical) -> JoukowskiLever:
     readings = PlanReadings(graphical)
     precision = graphical.precision
     plan = graphical.velocity_plan
-    images = {label: TURN * z for label, z in plan.images.items()}
+    k_v = readings.k_v if k_v is None else float(k_v)
+    if not (math.isfinite(k_v) and k_v > 0):
+        raise LeverError(f"{scene.source}: the lever's scale k_v must be a positive number of (m/s)/mm, not {k_v!r}")
+    redrawn = readings.k_v / k_v  # mm on the lever per mm of the velocity plan
+    images = {label: TURN * z * redrawn for label, z in plan.images.items()}
     links = {link: tuple(labels) for link, labels in plan.links.items()}
     loads = applied_loads(scene, readings)
 
     def place(body: str, local: complex, point: str | None, fallback: str) -> tuple[str, complex]:
         """(label, turned image) of the body's point; a label added to the images when the plan lacks it."""
-        turned = TURN * readings.image(body, local)
+        turned = TURN * readings.image(body, local) * redrawn
         if point is not None:
             for label in (image_label(point, body), image_label(point)):
                 if label in images and abs(images[label] - turned) <= 1e-9 * (1 + abs(turned)):
@@ -200,7 +207,7 @@ def joukowski_lever(graphical) -> JoukowskiLever:
         ends = _pair_points(scene, load.body)
         if ends is None:
             omega = readings.omega(load.body)
-            couples.append(LeverCouple(load.name, load.body, load.kind, float(load.moment), -float(load.moment) * omega / readings.k_v))
+            couples.append(LeverCouple(load.name, load.body, load.kind, float(load.moment), -float(load.moment) * omega / k_v))
             continue
         (name1, z1), (name2, z2) = ends
         d = readings.world(load.body, z2) - readings.world(load.body, z1)
@@ -233,7 +240,7 @@ def joukowski_lever(graphical) -> JoukowskiLever:
     f_b = -total / unit.arm
     balancing_force = on_lever("F_b", driver.link, "balancing", label, point, f_b * direction)
     balancing = f_b * length if length is not None else f_b
-    return JoukowskiLever(scene, readings.k_v, precision, images, links, loads, tuple(forces), tuple(couples), balancing_force, balancing, kind, length)
+    return JoukowskiLever(scene, k_v, precision, images, links, loads, tuple(forces), tuple(couples), balancing_force, balancing, kind, length)
 
 
 def _centre_label(load: AppliedLoad) -> str:

@@ -440,7 +440,7 @@ class Document:
             scale_text = self.words(";   ").join(scales) if scales else self.words("—")
         # a page that states a scale of its own (a force plans' μ_F) adds it here
         scale_text += ("#context { let page = here().page(); let notes = query(<plans-page-scale>).filter(m => m.location().page() == page);"
-                       " if notes.len() > 0 [;   #notes.first().value] }")
+                       " if notes.len() > 0 [;   #notes.map(m => m.value).dedup().join([;   ])] }")
         if self.per_position is not None:
             scale_text += " " + text("(" + term("scales_each_position", lang) + ")")
         if self.sheet_number is not None:

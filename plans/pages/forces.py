@@ -4,7 +4,7 @@ Matplotlib draws only the drawings (:mod:`plans.drawing.force_blocks`): the
 free bodies of the groups and of the driver at the plate's k_l (in a row, rows
 or columns, whichever fits; a coarser round k_l, stated in the title block,
 only where none does), each force plan at the position's one μ_F, Joukowski's
-lever at its velocity plan's k_v.  They are placed at 100 %, so the scale
+lever at its velocity plan's k_v (or a coarser one of its own, stated).  They are placed at 100 %, so the scale
 factors the pages state hold on paper.  Everything else is Typst's, in the
 reader's language: the headings (a group named as the course names it, "group
 3–4 (II₁)"), the input data of the force analysis (each link's m, centre of
@@ -31,7 +31,15 @@ its equations, a plan with its equations never split (all on the plans' page
 when keeping them there costs the plans at most :data:`EQUATION_COST` in μ_F);
 Joukowski's lever with the table of the three methods.  A section's heading is
 kept with what follows it; a title block states the free bodies' k_l on their
-page and the plate's on the pages after it.
+page and the plate's on the pages after it.  Where the plans leave the free
+bodies' page less than half used, the bodies take their next (taller)
+arrangement at the plate's k_l.  The lever, its moments about the pole with M_b
+and the methods' table go where the plans end, as the laid-out document shows
+(:func:`_lever_layout`): all under the plans, or the lever under them and its
+legend and tables over the page, or all from a new page, whichever leaves no
+page under half used; the lever at the plate's k_v or at a coarser round k_v
+of its own (its largest vector at least 60 mm), said under its heading and in
+its page's title block, its legend beside it where the page is wide enough.
 
 μ_F is found from geometry: the plans are constructed once at their own round
 scales, drawn once to learn what does not scale (labels, margins), and μ_F is
@@ -88,6 +96,8 @@ class ForcePages:
         What each drawing is: input key -> ``"free-bodies"``, ``"plan:<group>"``, ``"lever"``.
     comparisons : tuple
         :func:`plans.forces.compare.compare_forces` of the pages' plans and lever against the analytic values.
+    lever : plans.forces.lever.JoukowskiLever or None
+        The lever as drawn (at the plate's k_v or a coarser one of its own: its ``k_v``).
     """
 
     mu_F: float
@@ -95,6 +105,7 @@ class ForcePages:
     plans: object
     images: dict[str, str] = field(default_factory=dict)
     comparisons: tuple = ()
+    lever: object = None
 
 
 # --- numbers as a page writes them -----------------------------------------------------------
@@ -279,10 +290,11 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
     return mu, plans, blocks, min(columns, len(plans.plans))
 
 
-def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, k_plate: float | None = None):
+def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, k_plate: float | None = None, skip: int = 0):
     """(k_l [m/mm], block): the free bodies in one row, two or a grid, at the plate's *k_plate* [m/mm] when they fit
     *box* at it in one of those arrangements (the plate's one k_l on every page), else at the round k_l that draws
-    them largest within *box* (coarser than the plate's: the page states it)."""
+    them largest within *box* (coarser than the plate's: the page states it); *skip*: how many of the arrangements that
+    fit at the plate's k_l to pass over (a taller one, to fill a page the force plans do not follow onto)."""
     from ..drawing.force_blocks import free_bodies_svg
 
     count = len(plans.plans)
@@ -298,6 +310,7 @@ def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, 
     def fits(block) -> bool:
         return block.width <= box[0] + 0.5 and block.height <= box[1] + 0.5
 
+    passing = skip > 0
     if k_plate:
         # the plate's k_l in the first arrangement it fits: rows of bodies, or columns side by side (a tall body
         # beside a column of small ones)
@@ -307,7 +320,11 @@ def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, 
         for per_row, columns in tried:
             block = free_bodies_svg(plans, k_plate, lang, per_row, drawn, columns)
             if fits(block):
-                return k_plate, block
+                if skip <= 0:
+                    return k_plate, block
+                skip -= 1
+        if passing:
+            return None
     best = None
     for per_row in arrangements[:2]:
         rows = [spans[k:k + per_row] for k in range(0, count, per_row)]
@@ -695,8 +712,9 @@ def _table(doc: Document, rows, aligns: str, heading: str | None = None) -> str:
             f"table.hline(stroke: 0.7pt), " + ", table.hline(stroke: 0.4pt), ".join([body[0], ", ".join(body[1:])]) + ", table.hline(stroke: 0.7pt))]]\n")
 
 
-def _legend(doc: Document, key: str, kinds, lang: str) -> str:
-    """The legend: each kind's sample (drawn) and its words (set), two columns of rows."""
+def _legend(doc: Document, key: str, kinds, lang: str, column: bool = False) -> str:
+    """The legend: each kind's sample (drawn) and its words (set), two columns of rows (*column*: one, to stand
+    beside a drawing)."""
     from ..drawing.force_blocks import force_key_svg
     from ..drawing.force_drawing import FORCE_LEGEND
 
@@ -704,7 +722,7 @@ def _legend(doc: Document, key: str, kinds, lang: str) -> str:
     for kind in kinds:
         words = term("construction_line", lang) if kind == "construction" else term("lever_arm_rule", lang) if kind == "arm" else _lower(term(FORCE_LEGEND[kind], lang))
         cells.append(f"[#{doc.add_image(f'{key}-key-{kind}', force_key_svg(kind))}], [#text(size: {SMALL_PT}pt)[{_words(doc, words)}]]")
-    columns = 4 if len(kinds) > 2 else 2
+    columns = 4 if len(kinds) > 2 and not column else 2
     sizes = ", ".join(["auto", "1fr"] * (columns // 2))
     return f"#grid(columns: ({sizes}), column-gutter: 2mm, row-gutter: 1.6mm, align: left + horizon, {', '.join(cells)})\n"
 
@@ -786,6 +804,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     if plate_kl is not None:
         doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])")  # the title block states the free bodies' k_l
     _scale_note(doc, mu_words)
+    bodies_at = len(doc.body)
     doc.figure(f"{key}-free-bodies", free)
     doc.body.append(f"#metadata(none) <{key}-free-bodies>\n")
     pages.images[f"{key}-free-bodies"] = "free-bodies"
@@ -800,7 +819,9 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     doc.body.append(f"#grid(columns: (auto, auto), column-gutter: {GUTTER}mm, align: top + left,\n  [{given_data}],\n  [{given_loads_table}])\n")
     doc.body.append("".join(f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines))
 
+    doc.mark(f"{key}-bodies-end", solid=True)
     # 2. the force plans at one μ_F
+    doc.mark(f"{key}-plans-start")
     # where the free bodies end, kept with the first plan
     heading(f"{_lower(term('force_plans', lang))}; {mu_words}", new_page=False)
     _scale_note(doc, mu_words)
@@ -854,26 +875,226 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     kinds, closing = legend_kinds(plans.plans)
     doc.body.append("#v(2mm)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
 
+    if plate_kl is not None and not coarser:
+        _fill_bodies_page(doc, key, bodies_at, free, lambda: _free_bodies(plans, graphical, lang, names, box, plate_kl, skip=1))
     # 3. Joukowski's lever and the three methods
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
     pages.comparisons = comparisons
     if lever is not None:
-        # where the plans end, its heading kept with the lever
-        heading(term("joukowski_lever", lang), new_page=False, under=[
-            (f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}", SMALL_PT),
-            (r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + " = 0$", TEXT_PT)])
-        doc.figure(f"{key}-lever", lever_svg(lever, lang))
-        doc.body.append(reset + "\n")
+        lever, comparisons = _lever_section(doc, graphical, lever, analytic, plans, key, heading, reset, mu_words)
         pages.images[f"{key}-lever"] = "lever"
-        doc.body.append(_legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang))
-        # the moments about the pole and the balancing moment they give, on one page
-        doc.body.append("#block(breakable: false)[" + _table(doc, _lever_rows(lever, lang), "(left, left, right, right, right, left)", term("lever_moments", lang))
-                        + "".join(doc.line_markup(_newtons(line, lang), TEXT_PT) + "\n" for line in _lever_result(lever, lang)) + "]\n")
+        pages.lever = lever
+        pages.comparisons = comparisons
     elif comparisons:
         doc.body.append("#v(4mm)")
-    if comparisons:
         doc.body.append(_table(doc, _methods_table(comparisons, analytic, lang, plans, lever), "(left, right, right, right, right, right)", term("force_methods", lang)))
     return pages
+
+
+def _fill_bodies_page(doc: Document, key: str, at: int, block, taller) -> None:
+    """Where the force plans do not follow the free bodies onto their page and leave it less than :data:`PAGE_USE`
+    (and a margin) used, the free bodies in their next arrangement at the plate's k_l (*taller()*: (k_l, block) or None), when the
+    rest of that page holds what it adds (read from the laid-out document)."""
+    from .typesetting import query_document
+
+    marks = {m["name"]: m for m in query_document(doc.source(), doc.images, "<plans-mark>") if m["name"].startswith(key)}
+    end, plans = marks.get(f"{key}-bodies-end"), marks.get(f"{key}-plans-start")
+    if end is None or plans is None or plans["page"] == end["page"]:
+        return
+    top, page = doc.page.margins[2], doc.page.text_height
+    if (end["y"] - top) / page >= PAGE_USE + 0.1:  # (the mark stands a line's spacing under the last ink)
+        return
+    found = taller()
+    if found is None or found[1].height <= block.height:
+        return
+    if found[1].height - block.height > top + page - end["y"] - LEVER_ABOVE:
+        return
+    doc.body[at] = ""
+    doc.figure(f"{key}-free-bodies", found[1])
+    doc.body[at] = doc.body.pop()
+
+
+#: the least size [mm] of the lever's largest vector (from the pole to the image of the fastest point) when it is
+#: drawn at a scale of its own to fit its page
+LEVER_LEAST = 60.0
+#: the share of its text height a page of the force pages fills at least (not the handout's last section's only page)
+PAGE_USE = 0.5
+#: room [mm] kept free under what a page is reckoned to hold (the typesetter's spacing between blocks)
+LEVER_SPARE = 1.5
+#: the width [mm] of the lever's legend set in a column beside it
+LEGEND_COLUMN = 58.0
+#: the spacing [mm] above the lever's heading where it follows the force plans on their page
+LEVER_ABOVE = 4.0
+
+
+def _captured(doc: Document, write) -> str:
+    """The markup *write()* appends to *doc*'s body, taken back out (to measure it or place it later)."""
+    start = len(doc.body)
+    write()
+    markup = "".join(doc.body[start:])
+    del doc.body[start:]
+    return markup
+
+
+def _lever_pieces(doc: Document, lever, analytic, plans, key: str, heading, mu_words: str, k_plate: float):
+    """The lever section's markup in its four pieces (heading with the scale lines; the lever's legend; the moments
+    about the pole with M_b; the three methods' table) and the comparisons, for *lever* drawn at its k_v."""
+    from ..forces.compare import compare_forces
+
+    lang = doc.lang
+    own = ""
+    if abs(lever.k_v - k_plate) > 1e-12 * k_plate:  # the lever at a scale of its own: said on the page
+        own = ";  " + term("lever_own_scale", lang).format(scale=f"$k_{{v}}$ = {_scale(k_plate)} (m/s)/mm")
+    head = _captured(doc, lambda: heading(term("joukowski_lever", lang), new_page=False, under=[
+        (f"$k_{{v}}$ = {_scale(lever.k_v)} (m/s)/mm;  {term('lever_turned_ccw', lang)}{own}", SMALL_PT)]))
+    legend = _legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], lang)
+    # the lever's equation over the table of its terms
+    equation = r"$ΣM_{\mathrm{p}} = ΣF \cdot h + " + _math("F_b", lang)[1:-1] + r" \cdot " + _math("h_b", lang)[1:-1] + " = 0$"
+    moments = ("#block(breakable: false)[" + doc.line_markup(_newtons(equation, lang), TEXT_PT) + "\n" + _table(doc, _lever_rows(lever, lang), "(left, left, right, right, right, left)", term("lever_moments", lang))
+               + "".join(doc.line_markup(_newtons(line, lang), TEXT_PT) + "\n" for line in _lever_result(lever, lang)) + "]\n")
+    comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
+    methods = (_table(doc, _methods_table(comparisons, analytic, lang, plans, lever), "(left, right, right, right, right, right)", term("force_methods", lang))
+               if comparisons else "")
+    return head, legend, moments, methods, comparisons
+
+
+def _lever_layout(room: float, page: float, first: float, between: float, second: float, drawn, scales, least,
+                  legend: float = 0.0, with_legend=None) -> tuple[str, float, float]:
+    """(layout, k_v, the height [mm] the lever may take there: with its legend, or alone on ``"split"``): where the lever section goes and at which scale, from the heights [mm] the typesetter measured.
+
+    *room*: what is left of the page the force plans end on; *page*: a page's text height; *first*: the heading and
+    the legend (the lever's drawing, *drawn(k)* high at k_v = k, between them); *second*: the moments about the pole
+    with M_b and the methods' table; *between*: the space between the two; *scales*: the round k_v to try, the
+    plate's first; *least(k)*: whether the lever's largest vector keeps :data:`LEVER_LEAST` at k.  Layouts:
+    ``"rest"`` (all of it under the plans), ``"split"`` (the lever under the plans, its legend (*legend* high, in
+    *first*) and tables on the next page),
+    ``"page"`` (all of it from a new page); *with_legend(k)*, where given, the height of the lever with its legend
+    (beside it where that is lower) in place of *drawn(k)* + *legend*.  The first of them that leaves no page under :data:`PAGE_USE` used, with
+    the lever drawn largest; else the one whose emptier page is fullest."""
+    used = page - room  # of the plans' page
+    room -= LEVER_ABOVE
+    options = []  # (every page used at least PAGE_USE, pages added, -k, layout, k, the emptier page's use)
+
+    def lever(k: float) -> float:  # the lever and its legend
+        return with_legend(k) if with_legend is not None else drawn(k) + legend
+
+    def finest(limit: float, rest: float, bound: bool, height=lever):
+        for k in scales:
+            if bound and not least(k) and k != scales[0]:
+                return None
+            if height(k) + rest + LEVER_SPARE <= limit:
+                return k
+        return None
+
+    head = first - legend
+    k = finest(room, head + between + second, True)
+    if k is not None:
+        options.append((True, 0, -k, "rest", k, 1.0, room - head - between - second - LEVER_SPARE))
+    k = finest(room, head, True, drawn)
+    if k is not None:
+        options.append(((second + legend) / page >= PAGE_USE, 1, -k, "split", k, min((second + legend) / page, 1.0), room - head - LEVER_SPARE))
+    k = finest(page, head + between + second, False) or scales[-1]
+    whole = (head + lever(k) + between + second) / page
+    options.append((used / page >= PAGE_USE and whole >= PAGE_USE, 1, -k, "page", k, min(used / page, whole), page - head - between - second - LEVER_SPARE))
+    good = [o for o in options if o[0]]
+    best = min(good, key=lambda o: (o[1], -o[2])) if good else max(options, key=lambda o: o[5])  # the lever largest
+    return best[3], best[4], best[6]
+
+
+def _lever_section(doc: Document, graphical, lever, analytic, plans, key: str, heading, reset: str, mu_words: str):
+    """Set Joukowski's lever, the moments about the pole with M_b and the three methods' table where the force plans
+    end (:func:`_lever_layout`), the lever at the plate's k_v or, where that leaves a page nearly empty, at a coarser
+    round k_v of its own (its largest vector at least :data:`LEVER_LEAST`), stated under its heading and in the title
+    block of its page.  Returns (the lever drawn, the comparisons of the three methods)."""
+    from ..drawing.force_blocks import lever_svg
+    from ..forces.lever import joukowski_lever
+    from .typesetting import query_document
+
+    k_plate = lever.k_v
+    block = lever_svg(lever, doc.lang)
+    ys = [z.imag for z in lever.images.values()] + [0.0]
+    span = max(ys) - min(ys)  # [mm] at the plate's k_v: what scales
+    fixed = block.height - span
+    longest = max(abs(z) for z in lever.images.values())
+
+    def drawn(k: float) -> float:
+        return fixed + span * k_plate / k
+
+    def least(k: float) -> bool:
+        return longest * k_plate / k >= LEVER_LEAST - 1e-9
+
+    scales = [k_plate]
+    while len(scales) < 40:
+        scales.append(round_up(scales[-1] * 1.0001))
+    head, legend, moments, methods, comparisons = _lever_pieces(doc, lever, analytic, plans, key, heading, mu_words, k_plate)
+    # the room left under the plans and the pieces' heights, from one layout of the document so far
+    width = doc.page.text_width
+    image = doc.add_image(f"{key}-lever", block)
+    figure = f"#align(center)[#{image}]\n"
+    column = _legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], doc.lang, column=True)
+    pieces = (("head", head), ("column", f"#box[{column}]"), ("first", head + figure + legend), ("second", moments + methods), ("all", head + figure + legend + moments + methods))
+    sizes = ", ".join(f"{name}: measure(block(width: {width if name != 'column' else LEGEND_COLUMN}mm)[{markup}]).height.mm()"
+                      for name, markup in pieces)
+    start = len(doc.body)
+    doc.mark(f"{key}-lever-room", solid=True)
+    doc.body.append(f"#context [#metadata((name: \"{key}-lever-sizes\", {sizes})) <plans-mark>]\n")
+    try:
+        marks = {m["name"]: m for m in query_document(doc.source(), doc.images, "<plans-mark>")}
+    finally:
+        del doc.body[start:]
+    top, page = doc.page.margins[2], doc.page.text_height
+    room = top + page - marks[f"{key}-lever-room"]["y"]
+    h = marks[f"{key}-lever-sizes"]
+    drawn_plate = drawn(k_plate)
+    first, second = h["first"] - drawn_plate, h["second"]
+    legend_height = first - h["head"]  # with its spacing
+    between = h["all"] - h["first"] - h["second"]  # the spacing between the two
+    spans_x = [z.real for z in lever.images.values()] + [0.0]
+    across = max(spans_x) - min(spans_x)
+    fixed_w = block.width - across
+
+    def beside(k: float) -> bool:  # the legend in a column beside the lever, where the page is wide enough
+        return fixed_w + across * k_plate / k + GUTTER + LEGEND_COLUMN <= width
+
+    def with_legend(k: float) -> float:
+        return min(drawn(k) + legend_height, max(drawn(k), h["column"]) + 1.0 if beside(k) else math.inf)
+
+    layout, k, allowed = _lever_layout(room, page, first, between, second, drawn, scales, least, legend_height, with_legend)
+    def taken(block) -> float:  # the height [mm] the lever drawn (with its legend, but on a "split") takes
+        if layout == "split":
+            return block.height
+        stacked = block.height + legend_height
+        return min(stacked, max(block.height, h["column"]) + 1.0) if beside(k) else stacked
+
+    for _ in range(4):  # drawn at k: a round step coarser while the drawing runs over the room it has (its labels
+        if k != lever.k_v:  # need more of it than reckoned), as long as its largest vector keeps its least size
+            lever = joukowski_lever(graphical, k_v=k)
+            block = lever_svg(lever, doc.lang)
+        step = scales.index(k) + 1
+        if taken(block) <= allowed + 0.5 or step >= len(scales) or not least(scales[step]):
+            break
+        k = scales[step]
+    head, legend, moments, methods, comparisons = _lever_pieces(doc, lever, analytic, plans, key, heading, mu_words, k_plate)
+    if layout == "page":
+        doc.body.append("#pagebreak(weak: true)\n")
+    doc.body.append(head)
+    if k != k_plate:  # the title block of the lever's page states its k_v
+        _scale_note(doc, f"{term('joukowski_lever', doc.lang)}: $k_{{v}}$ = {_scale(k)} (m/s)/mm")
+    if layout != "split" and beside(k) and max(block.height, h["column"]) + 1.0 < block.height + legend_height:
+        column = _legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], doc.lang, column=True)
+        doc.body.append(f"#grid(columns: (auto, {LEGEND_COLUMN}mm), column-gutter: {GUTTER}mm, align: horizon + left, "
+                        f"{doc.add_image(f'{key}-lever', block)}, [{column}])\n")
+        doc.body.append(reset + "\n")
+    else:
+        doc.figure(f"{key}-lever", block)
+        doc.body.append(reset + "\n")
+        if layout == "split":  # the legend with the tables, over the page
+            doc.body.append("#pagebreak(weak: true)\n")
+        doc.body.append(legend)
+    doc.body.append(moments)
+    if methods:
+        doc.body.append(methods)
+    return lever, comparisons
 
 
 def _body_kinds(plans) -> list[str]:
