@@ -326,25 +326,33 @@ class Document:
                 column = (column + 1) % columns
         self.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 4mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
 
-    def equations(self, heading: str, steps, name, new_page: bool = False) -> None:
+    def equations(self, heading: str, steps, name, new_page: bool = False, similar=None) -> None:
         """The vector equations of the plans' steps under *heading*, with the note on the underlines: one block,
-        never parted from its heading."""
+        never parted from its heading; *similar*: step index -> the proportions (text) that place images by
+        similarity once that step is drawn, each a row after the step's (-1: before the first step)."""
         from .words import group_words
 
         if new_page and self.body:
             self.body.append("#pagebreak(weak: true)")
         rows = []
-        for step in steps:
-            if not step.equations:
-                continue
+        similar = similar or {}
+
+        def by_similarity(index: int) -> None:
+            for k, line in enumerate(similar.get(index, ())):
+                first = f"[{text(term('by_similarity', self.lang))}]" if k == 0 else "[]"
+                rows.append(f"{first}, [#text(style: \"italic\")[{self.words(line)}]], []")
+
+        by_similarity(-1)
+        for index, step in enumerate(steps):
             who = f"{term('driver', self.lang)}" if step.group == "driver" else group_words(step.group, self.lang)
-            for k, (eq, cond) in enumerate(step_lines(step, name)):
+            for k, (eq, cond) in enumerate(step_lines(step, name) if step.equations else ()):
                 first = f"[{text(who)}]" if k == 0 else "[]"
                 cond_cell = f"[${cond}$]" if cond else "[]"
                 rows.append(f"{first}, [${eq}$], {cond_cell}")
+            by_similarity(index)
         self.body.append(f"#block(breakable: false)[#heading(level: 2)[{self.words(heading)}]\n"
                          f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]\n\n"
-                         f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.3mm), align: left + horizon,\n  "
+                         f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.5mm), align: left + horizon,\n  "
                          + ",\n  ".join(rows) + ")]]\n")
 
     def table_code(self, rows, aligns: str = "(left, right, right, right, right)") -> str:

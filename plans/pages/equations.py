@@ -106,7 +106,9 @@ def _plain_math(part: str, name) -> str:
         ch = part[k]
         if ch.isspace():
             out.append(" ")
-        elif ch.isdigit() or ch in ".+-=()|,×·∥⊥":
+        elif ch in ",;":  # between conditions: the mark, then a word's space (``∥ CA,  a^t_CA ⊥ AC``)
+            out.append((ch if ch == "," else string(ch)) + " thick ")
+        elif ch.isdigit() or ch in ".+-=()|×·∥⊥":
             out.append({"·": " dot.op ", "×": " times ", "∥": " parallel ", "⊥": " perp ", "|": " |"}.get(ch, ch))
         else:
             out.append(string(ch))
