@@ -705,7 +705,7 @@ def _acceleration_room(doc, equations: float) -> float | None:
     those do not fit under the velocity plans; else None (a page of their own, the equations above)."""
     from .typesetting import query_document
 
-    doc.mark("velocity-end")
+    doc.mark("velocity-end", solid=True)
     end = next(m for m in query_document(doc.source(), doc.images, "<plans-mark>") if m["name"] == "velocity-end")
     top, height = doc.page.margins[2], doc.page.text_height
     left = height - (end["y"] - top) - 6.0
