@@ -350,10 +350,12 @@ class Document:
                 cond_cell = f"[${cond}$]" if cond else "[]"
                 rows.append(f"{first}, [${eq}$], {cond_cell}")
             by_similarity(index)
-        self.body.append(f"#block(breakable: false)[#heading(level: 2)[{self.words(heading)}]\n"
-                         f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]\n\n"
+        # the heading and the note kept with the table's first rows; the rows flow on over a page's end (a long set
+        # of equations fills the page it starts on)
+        self.body.append(f"#block(sticky: true)[#heading(level: 2)[{self.words(heading)}]\n"
+                         f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]]\n"
                          f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.5mm), align: left + horizon,\n  "
-                         + ",\n  ".join(rows) + ")]]\n")
+                         + ",\n  ".join(rows) + ")]\n")
 
     def table_code(self, rows, aligns: str = "(left, right, right, right, right)") -> str:
         """Rows of values as a Typst ``table(…)`` expression: the first row the header, in bold, between rules."""

@@ -255,6 +255,12 @@ def similarity_steps(graphical, kind: str) -> dict[int, list[str]]:
     return out
 
 
+def _proportions(doc, line: str) -> str:
+    """A line of :func:`plans.drawing.readings.similarity_lines` as markup: each proportion with its numbers one box
+    (a line breaks between a triangle's two, never inside one: ``f₄′ k′ / f₄′ π =`` at a line's end)."""
+    return ";  ".join(f"#box[{doc.words(part)}]" for part in line.split(";  "))
+
+
 def _equations_height(plan) -> float:
     """The height [mm] of a plan's vector equations under their heading (:meth:`Document.equations`), reckoned
     line by line."""
@@ -343,6 +349,7 @@ def build_handout(
     from ..compare import compare
     from ..graphical import construct
     from ..positions import at_page_precision, run_positions
+    from ..drawing.readings import similarity_lines
     from ..drawing.svgblocks import legend_svg, mechanism_svg, plan_svg, positions_svg
 
     say = progress or (lambda words: None)
@@ -610,16 +617,36 @@ def build_handout(
     # what a student measures on the plans of the chosen positions and what it gives (segment, mm, × k, = value)
     from ..drawing.readings import plan_readings
 
-    readings = []
+    readings = []  # (heading, rows, the proportions of the images that plan places by similarity, with numbers)
+    attached = set()
     for k in chosen or [sample.index]:
         h = here[k]
         where = f"{term('position', lang)} {h.index}: " if multi else ""
         for kind in ("velocity", "acceleration"):
             rows = plan_readings(h.graphical, kind, lang)
             if rows:
-                readings.append((f"{where}{term(kind + '_plan', lang)}: {term('readings', lang)}", rows))
-    if readings:
-        doc.tables(readings, aligns="(left, left, right, left, right)")
+                readings.append((f"{where}{term(kind + '_plan', lang)}: {term('readings', lang)}", rows, similarity_lines(h.graphical, kind)))
+                attached.add((h.index, kind))
+    if readings:  # (as Document.tables: two across, each whole; the proportions under their plan's readings)
+        parts = []
+        for heading, rows, lines in readings:
+            part = doc.table_markup(heading, rows, "(left, left, right, left, right)", full_width=True)
+            if lines:
+                said = term("by_similarity", lang)
+                part = (part[:-1] + f" \\\n#text(size: {SMALL_PT}pt)[{doc.words(said[0].upper() + said[1:] + ':')} "
+                        + " \\\n".join(_proportions(doc, line) for line in lines) + "]]")
+            parts.append(part)
+        doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (1fr, 1fr), column-gutter: {GUTTER}mm, row-gutter: 3mm, align: left + top,\n  "
+                        + ",\n  ".join(parts) + ")]\n")
+    # the proportions of the other positions' plans (those without readings), with their numbers: text that flows
+    # over a page's end, its heading kept with its first line
+    similar = [(f"{term('position', lang)} {h.index}, " if multi else "", kind, line) for h in here.values()
+               for kind in ("velocity", "acceleration") if (kind == "velocity" or h.index in acceleration_blocks) and (h.index, kind) not in attached
+               for line in similarity_lines(h.graphical, kind)]
+    if similar:
+        doc.body.append(f"#block(sticky: true, above: 3mm)[#text(weight: \"bold\", size: {SMALL_PT + 1}pt)[{doc.words(term('similar_images', lang))}]]\n")
+        doc.body.append(f"#text(size: {SMALL_PT}pt)[" + " \\\n".join(
+            doc.words(f"{where}{term(kind + '_plan', lang).lower()}:") + " " + _proportions(doc, line) for where, kind, line in similar) + "]\n")
 
     loops_of = [here[k] for k in chosen] or [sample]
     doc.section("loops")
@@ -751,6 +778,18 @@ def _fit_loops(doc) -> None:
                 return
         doc.loops_scale = 1.0
     used = (end["y"] - top) / height
+    if first is not None and first["page"] != end["page"] and used < LOOPS_FILL:
+        # what follows does not flow up: the loops' text a little larger, to fill their last page
+        length = (end["page"] - start["page"]) * height + (end["y"] - start["y"])
+        for target in (LOOPS_FILL + 0.04, LOOPS_FILL + 0.02):
+            scale = 1.0 + (target * height - (end["y"] - top)) / length
+            if not 1.0 < scale <= LOOPS_SCALE[1]:
+                continue
+            doc.loops_scale = round(scale, 3)
+            _, _, end_now, _ = measure()
+            if end_now["page"] == end["page"] and (end_now["y"] - top) / height >= LOOPS_FILL:
+                return
+        doc.loops_scale = 1.0
     if end["page"] == pages or used >= PAGE_USE_MIN or end["page"] == start["page"] or (first is not None and first["page"] == end["page"]):
         return
     length = (end["page"] - start["page"]) * height + (end["y"] - start["y"])  # the loops' run [mm]
@@ -769,6 +808,8 @@ def _fit_loops(doc) -> None:
 #: of it; the loops' text scales tried (smaller, not under :data:`LOOPS_SCALE`'s least) to let that block flow up
 LOOPS_FLOW_USE = 0.75
 LOOPS_FLOW_SCALES = (0.95, 0.9)
+#: the loops' last page, when what follows them starts a page, is filled at least this share by their text set larger
+LOOPS_FILL = 0.88
 
 
 #: a one-position handout's regions [mm]: the mechanism's height (at least, at most: what page 1 leaves under the
