@@ -337,18 +337,20 @@ class Document:
         rows = []
         similar = similar or {}
 
+        def group(who: str, cells) -> None:  # a group's rows kept on one page (its name a cell spanning them)
+            for k, cell in enumerate(cells):
+                rows.append((f"table.cell(rowspan: {len(cells)}, breakable: false)[{text(who)}], " if k == 0 else "") + cell)
+
         def by_similarity(index: int) -> None:
-            for k, line in enumerate(similar.get(index, ())):
-                first = f"[{text(term('by_similarity', self.lang))}]" if k == 0 else "[]"
-                rows.append(f"{first}, [#text(style: \"italic\")[{self.words(line)}]], []")
+            lines = similar.get(index, ())
+            if lines:
+                group(term("by_similarity", self.lang), [f"[#text(style: \"italic\")[{self.words(line)}]], []" for line in lines])
 
         by_similarity(-1)
         for index, step in enumerate(steps):
             who = f"{term('driver', self.lang)}" if step.group == "driver" else group_words(step.group, self.lang)
-            for k, (eq, cond) in enumerate(step_lines(step, name) if step.equations else ()):
-                first = f"[{text(who)}]" if k == 0 else "[]"
-                cond_cell = f"[${cond}$]" if cond else "[]"
-                rows.append(f"{first}, [${eq}$], {cond_cell}")
+            if step.equations:
+                group(who, [f"[${eq}$], " + (f"[${cond}$]" if cond else "[]") for eq, cond in step_lines(step, name)])
             by_similarity(index)
         # the heading and the note kept with the table's first rows; the rows flow on over a page's end (a long set
         # of equations fills the page it starts on)
