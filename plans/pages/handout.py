@@ -542,7 +542,7 @@ def build_handout(
 
     doc.section("velocity-equations")
     doc.equations(f"{term('vector_equations', lang)}: {term('velocity_plan', lang).lower()}", sample.graphical.velocity_plan.steps, name,
-                  similar=max((similarity_steps(h.graphical, "velocity") for h in here.values()), key=lambda s: sum(map(len, s.values()))))
+                  similar=max((similarity_steps(h.graphical, "velocity") for h in here.values()), key=lambda s: sum(map(len, s.values()))), flow=True)
     doc.section("velocity-plans")
     doc.headed_legend(term("velocity_plans", lang) + (f" ({term('each_from_its_pole', lang)})" if multi else ""),
                       (doc.scale_markup("k_v", plate["k_v"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT))
@@ -596,7 +596,7 @@ def build_handout(
         # the equations fill what the velocity plans leave (one position's: they head its plan's page); the plans
         # follow, their heading kept with them
         doc.equations(f"{term('vector_equations', lang)}: {term('acceleration_plan', lang).lower()}", here[chosen[0]].graphical.acceleration_plan.steps,
-                      name, new_page=not multi and not eq_under_v, similar=max((similarity_steps(here[k].graphical, "acceleration") for k in chosen), key=lambda s: sum(map(len, s.values()))))
+                      name, new_page=not multi and not eq_under_v, similar=max((similarity_steps(here[k].graphical, "acceleration") for k in chosen), key=lambda s: sum(map(len, s.values()))), flow=True)
         doc.section("acceleration-plans")
         doc.headed_legend(term("acceleration_plans", lang),
                           (doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT))
