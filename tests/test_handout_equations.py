@@ -79,3 +79,15 @@ def test_a_word_space_after_a_comma_between_conditions(lang):
     assert at, [w for _, _, w in words]
     gap = float(words[at[0] + 1][0]) - float(words[at[0]][1])
     assert gap >= 2.2, gap
+
+
+def test_the_images_by_similarity_are_written_with_their_numbers(six_bar_en):
+    """Under the plans' readings: ``bm / b e₅ = BM / BE:  bm = be₅ · BM / BE = … mm`` with the scene's BM = 800 mm and
+    AB = 450, AC = 600 mm (the six-bar's data), the product worked out (to the 0.1 mm written)."""
+    text = " ".join(six_bar_en.split())
+    for seg, given, whole in (("bm", 800.0, None), ("ab", 450.0, 600.0), ("b′ m′", 800.0, None), ("a′ b′", 450.0, 600.0)):
+        m = re.search(re.escape(seg) + r" = ([0-9.]+) · ([0-9.]+) / ([0-9.]+) = ([0-9.]+) mm", text)
+        assert m, seg
+        on_plan, real, base, result = map(float, m.groups())
+        assert real == given and (whole is None or base == whole), m.group(0)
+        assert abs(on_plan * real / base - result) <= 0.06, m.group(0)
