@@ -86,7 +86,7 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "Strukturna formula",
     },
     "vector_equations": {
-        "en": "Vector equations of the plans",
+        "en": "Vector equations",
         "sr": "Векторске једначине планова",
         "ru": "Векторные уравнения планов",
         "bg": "Векторни уравнения на плановете",
@@ -709,6 +709,7 @@ TERMS: dict[str, dict[str, str]] = {
     "index_number": {"en": "Student no.", "sr": "Бр. индекса", "ru": "№ зач. книжки", "bg": "Фак. №", "sl": "Vpisna št."},
     "similar_images": {"en": "Images by similarity", "sr": "Слике по сличности", "ru": "Изображения по подобию", "bg": "Образи по подобие",
                        "sl": "Slike po podobnosti"},
+    "by_similarity": {"en": "by similarity", "sr": "по сличности", "ru": "по подобию", "bg": "по подобие", "sl": "po podobnosti"},
     "student_group": {"en": "Group", "sr": "Група", "ru": "Группа", "bg": "Група", "sl": "Skupina"},
     "sheet": {"en": "Sheet", "sr": "Лист", "ru": "Лист", "bg": "Лист", "sl": "List"},
     "of_sheets": {"en": "of", "sr": "од", "ru": "из", "bg": "от", "sl": "od"},

@@ -231,7 +231,7 @@ def test_sheet_has_title_formula_equations_and_table(tmp_path):
     assert "Crank and slotted lever quick-return" in found  # the example's title
     # the structural formula as the course writes it: RPR is a group of class II, kind 3; RRP kind 2
     assert "Structural formula: I(1,2) → II3(3,4) → II2(5,6)" in found
-    assert "Vector equations of the plans: velocity plan" in found
+    assert "Vector equations: velocity plan" in found
     for cell in ("quantity", "graphical", "analytic", "rel. error"):
         assert cell in found
     write_drawings(F.quick_return(), tmp_path)

@@ -84,14 +84,14 @@ def test_quick_return_driver_line_and_modulus():
 
 
 def test_double_underline_rules_apart():
-    """The Typst source of a double underline: a thin second rule with a clear gap ≥ 0.6 pt below the first."""
+    """The Typst source of a double underline: a thin second rule with a clear gap ≥ 1.0 pt below the first."""
     import re
 
     src = twice("arrow(v)_(B)")
     stroke = float(re.search(r"stroke: \(bottom: ([0-9.]+)pt\)", src).group(1))
     offset = float(re.search(r"outset: \(bottom: ([0-9.]+)pt\)", src).group(1))
     assert stroke <= 0.5  # thin
-    assert offset - stroke / 2 >= 0.6  # the clear gap below the bounds of the first rule
+    assert offset - stroke / 2 >= 1.0  # the clear gap below the bounds of the first rule
     assert 'bottom-edge: "bounds"' in src and "$underline(arrow(v)_(B))$" in src
 
 
@@ -103,3 +103,47 @@ def test_legend_states_the_left_side_convention():
     for lang, w in words.items():
         assert w in term("underlines", lang)
     assert equation_math("a_C = a_B + a^n_CB + a^t_CB", condition="a^n_CB ∥ CB, a^t_CB ⊥ BC").startswith("arrow(a)_(C) = ")
+
+
+def _rules(body: str, dpi: int):
+    """The dark rows of the typeset double underline of *body* (9.5 pt, the pages' fonts) rendered at *dpi* by poppler:
+    (the grey profile of the columns under the symbol, rows from the top; the runs of rows dark across those columns)."""
+    import pathlib
+    import shutil
+    import subprocess
+    import tempfile
+
+    import numpy as np
+
+    from plans.pages.typesetting import FONT, MATH_FONT, compile_document
+
+    if shutil.which("pdftoppm") is None:
+        pytest.skip("poppler's pdftoppm renders the page")
+    src = (f'#set page(width: 40mm, height: 14mm, margin: 4mm)\n#set text(font: "{FONT}", size: 9.5pt)\n'
+           f'#show math.equation: set text(font: "{MATH_FONT}")\n${twice(body)}$\n')
+    with tempfile.TemporaryDirectory() as tmp:
+        d = pathlib.Path(tmp)
+        (d / "u.pdf").write_bytes(compile_document(src, {}, "pdf"))
+        subprocess.run(["pdftoppm", "-r", str(dpi), "-gray", str(d / "u.pdf"), str(d / "p")], check=True)
+        _, size, _, data = next(d.glob("p*.pgm")).read_bytes().split(b"\n", 3)
+    w, h = map(int, size.split())
+    img = np.frombuffer(data, dtype=np.uint8).reshape(h, w)
+    dark = (img < 128).sum(axis=1)
+    ruled = np.flatnonzero(dark >= 0.9 * dark.max())  # the rules: the longest dark rows
+    columns = np.flatnonzero((img[ruled] < 128).all(axis=0))  # the columns both rules cross
+    runs = np.split(ruled, np.flatnonzero(np.diff(ruled) > 1) + 1)
+    return img[:, columns].min(axis=1), [(int(r[0]), int(r[-1])) for r in runs]
+
+
+@pytest.mark.parametrize("body", ["arrow(v)_(B)", "arrow(a)^k_(E 5 E 6)", "ω_2 times O A", "arrow(v)_(A 4 A 3)"])
+def test_double_underline_typeset_two_rules_a_point_apart(body):
+    """On the typeset PDF (rendered at 1440 dpi: 20 px a point) the two rules of a double underline are two runs of
+    dark rows with a clear gap of at least 1.0 pt between them; at 150 dpi a row between them stays light (the paper
+    shows: two lines, not one thick bar)."""
+    _, runs = _rules(body, 1440)
+    assert len(runs) == 2, runs
+    gap_pt = (runs[1][0] - runs[0][1] - 1) * 72 / 1440
+    assert gap_pt >= 1.0, gap_pt
+    profile, runs = _rules(body, 150)
+    assert len(runs) == 2, runs
+    assert profile[runs[0][1] + 1:runs[1][0]].max() >= 200, profile[runs[0][0]:runs[1][1] + 1]

@@ -104,7 +104,7 @@ def test_a_one_position_handout_is_three_pages(single):
     assert "Mechanism" in first and "Velocity plans" in first and "Acceleration plans" in accel
     assert "Structural formula: I(1,2) → II2(3,4)" in first  # class II, 2nd kind (RRP)
     # the acceleration equations follow the velocity plans where the page has room, the plans on a page of their own
-    assert "Vector equations of the plans: velocity plan" in first and "Vector equations of the plans: acceleration plan" in first + accel
+    assert "Vector equations: velocity plan" in first and "Vector equations: acceleration plan" in first + accel
     # the tables flow on under the acceleration plan where its page has room
     assert "Graphical and analytic values" in accel + check and "rel. error" in accel + check
     assert "Analytic check: complex-number method" in check

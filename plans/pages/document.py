@@ -328,26 +328,39 @@ class Document:
                 column = (column + 1) % columns
         self.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 4mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
 
-    def equations(self, heading: str, steps, name, new_page: bool = False) -> None:
+    def equations(self, heading: str, steps, name, new_page: bool = False, similar=None, flow: bool = False) -> None:
         """The vector equations of the plans' steps under *heading*, with the note on the underlines: one block,
-        never parted from its heading."""
+        never parted from its heading (*flow*: the rows flow on over a page's end, a group's whole, the heading kept
+        with the first); *similar*: step index -> the proportions (text) that place images by
+        similarity once that step is drawn, each a row after the step's (-1: before the first step)."""
         from .words import group_words
 
         if new_page and self.body:
             self.body.append("#pagebreak(weak: true)")
         rows = []
-        for step in steps:
-            if not step.equations:
-                continue
+        similar = similar or {}
+
+        def group(who: str, cells) -> None:  # a group's rows kept on one page (its name a cell spanning them)
+            for k, cell in enumerate(cells):
+                rows.append((f"table.cell(rowspan: {len(cells)}, breakable: false)[{text(who)}], " if k == 0 else "") + cell)
+
+        def by_similarity(index: int) -> None:
+            lines = similar.get(index, ())
+            if lines:
+                group(term("by_similarity", self.lang), [f"[#text(style: \"italic\")[{self.words(line)}]], []" for line in lines])
+
+        by_similarity(-1)
+        for index, step in enumerate(steps):
             who = f"{term('driver', self.lang)}" if step.group == "driver" else group_words(step.group, self.lang)
-            for k, (eq, cond) in enumerate(step_lines(step, name)):
-                first = f"[{text(who)}]" if k == 0 else "[]"
-                cond_cell = f"[${cond}$]" if cond else "[]"
-                rows.append(f"{first}, [${eq}$], {cond_cell}")
-        self.body.append(f"#block(breakable: false)[#heading(level: 2)[{self.words(heading)}]\n"
-                         f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]\n\n"
-                         f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: 1.3mm), align: left + horizon,\n  "
-                         + ",\n  ".join(rows) + ")]]\n")
+            if step.equations:
+                group(who, [f"[${eq}$], " + (f"[${cond}$]" if cond else "[]") for eq, cond in step_lines(step, name)])
+            by_similarity(index)
+        # the heading and the note kept with the table's first rows; the rows flow on over a page's end (a long set
+        # of equations fills the page it starts on)
+        self.body.append(f"#block({'sticky: true' if flow else 'breakable: false'})[#heading(level: 2)[{self.words(heading)}]\n"
+                         f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]" + ("]\n" if flow else "\n\n")
+                         + f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: {1.5 if flow else 1.3}mm), align: left + horizon,\n  "
+                         + ",\n  ".join(rows) + ")]" + ("\n" if flow else "]\n"))
 
     def table_code(self, rows, aligns: str = "(left, right, right, right, right)") -> str:
         """Rows of values as a Typst ``table(…)`` expression: the first row the header, in bold, between rules."""

@@ -27,7 +27,7 @@ own underline), so the two stay apart on a screen at 70 dpi and in print
 one thick bar).
 
 >>> print(equation_math("v_C = v_B + v_CB", found={"v_CB"}))
-arrow(v)_(C) = #box(stroke: (bottom: 0.4pt), outset: (bottom: 0.9pt), {set text(bottom-edge: "bounds"); $underline(arrow(v)_(B))$}) + underline(arrow(v)_(C B))
+arrow(v)_(C) = #box(stroke: (bottom: 0.4pt), outset: (bottom: 1.3pt), {set text(bottom-edge: "bounds"); $underline(arrow(v)_(B))$}) + underline(arrow(v)_(C B))
 """
 
 from __future__ import annotations
@@ -40,8 +40,9 @@ __all__ = ["equation_math", "condition_math", "step_lines", "VECTOR", "once", "t
 
 #: the stroke [pt] of a double underline's second rule (thin, as the math font's own rule, about 0.04 em)
 DOUBLE_STROKE_PT = 0.4
-#: how far [pt] the second rule's middle lies below the bounds of the first underline (its clear gap ≥ this − half the stroke)
-DOUBLE_GAP_PT = 0.9
+#: how far [pt] the second rule's middle lies below the bounds of the first underline (its clear gap ≥ this − half the
+#: stroke, 1.1 pt: two lines at 150 dpi, not one thick bar)
+DOUBLE_GAP_PT = 1.3
 
 
 def once(body: str) -> str:
@@ -105,7 +106,9 @@ def _plain_math(part: str, name) -> str:
         ch = part[k]
         if ch.isspace():
             out.append(" ")
-        elif ch.isdigit() or ch in ".+-=()|,×·∥⊥":
+        elif ch in ",;":  # between conditions: the mark, then a word's space (``∥ CA,  a^t_CA ⊥ AC``)
+            out.append((ch if ch == "," else string(ch)) + " thick ")
+        elif ch.isdigit() or ch in ".+-=()|×·∥⊥":
             out.append({"·": " dot.op ", "×": " times ", "∥": " parallel ", "⊥": " perp ", "|": " |"}.get(ch, ch))
         else:
             out.append(string(ch))

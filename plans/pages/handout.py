@@ -50,7 +50,7 @@ from .document import bbox as _bbox, fitted as _fitted, plan_extent as _plan_ext
 from .typesetting import compile_document
 from .words import assembly_lines, formula_words, namer
 
-__all__ = ["Handout", "build_handout", "position_entry", "angles_key", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
+__all__ = ["Handout", "build_handout", "similarity_steps", "position_entry", "angles_key", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
 
 #: The sections of a multi-position handout, in the plate's order (names as :attr:`Handout.order` lists them).
 ORDER = ("data", "positions", "velocity-equations", "velocity-plans", "acceleration-equations", "acceleration-plans",
@@ -231,6 +231,36 @@ def _with_given_note(lines: list[str], run, lang: str) -> list[str]:
     return lines[:end] + [f"    ({note})"] + lines[end:]
 
 
+def similarity_steps(graphical, kind: str) -> dict[int, list[str]]:
+    """Step index -> the proportions (``bm / b e₅ = BM / BE``; a triangle's two, ``;``-joined) by which the plan of
+    *kind* (``"velocity"``, ``"acceleration"``) places images by similarity once that step has drawn the two images
+    they start from (-1: both known before the first step), as :func:`plans.drawing.readings.similarity_lines`
+    writes them, without the numbers (those go with the readings)."""
+    from ..drawing.readings import similar_images, similarity_lines
+
+    plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
+    if plan is None:
+        return {}
+    points = getattr(plan, "points", None) or {}
+    lines = similarity_lines(graphical, kind)
+    images = [step.image for step in plan.steps]
+    out: dict[int, list[str]] = {}
+    for y, z, x in similar_images(plan):
+        Y, Z, X = (points[label][0] if label in points else label.rstrip("′").upper() for label in (y, z, x))
+        line = next((line for line in lines if f" = {Y}{X} / {Y}{Z}:" in line.split(";")[0]), None)
+        if line is None:
+            continue
+        after = max((i for i, image in enumerate(images) if image in (y, z)), default=-1)
+        out.setdefault(after, []).append(";  ".join(part.split(":")[0].strip() for part in line.split(";  ")))
+    return out
+
+
+def _proportions(doc, line: str) -> str:
+    """A line of :func:`plans.drawing.readings.similarity_lines` as markup: each proportion with its numbers one box
+    (a line breaks between a triangle's two, never inside one: ``f₄′ k′ / f₄′ π =`` at a line's end)."""
+    return ";  ".join(f"#box[{doc.words(part)}]" for part in line.split(";  "))
+
+
 def _equations_height(plan) -> float:
     """The height [mm] of a plan's vector equations under their heading (:meth:`Document.equations`), reckoned
     line by line."""
@@ -319,6 +349,7 @@ def build_handout(
     from ..compare import compare
     from ..graphical import construct
     from ..positions import at_page_precision, run_positions
+    from ..drawing.readings import similarity_lines
     from ..drawing.svgblocks import legend_svg, mechanism_svg, plan_svg, positions_svg
 
     say = progress or (lambda words: None)
@@ -510,7 +541,8 @@ def build_handout(
         doc.listing(term("positions_list", lang), entries)
 
     doc.section("velocity-equations")
-    doc.equations(f"{term('vector_equations', lang)}: {term('velocity_plan', lang).lower()}", sample.graphical.velocity_plan.steps, name)
+    doc.equations(f"{term('vector_equations', lang)}: {term('velocity_plan', lang).lower()}", sample.graphical.velocity_plan.steps, name,
+                  similar=max((similarity_steps(h.graphical, "velocity") for h in here.values()), key=lambda s: sum(map(len, s.values()))), flow=True)
     doc.section("velocity-plans")
     doc.headed_legend(term("velocity_plans", lang) + (f" ({term('each_from_its_pole', lang)})" if multi else ""),
                       (doc.scale_markup("k_v", plate["k_v"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT))
@@ -564,7 +596,7 @@ def build_handout(
         # the equations fill what the velocity plans leave (one position's: they head its plan's page); the plans
         # follow, their heading kept with them
         doc.equations(f"{term('vector_equations', lang)}: {term('acceleration_plan', lang).lower()}", here[chosen[0]].graphical.acceleration_plan.steps,
-                      name, new_page=not multi and not eq_under_v)
+                      name, new_page=not multi and not eq_under_v, similar=max((similarity_steps(here[k].graphical, "acceleration") for k in chosen), key=lambda s: sum(map(len, s.values()))), flow=True)
         doc.section("acceleration-plans")
         doc.headed_legend(term("acceleration_plans", lang),
                           (doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT))
@@ -585,16 +617,36 @@ def build_handout(
     # what a student measures on the plans of the chosen positions and what it gives (segment, mm, × k, = value)
     from ..drawing.readings import plan_readings
 
-    readings = []
+    readings = []  # (heading, rows, the proportions of the images that plan places by similarity, with numbers)
+    attached = set()
     for k in chosen or [sample.index]:
         h = here[k]
         where = f"{term('position', lang)} {h.index}: " if multi else ""
         for kind in ("velocity", "acceleration"):
             rows = plan_readings(h.graphical, kind, lang)
             if rows:
-                readings.append((f"{where}{term(kind + '_plan', lang)}: {term('readings', lang)}", rows))
-    if readings:
-        doc.tables(readings, aligns="(left, left, right, left, right)")
+                readings.append((f"{where}{term(kind + '_plan', lang)}: {term('readings', lang)}", rows, similarity_lines(h.graphical, kind)))
+                attached.add((h.index, kind))
+    if readings:  # (as Document.tables: two across, each whole; the proportions under their plan's readings)
+        parts = []
+        for heading, rows, lines in readings:
+            part = doc.table_markup(heading, rows, "(left, left, right, left, right)", full_width=True)
+            if lines:
+                said = term("by_similarity", lang)
+                part = (part[:-1] + f" \\\n#text(size: {SMALL_PT}pt)[{doc.words(said[0].upper() + said[1:] + ':')} "
+                        + " \\\n".join(_proportions(doc, line) for line in lines) + "]]")
+            parts.append(part)
+        doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (1fr, 1fr), column-gutter: {GUTTER}mm, row-gutter: 3mm, align: left + top,\n  "
+                        + ",\n  ".join(parts) + ")]\n")
+    # the proportions of the other positions' plans (those without readings), with their numbers: text that flows
+    # over a page's end, its heading kept with its first line
+    similar = [(f"{term('position', lang)} {h.index}, " if multi else "", kind, line) for h in here.values()
+               for kind in ("velocity", "acceleration") if (kind == "velocity" or h.index in acceleration_blocks) and (h.index, kind) not in attached
+               for line in similarity_lines(h.graphical, kind)]
+    if similar:
+        doc.body.append(f"#block(sticky: true, above: 3mm)[#text(weight: \"bold\", size: {SMALL_PT + 1}pt)[{doc.words(term('similar_images', lang))}]]\n")
+        doc.body.append(f"#text(size: {SMALL_PT}pt)[" + " \\\n".join(
+            doc.words(f"{where}{term(kind + '_plan', lang).lower()}:") + " " + _proportions(doc, line) for where, kind, line in similar) + "]\n")
 
     loops_of = [here[k] for k in chosen] or [sample]
     doc.section("loops")
@@ -680,7 +732,7 @@ def _acceleration_room(doc, equations: float) -> float | None:
     those do not fit under the velocity plans; else None (a page of their own, the equations above)."""
     from .typesetting import query_document
 
-    doc.mark("velocity-end")
+    doc.mark("velocity-end", solid=True)
     end = next(m for m in query_document(doc.source(), doc.images, "<plans-mark>") if m["name"] == "velocity-end")
     top, height = doc.page.margins[2], doc.page.text_height
     left = height - (end["y"] - top) - 6.0
@@ -726,6 +778,18 @@ def _fit_loops(doc) -> None:
                 return
         doc.loops_scale = 1.0
     used = (end["y"] - top) / height
+    if first is not None and first["page"] != end["page"] and used < LOOPS_FILL:
+        # what follows does not flow up: the loops' text a little larger, to fill their last page
+        length = (end["page"] - start["page"]) * height + (end["y"] - start["y"])
+        for target in (LOOPS_FILL + 0.04, LOOPS_FILL + 0.02):
+            scale = 1.0 + (target * height - (end["y"] - top)) / length
+            if not 1.0 < scale <= LOOPS_SCALE[1]:
+                continue
+            doc.loops_scale = round(scale, 3)
+            _, _, end_now, _ = measure()
+            if end_now["page"] == end["page"] and (end_now["y"] - top) / height >= LOOPS_FILL:
+                return
+        doc.loops_scale = 1.0
     if end["page"] == pages or used >= PAGE_USE_MIN or end["page"] == start["page"] or (first is not None and first["page"] == end["page"]):
         return
     length = (end["page"] - start["page"]) * height + (end["y"] - start["y"])  # the loops' run [mm]
@@ -744,6 +808,8 @@ def _fit_loops(doc) -> None:
 #: of it; the loops' text scales tried (smaller, not under :data:`LOOPS_SCALE`'s least) to let that block flow up
 LOOPS_FLOW_USE = 0.75
 LOOPS_FLOW_SCALES = (0.95, 0.9)
+#: the loops' last page, when what follows them starts a page, is filled at least this share by their text set larger
+LOOPS_FILL = 0.88
 
 
 #: a one-position handout's regions [mm]: the mechanism's height (at least, at most: what page 1 leaves under the
