@@ -439,13 +439,15 @@ def _check(z: complex, what: str) -> complex:
 
 
 def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, caption: bool = True, detail: bool = True,
-                   heading: bool = True, whole: float | None = None) -> None:
+                   heading: bool = True, whole: float | None = None, detail_under: bool = False) -> None:
     """Draw *plan* into *sketch* (one data unit = 1 mm): what :func:`draw_plan` does on a page's own Sketch.
 
     *caption* False leaves out the heading, scale and legend; *legend* False only the legend;
     *detail* False the enlarged detail of crowded images; *heading* False the heading and the
     scale factor only (a page that states them itself keeps the notes on short vectors); *whole* the ratio of a detail
-    of the whole plan drawn beside it (:func:`whole_detail_ratios`: its notes say which short vectors it draws).
+    of the whole plan drawn beside it (:func:`whole_detail_ratios`: its notes say which short vectors it draws);
+    *detail_under* an enlarged detail that finds no room within the plan drawn under it rather than to its right
+    (a sheet's region taller than wide).
     """
     images = {name: _check(z, f"image {name}") for name, z in plan.images.items()}
     vectors = vectors_drawn(plan)
@@ -601,7 +603,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
 
     for ring, names in rings:
         name = next_name()
-        for label in _detail(sketch, plan, vectors, images, ends, ring, names, name):
+        for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, under=detail_under):
             in_detail.setdefault(label, name)
 
     if whole:
@@ -739,9 +741,14 @@ def _draw_ring(sketch: Sketch, ring: tuple[complex, float, float]) -> None:
     sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
 
 
-def _spot(sketch: Sketch, ring: tuple[complex, float, float], within: bool = False) -> complex | None:
+#: Gap [mm] between a plan and an enlarged detail drawn under it (the detail's name, over its circle, stands in it).
+DETAIL_UNDER_GAP_MM = 8.0
+
+
+def _spot(sketch: Sketch, ring: tuple[complex, float, float], within: bool = False, under: bool = False) -> complex | None:
     """Where the ring's detail goes: in a free part of the plan (the page's room for it is not widened),
-    nearest the crowd; else (unless *within*) beside it, to the right, level with the crowd."""
+    nearest the crowd; else (unless *within*) beside it, to the right, level with the crowd (*under*: below it,
+    under the crowd, its name clear of the plan)."""
     centre, r, ratio = ring
     big = r * ratio
     b = sketch.bounds
@@ -772,13 +779,17 @@ def _spot(sketch: Sketch, ring: tuple[complex, float, float], within: bool = Fal
             return batch[int(free_spots[0])]
     if within:
         return None
+    if under:
+        x = min(max(centre.real, b.xmin + big), b.xmax - big) if b.width >= 2 * big else centre.real
+        return complex(x, b.ymin - DETAIL_UNDER_GAP_MM - big)
     # level with the crowd, but within the plan's height when the plan is taller than the detail
     level = min(max(centre.imag, b.ymin + big), b.ymax - big) if b.height >= 2 * big else centre.imag
     outside = [complex(b.xmax + 6.0 + big, level), complex(b.xmax + 6.0 + big, b.ymax - big), complex(b.xmax + 6.0 + big, b.ymin + big)]
     return next((c for c in outside if not any(Point(c.real, c.imag).buffer(big + 2.0).intersects(o) for o in sketch.obstacles)), outside[0])
 
 
-def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[complex, float, float], names: list[str], name: str, at: complex | None = None) -> set[str]:
+def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[complex, float, float], names: list[str], name: str, at: complex | None = None,
+            under: bool = False) -> set[str]:
     """Crowded images drawn again, enlarged n : 1, in a circle beside the plan (a drafting detail).
 
     The crowd is ringed on the plan and named.  The detail shows everything the
@@ -792,7 +803,7 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[compl
     ``detail-image-<name>``, ``detail-end-<vector>``, ``detail-name``.
 
     *ring* is the crowd's ring on the plan (:func:`_ring`), *names* the images of the link whose figure is drawn (or none),
-    *at* the detail's centre (by default where :func:`_spot` finds room).
+    *at* the detail's centre (by default where :func:`_spot` finds room, *under* the plan if asked).
     Returns the labels of the vectors shorter than :data:`SHORT_MM` that the detail draws.
     """
     centre, r, ratio = ring
@@ -801,7 +812,7 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[compl
     place_label(sketch, centre + r * cmath.exp(1j * math.pi / 4), [(name, "detail-mark")], size=LABEL_PT, gaps=(0.4, 1.2, 2.4, 4.0), leader_from=3.0)
 
     if at is None:
-        at = _spot(sketch, ring)
+        at = _spot(sketch, ring, under=under)
 
     def f(z: complex) -> complex:
         return at + (z - centre) * ratio

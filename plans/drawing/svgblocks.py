@@ -82,20 +82,23 @@ def mechanism_svg(graphical, lang: str = "en") -> SvgBlock:
     return sketched("mech", lambda sketch: MechanismDrawing(sketch, graphical, lang=lang, caption=False).draw(), lang)
 
 
-def plan_svg(plan, lang: str = "en", detail: bool = True, margin: float = MARGIN_MM, room: tuple[float, float] | None = None) -> SvgBlock:
+def plan_svg(plan, lang: str = "en", detail: bool = True, margin: float = MARGIN_MM, room: tuple[float, float] | None = None,
+             detail_under: bool = False) -> SvgBlock:
     """A velocity or acceleration plan at its own scale, without heading, scale and legend (the page states them);
     *margin* [mm] of white around it (less for a plan across a page, whose edges are the text area's).
 
     With *room* (width, height [mm], the page's cell) a small plan whose short components are given only in notes is
     drawn again whole beside itself, enlarged n : 1 (the largest of
     :func:`plans.drawing.plan_drawing.whole_detail_ratios` that keeps the block in *room*), headed in the reader's
-    language (gids ``…-detail-…``)."""
+    language (gids ``…-detail-…``).  *detail_under*: an enlarged detail of crowded images that finds no room within
+    the plan is drawn under it (:func:`plans.drawing.plan_drawing.draw_plan_into`)."""
     from .plan_drawing import draw_plan_into, enlarged, whole_detail_ratios
 
     tag = "vel" if plan.kind == "velocity" else "acc"
 
     def plain() -> SvgBlock:
-        return sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False), lang, margin)
+        return sketched(tag, lambda sketch: draw_plan_into(sketch, plan, lang=lang, legend=False, detail=detail, heading=False,
+                                                          detail_under=detail_under), lang, margin)
 
     if not detail or room is None:
         return plain()

@@ -403,16 +403,21 @@ def _extent(kind: str, obj) -> tuple[float, float]:
 
 
 def _block(kind: str, graphical, lang: str, box=None, detail: bool = True):
-    """The drawing of *kind* of *graphical* (a plan without its enlarged detail when that runs over *box*, or
-    without *detail*)."""
+    """The drawing of *kind* of *graphical*: a plan with its enlarged details beside it, else under it when that runs
+    over *box*, without them only when both do (their lengths then stand in the plan's notes), or without *detail*."""
     from ..drawing.svgblocks import mechanism_svg, plan_svg
 
     if kind == "mechanism":
         return mechanism_svg(graphical, lang)  # (at its k_l alone: the cache of _fit_factors counts on it)
     plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
+    def over(block) -> bool:
+        return block.width > box[2] + 0.5 or block.height > box[3] - CAPTION + 0.5
+
     block = plan_svg(plan, lang, detail=detail)
-    if detail and box is not None and (block.width > box[2] + 0.5 or block.height > box[3] - CAPTION + 0.5):
-        block = plan_svg(plan, lang, detail=False)
+    if detail and box is not None and over(block):
+        block = plan_svg(plan, lang, detail=True, detail_under=True)
+        if over(block):
+            block = plan_svg(plan, lang, detail=False)
     return block
 
 
@@ -437,9 +442,11 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, under=None
     regions = {}
 
     def block_at(i, kind, at, detail=True):
+        """Sample *i*'s drawing of *kind* at *at* (*detail* "anywhere": a plan's details wherever they fall)."""
         key = (i, kind, detail) + tuple(at[k] for k in FACTORS_OF[kind]) + ((regions.get(kind),) if kind != "mechanism" else ())
         if key not in drawn:
-            drawn[key] = _block(kind, construct_at(i, at), lang, regions.get(kind), detail)
+            box = None if detail == "anywhere" else regions.get(kind)
+            drawn[key] = _block(kind, construct_at(i, at), lang, box, bool(detail))
         return drawn[key]
 
     fixed = dict(ESTIMATED_FIXED)
@@ -471,7 +478,7 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, under=None
     for chosen in _ranked_regions(room, extents, fixed, given_sizes, under, needs)[:TRIED]:
         regions.clear()
         regions.update(chosen)
-        found = _factors_in(kinds, chosen, extents, largest, samples, scales, given, block_at)
+        found = _factors_in(kinds, chosen, extents, largest, samples, scales, given, block_at, needs)
         if found is None:
             continue
         reached = min((length / found[SCALE_OF[kind]] / mm for kind in kinds if given.get(SCALE_OF[kind]) is None
@@ -495,9 +502,10 @@ def _fit_factors(samples, construct_at, lang: str, given: dict, room, under=None
 TRIED = 3
 
 
-def _factors_in(kinds, regions, extents, largest, samples, first, given, block_at):
+def _factors_in(kinds, regions, extents, largest, samples, first, given, block_at, needs=None):
     """The factors with which the largest drawing of each kind fills its region of *regions* (drawn and measured:
-    :func:`plans.pages.document.fitted`, then finer while it still fits), given ones kept."""
+    :func:`plans.pages.document.fitted`, then finer while it still fits), given ones kept; a plan's factor a step
+    coarser where that gives its enlarged details room and the plan keeps its least sizes (*needs*: :func:`_needs`)."""
     scales = dict(first)
     boxes = {kind: (regions[kind][2], regions[kind][3] - CAPTION) for kind in kinds}
     # one kind after the other, each constructed with the factors chosen before it (a plan reads the mechanism)
@@ -517,7 +525,33 @@ def _factors_in(kinds, regions, extents, largest, samples, first, given, block_a
             if any(t.width > boxes[kind][0] + 0.5 or t.height > boxes[kind][1] + 0.5 for t in trials):  # (the first over ends it)
                 break
             scales[key] = finer
+        if kind != "mechanism" and given.get(key) is None:
+            coarsest = min((length / mm for length, mm in (needs or {}).get(kind, ()) if length > 0), default=math.inf)
+            scales[key] = _room_for_details(lambda k, i=i, kind=kind, key=key: (lambda at: (
+                block_at(i, kind, at), block_at(i, kind, at, detail=False), block_at(i, kind, at, detail="anywhere")))(
+                {**scales, key: k}), scales[key], coarsest)
     return scales
+
+
+#: How many round factors coarser a plan may be drawn to give its enlarged details room in its region.
+DETAIL_STEPS = 2
+
+
+def _room_for_details(drawings, k: float, coarsest: float = math.inf) -> float:
+    """*k*, or the first of the next :data:`DETAIL_STEPS` coarser round factors at which a plan keeps the enlarged
+    details it has (*drawings(k)*: the plan as fitted to its region, without details, with details anywhere): a
+    detail is how a student measures ab, bc of a crowded cluster (six-bar velocity plan), worth a plan a step
+    smaller, never coarser than *coarsest* (the plan's least sizes); when none gives them room *k* stands (the plan
+    without them, their lengths in its notes)."""
+    trial = k
+    for _ in range(DETAIL_STEPS + 1):
+        if trial > coarsest * (1 + 1e-9):
+            return k
+        boxed, bare, anywhere = drawings(trial)
+        if boxed.svg != bare.svg or anywhere.svg == bare.svg:
+            return trial  # the details kept, or none to keep
+        trial = round_up(trial * 1.0001)
+    return k
 
 
 def _every_sample(samples, kinds, regions, first, given, block_at, construct_at):
