@@ -147,3 +147,53 @@ def test_double_underline_typeset_two_rules_a_point_apart(body):
     profile, runs = _rules(body, 150)
     assert len(runs) == 2, runs
     assert profile[runs[0][1] + 1:runs[1][0]].max() >= 200, profile[runs[0][0]:runs[1][1] + 1]
+
+
+def test_double_underlines_on_the_handout_page_are_two_rules(tmp_path):
+    """The rules as the handout sets them, in its equation table (the review of the six-bar handout saw one thick
+    bar under v_A, v_D, v_B, v_E6 and ω₂ × OA: the table's unbreakable group cells dropped the second rule).  Page 1
+    rendered at 600 dpi; under the heading of the velocity equations, every thin horizontal rule is found, and the
+    double underlines are pairs of rules of one extent a little apart: the five magnitude-and-direction terms of the
+    six-bar's velocity equations (ω₂ × OA, v_A, v_D, v_B, v_E6)."""
+    import re
+    import shutil
+    import subprocess
+
+    import numpy as np
+
+    import plans
+    from plans.handout import handout
+
+    if shutil.which("pdftoppm") is None or shutil.which("pdftotext") is None:
+        pytest.skip("poppler renders and reads the page")
+    pdf = tmp_path / "h.pdf"
+    pdf.write_bytes(handout(plans.load(plans.example_path("six-bar")), centres=False).pdf())
+    words = subprocess.run(["pdftotext", "-f", "1", "-l", "1", "-bbox", str(pdf), "-"], capture_output=True, text=True,
+                           check=True).stdout
+    tops = [float(m.group(1)) for m in re.finditer(r'yMin="([\d.]+)"[^>]*>equations:</word>', words)]
+    assert tops, "the velocity equations' heading on page 1"
+    dpi, top = 600, tops[0]
+    subprocess.run(["pdftoppm", "-r", str(dpi), "-gray", "-f", "1", "-l", "1", "-y", str(int(top * dpi / 72)),
+                    "-H", str(int(70 / 25.4 * dpi)), "-x", "0", "-W", str(int(130 / 25.4 * dpi)), str(pdf), str(tmp_path / "p")],
+                   check=True)
+    _, size, _, data = next(tmp_path.glob("p*.pgm")).read_bytes().split(b"\n", 3)
+    w, h = map(int, size.split())
+    dark = np.frombuffer(data, dtype=np.uint8).reshape(h, w) < 128
+    runs = []  # (row, first column, last column) of every dark run ≥ 2.2 mm long
+    for y in range(h):
+        cols = np.flatnonzero(dark[y])
+        for part in np.split(cols, np.flatnonzero(np.diff(cols) > 1) + 1):
+            if part.size and part[-1] - part[0] >= 2.2 * dpi / 25.4:  # longer than a vector arrow (1.5 mm)
+                runs.append((y, int(part[0]), int(part[-1])))
+    rules = []  # runs of consecutive rows with one extent: (first row, last row, x0, x1)
+    for y, x0, x1 in runs:
+        for r in rules:
+            if r[1] == y - 1 and abs(r[2] - x0) <= 2 and abs(r[3] - x1) <= 2:
+                r[1] = y
+                break
+        else:
+            rules.append([y, y, x0, x1])
+    thin = [r for r in rules if r[1] - r[0] <= 0.6 * dpi / 72]  # a rule, not a glyph's stroke
+    pairs = [(a, b) for a in thin for b in thin if a is not b and abs(a[2] - b[2]) <= 4 and abs(a[3] - b[3]) <= 4
+             and 0 < b[0] - a[1] <= 3.0 * dpi / 72]
+    assert len(pairs) >= 5, (len(pairs), thin[:12])

@@ -91,13 +91,21 @@ def test_a_formula_without_a_unit_is_one_box():
 # --- 4. the title block's title legible --------------------------------------------------------------------------
 
 
-def test_a_long_title_wraps_in_the_title_block_at_eight_points_or_more():
-    """The Bulgarian linear-arm title (about 90 characters) in the title block: its words as tall as the 8 pt words
-    of the block's 'drawn by' cell or taller (it was shrunk to about 6 pt to stay on one line), on two lines."""
+def test_a_long_title_wraps_in_the_title_block_at_eight_points_or_more(tmp_path):
+    """A long Bulgarian title (the linear-arm's as it read, about 90 characters) in the title block: its words as
+    tall as the 8 pt words of the block's 'drawn by' cell or taller (it was shrunk to about 6 pt to stay on one
+    line), on two lines."""
+    import re
+
     from plans.i18n import term
 
-    scene = plans.load(plans.example_path("linear-arm"))
+    long_title = "Линеен задвижващ механизъм с рамо, заварена изместена втулка и плъзгач по подвижен прът"
+    text = plans.example_path("linear-arm").read_text(encoding="utf-8")
+    text = re.sub(r'(?m)^(title = \{.*?bg = )"[^"]*"', lambda m: m.group(1) + f'"{long_title}"', text, count=1)
+    (tmp_path / "arm.toml").write_text(text, encoding="utf-8")
+    scene = plans.load(tmp_path / "arm.toml")
     title = scene.title_in("bg")
+    assert title == long_title
     assert len(title) > 80
     doc = Document(scene, "bg")
     doc.plate = {"k_l": 0.006}

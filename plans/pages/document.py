@@ -340,9 +340,10 @@ class Document:
         rows = []
         similar = similar or {}
 
-        def group(who: str, cells) -> None:  # a group's rows kept on one page (its name a cell spanning them)
+        def group(who: str, cells) -> None:  # a group's rows (its name a cell spanning them; not an unbreakable cell:
+            # Typst then drops the second rule of a double underline in those rows, found on the six-bar handout)
             for k, cell in enumerate(cells):
-                rows.append((f"table.cell(rowspan: {len(cells)}, breakable: false)[{text(who)}], " if k == 0 else "") + cell)
+                rows.append((f"table.cell(rowspan: {len(cells)})[{text(who)}], " if k == 0 else "") + cell)
 
         def by_similarity(index: int) -> None:
             lines = similar.get(index, ())
