@@ -239,3 +239,18 @@ def test_two_centres_labels_read_as_two(drawings):
         for k, (a, box_a) in enumerate(labels):
             found += [(where, a, b) for b, box_b in labels[k + 1:] if box_a.distance(box_b) < 2.0 * 72 / 25.4]
     assert not found, found
+
+
+def test_an_edge_arrows_label_not_over_its_own_arrow(drawings):
+    # fourth review: "P₁₃ 655 mm" on the six-bar page, its arrow drawn through the "6" (the label slid into the page's
+    # box over its own arrow): no label's box crosses its own arrow's shaft
+    from shapely.geometry import box
+
+    found = []
+    for where, svg in drawings:
+        shafts = {label: [LineString(p) for p in paths if len(p) > 1] for label, paths in _edge_shafts(svg).items()}
+        for gid, text, b in text_boxes(svg):
+            m = re.fullmatch(r"centres-label-(P[0-9]+)", gid)
+            if m and any(box(*b).intersects(s) for s in shafts.get(m.group(1), ())):
+                found.append((where, text))
+    assert not found, found

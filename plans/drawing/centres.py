@@ -173,6 +173,17 @@ def _label_box(tail: complex, tip: complex, u: complex, text: str) -> tuple[comp
     return complex(x, y), w, h
 
 
+def _within(at: complex, w: float, h: float, allowed) -> complex:
+    """A label's box centre *at* moved the least into the box *allowed* (lower-left, upper-right) [mm]."""
+    return complex(min(max(at.real, allowed[0].real + w / 2), allowed[1].real - w / 2),
+                   min(max(at.imag, allowed[0].imag + h / 2), allowed[1].imag - h / 2))
+
+
+def _box_at(at: complex, w: float, h: float):
+    """The box of a label of size (w, h) [mm] centred at *at*."""
+    return box(at.real - w / 2, at.imag - h / 2, at.real + w / 2, at.imag + h / 2)
+
+
 def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: float = ROOM_MIN,
                   limit: tuple[float, float] | None = None) -> CentresFrame:
     """The frame of the centres drawing at *k_l* [m/mm] around the mechanism's *ink* (lower-left, upper-right [mm]).
@@ -252,8 +263,16 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
             text = edge_text(centre, abs(centre.point / k_l - tip) if centre.point is not None else None)
             at, w, h = _label_box(q, tip, u, text)
             if allowed is not None:  # the label slides along its arrow's edge into the page's box
-                at = complex(min(max(at.real, allowed[0].real + w / 2), allowed[1].real - w / 2),
-                             min(max(at.imag, allowed[0].imag + h / 2), allowed[1].imag - h / 2))
+                at = _within(at, w, h, allowed)
+                shaft = LineString([(q.real, q.imag), (tip.real, tip.imag)])
+                if _box_at(at, w, h).intersects(shaft):  # slid over its own arrow: beside the tip, on the side away
+                    side = 1.0 if u.real >= 0 else -1.0  # from the shaft, else under or over it
+                    for c in (tip + side * (w / 2 + EDGE_LABEL_GAP), tip - side * (w / 2 + EDGE_LABEL_GAP),
+                              tip - 1j * (h / 2 + EDGE_LABEL_GAP), tip + 1j * (h / 2 + EDGE_LABEL_GAP)):
+                        c = _within(c, w, h, allowed)
+                        if not _box_at(c, w, h).intersects(shaft):
+                            at = c
+                            break
             shape = box(at.real - w / 2 - 0.8, at.imag - h / 2 - 0.8, at.real + w / 2 + 0.8, at.imag + h / 2 + 0.8)
             arrow = LineString([(q.real, q.imag), (tip.real, tip.imag)]).buffer(1.0)
             hits = sum(1 for e in edges if abs(q - e.tail) < EDGE_SPACING) + sum(1 for b in boxes if shape.intersects(b) or arrow.intersects(b))
