@@ -1073,6 +1073,9 @@ TERMS: dict[str, dict[str, str]] = {
                    "bg": "се завъртат изцяло", "sl": "se zavrtijo v celoti"},
     "none_turns": {"en": "no link turns fully", "sr": "ниједан члан се не окреће пуним кругом", "ru": "ни одно звено не проворачивается",
                    "bg": "никое звено не се завърта изцяло", "sl": "noben člen se ne zavrti v celoti"},
+    # the centres table's column of lengths read off the drawing (P₁ⱼM for a point's v, the path's lengths for ω)
+    "read_off_drawing": {"en": "read off the drawing [mm]", "sr": "очитано са цртежа [mm]", "ru": "измерено на чертеже [мм]",
+                         "bg": "измерено на чертежа [мм]", "sl": "odčitano z risbe [mm]"},
     "law_given_instant_only": {"en": "the scene's {q} is not used: the cycle follows this law",
                                "sr": "задато {q} се не користи: циклус прати овај закон",
                                "ru": "заданное {q} не используется: цикл следует этому закону",

@@ -51,7 +51,7 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
     frame = result.scene.frame_number
     header = [term("quantity", lang), f"$P_{{{frame}j}}$", term("by_centres", lang), term("analytic", lang), term("rel_error", lang)]
     if k_l is not None:
-        header.insert(2, f"$P_{{{frame}j}}M$ [mm]")
+        header.insert(2, term("read_off_drawing", lang))  # P_1jM for v, the path's lengths for ω: both as read
     rows = [header]
     by = {(c.section, c.name): c for c in comparisons}
 
