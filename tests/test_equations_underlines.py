@@ -197,3 +197,13 @@ def test_double_underlines_on_the_handout_page_are_two_rules(tmp_path):
     pairs = [(a, b) for a in thin for b in thin if a is not b and abs(a[2] - b[2]) <= 4 and abs(a[3] - b[3]) <= 4
              and 0 < b[0] - a[1] <= 3.0 * dpi / 72]
     assert len(pairs) >= 5, (len(pairs), thin[:12])
+
+
+def test_the_drivers_tangential_component_with_epsilon_given_is_known_twice():
+    # the teacher's review of the Russian four-bar sheet: ε₂ = 5 rad/s² is given, so a^t_AO = ε₂·OA ⊥ OA is known in
+    # magnitude and direction, underlined twice like a^n_AO (its condition "⊥ OA" repeats a direction it knows)
+    from plans.pages.equations import twice, vector_math
+
+    line = equation_math("a_A = a^n_AO + a^t_AO", known={"a^n_AO", "a^t_AO"},
+                         condition="a^n_AO ∥ AO, ω2²·OA; a^t_AO ⊥ OA, |ε2|·OA")
+    assert line.endswith(" + " + twice(vector_math("a", "t", "AO"))), line

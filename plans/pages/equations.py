@@ -154,7 +154,8 @@ def equation_math(equation: str, known=(), found=(), name=lambda word: word, con
     lhs, eq, rhs = equation.partition(" = ")
     if not eq:
         return condition_math(equation, name)
-    known, found = set(known), set(found) | direction_only(condition)
+    known = set(known)  # a vector the step knows in full stays twice, whatever direction its condition repeats
+    found = set(found) | (direction_only(condition) - known)  # (the driver's a^t_AO ⊥ OA with ε₂ given: twice)
     if not any(VECTOR.fullmatch(t.strip()) for t in rhs.split(" + ")):  # a driver's equation: the right side given in full
         return f"{term_math(lhs, name)} = {twice(condition_math(rhs.strip(), name))}"
 
