@@ -136,3 +136,16 @@ def test_wedge_follower_joins_block_3_at_pin_c_over_the_block():
     far = max(ends, key=lambda e: abs(e - c))
     block4 = Polygon(_gid(artists, "mech-block-4").get_xy())
     assert block4.exterior.distance(Point(far.real, far.imag)) < 1e-6  # up to block 4's edge
+
+
+def test_quick_return_crank_reaches_its_pin_over_the_slotted_rocker():
+    # the review of the Serbian quick-return sheet: crank 2 stopped at the edge of rocker 4's slot (its white fill over
+    # the crank), pin A drawn apart from it inside block 3: the crank is drawn from O to A over the slot and the block
+    artists = _draw("quick-return")
+    o, a = _pin(artists, "O"), _pin(artists, "A")
+    crank = _gid(artists, "mech-link-2-over-slot")
+    xs, ys = crank.get_data()
+    ends = {complex(x, y) for x, y in zip(xs, ys)}
+    assert min(abs(e - a) for e in ends) < 1e-6 and min(abs(e - o) for e in ends) < 1e-6  # from O to A
+    covers = [x for x in artists if (x.get_gid() or "").startswith(("mech-slot-", "mech-block-3"))]
+    assert covers and all(crank.get_zorder() > x.get_zorder() for x in covers)
