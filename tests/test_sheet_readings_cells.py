@@ -38,3 +38,15 @@ def test_no_word_of_a_readings_row_over_another(tmp_path, example, lang):
                 if min(a[2], b[2]) - max(a[0], b[0]) > 0.5 and min(a[3], b[3]) - max(a[1], b[1]) > tall:
                     crowded.append((a[4], b[4]))
     assert not crowded, crowded
+
+
+@pytest.mark.parametrize("example, lang, words, said", [
+    ("quick-return", "sr", "Кратке дужи", False),  # its plans have no note under them at the sheet's factors
+    ("six-bar", "en", "Short segments and near-coincident directions", True),  # a′n₁ = 0.25 mm, ∠(πm′) ∠(πa′)
+])
+def test_the_legend_explains_the_notes_under_a_plan_only_where_there_are_some(tmp_path, example, lang, words, said):
+    # the review of the quick-return sheet: "the note 'Кратке дужи … дати су испод плана' refers to nothing"
+    pdf = tmp_path / "s.pdf"
+    assert main(["draw", "--example", example, "--lang", lang, "-o", str(pdf), "-q"]) == 0
+    text = " ".join(subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True, check=True).stdout.split())
+    assert (words in text) == said

@@ -28,6 +28,8 @@ its factors chosen again for that sheet's regions.
 
 from __future__ import annotations
 
+import re
+
 import math
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -284,9 +286,11 @@ def _readings(doc: Document, graphical, lang: str) -> list:
     return out
 
 
-def _texts(doc: Document, graphical, *, table, formula, assembly, legend, heading, split: bool = False) -> list[str]:
+def _texts(doc: Document, graphical, *, table, formula, assembly, legend, heading, split: bool = False,
+           notes: bool = True) -> list[str]:
     """The text column's markup (collected from the document's own sections); *split*: the comparison table in two
-    halves side by side (a long one: :data:`SPLIT_ROWS`), the legend under them."""
+    halves side by side (a long one: :data:`SPLIT_ROWS`), the legend under them; *notes*: whether a plan has notes
+    under it (short segments, near-coincident directions), which the legend then explains."""
     lang = doc.lang
     name = namer(doc.scene, lang, "parallel")  # (the equations' guide names follow ∥)
     body, doc.body = doc.body, []
@@ -312,10 +316,10 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
         results = doc.table_markup(term("comparison", lang), table) if table and len(table) > 1 else "[]"
         # under the plans' legend, what the notes under a plan are (short segments, near-coincident directions)
         # (the legend as drawn, or narrower where the column is narrow: it never runs over the table beside it)
-        legend_image = f"align(right)[#layout(room => " + doc.add_image('legend', legend).replace(
+        legend_image = "align(right)[#layout(room => " + doc.add_image('legend', legend).replace(
             f"width: {legend.width:.3f}mm", f"width: calc.min(room.width, {legend.width:.3f}mm)") + ")]" if legend is not None else ""
         notes = (f"block(width: 100%)[#text(size: {SMALL_PT - 0.5}pt)[{doc.words(term('plan_notes_legend', lang))}]]"
-                 if legend is not None else "")
+                 if legend is not None and notes else "")  # (not where no plan has a note: it referred to nothing)
         # the proportions of the images placed by similarity, beside the table under the legend
         similar = similarity_markup(doc, [("", graphical)])
         if split and table and len(table) > SPLIT_ROWS:
@@ -369,7 +373,9 @@ def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "e
     doc.plate = dict(graphical.scales)
     doc.sheet_number = number
     width, _ = _drawing_room(page)
-    texts = _texts(doc, graphical, table=table, formula=formula, assembly=assembly, legend=legend, heading=heading, split=split)
+    noted = any(re.search(rb'id="(?:vel|acc)-(?:short|along)-', block.svg) for block in blocks.values())
+    texts = _texts(doc, graphical, table=table, formula=formula, assembly=assembly, legend=legend, heading=heading, split=split,
+                   notes=noted)
     placed = {}
     names = {"mechanism": term("mechanism", lang), "velocity": term("velocity_plan", lang), "acceleration": term("acceleration_plan", lang)}
     for kind, block in blocks.items():
