@@ -25,19 +25,26 @@ def _how(name: str, lang: str) -> dict[str, str]:
     return {row[0]: row[1] for row in centres_order_table(result, lang)[1:]}
 
 
+def _word(names: dict, guide: str, lang: str) -> str:
+    """A guide's name as the scene's ``[names]`` write it in *lang*: the string, or its ``name`` (nominative) form
+    where the scene gives grammatical forms (``{ name = "втулка", of = "втулката" }``)."""
+    word = names[guide][lang]
+    return word["name"] if isinstance(word, dict) else word
+
+
 def test_each_guide_named_in_the_order_table():
     # bg linear-arm: P₁₂, P₃₄, P₃₅ sat on three guides and read "перпендикулярно на водача" alike
     names = tomllib.loads(example_path("linear-arm").read_text())["names"]
     how = _how("linear-arm", "bg")
     assert len({how["P₁₂"], how["P₃₄"], how["P₃₅"]}) == 3
-    assert names["sleeve"]["bg"] in how["P₃₄"] and "4" in how["P₃₄"]  # the sleeve welded to rocker 4
-    assert names["rod"]["bg"] in how["P₃₅"] and "3" in how["P₃₅"]  # block 5 rides on rod 3
+    assert _word(names, "sleeve", "bg") in how["P₃₄"] and "4" in how["P₃₄"]  # the sleeve welded to rocker 4
+    assert _word(names, "rod", "bg") in how["P₃₅"] and "3" in how["P₃₅"]  # block 5 rides on rod 3
     assert "стойка" in how["P₁₂"]  # the driver slides on the frame's floor
     # sr quick-return: the block's centre P₃₄ is perpendicular to the slot (кулиса) of link 4, the ram's P₁₆ to the frame's guide
     names = tomllib.loads(example_path("quick-return").read_text())["names"]
     how = _how("quick-return", "sr")
-    assert names["slot"]["sr"] in how["P₃₄"] and "4" in how["P₃₄"]
-    assert names["ram"]["sr"] in how["P₁₆"] and "постољ" in how["P₁₆"]
+    assert _word(names, "slot", "sr") in how["P₃₄"] and "4" in how["P₃₄"]
+    assert _word(names, "ram", "sr") in how["P₁₆"] and "постољ" in how["P₁₆"]
     assert how["P₁₆"] != how["P₃₄"]
 
 

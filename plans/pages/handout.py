@@ -780,16 +780,29 @@ def _fit_loops(doc) -> None:
     used = (end["y"] - top) / height
     if first is not None and first["page"] != end["page"] and used < LOOPS_FILL:
         # what follows does not flow up: the loops' text a little larger, to fill their last page
+        # (the growth per unit of scale first reckoned from the loops' run, then from what a try measured: a run
+        # starting at a page's foot does not grow in proportion, and a first try may fall a little short; short of
+        # the fill, the fullest try that keeps the loops' pages is kept)
         length = (end["page"] - start["page"]) * height + (end["y"] - start["y"])
-        for target in (LOOPS_FILL + 0.04, LOOPS_FILL + 0.02):
-            scale = 1.0 + (target * height - (end["y"] - top)) / length
+        known = (1.0, end["y"])  # a scale and where the loops then end on their last page [mm]
+        best = (end["y"], 1.0)
+        for target in (LOOPS_FILL + 0.04, LOOPS_FILL + 0.04, LOOPS_FILL + 0.02):
+            scale = known[0] + (target * height + top - known[1]) / length
             if not 1.0 < scale <= LOOPS_SCALE[1]:
                 continue
             doc.loops_scale = round(scale, 3)
-            _, _, end_now, _ = measure()
-            if end_now["page"] == end["page"] and (end_now["y"] - top) / height >= LOOPS_FILL:
+            _, start_now, end_now, _ = measure()
+            if end_now["page"] != end["page"] or start_now["page"] != start["page"]:
+                continue
+            if (end_now["y"] - top) / height >= LOOPS_FILL:
                 return
-        doc.loops_scale = 1.0
+            best = max(best, (end_now["y"], doc.loops_scale))
+            if end_now["y"] > known[1]:  # short of the fill: the next try from this one, at the growth it measured
+                length = (end_now["y"] - known[1]) / (doc.loops_scale - known[0])
+                known = (doc.loops_scale, end_now["y"])
+        doc.loops_scale = best[1]
+        if best[1] != 1.0:
+            return
     if end["page"] == pages or used >= PAGE_USE_MIN or end["page"] == start["page"] or (first is not None and first["page"] == end["page"]):
         return
     length = (end["page"] - start["page"]) * height + (end["y"] - start["y"])  # the loops' run [mm]

@@ -816,14 +816,16 @@ def _capitalised(line: str) -> str:
 DATA_PT = TEXT_PT + 1.0
 #: the height [mm] of a line of the plan of positions' data (at DATA_PT)
 DATA_LINE = 5.2
-#: the room [mm] between the plan of positions and its data under it
+#: the room [mm] between the plan of positions and its data under it; the least it closes to so that the plan keeps
+#: a set's k_l (one k_l across the plate) when it runs over its room by no more than the difference
 DATA_GAP = 6.0
+DATA_GAP_MIN = 2.0
 
 
 def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: tuple[int, int] | None = None) -> Sheet:
     """The plan of positions of *run* on a sheet of its own (sheet 1 of a set, the textbook's order), drawn at *k_l*
-    (a set of sheets': the positions' sheets' k_l, one k_l across the plate; a coarser round one only when it runs
-    over the page), or without one at the round factor with which it fills the page; its k_l is stated under its
+    (a set of sheets': the positions' sheets' k_l, one k_l across the plate; the data's gap under it closes first,
+    to :data:`DATA_GAP_MIN`, and a coarser round one only when it still runs over the page), or without one at the round factor with which it fills the page; its k_l is stated under its
     name and in the title block.  The cycle's data (the driver's law, the Grashof class, the stroke, θ and K, the
     working stroke) under the drawing, left-aligned with it, at :data:`DATA_PT`."""
     import numpy as np
@@ -845,7 +847,12 @@ def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: t
             path = np.asarray(run.cycle.points[p].r)
             zs.extend(complex(z) for z in path[np.isfinite(path.real) & np.isfinite(path.imag)])
     k0 = run.scales["k_l"] if k_l is None else k_l
+    given = k_l is not None
     k_l, block = fitted(lambda k: positions_svg(run, k, lang, extremes), bbox(zs), room, k0, None if k_l is None else k_l)
+    gap = DATA_GAP
+    if given and lines and block.width <= room[0] + 0.5 and room[1] + 0.5 < block.height <= room[1] + DATA_GAP - DATA_GAP_MIN:
+        # the set's k_l kept: the data's gap under the drawing closes (to DATA_GAP_MIN at least) before the scale changes
+        gap, room = DATA_GAP - (block.height - room[1]), (room[0], block.height)
     for _ in range(6):  # a given factor coarser while it runs over the page
         if block.width <= room[0] + 0.5 and block.height <= room[1] + 0.5:
             break
@@ -860,7 +867,7 @@ def positions_page(run, k_l: float | None = None, *, lang: str = "en", number: t
     if lines:  # under the drawing, from its left edge (the page's left for a drawing as wide as the page)
         text = " \\\n".join(doc.words(formula_words(line)) for line in lines)
         left = min(max(x, 0.0), page.text_width / 2)
-        doc.body.append(f"#place(top + left, dx: {left:.3f}mm, dy: {y + block.height + DATA_GAP:.3f}mm, block(width: {page.text_width - left:.1f}mm)"
+        doc.body.append(f"#place(top + left, dx: {left:.3f}mm, dy: {y + block.height + gap:.3f}mm, block(width: {page.text_width - left:.1f}mm)"
                         f"[#text(size: {DATA_PT}pt)[{text}]])\n")
     doc.body.append(f"#place(top + left, dx: {x:.3f}mm, dy: {y:.3f}mm, {image('positions', block.width)})")
     doc.add_image("positions", block)
