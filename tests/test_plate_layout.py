@@ -14,7 +14,6 @@ import subprocess
 import tempfile
 import unicodedata
 from pathlib import Path
-from xml.etree import ElementTree
 
 import pytest
 
@@ -24,29 +23,17 @@ from plans.motion import driver_cycle
 from plans.pages.document import A4_PORTRAIT, Document
 from plans.pages.typesetting import compile_document
 
+from pdf_lines import page_lines
+
 pytestmark = [pytest.mark.filterwarnings("ignore"),
               pytest.mark.skipif(shutil.which("pdftotext") is None, reason="poppler's pdftotext reads the pages")]
 
-_XHTML = "{http://www.w3.org/1999/xhtml}"
 PT = 25.4 / 72  # mm per PDF point
 
 
 def _lines(pdf: bytes) -> list[list[tuple[float, float, float, float, str]]]:
-    """Every page's text lines as (x0, y0, x1, y1 [pt from the page's top left], words), as poppler finds them."""
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "h.pdf"
-        path.write_bytes(pdf)
-        out = subprocess.run(["pdftotext", "-bbox-layout", str(path), "-"], capture_output=True, text=True, check=True).stdout
-    root = ElementTree.fromstring(re.sub(r"<!DOCTYPE[^>]*>", "", out))
-    pages = []
-    for page in root.iter(_XHTML + "page"):
-        lines = []
-        for line in page.iter(_XHTML + "line"):
-            words = " ".join(w.text or "" for w in line.iter(_XHTML + "word"))
-            lines.append((float(line.get("xMin")), float(line.get("yMin")), float(line.get("xMax")), float(line.get("yMax")),
-                          unicodedata.normalize("NFKC", words)))
-        pages.append(lines)
-    return pages
+    """Every page's text lines (:func:`pdf_lines.page_lines`)."""
+    return page_lines(pdf)
 
 
 def _overprinted(lines) -> list:
