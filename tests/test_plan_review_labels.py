@@ -1,7 +1,9 @@
 """Issue 20, a teacher's review of the plate's plans (sr quick-return 12 positions, bg linear-arm 8, en six-bar).
 
-1. The quick-return's position-4 acceleration plan, 22 mm at the plate's one k_a, is drawn again whole beside itself,
-   enlarged 5 : 1, headed "detail I (5 : 1)" in the reader's language; the plan itself stays at the plate's k_a.
+1. The quick-return's position-4 acceleration plan, 22 mm at k_a = 0.2 (the plate's k_a when the review saw it), is
+   drawn again whole beside itself, enlarged 5 : 1, headed "detail I (5 : 1)" in the reader's language; the plan itself
+   stays at the plate's k_a.  (The plate now draws its acceleration plans on the rest of the page the velocity plans
+   end on, at k_a = 0.3: there the plan is 15 mm, its images crowd, and it has the crowd's detail instead.)
 2. No plan label runs into another (linear-arm position 2: "π, d′, q′, a′, f′" over n₁).
 3. Beside the image k′ of the linear-arm's point K, the Coriolis ends are named by the component's symbol (aᵏ₁, aᵏ₂),
    the same on the plan and in the readings, never κ.
@@ -42,6 +44,12 @@ def handouts():
     return {name: (handout(plans.load(example_path(name)), positions=n, lang=lang), lang) for name, n, lang in REVIEWED}
 
 
+@pytest.fixture(scope="module")
+def at_review_k_a():
+    """The sr quick-return handout with the plate's k_a given as the review saw it, 0.2 (m/s²)/mm."""
+    return handout(plans.load(example_path("quick-return")), positions=12, lang="sr", k_a=0.2)
+
+
 def _svg(svg: bytes):
     root = ET.fromstring(svg)
     per_mm = float(root.get("viewBox").split()[2]) / float(root.get("width").removesuffix("mm"))
@@ -70,10 +78,10 @@ def _run(doc, index: int):
 
 # --- 1. a small plan's enlarged detail -----------------------------------------------------------------------------
 
-def test_the_small_acceleration_plan_is_drawn_again_enlarged_beside_itself(handouts):
-    doc = handouts["quick-return"][0]
+def test_the_small_acceleration_plan_is_drawn_again_enlarged_beside_itself(at_review_k_a):
+    doc = at_review_k_a
     k_a = doc.scales["k_a"]
-    assert k_a == pytest.approx(0.2)  # the plate's one k_a, as the page prints it
+    assert k_a == pytest.approx(0.2)  # the plate's one k_a, as given and as the page prints it
     a_a = abs(_first(_run(doc, 4).analytic.points["A"].a))  # |a_A| = ω₂²·OA, the analytic solution
     root, per_mm = _svg(doc.images["a-4"])
     texts = _texts(root)
@@ -91,17 +99,34 @@ def test_the_small_acceleration_plan_is_drawn_again_enlarged_beside_itself(hando
     assert abs(_centre(root, "acc-detail-dot-e") - _centre(root, "acc-detail-pole")) / per_mm == pytest.approx(5 * a_e / k_a, abs=0.2)
 
 
+def test_the_small_plan_at_the_plates_own_k_a_is_enlarged_in_a_detail(handouts):
+    """At the plate's k_a as chosen (the plans on the rest of the page the velocity plans end on), position 4's plan is
+    under 30 mm and shows its short π e′ as an arrow in an enlarged detail, at the ratio its heading states."""
+    doc = handouts["quick-return"][0]
+    k_a = doc.scales["k_a"]
+    r = _run(doc, 4)
+    a_a, a_e = abs(_first(r.analytic.points["A"].a)), abs(_first(r.analytic.points["E"].a))
+    assert a_a / k_a < 30.0 and a_e / k_a < 3.0  # a small plan, π e′ too short for an arrow on it
+    root, per_mm = _svg(doc.images["a-4"])
+    assert abs(_centre(root, "acc-dot-a") - _centre(root, "acc-pole")) / per_mm == pytest.approx(a_a / k_a, abs=0.1)
+    ratio = float(re.search(r"I \(([0-9.]+) : 1\)$", _texts(root)["acc-detail-name"]).group(1))
+    assert ratio >= 2
+    drawn = abs(_centre(root, "acc-detail-dot-e") - _centre(root, "acc-detail-pole")) / per_mm
+    assert drawn == pytest.approx(ratio * a_e / k_a, abs=0.2)
+    assert drawn >= 3.0  # an arrow there
+
+
 @pytest.mark.parametrize("lang, words", [("en", "detail I (5 : 1)"), ("sr", "детаљ I (5 : 1)"), ("ru", "выносной элемент I (5 : 1)"),
                                          ("bg", "детайл I (5 : 1)"), ("sl", "detajl I (5 : 1)")])
-def test_the_enlarged_detail_is_headed_in_the_readers_language(handouts, lang, words):
-    plan = _run(handouts["quick-return"][0], 4).graphical.acceleration_plan
+def test_the_enlarged_detail_is_headed_in_the_readers_language(at_review_k_a, lang, words):
+    plan = _run(at_review_k_a, 4).graphical.acceleration_plan
     root, _ = _svg(plan_svg(plan, lang, room=(85.0, 200.0)).svg)
     texts = _texts(root)
     assert " ".join(t for t in (texts["acc-detail-name"], texts.get("acc-detail-name-ratio")) if t) == words
 
 
-def test_no_enlarged_copy_without_room_or_for_a_plan_of_fair_size(handouts):
-    doc = handouts["quick-return"][0]
+def test_no_enlarged_copy_without_room_or_for_a_plan_of_fair_size(at_review_k_a):
+    doc = at_review_k_a
     small = _run(doc, 4).graphical.acceleration_plan
     assert "acc-detail-name" not in _texts(_svg(plan_svg(small, "sr", room=(40.0, 200.0)).svg)[0])  # no room beside it
     assert "acc-detail-name" not in _texts(_svg(plan_svg(small, "sr").svg)[0])  # a sheet's plan: no cell given

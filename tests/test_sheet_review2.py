@@ -149,7 +149,9 @@ def test_the_quick_return_sheet_sets_its_text_larger_and_keeps_its_drawings(tmp_
     assert main(["draw", "--example", "quick-return", "--lang", "sr", "-o", str(tmp_path / "sheet.pdf"), "-q"]) == 0
     pdf = (tmp_path / "sheet.pdf").read_bytes()
     header = _font_sizes(pdf, "аналитички")
-    assert header and min(header) >= 9.5, header
+    # (≥ 9 pt: 9.5 was reached while the readings tables, in half columns, ran a cell over its value — '(l_AC) 1,652 rad/s';
+    # each as wide as it needs, the column is set at 9.2 pt; the review's finding was 8 pt and an empty quarter)
+    assert header and min(header) >= 9.0, header
     notes = _font_sizes(pdf, "Кратке дужи")  # the smallest words of the column (the notes under the legend)
     assert notes and min(notes) >= 8.0, notes
     k = sheet_pages.scales(sheet_pages.text(pdf))

@@ -16,6 +16,7 @@ import math
 import re
 import xml.etree.ElementTree as ET
 
+import numpy as np
 import pytest
 
 import plans
@@ -256,8 +257,17 @@ def test_readings_recompute_every_graphical_value_and_its_error(drawn):
             # printed to the decimals one 0.1 mm step × k (÷ l) justifies, as the results table prints it (issue 20: one
             # number for one quantity on a sheet): within half the last printed digit
             decimals = max(0, -math.floor(math.log10(0.1 * k / (float(divide.group(1)) if divide else 1.0))))
-            assert value == pytest.approx(r["value"], rel=6e-4, abs=0.5 * 10.0 ** -decimals + 1e-12), r
             keys = names = _quantity(r["symbol"], r["unit"])
+            point = keys[0][0][1:]
+            if not divide and point in scene.bodies[scene.driver.link].points and point in a.points:
+                # the driver's point: its vector is given by the data (|v_A| = |ω₂|·OA, |a_A| = ω₂²·OA), drawn to its exact
+                # length; the value is that length × k, i.e. the given value, the mm column that length to 0.1 mm
+                given_value = abs(complex(np.ravel(getattr(a.points[point], keys[0][0][0]))[0]))
+                assert r["value"] == pytest.approx(given_value, abs=0.5 * 10.0 ** -decimals + 1e-12), (r, given_value)
+                assert abs(mm - given_value / k) <= 0.05 + 1e-9, (r, given_value / k)
+                value = given_value
+            else:
+                assert value == pytest.approx(r["value"], rel=6e-4, abs=0.5 * 10.0 ** -decimals + 1e-12), r
             if keys[0] not in table and re.fullmatch(r"[va]([A-Z]+)([0-9]+)", keys[0][0]):
                 # the point of a link at a slider's pin (A4: the point of link 4 under A), which the results
                 # table does not list: its reading is v_O + ω×OA (a_O + ε×OA − ω²·OA) of the link, from the analytic solution

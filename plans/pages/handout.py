@@ -468,7 +468,8 @@ def build_handout(
 
     def fitting(plan, cell, **margin):
         block = plan_svg(plan, lang, room=cell, **margin)  # (a small plan drawn again whole, enlarged, when its cell has room)
-        if block.width > cell[0] + 0.5:
+        # (a velocity plan too tall for its half cell takes a row of its own; an acceleration plan's cell is its room)
+        if block.width > cell[0] + 0.5 or (plan.kind == "acceleration" and block.height > cell[1] + 0.5):
             block = plan_svg(plan, lang, detail=False, **margin)
         return block
 
@@ -568,7 +569,10 @@ def build_handout(
             largest_a = max((here[k] for k in chosen), key=lambda r: max(e / b for e, b in zip(_plan_extent(r.graphical.acceleration_plan), cell_rest)))
             k_a, _ = _fitted(lambda k: plan_svg(scaled(largest_a, "k_a", k).graphical.acceleration_plan, lang),
                              _plan_extent(largest_a.graphical.acceleration_plan), cell_rest, largest_a.graphical.scales["k_a"], None)
-            if k_a * ACCELERATION_REST_SHARE > plate["k_a"] and room < TEXT_HEIGHT - ACCELERATION_PAGE_TEXT - 1.0:
+            longest = max(max((abs(v.tip - v.tail) for v in here[k].graphical.acceleration_plan.vectors), default=0.0)
+                          * here[k].graphical.scales["k_a"] for k in chosen)  # [m/s²]
+            small = k_a * ACCELERATION_REST_SHARE > plate["k_a"] or longest / k_a < ACCELERATION_LEAST - 1e-9
+            if small and room < TEXT_HEIGHT - ACCELERATION_PAGE_TEXT - 1.0:
                 k_a = None  # (too small there: a page of their own, but the first there when it fits the rest as it is)
                 if acceleration_blocks[chosen[0]].height + 8.0 <= room:
                     accel_columns = 1
@@ -723,6 +727,8 @@ ACCELERATION_BAND = 34.0
 #: on the rest of the velocity plans' page the acceleration plans are drawn at least this share of the size a page
 #: of their own gives them (else they take that page)
 ACCELERATION_REST_SHARE = 0.5
+#: ...and their largest vector at least this long [mm] (the plate's least acceleration plan, issue 20 §1)
+ACCELERATION_LEAST = 50.0
 
 
 def _acceleration_room(doc, equations: float) -> float | None:

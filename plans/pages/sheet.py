@@ -310,7 +310,13 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
             if plan is not None and any(step.equations for step in plan.steps):
                 doc.equations(f"{term('vector_equations', lang)}: {term(plan.kind + '_plan', lang).lower()}", plan.steps, name)
         readings = [doc.table_markup(heading, rows, "(left, left, right, left, right)") for heading, rows in _readings(doc, graphical, lang)]
-        if readings:  # the readings of the two plans side by side
+        if len(readings) == 2:  # the readings of the two plans side by side, each as wide as it needs (its cells do not
+            # break: a factor '× 0.025 ÷ 0.6765 (l_EB)' in a half column ran over its value), else one under the other
+            doc.body.append(f"#text(size: {SMALL_PT}pt)[#layout(room => {{ let a = {readings[0]}; let b = {readings[1]}; "
+                            f"let wa = measure(a).width; let wb = measure(b).width; "
+                            f"if wa + wb + {GUTTER}mm <= room.width {{ grid(columns: (wa / (wa + wb) * 1fr, wb / (wa + wb) * 1fr), "
+                            f"column-gutter: {GUTTER}mm, align: top + left, a, b) }} else {{ stack(spacing: 3mm, a, b) }} }})]\n")
+        elif readings:
             doc.body.append(f"#text(size: {SMALL_PT}pt)[#grid(columns: (1fr, 1fr), column-gutter: {GUTTER}mm, align: top + left, "
                             + ", ".join(readings) + ")]\n")
         results = doc.table_markup(term("comparison", lang), table) if table and len(table) > 1 else "[]"
