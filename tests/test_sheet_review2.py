@@ -152,7 +152,8 @@ def test_the_quick_return_sheet_sets_its_text_larger_and_keeps_its_drawings(tmp_
     # (≥ 9 pt: 9.5 was reached while the readings tables, in half columns, ran a cell over its value — '(l_AC) 1,652 rad/s';
     # each as wide as it needs, the column is set at 9.2 pt; the review's finding was 8 pt and an empty quarter)
     assert header and min(header) >= 9.0, header
-    notes = _font_sizes(pdf, "Кратке дужи")  # the smallest words of the column (the notes under the legend)
+    notes = _font_sizes(pdf, "сличности")  # small words of the column (the images by similarity under the legend; the
+    # notes line is said only where a plan has notes, and this sheet's plans have none)
     assert notes and min(notes) >= 8.0, notes
     k = sheet_pages.scales(sheet_pages.text(pdf))
     assert k["k_l"] <= 0.005 and k["k_v"] <= 0.012 and k["k_a"] <= 0.05, k

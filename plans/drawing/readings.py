@@ -100,9 +100,8 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
         factor = f"×\u00a0{fmt(k)}" if divide is not None else f"× {fmt(k)}"
         if divide is not None:
             # the link length by the textbook's name, the segment between the two points as the scene names them;
-            # no-break spaces inside "× k ÷ l"; the link's name may go under it, where the column is narrow (it ran
-            # into the value: "(l_EB)815 rad/s", the review of the sheets)
-            factor += f"\u00a0÷\u00a0{table_number(divide)} (${link_length(graphical, between)}$)"
+            # no-break spaces: the cell never wraps inside it (the sheet gives the readings tables the width they need)
+            factor += f"\u00a0÷\u00a0{table_number(divide)}\u00a0(${link_length(graphical, between)}$)"
         return [symbol, measured, printed_length(length, precision), factor, text]
 
     from ._canvas import fmt_number as fmt
