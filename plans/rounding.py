@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["round_up", "round_down", "TEXTBOOK_MANTISSAS"]
+__all__ = ["round_up", "round_down", "TEXTBOOK_MANTISSAS", "SHORT_READ_MM", "reading_step"]
 
 #: The textbook's round values: 1, 2, 2.5, 5 × 10ⁿ.
 TEXTBOOK_MANTISSAS = (1, 2, 2.5, 5)
@@ -40,3 +40,13 @@ def round_down(below: float, mantissas=TEXTBOOK_MANTISSAS) -> float:
             if value <= below * (1 + 1e-12):
                 return value
         n -= 1
+
+
+#: a length on a drawing shorter than this [mm] is read to a tenth of the drafting precision, as if on a 10:1 detail
+#: (the page prints it to 0.01 mm: ``n₁ b′ = 2,65 mm``): the drafting rule the plans and the centres both read by
+SHORT_READ_MM = 3.0
+
+
+def reading_step(mm: float, precision: float) -> float:
+    """The step [mm] a length of *mm* on a drawing is read to: *precision*, a tenth of it under :data:`SHORT_READ_MM`."""
+    return precision / 10 if mm < SHORT_READ_MM else precision

@@ -31,16 +31,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from ..rounding import SHORT_READ_MM, reading_step
 from ..scene import FRAME, Crank, Scene
 from .kennedy import JOIN_TOL, Centre, CentreError
 from .pose import Pose, point_at
 
 __all__ = ["Motion", "Reading", "body_motions", "point_velocities", "SHORT_READ_MM"]
 
-#: a length shorter than this on the drawing [mm] is read to a tenth of the drafting precision, as the plans read their
-#: short segments (a 10:1 detail; the page prints it to 0.01 mm): the same rule, kept here so that the methods share
-#: no code
-SHORT_READ_MM = 3.0
 
 
 @dataclass(frozen=True)
@@ -62,7 +59,7 @@ class Reading:
 
     def step(self, mm: float) -> float:
         """The step [mm] a length of *mm* on the drawing is read to: the precision, a tenth of it under SHORT_READ_MM."""
-        return self.precision / 10 if mm < SHORT_READ_MM else self.precision
+        return reading_step(mm, self.precision)
 
     def __call__(self, arm: complex) -> complex:
         """*arm* [m] with its length as measured: round(|arm|/k_l to its step)·k_l, its direction kept."""

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from .._text import decimal_comma, math_name
 from ..i18n import term
-from ..centres.velocities import SHORT_READ_MM
+from ..rounding import SHORT_READ_MM
 from ..report import row_texts
 from ..scene import LinearDriver
 from .centres import centre_text
@@ -33,6 +33,12 @@ def _about(result, body: str) -> str:
         return "—"
     centre = result.centre("frame", body)
     return centre_text(centre.label) + ("" if centre.point is not None else " ∞")
+
+
+def _as_read(mm: float) -> str:
+    """A length on the centres drawing [mm] printed as it is read (:class:`plans.centres.Reading`): to 0.1 mm, one
+    under :data:`plans.rounding.SHORT_READ_MM` to 0.01 mm."""
+    return f"{mm:.2f}" if mm < SHORT_READ_MM else f"{mm:.1f}"
 
 
 def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None = None) -> list[list[str]]:
@@ -62,7 +68,7 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
         if centre.point is None:
             return ["—"]
         mm = abs(result.positions[name] - centre.point) / k_l
-        return [f"{mm:.2f}" if mm < SHORT_READ_MM else f"{mm:.1f}"]  # as it is read (plans.centres.Reading)
+        return [_as_read(mm)]
 
     def path(name: str) -> list[str]:
         """The lengths ω was read from, as the rule writes them: ``P₁₂P₂₄ / P₁₄P₂₄ = 1.1 / 25.3`` (a dash where none)."""
@@ -75,7 +81,7 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
         if not via:
             return ["—"]
         segments = " / ".join(centre_text(a) + centre_text(b) for a, b, _ in via)
-        return [f"{segments} = {' / '.join(f'{mm:.2f}' if mm < SHORT_READ_MM else f'{mm:.1f}' for _, _, mm in via)}"]
+        return [f"{segments} = {' / '.join(_as_read(mm) for _, _, mm in via)}"]
 
     # the values and errors by the rule of every comparison table (plans.report.row_texts): the centres' value to
     # 4 significant digits, the analytic one to its decimals, the error of the two printed numbers; the driver's

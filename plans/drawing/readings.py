@@ -22,10 +22,10 @@ def printed_length(length: float, precision: float | None) -> str:
     """A measured length [mm] as a sheet prints it: to the drafting precision's decimals (0.1 mm: ``"59.2"``),
     to 0.001 mm when readings are exact (no precision); a segment under 3 mm to a tenth of the precision, as
     the note under the plan gives it (:func:`plans.graphical.scales.read_segment`)."""
-    from ..graphical.scales import SHORT_READ_MM
+    from ..rounding import reading_step
 
-    if precision is not None and abs(length) < SHORT_READ_MM:
-        precision = precision / 10  # a short segment is read as its note under the plan gives it (0.01 mm)
+    if precision is not None:  # a short segment is read as its note under the plan gives it (0.01 mm)
+        precision = reading_step(abs(length), precision)
     decimals = 3 if precision is None else max(0, math.ceil(-math.log10(precision) - 1e-9))
     return f"{abs(length):.{decimals}f}"
 

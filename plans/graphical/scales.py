@@ -106,17 +106,10 @@ def measure(length: float, precision: float | None) -> float:
     return round(length / precision) * precision
 
 
-#: a plan's segment shorter than this [mm] is read to a tenth of the drafting precision: the sheet gives its
-#: length under the plan to 0.01 mm (it is too short for an arrow, ``n₁ b′ = 2,65 mm``), and the readings use that
-SHORT_READ_MM = 3.0
-
-
 def read_segment(length: float, precision: float | None) -> float:
-    """A plan's segment [mm] as read: to *precision* [mm], a short one (under :data:`SHORT_READ_MM`) to a tenth of it
-    (the value its note under the plan gives)."""
-    if precision is not None and length < SHORT_READ_MM:
-        return measure(length, precision / 10)
-    return measure(length, precision)
+    """A plan's segment [mm] as read: to *precision* [mm], a short one (under :data:`plans.rounding.SHORT_READ_MM`) to a tenth of it
+    (the value its note under the plan gives: :func:`plans.rounding.reading_step`)."""
+    return measure(length, None if precision is None else rounding.reading_step(length, precision))
 
 
 def extent(points) -> float:
