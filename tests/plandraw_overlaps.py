@@ -16,7 +16,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 
 from plans.graphical.plan import KINDS
 
-__all__ = ["label_boxes", "arrowheads", "shafts", "overlaps"]
+__all__ = ["label_boxes", "texts_in", "measured", "arrowheads", "shafts", "overlaps"]
 
 #: Resolution the extents are measured at: high, so that the renderer's
 #: rounding to whole pixels does not change them by more than a hair.
@@ -26,7 +26,7 @@ SLIVER_MM2 = 0.05
 _MM_PER_PX = 25.4 / DPI
 
 
-def _measured(fig, measure):
+def measured(fig, measure):
     """Run ``measure(renderer, mm_per_px)`` with *fig* rendered at :data:`DPI` by Agg."""
     old_dpi, old_canvas = fig.dpi, fig.canvas
     try:
@@ -39,21 +39,21 @@ def _measured(fig, measure):
         fig.set_canvas(old_canvas)
 
 
+def texts_in(ax, renderer, k: float) -> list[tuple[str, object]]:
+    """(gid:text, box [mm]) of every non-empty text of *ax*, measured by *renderer* (*k*: mm per pixel)."""
+    out = []
+    for t in ax.texts:
+        s = t.get_text()
+        if not s.strip() or s.strip() == ",":
+            continue
+        e = t.get_window_extent(renderer)
+        out.append((f"{t.get_gid()}:{s}", box(e.x0 * k, e.y0 * k, e.x1 * k, e.y1 * k)))
+    return out
+
+
 def label_boxes(fig) -> list[tuple[str, object]]:
     """(gid:text, box [mm from the figure's corner]) of every non-empty text drawn in *fig*."""
-
-    def measure(renderer, k):
-        out = []
-        for ax in fig.axes:
-            for t in ax.texts:
-                s = t.get_text()
-                if not s.strip() or s.strip() == ",":
-                    continue
-                e = t.get_window_extent(renderer)
-                out.append((f"{t.get_gid()}:{s}", box(e.x0 * k, e.y0 * k, e.x1 * k, e.y1 * k)))
-        return out
-
-    return _measured(fig, measure)
+    return measured(fig, lambda renderer, k: [b for ax in fig.axes for b in texts_in(ax, renderer, k)])
 
 
 def arrowheads(fig) -> list[tuple[str, object]]:
@@ -69,7 +69,7 @@ def arrowheads(fig) -> list[tuple[str, object]]:
                     out.append((gid, ShapelyPolygon(xy).buffer(0)))
         return out
 
-    return _measured(fig, measure)
+    return measured(fig, measure)
 
 
 def shafts(fig) -> list[tuple[str, object]]:
@@ -86,7 +86,7 @@ def shafts(fig) -> list[tuple[str, object]]:
                 out.append((gid, LineString(xy).buffer(line.get_linewidth() * 25.4 / 72 / 2)))
         return out
 
-    return _measured(fig, measure)
+    return measured(fig, measure)
 
 
 def overlaps(fig) -> list[str]:

@@ -32,16 +32,16 @@ from plans.handout import handout
 from plans.scene import example_path
 
 from plandraw_overlaps import SLIVER_MM2, label_boxes
+from review_handouts import REVIEWED, reviewed_handouts
 
 pytestmark = pytest.mark.filterwarnings("ignore")
 
 SVG = "{http://www.w3.org/2000/svg}"
-REVIEWED = [("quick-return", 12, "sr"), ("linear-arm", 8, "bg"), ("six-bar", None, "en")]
 
 
 @pytest.fixture(scope="module")
 def handouts():
-    return {name: (handout(plans.load(example_path(name)), positions=n, lang=lang), lang) for name, n, lang in REVIEWED}
+    return reviewed_handouts()
 
 
 @pytest.fixture(scope="module")

@@ -21,25 +21,24 @@ import xml.etree.ElementTree as ET
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
-from shapely.geometry import LineString, box
+from shapely.geometry import LineString
 
 import plans
 from plans.drawing.plan_drawing import draw_plan
 from plans.drawing.svgblocks import plan_svg
-from plans.handout import handout
 from plans.scene import example_path
 
-from plandraw_overlaps import _measured
+from plandraw_overlaps import measured, texts_in
+from review_handouts import REVIEWED, reviewed_handouts
 
 pytestmark = pytest.mark.filterwarnings("ignore")
 
 SVG = "{http://www.w3.org/2000/svg}"
-REVIEWED = [("quick-return", 12, "sr"), ("linear-arm", 8, "bg"), ("six-bar", None, "en")]
 
 
 @pytest.fixture(scope="module")
 def handouts():
-    return {name: (handout(plans.load(example_path(name)), positions=n, lang=lang), lang) for name, n, lang in REVIEWED}
+    return reviewed_handouts()
 
 
 def _labels_and_lines(fig):
@@ -48,12 +47,7 @@ def _labels_and_lines(fig):
     def measure(renderer, k):
         texts, lines = [], []
         for ax in fig.axes:
-            for t in ax.texts:
-                s = t.get_text()
-                if not s.strip() or s.strip() == ",":
-                    continue
-                e = t.get_window_extent(renderer)
-                texts.append((f"{t.get_gid()}:{s}", box(e.x0 * k, e.y0 * k, e.x1 * k, e.y1 * k)))
+            texts += texts_in(ax, renderer, k)
             for line in ax.lines:
                 gid = line.get_gid() or ""
                 xy = ax.transData.transform(list(zip(*line.get_data()))) * k
@@ -61,7 +55,7 @@ def _labels_and_lines(fig):
                     lines.append((gid, LineString(xy)))
         return texts, lines
 
-    return _measured(fig, measure)
+    return measured(fig, measure)
 
 
 def _drawn(doc):

@@ -170,7 +170,7 @@ def test_a_block_on_a_wedge_sits_on_the_incline_and_the_follower_stands_on_it():
 
 
 def test_a_linear_driver_label_is_not_on_the_other_arrow():
-    from plandraw_overlaps import SLIVER_MM2, _measured, label_boxes
+    from plandraw_overlaps import SLIVER_MM2, label_boxes, measured
 
     fig = draw_mechanism(_solve("wedge"))[0].figure
 
@@ -183,7 +183,7 @@ def test_a_linear_driver_label_is_not_on_the_other_arrow():
                 out[line.get_gid()] = LineString(xy).buffer(line.get_linewidth() * 25.4 / 72 / 2)
         return out
 
-    shafts = _measured(fig, arrows)
+    shafts = measured(fig, arrows)
     assert set(shafts) == {"mech-velocity", "mech-acceleration"}
     boxes = dict(label_boxes(fig))
     v_label = next(b for g, b in boxes.items() if g.startswith("mech-velocity-label"))
