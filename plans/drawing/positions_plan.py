@@ -292,16 +292,6 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     # marks all but on one another (the scotch yoke's A and Y, M₅ and M₀′ 0.1 mm apart: no detail parts them) share
     # one number, side by side, on the plan; a lone mark without room beside it is numbered on the plan too, at the
     # end of a longer leader (its leader says whose it is), not in a detail of its own
-    def grouped(marks):
-        groups = []
-        for text, at in marks:
-            group = next((g for g in groups if abs(g[0][1] - at) <= SAME_MARK_MM), None)
-            if group is None:
-                groups.append([(text, at)])
-            else:
-                group.append((text, at))
-        return groups
-
     def joined(group, attempts) -> bool:
         text, at = ", ".join(t for t, _ in group), sum(q for _, q in group) / len(group)
         named = [gids.get(t, _ascii(t)) for t, _ in group]
@@ -310,7 +300,7 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
                                 part_gids=named, rivals=every if gaps == NEAR_GAPS else None) is not None for out, gaps, cross in attempts)
 
     done = set()
-    for group in grouped(left_out):
+    for group in _grouped(left_out):
         at = group[0][1]
         lone = all(abs(at - other) > CROWD_MM for t, other in left_out if t not in {g for g, _ in group})
         if (lone or len(group) > 1) and joined(group, ((keep_out, NEAR_GAPS, False), (keep_out, LEADER_GAPS + FAR_GAPS, False),
@@ -322,7 +312,7 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
         every_mark = [(f"{p}{_sub(index)}", at) for index, p, at in marks] + [(f"{p}{label.translate(SUBSCRIPT)}", at) for label, p, at in extreme_marks]
         left_out = draw_details(sketch, left_out, every_mark, figure, lang=lang)
     # a mark for which neither had room: a longer leader on the plan (its leader says whose it is)
-    left_out = [m for group in grouped(left_out)
+    left_out = [m for group in _grouped(left_out)
                 if not joined(group, ((keep_out, LEADER_GAPS + FAR_GAPS, False), (keep_out, LEADER_GAPS + FAR_GAPS, True),
                                       ((), LEADER_GAPS + FAR_GAPS, True)))
                 for m in group]
@@ -473,13 +463,7 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
             sketch.circle(q, MARK_R, fc="#000000", lw=0, gid=f"detail-{name}-dot-{_ascii(text)}", zorder=4.5, obstacle=True)
         rivals = np.array([q for _, q in big_marks], dtype=complex)
         # marks all but on one another even enlarged (B₇ and B₀′) share one number, side by side: "B₇, B₀′"
-        joined = []
-        for text, q in big_marks:
-            group = next((g for g in joined if abs(g[0][1] - q) <= SAME_MARK_MM), None)
-            if group is None:
-                joined.append([(text, q)])
-            else:
-                group.append((text, q))
+        joined = _grouped(big_marks)
         # the marks lie along a path: their numbers either side of it in turn, across it
         ends = max(((q, w) for _, q in big_marks for _, w in big_marks), key=lambda qw: abs(qw[0] - qw[1]))
         along = unit(ends[1] - ends[0]) if abs(ends[1] - ends[0]) > 1e-9 else 1.0
@@ -718,6 +702,18 @@ def _ascii(text: str) -> str:
 
 
 _ASCII = str.maketrans({**{c: str(n) for n, c in enumerate("₀₁₂₃₄₅₆₇₈₉")}, "′": "p"})
+
+
+def _grouped(marks) -> list[list[tuple[str, complex]]]:
+    """(text, at) marks in groups of those within :data:`SAME_MARK_MM` of a group's first [mm]: one number each."""
+    groups: list[list[tuple[str, complex]]] = []
+    for text, at in marks:
+        group = next((g for g in groups if abs(g[0][1] - at) <= SAME_MARK_MM), None)
+        if group is None:
+            groups.append([(text, at)])
+        else:
+            group.append((text, at))
+    return groups
 
 
 def _sub(k: int) -> str:
