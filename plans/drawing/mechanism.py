@@ -950,16 +950,16 @@ class MechanismDrawing:
             placed.append(rect)
             self.block_centres[body] = centre
             pins[body] = pin
-        # a bar pinned to a block reaches the pin over the block (linear-arm link 6 to H),
-        # rather than stopping at the block's edge
+        # a bar pinned to a block reaches the pin over the block (linear-arm link 6 to H), rather than stopping at the
+        # block's edge; to a block in a slot, over the slotted link too, from its other end (the quick-return's crank 2
+        # stopped at the edge of rocker 4's slot, its pin A apart from it: the review of the sheet)
         reach = math.hypot(*self.block) / 2 + 0.3
         for bar, (a, c) in getattr(self, "bars", {}).items():
             for end, other in ((a, c), (c, a)):
-                if any(abs(end - q) < 1e-9 for b, q in pins.items() if b != bar and not self._in_slot(b)) and abs(other - end) > reach:
+                slotted = [self._in_slot(b) for b, q in pins.items() if b != bar and abs(end - q) < 1e-9]
+                if not all(slotted) and abs(other - end) > reach:
                     self.s.line([end, end + unit(other - end) * reach], lw=BAR_PT, gid=f"link-{bar}-to-pin", zorder=3.05, capstyle="butt", obstacle=False)
-                elif any(abs(end - q) < 1e-9 for b, q in pins.items() if b != bar and self._in_slot(b)):
-                    # a crank pinned to a block in a slot passes over the slotted link and the block to the pin (the quick-return's
-                    # crank 2 stopped at the edge of rocker 4's slot, its pin A apart from it: the review of the sheet)
+                elif any(slotted):
                     self.s.line([other, end], lw=BAR_PT, gid=f"link-{bar}-over-slot", zorder=3.05, capstyle="butt", obstacle=False)
         # a linear driver that carries an arm still slides on its guide in a block
         driver = self.scene.driver
