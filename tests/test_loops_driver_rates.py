@@ -13,7 +13,8 @@ import pytest
 
 from plans.loops import loop_equations
 from plans.positions import run_positions
-from plans.scene import example_path, load
+
+from accelerating_scenes import linear_arm_accelerating
 
 NUM = r"\(?(-?[0-9.eE+-]+)\)?"
 
@@ -28,7 +29,7 @@ def _driver_numbers(block):
 
 @pytest.mark.parametrize("law", [None, "uniform"])
 def test_linear_arm_driver_rates_at_every_position(law):
-    scene = load(example_path("linear-arm"))
+    scene = linear_arm_accelerating()  # a = 2 m/s² at its instant (the bundled example runs at a = 0)
     if law == "uniform":  # fast enough not to stop inside the stroke: v² = 1 + 4(s − 0) > 0 on ±0.1 m
         scene = replace(scene, driver=replace(scene.driver, velocity=1.0))
     d = scene.driver

@@ -3,14 +3,19 @@ whose acceleration plans are drawn named as such, the frame's words, headings th
 
 import re
 
+import pytest
+
 import plans
 from plans.motion import driver_cycle
 from plans.pages.words import cycle_lines, scene_data_lines
 from plans.positions import run_positions
 
+from accelerating_scenes import linear_arm_accelerating
+
 
 def _first_lines(example, n, lang):
-    run = run_positions(plans.load(plans.example_path(example)), n)
+    scene = example if isinstance(example, plans.Scene) else plans.load(plans.example_path(example))
+    run = run_positions(scene, n)
     law = run.motion.law
     return scene_data_lines(run.scene, lang, law) + cycle_lines(run, lang, rate=law.kind != "constant"), law
 
@@ -24,23 +29,33 @@ def test_quick_return_states_omega_and_epsilon_once():
     assert len(re.findall(r"ε₂ = 0\b", text)) == 1, text
 
 
-def test_linear_arm_driver_line_gives_what_the_cycle_uses():
-    """linear-arm.toml: v = 0.5 m/s, a = 2 m/s² at its instant; the cycle runs at constant v (a = 0): the driver's
-    line gives v only, the law a₂ = 0, and the 2 m/s² is not in the driver's line."""
-    lines, law = _first_lines("linear-arm", 8, "bg")
+@pytest.mark.parametrize("scene", ["linear-arm", "accelerating"])
+def test_linear_arm_driver_line_gives_what_the_cycle_uses(scene):
+    """linear-arm.toml: v = 0.5 m/s and no acceleration (constant speed, the course project's driver); the same
+    mechanism written with a = 2 m/s² at its instant: the cycle runs at constant v (a = 0) in both.  The driver's
+    line gives v only, the law a₂ = 0; the 2 m/s² is not in the driver's line, and a remark beside the law says it is
+    not used only where the scene gives it (none for the bundled example: nothing to explain)."""
+    given = scene == "accelerating"
+    lines, law = _first_lines(linear_arm_accelerating() if given else scene, 8, "bg")
     driver = lines[0]
     assert "v = 0,5 m/s" in driver.replace("м/с", "m/s") or "v = 0.5 m/s" in driver
     assert "a = 2" not in driver and "a = " not in driver, driver
     (law_line,) = [line for line in lines if line.startswith("закон на движение")]
     assert law_line.endswith("постоянна скорост, a₂ = 0"), law_line
-    assert law.given_note("bg", "2")  # the instant's 2 m/s² said once, as a remark (beside the law on the page)
+    if given:  # the instant's 2 m/s² said once, as a remark (beside the law on the page)
+        assert law.given_note("bg", "2") == "зададеното a₂ = 2 m/s² не се използва: цикълът следва този закон"
+    else:
+        assert law.given_note("bg", "2") == ""
+        assert not [line for line in lines if "не се използва" in line], lines
 
 
 def test_one_position_data_keep_the_given_acceleration():
-    """Without a cycle (one position) the driver's line gives the scene's a as it is."""
-    scene = plans.load(plans.example_path("linear-arm"))
+    """Without a cycle (one position) the driver's line gives the scene's a as it is: 2 m/s² where it is given, 0 in
+    the bundled example that gives none."""
+    scene = linear_arm_accelerating()
     assert "a = 2 m/s²" in scene_data_lines(scene, "en")[0]
     assert driver_cycle(scene, 8).law.describe("en", "2").endswith("v₂ = 0.5 m/s, a₂ = 0")
+    assert "a = 0 m/s²" in scene_data_lines(plans.load(plans.example_path("linear-arm")), "en")[0]
 
 
 def test_the_positions_list_names_the_acceleration_plans():

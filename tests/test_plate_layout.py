@@ -23,6 +23,7 @@ from plans.motion import driver_cycle
 from plans.pages.document import A4_PORTRAIT, Document
 from plans.pages.typesetting import compile_document
 
+from accelerating_scenes import linear_arm_accelerating, write_linear_arm_accelerating
 from pdf_lines import page_lines
 
 pytestmark = [pytest.mark.filterwarnings("ignore"),
@@ -201,9 +202,10 @@ def test_no_two_text_lines_of_a_handout_page_overlap(reviewed, key):
                                          ("ru", "заданное a₂ = 2 m/s² не используется: цикл следует этому закону"),
                                          ("sl", "podani a₂ = 2 m/s² se ne uporablja: cikel sledi temu zakonu")])
 def test_a_given_acceleration_under_the_constant_law_is_said_to_be_its_instants(lang, given):
-    """linear-arm.toml gives v = 0.5 m/s, a = 2 m/s² and no law: the cycle runs at constant speed (the course's
-    assumption, domain.md §10), and the law's line says that the 2 m/s² is not used."""
-    scene = plans.load(plans.example_path("linear-arm"))
+    """The linear-arm mechanism written with v = 0.5 m/s, a = 2 m/s² and no law (tests/accelerating_scenes.py): the
+    cycle runs at constant speed (the course's assumption, domain.md §10), and the law's line says that the 2 m/s² is
+    not used (a user's scene: nothing given is silently dropped)."""
+    scene = linear_arm_accelerating()
     assert scene.driver.law is None and scene.driver.acceleration == 2.0  # the file's numbers
     law = driver_cycle(scene, 8).law
     assert law.kind == "constant" and law.acceleration == 0.0
@@ -214,6 +216,8 @@ def test_a_given_acceleration_under_the_constant_law_is_said_to_be_its_instants(
 def test_no_such_words_where_the_scene_gives_no_acceleration_or_the_law_keeps_it():
     quick = driver_cycle(plans.load(plans.example_path("quick-return")), 8).law  # ε not given
     assert quick.given_note("en", "2") == ""
+    arm = driver_cycle(plans.load(plans.example_path("linear-arm")), 8).law  # a not given: constant speed, a = 0
+    assert arm.kind == "constant" and arm.given_acceleration == 0.0 and arm.given_note("en", "2") == ""
     four_bar = plans.load(plans.example_path("four-bar"))  # ε = 5 rad/s²: stated under constant, the law's under uniform
     assert driver_cycle(four_bar, 8).law.given_note("en", "2") == "the scene's ε₂ = 5 rad/s² is not used: the cycle follows this law"
     assert driver_cycle(four_bar, 8, law="uniform").law.given_note("en", "2") == ""
@@ -222,15 +226,35 @@ def test_no_such_words_where_the_scene_gives_no_acceleration_or_the_law_keeps_it
 def test_plans_sweep_says_the_same(tmp_path, capsys):
     from plans.cli import main
 
-    assert main(["sweep", "--example", "linear-arm", "--steps", "8", "-o", str(tmp_path / "arm.csv"), "--lang", "sr"]) == 0
+    scene = write_linear_arm_accelerating(tmp_path)
+    assert main(["sweep", str(scene), "--steps", "8", "-o", str(tmp_path / "arm.csv"), "--lang", "sr"]) == 0
     out = capsys.readouterr().out
     assert "константна брзина: v₂ = 0,5 m/s, a₂ = 0; задато a₂ = 2 m/s² се не користи: циклус прати овај закон" in out
+    # the bundled example gives no acceleration: the law's line and nothing after it
+    assert main(["sweep", "--example", "linear-arm", "--steps", "8", "-o", str(tmp_path / "bundled.csv"), "--lang", "sr"]) == 0
+    out = capsys.readouterr().out
+    assert "константна брзина: v₂ = 0,5 m/s, a₂ = 0\n" in out and "се не користи" not in out, out
 
 
-def test_the_linear_arm_handout_states_the_given_acceleration_as_its_instants(reviewed):
+def test_the_linear_arm_handout_states_one_law_with_no_contradiction(reviewed):
+    """The Bulgarian linear-arm handout (issue 20, the teachers' third review: "the scene's a₂ = 2 m/s² is not used"
+    beside a₂ = 0 was blocking): the example runs at constant speed, its data give v only, the law a₂ = 0, and no
+    acceleration that the cycle does not use, no remark about one."""
     _, _, pages = reviewed["linear-arm-bg"]
     first = " ".join(line[4] for line in pages[0])  # (NFKC: a₂ reads a2, m/s² m/s2)
-    assert "v = 0,5 м/с" in first and "a = 2 м/с2" not in first  # the data: what the cycle uses (issue 20, 2nd review)
+    driver = re.search(r"водещо звено 2 \(A, стойка ∥ 0°\):(.*?)дължини", first).group(1)
+    assert driver.split() == ["v", "=", "0,5", "м/с,", "s", "∈", "[−100,", "100]", "мм"], driver  # what the cycle uses
+    assert re.search(r"закон на движение на водещото звено: постоянна скорост, a ?2 = 0\s+изходно звено 6", first), first
+    assert "не се използва" not in first and "зададеното" not in first, first
+
+
+def test_a_handout_states_a_given_acceleration_as_its_instants():
+    """A user's scene that gives a = 2 m/s² (the linear-arm written out with it), at the course's constant speed: the
+    handout's first page says, beside the law, that the 2 m/s² is not used (nothing given silently dropped); its
+    driver's line gives v only (issue 20, 2nd review).  Two positions: the data block is that of any cycle."""
+    pages = _lines(handout(linear_arm_accelerating(), positions=2, lang="bg").pdf())
+    first = " ".join(line[4] for line in pages[0])
+    assert "v = 0,5 м/с" in first and "a = 2 м/с2" not in first
     assert re.search(r"постоянна скорост, a ?2 = 0\s+\(зададеното a ?2 = 2 м/с2 не се използва: цикълът следва този закон\)",
                      first), first
 

@@ -17,6 +17,8 @@ import pytest
 
 from plans.cli import main
 
+from accelerating_scenes import write_linear_arm_accelerating
+
 SVG = "{http://www.w3.org/2000/svg}"
 
 
@@ -32,22 +34,25 @@ def _arrows(ids, kind: str) -> list[str]:
 @pytest.fixture(scope="module")
 def drawn(tmp_path_factory):
     out = {}
-    for example in ("linear-arm", "six-bar"):
+    for example in ("linear-arm-accelerating", "six-bar"):
         d = tmp_path_factory.mktemp(example)
-        assert main(["draw", "--example", example, "-o", str(d)]) == 0
+        if example == "six-bar":
+            assert main(["draw", "--example", example, "-o", str(d)]) == 0
+        else:  # the linear-arm with a = 2 m/s² at its instant (the bundled example's a = 0 draws longer normals)
+            assert main(["draw", str(write_linear_arm_accelerating(tmp_path_factory.mktemp("scene"))), "-o", str(d)]) == 0
         out[example] = d
     return out
 
 
 def test_a_kind_drawn_only_as_notes_is_in_the_legend_too(drawn):
-    # linear-arm at its own position: both normal components are 2–3 mm, notes only
-    ids = _ids(drawn["linear-arm"] / "acceleration.svg")
+    # linear-arm at its own position with a = 2 m/s²: both normal components are 2–3 mm, notes only
+    ids = _ids(drawn["linear-arm-accelerating"] / "acceleration.svg")
     assert [i for i in ids if i.startswith("acc-short-a_n")], "the normal components are notes here"
     assert not _arrows(ids, "normal")
     assert [i for i in ids if i.startswith("acc-legend-normal")] and [i for i in ids if i.startswith("acc-legend-text-normal")]
     assert _arrows(ids, "tangential") and [i for i in ids if i.startswith("acc-legend-tangential")]
     # and no kind the plan does not hold (the velocity plan has no components)
-    ids = _ids(drawn["linear-arm"] / "velocity.svg")
+    ids = _ids(drawn["linear-arm-accelerating"] / "velocity.svg")
     assert not [i for i in ids if re.match(r"^vel-legend-(normal|tangential|coriolis)", i)]
 
 
@@ -60,7 +65,7 @@ def test_a_kind_with_one_arrow_drawn_is_in_the_legend(drawn):
 def test_the_sheet_legend_follows_the_plans_too(drawn):
     from sheet_pages import drawings
 
-    placed = drawings((drawn["linear-arm"] / "sheet.svg").read_bytes())  # the page's drawings, the legend one of them
+    placed = drawings((drawn["linear-arm-accelerating"] / "sheet.svg").read_bytes())  # the page's drawings, the legend one of them
     ids = [g.get("id") for d in placed for g in d.root.iter(f"{SVG}g") if g.get("id")]
     legend_kinds = {i.split("-")[-1] for i in ids if re.match(r"^.*legend-(absolute|relative|normal|tangential|coriolis)$", i)}
     assert {"normal", "tangential", "coriolis"} <= legend_kinds, legend_kinds

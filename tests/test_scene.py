@@ -8,6 +8,8 @@ import pytest
 from plans import PlansError, SceneError, load, loads
 from plans.scene import FRAME, Crank, LinearDriver, example_names, example_path
 
+from accelerating_scenes import linear_arm_accelerating
+
 FOUR_BAR = """
 title = "test"
 [frame]
@@ -56,7 +58,10 @@ def test_line_through_a_named_point_at_an_angle():
     assert sleeve.direction == pytest.approx(cmath.exp(1j * math.pi / 3))
     driver = scene.driver
     assert isinstance(driver, LinearDriver)
-    assert (driver.velocity, driver.acceleration, driver.stroke) == (0.5, 2.0, pytest.approx((-0.1, 0.1)))
+    # the file gives v = 0.5 m/s and no acceleration (constant speed: a = 0), a stroke of ±100 mm
+    assert (driver.velocity, driver.acceleration, driver.stroke) == (0.5, 0.0, pytest.approx((-0.1, 0.1)))
+    # a given acceleration = "2 m/s^2" is read in m/s² (the same mechanism written out with it)
+    assert linear_arm_accelerating().driver.acceleration == 2.0
 
 
 def test_two_blocks_on_one_pin_get_distinct_joint_names():

@@ -30,12 +30,14 @@ def test_analytic_column_keeps_the_graphical_decimals():
 
 def test_the_sliding_drivers_acceleration_is_drawn_solid_as_an_absolute_vector():
     # the scheme's a_A is the driver point's given absolute acceleration: a solid shaft as the plans' legend draws
-    # an absolute vector (a dashed one reads as a component)
+    # an absolute vector (a dashed one reads as a component); the linear-arm with a = 2 m/s² at its instant (the
+    # bundled example runs at constant speed, a = 0: no a_A to draw)
     from plans.drawing import draw_mechanism
     from plans.graphical import construct
-    from plans.scene import example_path, load
 
-    artists = draw_mechanism(construct(load(example_path("linear-arm"))))
+    from accelerating_scenes import linear_arm_accelerating
+
+    artists = draw_mechanism(construct(linear_arm_accelerating()))
     shafts = {a.get_gid(): a for a in artists if a.get_gid() in ("mech-velocity", "mech-acceleration")}
     assert set(shafts) == {"mech-velocity", "mech-acceleration"}
     for shaft in shafts.values():

@@ -9,15 +9,17 @@ from plans.graphical import construct
 from plans.report import sheet_table
 from plans.scene import example_path, load
 
+from accelerating_scenes import linear_arm_accelerating
+
 
 def _linear_arm():
-    scene = load(example_path("linear-arm"))
+    scene = linear_arm_accelerating()  # the linear-arm with a = 2 m/s² at its instant (the bundled one's a = 0)
     # at the sheet's factors: 2 m/s² at k_a 0.03 is 66.67 mm, drawn to the drafting precision as 66.7 mm
     return scene, construct(scene, k_l=0.005, k_v=0.008, k_a=0.03, precision=0.1), plans.solve(scene)
 
 
 def test_the_drivers_given_acceleration_prints_as_given():
-    # linear-arm.toml gives the slider a = 2 m/s² (and v = 0.5 m/s) along the floor (0°): the table prints the given
+    # the scene gives the slider a = 2 m/s² (and v = 0.5 m/s) along the floor (0°): the table prints the given
     # value in both columns as the scene writes it (as v_A 0.5 beside 0.5), not a reading of its drawn length (2.001)
     from plans.drawing.readings import plan_readings
 
