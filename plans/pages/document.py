@@ -351,8 +351,8 @@ class Document:
             for row in similar.get(index, ()):
                 row = PlacementRow("by_similarity", "proportion", row) if isinstance(row, str) else row
                 who = term(row.who, self.lang) if row.who in ("fixed_points", "by_similarity") else f"{term('link', self.lang)} {row.who}"
-                if row.kind == "proportion":
-                    cell = f"[#text(style: \"italic\")[{self.words(row.text)}]], []"
+                if row.kind == "proportion":  # (clear of a double underline's second rule in the row above)
+                    cell = f"[#pad(top: 3.5pt)[#text(style: \"italic\")[{self.words(row.text)}]]], []"
                 else:
                     eq, cond = placement_math(row, name)
                     cell = f"[${eq}$], " + (f"[${cond}$]" if cond else "[]")
