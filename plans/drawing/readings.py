@@ -12,7 +12,7 @@ from ..i18n import term
 from .._text import SUBSCRIPT, decimal_comma, math_name
 from .plan_drawing import aliases, end_letters, image_text, pole_text, segment, vectors_drawn
 
-__all__ = ["plan_readings", "link_length", "printed_length", "Placement", "image_placements", "label_point", "similarity_lines", "proportion_text"]
+__all__ = ["plan_readings", "link_length", "printed_length", "Placement", "image_placements", "at_rest", "label_point", "similarity_lines", "proportion_text"]
 
 
 _UNIT = {"velocity": "m/s", "acceleration": "m/s²"}
@@ -199,10 +199,7 @@ def image_placements(graphical, kind: str) -> list[Placement]:
     if plan is None:
         return []
     points = getattr(plan, "points", None) or {}
-    made = {step.image for step in plan.steps}
-    frame_points = set(graphical.scene.frame.points) if graphical.scene is not None else set()
-    rest = tuple(label for label, z in plan.images.items()
-                 if z == 0 and label not in made and (label not in points or points[label][0] in frame_points))
+    rest = at_rest(graphical, plan)
     out = [Placement("rest", rest)] if rest else []
     known = set(rest)
     turns = getattr(graphical, "turns_with", None) or {}
@@ -262,6 +259,16 @@ def image_placements(graphical, kind: str) -> list[Placement]:
     return out
 
 
+def at_rest(graphical, plan) -> tuple[str, ...]:
+    """The images of *plan* at the pole because their points are the frame's (not a step's image, not a moving
+    point at rest for the instant: linear-arm's f′ when a_A = 0)."""
+    made = {step.image for step in plan.steps}
+    frame = set(graphical.scene.frame.points)
+    points = getattr(plan, "points", None) or {}
+    return tuple(label for label, z in plan.images.items()
+                 if z == 0 and label not in made and (label not in points or points[label][0] in frame))
+
+
 def label_point(plan, label: str) -> tuple[str, str]:
     """(the mechanism point's name as the scene writes it, the number of the link it is a point of or ``""``) of an
     image *label* of *plan*: ``"h3′"`` -> ``("H", "3")``."""
@@ -301,10 +308,10 @@ def proportion_text(graphical, kind: str, placement: Placement, numbers: bool = 
     if plan is None or placement.how not in ("similar", "turns"):
         return ""
     points = getattr(plan, "points", None) or {}
-    made = {s.image for s in plan.steps}
+    rest = at_rest(graphical, plan)
 
-    def letter(label: str) -> str:
-        return pole_text(plan) if plan.images[label] == 0 and label not in made else image_text(label, points)
+    def letter(label: str) -> str:  # (an image at the pole as its point is the frame's: the pole's letter)
+        return pole_text(plan) if label in rest else image_text(label, points)
 
     def seg(a: str, b: str) -> str:
         first, second = letter(a), letter(b)
