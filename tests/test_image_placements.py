@@ -147,3 +147,27 @@ def test_the_handout_places_every_image_it_draws():
         kinds = ("velocity", "acceleration") if r.index in h.accelerations else ("velocity",)
         assert not unplaced(r.graphical, text, kinds), (r.index, unplaced(r.graphical, text, kinds))
 
+
+
+def test_a_rows_images_wait_for_their_steps_at_every_position():
+    """Over the quick-return's 12 positions (position 0 at the extreme: ω₄ = 0 and a₄, d, e at the pole) no row places
+    a step's image, every row starts from images drawn before it (at rest, a step's so far, or an earlier row's), every
+    image of each plan is placed by a step or a row, and rocker 4 is never taken for a link that translates (it turns;
+    its ω is zero for the instant only)."""
+    from plans.drawing.readings import image_placements
+    from plans.positions import run_positions
+
+    run = run_positions(plans.load(plans.example_path("quick-return")), 12)
+    for r in run.runs:
+        for kind in ("velocity", "acceleration"):
+            plan = r.graphical.velocity_plan if kind == "velocity" else r.graphical.acceleration_plan
+            steps = [s.image for s in plan.steps]
+            placements = image_placements(r.graphical, kind)
+            drawn = set()
+            for p in placements:
+                assert not set(p.images) & set(steps), (r.index, kind, p)
+                before = set(steps[:p.after + 1]) | drawn
+                assert set(p.start) <= before, (r.index, kind, p, before)
+                assert not (p.how == "translates" and p.link == "4"), (r.index, kind, p)
+                drawn.update(p.images)
+            assert set(plan.images) == drawn | set(steps), (r.index, kind, set(plan.images) - drawn - set(steps))

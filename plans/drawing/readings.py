@@ -9,6 +9,7 @@ import math
 from dataclasses import dataclass
 
 from ..i18n import term
+from ..scene import FRAME, Crank
 from .._text import SUBSCRIPT, decimal_comma, math_name
 from .plan_drawing import aliases, end_letters, image_text, pole_text, segment, vectors_drawn
 
@@ -190,8 +191,8 @@ def image_placements(graphical, kind: str) -> list[Placement]:
     construction places, in the order they are drawn (:class:`Placement`).
 
     Read from the construction: the images at rest (the frame's points, at the pole) and each step's image are
-    constructed; then a link with two images known has the rest of its images by similarity; a link that translates
-    has every image at one place (no proportion); a link with one image known that the construction turned with
+    constructed; then a link that translates (slides on the frame, or is a sliding driver) has every image at one
+    place (no proportion); a link with two images known has the rest of its images by similarity; a link with one image known that the construction turned with
     another (:attr:`~plans.graphical.plan.GraphicalSolution.turns_with`: a rod in a sleeve, ω₃ = ω₄) has its next
     image from that one with the other's ω, ε, the rest then by similarity.
     """
@@ -202,7 +203,21 @@ def image_placements(graphical, kind: str) -> list[Placement]:
     rest = at_rest(graphical, plan)
     out = [Placement("rest", rest)] if rest else []
     known = set(rest)
+    made = {step.image for step in plan.steps}  # (each placed by its own step, in its turn)
     turns = getattr(graphical, "turns_with", None) or {}
+    driver = graphical.scene.driver
+    sliding_driver = None if isinstance(driver, Crank) else driver.link
+
+    def translates(link: str) -> bool:
+        """The link does not turn, by construction: it slides on the frame or is (turns with) a sliding driver
+        (not a link whose ω is zero for the instant: its images are placed as any turning link's)."""
+        seen = set()
+        while link not in seen:
+            if link == FRAME or link == sliding_driver:
+                return True
+            seen.add(link)
+            link = turns.get(link, link)
+        return False
 
     def real(label: str) -> complex:
         return graphical.positions[label_point(plan, label)[0]]
@@ -229,11 +244,10 @@ def image_placements(graphical, kind: str) -> list[Placement]:
             changed = False
             for link, labels in plan.links.items():
                 have = [label for label in labels if label in known]
-                todo = [label for label in labels if label not in known and label in plan.images]
+                todo = [label for label in labels if label not in known and label not in made and label in plan.images]
                 if not have or not todo:
                     continue
-                zs = [plan.images[label] for label in labels if label in plan.images]
-                if max(abs(z - zs[0]) for z in zs) <= 1e-9 * max(1.0, max(abs(z) for z in zs)):
+                if translates(link):
                     out.append(Placement("translates", tuple(todo), (have[0],), link, after=after))
                     known.update(todo)
                 elif len(have) >= 2:
