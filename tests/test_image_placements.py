@@ -133,11 +133,13 @@ def test_the_linear_arms_rod_proportion_has_the_scenes_numbers(linear_arm_bg):
 
 
 def test_the_handout_places_every_image_it_draws():
-    """The reviewed Bulgarian linear-arm handout (8 positions): every image of every velocity plan and of the
-    acceleration plans it draws has its row, g's with ω₃ = ω₄."""
-    from review_handouts import reviewed_handouts
+    """The Bulgarian linear-arm handout (2 positions, both with acceleration plans: the reviewed one has 8, the rows
+    are the same): every image of every velocity plan and of the acceleration plans it draws has its row, g's with
+    ω₃ = ω₄."""
+    from plans.handout import handout
 
-    h, _ = reviewed_handouts()["linear-arm"]
+    h = handout(plans.load(plans.example_path("linear-arm")), positions=2, lang="bg")
+    assert h.accelerations == [0, 1]
     text = _text(h.pdf())
     rows = _rows(text)
     assert "vG=vF+vGF" in rows and "aG=aF+anGF+atGF" in rows
