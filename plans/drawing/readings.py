@@ -192,9 +192,10 @@ def image_placements(graphical, kind: str) -> list[Placement]:
 
     Read from the construction: the images at rest (the frame's points, at the pole) and each step's image are
     constructed; then a link that translates (slides on the frame, or is a sliding driver) has every image at one
-    place (no proportion); a link with two images known has the rest of its images by similarity; a link with one image known that the construction turned with
-    another (:attr:`~plans.graphical.plan.GraphicalSolution.turns_with`: a rod in a sleeve, ω₃ = ω₄) has its next
-    image from that one with the other's ω, ε, the rest then by similarity.
+    place (no proportion); a link with two images known has the rest of its images by similarity; a link with one
+    image known that the construction turned with another
+    (:attr:`~plans.graphical.plan.GraphicalSolution.turns_with`: a rod in a sleeve, ω₃ = ω₄) has its next image from
+    that one with the other's ω, ε, the rest then by similarity.  A step's image is its step's, in its turn.
     """
     plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
     if plan is None:
