@@ -6,12 +6,14 @@
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from ..i18n import term
-from .._text import decimal_comma, math_name
+from ..scene import FRAME, Crank
+from .._text import SUBSCRIPT, decimal_comma, math_name
 from .plan_drawing import aliases, end_letters, image_text, pole_text, segment, vectors_drawn
 
-__all__ = ["plan_readings", "link_length", "printed_length", "similar_images", "similarity_lines"]
+__all__ = ["plan_readings", "link_length", "printed_length", "Placement", "image_placements", "at_rest", "label_point", "similarity_lines", "proportion_text"]
 
 
 _UNIT = {"velocity": "m/s", "acceleration": "m/s²"}
@@ -150,65 +152,188 @@ def plan_readings(graphical, kind: str, lang: str = "en") -> list[list[str]]:
 # --- images placed by similarity ----------------------------------------------------------------------------------
 
 
-def similar_images(plan) -> list[tuple[str, str, str]]:
-    """The images of *plan* placed by the similarity theorem: ``(y, z, x)`` image labels, *x* placed from the known
-    images *y*, *z* of the same link (the figure yzx similar to the link's YZX, lettered in the same sense).
+@dataclass(frozen=True)
+class Placement:
+    """How images of a plan are placed that no construction step places (a step places its own image).
 
-    Read from the plan's construction: the images at rest (the pole) and each step's image are constructed; a link
-    with two images known has the rest of its images by similarity (*y* the one at the pole when there is one); a
-    link that translates has every image at one place (no proportion).  In the order they are placed.
+    Attributes
+    ----------
+    how : str
+        ``"rest"``: points of the frame, their images at the pole (v = 0, a = 0);
+        ``"translates"``: the images of a link that does not turn (ω = 0, ε = 0) at one place with a known one;
+        ``"similar"``: the figure of the link's images similar to the link (two of its images known);
+        ``"turns"``: one image of the link known and the link turning with *partner* (a rod sliding in a sleeve,
+        a block on its guide: ω and ε of *partner*), the next image from it (v_G = v_F + v_GF, v_GF = ω·FG).
+    images : tuple[str, ...]
+        The image labels it places.
+    start : tuple[str, ...]
+        The known image labels it starts from: ``()`` (rest), ``(y,)`` (translates), ``(y, z)`` (similar, *y* the
+        image at the pole when there is one), ``(y, a, b)`` (turns: *y* the link's known image, *a*, *b* two known
+        images of *partner*, whose figure gives ω and ε).
+    link : str
+        The link whose images they are (``""`` for rest).
+    partner : str
+        The link it turns with (``"turns"``), else ``""``.
+    after : int
+        The index of the plan's step after which it is drawn (-1: before the first).
     """
-    known = {label for label, z in plan.images.items() if z == 0}
-    out = []
 
-    def spread() -> None:
-        changed = True
-        while changed:
-            changed = False
-            for labels in plan.links.values():
-                have = [label for label in labels if label in known]
-                rest = [label for label in labels if label not in known and label in plan.images]
-                if not have or not rest:
-                    continue
-                zs = [plan.images[label] for label in labels if label in plan.images]
-                if max(abs(z - zs[0]) for z in zs) <= 1e-9 * max(1.0, max(abs(z) for z in zs)):
-                    known.update(rest)  # a link that translates: its images at one place
-                    changed = True
-                elif len(have) >= 2:
-                    y, z = sorted(have[:2], key=lambda label: plan.images[label] != 0)
-                    for x in rest:
-                        out.append((y, z, x))
-                        known.add(x)
-                    changed = True
-
-    for step in plan.steps:
-        known.add(step.image)
-        spread()
-    return out
+    how: str
+    images: tuple[str, ...]
+    start: tuple[str, ...] = ()
+    link: str = ""
+    partner: str = ""
+    after: int = -1
 
 
-def similarity_lines(graphical, kind: str) -> list[str]:
-    """The proportions by which the images of the plan of *kind* (``"velocity"``, ``"acceleration"``) were placed
-    by similarity (:func:`similar_images`), with their numbers: the plan's segments [mm on the plan] in proportion
-    to the link's lengths [mm]:
+def image_placements(graphical, kind: str) -> list[Placement]:
+    """How each image of the plan of *kind* (``"velocity"``, ``"acceleration"``) is placed that no step of its
+    construction places, in the order they are drawn (:class:`Placement`).
 
-    - three points on a line: ``pd / pa₄ = CD / CA:  pd = 45.0 · 550.0 / 327.0 = 75.7 mm``;
-    - a triangle (yzx similar to YZX): its two sides, ``am / ab = AM / AB:  am = …;  bm / ba = BM / BA:  bm = …``.
+    Read from the construction: the images at rest (the frame's points, at the pole) and each step's image are
+    constructed; then a link that translates (slides on the frame, or is a sliding driver) has every image at one
+    place (no proportion); a link with two images known has the rest of its images by similarity; a link with one
+    image known that the construction turned with another
+    (:attr:`~plans.graphical.plan.GraphicalSolution.turns_with`: a rod in a sleeve, ω₃ = ω₄) has its next image from
+    that one with the other's ω, ε, the rest then by similarity.  A step's image is its step's, in its turn.
     """
     plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
     if plan is None:
         return []
     points = getattr(plan, "points", None) or {}
+    rest = at_rest(graphical, plan)
+    out = [Placement("rest", rest)] if rest else []
+    known = set(rest)
+    made = {step.image for step in plan.steps}  # (each placed by its own step, in its turn)
+    turns = getattr(graphical, "turns_with", None) or {}
+    driver = graphical.scene.driver
+    sliding_driver = None if isinstance(driver, Crank) else driver.link
 
-    def letter(label: str) -> str:
-        return pole_text(plan) if plan.images[label] == 0 and label not in {s.image for s in plan.steps} else image_text(label, points)
+    def translates(link: str) -> bool:
+        """The link does not turn, by construction: it slides on the frame or is (turns with) a sliding driver
+        (not a link whose ω is zero for the instant: its images are placed as any turning link's)."""
+        seen = set()
+        while link not in seen:
+            if link == FRAME or link == sliding_driver:
+                return True
+            seen.add(link)
+            link = turns.get(link, link)
+        return False
+
+    def real(label: str) -> complex:
+        return graphical.positions[label_point(plan, label)[0]]
+
+    def partner_pair(link: str):
+        """(the link whose figure gives ω, ε of *link*, two of its known images), following a chain of links that
+        turn together (a block on a rod in a sleeve) to one with two images known; None when not yet known."""
+        seen = {link}
+        other = turns.get(link)
+        while other is not None and other not in seen:
+            have = [label for label in plan.links.get(other, ()) if label in known]
+            if len(have) >= 2:
+                pairs = [(a, b) for i, a in enumerate(have) for b in have[i + 1:] if abs(real(a) - real(b)) > 0]
+                if pairs:  # the image at the pole first, the two farthest apart on the link
+                    a, b = max(pairs, key=lambda ab: (plan.images[ab[0]] == 0 or plan.images[ab[1]] == 0, abs(real(ab[0]) - real(ab[1]))))
+                    return other, tuple(sorted((a, b), key=lambda label: plan.images[label] != 0))
+            seen.add(other)
+            other = turns.get(other)
+        return None
+
+    def spread(after: int) -> None:
+        changed = True
+        while changed:
+            changed = False
+            for link, labels in plan.links.items():
+                have = [label for label in labels if label in known]
+                todo = [label for label in labels if label not in known and label not in made and label in plan.images]
+                if not have or not todo:
+                    continue
+                if translates(link):
+                    out.append(Placement("translates", tuple(todo), (have[0],), link, after=after))
+                    known.update(todo)
+                elif len(have) >= 2:
+                    y, z = sorted(have[:2], key=lambda label: plan.images[label] != 0)
+                    for x in todo:
+                        out.append(Placement("similar", (x,), (y, z), link, after=after))
+                        known.add(x)
+                else:
+                    found = partner_pair(link)
+                    if found is None:
+                        continue
+                    y = have[0]
+                    # the next image: a point the link is named by (not a coincident point's), the farthest from y
+                    x = max(todo, key=lambda label: (not (label in points and points[label][1]), abs(real(label) - real(y))))
+                    out.append(Placement("turns", (x,), (y, *found[1]), link, found[0], after))
+                    known.add(x)
+                changed = True
+
+    spread(-1)
+    for index, step in enumerate(plan.steps):
+        known.add(step.image)
+        spread(index)
+    return out
+
+
+def at_rest(graphical, plan) -> tuple[str, ...]:
+    """The images of *plan* at the pole because their points are the frame's (not a step's image, not a moving
+    point at rest for the instant: linear-arm's f′ when a_A = 0)."""
+    made = {step.image for step in plan.steps}
+    frame = set(graphical.scene.frame.points)
+    points = getattr(plan, "points", None) or {}
+    return tuple(label for label, z in plan.images.items()
+                 if z == 0 and label not in made and (label not in points or points[label][0] in frame))
+
+
+def label_point(plan, label: str) -> tuple[str, str]:
+    """(the mechanism point's name as the scene writes it, the number of the link it is a point of or ``""``) of an
+    image *label* of *plan*: ``"h3′"`` -> ``("H", "3")``."""
+    points = getattr(plan, "points", None) or {}
+    if label in points:
+        return points[label]
+    base = label.rstrip("′")
+    letters = base.rstrip("0123456789")
+    return letters.upper(), base[len(letters):]
+
+
+def similarity_lines(graphical, kind: str) -> list[str]:
+    """The proportions by which the images of the plan of *kind* (``"velocity"``, ``"acceleration"``) were placed by
+    similarity or with the ω, ε of the link they turn with (:func:`image_placements`), with their numbers: the plan's
+    segments [mm on the plan] in proportion to the link's lengths [mm] (:func:`proportion_text`)."""
+    out = []
+    for placement in image_placements(graphical, kind):
+        line = proportion_text(graphical, kind, placement)
+        if line:
+            out.append(line)
+    return out
+
+
+def proportion_text(graphical, kind: str, placement: Placement, numbers: bool = True) -> str:
+    """The proportion that places the image of *placement* on the plan of *kind*, with its numbers (*numbers*: the
+    plan's segments [mm on the plan] and the link's lengths [mm] from the mechanism), ``""`` for images at rest or
+    of a link that translates (no proportion):
+
+    - three points on a line: ``pd / pa₄ = CD / CA:  pd = 45.0 · 550.0 / 327.0 = 75.7 mm``;
+    - a triangle (yzx similar to YZX): its two sides, ``am / ab = AM / AB:  am = …;  bm / ba = BM / BA:  bm = …``;
+    - an image of a link that turns with another (yx from that link's ab, the figures similar):
+      ``fg / p f₄ = FG / DF:  fg = 14.8 · 550.0 / 255.8 = 31.8 mm  (ω₃ = ω₄)``.
+
+    Without *numbers* each proportion alone (``am / ab = AM / AB;  bm / ba = BM / BA``).
+    """
+    plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
+    if plan is None or placement.how not in ("similar", "turns"):
+        return ""
+    points = getattr(plan, "points", None) or {}
+    rest = at_rest(graphical, plan)
+
+    def letter(label: str) -> str:  # (an image at the pole as its point is the frame's: the pole's letter)
+        return pole_text(plan) if label in rest else image_text(label, points)
 
     def seg(a: str, b: str) -> str:
         first, second = letter(a), letter(b)
         return first + second if (first + second).isascii() and len(first) == len(second) == 1 else f"{first} {second}"
 
     def name(label: str) -> str:
-        return points[label][0] if label in points else label.rstrip("′").upper()
+        return label_point(plan, label)[0]
 
     def on_plan(a: str, b: str) -> float:
         return abs(plan.images[a] - plan.images[b])
@@ -216,18 +341,31 @@ def similarity_lines(graphical, kind: str) -> list[str]:
     def real(a: str, b: str) -> float:  # [mm]
         return abs(graphical.positions[name(a)] - graphical.positions[name(b)]) * 1e3
 
-    lines = []
-    for y, z, x in similar_images(plan):
-        Y, Z, X = name(y), name(z), name(x)
-        if any(n not in graphical.positions for n in (Y, Z, X)) or real(y, z) == 0:
-            continue
-        zy, zx = graphical.positions[Y] - graphical.positions[Z], graphical.positions[X] - graphical.positions[Z]
-        line_up = abs((zy.conjugate() * zx).imag) <= 1e-9 * max(abs(zy) * abs(zx), 1e-30)
-        if line_up:  # yx / yz = YX / YZ
-            lines.append(f"{seg(y, x)} / {seg(y, z)} = {Y}{X} / {Y}{Z}:  {seg(y, x)} = {on_plan(y, z):.1f} · {real(y, x):.1f} / "
-                         f"{real(y, z):.1f} = {on_plan(y, z) * real(y, x) / real(y, z):.1f} mm")
-        else:  # the triangle yzx similar to YZX: its two other sides from yz, each in the same proportion
-            lines.append(";  ".join(
-                f"{seg(a, x)} / {seg(a, b)} = {A}{X} / {A}{B}:  {seg(a, x)} = {on_plan(a, b):.1f} · {real(a, x):.1f} / {real(a, b):.1f} = "
-                f"{on_plan(a, b) * real(a, x) / real(a, b):.1f} mm" for a, b, A, B in ((y, z, Y, Z), (z, y, Z, Y))))
-    return lines
+    def proportion(a: str, x: str, b: str, c: str, base: str) -> str:
+        """ax / bc = AX / BC, ax = bc · AX / BC; *base* the plan's segment bc's letters."""
+        text = f"{seg(a, x)} / {base} = {name(a)}{name(x)} / {name(b)}{name(c)}"
+        if numbers:
+            text += (f":  {seg(a, x)} = {on_plan(b, c):.1f} · {real(a, x):.1f} / {real(b, c):.1f} = "
+                     f"{on_plan(b, c) * real(a, x) / real(b, c):.1f} mm")
+        return text
+
+    labels = (*placement.start, *placement.images)
+    if any(name(label) not in graphical.positions for label in labels):
+        return ""
+    x = placement.images[0]
+    if placement.how == "turns":
+        y, a, b = placement.start
+        if real(a, b) == 0:
+            return ""
+        link, partner = placement.link.translate(SUBSCRIPT), placement.partner.translate(SUBSCRIPT)
+        same = f"ω{link} = ω{partner}" + (f", ε{link} = ε{partner}" if kind == "acceleration" else "")
+        return proportion(y, x, a, b, seg(a, b)) + f"  ({same})"
+    y, z = placement.start
+    if real(y, z) == 0:
+        return ""
+    Y, Z, X = (graphical.positions[name(label)] for label in (y, z, x))
+    zy, zx = Y - Z, X - Z
+    if abs((zy.conjugate() * zx).imag) <= 1e-9 * max(abs(zy) * abs(zx), 1e-30):  # on a line: yx / yz = YX / YZ
+        return proportion(y, x, y, z, seg(y, z))
+    # the triangle yzx similar to YZX: its two other sides from yz, each in the same proportion
+    return ";  ".join(proportion(a, x, a, b, seg(a, b)) for a, b in ((y, z), (z, y)))

@@ -210,6 +210,7 @@ def construct(
         warnings=warnings,
         relative=relative,
         rotations=rotations,
+        turns_with=dict(ctx.turns_with),
     )
     if check_scales and given:
         sizes = figure_sizes(solution)

@@ -212,6 +212,11 @@ class GraphicalSolution(_Drawable):
         ω = |vector| × k_v / length, and the segment of the mechanism it is
         perpendicular to (``"BC"``).  Links that turn with another share its
         entry; a driver's given ω has none.
+    turns_with : dict[str, str]
+        Link name -> the body it turns with, as the construction took it: a
+        block and its guide, a rod sliding in a sleeve (``"3": "4"``: ω₃ = ω₄,
+        ε₃ = ε₄); the images of such a link on a plan are drawn with that
+        body's ω and ε.  ``"frame"``: the link translates.
     travel : dict[str, tuple[float, float]]
         Drawing data, not part of the construction: ``"4.slot"`` ->
         (s_min, s_max) [m], the stretch of a line that what slides on it uses
@@ -243,6 +248,7 @@ class GraphicalSolution(_Drawable):
     warnings: tuple = ()
     relative: dict[str, dict] = field(default_factory=dict)
     rotations: dict[str, dict[str, tuple[str, str, float]]] = field(default_factory=dict)
+    turns_with: dict[str, str] = field(default_factory=dict)
     travel: dict[str, tuple[float, float]] = field(default_factory=dict)
     cycle_poses: tuple = ()
 

@@ -19,7 +19,7 @@ import math
 from ..graphical.scales import round_up
 from ..i18n import term
 from .._text import decimal_comma
-from .equations import step_lines
+from .equations import PlacementRow, placement_math, step_lines
 from .typesetting import FONT as _FONT, MATH_FONT as _MATH, image, mixed, string, text
 from .words import block_words, units
 
@@ -331,8 +331,9 @@ class Document:
     def equations(self, heading: str, steps, name, new_page: bool = False, similar=None, flow: bool = False) -> None:
         """The vector equations of the plans' steps under *heading*, with the note on the underlines: one block,
         never parted from its heading (*flow*: the rows flow on over a page's end, a group's whole, the heading kept
-        with the first); *similar*: step index -> the proportions (text) that place images by
-        similarity once that step is drawn, each a row after the step's (-1: before the first step)."""
+        with the first); *similar*: step index -> the rows placing the images no step places
+        (:func:`plans.pages.equations.placement_rows`; a text: a proportion by similarity) once that step is drawn,
+        after the step's rows (-1: before the first step)."""
         from .words import group_words
 
         if new_page and self.body:
@@ -345,10 +346,22 @@ class Document:
             for k, cell in enumerate(cells):
                 rows.append((f"table.cell(rowspan: {len(cells)})[{text(who)}], " if k == 0 else "") + cell)
 
-        def by_similarity(index: int) -> None:
-            lines = similar.get(index, ())
-            if lines:
-                group(term("by_similarity", self.lang), [f"[#text(style: \"italic\")[{self.words(line)}]], []" for line in lines])
+        def by_similarity(index: int) -> None:  # the rows of one column word (a link's number, "by similarity") as one group
+            cells: list[tuple[str, list[str]]] = []
+            for row in similar.get(index, ()):
+                row = PlacementRow("by_similarity", "proportion", row) if isinstance(row, str) else row
+                who = term(row.who, self.lang) if row.who in ("fixed_points", "by_similarity") else f"{term('link', self.lang)} {row.who}"
+                if row.kind == "proportion":  # (clear of a double underline's second rule in the row above)
+                    cell = f"[#pad(top: 3.5pt)[#text(style: \"italic\")[{self.words(row.text)}]]], []"
+                else:
+                    eq, cond = placement_math(row, name)
+                    cell = f"[${eq}$], " + (f"[${cond}$]" if cond else "[]")
+                if cells and cells[-1][0] == who:
+                    cells[-1][1].append(cell)
+                else:
+                    cells.append((who, [cell]))
+            for who, rows_of in cells:
+                group(who, rows_of)
 
         by_similarity(-1)
         for index, step in enumerate(steps):

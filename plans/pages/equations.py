@@ -33,10 +33,11 @@ arrow(v)_(C) = #box(stroke: (bottom: 0.4pt), outset: (bottom: 1.3pt), {set text(
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 
 from .typesetting import string
 
-__all__ = ["equation_math", "condition_math", "step_lines", "VECTOR", "once", "twice", "DOUBLE_GAP_PT", "DOUBLE_STROKE_PT"]
+__all__ = ["equation_math", "condition_math", "step_lines", "PlacementRow", "placement_rows", "placement_math", "VECTOR", "once", "twice", "DOUBLE_GAP_PT", "DOUBLE_STROKE_PT"]
 
 #: the stroke [pt] of a double underline's second rule (thin, as the math font's own rule, about 0.04 em)
 DOUBLE_STROKE_PT = 0.4
@@ -193,3 +194,94 @@ def step_lines(step, name=lambda word: word) -> list[tuple[str, str]]:
         condition = rest[:-1] if rest.endswith(")") else rest
         out.append((equation_math(main.strip(), known, found, name, condition), condition_math(condition, name) if condition else ""))
     return out
+
+
+@dataclass(frozen=True)
+class PlacementRow:
+    """A row of the vector equations saying how images that no construction step places are placed
+    (:func:`plans.drawing.readings.image_placements`).
+
+    Attributes
+    ----------
+    who : str
+        Its first column: ``"fixed_points"`` or ``"by_similarity"`` (words of :mod:`plans.i18n`), or a link's number
+        (``"3"``: the row of link 3).
+    kind : str
+        ``"equation"``: a vector equation with its conditions, the known parts underlined as a step's
+        (``v_G = v_F + v_GF``, ``v_GF ⊥ FG; ω3 = ω4``); ``"fact"``: an equality set as it is
+        (``v_D = v_Q = 0``); ``"proportion"``: a proportion in words (``ab / ac = AB / AC``).
+    text : str
+        The equation, the fact or the proportion, in the plans' notation (:data:`VECTOR`).
+    condition : str
+        The conditions after an equation (``""``: none).
+    known : tuple[str, ...]
+        The vectors of an equation known in magnitude and direction (underlined twice).
+    images : tuple[str, ...]
+        The image labels the row places (``("g",)``).
+    """
+
+    who: str
+    kind: str
+    text: str
+    condition: str = ""
+    known: tuple[str, ...] = ()
+    images: tuple[str, ...] = ()
+
+
+def placement_rows(graphical, kind: str) -> dict[int, list[PlacementRow]]:
+    """Step index -> the rows (:class:`PlacementRow`) placing the images of the plan of *kind* (``"velocity"``,
+    ``"acceleration"``) that no step places, each once the images it starts from are drawn (-1: before the first
+    step): the points at rest (at the pole), the images of a link that translates, by similarity, and those of a
+    link that turns with another (ω₃ = ω₄)."""
+    from ..drawing.plan_drawing import at_rest_texts
+    from ..drawing.readings import image_placements, label_point, proportion_text
+
+    plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
+    if plan is None:
+        return {}
+    symbol = "v" if kind == "velocity" else "a"
+    unprimed = str.maketrans({"′": None})
+    written = {label: text.translate(unprimed) for label, text in at_rest_texts(plan).items()}
+
+    def name(label: str) -> str:
+        """The point's name in a vector's subscript (``F``, ``H3``; a point at rest as the plan letters it, ``E6``)."""
+        if label in written:
+            text = written[label]
+            return text[0].upper() + text[1:].translate(_DIGITS)
+        point, body = label_point(plan, label)
+        return point + body
+
+    out: dict[int, list[PlacementRow]] = {}
+    for p in image_placements(graphical, kind):
+        rows = out.setdefault(p.after, [])
+        if p.how == "rest":
+            rows.append(PlacementRow("fixed_points", "fact", " = ".join(f"{symbol}_{name(x)}" for x in p.images) + " = 0", images=p.images))
+        elif p.how == "translates":
+            y = name(p.start[0])
+            still = f"ω{p.link} = 0" + (f", ε{p.link} = 0" if kind == "acceleration" else "")
+            for k, x in enumerate(p.images):  # (why, on the first row)
+                rows.append(PlacementRow(p.link, "equation", f"{symbol}_{name(x)} = {symbol}_{y}", "" if k else still, (f"{symbol}_{y}",), (x,)))
+        elif p.how == "similar":
+            rows.append(PlacementRow("by_similarity", "proportion", proportion_text(graphical, kind, p, numbers=False), images=p.images))
+        else:  # turns: x from y with the ω, ε of the link it turns with
+            x, y = name(p.images[0]), name(p.start[0])
+            xy = f"{x}{y}"
+            link, other = p.link, p.partner
+            if kind == "velocity":
+                terms, condition = [f"v_{y}", f"v_{xy}"], f"v_{xy} ⊥ {y}{x}; ω{link} = ω{other}"
+            else:  # (the magnitudes ω²·FG, ε·FG known with ω, ε: underlined twice)
+                terms = [f"a_{y}", f"a^n_{xy}", f"a^t_{xy}"]
+                condition = f"a^n_{xy} ∥ {x}{y}, a^t_{xy} ⊥ {y}{x}; ω{link} = ω{other}, ε{link} = ε{other}"
+            rows.append(PlacementRow(link, "equation", f"{symbol}_{x} = " + " + ".join(terms), condition, tuple(terms), p.images))
+    return {index: rows for index, rows in out.items() if rows}
+
+
+_DIGITS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
+
+
+def placement_math(row: PlacementRow, name=lambda word: word) -> tuple[str, str]:
+    """A row of :func:`placement_rows` (not a proportion) as (equation, conditions) Typst math, as :func:`step_lines`."""
+    if row.kind == "fact":
+        return condition_math(row.text, name), ""
+    return (equation_math(row.text, row.known, (), name, row.condition),
+            condition_math(row.condition, name) if row.condition else "")

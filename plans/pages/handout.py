@@ -47,10 +47,11 @@ from ..graphical.scales import round_up
 from ..i18n import term
 from .document import A4_PORTRAIT, Document, GUTTER, SMALL_PT, TEXT_PT
 from .document import bbox as _bbox, fitted as _fitted, plan_extent as _plan_extent
+from .equations import placement_rows
 from .typesetting import compile_document
 from .words import assembly_lines, formula_words, namer
 
-__all__ = ["Handout", "build_handout", "similarity_steps", "position_entry", "angles_key", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
+__all__ = ["Handout", "build_handout", "position_entry", "angles_key", "ORDER", "ACCELERATIONS_DEFAULT", "DIAGRAM_PAGE", "TEXT_WIDTH", "TEXT_HEIGHT"]
 
 #: The sections of a multi-position handout, in the plate's order (names as :attr:`Handout.order` lists them).
 ORDER = ("data", "positions", "velocity-equations", "velocity-plans", "acceleration-equations", "acceleration-plans",
@@ -229,30 +230,6 @@ def _with_given_note(lines: list[str], run, lang: str) -> list[str]:
     while end < len(lines) and lines[end].startswith("    "):  # the law's wrapped lines
         end += 1
     return lines[:end] + [f"    ({note})"] + lines[end:]
-
-
-def similarity_steps(graphical, kind: str) -> dict[int, list[str]]:
-    """Step index -> the proportions (``bm / b e₅ = BM / BE``; a triangle's two, ``;``-joined) by which the plan of
-    *kind* (``"velocity"``, ``"acceleration"``) places images by similarity once that step has drawn the two images
-    they start from (-1: both known before the first step), as :func:`plans.drawing.readings.similarity_lines`
-    writes them, without the numbers (those go with the readings)."""
-    from ..drawing.readings import similar_images, similarity_lines
-
-    plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
-    if plan is None:
-        return {}
-    points = getattr(plan, "points", None) or {}
-    lines = similarity_lines(graphical, kind)
-    images = [step.image for step in plan.steps]
-    out: dict[int, list[str]] = {}
-    for y, z, x in similar_images(plan):
-        Y, Z, X = (points[label][0] if label in points else label.rstrip("′").upper() for label in (y, z, x))
-        line = next((line for line in lines if f" = {Y}{X} / {Y}{Z}:" in line.split(";")[0]), None)
-        if line is None:
-            continue
-        after = max((i for i, image in enumerate(images) if image in (y, z)), default=-1)
-        out.setdefault(after, []).append(";  ".join(part.split(":")[0].strip() for part in line.split(";  ")))
-    return out
 
 
 def _proportions(doc, line: str) -> str:
@@ -543,7 +520,7 @@ def build_handout(
 
     doc.section("velocity-equations")
     doc.equations(f"{term('vector_equations', lang)}: {term('velocity_plan', lang).lower()}", sample.graphical.velocity_plan.steps, name,
-                  similar=max((similarity_steps(h.graphical, "velocity") for h in here.values()), key=lambda s: sum(map(len, s.values()))), flow=True)
+                  similar=max((placement_rows(h.graphical, "velocity") for h in here.values()), key=lambda s: sum(map(len, s.values()))), flow=True)
     doc.section("velocity-plans")
     doc.headed_legend(term("velocity_plans", lang) + (f" ({term('each_from_its_pole', lang)})" if multi else ""),
                       (doc.scale_markup("k_v", plate["k_v"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT))
@@ -600,7 +577,7 @@ def build_handout(
         # the equations fill what the velocity plans leave (one position's: they head its plan's page); the plans
         # follow, their heading kept with them
         doc.equations(f"{term('vector_equations', lang)}: {term('acceleration_plan', lang).lower()}", here[chosen[0]].graphical.acceleration_plan.steps,
-                      name, new_page=not multi and not eq_under_v, similar=max((similarity_steps(here[k].graphical, "acceleration") for k in chosen), key=lambda s: sum(map(len, s.values()))), flow=True)
+                      name, new_page=not multi and not eq_under_v, similar=max((placement_rows(here[k].graphical, "acceleration") for k in chosen), key=lambda s: sum(map(len, s.values()))), flow=True)
         doc.section("acceleration-plans")
         doc.headed_legend(term("acceleration_plans", lang),
                           (doc.scale_markup("k_a", plate["k_a"]) if scales != "per-position" else doc.line_markup(term("scales_each_position", lang), SMALL_PT))

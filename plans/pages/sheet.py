@@ -36,6 +36,7 @@ from pathlib import Path
 
 from ..i18n import term
 from .document import GUTTER, SMALL_PT, TEXT_PT, Document, PageGeometry, bbox, fitted, plan_extent
+from .equations import placement_rows
 from ..graphical.scales import round_down, round_up
 from .typesetting import compile_document, image, query_value
 from .words import assembly_lines, formula_words, namer, scene_data_lines
@@ -308,7 +309,8 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
             doc.line(f"{term('assembly', lang)}: " + ";  ".join(assembly), size=SMALL_PT + 0.5)
         for plan in (graphical.velocity_plan, graphical.acceleration_plan):
             if plan is not None and any(step.equations for step in plan.steps):
-                doc.equations(f"{term('vector_equations', lang)}: {term(plan.kind + '_plan', lang).lower()}", plan.steps, name)
+                doc.equations(f"{term('vector_equations', lang)}: {term(plan.kind + '_plan', lang).lower()}", plan.steps, name,
+                              similar=placement_rows(graphical, plan.kind))
         readings = [doc.table_markup(heading, rows, "(left, left, right, left, right)") for heading, rows in _readings(doc, graphical, lang)]
         if len(readings) == 2:  # the readings of the two plans side by side, each as wide as it needs (its cells do not
             # break: a factor '× 0.025 ÷ 0.6765 (l_EB)' in a half column ran over its value), else one under the other
