@@ -70,6 +70,16 @@ class InstantCentres:
     links: dict
     points: dict
 
+    @property
+    def found_order(self) -> list[str]:
+        """The links in the order their motions were found, the driver first: each after every link it was found
+        from (:attr:`plans.centres.velocities.Motion.found`), the order a table of the steps lists them in."""
+        return sorted(self.scene.links, key=lambda name: self.motions[name].found)
+
+    def translates(self, body: str) -> bool:
+        """Whether *body* translates at this instant: its centre with the frame P_1j lies at infinity (ω = 0)."""
+        return body != "frame" and self.centre("frame", body).point is None
+
     def centre(self, a: str, b: str) -> Centre:
         """P_ab by the bodies' names (either order; ``"frame"`` for the frame)."""
         for centre in self.centres:

@@ -86,6 +86,9 @@ class Motion:
     via: tuple = ()
     #: with a reading, the link whose ω this one's was found from ("" for the driver and the frame, or exactly)
     from_link: str = ""
+    #: the place of this body in the order the bodies' motions were found: 0 the frame, 1 the driver, then each link
+    #: after every link its motion was found from (a table listed by it uses only what rows above it give)
+    found: int = 0
 
     def velocity(self, z: complex, read=_exact) -> complex:
         """The velocity [m/s] of the body's point at z [m] (*read*: the arm z − about as measured, :class:`Reading`)."""
@@ -135,11 +138,12 @@ def _lengths(known: Motion, p1j: Centre, pjk: Centre, k_l: float, size: float) -
 
 
 def _via(known: Motion, p1k: Centre | None, p1j: Centre, pjk: Centre, read: "Reading") -> tuple:
-    """The lengths ω_j is read from (see :attr:`Motion.via`): P_1kP_jk when k turns, P_1jP_jk when both are finite."""
+    """The lengths ω_j is read from (see :attr:`Motion.via`): P_1kP_jk when k turns (P_1k finite, also at an instant
+    when ω_k = 0: ω_j = 0 · P_1kP_jk / P_1jP_jk), P_1jP_jk when both are finite."""
     if pjk.point is None:
         return ()
     out = []
-    for centre, at in ((p1k, known.about if known.omega != 0.0 else None), (p1j, p1j.point)):
+    for centre, at in ((p1k, None if p1k is None else p1k.point), (p1j, p1j.point)):
         if centre is not None and at is not None:
             out.append((centre.label, pjk.label, abs(read(pjk.point - at)) / read.k_l))
     return tuple(out)
@@ -172,7 +176,7 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
     else:
         line = scene.frame.lines[driver.guide]
         start = Motion(0.0, 0j, driver.velocity * line.direction)
-    motions = {FRAME: Motion(0.0, 0j), driver.link: start}
+    motions = {FRAME: Motion(0.0, 0j), driver.link: replace(start, found=1)}
     # with a reading: for the way to each link, (all its centres on the drawing, the shortest length [mm] read on it)
     width = {driver.link: (True, float("inf"))}
     left = [name for name in scene.links if name != driver.link]
@@ -204,7 +208,7 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
                 break
         if best is not None:
             _, j, found = best
-            motions[j] = found
+            motions[j] = replace(found, found=len(motions))
             width[j] = best[0]
             left.remove(j)
         else:
