@@ -320,3 +320,16 @@ def test_the_sense_rule_in_every_language():
         assert len(sense) == 1 and "$P_{1j}P_{1k}$" in sense[0], rules
         assert any(r"$v_j = \omega_k \cdot P_{1k}P_{jk}$" in r for r in rules)
     assert not any(r"v_j = \omega_k" in r for r in centres_rules("en", "1", scene.driver, numbers))  # only where one translates
+
+
+def test_plans_centres_lists_links_in_order_with_the_slider_velocity(capsys):
+    """domain.md §8, E2: the slider's velocity is that of P₂₄ as a point of the crank, −16.0407 m/s along x; the
+    links listed in the order they are found (the slider 4 from the crank, after it)."""
+    from plans.cli import main
+
+    assert main(["centres", "--example", "slider-crank", "--no-drawing"]) == 0
+    out = capsys.readouterr().out
+    lines = out[out.index("link "):].splitlines()[1:4]
+    assert [line.split()[0] for line in lines][0] == "2"
+    slider = next(line for line in lines if line.startswith("4 "))
+    assert re.search(r"P14 \(translates: v = 16\.0407 m/s, 180\.000°\)", slider), slider
