@@ -329,7 +329,9 @@ def test_plans_centres_lists_links_in_order_with_the_slider_velocity(capsys):
 
     assert main(["centres", "--example", "slider-crank", "--no-drawing"]) == 0
     out = capsys.readouterr().out
-    lines = out[out.index("link "):].splitlines()[1:4]
+    table = out.splitlines()
+    start = next(k for k, line in enumerate(table) if line.startswith("link ") and "ω [rad/s]" in line)
+    lines = table[start + 1:start + 4]
     assert [line.split()[0] for line in lines][0] == "2"
     slider = next(line for line in lines if line.startswith("4 "))
     assert re.search(r"P14 \(translates: v = 16\.0407 m/s, 180\.000°\)", slider), slider
