@@ -335,3 +335,23 @@ def test_plans_centres_lists_links_in_order_with_the_slider_velocity(capsys):
     assert [line.split()[0] for line in lines][0] == "2"
     slider = next(line for line in lines if line.startswith("4 "))
     assert re.search(r"P14 \(translates: v = 16\.0407 m/s, 180\.000°\)", slider), slider
+
+
+def test_quick_return_sr_points_read_from_a_centre_on_the_drawing(quick_return_sr):
+    """A point's v is read as P_1jM off the drawing only where P_1j is on it: the ram's pin E, where P₁₅ is an
+    arrow at the edge (4306 mm beyond it at position 4), is read as v₆ (E rides on the ram 6), not as 4424 mm."""
+    scene, pdf = quick_return_sr
+    pages = [page for page in _pdf_pages(pdf) if re.search(rf"^\s*{term('quantity', 'sr')}\s+P1j\s", page, re.MULTILINE)]
+    tables = _centres_tables(pdf, "sr")
+    assert len(pages) == len(tables) == 12
+    through_ram = 0
+    for page, (_, _, rows) in zip(pages, tables):
+        off = set(re.findall(r"(P\d+) \d+ mm", page))  # the edge arrows' labels: centres off the drawing
+        for row in rows:
+            if row["sub"] not in scene.links:
+                assert row["p"] not in off, (row, off)
+        if "P15" in off:
+            e = next(r for r in rows if r["sub"] == "E")
+            assert (e["p"], e["reading"]) == ("P16 ∞", "v6"), e
+            through_ram += 1
+    assert through_ram >= 3

@@ -36,7 +36,7 @@ from ..scene import FRAME, Crank, Scene
 from .kennedy import JOIN_TOL, Centre, CentreError
 from .pose import Pose, point_at
 
-__all__ = ["Motion", "Reading", "body_motions", "point_velocities", "SHORT_READ_MM"]
+__all__ = ["Motion", "Reading", "body_motions", "point_bodies", "point_velocities", "SHORT_READ_MM"]
 
 
 
@@ -229,10 +229,31 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
     return {name: motions[name] for name in scene.bodies}
 
 
-def point_velocities(scene: Scene, poses: dict[str, Pose], motions: dict[str, Motion], read=None) -> dict[str, complex]:
-    """v [m/s] of every named point, from the motion of the body it belongs to (*read*: P_1jM as measured, :class:`Reading`)."""
+def point_bodies(scene: Scene, centres: list[Centre], read=None) -> dict[str, str]:
+    """The body whose motion gives each named point's velocity: the one that defines it (:meth:`Scene.home_of`), or,
+    with a reading whose drawing leaves that body's P_1j off it (an arrow at the edge: P_1jM cannot be measured
+    there), another body carrying the point (a pin) that translates (v_M = v_j, nothing to measure) or whose P_1j
+    is on the drawing — the quick-return's ram pin E read as v₆ where P₁₅ lies 4 m off the page."""
+    p1 = {(c.bodies[1] if c.bodies[0] == FRAME else c.bodies[0]): c for c in centres if FRAME in c.bodies}
     out = {}
     for name in scene.point_names:
         home = scene.home_of(name)
+        out[name] = home
+        if read is None or home == FRAME or read.on_drawing(p1[home].point):
+            continue
+        others = [b for b in scene.bodies_with(name) if b not in (FRAME, home) and p1[b].determined]
+        better = [b for b in others if p1[b].point is None] + [b for b in others if p1[b].point is not None and read.on_drawing(p1[b].point)]
+        if better:
+            out[name] = better[0]
+    return out
+
+
+def point_velocities(scene: Scene, poses: dict[str, Pose], motions: dict[str, Motion], read=None,
+                     bodies: dict[str, str] | None = None) -> dict[str, complex]:
+    """v [m/s] of every named point, from the motion of the body it belongs to (*bodies*: point -> the body to read
+    it from, :func:`point_bodies`; the body that defines it without) (*read*: P_1jM as measured, :class:`Reading`)."""
+    out = {}
+    for name in scene.point_names:
+        home = (bodies or {}).get(name) or scene.home_of(name)
         out[name] = motions[home].velocity(point_at(poses[home], scene.bodies[home].points[name]), read or _exact)
     return out

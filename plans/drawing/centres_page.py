@@ -62,7 +62,8 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
       centre P_jk, a point of k); from a translating k: ``v₃`` (through a finite P_jk) or
       ``v₃ + v₄₃ (P₁₄ ∞, P₃₄ ∞)`` (the velocity triangle of two directions);
     * v_M of a point: P_1jM [mm] (v_M = |ω_j| · P_1jM × k_l); ``v₆`` on a translating link; a dash on the driver
-      of a sliding driver (given);
+      of a sliding driver (given); a pin through the body it was read from (:attr:`plans.centres.InstantCentres.carriers`:
+      the ram's pin E as ``v₆`` where P₁₅ lies off the drawing);
 
     the lengths as :attr:`plans.centres.Motion.via` read them; a dash for what is given and where nothing was read
     (a result found exactly, without a reading).
@@ -91,7 +92,7 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
         """P_1jM [mm] of a point (``v_j`` where its link translates, a dash on a sliding driver: given)."""
         if k_l is None:
             return []
-        home = result.scene.home_of(name)
+        home = result.carriers.get(name) or result.scene.home_of(name)
         centre = result.centre("frame", home)
         if centre.point is None:
             return ["—" if home == driver.link else motion_of(home)]
@@ -146,8 +147,9 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
     for name in result.scene.report:
         row = by.get(("points", name, "v"))
         if row is not None:
-            given = linear and result.scene.home_of(name) == driver.link
-            rows.append([f"{velocity(name)} [m/s]", _about(result, result.scene.home_of(name))] + reading(name)
+            home = result.carriers.get(name) or result.scene.home_of(name)  # a pin: the body its v was read from
+            given = linear and home == driver.link
+            rows.append([f"{velocity(name)} [m/s]", _about(result, home)] + reading(name)
                         + list(row_texts(complex(row.graphical), complex(row.analytic), given=given)))
     return [[decimal_comma(cell, lang) for cell in row] for row in rows]
 
