@@ -77,8 +77,8 @@ class InstantCentres:
     @property
     def found_order(self) -> list[str]:
         """The links in the order their motions were found, the driver first: each after every link it was found
-        from (:attr:`plans.centres.velocities.Motion.found`), the order a table of the steps lists them in."""
-        return sorted(self.scene.links, key=lambda name: self.motions[name].found)
+        from (:attr:`plans.centres.velocities.Motion.step`), the order a table of the steps lists them in."""
+        return sorted(self.scene.links, key=lambda name: self.motions[name].step)
 
     def translates(self, body: str) -> bool:
         """Whether *body* translates at this instant: its centre with the frame P_1j lies at infinity (ω = 0)."""

@@ -88,7 +88,7 @@ class Motion:
     from_link: str = ""
     #: the place of this body in the order the bodies' motions were found: 0 the frame, 1 the driver, then each link
     #: after every link its motion was found from (a table listed by it uses only what rows above it give)
-    found: int = 0
+    step: int = 0
 
     def velocity(self, z: complex, read=_exact) -> complex:
         """The velocity [m/s] of the body's point at z [m] (*read*: the arm z − about as measured, :class:`Reading`)."""
@@ -176,7 +176,7 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
     else:
         line = scene.frame.lines[driver.guide]
         start = Motion(0.0, 0j, driver.velocity * line.direction)
-    motions = {FRAME: Motion(0.0, 0j), driver.link: replace(start, found=1)}
+    motions = {FRAME: Motion(0.0, 0j), driver.link: replace(start, step=1)}
     # with a reading: for the way to each link, (all its centres on the drawing, the shortest length [mm] read on it)
     width = {driver.link: (True, float("inf"))}
     left = [name for name in scene.links if name != driver.link]
@@ -208,7 +208,7 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
                 break
         if best is not None:
             _, j, found = best
-            motions[j] = replace(found, found=len(motions))
+            motions[j] = replace(found, step=len(motions))
             width[j] = best[0]
             left.remove(j)
         else:
