@@ -129,7 +129,7 @@ __all__ += ["compare_centres", "ROUNDOFF"]
 ROUNDOFF = 1e-9
 
 
-def compare_centres(analytic, centres, position: int = 0) -> list[Comparison]:
+def compare_centres(analytic, centres, position: int = 0, translations: bool = False) -> list[Comparison]:
     """Velocities from the instant centres against analytic: ω of every link, v of every reported point.
 
     Parameters
@@ -137,12 +137,16 @@ def compare_centres(analytic, centres, position: int = 0) -> list[Comparison]:
     analytic : plans.analytic.AnalyticSolution
     centres : plans.centres.InstantCentres
         Found at the analytic solution's driver position number *position*.
+    translations : bool
+        Also v [m/s] of every link that translates at the instant (its centre with the frame at infinity),
+        section ``"links"``, quantity ``"v"``: the centres' translation against the analytic velocity of a
+        point of the link (every point of it moves alike).
 
     Returns
     -------
     list[Comparison]
         Points (``"v"``, in the scene's report order), then links
-        (``"omega"``); the ``graphical`` field holds the value from the
+        (``"omega"``, then with *translations* ``"v"``); the ``graphical`` field holds the value from the
         centres.  Errors as in :func:`compare`.
     """
     scene = centres.scene
@@ -150,6 +154,12 @@ def compare_centres(analytic, centres, position: int = 0) -> list[Comparison]:
              for name in scene.report]
     pairs += [("links", name, "omega", _analytic_value(analytic, "links", name, "omega", position), float(centres.links[name]))
               for name in scene.links]
+    if translations:
+        for name in scene.links:
+            point = next((p for p in scene.bodies[name].points if p in analytic.points), None)
+            if centres.translates(name) and point is not None:
+                pairs.append(("links", name, "v", _analytic_value(analytic, "points", point, "v", position),
+                              complex(centres.motions[name].v0)))
     largest: dict[str, float] = {}
     for _, _, quantity, a, c in pairs:
         largest[quantity] = max(largest.get(quantity, 0.0), abs(a), abs(c))

@@ -573,6 +573,23 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "Ъглови скорости от скоростта на водещото звено и моментните центрове",
         "sl": "Kotne hitrosti iz hitrosti pogonskega člena in trenutnih polov",
     },
+    # the sign of the ratio theorem and the step through a translating link, on the centres' method page
+    "centres_sign": {"en": "Sense of rotation", "sr": "Смер обртања", "ru": "Направление вращения", "bg": "Посока на въртене",
+                     "sl": "Smisel vrtenja"},
+    "centres_sign_rule": {
+        "en": "{omega_j} turns the same way as {omega_k} when {pjk} lies outside the segment {segment}, the opposite way when it lies inside it (a minus sign in the tables)",
+        "sr": "{omega_j} има исти смер као {omega_k} када {pjk} лежи ван дужи {segment}, супротан када лежи унутар ње (знак минус у табелама)",
+        "ru": "{omega_j} того же направления, что и {omega_k}, если {pjk} лежит вне отрезка {segment}, и противоположного, если внутри него (знак минус в таблицах)",
+        "bg": "{omega_j} има посоката на {omega_k}, когато {pjk} лежи извън отсечката {segment}, и обратната, когато лежи в нея (знак минус в таблиците)",
+        "sl": "{omega_j} ima isti smisel kot {omega_k}, kadar {pjk} leži zunaj daljice {segment}, in nasprotnega, kadar leži znotraj nje (predznak minus v tabelah)",
+    },
+    "centres_translation_rule": {
+        "en": "A link that translates ({p1j} at infinity, {omega_j} = 0) moves as its centre with a link {k}; through it the next link {l} turns",
+        "sr": "Члан који се креће транслаторно ({p1j} у бесконачности, {omega_j} = 0) креће се као његов пол са чланом {k}; преко њега се обрће следећи члан {l}",
+        "ru": "Звено, движущееся поступательно ({p1j} в бесконечности, {omega_j} = 0), движется как его центр со звеном {k}; через него вращается следующее звено {l}",
+        "bg": "Звено, което се движи постъпателно ({p1j} в безкрайността, {omega_j} = 0), се движи като центъра си със звеното {k}; чрез него се върти следващото звено {l}",
+        "sl": "Člen, ki se giblje translatorno ({p1j} v neskončnosti, {omega_j} = 0), se giblje kot njegov pol s členom {k}; prek njega se vrti naslednji člen {l}",
+    },
     "over_driver_stroke": {"en": "over the driver's stroke", "sr": "током хода погонског члана", "ru": "за ход ведущего звена",
                            "bg": "за хода на водещото звено", "sl": "med hodom pogonskega člena"},
     "driver_stroke_ends": {"en": "ends of the driver's stroke", "sr": "крајеви хода погонског члана",

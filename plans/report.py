@@ -877,9 +877,15 @@ def centres_table(result) -> str:
     v_scale = max((abs(complex(v)) for v in result.points.values()), default=0.0)
     w("\nVelocities from the centres: ω_j from the ratio theorem, v_M = ω_j × (M − P1j)\n")
     w(f"{'link':6} {'ω [rad/s]':>13}   {'about':6}\n")
-    for name in [body for body in result.numbers if body != "frame"]:
-        centre = next(c for c in result.centres if set(c.bodies) == {"frame", name})
-        about = centre.label if centre.point is not None else f"{centre.label} (translates)"
+    # in the order the links were found, each after the one it was found from; a link that translates with its v
+    for name in result.found_order:
+        centre = result.centre("frame", name)
+        if centre.point is not None:
+            about = centre.label
+        else:
+            magnitude, direction = (cell.strip() for cell in _vector_cells(complex(result.motions[name].v0), v_scale)[2:])
+            toward = f", {direction}°" if direction != "—" else ""
+            about = f"{centre.label} (translates: v = {magnitude} m/s{toward})"
         w(f"{name:6} {_clean(result.links[name], omega_scale):13.6g}   {about}\n")
     w(f"\n{'point':6} {'vx [m/s]':>13} {'vy [m/s]':>13} {'|v|':>13} {'dir [°]':>9}\n")
     for name in scene.report:

@@ -80,6 +80,11 @@ def test_six_bar_handout_table_prints_the_readings(tmp_path):
     # the cells: P_1j, the lengths read for ω (the path: "P₁₂P₂₄ / P₁₄P₂₄ = 40.0 / 25.3"), the value, analytic, error
     assert rows["3"][-3] == f"{want['omega3']:.4g}", rows
     assert rows["4"][-3] == f"{want['omega4']:.4g}".replace("-", "−"), rows
-    assert rows["3"][:3] == (["P12P23", "/", "P13P23"] if want["path3"] == "direct" else ["P14P34", "/", "P13P34"]), rows
-    assert rows["4"][:3] == ["P12P24", "/", "P14P24"], rows
+    # the reading names what ω is found from and the sense the ratio theorem gives: "−𝜔4 · P14P34 / P13P34 = −𝜔4 · …"
+    direct = want["path3"] == "direct"
+    source3, omega_source3 = ("𝜔2", -10.0) if direct else ("𝜔4", want["omega4"])
+    sign3 = "−" if want["omega3"] * omega_source3 < 0 else ""
+    assert rows["3"][:5] == [sign3 + source3, "·"] + (["P12P23", "/", "P13P23"] if direct else ["P14P34", "/", "P13P34"]), rows
+    sign4 = "−" if want["omega4"] * -10.0 < 0 else ""
+    assert rows["4"][:5] == [sign4 + "𝜔2", "·", "P12P24", "/", "P14P24"], rows
     assert rows["3"][-1] != "0" and rows["4"][-1] != "0", rows  # a real error, as the velocity plans' tables show

@@ -24,13 +24,13 @@ workbooks' crank 2, coupler 3, …), or 0 when a link is already called 1.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from ..scene import Scene
 from ..structure import Structure, find_structure
 from .kennedy import Centre, CentreError, body_numbers, find_centres
 from .pose import Pose, place_bodies, point_at
-from .velocities import Motion, Reading, body_motions, point_velocities
+from .velocities import Motion, Reading, body_motions, point_bodies, point_velocities
 
 __all__ = ["instant_centres", "InstantCentres", "Centre", "CentreError", "Motion", "Reading", "body_numbers"]
 
@@ -58,6 +58,9 @@ class InstantCentres:
         ω [rad/s] of every link, counter-clockwise positive.
     points : dict[str, complex]
         v [m/s] of every named point.
+    carriers : dict[str, str]
+        The body each point's v was found from (:func:`plans.centres.velocities.point_bodies`): the one that
+        defines it, or with a reading a pin's other body where that one's P_1j lies off the drawing.
     """
 
     scene: Scene
@@ -69,6 +72,17 @@ class InstantCentres:
     motions: dict
     links: dict
     points: dict
+    carriers: dict = field(default_factory=dict)
+
+    @property
+    def found_order(self) -> list[str]:
+        """The links in the order their motions were found, the driver first: each after every link it was found
+        from (:attr:`plans.centres.velocities.Motion.step`), the order a table of the steps lists them in."""
+        return sorted(self.scene.links, key=lambda name: self.motions[name].step)
+
+    def translates(self, body: str) -> bool:
+        """Whether *body* translates at this instant: its centre with the frame P_1j lies at infinity (ω = 0)."""
+        return body != "frame" and self.centre("frame", body).point is None
 
     def centre(self, a: str, b: str) -> Centre:
         """P_ab by the bodies' names (either order; ``"frame"`` for the frame)."""
@@ -121,6 +135,7 @@ def instant_centres(scene: Scene, structure: Structure | None = None, *, k_l: fl
     centres = find_centres(scene, poses)
     read = Reading(k_l, precision, room) if k_l is not None and precision is not None else None
     motions = body_motions(scene, poses, centres, size, read)
+    carriers = point_bodies(scene, centres, read)
     return InstantCentres(
         scene=scene,
         numbers=body_numbers(scene),
@@ -130,5 +145,6 @@ def instant_centres(scene: Scene, structure: Structure | None = None, *, k_l: fl
         size=size,
         motions=motions,
         links={name: motions[name].omega for name in scene.links},
-        points=point_velocities(scene, poses, motions, read),
+        points=point_velocities(scene, poses, motions, read, carriers),
+        carriers=carriers,
     )

@@ -36,7 +36,7 @@ from ..scene import FRAME, Crank, Scene
 from .kennedy import JOIN_TOL, Centre, CentreError
 from .pose import Pose, point_at
 
-__all__ = ["Motion", "Reading", "body_motions", "point_velocities", "SHORT_READ_MM"]
+__all__ = ["Motion", "Reading", "body_motions", "point_bodies", "point_velocities", "SHORT_READ_MM"]
 
 
 
@@ -86,6 +86,9 @@ class Motion:
     via: tuple = ()
     #: with a reading, the link whose ω this one's was found from ("" for the driver and the frame, or exactly)
     from_link: str = ""
+    #: the place of this body in the order the bodies' motions were found: 0 the frame, 1 the driver, then each link
+    #: after every link its motion was found from (a table listed by it uses only what rows above it give)
+    step: int = 0
 
     def velocity(self, z: complex, read=_exact) -> complex:
         """The velocity [m/s] of the body's point at z [m] (*read*: the arm z − about as measured, :class:`Reading`)."""
@@ -135,11 +138,12 @@ def _lengths(known: Motion, p1j: Centre, pjk: Centre, k_l: float, size: float) -
 
 
 def _via(known: Motion, p1k: Centre | None, p1j: Centre, pjk: Centre, read: "Reading") -> tuple:
-    """The lengths ω_j is read from (see :attr:`Motion.via`): P_1kP_jk when k turns, P_1jP_jk when both are finite."""
+    """The lengths ω_j is read from (see :attr:`Motion.via`): P_1kP_jk when k turns (P_1k finite, also at an instant
+    when ω_k = 0: ω_j = 0 · P_1kP_jk / P_1jP_jk), P_1jP_jk when both are finite."""
     if pjk.point is None:
         return ()
     out = []
-    for centre, at in ((p1k, known.about if known.omega != 0.0 else None), (p1j, p1j.point)):
+    for centre, at in ((p1k, None if p1k is None else p1k.point), (p1j, p1j.point)):
         if centre is not None and at is not None:
             out.append((centre.label, pjk.label, abs(read(pjk.point - at)) / read.k_l))
     return tuple(out)
@@ -172,7 +176,7 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
     else:
         line = scene.frame.lines[driver.guide]
         start = Motion(0.0, 0j, driver.velocity * line.direction)
-    motions = {FRAME: Motion(0.0, 0j), driver.link: start}
+    motions = {FRAME: Motion(0.0, 0j), driver.link: replace(start, step=1)}
     # with a reading: for the way to each link, (all its centres on the drawing, the shortest length [mm] read on it)
     width = {driver.link: (True, float("inf"))}
     left = [name for name in scene.links if name != driver.link]
@@ -204,7 +208,7 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
                 break
         if best is not None:
             _, j, found = best
-            motions[j] = found
+            motions[j] = replace(found, step=len(motions))
             width[j] = best[0]
             left.remove(j)
         else:
@@ -225,10 +229,31 @@ def body_motions(scene: Scene, poses: dict[str, Pose], centres: list[Centre], si
     return {name: motions[name] for name in scene.bodies}
 
 
-def point_velocities(scene: Scene, poses: dict[str, Pose], motions: dict[str, Motion], read=None) -> dict[str, complex]:
-    """v [m/s] of every named point, from the motion of the body it belongs to (*read*: P_1jM as measured, :class:`Reading`)."""
+def point_bodies(scene: Scene, centres: list[Centre], read=None) -> dict[str, str]:
+    """The body whose motion gives each named point's velocity: the one that defines it (:meth:`Scene.home_of`), or,
+    with a reading whose drawing leaves that body's P_1j off it (an arrow at the edge: P_1jM cannot be measured
+    there), another body carrying the point (a pin) that translates (v_M = v_j, nothing to measure) or whose P_1j
+    is on the drawing — the quick-return's ram pin E read as v₆ where P₁₅ lies 4 m off the page."""
+    p1 = {(c.bodies[1] if c.bodies[0] == FRAME else c.bodies[0]): c for c in centres if FRAME in c.bodies}
     out = {}
     for name in scene.point_names:
         home = scene.home_of(name)
+        out[name] = home
+        if read is None or home == FRAME or read.on_drawing(p1[home].point):
+            continue
+        others = [b for b in scene.bodies_with(name) if b not in (FRAME, home) and p1[b].determined]
+        better = [b for b in others if p1[b].point is None] + [b for b in others if p1[b].point is not None and read.on_drawing(p1[b].point)]
+        if better:
+            out[name] = better[0]
+    return out
+
+
+def point_velocities(scene: Scene, poses: dict[str, Pose], motions: dict[str, Motion], read=None,
+                     bodies: dict[str, str] | None = None) -> dict[str, complex]:
+    """v [m/s] of every named point, from the motion of the body it belongs to (*bodies*: point -> the body to read
+    it from, :func:`point_bodies`; the body that defines it without) (*read*: P_1jM as measured, :class:`Reading`)."""
+    out = {}
+    for name in scene.point_names:
+        home = (bodies or {}).get(name) or scene.home_of(name)
         out[name] = motions[home].velocity(point_at(poses[home], scene.bodies[home].points[name]), read or _exact)
     return out

@@ -116,6 +116,8 @@ def edge_text(centre, distance_mm: float | None) -> str:
     arrow's tip, along it: × k_l in metres), ``P₁₄ ∞`` for a centre at infinity."""
     if distance_mm is None:
         return f"{centre_text(centre.label)} ∞"
+    if round(distance_mm) == 0:  # just beyond the tip (a centre just outside the page's box): to 0.1 mm, never "0 mm"
+        return f"{centre_text(centre.label)} {max(distance_mm, 0.1):.1f} mm"
     return f"{centre_text(centre.label)} {distance_mm:.0f} mm"
 
 
@@ -222,7 +224,13 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
             new_hi = complex(max(hi.real, q.real + 3.0), max(hi.imag, q.imag + 3.0))
             if allowed is not None and not (allowed[0].real <= new_lo.real and allowed[0].imag <= new_lo.imag
                                             and new_hi.real <= allowed[1].real and new_hi.imag <= allowed[1].imag):
-                continue  # an arrow at the edge: the room stays within the page's
+                if not (allowed[0].real <= q.real <= allowed[1].real and allowed[0].imag <= q.imag <= allowed[1].imag):
+                    continue  # an arrow at the edge: the room stays within the page's
+                # the centre itself within the page's box, nearer its edge than the room's 3 mm around it: the room
+                # grows to the box's edge and holds it, a dot where it is (the six-bar's P₄₆ was an arrow "0 mm"
+                # from its tip, the arrow pulled back over the room onto the centre)
+                new_lo = complex(max(new_lo.real, allowed[0].real), max(new_lo.imag, allowed[0].imag))
+                new_hi = complex(min(new_hi.real, allowed[1].real), min(new_hi.imag, allowed[1].imag))
             lo, hi = new_lo, new_hi
     middle = (lo + hi) / 2
 

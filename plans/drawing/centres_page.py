@@ -42,74 +42,133 @@ def _as_read(mm: float) -> str:
 
 
 def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None = None) -> list[list[str]]:
-    """The page's table: header, then ω of every link and v of every reported point, from the centres and analytic.
+    """The page's table: header, then every link's step in the order it was found, then v of every reported point.
+
+    The rows of the links follow :attr:`plans.centres.InstantCentres.found_order` (the driver first, each link after
+    the one it was found from), so that every quantity a row uses is given by a row above it: ω of every link and,
+    for a link that translates (P_1j at infinity: ω_j = 0), a row of its velocity v_j under its ω (*comparisons*
+    from :func:`plans.compare.compare_centres` with ``translations=True`` hold its analytic value; without them
+    its analytic value and error are dashes).  Then v of every reported point.
 
     Columns: quantity, the centre P_1j its body turns about (1: the frame's number,
     :attr:`plans.scene.Scene.frame_number`), the value from the centres, the analytic
-    value, the relative error (of the vector for v).  *comparisons* from
-    :func:`plans.compare.compare_centres`.  With *k_l* [m/mm] (the drawing's), a column
-    more after P_1j: the reading P_1jM [mm] on the drawing, from which
-    v_M = |ω_j| · P_1jM × k_l (a dash where P_1j is at infinity: the link translates); for ω,
-    the lengths it was read from, P_1kP_jk / P_1jP_jk [mm] (:attr:`plans.centres.Motion.via`: the
-    path of centres the reading took), or ω_k (P_jk ∞) for a link that turns with link k (their centre at
-    infinity: nothing measured); a dash for the driver.
+    value, the relative error (of the vector for v).  With *k_l* [m/mm] (the drawing's), a column
+    more after P_1j, what was read off the drawing [mm] and how it gives the row's value:
+
+    * ω_j from a link k that turns, through P_jk: ``−ω₂ · P₁₂P₂₅ / P₁₅P₂₅ = −ω₂ · 31.5 / 226.1`` (the ratio
+      theorem, the sign by where P_jk lies: :func:`centres_rules`); from a link k that translates:
+      ``v₆ / P₁₅P₅₆ = v₆ / (97.3 · k_l)``; from one it shares a centre at infinity with: ``ω₄ (P₃₄ ∞)``;
+    * v_j of a translating link from a link k that turns: ``ω₂ · P₁₂P₂₆ = ω₂ · 29.0 · k_l`` (it moves as its
+      centre P_jk, a point of k); from a translating k: ``v₃`` (through a finite P_jk) or
+      ``v₃ + v₄₃ (P₁₄ ∞, P₃₄ ∞)`` (the velocity triangle of two directions);
+    * v_M of a point: P_1jM [mm] (v_M = |ω_j| · P_1jM × k_l); ``v₆`` on a translating link; a dash on the driver
+      of a sliding driver (given); a pin through the body it was read from (:attr:`plans.centres.InstantCentres.carriers`:
+      the ram's pin E as ``v₆`` where P₁₅ lies off the drawing);
+
+    the lengths as :attr:`plans.centres.Motion.via` read them; a dash for what is given and where nothing was read
+    (a result found exactly, without a reading).
     """
     frame = result.scene.frame_number
     header = [term("quantity", lang), f"$P_{{{frame}j}}$", term("by_centres", lang), term("analytic", lang), term("rel_error", lang)]
     if k_l is not None:
         header.insert(2, term("read_off_drawing", lang))  # P_1jM for v, the path's lengths for ω: both as read
     rows = [header]
-    by = {(c.section, c.name): c for c in comparisons}
+    by = {(c.section, c.name, c.quantity): c for c in comparisons}
+    driver = result.scene.driver
+    linear = isinstance(driver, LinearDriver)
+    k_l_text = "$k_l$"
+
+    def omega(name: str) -> str:
+        return f"$\\omega_{{{math_name(name)}}}$"
+
+    def velocity(name: str) -> str:
+        return f"$v_{{{math_name(name)}}}$"
+
+    def motion_of(name: str) -> str:
+        """The symbol of what link *name*'s row gives the links found from it: v for a translating link, else ω."""
+        return velocity(name) if result.translates(name) else omega(name)
 
     def reading(name: str) -> list[str]:
+        """P_1jM [mm] of a point (``v_j`` where its link translates, a dash on a sliding driver: given)."""
         if k_l is None:
             return []
-        centre = result.centre("frame", result.scene.home_of(name))
+        home = result.carriers.get(name) or result.scene.home_of(name)
+        centre = result.centre("frame", home)
         if centre.point is None:
-            return ["—"]
+            return ["—" if home == driver.link else motion_of(home)]
         mm = abs(result.positions[name] - centre.point) / k_l
         return [_as_read(mm)]
 
-    def path(name: str) -> list[str]:
-        """The lengths ω was read from, as the rule writes them: ``P₁₂P₂₄ / P₁₄P₂₄ = 1.1 / 25.3`` (a dash where none)."""
+    def step(name: str, translation: bool) -> list[str]:
+        """How the row of link *name* (its ω, or with *translation* its v) is found from the link found before it."""
         if k_l is None:
             return []
         motion = result.motions[name]
-        via = motion.via
-        if not via and motion.from_link:  # through a centre at infinity: it turns with the other, nothing measured
-            return [f"$\\omega_{{{math_name(motion.from_link)}}}$ ({centre_text(result.centre(name, motion.from_link).label)} ∞)"]
-        if not via:
-            return ["—"]
-        segments = " / ".join(centre_text(a) + centre_text(b) for a, b, _ in via)
-        return [f"{segments} = {' / '.join(_as_read(mm) for _, _, mm in via)}"]
+        k = motion.from_link
+        if name == driver.link or not k or (result.translates(name) and not translation):
+            return ["—"]  # given, found exactly (nothing read), or ω = 0 of a translating link (P_1j ∞)
+        known, pjk, via = motion_of(k), result.centre(name, k), motion.via
+        if pjk.point is None:  # a centre at infinity: turns with k, or (both translating) the velocity triangle
+            if not translation:  # ω_j = ω_k (0 where k translates: its ω row above)
+                return [f"{omega(k)} ({centre_text(pjk.label)} ∞)"]
+            both = "" if len(name) == len(k) == 1 else ","
+            relative = f"$v_{{{math_name(name)}{both}{math_name(k)}}}$"
+            p1j = result.centre("frame", name)
+            return [f"{known} + {relative} ({centre_text(p1j.label)} ∞, {centre_text(pjk.label)} ∞)"]
+        segments = [(centre_text(a) + centre_text(b), _as_read(mm)) for a, b, mm in via]
+        if translation:  # moves as its centre P_jk with k: ω_k · P_1kP_jk, or v_k where k translates too
+            if not segments:
+                return [known]
+            (segment, mm), = segments
+            return [f"{known} · {segment} = {known} · {mm} · {k_l_text}"]
+        if result.translates(k):  # ω_j = v_k / P_1jP_jk
+            (segment, mm), = segments
+            return [f"{known} / {segment} = {known} / ({mm} · {k_l_text})"]
+        (near, a), (far, b) = segments  # ω_j = ±ω_k · P_1kP_jk / P_1jP_jk: the sign by where P_jk lies
+        sign = "−" if motion.omega * result.motions[k].omega < 0 else ""
+        return [f"{sign}{known} · {near} / {far} = {sign}{known} · {a} / {b}"]
+
+    def values(key: tuple, centres_value, given: bool) -> list[str]:
+        row = by.get(key)
+        if row is None:  # no analytic value to compare (compare_centres without translations)
+            return [row_texts(centres_value, centres_value, given=given)[0], "—", "—"]
+        return list(row_texts(row.graphical, row.analytic, given=given))
 
     # the values and errors by the rule of every comparison table (plans.report.row_texts): the centres' value to
     # 4 significant digits, the analytic one to its decimals, the error of the two printed numbers; the driver's
     # ω (and a sliding driver's v) is given: "—", as on the plans' pages
-    driver = result.scene.driver
-    linear = isinstance(driver, LinearDriver)
-    for name in result.scene.links:
-        row = by.get(("links", name))
-        if row is not None:
-            rows.append([f"$\\omega_{{{math_name(name)}}}$ [rad/s]", _about(result, name)] + path(name)
-                        + list(row_texts(float(row.graphical), float(row.analytic), given=name == driver.link)))
+    for name in result.found_order:
+        if ("links", name, "omega") in by:
+            rows.append([f"{omega(name)} [rad/s]", _about(result, name)] + step(name, False)
+                        + values(("links", name, "omega"), float(result.links[name]), name == driver.link))
+        if result.translates(name):
+            rows.append([f"{velocity(name)} [m/s]", _about(result, name)] + step(name, True)
+                        + values(("links", name, "v"), complex(result.motions[name].v0), name == driver.link))
     for name in result.scene.report:
-        row = by.get(("points", name))
+        row = by.get(("points", name, "v"))
         if row is not None:
-            given = linear and result.scene.home_of(name) == driver.link
-            rows.append([f"$v_{{{math_name(name)}}}$ [m/s]", _about(result, result.scene.home_of(name))] + reading(name)
+            home = result.carriers.get(name) or result.scene.home_of(name)  # a pin: the body its v was read from
+            given = linear and home == driver.link
+            rows.append([f"{velocity(name)} [m/s]", _about(result, home)] + reading(name)
                         + list(row_texts(complex(row.graphical), complex(row.analytic), given=given)))
     return [[decimal_comma(cell, lang) for cell in row] for row in rows]
 
 
-def centres_rules(lang: str, frame: str, driver=None, numbers=None) -> list[str]:
-    """The two rules of the method, each with its formula (``$…$``): ω from the centres, v of a point from its link's centre.
+def centres_rules(lang: str, frame: str, driver=None, numbers=None, translating: bool = False) -> list[str]:
+    """The rules of the method, each its words and its formula or statement (after ``":  "``): ω from the centres,
+    the sense of rotation it gives (the ratio theorem's sign), with *translating* the step through a link that
+    translates, and v of a point from its link's centre.
 
     *frame*: the frame's number (:attr:`plans.scene.Scene.frame_number`), as the centres' labels write it.
     *driver* (:class:`plans.scene.LinearDriver`) with *numbers* (body name -> its number in the labels,
     :attr:`plans.centres.InstantCentres.numbers`): a sliding driver has no ω to start from; the rule then
     starts from its velocity v_A, as the textbook does: the centre P_dk of the driver d and a link k moves
     as a point of d with v_A and as a point of k about P_1k, so ω_k = v_A / P_1kP_dk.
+    The sense: ω_j / ω_k = P_1kP_jk / P_1jP_jk is positive (the same sense) when P_jk lies outside the segment
+    P_1jP_1k, negative inside (domain.md §8); the tables print the minus.
+    *translating* (a link other than a sliding driver translates at some position: P_1j at infinity): such a
+    link j moves as its centre P_jk with a link k, v_j = ω_k · P_1kP_jk, and a link l found from it turns with
+    ω_l = v_j / P_1lP_jl.
     """
     from ..scene import LinearDriver
 
@@ -120,10 +179,14 @@ def centres_rules(lang: str, frame: str, driver=None, numbers=None) -> list[str]
                  f"$\\omega_k = v_{{{point}}} / P_{{{frame}k}}P_{{{d}k}}$")
     else:
         omega = f"{term('centres_omega_rule', lang)}:  $\\omega_j / \\omega_k = P_{{{frame}k}}P_{{jk}} / P_{{{frame}j}}P_{{jk}}$"
-    return [
-        omega,
-        f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{{frame}j}}M$",
-    ]
+    sign = term("centres_sign_rule", lang).format(omega_j="$\\omega_j$", omega_k="$\\omega_k$", pjk="$P_{jk}$",
+                                                  segment=f"$P_{{{frame}j}}P_{{{frame}k}}$")
+    rules = [omega, f"{term('centres_sign', lang)}:  {sign}"]
+    if translating:
+        said = term("centres_translation_rule", lang).format(p1j=f"$P_{{{frame}j}}$", omega_j="$\\omega_j$", k="$k$", l="$l$")
+        rules.append(f"{said}:  $v_j = \\omega_k \\cdot P_{{{frame}k}}P_{{jk}}$;\u2003$\\omega_l = v_j / P_{{{frame}l}}P_{{jl}}$")
+    rules.append(f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{{frame}j}}M$")
+    return rules
 
 
 def guide_words(result, centre, lang: str = "en") -> str:

@@ -1038,7 +1038,7 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
         say(f"{term('instant_centres', lang)} {n}/{len(positions)}")
         try:
             result = instant_centres(h.scene, h.analytic.structure)
-            comparisons = compare_centres(h.analytic, result)
+            comparisons = compare_centres(h.analytic, result, translations=True)
         except PlansError as exc:
             pages.append((h, exc))
             continue
@@ -1078,9 +1078,11 @@ def _centres_pages(doc, positions, k_l: float, lang: str, multi: bool, say=lambd
             except PlansError:  # every path of centres has two on one spot of the drawing: exact values, said on the page
                 pages[n] = page[:4] + (page[4], term("centres_read_exact", lang))
                 continue
-            comparisons = compare_centres(h.analytic, read)
+            comparisons = compare_centres(h.analytic, read, translations=True)
             pages[n] = (h, result, comparisons, centres_page_table(read, comparisons, lang, k_l=k), page[4])
-    _centres_method(doc, diagram, k, lang, drawn[0][1] if drawn else None)
+    # the step through a link that translates (the quick-return's ram 6, a slider-crank's slider) stated with the rules
+    translating = any(p[1].translates(j) for p in drawn for j in p[1].scene.links if j != p[1].scene.driver.link)
+    _centres_method(doc, diagram, k, lang, drawn[0][1] if drawn else None, translating)
     for page in pages:
         _centres_page(doc, page, k, blocks, lang, multi)
     return k if drawn else None
@@ -1107,9 +1109,10 @@ _CENTRES_TABLE_OPEN = (
 CENTRES_DIAGRAM_R = 32.0
 
 
-def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
+def _centres_method(doc, diagram, k: float, lang: str, result, translating: bool = False) -> None:
     """The centres' first page: the method's title, Kennedy's theorem, the circle diagram (once: it is the same for
-    every position), the rules and the order of finding the centres (*result*: a position's centres)."""
+    every position), the rules (*translating*: with the step through a link that translates) and the order of
+    finding the centres (*result*: a position's centres)."""
     from ..drawing.centres_page import centres_order_table, centres_rules
 
     # one block that flows on under what comes before it where the rest of that page holds it (a page of cycle
@@ -1124,7 +1127,7 @@ def _centres_method(doc, diagram, k: float, lang: str, result) -> None:
         # of finding the centres under them across the page: the page read as a whole, not 40 % empty (third review)
         circle = f"{term('circle_diagram', lang)}: {term('circle_diagram_legend', lang).replace(chr(10), ' ')}"
         lines = [circle, term("centres_legend", lang), term("centres_edge_legend", lang)]
-        rules = centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers)
+        rules = centres_rules(lang, result.scene.frame_number, result.scene.driver, result.numbers, translating)
         words = "".join(f"#block(above: 0pt, below: 2mm)[{doc.words(line)}]" for line in lines) + "#v(2mm)"
         for rule in rules:  # the rule's words, its formula on a line of its own under them
             said, _, formula = rule.partition(":  ")
