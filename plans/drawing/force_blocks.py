@@ -16,7 +16,7 @@ the μ_F, k_l and k_v the page states hold on the printed paper.
 from __future__ import annotations
 
 from .force_drawing import draw_force_plan_into, draw_free_bodies_into, draw_lever_into
-from .style import CONSTRUCTION_STYLE, FORCE_STYLE
+from .style import CONSTRUCTION_STYLE, FORCE_HOLLOW, FORCE_STYLE
 from .svgblocks import SvgBlock, sketched
 
 __all__ = ["free_bodies_svg", "force_plan_svg", "lever_svg", "force_key_svg", "KEY_KINDS"]
@@ -50,7 +50,7 @@ def force_key_svg(kind: str) -> SvgBlock:
     def draw(sketch):
         if kind in FORCE_STYLE:
             color, lw, dashes, _ = FORCE_STYLE[kind]
-            sketch.arrow(0j, 9.0 + 0j, color=color, lw=lw, dashes=dashes, head=2.4, gid=f"key-{kind}")
+            sketch.arrow(0j, 9.0 + 0j, color=color, lw=lw, dashes=dashes, head=2.4, gid=f"key-{kind}", hollow=kind in FORCE_HOLLOW)
         elif kind in ("construction", "arm"):
             color, lw, dashes = CONSTRUCTION_STYLE
             sketch.line([0j, 9.0 + 0j], color=color, lw=lw, dashes=dashes, gid=f"key-{kind}")

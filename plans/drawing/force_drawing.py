@@ -30,7 +30,7 @@ from pathlib import Path
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
 from .numerals import localised, scale_caption
-from .style import CAPTION_PT, CONSTRUCTION_STYLE, FIGURE_STYLE, FORCE_STYLE, HEADING_PT, INK, LABEL_PT, SMALL_PT
+from .style import CAPTION_PT, CONSTRUCTION_STYLE, FIGURE_STYLE, FORCE_HOLLOW, FORCE_STYLE, HEADING_PT, INK, LABEL_PT, SMALL_PT
 from ..forces.notation import centre_text, course_label, plain_centres
 from ..i18n import term
 
@@ -211,7 +211,8 @@ def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool
         if v.length < SHORT_MM:  # too short for an arrow: its end is a point, its length a note
             sketch.line([complex(v.tail), complex(v.tip)], color=color, lw=lw, gid=f"{v.kind}-{_gid(v.label)}", zorder=3.0)
             continue
-        sketch.arrow(complex(v.tail), complex(v.tip), color=color, lw=lw, dashes=dashes, head=min(head, v.length / 3.0), gid=f"{v.kind}-{_gid(v.label)}", zorder=3.0 if v.kind != "normal" else 2.6)
+        sketch.arrow(complex(v.tail), complex(v.tip), color=color, lw=lw, dashes=dashes, head=min(head, v.length / 3.0), gid=f"{v.kind}-{_gid(v.label)}", zorder=3.0 if v.kind != "normal" else 2.6,
+                     hollow=v.kind in FORCE_HOLLOW)
     sketch.circle(0j, 0.55, fc=INK, lw=0, gid="start", zorder=4.0)
     for name, z in plan.points.items():
         sketch.circle(complex(z), 0.35, fc=INK, lw=0, gid=f"vertex-{name}", zorder=4.0, obstacle=False)
@@ -345,7 +346,7 @@ def draw_force_legend_into(sketch: Sketch, kinds, lines: bool, lang: str, x: flo
     for kind in kinds:
         y -= row
         color, lw, dashes, _ = FORCE_STYLE[kind]
-        sketch.arrow(complex(x, y), complex(x + 9.0, y), color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}")
+        sketch.arrow(complex(x, y), complex(x + 9.0, y), color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}", hollow=kind in FORCE_HOLLOW)
         sketch.text(complex(x + 11.0, y), _lower(term(FORCE_LEGEND[kind], lang)), size=CAPTION_PT, ha="left", va="center", gid=f"legend-text-{kind}", obstacle=False)
     if lines:
         y -= row
@@ -571,7 +572,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
     for f, tail, tip, into, point in arrows:
         u = f.force / abs(f.force)
         color, lw, dashes, head = FORCE_STYLE[f.kind]
-        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0)
+        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0, hollow=f.kind in FORCE_HOLLOW)
         sketch.obstacles.append(_segment_shape(tail, tip))
         end = tail if into else tip
         labels.append((end, [(force_math(f.label, lang), f"force-label-{_gid(f.label)}")],
@@ -764,6 +765,8 @@ def write_force_drawings(forces, directory, *, lang: str = "en", formats=("svg",
 LEVER_ARROW_MM = 12.0
 #: An arm shorter than this [mm] is not drawn (its line would hide under the arrows).
 ARM_MIN_MM = 0.5
+#: The gap [mm] between two arrows along one line at one image (the second starts past the first one's head).
+LEVER_GAP_MM = 2.0
 
 #: the lever's load kinds (plans.forces.loads.LOAD_KINDS, "balancing") -> force style
 _LEVER_KIND = {
@@ -832,12 +835,19 @@ def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = 
         color, lw, dashes, head = FORCE_STYLE[kind]
         u = f.force / size
         tail = complex(f.point)  # on a lever an arrow's place is its arm: every arrow starts at its point's image
-        # an arrow along one drawn before at the same image is drawn longer, so that both heads show
+        # an arrow along one drawn before at the same image (Φ₄ and F_пс at b) starts past that one's head, on its own
+        # line of action through the image (its arm unchanged): each arrow, head and name reads by itself, none over another
         along = sum(1 for g, t in zip(everything, tips) if abs(g.force) and abs(complex(g.point) - tail) < 0.5
                     and (g.force / abs(g.force) * u.conjugate()).real > 0.98)
-        tip = tail + u * LEVER_ARROW_MM * (1 + 0.55 * along)
+        if along:
+            color_line, lw_line, _ = CONSTRUCTION_STYLE  # the line of action from the image to the arrow, as the arms' lines
+            start = tail + u * (LEVER_ARROW_MM + LEVER_GAP_MM) * along
+            sketch.line([tail, start], color=color_line, lw=lw_line * 0.8, dashes=(1.0, 1.5), gid=f"along-{_gid(names[id(f)])}",
+                        zorder=1.0, obstacle=False)
+            tail = start
+        tip = tail + u * LEVER_ARROW_MM
         tips.append(tip)
-        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(names[id(f)])}", zorder=5.0)
+        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(names[id(f)])}", zorder=5.0, hollow=kind in FORCE_HOLLOW)
     groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [("p", "pole-label")])]
     for label, z in images.items():
         for at, pieces in groups:
