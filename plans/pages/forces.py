@@ -1075,11 +1075,17 @@ def _lever_section(doc: Document, graphical, lever, analytic, plans, key: str, h
             break
         k = scales[step]
     head, legend, moments, methods, comparisons = _lever_pieces(doc, lever, analytic, plans, key, heading, mu_words, k_plate)
+    # the title block of every page the section lands on states the scales it uses: μ_F (the three methods' table
+    # reads the force plans at it) and the lever's own k_v where it has one (its arms are mm at that k_v); inside each
+    # piece that may begin a page of its own
+    notes = f"#metadata([{_words(doc, mu_words)}]) <plans-page-scale>"
+    if k != k_plate:
+        notes += f"#metadata([{_words(doc, term('joukowski_lever', doc.lang) + f': $k_{{v}}$ = {_scale(k)} (m/s)/mm')}]) <plans-page-scale>"
+    moments, methods = (piece.replace("#block(breakable: false)[", "#block(breakable: false)[" + notes, 1) for piece in (moments, methods))
+    legend = notes + legend
     if layout == "page":
         doc.body.append("#pagebreak(weak: true)\n")
-    doc.body.append(head)
-    if k != k_plate:  # the title block of the lever's page states its k_v
-        _scale_note(doc, f"{term('joukowski_lever', doc.lang)}: $k_{{v}}$ = {_scale(k)} (m/s)/mm")
+    doc.body.append(notes + head)
     if layout != "split" and beside(k) and max(block.height, h["column"]) + 1.0 < block.height + legend_height:
         column = _legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], doc.lang, column=True)
         doc.body.append(f"#grid(columns: (auto, {LEGEND_COLUMN}mm), column-gutter: {GUTTER}mm, align: horizon + left, "
