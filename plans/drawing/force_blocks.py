@@ -27,11 +27,12 @@ KEY_KINDS = tuple(FORCE_STYLE) + ("construction", "arm")
 
 
 def free_bodies_svg(forces, k_l: float, lang: str = "en", per_row: int | None = None, names: dict | None = None,
-                    columns: tuple[int, ...] | None = None) -> SvgBlock:
+                    columns: tuple[int, ...] | None = None, equations=None) -> SvgBlock:
     """The free bodies of *forces* (:class:`plans.forces.force_plans.ForcePlans`) at *k_l* [m/mm], *per_row* to a row
-    (or in *columns*, how many each holds); *names*: group -> the words written over its body."""
+    (or in *columns*, how many each holds); *names*: group -> the words written over its body; *equations*: the
+    plans' equations as the page writes them, whose arms h_k are drawn on the bodies."""
     return sketched("fbody", lambda s: draw_free_bodies_into(s, forces, lang=lang, caption=False, k_l=k_l, per_row=per_row, names=names,
-                                                           columns=columns), lang)
+                                                           columns=columns, equations=equations), lang)
 
 
 def force_plan_svg(plan, lang: str = "en") -> SvgBlock:

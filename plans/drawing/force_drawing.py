@@ -39,6 +39,7 @@ __all__ = [
     "draw_force_plan_into",
     "draw_free_bodies",
     "draw_free_bodies_into",
+    "shoulders",
     "draw_force_legend_into",
     "legend_kinds",
     "force_figures",
@@ -370,11 +371,16 @@ def draw_free_bodies(forces, ax=None, *, lang: str = "en", names: dict | None = 
 
 
 def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True, k_l: float | None = None, per_row: int | None = None,
-                          names: dict | None = None, columns: tuple[int, ...] | None = None) -> None:
+                          names: dict | None = None, columns: tuple[int, ...] | None = None, equations=None) -> None:
     """Draw the free bodies into *sketch* (see :func:`draw_free_bodies`), at *k_l* [m/mm], *per_row* of them in a
     row (by default all in one), each row under the one before, or in *columns* (how many each holds; a tall body
     beside a column of small ones); *names*: group -> the words written over its
     body (``"group 3–4"``; the group's own name without them).
+
+    *equations* (:func:`plans.forces.plan_equations.plan_equations` of *forces*, as the page writes them): each arm
+    h_k a moment equation uses drawn on its body (:func:`shoulders`), a thin line from the moment point perpendicular
+    to the force's line of action (that line dotted as far as the foot), named ``h_k = … mm`` (its length on this
+    drawing).
 
     By default k_l is the round value that draws the largest free body 60–120 mm across (a group is
     smaller than the mechanism: its links drawn at the mechanism's k_l would crowd their arrows).
@@ -408,6 +414,8 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
             if c.moment:
                 where = _pivot(g, c.body) if c.kind == "balancing" or forces.centres.get(c.body) is None else forces.centres[c.body].at
                 reach += [where / k_l + (COUPLE_R_MM + 2.0) * d for d in (1, 1j, -1, -1j)]
+        arms = shoulders(equations, plan.group, g) if equations else []
+        reach += [z / k_l for arm in arms for z in (arm[1], arm[4])]
         zs = pts + reach
         what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
         left = min(z.real for z in zs) - FREE_LABEL_MM
@@ -417,20 +425,20 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
         wide = max(text_size(line, CAPTION_PT)[0] for line in what.split("\n"))
         box = (left, max(right, left + wide),  # its name over it
                min(z.imag for z in zs) - FREE_LABEL_MM, max(z.imag for z in zs) + FREE_LABEL_MM + FREE_NAME_MM * (what.count("\n") + 1))
-        bodies.append((plan, links, box, acting, couples, what))
-    placed = [(body[0], body[1], complex(x - body[2][0], y - body[2][3]), body[3], body[4], body[2], body[5]) for body, (x, y) in
+        bodies.append((plan, links, box, acting, couples, what, arms))
+    placed = [(body[0], body[1], complex(x - body[2][0], y - body[2][3]), body[3], body[4], body[2], body[5], body[6]) for body, (x, y) in
               zip(bodies, _arrange([b[2] for b in bodies], per_row, columns))]
     # each body's name over it, first: the bodies' labels are then placed clear of it
     from shapely.geometry import box as shapely_box
 
-    for plan, links, shift, _, _, box, what in placed:
+    for plan, links, shift, _, _, box, what, _ in placed:
         for k, line in enumerate(what.split("\n")):
             corner = complex(box[0] + shift.real, box[3] + shift.imag - k * FREE_NAME_MM)
             sketch.text(corner, line, size=CAPTION_PT, ha="left", va="top", gid=f"heading-{plan.group}" + (f"-{k}" if k else ""))
             w, h = text_size(line, CAPTION_PT)
             sketch.obstacles.append(shapely_box(corner.real, corner.imag - h, corner.real + w, corner.imag).buffer(1.2))  # and a margin
-    for plan, links, shift, acting, couples, _, _ in placed:
-        _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
+    for plan, links, shift, acting, couples, _, _, arms in placed:
+        _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l, arms)
     if caption:
         b = sketch.bounds
         sketch.text(complex(b.xmin, b.ymax + 6.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
@@ -484,9 +492,32 @@ def _inside(label: str, links) -> bool:
     return len(names) == 2 and all(n in links for n in names)
 
 
-def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, couples, lang: str, k_l: float) -> None:
+def shoulders(equations, group: str, g) -> list[tuple[int, complex, complex, float, complex]]:
+    """The arms h_k the moment equations of *group*'s plan use (*equations*: :class:`plans.forces.plan_equations.PlanEquations`
+    of the plans), each ``(k, moment point [m], the force's line of action: a point [m] and its unit direction, the arm
+    as the equation states it [m], the foot of the perpendicular [m])``; an arm of zero length (a force through the
+    point) has no line to draw and is left out."""
+    out = []
+    for eq in equations:
+        if eq.group != group:
+            continue
+        about = [(m.about, m.terms) for m in eq.moments] + ([(eq.pivot, eq.balancing)] if eq.pivot and eq.balancing else [])
+        for name, terms in about:
+            centre = complex(g.positions[name])
+            for t in terms:
+                if t.number is None or t.through is None or not t.arm:
+                    continue
+                u = complex(t.direction)
+                foot = t.through + u * ((centre - t.through) * u.conjugate()).real
+                if abs(centre - foot) > 1e-12:
+                    out.append((t.number, centre, complex(t.through), float(t.arm), foot))
+    return out
+
+
+def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, couples, lang: str, k_l: float, arms=()) -> None:
     """One free body: its links (a block as its body, a ram reaching to its centre of mass), then every arrow and couple,
-    and only then the labels, placed clear of all of them and of each other (as the plans place theirs)."""
+    the arms of its moment equations (*arms*: :func:`shoulders`), and only then the labels, placed clear of all of them
+    and of each other (as the plans place theirs)."""
     g = forces.graphical
     edge, _, fill = FIGURE_STYLE
 
@@ -608,8 +639,27 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         sketch.arc_arrow(where, radius, start, sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
         labels.append((where + radius * cmath.exp(1j * start), [(force_math(c.label, lang), f"couple-label-{_gid(c.label)}")],
                        dict(size=LABEL_PT, prefer=cmath.exp(1j * start), gaps=(0.8, 1.8, 3.0), mathtext=True, leader_from=4.0, color=color)))
+    for number, centre, through, arm, foot in arms:
+        c, f, p = at(centre), at(foot), at(through)
+        color, lw, _ = CONSTRUCTION_STYLE
+        # the line of action, dotted, from the force's point to the foot; the arm itself thin and solid, square to it
+        if abs(f - p) > 0.3:
+            sketch.line([p, f], color=color, lw=lw * 0.8, dashes=(1.0, 1.5), gid=f"action-h{number}", zorder=1.0, obstacle=False)
+        sketch.line([c, f], color=INK, lw=SHOULDER_PT, gid=f"arm-h{number}", zorder=1.2)
+        d = (c - f) / abs(c - f)
+        e = unit(p - f) if abs(p - f) > 1e-9 else d * 1j
+        mark = min(1.4, abs(c - f) / 3)
+        sketch.line([f + d * mark, f + (d + e) * mark, f + e * mark], color=INK, lw=SHOULDER_PT * 0.8, gid=f"arm-square-h{number}", zorder=1.2, obstacle=False)
+        mm = arm / k_l  # its length on this drawing, as the equation's arm [m] gives it at the drawing's k_l
+        text = f"$h_{{{number}}}$ = {localised(f'{mm:.1f}', lang)} mm"
+        labels.append(((c + f) / 2, [(text, f"arm-label-h{number}")],
+                       dict(size=SMALL_PT, prefer=d * 1j, gaps=(0.6, 1.4, 2.4, 3.6, 5.0), mathtext=True, leader_from=4.0, own=(c, f))))
     for anchor, pieces, options in labels:
         place_label(sketch, anchor, pieces, **options)
+
+
+#: the line width [pt] of an arm h drawn on a free body (thin: a dimension, not a part)
+SHOULDER_PT = 0.5
 
 
 def lever_image_text(label: str, scene) -> str:

@@ -290,12 +290,17 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
     return mu, plans, blocks, min(columns, len(plans.plans))
 
 
-def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, k_plate: float | None = None, skip: int = 0):
+def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, k_plate: float | None = None, skip: int = 0, equations=None):
     """(k_l [m/mm], block): the free bodies in one row, two or a grid, at the plate's *k_plate* [m/mm] when they fit
     *box* at it in one of those arrangements (the plate's one k_l on every page), else at the round k_l that draws
     them largest within *box* (coarser than the plate's: the page states it); *skip*: how many of the arrangements that
-    fit at the plate's k_l to pass over (a taller one, to fill a page the force plans do not follow onto)."""
+    fit at the plate's k_l to pass over (a taller one, to fill a page the force plans do not follow onto); *equations*:
+    the plans' equations, whose arms h_k are drawn on the bodies."""
+    from functools import partial
+
     from ..drawing.force_blocks import free_bodies_svg
+
+    free_bodies_svg = partial(free_bodies_svg, equations=equations)
 
     count = len(plans.plans)
     g = graphical
@@ -435,16 +440,15 @@ def _signed(terms) -> str:
 def _moment_terms(letters: list, numbers: list, terms, lang: str) -> tuple[list, list]:
     """A moment equation's terms after its first ones, in letters (``F dot h_1``) and in numbers (``1500 dot 0,042``):
     a couple by its magnitude (``|M_Φ3|``: the pages' tables list it signed), a force with its arm h_k (numbered in
-    order); each term's sign is its sense, counter-clockwise positive."""
-    k = 0
+    order over the plan's equations, as the free bodies name the arms drawn); each term's sign is its sense,
+    counter-clockwise positive."""
     for t in terms:
         symbol = _typst_symbol(t.label, lang)
         if t.arm is None:  # a couple by its magnitude, its sense in the term's sign (the table lists it signed)
             letters.append((t.moment, f"abs({symbol})"))
             numbers.append((t.moment, _quoted(t.size, lang)))
         else:
-            k += 1
-            letters.append((t.moment, f"{symbol} dot h_{k}"))
+            letters.append((t.moment, f"{symbol} dot h_{t.number}"))
             numbers.append((t.moment, f"{_quoted(t.size, lang)} dot {_quoted(t.arm, lang)}"))
     return letters, numbers
 
@@ -782,7 +786,8 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     text = 16.0 + (5.0 if where else 0.0) + 5.0 + 4.6 * -(-len(_body_kinds(plans)) // 2) + 8.0 + tables + 6.0
     box = (doc.page.text_width, min(FREE_BODIES_BOX[1], doc.page.text_height - text))
     plate_kl = doc.plate.get("k_l")
-    k_l, free = _free_bodies(plans, graphical, lang, names, box, plate_kl)
+    arms = plan_equations(plans)  # the equations the pages write: the bodies draw the arms h_k they use
+    k_l, free = _free_bodies(plans, graphical, lang, names, box, plate_kl, equations=arms)
     pages = ForcePages(mu, k_l, plans)
     mu_words = f"$μ_{{F}}$ = {_scale(mu)} N/mm"
     head = term("kinetostatics", lang)
@@ -831,7 +836,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         reset = (f"#context {{ if here().page() != locate(<{key}-free-bodies>).page() "
                  f"{{ plate-kl.update([{doc.scale_words('k_l', plate_kl)}]) }} }}")
     given = given_loads(plans)
-    written = {e.group: e for e in plan_equations(plans)}
+    written = {e.group: e for e in arms}
     # each plan under its equations: in its cell, or (where a line of them is wider than a cell) the equations of a
     # row's plans across the page above the row
     cell = (doc.page.text_width - (columns - 1) * GUTTER) / columns
@@ -876,7 +881,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     doc.body.append("#v(2mm)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
 
     if plate_kl is not None and not coarser:
-        _fill_bodies_page(doc, key, bodies_at, free, lambda: _free_bodies(plans, graphical, lang, names, box, plate_kl, skip=1))
+        _fill_bodies_page(doc, key, bodies_at, free, lambda: _free_bodies(plans, graphical, lang, names, box, plate_kl, skip=1, equations=arms))
     # 3. Joukowski's lever and the three methods
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
     pages.comparisons = comparisons
