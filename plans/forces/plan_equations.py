@@ -34,8 +34,8 @@ class MomentTerm:
     """One term of a moment equation about a joint: a force's magnitude [N] times its arm [m], or a couple [N·m].
 
     ``moment`` is the signed moment [N·m], counter-clockwise positive; ``arm`` None for a couple.  A force's
-    ``number`` is k of its arm's name h_k, numbered in order over the moment equations of one plan (so that the
-    free body it is drawn on names each arm once); ``through`` [m] and ``direction`` (unit) its line of action.
+    ``number`` is k of its arm's name h_k, numbered in order over the moment equations of the plans of a position
+    (the free bodies drawn together name each arm once); ``through`` [m] and ``direction`` (unit) its line of action.
     """
 
     label: str
@@ -145,6 +145,7 @@ def plan_equations(plans) -> list[PlanEquations]:
     """The equations of every plan of *plans* (:class:`plans.forces.force_plans.ForcePlans`), in their order."""
     out = []
     g = plans.graphical
+    count = 0  # the arms h_k named so far
     for plan in plans.plans:
         chain = _chain(plan)
         directions = [complex(line.direction) for line in plan.lines]
@@ -180,15 +181,15 @@ def plan_equations(plans) -> list[PlanEquations]:
         if plan.group == "driver" and plans.balancing_moment is not None:
             pivot, crank = g.scene.driver.pivot, g.scene.driver.link
             balancing = _terms(plans, crank, g.positions[pivot], skip=())
-        moments, balancing = _numbered(moments, balancing)
+        moments, balancing, count = _numbered(moments, balancing, count)
         out.append(PlanEquations(plan.group, moments, tuple(polygon), tuple(inner), pivot, crank, balancing))
     return out
 
 
-def _numbered(moments, balancing):
-    """The equations of one plan with their forces' arms numbered h_1, h_2, … in order over all of them (a couple
-    has no arm)."""
-    count = 0
+def _numbered(moments, balancing, count: int):
+    """The equations of one plan with their forces' arms numbered h_{count+1}, h_{count+2}, … in order (a couple has
+    no arm), and the last number given: numbered on over the plans of a position, one name for one arm on a page
+    that draws the free bodies of all of them together."""
 
     def number(terms):
         nonlocal count
@@ -201,4 +202,4 @@ def _numbered(moments, balancing):
         return tuple(out)
 
     moments = tuple(replace(m, terms=number(m.terms)) for m in moments)
-    return moments, number(balancing)
+    return moments, number(balancing), count

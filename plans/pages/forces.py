@@ -806,6 +806,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
 
     # 1. the free bodies, the given loads and the legend
     heading(_lower(term("free_bodies", lang)))
+    kl_at = len(doc.body)
     if plate_kl is not None:
         doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])")  # the title block states the free bodies' k_l
     _scale_note(doc, mu_words)
@@ -816,6 +817,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     coarser = ""
     if plate_kl is not None and abs(k_l - plate_kl) > 1e-12 * plate_kl:  # none of the arrangements fits at the plate's k_l
         coarser = ";  " + term("free_bodies_coarser", lang).format(scale=f"$k_{{l}}$ = {_scale(plate_kl)} m/mm")
+    caption_at = len(doc.body)
     doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}{coarser}", lang), size=SMALL_PT)
     doc.body.append(_legend(doc, f"{key}-bodies-legend", _body_kinds(plans), lang))
     given_data = _table(doc, data, "(left, right, left, right)", data_heading)
@@ -825,6 +827,19 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     doc.body.append("".join(f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines))
 
     doc.mark(f"{key}-bodies-end", solid=True)
+    if coarser:  # the estimate of the page's text left the bodies too little room: at the plate's k_l where the laid-out page holds them
+        found = _bodies_at_plate(doc, key, free, lambda: _free_bodies(plans, graphical, lang, names, (box[0], math.inf), plate_kl, equations=arms))
+        if found is not None:
+            k_l, free = found
+            pages.k_l = k_l
+            coarser = ""
+            doc.body[kl_at] = f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])"
+            doc.body[bodies_at] = ""
+            doc.figure(f"{key}-free-bodies", free)
+            doc.body[bodies_at] = doc.body.pop()
+            doc.body[caption_at] = ""
+            doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}", lang), size=SMALL_PT)
+            doc.body[caption_at] = doc.body.pop()
     # 2. the force plans at one μ_F
     doc.mark(f"{key}-plans-start")
     # where the free bodies end, kept with the first plan
@@ -894,6 +909,23 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         doc.body.append("#v(4mm)")
         doc.body.append(_table(doc, _methods_table(comparisons, analytic, lang, plans, lever), "(left, right, right, right, right, right)", term("force_methods", lang)))
     return pages
+
+
+def _bodies_at_plate(doc: Document, key: str, block, at_plate):
+    """(k_l, block) of the free bodies at the plate's k_l (*at_plate()*: the first arrangement as wide as the page, or
+    None) where the laid-out page, with them at the coarser k_l (*block*), holds what they add under :data:`LEVER_SPARE`
+    (read from the laid-out document); else None."""
+    from .typesetting import query_document
+
+    marks = {m["name"]: m for m in query_document(doc.source(), doc.images, "<plans-mark>") if m["name"].startswith(key)}
+    end = marks.get(f"{key}-bodies-end")
+    found = at_plate()
+    if end is None or found is None:
+        return None
+    top, page = doc.page.margins[2], doc.page.text_height
+    if found[1].height - block.height > top + page - end["y"] - LEVER_ABOVE - LEVER_SPARE:
+        return None
+    return found
 
 
 def _fill_bodies_page(doc: Document, key: str, at: int, block, taller) -> None:
