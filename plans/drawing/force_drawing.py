@@ -327,7 +327,7 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
               for v in vectors if v.length < SHORT_MM], y)
     if balancing_moment is not None:
         y -= row
-        sketch.text(complex(x, y), f"{force_math('M_b', lang)} = {_number(abs(balancing_moment), lang)} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})",
+        sketch.text(complex(x, y), f"{force_math('M_b', lang)} = {_number(abs(balancing_moment), lang)} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))}, {term('from_force_plans', lang)})",
                     size=CAPTION_PT, ha="left", va="top", gid="reading-M_b", obstacle=False, math=True)
     if not legend:
         return
@@ -1010,7 +1010,7 @@ def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
     y -= row
     if lever.balancing_kind == "moment":
         result = (f"{force_math('M_b', lang)} = {force_math('F_b', lang)}·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force), lang)} N · "
-                  f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(abs(lever.balancing), lang)} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))})")
+                  f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(abs(lever.balancing), lang)} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))}, {term('from_lever', lang)})")
     else:
-        result = f"{force_math('F_b', lang)} = {_number(lever.balancing, lang)} N ({_lower(term('balancing_force', lang))})"
+        result = f"{force_math('F_b', lang)} = {_number(lever.balancing, lang)} N ({_lower(term('balancing_force', lang))}, {term('from_lever', lang)})"
     sketch.text(complex(x, y), result, size=CAPTION_PT, ha="left", va="top", gid="result", obstacle=False, math=True)

@@ -119,6 +119,23 @@ def _number(value: float, digits: int = 4) -> str:
     return _minus(f"{value:.{decimals}f}")
 
 
+#: significant figures of an inertia couple M_Φ = −J_S·ε on the pages: one more than a force's, so that the pair of
+#: forces F = M_Φ/l the lever puts in its place is what the printed M_Φ gives (162.75 N·m / 0.3 m = 542.5 N, where
+#: 162.8 would give 542.7): one number for M_Φ on every page (loads, moment equations, the lever)
+COUPLE_DIGITS = 5
+
+
+def _couple(value: float, label: str) -> str:
+    """A couple [N·m] as every force page prints it: an inertia couple (``M_Φ…``) to :data:`COUPLE_DIGITS`
+    significant figures, a given one to 4."""
+    return _number(value, COUPLE_DIGITS if _inertia_couple(label) else 4)
+
+
+def _inertia_couple(label: str) -> bool:
+    """Whether *label* names an inertia couple (``"M_Φ3"``, :func:`plans.forces.loads.inertia_symbol`)."""
+    return label.startswith("M_Φ")
+
+
 def _reading(value: float, step: float | None) -> str:
     """A value read to *step* (as many decimals as the step has), or to 4 significant figures without one."""
     if not step:
@@ -398,7 +415,7 @@ def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en", equations
         lines.append(";  ".join(f"|{_math(v.label, lang)}| = {v.length:.2f} mm ({_number(given[v.label]) if v.label in given else _reading(v.value, _step(plan))} N)"
                                 for v in short))
     if balancing_moment is not None:
-        lines.append(f"{_math('M_b', lang)} = {_number(abs(balancing_moment))} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})")
+        lines.append(f"{_math('M_b', lang)} = {_number(abs(balancing_moment))} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))}, {term('from_force_plans', lang)})")
     return lines
 
 
@@ -446,7 +463,7 @@ def _moment_terms(letters: list, numbers: list, terms, lang: str) -> tuple[list,
         symbol = _typst_symbol(t.label, lang)
         if t.arm is None:  # a couple by its magnitude, its sense in the term's sign (the table lists it signed)
             letters.append((t.moment, f"abs({symbol})"))
-            numbers.append((t.moment, _quoted(t.size, lang)))
+            numbers.append((t.moment, _quoted(t.size, lang, COUPLE_DIGITS if _inertia_couple(t.label) else 4)))
         else:
             letters.append((t.moment, f"{symbol} dot h_{t.number}"))
             numbers.append((t.moment, f"{_quoted(t.size, lang)} dot {_quoted(t.arm, lang)}"))
@@ -498,7 +515,7 @@ def _loads_table(plans, lang: str) -> list[list[str]]:
     for c in plans.couples:
         if c.kind == "balancing" or c.moment == 0:
             continue
-        rows.append([_math(c.label, lang), c.body, term("inertia_couple" if c.kind == "inertia" else "couple", lang), f"{_number(c.moment)} N·m", "—"])
+        rows.append([_math(c.label, lang), c.body, term("inertia_couple" if c.kind == "inertia" else "couple", lang), f"{_couple(c.moment, c.label)} N·m", "—"])
     return rows
 
 
@@ -1179,7 +1196,7 @@ def _lever_rows(lever, lang: str) -> list[list[str]]:
             ends = "".join(q.image.upper() for q in pair)
             couple = moments[(f.name, f.body)]
             length = abs(couple) / abs(f.force)
-            note = f"= {_math(f.name, lang)}/$l_{{\\mathrm{{{ends}}}}}$ = {_number(abs(couple))} N·m / {length:.4g} m"
+            note = f"= {_math(f.name, lang)}/$l_{{\\mathrm{{{ends}}}}}$ = {_couple(abs(couple), f.name)} N·m / {length:.4g} m"
             if f is pair[0]:
                 note += f"; {term('lever_pair', lang).format(points=', '.join(lever_image_text(q.image, lever.scene) for q in pair))}"
         rows.append([_math(names[id(f)], lang), lever_image_text(f.image, lever.scene), _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
@@ -1189,12 +1206,12 @@ def _lever_rows(lever, lang: str) -> list[list[str]]:
 def _lever_result(lever, lang: str) -> list[str]:
     from ..drawing.force_drawing import sense_arrow
 
-    lines = [f"{_math(c.name, lang)} = {_number(c.couple)} N·m → {_number(c.moment)} N·mm ({term('lever_block_couple', lang)})" for c in lever.couples]
+    lines = [f"{_math(c.name, lang)} = {_couple(c.couple, c.name)} N·m → {_number(c.moment)} N·mm ({term('lever_block_couple', lang)})" for c in lever.couples]
     if lever.balancing_kind == "moment":
         lines.append(f"{_math('M_b', lang)} = {_math('F_b', lang)}·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force))} N · "
-                     f"{lever.crank_length:.4g} m = {_number(abs(lever.balancing))} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))})")
+                     f"{lever.crank_length:.4g} m = {_number(abs(lever.balancing))} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))}, {term('from_lever', lang)})")
     else:
-        lines.append(f"{_math('F_b', lang)} = {_number(lever.balancing)} N ({_lower(term('balancing_force', lang))})")
+        lines.append(f"{_math('F_b', lang)} = {_number(lever.balancing)} N ({_lower(term('balancing_force', lang))}, {term('from_lever', lang)})")
     return lines
 
 
