@@ -887,15 +887,20 @@ def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = 
         tail = complex(f.point)  # on a lever an arrow's place is its arm: every arrow starts at its point's image
         # an arrow along one drawn before at the same image (Φ₄ and F_пс at b) starts past that one's head, on its own
         # line of action through the image (its arm unchanged): each arrow, head and name reads by itself, none over another
-        along = sum(1 for g, t in zip(everything, tips) if abs(g.force) and abs(complex(g.point) - tail) < 0.5
-                    and (g.force / abs(g.force) * u.conjugate()).real > 0.98)
+        def same_line(g) -> bool:
+            return bool(abs(g.force)) and abs(complex(g.point) - tail) < 0.5 and (g.force / abs(g.force) * u.conjugate()).real > 0.98
+
+        along = sum(1 for g, t in zip(everything, tips) if same_line(g))
+        # the arrows of one line share the length one arrow and a half would take (the drawing no larger for them)
+        count = sum(1 for g in everything if same_line(g))
+        length = (LEVER_ARROW_MM * (1 + 0.55 * (count - 1)) - LEVER_GAP_MM * (count - 1)) / count
         if along:
             color_line, lw_line, _ = CONSTRUCTION_STYLE  # the line of action from the image to the arrow, as the arms' lines
-            start = tail + u * (LEVER_ARROW_MM + LEVER_GAP_MM) * along
+            start = tail + u * (length + LEVER_GAP_MM) * along
             sketch.line([tail, start], color=color_line, lw=lw_line * 0.8, dashes=(1.0, 1.5), gid=f"along-{_gid(names[id(f)])}",
                         zorder=1.0, obstacle=False)
             tail = start
-        tip = tail + u * LEVER_ARROW_MM
+        tip = tail + u * length
         tips.append(tip)
         sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(names[id(f)])}", zorder=5.0, hollow=kind in FORCE_HOLLOW)
     groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [("p", "pole-label")])]

@@ -1135,11 +1135,12 @@ def _lever_section(doc: Document, graphical, lever, analytic, plans, key: str, h
     notes = f"#metadata([{_words(doc, mu_words)}]) <plans-page-scale>"
     if k != k_plate:
         notes += f"#metadata([{_words(doc, term('joukowski_lever', doc.lang) + f': $k_{{v}}$ = {_scale(k)} (m/s)/mm')}]) <plans-page-scale>"
+    # (inside a block: a note between blocks would set a line of its own and take room the layout did not reckon with)
     moments, methods = (piece.replace("#block(breakable: false)[", "#block(breakable: false)[" + notes, 1) for piece in (moments, methods))
-    legend = notes + legend
+    head = head.replace("#block(sticky: true, breakable: false)[", "#block(sticky: true, breakable: false)[" + notes, 1)
     if layout == "page":
         doc.body.append("#pagebreak(weak: true)\n")
-    doc.body.append(notes + head)
+    doc.body.append(head)
     if layout != "split" and beside(k) and max(block.height, h["column"]) + 1.0 < block.height + legend_height:
         column = _legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], doc.lang, column=True)
         doc.body.append(f"#grid(columns: (auto, {LEGEND_COLUMN}mm), column-gutter: {GUTTER}mm, align: horizon + left, "
