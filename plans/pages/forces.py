@@ -845,7 +845,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
 
     doc.mark(f"{key}-bodies-end", solid=True)
     if coarser:  # the estimate of the page's text left the bodies too little room: at the plate's k_l where the laid-out page holds them
-        found = _bodies_at_plate(doc, key, free, lambda: _free_bodies(plans, graphical, lang, names, (box[0], math.inf), plate_kl, equations=arms))
+        found = _bodies_at_plate(doc, key, free, plate_kl, lambda: _free_bodies(plans, graphical, lang, names, (box[0], math.inf), plate_kl, equations=arms))
         if found is not None:
             k_l, free = found
             pages.k_l = k_l
@@ -928,16 +928,18 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     return pages
 
 
-def _bodies_at_plate(doc: Document, key: str, block, at_plate):
-    """(k_l, block) of the free bodies at the plate's k_l (*at_plate()*: the first arrangement as wide as the page, or
-    None) where the laid-out page, with them at the coarser k_l (*block*), holds what they add under :data:`LEVER_SPARE`
-    (read from the laid-out document); else None."""
+def _bodies_at_plate(doc: Document, key: str, block, plate: float, at_plate):
+    """(k_l, block) of the free bodies at the plate's k_l *plate* (*at_plate()*: the first arrangement as wide as the
+    page, at *plate* or a coarser k_l where none is) where the laid-out page, with them at the coarser k_l (*block*),
+    holds what they add under :data:`LEVER_SPARE` (read from the laid-out document); else None."""
     from .typesetting import query_document
 
+    found = at_plate()
+    if found is None or abs(found[0] - plate) > 1e-12 * plate:  # no arrangement as wide as the page at the plate's k_l
+        return None
     marks = {m["name"]: m for m in query_document(doc.source(), doc.images, "<plans-mark>") if m["name"].startswith(key)}
     end = marks.get(f"{key}-bodies-end")
-    found = at_plate()
-    if end is None or found is None:
+    if end is None:
         return None
     top, page = doc.page.margins[2], doc.page.text_height
     if found[1].height - block.height > top + page - end["y"] - LEVER_ABOVE - LEVER_SPARE:
