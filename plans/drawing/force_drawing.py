@@ -359,7 +359,7 @@ def draw_force_legend_into(sketch: Sketch, kinds, lines: bool, lang: str, x: flo
 # --- the free bodies ---------------------------------------------------------------------
 
 
-def draw_free_bodies(forces, ax=None, *, lang: str = "en", names: dict | None = None) -> list:
+def draw_free_bodies(forces, ax=None, *, lang: str = "en", names: dict | None = None, equations=None) -> list:
     """The groups and the driver, cut apart, with their loads and the reactions on them.
 
     Each is drawn at one k_l (see :func:`draw_free_bodies_into`), side by side in the order of the
@@ -367,7 +367,7 @@ def draw_free_bodies(forces, ax=None, *, lang: str = "en", names: dict | None = 
     arrow of :data:`FREE_ARROW_MM` at its point of application (a load from
     its point, a reaction into its joint), every couple an arc.
     """
-    return sketch_on(ax, "fbody", lambda sketch: draw_free_bodies_into(sketch, forces, lang=lang, names=names))
+    return sketch_on(ax, "fbody", lambda sketch: draw_free_bodies_into(sketch, forces, lang=lang, names=names, equations=equations))
 
 
 def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True, k_l: float | None = None, per_row: int | None = None,
