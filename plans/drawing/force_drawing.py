@@ -639,8 +639,11 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         sketch.arc_arrow(where, radius, start, sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
         labels.append((where + radius * cmath.exp(1j * start), [(force_math(c.label, lang), f"couple-label-{_gid(c.label)}")],
                        dict(size=LABEL_PT, prefer=cmath.exp(1j * start), gaps=(0.8, 1.8, 3.0), mathtext=True, leader_from=4.0, color=color)))
+    inner = sum(at(g.positions[n]) for body in links for n in g.scene.bodies[body].points) / max(1, sum(len(g.scene.bodies[body].points) for body in links))
     for number, centre, through, arm, foot in arms:
         c, f, p = at(centre), at(foot), at(through)
+        if abs(c - f) < SHOULDER_MIN_MM:  # too short to draw as a line (the equation still names it)
+            continue
         color, lw, _ = CONSTRUCTION_STYLE
         # the line of action, dotted, from the force's point to the foot; the arm itself thin and solid, square to it
         if abs(f - p) > 0.3:
@@ -652,14 +655,18 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         sketch.line([f + d * mark, f + (d + e) * mark, f + e * mark], color=INK, lw=SHOULDER_PT * 0.8, gid=f"arm-square-h{number}", zorder=1.2, obstacle=False)
         mm = arm / k_l  # its length on this drawing, as the equation's arm [m] gives it at the drawing's k_l
         text = f"$h_{{{number}}}$ = {localised(f'{mm:.1f}', lang)} mm"
+        across = d * 1j if ((inner - (c + f) / 2) * (d * 1j).conjugate()).real >= 0 else -d * 1j  # towards the body: kept in its box
         labels.append(((c + f) / 2, [(text, f"arm-label-h{number}")],
-                       dict(size=SMALL_PT, prefer=d * 1j, gaps=(0.6, 1.4, 2.4, 3.6, 5.0), mathtext=True, leader_from=4.0, own=(c, f))))
+                       dict(size=SMALL_PT, prefer=across, gaps=(0.6, 1.4, 2.4, 3.6, 5.0), mathtext=True, leader_from=4.0, own=(c, f))))
     for anchor, pieces, options in labels:
         place_label(sketch, anchor, pieces, **options)
 
 
 #: the line width [pt] of an arm h drawn on a free body (thin: a dimension, not a part)
 SHOULDER_PT = 0.5
+#: an arm shorter than this on the drawing [mm] is not drawn (a line that short does not read; its force all but
+#: passes through the point)
+SHOULDER_MIN_MM = 1.0
 
 
 def lever_image_text(label: str, scene) -> str:
