@@ -666,6 +666,11 @@ TERMS: dict[str, dict[str, str]] = {
         "sl": "Žukovskijev vzvod",
     },
     "force_plans": {"en": "force plans", "sr": "планови сила", "ru": "планы сил", "bg": "планове на силите", "sl": "načrti sil"},
+    # which method a value printed on its own line came from (M_b under the driver's plan and under the lever)
+    "from_force_plans": {"en": "from the force plans", "sr": "из планова сила", "ru": "по планам сил", "bg": "от плановете на силите",
+                         "sl": "iz načrtov sil"},
+    "from_lever": {"en": "from Joukowski's lever", "sr": "из Жуковљеве полуге", "ru": "по рычагу Жуковского", "bg": "от лоста на Жуковски",
+                   "sl": "iz Žukovskijevega vzvoda"},
     "weight": {"en": "weight", "sr": "тежина", "ru": "сила тяжести", "bg": "тегло", "sl": "teža"},
     "inertia_force": {"en": "inertia force", "sr": "сила инерције", "ru": "сила инерции", "bg": "инерционна сила", "sl": "vztrajnostna sila"},
     "inertia_couple": {

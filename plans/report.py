@@ -596,7 +596,7 @@ def drawn_rows(comparisons: list[Comparison], graphical=None, analytic=None, pos
     prismatics = {p.name: p for p in analytic.scene.prismatics} if analytic is not None else {}
     for row in comparisons:
         if row.section == "points":
-            out.append((f"{row.quantity}_{row.name}", row))
+            out.append((f"{row.quantity}_{row.name}", _as_read(row, graphical)))
             continue
         if row.section == "links":
             out.append((f"{row.quantity}_{row.name}", row))
@@ -619,6 +619,24 @@ def drawn_rows(comparisons: list[Comparison], graphical=None, analytic=None, pos
     if points_of_links and graphical is not None and analytic is not None:
         out = _with_points_of_links(out, graphical, analytic, position)
     return out
+
+
+def _as_read(row: Comparison, graphical) -> Comparison:
+    """A point's row with its graphical value as the plan's readings table reads it: the vector drawn from the pole,
+    its measured length × k (:attr:`plans.graphical.plan.PlanVector.value`) along its drawn direction, so that one
+    quantity prints one number on a page (a_S3 read 111.1 mm × 15 = 1666.5 m/s², not its image's unrounded 1666.4);
+    the row as it is where the plan draws no such vector (or without *graphical*)."""
+    if graphical is None or row.quantity not in ("v", "a"):
+        return row
+    plan = graphical.velocity_plan if row.quantity == "v" else graphical.acceleration_plan
+    label = f"{row.quantity}_{row.name}"
+    if plan is None or not any(v.label == label for v in plan.vectors):
+        return row
+    g = _drawn_value(plan, label)
+    a = complex(row.analytic)
+    error = abs(g - a)
+    reference = row.abs_error / row.rel_error if row.rel_error > 0 and row.abs_error > 0 else abs(a)
+    return Comparison(row.section, row.name, row.quantity, row.analytic, g, error, error / reference if reference > 0 else 0.0)
 
 
 def _point_of_link(analytic, point: str, link: str, position: int) -> tuple[complex, complex] | None:

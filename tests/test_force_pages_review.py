@@ -225,7 +225,8 @@ def test_the_lever_page_title_block_states_k_v(slider_crank_ru):
     page = next(t for t in texts if term("joukowski_lever", "ru") in t)
     stated = re.search(r"kv = ([0-9,]+) \(м/с\)/мм;", page)
     assert stated and _title_block_scale(page, "ru", "v") == stated[1]
-    assert "μF" not in page[page.rindex(term("scale_factors", "ru")):]
+    # and μ_F: the page's three methods' table reads the force plans at it (issue 20: missing there before)
+    assert "μF = 80 Н/мм" in page[page.rindex(term("scale_factors", "ru")):]
 
 
 def test_a_couple_enters_the_moment_equation_by_its_magnitude():
@@ -240,4 +241,6 @@ def test_a_couple_enters_the_moment_equation_by_its_magnitude():
     letters = [line for line in doc.source.split("], [") if "Σ M_(\"B\")" in line]
     assert letters and 'abs(M_("Ф3" ))' in letters[0], letters
     numbers = doc.source.split(letters[0], 1)[1].split("], [", 2)[1]
-    assert _re.search(r'− "162,8" = 0', numbers), numbers  # |M_Φ3| = J_S3·|ε3|, with the term's minus
+    # |M_Φ3| = J_S3·|ε3| = 0.025 kg·m² · 6510 rad/s² (ε3 read 130.2 mm × 15 / 0.3 m) = 162.75 N·m, with the term's minus:
+    # to five figures, the number the lever's pair M_Φ3/l_AB is computed from (issue 20: 162,8 / 0,3 ≠ 542,5)
+    assert _re.search(r'− "162,75" = 0', numbers), numbers

@@ -23,7 +23,7 @@ from matplotlib.textpath import TextToPath
 from shapely.geometry import LineString, Point, box
 from shapely.geometry import Polygon as ShapelyPolygon
 
-from .style import ARROW_RATIO, FONT_FAMILY, INK, MARGIN_MM, MM_PER_PT
+from .style import ARROW_RATIO, FONT_FAMILY, HOLLOW_RATIO, INK, MARGIN_MM, MM_PER_PT
 
 __all__ = ["Bounds", "Obstacles", "Sketch", "text_size", "fmt_number", "unit"]
 
@@ -261,8 +261,9 @@ class Sketch:
                 self.obstacles.append(LineString([(a.real, a.imag), (b.real, b.imag)]))
         return self._add(artist, gid)
 
-    def arrow(self, tail: complex, tip: complex, *, color=INK, lw=1.0, dashes=None, head=3.0, gid=None, zorder=3.0):
-        """A shaft from *tail* towards *tip* and a filled head whose point is exactly *tip*.
+    def arrow(self, tail: complex, tip: complex, *, color=INK, lw=1.0, dashes=None, head=3.0, gid=None, zorder=3.0, hollow=False):
+        """A shaft from *tail* towards *tip* and a filled head whose point is exactly *tip* (*hollow*: an open head,
+        white inside and outlined, a little wider, that tells the arrow from a filled one in black-and-white print).
 
         Returns ``[shaft, head]``; ``head.get_xy()[0]`` is the tip.
         """
@@ -272,15 +273,19 @@ class Sketch:
         head = min(head, 0.45 * length)
         # slender (ARROW_RATIO : 1), but never narrower than the shaft it ends
         half = max(head / ARROW_RATIO / 2, lw * MM_PER_PT * 0.8)
+        if hollow:  # wide enough that its white inside reads
+            half = max(half, head / HOLLOW_RATIO / 2)
         base = tip - u * head
-        # the shaft stops inside the head, so its square end never shows past the point
-        shaft_end = tip - u * head * 0.6
+        # the shaft stops inside the head, so its square end never shows past the point (at an open head's base:
+        # nothing of it inside)
+        shaft_end = tip - u * head * (1.0 if hollow else 0.6)
         name = gid or "arrow"
         shaft = self.line([tail, shaft_end], color=color, lw=lw, dashes=dashes, gid=name, zorder=zorder, obstacle=False)
         self.obstacles.append(LineString([(tail.real, tail.imag), (tip.real, tip.imag)]).buffer(lw * MM_PER_PT / 2))
         n = u * 1j
         head_artist = self.polygon(
-            [tip, base + n * half, base - n * half], fc=color, ec=color, lw=0.3, gid=f"{name}-head", zorder=zorder + 0.1
+            [tip, base + n * half, base - n * half], fc="white" if hollow else color, ec=color, lw=max(0.6, lw * 0.6) if hollow else 0.3,
+            gid=f"{name}-head", zorder=zorder + 0.1
         )
         return [shaft, head_artist]
 

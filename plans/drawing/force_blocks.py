@@ -16,7 +16,7 @@ the μ_F, k_l and k_v the page states hold on the printed paper.
 from __future__ import annotations
 
 from .force_drawing import draw_force_plan_into, draw_free_bodies_into, draw_lever_into
-from .style import CONSTRUCTION_STYLE, FORCE_STYLE
+from .style import CONSTRUCTION_STYLE, FORCE_HOLLOW, FORCE_STYLE
 from .svgblocks import SvgBlock, sketched
 
 __all__ = ["free_bodies_svg", "force_plan_svg", "lever_svg", "force_key_svg", "KEY_KINDS"]
@@ -27,11 +27,12 @@ KEY_KINDS = tuple(FORCE_STYLE) + ("construction", "arm")
 
 
 def free_bodies_svg(forces, k_l: float, lang: str = "en", per_row: int | None = None, names: dict | None = None,
-                    columns: tuple[int, ...] | None = None) -> SvgBlock:
+                    columns: tuple[int, ...] | None = None, equations=None) -> SvgBlock:
     """The free bodies of *forces* (:class:`plans.forces.force_plans.ForcePlans`) at *k_l* [m/mm], *per_row* to a row
-    (or in *columns*, how many each holds); *names*: group -> the words written over its body."""
+    (or in *columns*, how many each holds); *names*: group -> the words written over its body; *equations*: the
+    plans' equations as the page writes them, whose arms h_k are drawn on the bodies."""
     return sketched("fbody", lambda s: draw_free_bodies_into(s, forces, lang=lang, caption=False, k_l=k_l, per_row=per_row, names=names,
-                                                           columns=columns), lang)
+                                                           columns=columns, equations=equations), lang)
 
 
 def force_plan_svg(plan, lang: str = "en") -> SvgBlock:
@@ -50,7 +51,7 @@ def force_key_svg(kind: str) -> SvgBlock:
     def draw(sketch):
         if kind in FORCE_STYLE:
             color, lw, dashes, _ = FORCE_STYLE[kind]
-            sketch.arrow(0j, 9.0 + 0j, color=color, lw=lw, dashes=dashes, head=2.4, gid=f"key-{kind}")
+            sketch.arrow(0j, 9.0 + 0j, color=color, lw=lw, dashes=dashes, head=2.4, gid=f"key-{kind}", hollow=kind in FORCE_HOLLOW)
         elif kind in ("construction", "arm"):
             color, lw, dashes = CONSTRUCTION_STYLE
             sketch.line([0j, 9.0 + 0j], color=color, lw=lw, dashes=dashes, gid=f"key-{kind}")

@@ -30,7 +30,7 @@ from pathlib import Path
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import place_label
 from .numerals import localised, scale_caption
-from .style import CAPTION_PT, CONSTRUCTION_STYLE, FIGURE_STYLE, FORCE_STYLE, HEADING_PT, INK, LABEL_PT, SMALL_PT
+from .style import CAPTION_PT, CONSTRUCTION_STYLE, FIGURE_STYLE, FORCE_HOLLOW, FORCE_STYLE, HEADING_PT, INK, LABEL_PT, SMALL_PT
 from ..forces.notation import centre_text, course_label, plain_centres
 from ..i18n import term
 
@@ -39,6 +39,7 @@ __all__ = [
     "draw_force_plan_into",
     "draw_free_bodies",
     "draw_free_bodies_into",
+    "shoulders",
     "draw_force_legend_into",
     "legend_kinds",
     "force_figures",
@@ -211,7 +212,8 @@ def draw_force_plan_into(sketch: Sketch, plan, *, lang: str = "en", legend: bool
         if v.length < SHORT_MM:  # too short for an arrow: its end is a point, its length a note
             sketch.line([complex(v.tail), complex(v.tip)], color=color, lw=lw, gid=f"{v.kind}-{_gid(v.label)}", zorder=3.0)
             continue
-        sketch.arrow(complex(v.tail), complex(v.tip), color=color, lw=lw, dashes=dashes, head=min(head, v.length / 3.0), gid=f"{v.kind}-{_gid(v.label)}", zorder=3.0 if v.kind != "normal" else 2.6)
+        sketch.arrow(complex(v.tail), complex(v.tip), color=color, lw=lw, dashes=dashes, head=min(head, v.length / 3.0), gid=f"{v.kind}-{_gid(v.label)}", zorder=3.0 if v.kind != "normal" else 2.6,
+                     hollow=v.kind in FORCE_HOLLOW)
     sketch.circle(0j, 0.55, fc=INK, lw=0, gid="start", zorder=4.0)
     for name, z in plan.points.items():
         sketch.circle(complex(z), 0.35, fc=INK, lw=0, gid=f"vertex-{name}", zorder=4.0, obstacle=False)
@@ -325,7 +327,7 @@ def _plan_caption(sketch: Sketch, plan, vectors, lang: str, legend: bool, balanc
               for v in vectors if v.length < SHORT_MM], y)
     if balancing_moment is not None:
         y -= row
-        sketch.text(complex(x, y), f"{force_math('M_b', lang)} = {_number(abs(balancing_moment), lang)} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})",
+        sketch.text(complex(x, y), f"{force_math('M_b', lang)} = {_number(abs(balancing_moment), lang)} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))}, {term('from_force_plans', lang)})",
                     size=CAPTION_PT, ha="left", va="top", gid="reading-M_b", obstacle=False, math=True)
     if not legend:
         return
@@ -345,7 +347,7 @@ def draw_force_legend_into(sketch: Sketch, kinds, lines: bool, lang: str, x: flo
     for kind in kinds:
         y -= row
         color, lw, dashes, _ = FORCE_STYLE[kind]
-        sketch.arrow(complex(x, y), complex(x + 9.0, y), color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}")
+        sketch.arrow(complex(x, y), complex(x + 9.0, y), color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}", hollow=kind in FORCE_HOLLOW)
         sketch.text(complex(x + 11.0, y), _lower(term(FORCE_LEGEND[kind], lang)), size=CAPTION_PT, ha="left", va="center", gid=f"legend-text-{kind}", obstacle=False)
     if lines:
         y -= row
@@ -357,7 +359,7 @@ def draw_force_legend_into(sketch: Sketch, kinds, lines: bool, lang: str, x: flo
 # --- the free bodies ---------------------------------------------------------------------
 
 
-def draw_free_bodies(forces, ax=None, *, lang: str = "en", names: dict | None = None) -> list:
+def draw_free_bodies(forces, ax=None, *, lang: str = "en", names: dict | None = None, equations=None) -> list:
     """The groups and the driver, cut apart, with their loads and the reactions on them.
 
     Each is drawn at one k_l (see :func:`draw_free_bodies_into`), side by side in the order of the
@@ -365,15 +367,20 @@ def draw_free_bodies(forces, ax=None, *, lang: str = "en", names: dict | None = 
     arrow of :data:`FREE_ARROW_MM` at its point of application (a load from
     its point, a reaction into its joint), every couple an arc.
     """
-    return sketch_on(ax, "fbody", lambda sketch: draw_free_bodies_into(sketch, forces, lang=lang, names=names))
+    return sketch_on(ax, "fbody", lambda sketch: draw_free_bodies_into(sketch, forces, lang=lang, names=names, equations=equations))
 
 
 def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: bool = True, k_l: float | None = None, per_row: int | None = None,
-                          names: dict | None = None, columns: tuple[int, ...] | None = None) -> None:
+                          names: dict | None = None, columns: tuple[int, ...] | None = None, equations=None) -> None:
     """Draw the free bodies into *sketch* (see :func:`draw_free_bodies`), at *k_l* [m/mm], *per_row* of them in a
     row (by default all in one), each row under the one before, or in *columns* (how many each holds; a tall body
     beside a column of small ones); *names*: group -> the words written over its
     body (``"group 3–4"``; the group's own name without them).
+
+    *equations* (:func:`plans.forces.plan_equations.plan_equations` of *forces*, as the page writes them): each arm
+    h_k a moment equation uses drawn on its body (:func:`shoulders`), a thin line from the moment point perpendicular
+    to the force's line of action (that line dotted as far as the foot), named ``h_k = … mm`` (its length on this
+    drawing).
 
     By default k_l is the round value that draws the largest free body 60–120 mm across (a group is
     smaller than the mechanism: its links drawn at the mechanism's k_l would crowd their arrows).
@@ -407,6 +414,8 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
             if c.moment:
                 where = _pivot(g, c.body) if c.kind == "balancing" or forces.centres.get(c.body) is None else forces.centres[c.body].at
                 reach += [where / k_l + (COUPLE_R_MM + 2.0) * d for d in (1, 1j, -1, -1j)]
+        arms = shoulders(equations, plan.group, g) if equations else []
+        reach += [z / k_l for arm in arms for z in (arm[1], arm[4])]
         zs = pts + reach
         what = driving_link_words(plan.links[0], _is_crank(g.scene), lang) if plan.group == "driver" else (names or {}).get(plan.group, plan.group)
         left = min(z.real for z in zs) - FREE_LABEL_MM
@@ -416,20 +425,20 @@ def draw_free_bodies_into(sketch: Sketch, forces, *, lang: str = "en", caption: 
         wide = max(text_size(line, CAPTION_PT)[0] for line in what.split("\n"))
         box = (left, max(right, left + wide),  # its name over it
                min(z.imag for z in zs) - FREE_LABEL_MM, max(z.imag for z in zs) + FREE_LABEL_MM + FREE_NAME_MM * (what.count("\n") + 1))
-        bodies.append((plan, links, box, acting, couples, what))
-    placed = [(body[0], body[1], complex(x - body[2][0], y - body[2][3]), body[3], body[4], body[2], body[5]) for body, (x, y) in
+        bodies.append((plan, links, box, acting, couples, what, arms))
+    placed = [(body[0], body[1], complex(x - body[2][0], y - body[2][3]), body[3], body[4], body[2], body[5], body[6]) for body, (x, y) in
               zip(bodies, _arrange([b[2] for b in bodies], per_row, columns))]
     # each body's name over it, first: the bodies' labels are then placed clear of it
     from shapely.geometry import box as shapely_box
 
-    for plan, links, shift, _, _, box, what in placed:
+    for plan, links, shift, _, _, box, what, _ in placed:
         for k, line in enumerate(what.split("\n")):
             corner = complex(box[0] + shift.real, box[3] + shift.imag - k * FREE_NAME_MM)
             sketch.text(corner, line, size=CAPTION_PT, ha="left", va="top", gid=f"heading-{plan.group}" + (f"-{k}" if k else ""))
             w, h = text_size(line, CAPTION_PT)
             sketch.obstacles.append(shapely_box(corner.real, corner.imag - h, corner.real + w, corner.imag).buffer(1.2))  # and a margin
-    for plan, links, shift, acting, couples, _, _ in placed:
-        _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l)
+    for plan, links, shift, acting, couples, _, _, arms in placed:
+        _free_body(sketch, forces, plan, links, shift, acting, couples, lang, k_l, arms)
     if caption:
         b = sketch.bounds
         sketch.text(complex(b.xmin, b.ymax + 6.0), term("free_bodies", lang), size=HEADING_PT, ha="left", va="bottom", weight="bold", gid="heading", obstacle=False)
@@ -483,9 +492,32 @@ def _inside(label: str, links) -> bool:
     return len(names) == 2 and all(n in links for n in names)
 
 
-def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, couples, lang: str, k_l: float) -> None:
+def shoulders(equations, group: str, g) -> list[tuple[int, complex, complex, float, complex]]:
+    """The arms h_k the moment equations of *group*'s plan use (*equations*: :class:`plans.forces.plan_equations.PlanEquations`
+    of the plans), each ``(k, moment point [m], the force's line of action: a point [m] and its unit direction, the arm
+    as the equation states it [m], the foot of the perpendicular [m])``; an arm of zero length (a force through the
+    point) has no line to draw and is left out."""
+    out = []
+    for eq in equations:
+        if eq.group != group:
+            continue
+        about = [(m.about, m.terms) for m in eq.moments] + ([(eq.pivot, eq.balancing)] if eq.pivot and eq.balancing else [])
+        for name, terms in about:
+            centre = complex(g.positions[name])
+            for t in terms:
+                if t.number is None or t.through is None or not t.arm:
+                    continue
+                u = complex(t.direction)
+                foot = t.through + u * ((centre - t.through) * u.conjugate()).real
+                if abs(centre - foot) > 1e-12:
+                    out.append((t.number, centre, complex(t.through), float(t.arm), foot))
+    return out
+
+
+def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, couples, lang: str, k_l: float, arms=()) -> None:
     """One free body: its links (a block as its body, a ram reaching to its centre of mass), then every arrow and couple,
-    and only then the labels, placed clear of all of them and of each other (as the plans place theirs)."""
+    the arms of its moment equations (*arms*: :func:`shoulders`), and only then the labels, placed clear of all of them
+    and of each other (as the plans place theirs)."""
     g = forces.graphical
     edge, _, fill = FIGURE_STYLE
 
@@ -571,7 +603,7 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
     for f, tail, tip, into, point in arrows:
         u = f.force / abs(f.force)
         color, lw, dashes, head = FORCE_STYLE[f.kind]
-        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0)
+        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(f.label)}", zorder=5.0, hollow=f.kind in FORCE_HOLLOW)
         sketch.obstacles.append(_segment_shape(tail, tip))
         end = tail if into else tip
         labels.append((end, [(force_math(f.label, lang), f"force-label-{_gid(f.label)}")],
@@ -607,8 +639,34 @@ def _free_body(sketch: Sketch, forces, plan, links, shift: complex, acting, coup
         sketch.arc_arrow(where, radius, start, sweep, color=color, lw=0.9, gid=f"couple-{_gid(c.label)}")
         labels.append((where + radius * cmath.exp(1j * start), [(force_math(c.label, lang), f"couple-label-{_gid(c.label)}")],
                        dict(size=LABEL_PT, prefer=cmath.exp(1j * start), gaps=(0.8, 1.8, 3.0), mathtext=True, leader_from=4.0, color=color)))
+    inner = sum(at(g.positions[n]) for body in links for n in g.scene.bodies[body].points) / max(1, sum(len(g.scene.bodies[body].points) for body in links))
+    for number, centre, through, arm, foot in arms:
+        c, f, p = at(centre), at(foot), at(through)
+        if abs(c - f) < SHOULDER_MIN_MM:  # too short to draw as a line (the equation still names it)
+            continue
+        color, lw, _ = CONSTRUCTION_STYLE
+        # the line of action, dotted, from the force's point to the foot; the arm itself thin and solid, square to it
+        if abs(f - p) > 0.3:
+            sketch.line([p, f], color=color, lw=lw * 0.8, dashes=(1.0, 1.5), gid=f"action-h{number}", zorder=1.0, obstacle=False)
+        sketch.line([c, f], color=INK, lw=SHOULDER_PT, gid=f"arm-h{number}", zorder=1.2)
+        d = (c - f) / abs(c - f)
+        e = unit(p - f) if abs(p - f) > 1e-9 else d * 1j
+        mark = min(1.4, abs(c - f) / 3)
+        sketch.line([f + d * mark, f + (d + e) * mark, f + e * mark], color=INK, lw=SHOULDER_PT * 0.8, gid=f"arm-square-h{number}", zorder=1.2, obstacle=False)
+        mm = arm / k_l  # its length on this drawing, as the equation's arm [m] gives it at the drawing's k_l
+        text = f"$h_{{{number}}}$ = {localised(f'{mm:.1f}', lang)} mm"
+        across = d * 1j if ((inner - (c + f) / 2) * (d * 1j).conjugate()).real >= 0 else -d * 1j  # towards the body: kept in its box
+        labels.append(((c + f) / 2, [(text, f"arm-label-h{number}")],
+                       dict(size=SMALL_PT, prefer=across, gaps=(0.6, 1.4, 2.4, 3.6, 5.0), mathtext=True, leader_from=4.0, own=(c, f))))
     for anchor, pieces, options in labels:
         place_label(sketch, anchor, pieces, **options)
+
+
+#: the line width [pt] of an arm h drawn on a free body (thin: a dimension, not a part)
+SHOULDER_PT = 0.5
+#: an arm shorter than this on the drawing [mm] is not drawn (a line that short does not read; its force all but
+#: passes through the point)
+SHOULDER_MIN_MM = 1.0
 
 
 def lever_image_text(label: str, scene) -> str:
@@ -764,6 +822,8 @@ def write_force_drawings(forces, directory, *, lang: str = "en", formats=("svg",
 LEVER_ARROW_MM = 12.0
 #: An arm shorter than this [mm] is not drawn (its line would hide under the arrows).
 ARM_MIN_MM = 0.5
+#: The gap [mm] between two arrows along one line at one image (the second starts past the first one's head).
+LEVER_GAP_MM = 2.0
 
 #: the lever's load kinds (plans.forces.loads.LOAD_KINDS, "balancing") -> force style
 _LEVER_KIND = {
@@ -832,12 +892,24 @@ def draw_lever_into(sketch: Sketch, lever, *, lang: str = "en", caption: bool = 
         color, lw, dashes, head = FORCE_STYLE[kind]
         u = f.force / size
         tail = complex(f.point)  # on a lever an arrow's place is its arm: every arrow starts at its point's image
-        # an arrow along one drawn before at the same image is drawn longer, so that both heads show
-        along = sum(1 for g, t in zip(everything, tips) if abs(g.force) and abs(complex(g.point) - tail) < 0.5
-                    and (g.force / abs(g.force) * u.conjugate()).real > 0.98)
-        tip = tail + u * LEVER_ARROW_MM * (1 + 0.55 * along)
+        # an arrow along one drawn before at the same image (Φ₄ and F_пс at b) starts past that one's head, on its own
+        # line of action through the image (its arm unchanged): each arrow, head and name reads by itself, none over another
+        def same_line(g) -> bool:
+            return bool(abs(g.force)) and abs(complex(g.point) - tail) < 0.5 and (g.force / abs(g.force) * u.conjugate()).real > 0.98
+
+        along = sum(1 for g, t in zip(everything, tips) if same_line(g))
+        # the arrows of one line share the length one arrow and a half would take (the drawing no larger for them)
+        count = sum(1 for g in everything if same_line(g))
+        length = (LEVER_ARROW_MM * (1 + 0.55 * (count - 1)) - LEVER_GAP_MM * (count - 1)) / count
+        if along:
+            color_line, lw_line, _ = CONSTRUCTION_STYLE  # the line of action from the image to the arrow, as the arms' lines
+            start = tail + u * (length + LEVER_GAP_MM) * along
+            sketch.line([tail, start], color=color_line, lw=lw_line * 0.8, dashes=(1.0, 1.5), gid=f"along-{_gid(names[id(f)])}",
+                        zorder=1.0, obstacle=False)
+            tail = start
+        tip = tail + u * length
         tips.append(tip)
-        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(names[id(f)])}", zorder=5.0)
+        sketch.arrow(tail, tip, color=color, lw=lw, dashes=dashes, head=head, gid=f"force-{_gid(names[id(f)])}", zorder=5.0, hollow=kind in FORCE_HOLLOW)
     groups: list[tuple[complex, list[tuple[str, str]]]] = [(0j, [("p", "pole-label")])]
     for label, z in images.items():
         for at, pieces in groups:
@@ -950,7 +1022,7 @@ def _lever_caption(sketch: Sketch, lever, lang: str) -> None:
     y -= row
     if lever.balancing_kind == "moment":
         result = (f"{force_math('M_b', lang)} = {force_math('F_b', lang)}·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force), lang)} N · "
-                  f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(abs(lever.balancing), lang)} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))})")
+                  f"{localised(f'{lever.crank_length:.4g}', lang)} m = {_number(abs(lever.balancing), lang)} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))}, {term('from_lever', lang)})")
     else:
-        result = f"{force_math('F_b', lang)} = {_number(lever.balancing, lang)} N ({_lower(term('balancing_force', lang))})"
+        result = f"{force_math('F_b', lang)} = {_number(lever.balancing, lang)} N ({_lower(term('balancing_force', lang))}, {term('from_lever', lang)})"
     sketch.text(complex(x, y), result, size=CAPTION_PT, ha="left", va="top", gid="result", obstacle=False, math=True)

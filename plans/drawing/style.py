@@ -21,6 +21,8 @@ __all__ = [
     "HEADING_PT",
     "VECTOR_STYLE",
     "FORCE_STYLE",
+    "FORCE_HOLLOW",
+    "HOLLOW_RATIO",
     "CONSTRUCTION_STYLE",
     "ARROW_RATIO",
     "FIGURE_STYLE",
@@ -92,8 +94,15 @@ FORCE_STYLE = {
     "balancing": ("#E69F00", 1.7, None, 3.6),
 }
 
+#: The force kinds drawn with an open (hollow) arrowhead: the weight G, light blue, beside the inertia force Φ,
+#: blue, would be one grey in black-and-white print; its open head tells it from Φ's filled one in any print
+#: (on the force plans, the free bodies, Joukowski's lever and the legends alike).
+FORCE_HOLLOW = frozenset({"weight"})
+
 #: Arrowheads are slender: length : width = ARROW_RATIO : 1 (drafting practice, about 3:1).
 ARROW_RATIO = 3.0
+#: An open arrowhead is wider (length : width = HOLLOW_RATIO : 1), so that its white inside reads.
+HOLLOW_RATIO = 1.8
 
 #: Construction lines: thin, grey, dashed.
 CONSTRUCTION_STYLE = ("#7f7f7f", 0.5, (4.0, 2.5))

@@ -19,7 +19,7 @@ with) and the graphical positions: nothing is solved here but the one-unknown mo
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..graphical.scales import measure
 
@@ -33,13 +33,18 @@ _ZERO = 1e-9
 class MomentTerm:
     """One term of a moment equation about a joint: a force's magnitude [N] times its arm [m], or a couple [N·m].
 
-    ``moment`` is the signed moment [N·m], counter-clockwise positive; ``arm`` None for a couple.
+    ``moment`` is the signed moment [N·m], counter-clockwise positive; ``arm`` None for a couple.  A force's
+    ``number`` is k of its arm's name h_k, numbered in order over the moment equations of the plans of a position
+    (the free bodies drawn together name each arm once); ``through`` [m] and ``direction`` (unit) its line of action.
     """
 
     label: str
     size: float
     arm: float | None
     moment: float
+    number: int | None = None
+    through: complex | None = None
+    direction: complex | None = None
 
 
 @dataclass(frozen=True)
@@ -115,7 +120,7 @@ def _terms(plans, body: str, centre: complex, skip) -> tuple[MomentTerm, ...]:
             continue
         arm = _cross(f.at - centre, f.force / abs(f.force))
         h = _measured(plans, abs(arm))
-        terms.append(MomentTerm(f.label, abs(f.force), h, math.copysign(h, arm) * abs(f.force)))
+        terms.append(MomentTerm(f.label, abs(f.force), h, math.copysign(h, arm) * abs(f.force), None, f.at, f.force / abs(f.force)))
     for c in couples:
         if c.moment and c.kind != "balancing":
             terms.append(MomentTerm(c.label, abs(c.moment), None, c.moment))
@@ -140,6 +145,7 @@ def plan_equations(plans) -> list[PlanEquations]:
     """The equations of every plan of *plans* (:class:`plans.forces.force_plans.ForcePlans`), in their order."""
     out = []
     g = plans.graphical
+    count = 0  # the arms h_k named so far
     for plan in plans.plans:
         chain = _chain(plan)
         directions = [complex(line.direction) for line in plan.lines]
@@ -175,5 +181,25 @@ def plan_equations(plans) -> list[PlanEquations]:
         if plan.group == "driver" and plans.balancing_moment is not None:
             pivot, crank = g.scene.driver.pivot, g.scene.driver.link
             balancing = _terms(plans, crank, g.positions[pivot], skip=())
+        moments, balancing, count = _numbered(moments, balancing, count)
         out.append(PlanEquations(plan.group, moments, tuple(polygon), tuple(inner), pivot, crank, balancing))
     return out
+
+
+def _numbered(moments, balancing, count: int):
+    """The equations of one plan with their forces' arms numbered h_{count+1}, h_{count+2}, … in order (a couple has
+    no arm), and the last number given: numbered on over the plans of a position, one name for one arm on a page
+    that draws the free bodies of all of them together."""
+
+    def number(terms):
+        nonlocal count
+        out = []
+        for t in terms:
+            if t.arm is not None:
+                count += 1
+                t = replace(t, number=count)
+            out.append(t)
+        return tuple(out)
+
+    moments = tuple(replace(m, terms=number(m.terms)) for m in moments)
+    return moments, number(balancing), count

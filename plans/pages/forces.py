@@ -119,6 +119,23 @@ def _number(value: float, digits: int = 4) -> str:
     return _minus(f"{value:.{decimals}f}")
 
 
+#: significant figures of an inertia couple M_Φ = −J_S·ε on the pages: one more than a force's, so that the pair of
+#: forces F = M_Φ/l the lever puts in its place is what the printed M_Φ gives (162.75 N·m / 0.3 m = 542.5 N, where
+#: 162.8 would give 542.7): one number for M_Φ on every page (loads, moment equations, the lever)
+COUPLE_DIGITS = 5
+
+
+def _couple(value: float, label: str) -> str:
+    """A couple [N·m] as every force page prints it: an inertia couple (``M_Φ…``) to :data:`COUPLE_DIGITS`
+    significant figures, a given one to 4."""
+    return _number(value, COUPLE_DIGITS if _inertia_couple(label) else 4)
+
+
+def _inertia_couple(label: str) -> bool:
+    """Whether *label* names an inertia couple (``"M_Φ3"``, :func:`plans.forces.loads.inertia_symbol`)."""
+    return label.startswith("M_Φ")
+
+
 def _reading(value: float, step: float | None) -> str:
     """A value read to *step* (as many decimals as the step has), or to 4 significant figures without one."""
     if not step:
@@ -290,12 +307,17 @@ def force_scale(graphical, lang: str = "en", width: float = FREE_BODIES_BOX[0], 
     return mu, plans, blocks, min(columns, len(plans.plans))
 
 
-def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, k_plate: float | None = None, skip: int = 0):
+def _free_bodies(plans, graphical, lang: str, names: dict, box=FREE_BODIES_BOX, k_plate: float | None = None, skip: int = 0, equations=None):
     """(k_l [m/mm], block): the free bodies in one row, two or a grid, at the plate's *k_plate* [m/mm] when they fit
     *box* at it in one of those arrangements (the plate's one k_l on every page), else at the round k_l that draws
     them largest within *box* (coarser than the plate's: the page states it); *skip*: how many of the arrangements that
-    fit at the plate's k_l to pass over (a taller one, to fill a page the force plans do not follow onto)."""
+    fit at the plate's k_l to pass over (a taller one, to fill a page the force plans do not follow onto); *equations*:
+    the plans' equations, whose arms h_k are drawn on the bodies."""
+    from functools import partial
+
     from ..drawing.force_blocks import free_bodies_svg
+
+    free_bodies_svg = partial(free_bodies_svg, equations=equations)
 
     count = len(plans.plans)
     g = graphical
@@ -393,7 +415,7 @@ def _plan_lines(plan, given: dict, balancing_moment, lang: str = "en", equations
         lines.append(";  ".join(f"|{_math(v.label, lang)}| = {v.length:.2f} mm ({_number(given[v.label]) if v.label in given else _reading(v.value, _step(plan))} N)"
                                 for v in short))
     if balancing_moment is not None:
-        lines.append(f"{_math('M_b', lang)} = {_number(abs(balancing_moment))} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))})")
+        lines.append(f"{_math('M_b', lang)} = {_number(abs(balancing_moment))} N·m{sense_arrow(balancing_moment)} ({_lower(term('balancing_moment', lang))}, {term('from_force_plans', lang)})")
     return lines
 
 
@@ -435,16 +457,15 @@ def _signed(terms) -> str:
 def _moment_terms(letters: list, numbers: list, terms, lang: str) -> tuple[list, list]:
     """A moment equation's terms after its first ones, in letters (``F dot h_1``) and in numbers (``1500 dot 0,042``):
     a couple by its magnitude (``|M_Φ3|``: the pages' tables list it signed), a force with its arm h_k (numbered in
-    order); each term's sign is its sense, counter-clockwise positive."""
-    k = 0
+    order over the plan's equations, as the free bodies name the arms drawn); each term's sign is its sense,
+    counter-clockwise positive."""
     for t in terms:
         symbol = _typst_symbol(t.label, lang)
         if t.arm is None:  # a couple by its magnitude, its sense in the term's sign (the table lists it signed)
             letters.append((t.moment, f"abs({symbol})"))
-            numbers.append((t.moment, _quoted(t.size, lang)))
+            numbers.append((t.moment, _quoted(t.size, lang, COUPLE_DIGITS if _inertia_couple(t.label) else 4)))
         else:
-            k += 1
-            letters.append((t.moment, f"{symbol} dot h_{k}"))
+            letters.append((t.moment, f"{symbol} dot h_{t.number}"))
             numbers.append((t.moment, f"{_quoted(t.size, lang)} dot {_quoted(t.arm, lang)}"))
     return letters, numbers
 
@@ -494,7 +515,7 @@ def _loads_table(plans, lang: str) -> list[list[str]]:
     for c in plans.couples:
         if c.kind == "balancing" or c.moment == 0:
             continue
-        rows.append([_math(c.label, lang), c.body, term("inertia_couple" if c.kind == "inertia" else "couple", lang), f"{_number(c.moment)} N·m", "—"])
+        rows.append([_math(c.label, lang), c.body, term("inertia_couple" if c.kind == "inertia" else "couple", lang), f"{_couple(c.moment, c.label)} N·m", "—"])
     return rows
 
 
@@ -782,7 +803,8 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     text = 16.0 + (5.0 if where else 0.0) + 5.0 + 4.6 * -(-len(_body_kinds(plans)) // 2) + 8.0 + tables + 6.0
     box = (doc.page.text_width, min(FREE_BODIES_BOX[1], doc.page.text_height - text))
     plate_kl = doc.plate.get("k_l")
-    k_l, free = _free_bodies(plans, graphical, lang, names, box, plate_kl)
+    arms = plan_equations(plans)  # the equations the pages write: the bodies draw the arms h_k they use
+    k_l, free = _free_bodies(plans, graphical, lang, names, box, plate_kl, equations=arms)
     pages = ForcePages(mu, k_l, plans)
     mu_words = f"$μ_{{F}}$ = {_scale(mu)} N/mm"
     head = term("kinetostatics", lang)
@@ -801,6 +823,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
 
     # 1. the free bodies, the given loads and the legend
     heading(_lower(term("free_bodies", lang)))
+    kl_at = len(doc.body)
     if plate_kl is not None:
         doc.body.append(f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])")  # the title block states the free bodies' k_l
     _scale_note(doc, mu_words)
@@ -811,6 +834,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     coarser = ""
     if plate_kl is not None and abs(k_l - plate_kl) > 1e-12 * plate_kl:  # none of the arrangements fits at the plate's k_l
         coarser = ";  " + term("free_bodies_coarser", lang).format(scale=f"$k_{{l}}$ = {_scale(plate_kl)} m/mm")
+    caption_at = len(doc.body)
     doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}{coarser}", lang), size=SMALL_PT)
     doc.body.append(_legend(doc, f"{key}-bodies-legend", _body_kinds(plans), lang))
     given_data = _table(doc, data, "(left, right, left, right)", data_heading)
@@ -820,6 +844,19 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     doc.body.append("".join(f"#text(size: {SMALL_PT}pt)[{_words(doc, line)}] \\\n" for line in data_lines))
 
     doc.mark(f"{key}-bodies-end", solid=True)
+    if coarser:  # the estimate of the page's text left the bodies too little room: at the plate's k_l where the laid-out page holds them
+        found = _bodies_at_plate(doc, key, free, plate_kl, lambda: _free_bodies(plans, graphical, lang, names, (box[0], math.inf), plate_kl, equations=arms))
+        if found is not None:
+            k_l, free = found
+            pages.k_l = k_l
+            coarser = ""
+            doc.body[kl_at] = f"#plate-kl.update([{doc.scale_words('k_l', k_l)}])"
+            doc.body[bodies_at] = ""
+            doc.figure(f"{key}-free-bodies", free)
+            doc.body[bodies_at] = doc.body.pop()
+            doc.body[caption_at] = ""
+            doc.line(_newtons(f"$k_{{l}}$ = {_scale(k_l)} m/mm;  {term('not_to_scale', lang)}", lang), size=SMALL_PT)
+            doc.body[caption_at] = doc.body.pop()
     # 2. the force plans at one μ_F
     doc.mark(f"{key}-plans-start")
     # where the free bodies end, kept with the first plan
@@ -831,7 +868,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         reset = (f"#context {{ if here().page() != locate(<{key}-free-bodies>).page() "
                  f"{{ plate-kl.update([{doc.scale_words('k_l', plate_kl)}]) }} }}")
     given = given_loads(plans)
-    written = {e.group: e for e in plan_equations(plans)}
+    written = {e.group: e for e in arms}
     # each plan under its equations: in its cell, or (where a line of them is wider than a cell) the equations of a
     # row's plans across the page above the row
     cell = (doc.page.text_width - (columns - 1) * GUTTER) / columns
@@ -876,7 +913,7 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
     doc.body.append("#v(2mm)\n" + _legend(doc, f"{key}-legend", list(kinds) + (["construction"] if closing else []), lang))
 
     if plate_kl is not None and not coarser:
-        _fill_bodies_page(doc, key, bodies_at, free, lambda: _free_bodies(plans, graphical, lang, names, box, plate_kl, skip=1))
+        _fill_bodies_page(doc, key, bodies_at, free, lambda: _free_bodies(plans, graphical, lang, names, box, plate_kl, skip=1, equations=arms))
     # 3. Joukowski's lever and the three methods
     comparisons = compare_forces(analytic, lever, plans) if analytic is not None else ()
     pages.comparisons = comparisons
@@ -889,6 +926,25 @@ def force_pages(doc: Document, graphical, *, lever=None, analytic=None, where: s
         doc.body.append("#v(4mm)")
         doc.body.append(_table(doc, _methods_table(comparisons, analytic, lang, plans, lever), "(left, right, right, right, right, right)", term("force_methods", lang)))
     return pages
+
+
+def _bodies_at_plate(doc: Document, key: str, block, plate: float, at_plate):
+    """(k_l, block) of the free bodies at the plate's k_l *plate* (*at_plate()*: the first arrangement as wide as the
+    page, at *plate* or a coarser k_l where none is) where the laid-out page, with them at the coarser k_l (*block*),
+    holds what they add under :data:`LEVER_SPARE` (read from the laid-out document); else None."""
+    from .typesetting import query_document
+
+    found = at_plate()
+    if found is None or abs(found[0] - plate) > 1e-12 * plate:  # no arrangement as wide as the page at the plate's k_l
+        return None
+    marks = {m["name"]: m for m in query_document(doc.source(), doc.images, "<plans-mark>") if m["name"].startswith(key)}
+    end = marks.get(f"{key}-bodies-end")
+    if end is None:
+        return None
+    top, page = doc.page.margins[2], doc.page.text_height
+    if found[1].height - block.height > top + page - end["y"] - LEVER_ABOVE - LEVER_SPARE:
+        return None
+    return found
 
 
 def _fill_bodies_page(doc: Document, key: str, at: int, block, taller) -> None:
@@ -1075,11 +1131,18 @@ def _lever_section(doc: Document, graphical, lever, analytic, plans, key: str, h
             break
         k = scales[step]
     head, legend, moments, methods, comparisons = _lever_pieces(doc, lever, analytic, plans, key, heading, mu_words, k_plate)
+    # the title block of every page the section lands on states the scales it uses: μ_F (the three methods' table
+    # reads the force plans at it) and the lever's own k_v where it has one (its arms are mm at that k_v); inside each
+    # piece that may begin a page of its own
+    notes = f"#metadata([{_words(doc, mu_words)}]) <plans-page-scale>"
+    if k != k_plate:
+        notes += f"#metadata([{_words(doc, term('joukowski_lever', doc.lang) + f': $k_{{v}}$ = {_scale(k)} (m/s)/mm')}]) <plans-page-scale>"
+    # (inside a block: a note between blocks would set a line of its own and take room the layout did not reckon with)
+    moments, methods = (piece.replace("#block(breakable: false)[", "#block(breakable: false)[" + notes, 1) for piece in (moments, methods))
+    head = head.replace("#block(sticky: true, breakable: false)[", "#block(sticky: true, breakable: false)[" + notes, 1)
     if layout == "page":
         doc.body.append("#pagebreak(weak: true)\n")
     doc.body.append(head)
-    if k != k_plate:  # the title block of the lever's page states its k_v
-        _scale_note(doc, f"{term('joukowski_lever', doc.lang)}: $k_{{v}}$ = {_scale(k)} (m/s)/mm")
     if layout != "split" and beside(k) and max(block.height, h["column"]) + 1.0 < block.height + legend_height:
         column = _legend(doc, f"{key}-lever-legend", _lever_kinds(lever) + ["arm"], doc.lang, column=True)
         doc.body.append(f"#grid(columns: (auto, {LEGEND_COLUMN}mm), column-gutter: {GUTTER}mm, align: horizon + left, "
@@ -1136,7 +1199,7 @@ def _lever_rows(lever, lang: str) -> list[list[str]]:
             ends = "".join(q.image.upper() for q in pair)
             couple = moments[(f.name, f.body)]
             length = abs(couple) / abs(f.force)
-            note = f"= {_math(f.name, lang)}/$l_{{\\mathrm{{{ends}}}}}$ = {_number(abs(couple))} N·m / {length:.4g} m"
+            note = f"= {_math(f.name, lang)}/$l_{{\\mathrm{{{ends}}}}}$ = {_couple(abs(couple), f.name)} N·m / {length:.4g} m"
             if f is pair[0]:
                 note += f"; {term('lever_pair', lang).format(points=', '.join(lever_image_text(q.image, lever.scene) for q in pair))}"
         rows.append([_math(names[id(f)], lang), lever_image_text(f.image, lever.scene), _number(abs(f.force)), _minus(f"{arm:.1f}"), _number(f.moment), note])
@@ -1146,12 +1209,12 @@ def _lever_rows(lever, lang: str) -> list[list[str]]:
 def _lever_result(lever, lang: str) -> list[str]:
     from ..drawing.force_drawing import sense_arrow
 
-    lines = [f"{_math(c.name, lang)} = {_number(c.couple)} N·m → {_number(c.moment)} N·mm ({term('lever_block_couple', lang)})" for c in lever.couples]
+    lines = [f"{_math(c.name, lang)} = {_couple(c.couple, c.name)} N·m → {_number(c.moment)} N·mm ({term('lever_block_couple', lang)})" for c in lever.couples]
     if lever.balancing_kind == "moment":
         lines.append(f"{_math('M_b', lang)} = {_math('F_b', lang)}·$l_{{\\mathrm{{OA}}}}$ = {_number(abs(lever.balancing_force.force))} N · "
-                     f"{lever.crank_length:.4g} m = {_number(abs(lever.balancing))} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))})")
+                     f"{lever.crank_length:.4g} m = {_number(abs(lever.balancing))} N·m{sense_arrow(lever.balancing)} ({_lower(term('balancing_moment', lang))}, {term('from_lever', lang)})")
     else:
-        lines.append(f"{_math('F_b', lang)} = {_number(lever.balancing)} N ({_lower(term('balancing_force', lang))})")
+        lines.append(f"{_math('F_b', lang)} = {_number(lever.balancing)} N ({_lower(term('balancing_force', lang))}, {term('from_lever', lang)})")
     return lines
 
 
