@@ -400,6 +400,8 @@ VOCABULARY = {
         "sl": "Kratke daljice in skoraj sovpadajoče smeri so podane pod načrtom (dolžine v mm na načrtu, koti od osi x, v nasprotni smeri urinega kazalca).",
     },
     # the words of a sliding driver and of the centres' method page (issue 20)
+    "from_force_plans": {"sr": "из планова сила", "ru": "по планам сил", "bg": "от плановете на силите", "sl": "iz načrtov sil"},
+    "from_lever": {"sr": "из Жуковљеве полуге", "ru": "по рычагу Жуковского", "bg": "от лоста на Жуковски", "sl": "iz Žukovskijevega vzvoda"},
     "centres_sign": {"sr": "Смер обртања", "ru": "Направление вращения", "bg": "Посока на въртене", "sl": "Smisel vrtenja"},
     "centres_sign_rule": {"sr": "{omega_j} има исти смер као {omega_k} када {pjk} лежи ван дужи {segment}, супротан када лежи унутар ње (знак минус у табелама)",
                           "ru": "{omega_j} того же направления, что и {omega_k}, если {pjk} лежит вне отрезка {segment}, и противоположного, если внутри него (знак минус в таблицах)",
