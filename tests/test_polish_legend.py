@@ -39,7 +39,8 @@ def drawn(tmp_path_factory):
         if example == "six-bar":
             assert main(["draw", "--example", example, "-o", str(d)]) == 0
         else:  # the linear-arm with a = 2 m/s² at its instant (the bundled example's a = 0 draws longer normals)
-            assert main(["draw", str(write_linear_arm_accelerating(tmp_path_factory.mktemp("scene"))), "-o", str(d)]) == 0
+            # at the k_a its sheet had chosen (the sheet's factor follows its text column's length: given here)
+            assert main(["draw", str(write_linear_arm_accelerating(tmp_path_factory.mktemp("scene"))), "--k-a", "0.03", "-o", str(d)]) == 0
         out[example] = d
     return out
 

@@ -287,6 +287,13 @@ def _readings(doc: Document, graphical, lang: str) -> list:
     return out
 
 
+def _placements(graphical, kind: str) -> dict:
+    """The rows placing the images no step places (:func:`placement_rows`), but for the proportions: the sheet says
+    those once, with their numbers, under "Images by similarity"."""
+    rows = {at: [row for row in rows if row.kind != "proportion"] for at, rows in placement_rows(graphical, kind).items()}
+    return {at: rows for at, rows in rows.items() if rows}
+
+
 def _texts(doc: Document, graphical, *, table, formula, assembly, legend, heading, split: bool = False,
            notes: bool = True) -> list[str]:
     """The text column's markup (collected from the document's own sections); *split*: the comparison table in two
@@ -307,10 +314,12 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
             doc.line(f"{term('structural_formula', lang)}:  {formula_words(formula)}", size=TEXT_PT)
         if assembly:
             doc.line(f"{term('assembly', lang)}: " + ";  ".join(assembly), size=SMALL_PT + 0.5)
+        noted = False  # the note on the underlines over the first equations only: one column reads as one
         for plan in (graphical.velocity_plan, graphical.acceleration_plan):
             if plan is not None and any(step.equations for step in plan.steps):
                 doc.equations(f"{term('vector_equations', lang)}: {term(plan.kind + '_plan', lang).lower()}", plan.steps, name,
-                              similar=placement_rows(graphical, plan.kind))
+                              similar=_placements(graphical, plan.kind))
+                noted = True
         readings = [doc.table_markup(heading, rows, "(left, left, right, left, right)") for heading, rows in _readings(doc, graphical, lang)]
         if len(readings) == 2:  # the readings of the two plans side by side, each as wide as it needs (its cells do not
             # break: a factor '× 0.025 ÷ 0.6765 (l_EB)' in a half column ran over its value), else one under the other
@@ -615,8 +624,20 @@ def _text_parts(scene, g, analytic, lang: str) -> dict:
 
 
 def _text_height(scene, g, parts: dict, lang: str, heading: str, paper: str) -> float:
-    """The height [mm] of the sheet's text column (measured by Typst before the page is laid out) at its set size."""
-    return _text_heights(scene, g, parts, lang, heading, paper, (1.0,))[0]
+    """The height [mm] of the sheet's text column (measured by Typst before the page is laid out): at its set size;
+    where that does not fit the page's text area, its comparison table in two halves, and then reduced
+    (:data:`TEXT_REDUCED`) as far as it takes to fit; over that at the least size (the sheet goes to a larger paper)."""
+    sizes = (1.0,) + TEXT_REDUCED
+    heights = _text_heights(scene, g, parts, lang, heading, paper, sizes)
+    room = sheet_page(paper).text_height
+    if heights[0] > room and _splits(parts):
+        heights = [min(a, b) for a, b in zip(heights, _text_heights(scene, g, parts, lang, heading, paper, sizes, split=True))]
+    return next((h for h in heights if h <= room), heights[-1])
+
+
+def _splits(parts: dict) -> bool:
+    """Whether the comparison table of the text column's *parts* is long enough to be set in two halves."""
+    return bool(parts.get("table")) and len(parts["table"]) > SPLIT_ROWS
 
 
 def _text_heights(scene, g, parts: dict, lang: str, heading: str, paper: str, scales, split: bool = False) -> list[float]:
@@ -637,11 +658,14 @@ def _text_layout(scene, g, parts: dict, lang: str, heading: str, paper: str, reg
     """(enlargement, split) of the text column: the largest enlargement that fits (:func:`_text_scale`), the comparison
     table whole where that is as large as in two halves."""
     page = sheet_page(paper)
-    whole = _text_scale(dict(zip(TEXT_SCALES, _text_heights(scene, g, parts, lang, heading, paper, TEXT_SCALES))), page, regions)
-    if not parts.get("table") or len(parts["table"]) <= SPLIT_ROWS or whole == TEXT_SCALES[0]:
-        return whole, False
-    halves = _text_scale(dict(zip(TEXT_SCALES, _text_heights(scene, g, parts, lang, heading, paper, TEXT_SCALES, split=True))), page, regions)
-    return (halves, True) if halves > whole else (whole, False)
+    scales = TEXT_SCALES + (1.0,) + TEXT_REDUCED
+    whole = _text_scale(dict(zip(scales, _text_heights(scene, g, parts, lang, heading, paper, scales))), page, regions)
+    if not _splits(parts) or whole == TEXT_SCALES[0]:
+        return max(whole, TEXT_REDUCED[-1]), False
+    halves = _text_scale(dict(zip(scales, _text_heights(scene, g, parts, lang, heading, paper, scales, split=True))), page, regions)
+    # (a column that fits only with its table halved is set so; one that fits at no size, at the least)
+    least = TEXT_REDUCED[-1]
+    return (max(halves, least), True) if halves > whole else (max(whole, least), False)
 
 
 def enlarged(markup: str, factor: float) -> str:
@@ -656,16 +680,21 @@ def enlarged(markup: str, factor: float) -> str:
 #: how much a sheet's text column may be enlarged (its tables, equations and readings set at 8–9.5 pt, at 1.25 at
 #: 10–12 pt), the largest first: the largest that still fits over the drawings placed under it and the title block
 TEXT_SCALES = (1.25, 1.2, 1.15, 1.1, 1.05)
+#: how far a text column too long for A3 at its set size is reduced before the sheet goes to a larger paper (the
+#: equations' 9.5 pt to 8.1 pt, the tables' 8 pt to 6.8 pt at 0.85: the linear-arm's sheets, whose equations place
+#: every image, at 12 positions)
+TEXT_REDUCED = (0.95, 0.9, 0.85)
 
 
 def _text_scale(heights, page: PageGeometry, regions: dict) -> float:
-    """The enlargement of the text column (one of :data:`TEXT_SCALES`, else 1) whose height (*heights*: scale ->
+    """The enlargement of the text column (the largest of *heights*' scales, else 1) whose height (*heights*: scale ->
     height [mm]) fits the room the drawings leave it: down to the first drawing placed under it (*regions*: kind ->
-    (x, y, w, h) [mm] in the text area), else to the title block; the drawings keep their regions and factors."""
+    (x, y, w, h) [mm] in the text area), else to the title block; the drawings keep their regions and factors.
+    0 when not even the least of them (with 1.0 among them) fits."""
     width, _ = _drawing_room(page)
     tops = [y for x, y, w, h in regions.values() if x >= width]
     limit = min(tops, default=page.text_height + GUTTER + 3.0) - GUTTER - 3.0
-    return next((f for f in TEXT_SCALES if heights[f] <= limit), 1.0)
+    return next((f for f in sorted(heights, reverse=True) if heights[f] <= limit), 0.0 if 1.0 in heights else 1.0)
 
 
 def _under(page: PageGeometry, text_height: float):
