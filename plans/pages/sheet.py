@@ -627,11 +627,14 @@ def _text_height(scene, g, parts: dict, lang: str, heading: str, paper: str) -> 
     """The height [mm] of the sheet's text column (measured by Typst before the page is laid out): at its set size;
     where that does not fit the page's text area, its comparison table in two halves, and then reduced
     (:data:`TEXT_REDUCED`) as far as it takes to fit; over that at the least size (the sheet goes to a larger paper)."""
-    sizes = (1.0,) + TEXT_REDUCED
-    heights = _text_heights(scene, g, parts, lang, heading, paper, sizes)
     room = sheet_page(paper).text_height
-    if heights[0] > room and _splits(parts):
-        heights = [min(a, b) for a, b in zip(heights, _text_heights(scene, g, parts, lang, heading, paper, sizes, split=True))]
+    heights = _text_heights(scene, g, parts, lang, heading, paper, (1.0,))
+    if heights[0] <= room:  # (the common case measured alone: a Typst pass lays out every size it is asked)
+        return heights[0]
+    heights += _text_heights(scene, g, parts, lang, heading, paper, TEXT_REDUCED)
+    if _splits(parts):
+        halves = _text_heights(scene, g, parts, lang, heading, paper, (1.0,) + TEXT_REDUCED, split=True)
+        heights = [min(a, b) for a, b in zip(heights, halves)]
     return next((h for h in heights if h <= room), heights[-1])
 
 
@@ -659,7 +662,10 @@ def _text_layout(scene, g, parts: dict, lang: str, heading: str, paper: str, reg
     table whole where that is as large as in two halves."""
     page = sheet_page(paper)
     scales = TEXT_SCALES + (1.0,) + TEXT_REDUCED
-    whole = _text_scale(dict(zip(scales, _text_heights(scene, g, parts, lang, heading, paper, scales))), page, regions)
+    largest = scales[:1]  # (the largest measured alone first: where it fits, the others need no pass)
+    whole = _text_scale(dict(zip(largest, _text_heights(scene, g, parts, lang, heading, paper, largest))), page, regions)
+    if whole != TEXT_SCALES[0]:
+        whole = _text_scale(dict(zip(scales, _text_heights(scene, g, parts, lang, heading, paper, scales))), page, regions)
     if not _splits(parts) or whole == TEXT_SCALES[0]:
         return max(whole, TEXT_REDUCED[-1]), False
     halves = _text_scale(dict(zip(scales, _text_heights(scene, g, parts, lang, heading, paper, scales, split=True))), page, regions)
