@@ -151,6 +151,11 @@ def fitted_line(content: str, size_pt: float, least_pt: float = 8.0) -> str:
 _SUBSCRIPTED = re.compile(r"\$[^$]*\$|(?<![\w\\])([A-Za-zα-ωΑ-Ω])_([A-Za-z0-9]+)(?!\w)")
 
 
+#: the equations' rows' padding above and below: 1.5 mm at the set size, in em so that it follows the text where a
+#: sheet's column is set smaller or larger (a double underline's second rule clears the row under it at any size)
+ROW_INSET_EM = 1.5 * 72 / 25.4 / TEXT_PT
+
+
 class Document:
     """Typst source built section by section: text, equations, tables and drawings (SVG inputs)."""
 
@@ -375,7 +380,7 @@ class Document:
         self.body.append(f"#block({'sticky: true' if flow else 'breakable: false'})[#heading(level: 2)[{self.words(heading)}]\n"
                          + (f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]" if note else "")
                          + ("]\n" if flow else "\n\n")
-                         + f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: {1.5 if flow else 1.2}mm), align: left + horizon,\n  "
+                         + f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: {ROW_INSET_EM:.4f}em), align: left + horizon,\n  "
                          + ",\n  ".join(rows) + ")]" + ("\n" if flow else "]\n"))
 
     def table_code(self, rows, aligns: str = "(left, right, right, right, right)") -> str:
