@@ -344,9 +344,9 @@ def proportion_text(graphical, kind: str, placement: Placement, numbers: bool = 
     def proportion(a: str, x: str, b: str, c: str, base: str) -> str:
         """ax / bc = AX / BC, ax = bc · AX / BC; *base* the plan's segment bc's letters."""
         text = f"{seg(a, x)} / {base} = {name(a)}{name(x)} / {name(b)}{name(c)}"
-        if numbers:
-            text += (f":  {seg(a, x)} = {on_plan(b, c):.1f} · {real(a, x):.1f} / {real(b, c):.1f} = "
-                     f"{on_plan(b, c) * real(a, x) / real(b, c):.1f} mm")
+        if numbers:  # (the result from the numbers as printed: a student's arithmetic gives the same last digit)
+            read, ax, bc = (round(v, 1) for v in (on_plan(b, c), real(a, x), real(b, c)))
+            text += f":  {seg(a, x)} = {read:.1f} · {ax:.1f} / {bc:.1f} = {read * ax / bc:.1f} mm" if bc else ""
         return text
 
     labels = (*placement.start, *placement.images)
