@@ -94,7 +94,7 @@ TERMS: dict[str, dict[str, str]] = {
     },
     "loop_equations": {
         "en": "Analytic check: complex-number method (loop equations)",
-        "sr": "Аналитичка провера: метода комплексног броја (једначине контура)",
+        "sr": "Аналитичка провера: метода комплексних бројева (једначине контура)",
         "ru": "Аналитическая проверка: метод комплексных чисел (уравнения контуров)",
         "bg": "Аналитична проверка: метод на комплексните числа (уравнения на контурите)",
         "sl": "Analitična kontrola: metoda kompleksnih števil (enačbe zank)",
@@ -1357,28 +1357,28 @@ TERMS.update({
     "kd_plans_signs": {
         "en": "{plan}: read on this plate's plans of that position (their k_v, k_a, to their drafting precision, as in their readings), "
               "the magnitude with the sign of the sense drawn; {v} and {a} signed: {sense}",
-        "sr": "{plan}: очитано на плановима тог положаја на овом листу (њихови k_v, k_a, на тачност цртања, као у очитавањима), "
+        "sr": "{plan}: очитано на плановима тог положаја у овом раду (њихови k_v, k_a, с тачношћу цртања, као у очитавањима), "
               "интензитет са знаком нацртаног смера; {v} и {a} са знаком: {sense}",
-        "ru": "{plan}: снято с планов этого положения на данном листе (их k_v, k_a, с точностью построения, как в отсчётах), "
+        "ru": "{plan}: снято с планов этого положения в данной работе (их k_v, k_a, с точностью построения, как в отсчётах), "
               "величина со знаком построенного направления; {v} и {a} со знаком: {sense}",
-        "bg": "{plan}: отчетено от плановете на това положение в този лист (техните k_v, k_a, с точността на чертане, както в отчитанията), "
+        "bg": "{plan}: отчетено от плановете на това положение в тази разработка (техните k_v, k_a, с точността на чертане, както в отчитанията), "
               "големината със знака на начертаната посока; {v} и {a} със знак: {sense}",
-        "sl": "{plan}: odčitano z načrtov te lege na tem listu (njihova k_v, k_a, z natančnostjo risanja, kot v odčitkih), "
+        "sl": "{plan}: odčitano z načrtov te lege v tem izdelku (njihova k_v, k_a, z natančnostjo risanja, kot v odčitkih), "
               "velikost s predznakom narisane smeri; {v} in {a} s predznakom: {sense}",
     },
     "kd_no_plan": {
         "en": "—: this plate draws no plan of that position (the diagrams have positions the plans do not)",
-        "sr": "—: на овом листу нема плана тог положаја (дијаграми имају положаје којих нема међу плановима)",
-        "ru": "—: на данном листе нет плана этого положения (в диаграммах есть положения, которых нет среди планов)",
-        "bg": "—: в този лист няма план на това положение (диаграмите имат положения, които ги няма сред плановете)",
-        "sl": "—: na tem listu ni načrta te lege (diagrami imajo lege, ki jih med načrti ni)",
+        "sr": "—: у овом раду нема плана тог положаја (дијаграми имају положаје којих нема међу плановима)",
+        "ru": "—: в данной работе нет плана этого положения (в диаграммах есть положения, которых нет среди планов)",
+        "bg": "—: в тази разработка няма план на това положение (диаграмите имат положения, които ги няма сред плановете)",
+        "sl": "—: v tem izdelku ni načrta te lege (diagrami imajo lege, ki jih med načrti ni)",
     },
     "kd_no_acceleration_plan": {
         "en": "{a} plan —: the acceleration plan of that position is not drawn on this plate (drawn for positions {positions})",
-        "sr": "{a} план —: план убрзања тог положаја није нацртан на овом листу (нацртан за положаје {positions})",
-        "ru": "{a} план —: план ускорений этого положения на данном листе не построен (построен для положений {positions})",
-        "bg": "{a} план —: планът на ускоренията на това положение не е начертан в този лист (начертан за положения {positions})",
-        "sl": "{a} načrt —: načrt pospeškov te lege na tem listu ni narisan (narisan za lege {positions})",
+        "sr": "{a} план —: план убрзања тог положаја није нацртан у овом раду (нацртан за положаје {positions})",
+        "ru": "{a} план —: план ускорений этого положения в данной работе не построен (построен для положений {positions})",
+        "bg": "{a} план —: планът на ускоренията на това положение не е начертан в тази разработка (начертан за положения {positions})",
+        "sl": "{a} načrt —: načrt pospeškov te lege v tem izdelku ni narisan (narisan za lege {positions})",
     },
     "kd_analytic_cut": {
         "en": "▲, ▼ on a frame's edge: the dashed analytic curve leaves the frame there and is cut (the frame is sized to the chords' construction)",

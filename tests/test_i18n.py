@@ -56,7 +56,7 @@ def test_the_textbook_terms(key, lang, words):
 
 
 def test_the_complex_number_method_is_named_in_the_loop_heading():
-    assert "метода комплексног броја" in term("loop_equations", "sr")
+    assert "метода комплексних бројева" in term("loop_equations", "sr")
     assert "метод комплексных чисел" in term("loop_equations", "ru")
     assert "metoda kompleksnih števil" in term("loop_equations", "sl")
 
