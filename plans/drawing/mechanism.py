@@ -1127,17 +1127,49 @@ class MechanismDrawing:
         for tip, text, gid in labels:
             self._label(tip, text, gid=gid, size=LABEL_PT, prefer=u * side, math_=True)
 
-    def _label(self, anchor, text, *, gid, size, prefer=None, math_=False, first=(), gaps=(0.6, 1.4, 2.4, 3.6, 5.5, 8.0)):
-        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_, leader_from=LEADER_FROM_MM)
+    def _label(self, anchor, text, *, gid, size, prefer=None, math_=False, first=(), gaps=(0.6, 1.4, 2.4, 3.6, 5.5, 8.0), leader_from=LEADER_FROM_MM):
+        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_, leader_from=leader_from)
 
     def point_labels(self) -> None:
+        self.numbered = set()
+        for body, centre in getattr(self, "block_centres", {}).items():
+            if any(way.contains(Point(centre.real, centre.imag)) for way in self.guideways):
+                self._number_in_guideway(body, centre)
+                self.numbered.add(body)
+        self._point_labels()
+
+    def _number_in_guideway(self, body: str, centre: complex) -> None:
+        """A block in a guideway: walled in by the guide lines and their hatching, its number goes on the block beside
+        its pin (outside, its leader would cross a guide's hatching), placed before the points' letters."""
+        r = math.hypot(*self.block) / 2
+        u = cmath.exp(1j * self.block_angle(body))
+        w = text_size(body, SMALL_PT + 1)[0]
+        beside = self.pin_r + 0.6 + w / 2
+        first = (centre + u * beside, centre - u * beside)
+        # (its own block is an outline for its number, no longer the area it covers)
+        k = self.block_marks[body]
+        whole = self.s.obstacles[k]
+        self.s.obstacles[k] = whole.exterior.buffer(0.3)
+        try:
+            self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, first=first, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
+        finally:
+            self.s.obstacles[k] = whole
+
+    def _point_labels(self) -> None:
         for name in mechanism_labels(self.sol):
             if self.names.get(name, name) is None:
                 continue  # (lettered by the caller)
             q = self.p(name)
             away = q - self.centroid
             r = self.pin_r + 0.5
-            self._label(q, self.names.get(name, name), gid=f"point-{name}", size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=(r, r + 0.8, r + 1.8, r + 3.0, r + 5.0))
+            # the pin of a block in a guideway (numbered on the block, :meth:`_number_in_guideway`) is lettered beside the
+            # block, in the guideway, without a leader: the block is the point to the eye (a leader would cross its number)
+            walled = any(abs(self.block_centres[b] - q) < 1e-6 for b in self.numbered)
+            gaps = (r, r + 0.8, r + 1.8, r + 3.0, r + 5.0)
+            if walled:
+                gaps += (self.block[0] / 2 + 1.5,)
+            self._label(q, self.names.get(name, name), gid=f"point-{name}", size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=gaps,
+                        leader_from=self.block[0] / 2 + LEADER_FROM_MM if walled else LEADER_FROM_MM)
 
     def link_labels(self) -> None:
         # every bar and block centre once, as geometry: each bar's label keeps away from all but its own
@@ -1161,6 +1193,8 @@ class MechanismDrawing:
                     spots = [spots[k] for k in order]
                 self._label(mid, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=n, first=tuple(spots[:4]), gaps=(1.2, 2.5, 4.0, 7.0))
             elif body in self.block_centres:
+                if body in self.numbered:
+                    continue
                 centre = self.block_centres[body]
                 r = math.hypot(*self.block) / 2
                 # beside its own block: away from another block on the same pin
@@ -1178,22 +1212,6 @@ class MechanismDrawing:
                     u = cmath.exp(1j * self.block_angle(body))
                     across = self.block[1] / 2 + 0.5 + 3.8
                     self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=u * 1j, gaps=(across, across + 2.0, across + 4.0))
-                    continue
-                if any(way.contains(Point(centre.real, centre.imag)) for way in self.guideways):
-                    # a block in a guideway: walled in by the guide lines and their hatching, its number goes on the
-                    # block beside its pin where it fits (outside, its leader would cross a guide's hatching)
-                    u = cmath.exp(1j * self.block_angle(body))
-                    w = text_size(body, SMALL_PT + 1)[0]
-                    beside = self.pin_r + 0.6 + w / 2
-                    first = (centre + u * beside, centre - u * beside) + first
-                    # (its own block is an outline for its number, no longer the area it covers)
-                    k = self.block_marks[body]
-                    whole = self.s.obstacles[k]
-                    self.s.obstacles[k] = whole.exterior.buffer(0.3)
-                    try:
-                        self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=prefer, first=first, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
-                    finally:
-                        self.s.obstacles[k] = whole
                     continue
                 self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=prefer, first=first, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
 
