@@ -169,6 +169,7 @@ def place_label(
     rival_segments: tuple[tuple[complex, complex], ...] = (),
     by_box: bool = False,
     leader_ok: bool = False,
+    clear_leaders: bool = False,
 ) -> list:
     """Place one label (several names written ``"p, o, d"``) near *anchor*.
 
@@ -209,6 +210,15 @@ def place_label(
         A place far enough off to get a leader line (*leader_from*) is never
         astray: the leader joins the label to its point (a long label of
         coincident images kept off a neighbour's label).
+    clear_leaders : bool
+        A leader line is scored as the box is: one that would cross a mark
+        drawn so far (a hatching stroke, a link, a slot's edge, another label
+        or leader; not the point's own pin, links or block) costs
+        :data:`LEADER_CROSSING_MM` of distance and :data:`LEADER_MORE_MM` more
+        for each further mark, among the clear places near the point (the
+        rings of *gaps*), so the label goes where its leader is clear (the
+        mechanism's labels).  Off, leaders are not looked at (the plans'
+        labels, placed as they were).
 
     Returns
     -------
@@ -235,6 +245,7 @@ def place_label(
     # (up to FARTHEST_MM) and the label gets a leader line.
     rings = ([[(c, 0.0, 0.0) for c in first]] if first else []) + [ring_at(g) for g in gaps]
     extra = gaps[-1] if gaps else 1.0
+    nearest_only = extra  # the rings asked for (further rings: every place nearer is covered)
     best = None  # (score, centre, gap, clearance (0 when astray), clearance)
     bounds = sketch.bounds
     free = None  # the nearest place, within the drawing as drawn so far (its scale kept), clear of every mark, its own point's or joined to it by a leader: (cost, centre, gap)
@@ -283,7 +294,7 @@ def place_label(
                                       and bounds.ymin - 1.0 <= center.imag - h / 2 and center.imag + h / 2 <= bounds.ymax + 1.0)
             if c >= CLEAR_MM / 2 and inside and gap <= FREE_GAP_MM and (led or not astray) and (free is None or gap + 0.15 * turn < free[0]):
                 # (a free place gets a leader: one across a mark costs)
-                cost = gap + 0.15 * turn + _leader_cost(_leader_crossings(sketch, anchor, center, w, h))
+                cost = gap + 0.15 * turn + (_leader_cost(_leader_crossings(sketch, anchor, center, w, h)) if clear_leaders else 0.0)
                 if free is None or cost < free[0]:
                     free = (cost, center, gap)
             if astray and leader_ok and led:
@@ -292,7 +303,10 @@ def place_label(
             order += 1
             if best is not None and score <= best[0]:
                 continue  # (a leader's cost only lowers a score: measured only where it could still win)
-            crossed = _leader_crossings(sketch, anchor, center, w, h) if led else 0
+            # a leader across a mark costs where the label has a choice: a clear box near its point (the rings asked
+            # for); further out (every near place covered) any leader is better than a name on a mark
+            crossed = (_leader_crossings(sketch, anchor, center, w, h) if clear_leaders and led and c > 0.0 and not astray and gap <= nearest_only
+                       else 0)
             score -= _leader_cost(crossed)
             if best is None or score > best[0]:
                 best = (score, center, gap, 0.0 if astray else c, c)  # astray: as bad as an overlap, look further out

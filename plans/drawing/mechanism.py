@@ -1128,7 +1128,8 @@ class MechanismDrawing:
             self._label(tip, text, gid=gid, size=LABEL_PT, prefer=u * side, math_=True)
 
     def _label(self, anchor, text, *, gid, size, prefer=None, math_=False, first=(), gaps=(0.6, 1.4, 2.4, 3.6, 5.5, 8.0), leader_from=LEADER_FROM_MM):
-        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_, leader_from=leader_from)
+        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_, leader_from=leader_from,
+                           clear_leaders=True)
 
     def point_labels(self) -> None:
         self.numbered = set()
