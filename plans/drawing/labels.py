@@ -8,7 +8,9 @@ as shapely geometries) against its distance from the anchor: up to
 ``CLEAR_MM`` of clearance is worth four times its length in distance, an
 overlap costs as much as ``OVERLAP_MM`` of distance, and the preferred direction breaks
 ties.  A label therefore moves off to get clear, with a leader line when it
-goes further than a glance would join it to its point.  The best box becomes
+goes further than a glance would join it to its point.  Asked to (``clear_leaders``, the mechanism's labels), the
+leader is scored too: one that would cross a mark (a hatching stroke, a link, a slot's edge, another label) costs
+distance, so the label goes where its leader is clear.  The best box becomes
 an obstacle for the labels placed after it, so labels never sit on each other
 when there is room for them.  The scoring is a pure function of the
 geometry, so placement is deterministic.
