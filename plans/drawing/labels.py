@@ -8,7 +8,9 @@ as shapely geometries) against its distance from the anchor: up to
 ``CLEAR_MM`` of clearance is worth four times its length in distance, an
 overlap costs as much as ``OVERLAP_MM`` of distance, and the preferred direction breaks
 ties.  A label therefore moves off to get clear, with a leader line when it
-goes further than a glance would join it to its point.  The best box becomes
+goes further than a glance would join it to its point.  Asked to (``clear_leaders``, the mechanism's labels), the
+leader is scored too: one that would cross a mark (a hatching stroke, a link, a slot's edge, another label) costs
+distance, so the label goes where its leader is clear.  The best box becomes
 an obstacle for the labels placed after it, so labels never sit on each other
 when there is room for them.  The scoring is a pure function of the
 geometry, so placement is deterministic.
@@ -66,9 +68,10 @@ LEADER_GAP_MM = 0.6
 LEADER_INSET = 0.3
 
 
-def _leader(sketch: Sketch, anchor: complex, center: complex, w: float, h: float) -> None:
-    """A thin line from just off *anchor* towards the nearest side of the label's box (away from its corners), stopping
-    :data:`LEADER_GAP_MM` short of it."""
+def _leader_segment(anchor: complex, center: complex, w: float, h: float) -> tuple[complex, complex] | None:
+    """The leader line [mm] that joins *anchor* to a label box *w* × *h* centred at *center*: from just off *anchor*
+    towards the nearest side of the box (away from its corners), stopping :data:`LEADER_GAP_MM` short of it; None
+    where it would be too short to draw."""
     from shapely.geometry import MultiLineString
     from shapely.ops import nearest_points
 
@@ -82,15 +85,70 @@ def _leader(sketch: Sketch, anchor: complex, center: complex, w: float, h: float
     grown = box(x0, y0, x1, y1).buffer(LEADER_GAP_MM)
     hit = grown.exterior.intersection(LineString([(anchor.real, anchor.imag), (end.real, end.imag)]))
     if hit.is_empty:
-        return
+        return None
     pts = [complex(g.x, g.y) for g in getattr(hit, "geoms", [hit]) if g.geom_type == "Point"]
     if not pts:
-        return
+        return None
     stop = min(pts, key=lambda z: abs(z - anchor))
     if abs(stop - anchor) < 1.2:
+        return None
+    return anchor + u * 0.5, stop
+
+
+def _leader(sketch: Sketch, anchor: complex, center: complex, w: float, h: float) -> None:
+    """A thin line from just off *anchor* towards the nearest side of the label's box (:func:`_leader_segment`)."""
+    segment = _leader_segment(anchor, center, w, h)
+    if segment is None:
         return
     color, lw = LEADER_STYLE
-    sketch.line([anchor + u * 0.5, stop], color=color, lw=lw, gid="leader", zorder=5.0, obstacle=True, bound=False)
+    sketch.line(list(segment), color=color, lw=lw, gid="leader", zorder=5.0, obstacle=True, bound=False)
+
+
+#: Marks within this distance [mm] of a label's point are its own (its pin, the links meeting there): a leader leaves
+#: them without crossing anything.
+LEADER_OWN_MM = 0.3
+
+
+def _leader_crossings(sketch: Sketch, anchor: complex, center: complex, w: float, h: float) -> int:
+    """How many marks drawn so far (:attr:`Sketch.obstacles`: a hatching stroke, a link, a slot's edge, another label
+    or leader) the leader joining *anchor* to a label box *w* × *h* [mm] centred at *center* would cross.
+
+    The point's own marks do not count: what passes within :data:`LEADER_OWN_MM` of *anchor* (its pin, the links
+    meeting there) and a closed outline around it (the block it sits in, the slot that block slides in), which any
+    leader from the point has to leave.  0 when no leader would be drawn (:func:`_leader_segment`).
+    """
+    segment = _leader_segment(anchor, center, w, h)
+    if segment is None:
+        return 0
+    a, b = segment
+    near = sketch.obstacles.near(min(a.real, b.real), min(a.imag, b.imag), max(a.real, b.real), max(a.imag, b.imag))
+    if not near:
+        return 0
+    shapes = np.array(near, dtype=object)
+    shapes = shapes[shapely.intersects(shapes, LineString([(a.real, a.imag), (b.real, b.imag)]))]
+    if not len(shapes):
+        return 0
+    point = Point(anchor.real, anchor.imag)
+    own = shapely.dwithin(shapes, point, LEADER_OWN_MM)
+    rings = shapely.get_exterior_ring(shapes)  # None for a line (a hatching stroke)
+    closed = np.array([r is not None and not r.is_empty for r in rings], dtype=bool)
+    if closed.any():
+        around = np.zeros(len(shapes), dtype=bool)
+        around[closed] = shapely.contains(shapely.polygons(rings[closed]), point)
+        own |= around
+    return int((~own).sum())
+
+
+#: A leader crossing a mark costs as much as this much distance [mm] (less than a box over a mark, :data:`OVERLAP_MM`:
+#: a thin line across a stroke reads, a name on it does not)...
+LEADER_CROSSING_MM = 6.0
+#: ...and each further mark crossed this much more (a leader across a hatching crosses several strokes), up to five.
+LEADER_MORE_MM = 1.5
+
+
+def _leader_cost(crossings: int) -> float:
+    """What a leader crossing *crossings* marks costs, in distance [mm] (:data:`LEADER_CROSSING_MM`, :data:`LEADER_MORE_MM`)."""
+    return 0.0 if crossings <= 0 else LEADER_CROSSING_MM + LEADER_MORE_MM * (min(crossings, 5) - 1)
 
 
 def place_label(
@@ -113,6 +171,7 @@ def place_label(
     rival_segments: tuple[tuple[complex, complex], ...] = (),
     by_box: bool = False,
     leader_ok: bool = False,
+    clear_leaders: bool = False,
 ) -> list:
     """Place one label (several names written ``"p, o, d"``) near *anchor*.
 
@@ -153,6 +212,15 @@ def place_label(
         A place far enough off to get a leader line (*leader_from*) is never
         astray: the leader joins the label to its point (a long label of
         coincident images kept off a neighbour's label).
+    clear_leaders : bool
+        A leader line is scored as the box is: one that would cross a mark
+        drawn so far (a hatching stroke, a link, a slot's edge, another label
+        or leader; not the point's own pin, links or block) costs
+        :data:`LEADER_CROSSING_MM` of distance and :data:`LEADER_MORE_MM` more
+        for each further mark, among the clear places near the point (the
+        rings of *gaps*), so the label goes where its leader is clear (the
+        mechanism's labels).  Off, leaders are not looked at (the plans'
+        labels, placed as they were).
 
     Returns
     -------
@@ -179,6 +247,7 @@ def place_label(
     # (up to FARTHEST_MM) and the label gets a leader line.
     rings = ([[(c, 0.0, 0.0) for c in first]] if first else []) + [ring_at(g) for g in gaps]
     extra = gaps[-1] if gaps else 1.0
+    nearest_only = extra  # the rings asked for (further rings: every place nearer is covered)
     best = None  # (score, centre, gap, clearance (0 when astray), clearance)
     bounds = sketch.bounds
     free = None  # the nearest place, within the drawing as drawn so far (its scale kept), clear of every mark, its own point's or joined to it by a leader: (cost, centre, gap)
@@ -226,11 +295,21 @@ def place_label(
             inside = bounds.empty or (bounds.xmin - 1.0 <= center.real - w / 2 and center.real + w / 2 <= bounds.xmax + 1.0
                                       and bounds.ymin - 1.0 <= center.imag - h / 2 and center.imag + h / 2 <= bounds.ymax + 1.0)
             if c >= CLEAR_MM / 2 and inside and gap <= FREE_GAP_MM and (led or not astray) and (free is None or gap + 0.15 * turn < free[0]):
-                free = (gap + 0.15 * turn, center, gap)
+                # (a free place gets a leader: one across a mark costs)
+                cost = gap + 0.15 * turn + (_leader_cost(_leader_crossings(sketch, anchor, center, w, h)) if clear_leaders else 0.0)
+                if free is None or cost < free[0]:
+                    free = (cost, center, gap)
             if astray and leader_ok and led:
                 astray = False
             score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - (OVERLAP_MM if astray else 0.0) - gap - 0.15 * turn - 1e-6 * order
             order += 1
+            if best is not None and score <= best[0]:
+                continue  # (a leader's cost only lowers a score: measured only where it could still win)
+            # a leader across a mark costs where the label has a choice: a clear box near its point (the rings asked
+            # for); further out (every near place covered) any leader is better than a name on a mark
+            crossed = (_leader_crossings(sketch, anchor, center, w, h) if clear_leaders and led and c > 0.0 and not astray and gap <= nearest_only
+                       else 0)
+            score -= _leader_cost(crossed)
             if best is None or score > best[0]:
                 best = (score, center, gap, 0.0 if astray else c, c)  # astray: as bad as an overlap, look further out
         if not rings and (best[3] <= 0.0 or (best[4] <= 0.0 and free is None)) and extra * 1.4 <= FARTHEST_MM:

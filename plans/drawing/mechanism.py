@@ -33,7 +33,7 @@ from shapely.geometry import LineString, MultiPoint, Point
 from shapely.geometry import Polygon as ShapelyPolygon
 
 from .._text import SUBSCRIPT, math_name
-from ._canvas import Sketch, fmt_number, sketch_on, unit
+from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .numerals import scale_caption
 from .labels import place_label
 from ..i18n import term
@@ -278,10 +278,14 @@ class MechanismDrawing:
 
     def draw(self) -> None:
         self.frame_guides()
+        start = len(self.s.obstacles)
         self.moving_lines()
         self.links()
-        self.ground_pivots()
+        self.link_marks = list(self.s.obstacles[start:])  # the links as drawn (slots, bars, plates, then blocks): what
+        self.ground_pivots()                               # the driver's arcs never cross
+        start = len(self.s.obstacles)
         self.blocks()
+        self.link_marks += list(self.s.obstacles[start:])
         self.pins()
         self.driver_arrows()
         self.point_labels()
@@ -910,6 +914,7 @@ class MechanismDrawing:
         its own guide, its end on the pin.
         """
         self.block_centres: dict[str, complex] = {}
+        self.block_marks: dict[str, int] = {}  # body -> the index of its block among the sketch's obstacles
         L = self.block[0] / 2
         order = sorted(
             (b for b in self.moving if self.is_block(b)),
@@ -947,6 +952,7 @@ class MechanismDrawing:
             rect = self._rect(centre, u)
             corners = [complex(x, y) for x, y in list(rect.exterior.coords)[:-1]]
             self.s.polygon(corners, fc="white", lw=1.1, gid=f"block-{body}", zorder=3.0)
+            self.block_marks[body] = len(self.s.obstacles) - 1  # (its number may go on it: :meth:`link_labels`)
             placed.append(rect)
             self.block_centres[body] = centre
             pins[body] = pin
@@ -1021,44 +1027,73 @@ class MechanismDrawing:
         else:
             self._linear_arrows(driver)
 
-    def _free_arc_start(self, centre: complex, radius: float, sweep: float) -> float:
-        # what passes through the pivot (its pin, the crank, the ground symbol) counts only away from it
-        hole = Point(centre.real, centre.imag).buffer(radius * 0.6)
-        # a clearance counts up to 3 mm: what lies further than that from the arcs' circle cannot
-        # change a score, and of the rest only the pairs within 3 mm are measured (same scores)
-        reach = radius + 3.0
-        nearby = [o for o in self.s.obstacles if _box_within(o.bounds, centre, reach)]
-        obstacles = [o.difference(hole) for o in nearby]
-        arr = np.array([o for o in obstacles if not o.is_empty], dtype=object)
-        starts = [2 * math.pi * k / 36 for k in range(36)]
-        arcs = np.array([LineString([(q.real, q.imag) for q in (centre + radius * cmath.exp(1j * (start + sweep * j / 12)) for j in range(13))]) for start in starts], dtype=object)
+    #: the arc's radius tried at these multiples of its own, and its sweep at these fractions of its own, in turn
+    ARC_RADII = (1.0, 0.85, 1.2, 0.7, 1.4)
+    ARC_SWEEPS = (1.0, 0.8, 0.65)
+
+    def _free_arc(self, centre: complex, radius: float, sweep: float, largest: float = math.inf) -> tuple[float, float, float]:
+        """Where a driver's arc arrow about *centre* goes: ``(start, radius, sweep)`` [rad, mm, rad].
+
+        Tried at 36 starts, at the radii :data:`ARC_RADII` × *radius* and the sweeps :data:`ARC_SWEEPS` × *sweep*
+        (never within the pin, nor larger than *largest* [mm], the crank's reach): an arc that crosses no link (:attr:`link_marks`: a bar, a slot, a block, the crank
+        itself outside its direction) first, then one that crosses nothing else drawn (a support's hatching), then
+        the one furthest from everything drawn (up to 3 mm), the arc's own radius and sweep preferred (a smaller one
+        costs as much as 3 mm of clearance per unit of its log-ratio, a shorter sweep 3 mm per unit of its
+        fraction left out).  The first of equals in that order wins (deterministic)."""
+        reach = radius * max(self.ARC_RADII) + 3.0
+        # what passes through the pivot (its pin, the ground symbol) counts only away from it; a link counts wherever
+        # the arc meets it (the crank, where the arc passes over its direction)
+        hole = Point(centre.real, centre.imag).buffer(radius * min(self.ARC_RADII) * 0.6)
+        near = [o for o in self.s.obstacles if _box_within(o.bounds, centre, reach)]
+        links = np.array([o for o in getattr(self, "link_marks", []) if _box_within(o.bounds, centre, reach)], dtype=object)
+        others = np.array([g for g in (o.difference(hole) for o in near) if not g.is_empty], dtype=object)
+        least = self.pin_r + 1.0
+        options = []  # (start, radius, sweep, cost of leaving the arc's own size)
+        for rf in self.ARC_RADII:
+            r = radius * rf
+            if rf != 1.0 and not (least <= r <= largest):
+                continue
+            for sf in self.ARC_SWEEPS:
+                for k in range(36):
+                    options.append((2 * math.pi * k / 36, r, sweep * sf, 3.0 * abs(math.log(rf)) + 3.0 * (1.0 - sf)))
+        steps = np.arange(13) / 12
+        coords = np.array([[(centre + r * cmath.exp(1j * (start + sw * t))) for t in steps] for start, r, sw, _ in options])
+        arcs = shapely.linestrings(np.stack([coords.real, coords.imag], axis=-1))
+
+        def pairs(shapes, within):
+            if not len(shapes):
+                return np.array([], dtype=int), np.array([], dtype=int)
+            i, j = np.divmod(np.arange(len(arcs) * len(shapes)), len(shapes))
+            keep = shapely.dwithin(shapes[j], arcs[i], within)
+            return i[keep], j[keep]
+
+        crossed_link = np.zeros(len(arcs), dtype=bool)
+        i, j = pairs(links, 0.0)
+        crossed_link[i] = True
         clear = np.full(len(arcs), 3.0)
-        if len(arr):
-            i, j = np.divmod(np.arange(len(arcs) * len(arr)), len(arr))
-            within = shapely.dwithin(arr[j], arcs[i], 3.0)  # (this order is the faster)
-            i, j = i[within], j[within]
-            if len(i):
-                np.minimum.at(clear, i, shapely.distance(arcs[i], arr[j]))
+        i, j = pairs(others, 3.0)
+        if len(i):
+            np.minimum.at(clear, i, shapely.distance(arcs[i], others[j]))
         best = None
-        for start, d in zip(starts, clear):
-            score = min(float(d), 3.0)
+        for k, (start, r, sw, cost) in enumerate(options):
+            score = (-100.0 if crossed_link[k] else 0.0) + (-10.0 if clear[k] <= 0.0 else 0.0) + min(float(clear[k]), 3.0) - cost
             if best is None or score > best[0] + 1e-9:
-                best = (score, start)
-        return best[1]
+                best = (score, start, r, sw)
+        return best[1], best[2], best[3]
 
     def _crank_arrows(self, driver) -> None:
         centre = self.p(driver.pivot)
         # the arcs stay within the crank they turn (a 10 mm crank gets a small ω)
         crank = max((abs(q - centre) for q in self.body_points(driver.link)), default=0.0)
         fit = 1.0 if crank <= 0 else min(1.0, max(0.35, 0.75 * crank / self.epsilon_r if driver.epsilon else 0.7 * crank / self.omega_r))
-        for symbol, value, radius, dashes, gid in (
-            ("ω", driver.omega, self.omega_r * fit, None, "omega"),
-            ("ε", driver.epsilon, self.epsilon_r * fit, (3.0, 1.5), "epsilon"),
+        for symbol, value, radius, largest, dashes, gid in (
+            ("ω", driver.omega, self.omega_r * fit, 0.7 * crank, None, "omega"),
+            ("ε", driver.epsilon, self.epsilon_r * fit, 0.75 * crank, (3.0, 1.5), "epsilon"),
         ):
             if not value:
                 continue
             sweep = math.radians(120) * (1 if value > 0 else -1)
-            start = self._free_arc_start(centre, radius, sweep)
+            start, radius, sweep = self._free_arc(centre, radius, sweep, largest=max(radius, largest))
             self.s.arc_arrow(centre, radius, start, sweep, lw=0.9, dashes=dashes, gid=gid)
             text, math_ = _sub(symbol, driver.link)
             mid = centre + radius * cmath.exp(1j * (start + sweep / 2))
@@ -1092,17 +1127,50 @@ class MechanismDrawing:
         for tip, text, gid in labels:
             self._label(tip, text, gid=gid, size=LABEL_PT, prefer=u * side, math_=True)
 
-    def _label(self, anchor, text, *, gid, size, prefer=None, math_=False, first=(), gaps=(0.6, 1.4, 2.4, 3.6, 5.5, 8.0)):
-        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_, leader_from=LEADER_FROM_MM)
+    def _label(self, anchor, text, *, gid, size, prefer=None, math_=False, first=(), gaps=(0.6, 1.4, 2.4, 3.6, 5.5, 8.0), leader_from=LEADER_FROM_MM):
+        return place_label(self.s, anchor, [(text, gid)], size=size, prefer=prefer, first=first, gaps=gaps, mathtext=math_, leader_from=leader_from,
+                           clear_leaders=True)
 
     def point_labels(self) -> None:
+        self.numbered = set()
+        for body, centre in getattr(self, "block_centres", {}).items():
+            if any(way.contains(Point(centre.real, centre.imag)) for way in self.guideways):
+                self._number_in_guideway(body, centre)
+                self.numbered.add(body)
+        self._point_labels()
+
+    def _number_in_guideway(self, body: str, centre: complex) -> None:
+        """A block in a guideway: walled in by the guide lines and their hatching, its number goes on the block beside
+        its pin (outside, its leader would cross a guide's hatching), placed before the points' letters."""
+        r = math.hypot(*self.block) / 2
+        u = cmath.exp(1j * self.block_angle(body))
+        w = text_size(body, SMALL_PT + 1)[0]
+        beside = self.pin_r + 0.6 + w / 2
+        first = (centre + u * beside, centre - u * beside)
+        # (its own block is an outline for its number, no longer the area it covers)
+        k = self.block_marks[body]
+        whole = self.s.obstacles[k]
+        self.s.obstacles[k] = whole.exterior.buffer(0.3)
+        try:
+            self._label(centre, body, gid=f"number-{body}", size=SMALL_PT + 1, first=first, gaps=(r * 0.55, r * 0.8, r + 1.5, r + 4.0))
+        finally:
+            self.s.obstacles[k] = whole
+
+    def _point_labels(self) -> None:
         for name in mechanism_labels(self.sol):
             if self.names.get(name, name) is None:
                 continue  # (lettered by the caller)
             q = self.p(name)
             away = q - self.centroid
             r = self.pin_r + 0.5
-            self._label(q, self.names.get(name, name), gid=f"point-{name}", size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=(r, r + 0.8, r + 1.8, r + 3.0, r + 5.0))
+            # the pin of a block in a guideway (numbered on the block, :meth:`_number_in_guideway`) is lettered beside the
+            # block, in the guideway, without a leader: the block is the point to the eye (a leader would cross its number)
+            walled = any(abs(self.block_centres[b] - q) < 1e-6 for b in self.numbered)
+            gaps = (r, r + 0.8, r + 1.8, r + 3.0, r + 5.0)
+            if walled:
+                gaps += (self.block[0] / 2 + 1.5,)
+            self._label(q, self.names.get(name, name), gid=f"point-{name}", size=LABEL_PT, prefer=away if abs(away) > 1e-9 else None, gaps=gaps,
+                        leader_from=self.block[0] / 2 + LEADER_FROM_MM if walled else LEADER_FROM_MM)
 
     def link_labels(self) -> None:
         # every bar and block centre once, as geometry: each bar's label keeps away from all but its own
@@ -1126,6 +1194,8 @@ class MechanismDrawing:
                     spots = [spots[k] for k in order]
                 self._label(mid, body, gid=f"number-{body}", size=SMALL_PT + 1, prefer=n, first=tuple(spots[:4]), gaps=(1.2, 2.5, 4.0, 7.0))
             elif body in self.block_centres:
+                if body in self.numbered:
+                    continue
                 centre = self.block_centres[body]
                 r = math.hypot(*self.block) / 2
                 # beside its own block: away from another block on the same pin
