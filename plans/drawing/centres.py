@@ -553,6 +553,9 @@ class _CentresDrawing:
             self.s.arrow(e.tail, e.tip, color=CENTRE_COLOUR, lw=1.0, head=2.4, gid=f"edge-{e.label}")
             self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}")
         self.words += _edge_shapes(self.frame)  # no label over an edge arrow or its label
+        # and a centre's label keeps LABEL_SPACING_MM from an edge arrow's label, as from another centre's (the
+        # quick-return's "P₃₆" dot label 1 mm under "P₃₅ 360 mm")
+        self.placed += [_box_at(e.at, *text_size(e.text, LABEL_PT)) for e in self.frame.edges]
         # every mark first (each an obstacle), then the labels: a label keeps off every mark, not only those before it
         near = [c for c in self.r.centres if c.determined and c.label in self.frame.near]
         self.marks += [self.mm(z) for z in self.r.positions.values()]
