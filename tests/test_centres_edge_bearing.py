@@ -20,12 +20,13 @@ import pytest
 from shapely.geometry import LineString, Point
 
 import plans
-from plans.analytic import solve
 from plans.centres import instant_centres
 from plans.drawing.centres import centres_svg
 from plans.handout import handout
 from plans.positions import cycle_positions
 from plans.scene import example_path, load
+
+from analytic_centres import true_centres
 
 MM = 72 / 25.4  # SVG units (pt) per mm
 EXAMPLES = ["four-bar", "six-bar", "slider-crank", "quick-return", "linear-arm", "scotch-yoke", "wedge", "ladder", "rocker-limit"]
@@ -36,36 +37,6 @@ def _paths(svg: str, prefix: str) -> dict[str, list[complex]]:
     out = {}
     for gid, d in re.findall(r'<g id="%s([^"]+)">\s*<path d="([^"]+)"' % re.escape(prefix), svg):
         out[gid] = [complex(float(x), float(y)) for x, y in re.findall(r"([-0-9.e]+) ([-0-9.e]+)", d)]
-    return out
-
-
-def _true_centres(scene) -> dict[str, tuple[complex | None, complex | None]]:
-    """'P13' -> (point [m] or None, direction at infinity or None), from the analytic solution's velocities."""
-    a = solve(scene)
-    numbers = instant_centres(scene).numbers  # body -> its number in the labels
-    field = {}  # body -> (ω, v at the scene's origin [m/s] of the body's velocity field)
-    for body in scene.bodies:
-        if body == "frame":
-            field[body] = (0.0, 0j)
-            continue
-        omega = float(np.ravel(a.links[body].omega)[0])
-        _, origin = a.poses[body]
-        v_origin = complex(np.ravel(a.motion_of(body, 0j).v)[0])
-        o = complex(np.ravel(origin)[0])
-        field[body] = (omega, v_origin - 1j * omega * o)  # v(r) = c + iω r
-    size = max(abs(complex(np.ravel(p.r)[0])) for p in a.points.values()) or 1.0
-    out = {}
-    bodies = list(scene.bodies)
-    for n, i in enumerate(bodies):
-        for j in bodies[n + 1:]:
-            (wi, ci), (wj, cj) = field[i], field[j]
-            label = "P" + "".join(sorted((numbers[i], numbers[j]), key=int))
-            if abs(wi - wj) * size <= 1e-12 and abs(ci - cj) <= 1e-12:
-                out[label] = (None, None)  # the two move alike (at rest): no centre to point at
-            elif abs(wi - wj) * size <= 1e-9 * abs(ci - cj):  # the same ω: the relative motion a translation
-                out[label] = (None, 1j * (ci - cj) / abs(ci - cj))
-            else:
-                out[label] = ((cj - ci) / (1j * (wi - wj)), None)
     return out
 
 
@@ -123,7 +94,7 @@ def reviewed():
         doc = handout(scene, positions=n, centres=True, lang=lang)
         for k, position in enumerate(cycle_positions(scene, n)):
             svg = doc.images[f"centres-{k}"].decode()
-            out.append((f"{name} {lang} position {k}", svg, _true_centres(scene.at(position))))
+            out.append((f"{name} {lang} position {k}", svg, true_centres(scene.at(position))))
     return out
 
 
@@ -135,7 +106,7 @@ def test_every_edge_arrow_of_the_reviewed_handouts_points_at_its_centre(reviewed
 def test_every_edge_arrow_of_plans_centres_points_at_its_centre(name):
     scene = load(example_path(name))
     svg = centres_svg(instant_centres(scene)).decode()
-    _check_arrows(svg, _true_centres(scene), name)
+    _check_arrows(svg, true_centres(scene), name)
 
 
 def test_a_far_centre_arrow_continues_one_of_its_kennedy_lines(reviewed):
