@@ -585,11 +585,11 @@ TERMS: dict[str, dict[str, str]] = {
     },
     # the sign of ω found through a link that translates (its v a magnitude), on the centres' method page
     "centres_sign_rule_translating": {
-        "en": "through a link that translates, {omega} = ±{v} / {segment} with {v} its magnitude: + when {v}, at {p}, turns anticlockwise about {p1}, − (in the tables) when clockwise",
-        "sr": "преко члана који се креће транслаторно, {omega} = ±{v} / {segment}, где је {v} интензитет: + када {v} у {p} обрће око {p1} супротно од казаљке на сату, − (у табелама) када у смеру казаљке",
-        "ru": "через звено, движущееся поступательно, {omega} = ±{v} / {segment}, где {v} — модуль: +, если {v} в {p} поворачивает вокруг {p1} против часовой стрелки, − (в таблицах), если по часовой",
-        "bg": "чрез звено, което се движи постъпателно, {omega} = ±{v} / {segment}, където {v} е големината: +, когато {v} в {p} върти около {p1} обратно на часовниковата стрелка, − (в таблиците), когато по нея",
-        "sl": "prek člena, ki se giblje translatorno, {omega} = ±{v} / {segment}, kjer je {v} velikost: +, kadar {v} v {p} vrti okoli {p1} v nasprotni smeri urinega kazalca, − (v tabelah), kadar v smeri urinega kazalca",
+        "en": "through a link that translates, {formula} with {v} its magnitude: + when {v}, at {p}, turns anticlockwise about {p1}, − (in the tables) when clockwise",
+        "sr": "преко члана који се креће транслаторно, {formula}, где је {v} интензитет: + када {v} у {p} обрће око {p1} супротно од казаљке на сату, − (у табелама) када у смеру казаљке",
+        "ru": "через звено, движущееся поступательно, {formula}, где {v} — модуль: +, если {v} в {p} поворачивает вокруг {p1} против часовой стрелки, − (в таблицах), если по часовой",
+        "bg": "чрез звено, което се движи постъпателно, {formula}, където {v} е големината: +, когато {v} в {p} върти около {p1} обратно на часовниковата стрелка, − (в таблиците), когато по нея",
+        "sl": "prek člena, ki se giblje translatorno, {formula}, kjer je {v} velikost: +, kadar {v} v {p} vrti okoli {p1} v nasprotni smeri urinega kazalca, − (v tabelah), kadar v smeri urinega kazalca",
     },
     "centres_translation_rule": {
         "en": "A link that translates ({p1j} at infinity, {omega_j} = 0) moves as its centre with a link {k}; through it the next link {l} turns",

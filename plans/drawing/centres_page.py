@@ -188,10 +188,11 @@ def centres_rules(lang: str, frame: str, driver=None, numbers=None, translating:
     # link's velocity, at the common centre, turns about the next link's centre (as the tables print it)
     if translating:
         sign += "; " + term("centres_sign_rule_translating", lang).format(
-            omega="$\\omega_l$", v="$v_j$", segment=f"$P_{{{frame}l}}P_{{jl}}$", p="$P_{jl}$", p1=f"$P_{{{frame}l}}$")
+            formula=f"$\\omega_l = \\pm v_j / P_{{{frame}l}}P_{{jl}}$", v="$v_j$", p="$P_{jl}$", p1=f"$P_{{{frame}l}}$")
     elif linear:
         sign += "; " + term("centres_sign_rule_translating", lang).format(
-            omega="$\\omega_k$", v=f"$v_{{{point}}}$", segment=f"$P_{{{frame}k}}P_{{{d}k}}$", p=f"$P_{{{d}k}}$", p1=f"$P_{{{frame}k}}$")
+            formula=f"$\\omega_k = \\pm v_{{{point}}} / P_{{{frame}k}}P_{{{d}k}}$", v=f"$v_{{{point}}}$", p=f"$P_{{{d}k}}$",
+            p1=f"$P_{{{frame}k}}$")
     rules = [omega, f"{term('centres_sign', lang)}:  {sign}"]
     if translating:
         said = term("centres_translation_rule", lang).format(p1j=f"$P_{{{frame}j}}$", omega_j="$\\omega_j$", k="$k$", l="$l$")
