@@ -72,6 +72,10 @@ STROKE_COST = 400
 PIN_HIDES_MM = 1.8
 
 
+#: a text set on white (matplotlib's bbox, pad in points): a Kennedy line through it is hidden under it
+_ON_WHITE = {"facecolor": "white", "edgecolor": "none", "pad": 0.8}
+
+
 def centre_text(label: str) -> str:
     """``P₁₃`` for ``P13``; a label with a comma (names longer than one character) stays as it is."""
     if "," in label:
@@ -551,7 +555,7 @@ class _CentresDrawing:
         # the edge arrows first (their places are fixed): the labels of the near centres keep off them
         for e in self.frame.edges:
             self.s.arrow(e.tail, e.tip, color=CENTRE_COLOUR, lw=1.0, head=2.4, gid=f"edge-{e.label}")
-            self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}")
+            self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}").set_bbox(_ON_WHITE)
         self.words += _edge_shapes(self.frame)  # no label over an edge arrow or its label
         # and a centre's label keeps LABEL_SPACING_MM from an edge arrow's label, as from another centre's (the
         # quick-return's "P₃₆" dot label 1 mm under "P₃₅ 360 mm")
@@ -816,7 +820,8 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     # the scale, in a corner of the room (inside the frame the page sized) that no edge arrow or its label crosses
     caption = scale_caption("k_l", fmt_number(k_l), "m/mm", lang)
     at, ha, va = _caption_corner(frame, caption, s.obstacles)
-    s.text(at, caption, size=CAPTION_PT, ha=ha, va=va, gid="scale", math=True)
+    # on white, over the Kennedy lines that run through the room's corner (the quick-return's caption was struck through)
+    s.text(at, caption, size=CAPTION_PT, ha=ha, va=va, gid="scale", math=True).set_bbox(_ON_WHITE)
     drawing = _CentresDrawing(s, result, frame, lang)
     drawing.words += _text_shapes(artists) + [s.obstacles[-1]]
     drawing.bodies += _body_shapes(artists)
