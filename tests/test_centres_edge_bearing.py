@@ -147,3 +147,22 @@ def test_the_linear_arm_p36_arrow_at_the_top_edge_over_it(reviewed):
     room_top = min(p.imag for pts in _paths(svg, "centres-kennedy-").values() for p in pts)  # the lines end at the room's edge
     assert tail.imag < min(m.imag for m in marks) and tail.imag < room_top, "at the top edge"
     assert abs(far - tip) <= (room_top - far.imag) + 10 * MM, (abs(far - tip) / MM, (room_top - far.imag) / MM)
+
+
+def test_a_centre_at_a_joint_leaves_its_pin_visible(reviewed):
+    """Fifth review: the quick-return's P₃₅, P₃₆, P₄₅, P₄₆ one red blob hiding joint D, P₁₂ … P₂₆ covering O: a
+    centre's mark within 1 mm of a joint's pin is open (no fill), so that the pin reads through it."""
+    found = 0
+    for where, svg, truth in reviewed:
+        pins = []
+        for _, group in re.findall(r'<g id="(mech-pin-[^"]+)">(.*?)</g>', svg, re.S):
+            xs, ys = zip(*[(float(x), float(y)) for x, y in re.findall(r"([-0-9.]+) ([-0-9.]+)", group)])
+            pins.append(complex((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2))
+        for label, d, style in re.findall(r'<g id="centres-mark-(P[0-9]+)">\s*<path d="([^"]+)"[^>]*?style="([^"]*)"', svg):
+            xy = [complex(float(x), float(y)) for x, y in re.findall(r"([-0-9.]+) ([-0-9.]+)", d)]
+            q = complex((min(z.real for z in xy) + max(z.real for z in xy)) / 2, (min(z.imag for z in xy) + max(z.imag for z in xy)) / 2)
+            dot = max(z.real for z in xy) - min(z.real for z in xy) < 3.2 * MM  # a dot (Kennedy's), not a pair's 4.4 mm ring
+            if dot and any(abs(q - p) < 1.0 * MM for p in pins):
+                found += 1
+                assert "fill: none" in style, (where, label, style)
+    assert found >= 5, found

@@ -569,6 +569,10 @@ class _CentresDrawing:
             if centre.found_by.startswith("revolute"):
                 self.s.circle(q, 2.2, fc="none", ec=CENTRE_COLOUR, lw=0.9, gid=f"mark-{centre.label}", zorder=5.0)
                 clear = 2.4
+            elif any(abs(q - self.mm(z)) < PIN_HIDES_MM for z in self.r.positions.values()):
+                # at a joint's pin: an open dot, through which the pin shows (the quick-return's four dots at D hid it)
+                self.s.circle(q, 0.8, fc="none", ec=CENTRE_COLOUR, lw=0.8, gid=f"mark-{centre.label}", zorder=5.0)
+                clear = 1.2
             else:
                 self.s.circle(q, 1.0, fc=CENTRE_COLOUR, ec=CENTRE_COLOUR, lw=0.5, gid=f"mark-{centre.label}", zorder=5.0)
                 clear = 1.2
