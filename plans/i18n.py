@@ -583,6 +583,14 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "{omega_j} има посоката на {omega_k}, когато {pjk} лежи извън отсечката {segment}, и обратната, когато лежи в нея (знак минус в таблиците)",
         "sl": "{omega_j} ima isti smisel kot {omega_k}, kadar {pjk} leži zunaj daljice {segment}, in nasprotnega, kadar leži znotraj nje (predznak minus v tabelah)",
     },
+    # the sign of ω found through a link that translates (its v a magnitude), on the centres' method page
+    "centres_sign_rule_translating": {
+        "en": "through a link that translates, {formula} with {v} its magnitude: + when {v}, at {p}, turns anticlockwise about {p1}, − (in the tables) when clockwise",
+        "sr": "преко члана који се креће транслаторно, {formula}, где је {v} интензитет: + када {v} у {p} обрће око {p1} супротно од казаљке на сату, − (у табелама) када у смеру казаљке",
+        "ru": "через звено, движущееся поступательно, {formula}, где {v} — модуль: +, если {v} в {p} поворачивает вокруг {p1} против часовой стрелки, − (в таблицах), если по часовой",
+        "bg": "чрез звено, което се движи постъпателно, {formula}, където {v} е големината: +, когато {v} в {p} върти около {p1} обратно на часовниковата стрелка, − (в таблиците), когато по нея",
+        "sl": "prek člena, ki se giblje translatorno, {formula}, kjer je {v} velikost: +, kadar {v} v {p} vrti okoli {p1} v nasprotni smeri urinega kazalca, − (v tabelah), kadar v smeri urinega kazalca",
+    },
     "centres_translation_rule": {
         "en": "A link that translates ({p1j} at infinity, {omega_j} = 0) moves as its centre with a link {k}; through it the next link {l} turns",
         "sr": "Члан који се креће транслаторно ({p1j} у бесконачности, {omega_j} = 0) креће се као његов пол са чланом {k}; преко њега се обрће следећи члан {l}",
@@ -1096,8 +1104,8 @@ TERMS: dict[str, dict[str, str]] = {
     "none_turns": {"en": "no link turns fully", "sr": "ниједан члан се не окреће пуним кругом", "ru": "ни одно звено не проворачивается",
                    "bg": "никое звено не се завърта изцяло", "sl": "noben člen se ne zavrti v celoti"},
     # the centres table's column of lengths read off the drawing (P₁ⱼM for a point's v, the path's lengths for ω)
-    "read_off_drawing": {"en": "read off the drawing [mm]", "sr": "очитано са цртежа [mm]", "ru": "измерено на чертеже [мм]",
-                         "bg": "измерено на чертежа [мм]", "sl": "odčitano z risbe [mm]"},
+    "read_off_drawing": {"en": "from the drawing (lengths in mm)", "sr": "са цртежа (дужине у mm)", "ru": "по чертежу (длины в мм)",
+                         "bg": "от чертежа (дължини в мм)", "sl": "z risbe (dolžine v mm)"},
     "law_given_instant_only": {"en": "the scene's {q} is not used: the cycle follows this law",
                                "sr": "задато {q} се не користи: циклус прати овај закон",
                                "ru": "заданное {q} не используется: цикл следует этому закону",

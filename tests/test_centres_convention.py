@@ -162,7 +162,7 @@ def test_the_table_reads_p1j_m_in_mm_of_the_drawing():
     analytic = plans.solve(scene)
     k_l = 0.008
     rows = centres_page_table(result, compare_centres(analytic, result), "en", k_l)
-    assert rows[0][2] == "read off the drawing [mm]"  # P_1jM for a point, the path's lengths for ω (fourth review)
+    assert rows[0][2] == "from the drawing (lengths in mm)"  # P_1jM for a point, the path's lengths for ω (fourth review)
     checked = 0
     for name in scene.report:
         row = next(r for r in rows if r[0].startswith(f"$v_{{{name}}}$"))

@@ -151,10 +151,10 @@ def _check_readings(defined: dict, k_l: float) -> int:
             assert mine == pytest.approx(want, rel=1.5e-3, abs=1e-6), (q, sub, reading)
             checked += 1
             continue
-        m = re.fullmatch(r"v(\d+) / P\d+P\d+ = v\1 / \(([\d,.]+) · kl ?\)", reading)
-        if m:  # |ω_j| = |v_k| / (P_1jP_jk · k_l)
-            want = abs(value[("v", m.group(1))]) / (_number(m.group(2)) * k_l)
-            assert abs(mine) == pytest.approx(want, rel=1.5e-3, abs=1e-6), (q, sub, reading)
+        m = re.fullmatch(r"(−?)v(\d+) / P\d+P\d+ = \1v\2 / \(([\d,.]+) · kl ?\)", reading)
+        if m:  # ω_j = ±|v_k| / (P_1jP_jk · k_l), the sign printed
+            want = abs(value[("v", m.group(2))]) / (_number(m.group(3)) * k_l) * (-1.0 if m.group(1) else 1.0)
+            assert mine == pytest.approx(want, rel=1.5e-3, abs=1e-6), (q, sub, reading)
             checked += 1
             continue
         m = re.fullmatch(r"ω(\d+) · P\d+P\d+ = ω\1 · ([\d,.]+) · kl", reading)

@@ -72,6 +72,10 @@ STROKE_COST = 400
 PIN_HIDES_MM = 1.8
 
 
+#: a text set on white (matplotlib's bbox, pad in points): a Kennedy line through it is hidden under it
+_ON_WHITE = {"facecolor": "white", "edgecolor": "none", "pad": 0.8}
+
+
 def centre_text(label: str) -> str:
     """``P₁₃`` for ``P13``; a label with a comma (names longer than one character) stays as it is."""
     if "," in label:
@@ -186,6 +190,204 @@ def _box_at(at: complex, w: float, h: float):
     return box(at.real - w / 2, at.imag - h / 2, at.real + w / 2, at.imag + h / 2)
 
 
+@dataclass(frozen=True)
+class _Segment:
+    """A Kennedy line as the drawing draws it: its bodies' numbers (``"1-2-3"``), its three centres' labels and its two
+    ends [mm] (within the room)."""
+
+    names: str
+    labels: tuple[str, ...]
+    ends: tuple[complex, complex]
+
+
+def _kennedy_segments(result, k_l: float, lo: complex, hi: complex) -> list[_Segment]:
+    """Each Kennedy line that gave a centre, through its three centres, clipped to the room (*lo*, *hi*) [mm]: from 6 mm
+    before its first finite centre to 6 mm beyond its last (so to the room's edge towards a centre outside it), or
+    LONE_LINE each side of its one finite centre; none for the line at infinity."""
+    by_label = {c.label: c for c in result.centres}
+    done = set()
+    out = []
+    for centre in result.centres:
+        for pair in centre.lines:
+            three = [by_label[pair[0]], by_label[pair[1]], centre]
+            bodies = tuple(sorted({b for c in three for b in c.bodies}, key=list(result.numbers).index))
+            if bodies in done:
+                continue
+            done.add(bodies)
+            finite = [c.point / k_l for c in three if c.point is not None]
+            infinite = [c.direction for c in three if c.point is None]
+            if not finite:
+                continue  # the line at infinity
+            if len(finite) >= 2:
+                a, b = max(((p, q) for p in finite for q in finite), key=lambda pq: abs(pq[0] - pq[1]))
+                if abs(b - a) < 1e-9:
+                    continue
+                u = unit(b - a)
+                ts = [((q - a) * u.conjugate()).real for q in finite]
+                t0, t1 = min(ts) - 6.0, max(ts) + 6.0
+            else:
+                a, u = finite[0], infinite[0]
+                t0, t1 = -LONE_LINE, LONE_LINE
+            span = _clip(a, u, lo, hi)
+            if span is None:
+                continue
+            t0, t1 = max(t0, span[0]), min(t1, span[1])
+            if t1 <= t0:
+                continue
+            out.append(_Segment("-".join(result.numbers[b] for b in bodies), tuple(c.label for c in three), (a + t0 * u, a + t1 * u)))
+    return out
+
+
+def _along(lo: complex, hi: complex, s: float) -> complex:
+    """The point of the box (*lo*, *hi*)'s edge at arc length *s* [mm] from its lower-left corner, anticlockwise."""
+    w, h = hi.real - lo.real, hi.imag - lo.imag
+    s %= 2 * (w + h)
+    if s <= w:
+        return complex(lo.real + s, lo.imag)
+    if s <= w + h:
+        return complex(hi.real, lo.imag + s - w)
+    if s <= 2 * w + h:
+        return complex(hi.real - (s - w - h), hi.imag)
+    return complex(lo.real, hi.imag - (s - 2 * w - h))
+
+
+def _arc_of(lo: complex, hi: complex, q: complex) -> float:
+    """The arc length [mm] (see :func:`_along`) of the point of the box's edge nearest *q*."""
+    w, h = hi.real - lo.real, hi.imag - lo.imag
+    x, y = min(max(q.real, lo.real), hi.real), min(max(q.imag, lo.imag), hi.imag)
+    side = min((y - lo.imag, 0), (hi.real - x, 1), (hi.imag - y, 2), (x - lo.real, 3))[1]  # the nearest side
+    return (x - lo.real, w + y - lo.imag, w + h + hi.real - x, 2 * w + h + hi.imag - y)[side]
+
+
+def _on_edge(q: complex, lo: complex, hi: complex) -> bool:
+    """Whether *q* lies on the box's edge (to 1 µm), as a line clipped to it ends."""
+    return min(abs(q.real - lo.real), abs(q.real - hi.real), abs(q.imag - lo.imag), abs(q.imag - hi.imag)) < 1e-3
+
+
+def _aimed(tail: complex, far: complex | None, direction: complex, allowed) -> tuple[complex, complex, complex]:
+    """An edge arrow from about *tail* [mm] pointing at the centre *far* [mm] (None: at infinity in *direction*), kept
+    within the page's box *allowed* (lower-left, upper-right; None: no box): (tail, tip, its unit direction).
+
+    The direction is always the bearing from the arrow's final tail to the centre: a tail the box moves is aimed
+    again (the linear-arm's edge arrows were moved after they were aimed and pointed 50° off their centres).  An
+    arrow running out of the box is first drawn back along its own bearing (so it stays on the line it continues), up
+    to 20 mm, else moved into the box and aimed anew."""
+    def bearing(q: complex) -> complex:
+        return unit(far - q) if far is not None else direction
+
+    def outside(a: complex, b: complex) -> complex:
+        """How far the segment a–b must move to lie within the box (0 inside)."""
+        return complex(*(max(lo_a - min(p, r), 0.0) + min(hi_a - max(p, r), 0.0)
+                         for p, r, lo_a, hi_a in ((a.real, b.real, allowed[0].real, allowed[1].real),
+                                                  (a.imag, b.imag, allowed[0].imag, allowed[1].imag))))
+
+    def length(q: complex) -> float:  # a centre just beyond the tail: the tip short of it
+        return EDGE_ARROW if far is None else min(EDGE_ARROW, max(abs(far - q) - 1.0, 3.0))
+
+    q = tail
+    if allowed is not None:
+        u = bearing(q)
+        shift = outside(q, q + length(q) * u)
+        if abs(shift) > 1e-9:
+            # back along the bearing: the part of the shift along −u, where −u goes the shift's way on each axis
+            need = [abs(s) / abs(c) for s, c in ((shift.real, u.real), (shift.imag, u.imag))
+                    if abs(s) > 1e-9 and abs(c) > 1e-9 and s * c < 0]
+            ok = all(not (abs(s) > 1e-9 and (abs(c) <= 1e-9 or s * c >= 0)) for s, c in ((shift.real, u.real), (shift.imag, u.imag)))
+            if ok and need and max(need) <= 20.0:
+                q = q - max(need) * u
+            else:
+                for _ in range(4):
+                    u = bearing(q)
+                    shift = outside(q, q + length(q) * u)
+                    if abs(shift) < 1e-9:
+                        break
+                    q = q + shift
+    u = bearing(q)
+    return q, q + length(q) * u, u
+
+
+def _edge_label(tail: complex, tip: complex, u: complex, text: str, allowed) -> tuple[complex, float, float]:
+    """Where an edge arrow's label goes (:func:`_label_box`), slid into the page's box *allowed* and, where that put
+    it over its own arrow, beside the tip on the side away from the shaft, else under or over it."""
+    at, w, h = _label_box(tail, tip, u, text)
+    if allowed is None:
+        return at, w, h
+    at = _within(at, w, h, allowed)
+    shaft = LineString([(tail.real, tail.imag), (tip.real, tip.imag)])
+    if _box_at(at, w, h).intersects(shaft):
+        side = 1.0 if u.real >= 0 else -1.0
+        for c in (tip + side * (w / 2 + EDGE_LABEL_GAP), tip - side * (w / 2 + EDGE_LABEL_GAP),
+                  tip - 1j * (h / 2 + EDGE_LABEL_GAP), tip + 1j * (h / 2 + EDGE_LABEL_GAP)):
+            c = _within(c, w, h, allowed)
+            if not _box_at(c, w, h).intersects(shaft):
+                return c, w, h
+    return at, w, h
+
+
+#: the cost of an edge arrow's place: each thing it or its label runs over, each EDGE_SLIDE [mm] along the edge from
+#: where it starts, a start off its centre's Kennedy lines, each mm it is drawn back over the room
+EDGE_HIT_COST = 10.0
+EDGE_SLIDE = 6.5
+EDGE_SLIDE_COST = 0.25
+EDGE_OFF_LINE_COST = 1.0
+EDGE_PULL_COST = 0.05
+#: a Kennedy line's end this much farther [mm] from the centre than the drawing's nearest edge costs one EDGE_OFF_LINE_COST more
+EDGE_LINE_DETOUR = 40.0
+
+
+def _edge_arrow(centre, k_l: float, lo: complex, hi: complex, allowed, segments, edges, boxes) -> tuple[EdgeArrow, list]:
+    """The edge arrow of the centre off the drawing, and the shapes it and its label take (for the arrows after it).
+
+    Its tail starts (in the order they are preferred) where one of the centre's Kennedy lines reaches the room's
+    edge towards it, so that the arrow continues the line (the linear-arm's P₁₃ straight above F: the arrow at the
+    top edge over F); at the point of the edge nearest the centre (the linear-arm's P₃₆ just above Q: at the top
+    edge over Q, not in a corner across the page); for a centre at infinity, where the ray from the room's middle
+    in its direction leaves the room.  From each it slides along the edge, EDGE_SLIDE at a time, until it and its
+    label run over nothing placed before (marks, arrows, labels); the cheapest place wins (see EDGE_HIT_COST …).
+    Wherever it goes it points along the bearing from its tail to the centre (:func:`_aimed`)."""
+    far = centre.point / k_l if centre.point is not None else None
+    middle = (lo + hi) / 2
+    ring = (lo - EDGE_GAP * (1 + 1j), hi + EDGE_GAP * (1 + 1j))
+    starts: list[tuple[float, complex]] = []  # (cost of the start, tail)
+    if far is not None:
+        nearest = complex(min(max(far.real, ring[0].real), ring[1].real), min(max(far.imag, ring[0].imag), ring[1].imag))
+        for seg in segments:
+            if centre.label not in seg.labels:
+                continue
+            end = min(seg.ends, key=lambda z: abs(far - z))
+            if not _on_edge(end, lo, hi) or abs(far - end) < 1e-6:
+                continue  # the line stops short of the room's edge
+            tail = end + EDGE_GAP * unit(far - end)
+            starts.append((max(0.0, abs(far - tail) - abs(far - nearest)) / EDGE_LINE_DETOUR * EDGE_OFF_LINE_COST, tail))
+        starts.append((EDGE_OFF_LINE_COST, nearest))
+    else:
+        u0 = centre.direction
+        span = _clip(middle, u0, lo, hi)
+        starts.append((0.0, middle + span[1] * u0 + EDGE_GAP * u0))
+    perimeter = 2 * (ring[1].real - ring[0].real + ring[1].imag - ring[0].imag)
+    steps = int(perimeter / 2 / EDGE_SLIDE)
+    candidates = sorted(((cost + EDGE_SLIDE_COST * abs(k), n, k, tail) for n, (cost, tail) in enumerate(starts)
+                         for k in range(-steps, steps + 1)), key=lambda c: (c[0], c[1], abs(c[2]), c[2]))
+    best = None
+    for bound, _, k, tail in candidates:
+        if best is not None and best[0] <= bound:
+            break  # nothing after this can cost less
+        if k:
+            tail = _along(ring[0], ring[1], _arc_of(ring[0], ring[1], tail) + k * EDGE_SLIDE)
+        q, tip, u = _aimed(tail, far, centre.direction, allowed)
+        text = edge_text(centre, abs(far - tip) if far is not None else None)
+        at, w, h = _edge_label(q, tip, u, text, allowed)
+        shape = box(at.real - w / 2 - 0.8, at.imag - h / 2 - 0.8, at.real + w / 2 + 0.8, at.imag + h / 2 + 0.8)
+        shaft = LineString([(q.real, q.imag), (tip.real, tip.imag)])
+        arrow = shaft.buffer(1.0)
+        hits = sum(1 for e in edges if abs(q - e.tail) < EDGE_SPACING) + sum(1 for b in boxes if shape.intersects(b) or arrow.intersects(b))
+        hits += int(_box_at(at, w, h).intersects(shaft))  # a label over its own arrow
+        cost = bound + EDGE_HIT_COST * hits + EDGE_PULL_COST * abs(q - tail)
+        if best is None or cost < best[0]:
+            best = (cost, EdgeArrow(centre.label, q, tip, text, at), [shape, arrow])
+    return best[1], best[2]
+
+
 def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: float = ROOM_MIN,
                   limit: tuple[float, float] | None = None) -> CentresFrame:
     """The frame of the centres drawing at *k_l* [m/mm] around the mechanism's *ink* (lower-left, upper-right [mm]).
@@ -232,7 +434,6 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
                 new_lo = complex(max(new_lo.real, allowed[0].real), max(new_lo.imag, allowed[0].imag))
                 new_hi = complex(min(new_hi.real, allowed[1].real), min(new_hi.imag, allowed[1].imag))
             lo, hi = new_lo, new_hi
-    middle = (lo + hi) / 2
 
     def inside(q: complex) -> bool:
         return lo.real <= q.real <= hi.real and lo.imag <= q.imag <= hi.imag
@@ -247,53 +448,23 @@ def centres_frame(result, k_l: float, ink: tuple[complex, complex], room_min: fl
     if allowed is not None:  # the labels of the centres near the room's edge keep within the page's box
         outer_lo = complex(max(outer_lo.real, min(lo.real, allowed[0].real)), max(outer_lo.imag, min(lo.imag, allowed[0].imag)))
         outer_hi = complex(min(outer_hi.real, max(hi.real, allowed[1].real)), min(outer_hi.imag, max(hi.imag, allowed[1].imag)))
+    segments = _kennedy_segments(result, k_l, lo, hi)
+    far = []
     for centre in result.centres:
         if not centre.determined:
             continue
         if centre.point is not None and inside(centre.point / k_l):
             near.append(centre.label)
-            continue
-        u0 = unit(centre.point / k_l - middle) if centre.point is not None else centre.direction
-        span = _clip(middle, u0, lo, hi)
-        base = middle + span[1] * u0 + EDGE_GAP * u0
-        wide = text_size(edge_text(centre, 9999.0), LABEL_PT)[0]
-        spacing = max(EDGE_SPACING, abs(u0.imag) * wide + 2.0)
-        best = None
-        for step in range(48):
-            q = base + (1j * u0) * spacing * ((step + 1) // 2) * (1 if step % 2 else -1)
-            u = unit(centre.point / k_l - q) if centre.point is not None else u0  # the arrow points at the centre
-            tip = q + EDGE_ARROW * u
-            if allowed is not None:  # the arrow within the page's box: pulled back over the room where the box is narrow
-                shift = complex(*(max(lo_a - min(a, b), 0.0) + min(hi_a - max(a, b), 0.0)
-                                  for a, b, lo_a, hi_a in ((q.real, tip.real, allowed[0].real, allowed[1].real),
-                                                           (q.imag, tip.imag, allowed[0].imag, allowed[1].imag))))
-                q, tip = q + shift, tip + shift
-            text = edge_text(centre, abs(centre.point / k_l - tip) if centre.point is not None else None)
-            at, w, h = _label_box(q, tip, u, text)
-            if allowed is not None:  # the label slides along its arrow's edge into the page's box
-                at = _within(at, w, h, allowed)
-                shaft = LineString([(q.real, q.imag), (tip.real, tip.imag)])
-                if _box_at(at, w, h).intersects(shaft):  # slid over its own arrow: beside the tip, on the side away
-                    side = 1.0 if u.real >= 0 else -1.0  # from the shaft, else under or over it
-                    for c in (tip + side * (w / 2 + EDGE_LABEL_GAP), tip - side * (w / 2 + EDGE_LABEL_GAP),
-                              tip - 1j * (h / 2 + EDGE_LABEL_GAP), tip + 1j * (h / 2 + EDGE_LABEL_GAP)):
-                        c = _within(c, w, h, allowed)
-                        if not _box_at(c, w, h).intersects(shaft):
-                            at = c
-                            break
-            shape = box(at.real - w / 2 - 0.8, at.imag - h / 2 - 0.8, at.real + w / 2 + 0.8, at.imag + h / 2 + 0.8)
-            arrow = LineString([(q.real, q.imag), (tip.real, tip.imag)]).buffer(1.0)
-            hits = sum(1 for e in edges if abs(q - e.tail) < EDGE_SPACING) + sum(1 for b in boxes if shape.intersects(b) or arrow.intersects(b))
-            if allowed is not None:  # a label slid over its own arrow
-                hits += int(shape.intersects(LineString([(q.real, q.imag), (tip.real, tip.imag)])))
-            if best is None or hits < best[0]:
-                best = (hits, q, tip, text, at, w, h, shape, arrow)
-            if hits == 0:
-                break
-        _, q, tip, text, at, w, h, shape, arrow = best
-        boxes += [shape, arrow]
-        edges.append(EdgeArrow(centre.label, q, tip, text, at))
-        for z in (q, tip, complex(at.real - w / 2, at.imag - h / 2), complex(at.real + w / 2, at.imag + h / 2)):
+        else:
+            far.append(centre)
+    # the finite ones first: each has its few places at the ends of its Kennedy lines, where a centre at infinity
+    # points the same way from anywhere
+    for centre in sorted(far, key=lambda c: c.point is None):
+        e, shapes = _edge_arrow(centre, k_l, lo, hi, allowed, segments, edges, boxes)
+        boxes += shapes
+        edges.append(e)
+        w, h = text_size(e.text, LABEL_PT)
+        for z in (e.tail, e.tip, complex(e.at.real - w / 2, e.at.imag - h / 2), complex(e.at.real + w / 2, e.at.imag + h / 2)):
             outer_lo = complex(min(outer_lo.real, z.real), min(outer_lo.imag, z.imag))
             outer_hi = complex(max(outer_hi.real, z.real), max(outer_hi.imag, z.imag))
     return CentresFrame(k_l, lo, hi, tuple(near), tuple(edges), outer_lo, outer_hi)
@@ -374,48 +545,21 @@ class _CentresDrawing:
         self.placed.append(self.words[-1])
 
     def kennedy_lines(self) -> None:
-        """Each Kennedy line that gave a centre, through its three centres, inside the room."""
-        by_label = {c.label: c for c in self.r.centres}
-        done = set()
+        """Each Kennedy line that gave a centre, through its three centres, inside the room (:func:`_kennedy_segments`)."""
         colour, lw, dashes = CONSTRUCTION_STYLE
-        for centre in self.r.centres:
-            for pair in centre.lines:
-                three = [by_label[pair[0]], by_label[pair[1]], centre]
-                bodies = tuple(sorted({b for c in three for b in c.bodies}, key=list(self.r.numbers).index))
-                if bodies in done:
-                    continue
-                done.add(bodies)
-                finite = [self.mm(c.point) for c in three if c.point is not None]
-                infinite = [c.direction for c in three if c.point is None]
-                if not finite:
-                    continue  # the line at infinity
-                if len(finite) >= 2:
-                    a, b = max(((p, q) for p in finite for q in finite), key=lambda pq: abs(pq[0] - pq[1]))
-                    if abs(b - a) < 1e-9:
-                        continue
-                    u = unit(b - a)
-                    ts = [((q - a) * u.conjugate()).real for q in finite]
-                    t0, t1 = min(ts) - 6.0, max(ts) + 6.0
-                else:
-                    a, u = finite[0], infinite[0]
-                    t0, t1 = -LONE_LINE, LONE_LINE
-                span = _clip(a, u, self.lo, self.hi)
-                if span is None:
-                    continue
-                t0, t1 = max(t0, span[0]), min(t1, span[1])
-                if t1 <= t0:
-                    continue
-                names = "-".join(self.r.numbers[b] for b in bodies)
-                self.s.line([a + t0 * u, a + t1 * u], color=colour, lw=lw * 0.8, dashes=dashes, gid=f"kennedy-{names}", zorder=1.2, obstacle=False)
-                ends = a + t0 * u, a + t1 * u
-                self.soft.append(LineString([(z.real, z.imag) for z in ends]))
+        for seg in _kennedy_segments(self.r, self.k_l, self.lo, self.hi):
+            self.s.line(list(seg.ends), color=colour, lw=lw * 0.8, dashes=dashes, gid=f"kennedy-{seg.names}", zorder=1.2, obstacle=False)
+            self.soft.append(LineString([(z.real, z.imag) for z in seg.ends]))
 
     def centres(self) -> None:
         # the edge arrows first (their places are fixed): the labels of the near centres keep off them
         for e in self.frame.edges:
             self.s.arrow(e.tail, e.tip, color=CENTRE_COLOUR, lw=1.0, head=2.4, gid=f"edge-{e.label}")
-            self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}")
+            self.s.text(e.at, decimal_comma(e.text, self.lang), size=LABEL_PT, color=CENTRE_COLOUR, gid=f"label-{e.label}").set_bbox(_ON_WHITE)
         self.words += _edge_shapes(self.frame)  # no label over an edge arrow or its label
+        # and a centre's label keeps LABEL_SPACING_MM from an edge arrow's label, as from another centre's (the
+        # quick-return's "P₃₆" dot label 1 mm under "P₃₅ 360 mm")
+        self.placed += [_box_at(e.at, *text_size(e.text, LABEL_PT)) for e in self.frame.edges]
         # every mark first (each an obstacle), then the labels: a label keeps off every mark, not only those before it
         near = [c for c in self.r.centres if c.determined and c.label in self.frame.near]
         self.marks += [self.mm(z) for z in self.r.positions.values()]
@@ -425,6 +569,10 @@ class _CentresDrawing:
             if centre.found_by.startswith("revolute"):
                 self.s.circle(q, 2.2, fc="none", ec=CENTRE_COLOUR, lw=0.9, gid=f"mark-{centre.label}", zorder=5.0)
                 clear = 2.4
+            elif any(abs(q - self.mm(z)) < PIN_HIDES_MM for z in self.r.positions.values()):
+                # at a joint's pin: an open dot, through which the pin shows (the quick-return's four dots at D hid it)
+                self.s.circle(q, 0.8, fc="none", ec=CENTRE_COLOUR, lw=0.8, gid=f"mark-{centre.label}", zorder=5.0)
+                clear = 1.2
             else:
                 self.s.circle(q, 1.0, fc=CENTRE_COLOUR, ec=CENTRE_COLOUR, lw=0.5, gid=f"mark-{centre.label}", zorder=5.0)
                 clear = 1.2
@@ -676,7 +824,8 @@ def draw_centres_into(ax, result, k_l: float, lang: str = "en", *, title: str | 
     # the scale, in a corner of the room (inside the frame the page sized) that no edge arrow or its label crosses
     caption = scale_caption("k_l", fmt_number(k_l), "m/mm", lang)
     at, ha, va = _caption_corner(frame, caption, s.obstacles)
-    s.text(at, caption, size=CAPTION_PT, ha=ha, va=va, gid="scale", math=True)
+    # on white, over the Kennedy lines that run through the room's corner (the quick-return's caption was struck through)
+    s.text(at, caption, size=CAPTION_PT, ha=ha, va=va, gid="scale", math=True).set_bbox(_ON_WHITE)
     drawing = _CentresDrawing(s, result, frame, lang)
     drawing.words += _text_shapes(artists) + [s.obstacles[-1]]
     drawing.bodies += _body_shapes(artists)

@@ -57,7 +57,8 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
 
     * ω_j from a link k that turns, through P_jk: ``−ω₂ · P₁₂P₂₅ / P₁₅P₂₅ = −ω₂ · 31.5 / 226.1`` (the ratio
       theorem, the sign by where P_jk lies: :func:`centres_rules`); from a link k that translates:
-      ``v₆ / P₁₅P₅₆ = v₆ / (97.3 · k_l)``; from one it shares a centre at infinity with: ``ω₄ (P₃₄ ∞)``;
+      ``−v₆ / P₁₄P₄₆ = −v₆ / (88.8 · k_l)`` (v₆ its magnitude, the minus where it turns P_jk clockwise about P_1j:
+      :func:`centres_rules`); from one it shares a centre at infinity with: ``ω₄ (P₃₄ ∞)``;
     * v_j of a translating link from a link k that turns: ``ω₂ · P₁₂P₂₆ = ω₂ · 29.0 · k_l`` (it moves as its
       centre P_jk, a point of k); from a translating k: ``v₃`` (through a finite P_jk) or
       ``v₃ + v₄₃ (P₁₄ ∞, P₃₄ ∞)`` (the velocity triangle of two directions);
@@ -121,9 +122,10 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
                 return [known]
             (segment, mm), = segments
             return [f"{known} · {segment} = {known} · {mm} · {k_l_text}"]
-        if result.translates(k):  # ω_j = v_k / P_1jP_jk
+        if result.translates(k):  # ω_j = ±v_k / P_1jP_jk, v_k its magnitude: − where v_k turns P_jk clockwise about P_1j
             (segment, mm), = segments
-            return [f"{known} / {segment} = {known} / ({mm} · {k_l_text})"]
+            sign = "−" if motion.omega < 0 else ""
+            return [f"{sign}{known} / {segment} = {sign}{known} / ({mm} · {k_l_text})"]
         (near, a), (far, b) = segments  # ω_j = ±ω_k · P_1kP_jk / P_1jP_jk: the sign by where P_jk lies
         sign = "−" if motion.omega * result.motions[k].omega < 0 else ""
         return [f"{sign}{known} · {near} / {far} = {sign}{known} · {a} / {b}"]
@@ -172,19 +174,29 @@ def centres_rules(lang: str, frame: str, driver=None, numbers=None, translating:
     """
     from ..scene import LinearDriver
 
-    if isinstance(driver, LinearDriver):
+    linear = isinstance(driver, LinearDriver)
+    if linear:
         d = (numbers or {}).get(driver.link, driver.link)
         point = math_name(driver.point)
         omega = (f"{term('centres_omega_rule_linear', lang)}:  "
-                 f"$\\omega_k = v_{{{point}}} / P_{{{frame}k}}P_{{{d}k}}$")
+                 f"$\\omega_k = \\pm v_{{{point}}} / P_{{{frame}k}}P_{{{d}k}}$")
     else:
         omega = f"{term('centres_omega_rule', lang)}:  $\\omega_j / \\omega_k = P_{{{frame}k}}P_{{jk}} / P_{{{frame}j}}P_{{jk}}$"
     sign = term("centres_sign_rule", lang).format(omega_j="$\\omega_j$", omega_k="$\\omega_k$", pjk="$P_{jk}$",
                                                   segment=f"$P_{{{frame}j}}P_{{{frame}k}}$")
+    # through a link that translates the ratio has no ω_k to take the sense from: the sign by the sense in which the
+    # link's velocity, at the common centre, turns about the next link's centre (as the tables print it)
+    if translating:
+        sign += "; " + term("centres_sign_rule_translating", lang).format(
+            formula=f"$\\omega_l = \\pm v_j / P_{{{frame}l}}P_{{jl}}$", v="$v_j$", p="$P_{jl}$", p1=f"$P_{{{frame}l}}$")
+    elif linear:
+        sign += "; " + term("centres_sign_rule_translating", lang).format(
+            formula=f"$\\omega_k = \\pm v_{{{point}}} / P_{{{frame}k}}P_{{{d}k}}$", v=f"$v_{{{point}}}$", p=f"$P_{{{d}k}}$",
+            p1=f"$P_{{{frame}k}}$")
     rules = [omega, f"{term('centres_sign', lang)}:  {sign}"]
     if translating:
         said = term("centres_translation_rule", lang).format(p1j=f"$P_{{{frame}j}}$", omega_j="$\\omega_j$", k="$k$", l="$l$")
-        rules.append(f"{said}:  $v_j = \\omega_k \\cdot P_{{{frame}k}}P_{{jk}}$;\u2003$\\omega_l = v_j / P_{{{frame}l}}P_{{jl}}$")
+        rules.append(f"{said}:  $v_j = \\omega_k \\cdot P_{{{frame}k}}P_{{jk}}$;\u2003$\\omega_l = \\pm v_j / P_{{{frame}l}}P_{{jl}}$")
     rules.append(f"{term('centres_v_rule', lang)}:  $v_M = \\omega_j \\cdot P_{{{frame}j}}M$")
     return rules
 

@@ -454,7 +454,9 @@ class Document:
     def beside(self, drawing, table, lines) -> None:
         """*table* (none: empty) and *lines* beside a *drawing* ``(key, block)``; with *drawing* None, alone (the page's width)."""
         words = " \\\n".join(self.words(line) for line in lines)
-        content = f"#{self.table_code(table, '(left, left, right, right, right)')} \\\n{words}" if table else words
+        # the first two columns (the quantity, the centre) to the left, every other one (numbers) to the right
+        aligns = "(" + ", ".join(["left", "left"] + ["right"] * (len(table[0]) - 2)) + ")" if table else ""
+        content = f"#{self.table_code(table, aligns)} \\\n{words}" if table else words
         if drawing is None:
             self.body.append(f"#text(size: {SMALL_PT}pt)[{content}]\n")
             return
