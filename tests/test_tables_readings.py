@@ -23,6 +23,7 @@ import plans
 from plans.cli import main
 from plans.drawing.plan_drawing import vectors_drawn
 from plans.positions import at_page_precision
+from review_handouts import built, built_pdf
 
 SVG = "{http://www.w3.org/2000/svg}"
 EXAMPLES = plans.example_names()
@@ -374,10 +375,8 @@ def test_a_handout_reads_the_plans_and_names_the_drawn_vectors():
 
     from pypdf import PdfReader
 
-    from plans.handout import handout
-
-    doc = handout(plans.load(plans.example_path("six-bar")))
-    text = unicodedata.normalize("NFKC", " ".join(page.extract_text() for page in PdfReader(io.BytesIO(doc.pdf())).pages))
+    doc = built("six-bar")
+    text = unicodedata.normalize("NFKC", " ".join(page.extract_text() for page in PdfReader(io.BytesIO(built_pdf("six-bar"))).pages))
     assert "Velocity plan: readings" in text and "Acceleration plan: readings" in text
     joined = "".join(text.split())
     assert "E5E6" in joined and "slider" not in joined
