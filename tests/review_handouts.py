@@ -3,13 +3,19 @@ the tests that read it: they read its source, drawings, scales and PDF).
 
 :func:`built` is the handout of an example as ``plans handout --example …`` builds it, :func:`built_pdf` its PDF
 (compiled once); the three handouts the teachers' reviews of the plans saw (sr quick-return at 12 positions, bg
-linear-arm at 8, en six-bar) are :func:`reviewed_handouts`.
+linear-arm at 8, en six-bar) are :func:`reviewed_handouts`.  Likewise :func:`drawn_sheet`: the files
+``plans draw --example …`` writes, written once per process into a scratch directory of its own (read them, never
+write beside them).
 """
 
 from __future__ import annotations
 
+import atexit
 import inspect
+import shutil
+import tempfile
 from functools import lru_cache
+from pathlib import Path
 
 import plans
 from plans.handout import handout
@@ -51,3 +57,23 @@ def built_pdf(example: str, positions=None, lang: str = "en", **options) -> byte
 def reviewed_handouts() -> dict:
     """name -> (Handout, lang) of :data:`REVIEWED` (the handouts are not changed by the tests that read them)."""
     return {name: (built(name, n, lang), lang) for name, n, lang in REVIEWED}
+
+
+@lru_cache(maxsize=1)
+def _scratch() -> Path:
+    directory = Path(tempfile.mkdtemp(prefix="plans-tests-drawn-"))
+    atexit.register(shutil.rmtree, directory, True)
+    return directory
+
+
+@lru_cache(maxsize=None)
+def drawn_sheet(example: str, lang: str = "en", output: str = "") -> Path:
+    """What ``plans draw --example EXAMPLE --lang LANG -o OUT`` writes (status 0 asserted), once per process: OUT a
+    directory of its own (*output* ""; its drawings and ``sheet.svg``), or the file *output* in it (``sheet.pdf``,
+    ``sheet.svg``: the sheet alone); the path of OUT."""
+    from plans.cli import main
+
+    out = Path(tempfile.mkdtemp(dir=_scratch()))
+    target = out / output if output else out / "drawn"
+    assert main(["draw", "--example", example, "--lang", lang, "-o", str(target), "-q"]) == 0, (example, lang, output)
+    return target
