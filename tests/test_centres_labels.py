@@ -9,8 +9,7 @@ import pytest
 from shapely.geometry import LineString
 from svg_text_boxes import overlaps, text_boxes
 
-from plans.handout import handout
-from plans.scene import example_path, load
+from review_handouts import built
 
 
 CLUSTER = 1.5 * 72 / 25.4  # 1.5 mm in the SVG's points
@@ -30,7 +29,7 @@ def _marks(svg: str) -> dict[str, complex]:
 def drawings():
     out = []
     for name, positions, lang in (("quick-return", 12, "sr"), ("linear-arm", 8, "bg"), ("six-bar", None, "en")):
-        doc = handout(load(example_path(name)), positions=positions, centres=True, lang=lang)
+        doc = built(name, positions, lang, centres=True)
         out += [(f"{name} {key}", doc.images[key].decode()) for key in doc.images if key.startswith("centres-")]
     return out
 

@@ -31,10 +31,10 @@ from plans.analytic import solve
 from plans.centres import instant_centres
 from plans.compare import compare_centres
 from plans.drawing.centres_page import centres_page_table, centres_rules
-from plans.handout import handout
 from plans.i18n import term
 from plans.positions import cycle_positions
 from plans.scene import Crank, example_path, load
+from review_handouts import built_pdf
 
 # --- reading a table ------------------------------------------------------------------------------------------------
 
@@ -205,8 +205,7 @@ def _check_values(defined: dict, scene, position: float) -> None:
 @pytest.fixture(scope="module")
 def quick_return_sr():
     scene = load(example_path("quick-return"))
-    doc = handout(scene, positions=12, lang="sr", centres=True)
-    return scene, doc.pdf()
+    return scene, built_pdf("quick-return", 12, "sr", centres=True)
 
 
 def test_quick_return_sr_every_row_uses_only_rows_above(quick_return_sr):
@@ -275,7 +274,7 @@ def test_the_minus_of_a_reading_is_the_sense_by_finite_differences(quick_return_
                                                    ("slider-crank", None, "sl"), ("linear-arm", None, "bg")])
 def test_handout_centres_tables_read_in_order(name, positions, lang):
     scene = load(example_path(name))
-    pdf = handout(scene, positions=positions, lang=lang, centres=True).pdf()
+    pdf = built_pdf(name, positions, lang, centres=True)
     tables = _centres_tables(pdf, lang)
     values = cycle_positions(scene, positions) if positions else [scene.driver.phi if isinstance(scene.driver, Crank) else scene.driver.s]
     assert len(tables) == len(values)

@@ -14,6 +14,7 @@ from plans.centres import CentreError, instant_centres
 from plans.handout import handout
 from plans.positions import cycle_positions
 from plans.scene import example_path, load
+from review_handouts import built, built_pdf
 
 
 @pytest.fixture(scope="module")
@@ -47,7 +48,9 @@ def test_a_length_read_as_zero_takes_another_path(quick_return_8):
 
 
 def _texts(doc) -> list[str]:
-    return [" ".join(page.extract_text().split()) for page in PdfReader(io.BytesIO(doc.pdf())).pages]
+    """The text of every page of *doc* (a Handout, or its PDF)."""
+    pdf = doc if isinstance(doc, bytes) else doc.pdf()
+    return [" ".join(page.extract_text().split()) for page in PdfReader(io.BytesIO(pdf)).pages]
 
 
 WORDS = {  # hand-written: the page's note where no path of centres reads
@@ -73,13 +76,13 @@ def test_no_readable_path_is_said_on_the_page(monkeypatch, lang):
 
 
 def test_a_readable_page_has_no_note():
-    texts = _texts(handout(load(example_path("four-bar")), centres=True, lang="en"))
+    texts = _texts(built_pdf("four-bar", None, "en", centres=True))
     assert not any(WORDS["en"] in t for t in texts)
 
 
 def test_six_bar_legend_and_rules_said_once_and_circle_caption_typeset():
-    doc = handout(load(example_path("six-bar")), centres=True, lang="en")
-    text = " ".join(_texts(doc))
+    doc = built("six-bar", None, "en", centres=True)
+    text = " ".join(_texts(built_pdf("six-bar", None, "en", centres=True)))
     # the legend of marks, the edge arrows' legend and the two rules: on the method's page only
     # (the rules in the textbook's words, the circle legend's 'solid lines': issue 20's centres review)
     for words in ("circles: centres at the kinematic pairs", "an arrow at the edge points to a centre off the drawing",

@@ -8,8 +8,7 @@ import subprocess
 
 import pytest
 
-from plans.handout import handout
-from plans.scene import example_path, load
+from review_handouts import built_pdf
 
 
 def _pages(pdf: bytes, tmp_path) -> list[str]:
@@ -31,8 +30,7 @@ def _title_block(page: str) -> str | None:
     ("six-bar", None, "en", "0.008", 1),
 ])
 def test_centres_at_the_plates_k_l(tmp_path, name, positions, lang, plate, count):
-    doc = handout(load(example_path(name)), positions=positions, centres=True, lang=lang)
-    pages = _pages(doc.pdf(), tmp_path)
+    pages = _pages(built_pdf(name, positions, lang, centres=True), tmp_path)
     assert _title_block(pages[0]) == plate, pages[0][:400]  # the plate's k_l, page 1
     centres = pages[-count:]  # the centres pages come last: a page for each position
     assert [_title_block(p) for p in centres] == [plate] * count

@@ -12,8 +12,8 @@ import pytest
 from plans.analytic import solve
 from plans.centres import instant_centres
 from plans.compare import compare_centres
-from plans.handout import handout
 from plans.scene import example_path, load
+from review_handouts import built_pdf
 
 K_L, PRECISION = 0.008, 0.1  # the six-bar plate's k_l (page 1) and the handout's drafting precision
 
@@ -71,7 +71,7 @@ def test_six_bar_readings_at_the_drawings_precision():
 
 def test_six_bar_handout_table_prints_the_readings(tmp_path):
     pdf = tmp_path / "h.pdf"
-    pdf.write_bytes(handout(load(example_path("six-bar")), centres=True, lang="en").pdf())
+    pdf.write_bytes(built_pdf("six-bar", None, "en", centres=True))
     page = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, check=True).stdout.decode().split("\f")[-2]
     want = _expected()
     # (the labels' subscripts are set as small digits, which the PDF's text gives as digits: P₁₂ reads "P12")

@@ -13,9 +13,9 @@ from pypdf import PdfReader
 
 from plans.centres import instant_centres
 from plans.drawing.centres_page import centres_order_table
-from plans.handout import handout
 from plans.i18n import LANGUAGES, term
 from plans.scene import example_path, load
+from review_handouts import built_pdf
 
 SUBSCRIPT = re.compile("[₀-₉]")
 
@@ -60,7 +60,7 @@ def test_the_circle_diagram_says_solid_lines_not_sides():
 
 @pytest.fixture(scope="module")
 def six_bar_pdf():
-    return PdfReader(io.BytesIO(handout(load(example_path("six-bar")), centres=True, lang="en").pdf()))
+    return PdfReader(io.BytesIO(built_pdf("six-bar", None, "en", centres=True)))
 
 
 def test_centre_subscripts_in_the_tables_at_least_7_5_pt(six_bar_pdf):

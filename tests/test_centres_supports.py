@@ -5,8 +5,7 @@ import cmath
 import math
 import re
 
-from plans.handout import handout
-from plans.scene import example_path, load
+from review_handouts import built
 
 
 def _support_direction(svg: bytes, name: str) -> float:
@@ -20,7 +19,7 @@ def _support_direction(svg: bytes, name: str) -> float:
 
 
 def test_quick_return_support_at_O_one_way_on_every_centres_page():
-    doc = handout(load(example_path("quick-return")), positions=12, centres=True, lang="sr")
+    doc = built("quick-return", 12, "sr", centres=True)
     blocks = [doc.images[f"centres-{n}"] for n in range(12)]
     for pivot in ("O", "C"):
         directions = [_support_direction(svg, pivot) for svg in blocks]

@@ -11,6 +11,7 @@ import pytest
 from plans.pages.equations import equation_math, once, step_lines, twice
 from plans.positions import run_positions
 from plans.scene import example_path, load
+from review_handouts import built_pdf
 
 
 
@@ -161,13 +162,10 @@ def test_double_underlines_on_the_handout_page_are_two_rules(tmp_path):
 
     import numpy as np
 
-    import plans
-    from plans.handout import handout
-
     if shutil.which("pdftoppm") is None or shutil.which("pdftotext") is None:
         pytest.skip("poppler renders and reads the page")
     pdf = tmp_path / "h.pdf"
-    pdf.write_bytes(handout(plans.load(plans.example_path("six-bar")), centres=False).pdf())
+    pdf.write_bytes(built_pdf("six-bar", centres=False))
     words = subprocess.run(["pdftotext", "-f", "1", "-l", "1", "-bbox", str(pdf), "-"], capture_output=True, text=True,
                            check=True).stdout
     tops = [float(m.group(1)) for m in re.finditer(r'yMin="([\d.]+)"[^>]*>equations:</word>', words)]

@@ -19,6 +19,7 @@ import pytest
 from matplotlib.colors import to_rgb
 
 from plans.scene import example_path, load
+from review_handouts import built_pdf
 
 OA, AB, E, PHI = 0.1, 0.3, 0.02, math.radians(60.0)
 A_S3 = complex(-1044.53339, -1299.03811)
@@ -180,10 +181,8 @@ def test_no_arrow_on_the_lever_lies_over_another(slider_crank):
 
 @pytest.fixture(scope="module")
 def handout_ru():
-    from plans.handout import handout
-
-    doc = handout(load(example_path("slider-crank-loads")), forces=True, lang="ru")
-    return [re.sub(r"[ \t]+", " ", unicodedata.normalize("NFKC", p.extract_text() or "")) for p in pypdf.PdfReader(io.BytesIO(doc.pdf())).pages]
+    pdf = built_pdf("slider-crank-loads", None, "ru", forces=True)
+    return [re.sub(r"[ \t]+", " ", unicodedata.normalize("NFKC", p.extract_text() or "")) for p in pypdf.PdfReader(io.BytesIO(pdf)).pages]
 
 
 def test_every_force_page_states_mu_f_in_its_title_block(handout_ru):

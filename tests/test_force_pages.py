@@ -23,6 +23,7 @@ from plans.pages.document import Document
 from plans.pages.forces import force_pages
 from plans.pages.typesetting import compile_document
 from plans.scene import example_path, load
+from review_handouts import built, built_pdf
 
 M_B = 620.218316  # domain.md §11
 R_12 = 9646.41888
@@ -197,8 +198,7 @@ def test_a_plan_fits_its_cell_and_mu_is_round(worked):
 
 @pytest.fixture(scope="module")
 def six_bar_en():
-    doc = handout(load(example_path("six-bar-loads")), forces=True)
-    return doc, _pdf_texts(doc.pdf())
+    return built("six-bar-loads", forces=True), _pdf_texts(built_pdf("six-bar-loads", forces=True))
 
 
 @pytest.fixture(scope="module")

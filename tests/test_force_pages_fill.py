@@ -19,9 +19,9 @@ import numpy as np
 import pypdf
 import pytest
 
-from plans.handout import handout
 from plans.i18n import term
 from plans.scene import example_path, load
+from review_handouts import built, built_pdf
 
 pytestmark = pytest.mark.skipif(shutil.which("pdftoppm") is None, reason="pdftoppm (poppler-utils) is not installed")
 
@@ -51,8 +51,8 @@ def _fills(pdf: bytes) -> list[float]:
 @pytest.fixture(scope="module", params=HANDOUTS, ids=[f"{e}-{lang}" for e, lang in HANDOUTS])
 def typeset(request):
     example, lang = request.param
-    doc = handout(load(example_path(example)), forces=True, lang=lang)
-    pdf = doc.pdf()
+    doc = built(example, None, lang, forces=True)
+    pdf = built_pdf(example, None, lang, forces=True)
     texts = [unicodedata.normalize("NFKC", p.extract_text() or "") for p in pypdf.PdfReader(io.BytesIO(pdf)).pages]
     return example, lang, doc, pdf, texts
 

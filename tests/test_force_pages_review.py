@@ -17,9 +17,9 @@ import unicodedata
 import pypdf
 import pytest
 
-from plans.handout import handout
 from plans.i18n import term
-from plans.scene import example_path, load
+from plans.scene import example_path
+from review_handouts import built, built_pdf
 
 # domain.md §11: the worked example
 R_23 = 8353.55006
@@ -29,7 +29,9 @@ OA, AB, E, PHI, OMEGA = 0.1, 0.3, 0.02, math.radians(60.0), 150.0
 
 
 def _texts(doc) -> list[str]:
-    return [re.sub(r"[ \t]+", " ", unicodedata.normalize("NFKC", p.extract_text() or "")) for p in pypdf.PdfReader(io.BytesIO(doc.pdf())).pages]
+    """The pages' text of *doc* (a Handout, or its PDF)."""
+    pdf = doc if isinstance(doc, bytes) else doc.pdf()
+    return [re.sub(r"[ \t]+", " ", unicodedata.normalize("NFKC", p.extract_text() or "")) for p in pypdf.PdfReader(io.BytesIO(pdf)).pages]
 
 
 def _number(text: str) -> float:
@@ -38,14 +40,12 @@ def _number(text: str) -> float:
 
 @pytest.fixture(scope="module")
 def slider_crank_ru():
-    doc = handout(load(example_path("slider-crank-loads")), forces=True, lang="ru")
-    return doc, _texts(doc)
+    return built("slider-crank-loads", None, "ru", forces=True), _texts(built_pdf("slider-crank-loads", None, "ru", forces=True))
 
 
 @pytest.fixture(scope="module")
 def six_bar_en():
-    doc = handout(load(example_path("six-bar-loads")), forces=True, lang="en")
-    return doc, _texts(doc)
+    return built("six-bar-loads", None, "en", forces=True), _texts(built_pdf("six-bar-loads", None, "en", forces=True))
 
 
 def _force_pages(texts, lang):
@@ -234,10 +234,7 @@ def test_a_couple_enters_the_moment_equation_by_its_magnitude():
     written |M_Φ3| (its sense is the term's sign), so the number put in is the magnitude."""
     import re as _re
 
-    from plans.handout import handout
-    from plans.scene import example_path, load
-
-    doc = handout(load(example_path("slider-crank-loads")), forces=True, lang="ru")
+    doc = built("slider-crank-loads", None, "ru", forces=True)
     letters = [line for line in doc.source.split("], [") if "Σ M_(\"B\")" in line]
     assert letters and 'abs(M_("Ф3" ))' in letters[0], letters
     numbers = doc.source.split(letters[0], 1)[1].split("], [", 2)[1]

@@ -17,17 +17,19 @@ import unicodedata
 import pypdf
 import pytest
 
-from plans.handout import handout
 from plans.i18n import term
 from plans.scene import example_path, load
+from review_handouts import built, built_pdf
 
 R_23, R_23_ANGLE = 8353.55006, 192.098702
 OA, AB, E, PHI = 0.1, 0.3, 0.02, math.radians(60.0)
 
 
 def _texts(doc, form: str = "NFKC") -> list[str]:
-    """The pages' text: NFKC (math italics read as letters, subscripts as digits) or NFC (subscripts kept)."""
-    return [re.sub(r"[ \t]+", " ", unicodedata.normalize(form, p.extract_text() or "")) for p in pypdf.PdfReader(io.BytesIO(doc.pdf())).pages]
+    """The pages' text of *doc* (a Handout, or its PDF): NFKC (math italics read as letters, subscripts as digits) or
+    NFC (subscripts kept)."""
+    pdf = doc if isinstance(doc, bytes) else doc.pdf()
+    return [re.sub(r"[ \t]+", " ", unicodedata.normalize(form, p.extract_text() or "")) for p in pypdf.PdfReader(io.BytesIO(pdf)).pages]
 
 
 def _svg(doc, key: str) -> str:
@@ -41,8 +43,7 @@ def _svg_texts(doc, key: str) -> list[str]:
 
 @pytest.fixture(scope="module")
 def scl_ru():
-    doc = handout(load(example_path("slider-crank-loads")), forces=True, lang="ru")
-    return doc, _texts(doc)
+    return built("slider-crank-loads", None, "ru", forces=True), _texts(built_pdf("slider-crank-loads", None, "ru", forces=True))
 
 
 def _force_pages(texts):
@@ -102,7 +103,7 @@ def test_the_centres_are_spelt_as_the_scene_writes_them_on_every_page(scl_ru):
     scene = tomllib.loads(example_path("slider-crank-loads").read_text(encoding="utf-8"))
     named = scene["link"]["3"]["centre"]  # "S3" as typed
     assert named == "S3"
-    kinematic = _texts(doc, "NFC")
+    kinematic = _texts(built_pdf("slider-crank-loads", None, "ru", forces=True), "NFC")
     assert named in kinematic[0]
     bodies = _svg_texts(doc, "forces-0-free-bodies")
     lever = _svg_texts(doc, "forces-0-lever")
@@ -230,8 +231,8 @@ def test_no_arrow_crosses_another_on_the_free_bodies(k_l):
 def test_the_scotch_yokes_free_bodies_say_why_their_k_l_is_coarser():
     from plans.pages.forces import FREE_BODIES_BOX
 
-    doc = handout(load(example_path("scotch-yoke-loads")), forces=True, lang="ru")
-    texts = _texts(doc)
+    doc = built("scotch-yoke-loads", None, "ru", forces=True)
+    texts = _texts(built_pdf("scotch-yoke-loads", None, "ru", forces=True))
     plate = re.search(r"k ?l = ([0-9,]+) м/мм", texts[0])[1]
     first = _force_pages(texts)[0]
     drawn = re.search(r"k ?l = ([0-9,]+) м/мм; стрелки не в масштабе", first)[1]

@@ -21,6 +21,7 @@ import pytest
 import plans
 from plans.pages.document import Document
 from plans.pages.typesetting import compile_document
+from review_handouts import built_pdf
 
 pytestmark = [pytest.mark.filterwarnings("ignore"),
               pytest.mark.skipif(shutil.which("pdftotext") is None, reason="poppler's pdftotext reads the pages")]
@@ -35,10 +36,7 @@ def _pdftotext(pdf: bytes, *args: str) -> str:
 
 @pytest.fixture(scope="module")
 def six_bar_en():
-    from plans.handout import handout
-
-    doc = handout(plans.load(plans.example_path("six-bar")), lang="en")
-    return unicodedata.normalize("NFKC", _pdftotext(doc.pdf()))
+    return unicodedata.normalize("NFKC", _pdftotext(built_pdf("six-bar", None, "en")))
 
 
 def test_every_image_of_the_six_bar_plans_has_its_step(six_bar_en):

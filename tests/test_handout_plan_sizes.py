@@ -16,13 +16,14 @@ import plans
 from plans.handout import handout
 from plans.pages.handout import TEXT_WIDTH
 from plans.scene import example_path
+from review_handouts import built
 
 pytestmark = pytest.mark.filterwarnings("ignore")
 
 
 @pytest.fixture(scope="module")
 def plates():
-    return {name: handout(plans.load(example_path(name)), positions=12, lang="sr")
+    return {name: built(name, 12, "sr")
             for name in ("quick-return", "six-bar", "slider-crank")}
 
 

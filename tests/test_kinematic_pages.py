@@ -16,6 +16,7 @@ import plans
 from plans.differentiation import kinematic_diagrams
 from plans.drawing import kinematic_diagrams as kd
 from plans.handout import handout
+from review_handouts import built
 
 R, L, E, OMEGA = 0.1, 0.25, 0.05, 2000 * 2 * math.pi / 60  # the offset slider-crank example [m], [rad/s]
 PT = 25.4 / 72  # mm per SVG unit (matplotlib's points; Typst's page units are points too)
@@ -29,7 +30,7 @@ def x_b(phi):
 
 @pytest.fixture(scope="module")
 def plate():
-    return handout(plans.load(plans.example_path("slider-crank")), positions=12, lang="en")
+    return built("slider-crank", 12, "en")
 
 
 @pytest.fixture(scope="module")
@@ -131,7 +132,7 @@ def test_the_stated_mu_v_and_h1_are_the_rays(plate):
 
 @pytest.fixture(scope="module")
 def serbian():
-    return handout(plans.load(plans.example_path("quick-return")), positions=12, lang="sr")
+    return built("quick-return", 12, "sr")
 
 
 def test_no_english_word_on_the_serbian_kinematic_page(serbian):

@@ -12,11 +12,12 @@ import pytest
 
 import plans
 from plans.handout import handout
+from review_handouts import built
 
 
 @pytest.fixture(scope="module")
 def quick_return():
-    return handout(plans.load(plans.example_path("quick-return")), positions=12, lang="sr")
+    return built("quick-return", 12, "sr")
 
 
 def _table(source: str, heading: str, columns: int = 13) -> list[list[str]]:
@@ -93,7 +94,7 @@ def test_the_peak_note_where_the_chords_cut_the_fast_stroke(quick_return):
 
 def test_no_peak_note_where_the_chords_are_close():
     """The offset slider-crank at 12 positions: the chords within 5 % (2.7 % at most): no such note."""
-    doc = handout(plans.load(plans.example_path("slider-crank")), positions=12, lang="en")
+    doc = built("slider-crank", 12, "en")
     page = doc.source[doc.source.index("Kinematic diagrams of the output link"):]
     assert "flatten the fastest part" not in page
     assert "tangent" not in page
@@ -169,7 +170,7 @@ def test_s_in_metres_on_the_cycle_page_as_on_the_kinematic_page(quick_return):
 
 
 def test_a_linear_drivers_axis_in_metres_in_the_courses_letters():
-    doc = handout(plans.load(plans.example_path("linear-arm")), positions=8, lang="bg")
+    doc = built("linear-arm", 8, "bg")
     joined = " ".join(_svg_texts(doc.images["diagram-sliders"]))
     assert "s [м]" in joined and "мм" not in joined and "[m]" not in joined
     assert "−0,100" in joined or "−0,10" in joined or "−0,1" in joined  # the stroke's end, −100 mm, in metres

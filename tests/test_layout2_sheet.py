@@ -11,8 +11,8 @@ import pytest
 from pypdf import PdfReader
 
 import plans
-from plans.cli import main
 from sheet_pages import scales, text
+from review_handouts import drawn_sheet
 
 #: ISO 216 A3 landscape [mm], typed from the standard
 A3_LANDSCAPE = (420.0, 297.0)
@@ -25,9 +25,8 @@ def _course_formula(formula: str) -> str:
 
 
 @pytest.mark.parametrize("example", plans.example_names())
-def test_the_sheet_is_a3_landscape_with_the_plate_s_title_block(example, tmp_path):
-    assert main(["draw", "--example", example, "-o", str(tmp_path / "page.pdf")]) == 0
-    pdf = (tmp_path / "page.pdf").read_bytes()
+def test_the_sheet_is_a3_landscape_with_the_plate_s_title_block(example):
+    pdf = drawn_sheet(example, output="sheet.pdf").read_bytes()
     (page,) = PdfReader(io.BytesIO(pdf)).pages
     size = tuple(round(float(v) * 25.4 / 72, 1) for v in (page.mediabox.width, page.mediabox.height))
     assert size == A3_LANDSCAPE, (example, size)
@@ -41,9 +40,8 @@ def test_the_sheet_is_a3_landscape_with_the_plate_s_title_block(example, tmp_pat
     assert {"k_l", "k_v"} <= set(k), k
 
 
-def test_the_assembly_of_each_group_that_has_two_is_said_in_words(tmp_path):
-    assert main(["draw", "--example", "six-bar", "-o", str(tmp_path / "page.pdf")]) == 0
-    flat = " ".join(text((tmp_path / "page.pdf").read_bytes()).split())
+def test_the_assembly_of_each_group_that_has_two_is_said_in_words():
+    flat = " ".join(text(drawn_sheet("six-bar", output="sheet.pdf").read_bytes()).split())
     # the six-bar has two groups with two assemblies each: 3–4 (RRR) and 5–6 (RPR) (README, examples)
     assert "Assembly of the groups: group 3–4:" in flat and "group 5–6:" in flat, flat
     for token in ("RRR(3,4)", "RPR(5,6)", "5.rod", "frame.", "(+1)", "(−1)"):

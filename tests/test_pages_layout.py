@@ -12,8 +12,8 @@ from matplotlib.figure import Figure
 import plans
 from plans._text import user_text
 from plans.drawing.svg import drawing_rc
-from plans.handout import handout
 from plans.loops import loop_equations
+from review_handouts import built
 
 #: what the plate gives its drawings [mm] (issue 11 §1, issue 20 §1): at 12 positions of every bundled example,
 #: at the one k_v and k_a of the handout, the largest velocity plan's longest vector at least 30 mm, the
@@ -27,7 +27,7 @@ POSITIONS = 12
 @pytest.fixture(scope="module", params=plans.example_names())
 def plate(request):
     """One handout of each example at 12 positions, shared by the tests of this module."""
-    return handout(plans.load(plans.example_path(request.param)), positions=POSITIONS)
+    return built(request.param, POSITIONS)
 
 
 def test_every_drawing_is_big_enough_and_inside_the_text_area(plate):

@@ -7,7 +7,7 @@ signs).  The languages cycle through en, sr, ru, bg, sl.  Every tenth handout is
 and every 25th as a PDF (write_handout, files checked); the others are built (every drawing drawn,
 every text set as Typst source) and compiled by the typesetter to PDF in memory, which is where a
 title or a name Typst would read as markup would fail.  The mechanisms are drawn from a seeded
-generator: every run tries the same ones.
+generator: every run tries the same ones (all drawn first, then tried in chunks of ten, one test each).
 """
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ import io
 import math
 
 import numpy as np
+import pytest
 from pypdf import PdfReader
 
 from plans.errors import PlansError
@@ -92,12 +93,28 @@ def _toml_string(text: str) -> str:
     return '"' + "".join(f"\\u{ord(ch):04x}" if ord(ch) > 126 or ch in '"\\' else ch for ch in text) + '"'
 
 
-def test_random_mechanisms_give_a_handout_or_one_clear_line(tmp_path):
-    rng = np.random.default_rng(20261122)
+#: the mechanisms are tried in chunks of this many (one test each, so that the workers share them); the scenes
+#: are drawn from the one seeded generator in order before any is tried, so every chunk tries the same ones
+CHUNK = 10
+_SCENES: list[str] = []
+
+
+def _scenes() -> list[str]:
+    """The COUNT scene texts, drawn in order from the seeded generator (the same ones on every run and in every worker)."""
+    if not _SCENES:
+        rng = np.random.default_rng(20261122)
+        _SCENES.extend(_scene(rng, n) for n in range(COUNT))
+    return _SCENES
+
+
+@pytest.mark.parametrize("first", range(0, COUNT, CHUNK), ids=lambda first: f"{first}-{first + CHUNK - 1}")
+def test_random_mechanisms_give_a_handout_or_one_clear_line(tmp_path, first):
+    scenes = _scenes()
+    chunk = range(first, min(first + CHUNK, COUNT))
     written = refused = 0
     kinds = set()
-    for n in range(COUNT):
-        text = _scene(rng, n)
+    for n in chunk:
+        text = scenes[n]
         kinds.add(KINDS[n % len(KINDS)])
         lang = LANGS[n % len(LANGS)]
         suffix = ".pdf" if n % 25 == 1 else ".svg" if n % 10 == 0 else None
@@ -122,7 +139,17 @@ def test_random_mechanisms_give_a_handout_or_one_clear_line(tmp_path):
             assert len(PdfReader(io.BytesIO(pdf)).pages) >= 2, n
             assert {"mechanism", "v-0"} <= set(document.images), n  # the mechanism and its velocity plan drawn
         written += 1
+    # every kind in every chunk (so in the whole); at least 90 % written in every chunk (so in the whole)
     assert kinds == set(KINDS)
-    assert written + refused == COUNT
-    assert written >= COUNT * 0.9, (written, refused)  # valid mechanisms: nearly all are written
-    print(f"{COUNT} random mechanisms: {written} handouts written, {refused} refused")
+    assert written + refused == len(chunk)
+    assert written >= len(chunk) * 0.9, (first, written, refused)  # valid mechanisms: nearly all are written
+    print(f"random mechanisms {first}-{chunk[-1]}: {written} handouts written, {refused} refused")
+
+
+def test_the_chunks_cover_every_mechanism_once():
+    """The chunks together try all COUNT scenes, each once, every kind and language COUNT / 5 times."""
+    firsts = list(range(0, COUNT, CHUNK))
+    tried = [n for first in firsts for n in range(first, min(first + CHUNK, COUNT))]
+    assert tried == list(range(COUNT))
+    assert len(_scenes()) == COUNT and len(set(_scenes())) == COUNT
+    assert {k: sum(KINDS[n % 5] == k for n in tried) for k in KINDS} == {k: COUNT // 5 for k in KINDS}

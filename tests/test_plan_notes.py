@@ -28,8 +28,8 @@ from matplotlib.font_manager import FontProperties
 from matplotlib.textpath import TextPath
 
 import plans
-from plans.handout import handout
 from plans.scene import example_path
+from review_handouts import built
 
 pytestmark = pytest.mark.filterwarnings("ignore")
 
@@ -40,7 +40,7 @@ REVIEWED = [("quick-return", 12, "sr"), ("linear-arm", 8, "bg"), ("six-bar", Non
 
 @pytest.fixture(scope="module")
 def handouts():
-    return {name: handout(plans.load(example_path(name)), positions=n, lang=lang, centres=name == "quick-return")
+    return {name: built(name, n, lang, centres=name == "quick-return")
             for name, n, lang in REVIEWED}
 
 

@@ -25,6 +25,7 @@ from plans.pages.typesetting import compile_document
 
 from accelerating_scenes import linear_arm_accelerating, write_linear_arm_accelerating
 from pdf_lines import page_lines
+from review_handouts import built, built_pdf
 
 pytestmark = [pytest.mark.filterwarnings("ignore"),
               pytest.mark.skipif(shutil.which("pdftotext") is None, reason="poppler's pdftotext reads the pages")]
@@ -84,8 +85,8 @@ def reviewed():
     """name -> (Handout, PDF, lines of every page) of the handouts issue 20 was reviewed on (with centres)."""
     out = {}
     for key, (name, positions, lang) in HANDOUTS.items():
-        doc = handout(plans.load(plans.example_path(name)), positions=positions, lang=lang, centres=True)
-        pdf = doc.pdf()
+        doc = built(name, positions, lang, centres=True)
+        pdf = built_pdf(name, positions, lang, centres=True)
         out[key] = (doc, pdf, _lines(pdf))
     return out
 

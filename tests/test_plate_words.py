@@ -60,8 +60,8 @@ import functools
 import io
 
 import plans
-from plans.handout import handout
 from plans.i18n import term
+from review_handouts import built, built_pdf
 
 #: (example, positions, language) of the handouts the teacher reviewed
 HANDOUTS = {"quick-return": (12, "sr"), "linear-arm": (8, "bg"), "six-bar": (None, "en")}
@@ -70,14 +70,15 @@ HANDOUTS = {"quick-return": (12, "sr"), "linear-arm": (8, "bg"), "six-bar": (Non
 @functools.lru_cache(maxsize=None)
 def _built(name: str):
     positions, lang = HANDOUTS[name]
-    return handout(plans.load(example_path(name)), positions=positions, lang=lang, centres=True)
+    return built(name, positions, lang, centres=True)
 
 
 @functools.lru_cache(maxsize=None)
 def _page_texts(name: str) -> tuple[str, ...]:
     from pypdf import PdfReader
 
-    reader = PdfReader(io.BytesIO(_built(name).pdf()))
+    positions, lang = HANDOUTS[name]
+    reader = PdfReader(io.BytesIO(built_pdf(name, positions, lang, centres=True)))
     return tuple(page.extract_text() for page in reader.pages)
 
 

@@ -18,6 +18,7 @@ import pytest
 from plans.cli import main
 
 from accelerating_scenes import write_linear_arm_accelerating
+from review_handouts import built, drawn_sheet
 
 SVG = "{http://www.w3.org/2000/svg}"
 
@@ -35,10 +36,10 @@ def _arrows(ids, kind: str) -> list[str]:
 def drawn(tmp_path_factory):
     out = {}
     for example in ("linear-arm-accelerating", "six-bar"):
-        d = tmp_path_factory.mktemp(example)
         if example == "six-bar":
-            assert main(["draw", "--example", example, "-o", str(d)]) == 0
+            d = drawn_sheet(example)
         else:  # the linear-arm with a = 2 m/s² at its instant (the bundled example's a = 0 draws longer normals)
+            d = tmp_path_factory.mktemp(example)
             # at the k_a its sheet had chosen (the sheet's factor follows its text column's length: given here)
             assert main(["draw", str(write_linear_arm_accelerating(tmp_path_factory.mktemp("scene"))), "--k-a", "0.03", "-o", str(d)]) == 0
         out[example] = d
@@ -93,12 +94,10 @@ def test_a_page_legend_lists_every_kind_drawn():
 def test_a_coriolis_component_too_short_for_an_arrow_is_in_the_legend():
     """The Serbian quick-return's handout legend (positions 4 and 10): both Coriolis components are under 3 mm at the
     plate's k_a (0,29 and 2,34 mm), notes only; the legend still names the Coriolis component."""
-    import plans
     from plans.drawing.plan_drawing import SHORT_MM
     from plans.drawing.svgblocks import legend_svg
-    from plans.handout import handout
 
-    doc = handout(plans.load(plans.example_path("quick-return")), positions=12, lang="sr")
+    doc = built("quick-return", 12, "sr")
     plans_a = [r.graphical.acceleration_plan for r in doc.runs if r.index in doc.accelerations]
     coriolis = [v for p in plans_a for v in p.vectors if v.kind == "coriolis"]
     assert coriolis and all(v.length < SHORT_MM for v in coriolis)

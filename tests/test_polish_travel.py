@@ -23,6 +23,7 @@ import numpy as np
 import pytest
 
 from plans.cli import main
+from review_handouts import drawn_sheet
 
 SVG = "{http://www.w3.org/2000/svg}"
 
@@ -89,9 +90,8 @@ def test_the_ram_extremes_worked_here_are_the_lever_s_tangent_positions():
     assert -0.07 < lo < -0.06 and 0.45 < hi < 0.47
 
 
-def test_plans_draw_draws_the_slot_and_the_ram_guide_over_the_cycle(tmp_path):
-    assert main(["draw", "--example", "quick-return", "-o", str(tmp_path)]) == 0
-    _check_quick_return(tmp_path / "mechanism.svg")
+def test_plans_draw_draws_the_slot_and_the_ram_guide_over_the_cycle():
+    _check_quick_return(drawn_sheet("quick-return") / "mechanism.svg")
 
 
 def test_draw_positions_sheets_draw_the_slot_over_the_cycle(tmp_path):
@@ -117,9 +117,8 @@ def test_handout_drawings_draw_the_slot_over_the_cycle_and_the_plan_of_positions
     _check_quick_return(mechanism, ram=False)
 
 
-def test_the_scotch_yoke_slot_covers_the_crank_pin_over_a_turn(tmp_path):
-    assert main(["draw", "--example", "scotch-yoke", "-o", str(tmp_path)]) == 0
-    svg = tmp_path / "mechanism.svg"
+def test_the_scotch_yoke_slot_covers_the_crank_pin_over_a_turn():
+    svg = drawn_sheet("scotch-yoke") / "mechanism.svg"
     O, A = _centre(svg, "mech-pin-O"), _centre(svg, "mech-pin-A")
     per_metre = abs(A - O) / 0.1
     u = complex(0, -1)  # up the page (SVG y runs down)

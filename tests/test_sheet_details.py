@@ -10,15 +10,13 @@ import re
 
 import pytest
 
-from plans.cli import main
 from test_tables_readings import sheet_lines
+from review_handouts import drawn_sheet
 
 
 @pytest.fixture(scope="module")
-def six_bar_lines(tmp_path_factory):
-    out = tmp_path_factory.mktemp("sb") / "s.pdf"
-    assert main(["draw", "--example", "six-bar", "-o", str(out), "-q"]) == 0
-    return sheet_lines(out)
+def six_bar_lines():
+    return sheet_lines(drawn_sheet("six-bar", output="sheet.pdf"))
 
 
 def test_the_velocity_plans_detail_is_on_the_sheet(six_bar_lines):

@@ -17,6 +17,7 @@ from plans.cli import main
 from plans.positions import parse_positions
 from sheet_measure import SVG, groups, ink, plan_sizes
 from sheet_pages import by_kind, drawings, page_size, scales, text, words
+from review_handouts import drawn_sheet
 
 #: What a sheet must give its drawings [mm] (issue 11 §1), typed from the issue
 MECHANISM_MM = 100.0
@@ -35,10 +36,8 @@ TITLE_CORNER = (230.0, 267.0, 415.0, 292.0)
 
 
 @pytest.fixture(scope="module", params=plans.example_names())
-def sheet(request, tmp_path_factory):
-    out = tmp_path_factory.mktemp(request.param)
-    assert main(["draw", "--example", request.param, "-o", str(out)]) == 0
-    return request.param, (out / "sheet.svg").read_bytes()
+def sheet(request):
+    return request.param, (drawn_sheet(request.param) / "sheet.svg").read_bytes()
 
 
 def _disjoint(a, b, tol=0.0) -> bool:
@@ -83,13 +82,13 @@ def test_the_mechanism_and_the_plans_reach_their_sizes(sheet):
 
 
 @pytest.mark.parametrize("name, lang", [("linear-arm", "bg"), ("quick-return", "sr"), ("four-bar", "ru")])
-def test_the_sheets_the_review_found_small_reach_their_sizes_in_their_languages(name, lang, tmp_path):
+def test_the_sheets_the_review_found_small_reach_their_sizes_in_their_languages(name, lang):
     """Issue 20's sheet review: la-bg's velocity plan (pk 5.3 mm), qr-sr's two plans (~75 mm, the centre empty),
     fb-ru's velocity plan small in the lower left: each drawing at issue 11 §1's sizes in the reader's language too
     (whose text column is another height)."""
-    assert main(["draw", "--example", name, "--lang", lang, "-o", str(tmp_path / "page.svg")]) == 0
-    test_the_mechanism_and_the_plans_reach_their_sizes((name, (tmp_path / "page.svg").read_bytes()))
-    test_nothing_outside_the_frame_and_no_drawing_over_another_or_the_title_block((name, (tmp_path / "page.svg").read_bytes()))
+    svg = drawn_sheet(name, lang, "sheet.svg").read_bytes()
+    test_the_mechanism_and_the_plans_reach_their_sizes((name, svg))
+    test_nothing_outside_the_frame_and_no_drawing_over_another_or_the_title_block((name, svg))
 
 
 def test_nothing_outside_the_frame_and_no_drawing_over_another_or_the_title_block(sheet):
@@ -120,9 +119,8 @@ def test_given_scale_factors_are_kept_exactly(tmp_path):
     assert abs(centre(o) - centre(a)) == pytest.approx(0.15 / 0.01, abs=0.05)
 
 
-def test_the_rocker_limit_crank_is_larger_than_its_omega_arc_and_o_is_clear_of_the_epsilon_arrow(tmp_path):
-    assert main(["draw", "--example", "rocker-limit", "-o", str(tmp_path)]) == 0
-    root = by_kind((tmp_path / "sheet.svg").read_bytes())["mechanism"].root
+def test_the_rocker_limit_crank_is_larger_than_its_omega_arc_and_o_is_clear_of_the_epsilon_arrow():
+    root = by_kind((drawn_sheet("rocker-limit") / "sheet.svg").read_bytes())["mechanism"].root
     crank = ink(root, "mech-link-2")
     crank_mm = math.hypot(crank[2] - crank[0], crank[3] - crank[1])
     pin = ink(root, "mech-pin-O")
@@ -209,11 +207,10 @@ def test_every_example_s_twelve_position_sheets_fill_a3(twelve):
     assert [int(p.stem.split("-")[1]) for p in written] == solved, example
 
 
-def test_a_long_title_stays_inside_the_title_block(tmp_path):
+def test_a_long_title_stays_inside_the_title_block():
     """The Bulgarian linear-arm's title is longer than the title block's row at 10 pt: it is set smaller to fit the
     row (down to 6 pt), or its words wrap, inside the block either way."""
-    assert main(["draw", "--example", "linear-arm", "--lang", "bg", "-o", str(tmp_path / "page.pdf")]) == 0
-    pdf = (tmp_path / "page.pdf").read_bytes()
+    pdf = drawn_sheet("linear-arm", "bg", "sheet.pdf").read_bytes()
     title = plans.load(plans.example_path("linear-arm")).title_in("bg").split()
     placed = [(w, box) for w, box in words(pdf) if box[0] >= TITLE_CORNER[0] - 1.0 and box[1] >= 250.0]
     found = [box for w, box in placed if w in title]

@@ -65,6 +65,7 @@ def test_the_sliding_drivers_position_is_in_the_given_data():
 
 
 import pytest
+from review_handouts import drawn_sheet
 
 #: the title block's student fields as a course plate writes them (the words written out here, not read from i18n)
 STUDENT_FIELDS = {
@@ -144,16 +145,14 @@ def test_a_triangle_of_images_states_both_sides():
 
 
 @pytest.mark.parametrize("example, lang", [("six-bar", "en"), ("quick-return", "sr")])
-def test_the_scheme_is_in_the_sheets_top_left_corner(example, lang, tmp_path):
+def test_the_scheme_is_in_the_sheets_top_left_corner(example, lang):
     # one place for the scheme on every sheet, whatever its shape (the six-bar's tall one had its plans beside it and
     # stood in the middle of the left column; the quick-return's over its plans): the drawings' room starts at the text
     # area's top left corner (25 mm from the page's left edge, 10 mm from its top), the scheme 10.5 mm under it (its
     # name and k_l over it)
     import sheet_pages
-    from plans.cli import main
 
-    assert main(["draw", "--example", example, "--lang", lang, "-o", str(tmp_path / "sheet.svg"), "-q"]) == 0
-    placed = {d.kind: d for d in sheet_pages.drawings((tmp_path / "sheet.svg").read_bytes())}
+    placed = {d.kind: d for d in sheet_pages.drawings(drawn_sheet(example, lang, "sheet.svg").read_bytes())}
     mechanism = placed["mechanism"]
     assert abs(mechanism.x - 25.0) < 0.05 and abs(mechanism.y - (10.0 + 10.5)) < 0.05, (mechanism.x, mechanism.y)
     # the plans after it in reading order: to its right or under it, never above it or left of it

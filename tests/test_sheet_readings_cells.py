@@ -12,7 +12,7 @@ import subprocess
 
 import pytest
 
-from plans.cli import main
+from review_handouts import drawn_sheet
 
 pytestmark = pytest.mark.skipif(shutil.which("pdftotext") is None, reason="poppler's pdftotext reads the sheet")
 
@@ -20,9 +20,8 @@ _WORD = re.compile(r'<word xMin="([\d.]+)" yMin="([\d.]+)" xMax="([\d.]+)" yMax=
 
 
 @pytest.mark.parametrize("example, lang", [("six-bar", "en"), ("quick-return", "sr")])
-def test_no_word_of_a_readings_row_over_another(tmp_path, example, lang):
-    pdf = tmp_path / "s.pdf"
-    assert main(["draw", "--example", example, "--lang", lang, "-o", str(pdf), "-q"]) == 0
+def test_no_word_of_a_readings_row_over_another(example, lang):
+    pdf = drawn_sheet(example, lang, "sheet.pdf")
     text = subprocess.run(["pdftotext", "-bbox", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
     words = [(float(a), float(b), float(c), float(d), w) for a, b, c, d, w in _WORD.findall(text)]
     # the readings rows: those holding a "÷" (a link's length divides the reading: ω, ε) and their neighbours
@@ -44,9 +43,8 @@ def test_no_word_of_a_readings_row_over_another(tmp_path, example, lang):
     ("quick-return", "sr", "Кратке дужи", False),  # its plans have no note under them at the sheet's factors
     ("six-bar", "en", "Short segments and near-coincident directions", True),  # a′n₁ = 0.25 mm, ∠(πm′) ∠(πa′)
 ])
-def test_the_legend_explains_the_notes_under_a_plan_only_where_there_are_some(tmp_path, example, lang, words, said):
+def test_the_legend_explains_the_notes_under_a_plan_only_where_there_are_some(example, lang, words, said):
     # the review of the quick-return sheet: "the note 'Кратке дужи … дати су испод плана' refers to nothing"
-    pdf = tmp_path / "s.pdf"
-    assert main(["draw", "--example", example, "--lang", lang, "-o", str(pdf), "-q"]) == 0
+    pdf = drawn_sheet(example, lang, "sheet.pdf")
     text = " ".join(subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True, check=True).stdout.split())
     assert (words in text) == said

@@ -39,6 +39,7 @@ def test_the_drivers_given_acceleration_prints_as_given():
 
 import pytest
 from plans.scene import loads
+from review_handouts import drawn_sheet
 
 
 def _crank_one_slider_crank():
@@ -140,16 +141,13 @@ def _font_sizes(pdf: bytes, word: str) -> list[float]:
     return sizes
 
 
-def test_the_quick_return_sheet_sets_its_text_larger_and_keeps_its_drawings(tmp_path):
+def test_the_quick_return_sheet_sets_its_text_larger_and_keeps_its_drawings():
     # the Serbian quick-return sheet: its tables were set at 8 pt with the bottom right quarter empty; now the column
     # takes that room: the comparison table's header at ≥ 9.5 pt (never under 7 anywhere in the column), and the
     # drawings at the reviewed sheet's factors or larger (k_l 0.005 m/mm, k_v 0.012 (m/s)/mm, k_a 0.05 (m/s²)/mm)
     import sheet_pages
 
-    from plans.cli import main
-
-    assert main(["draw", "--example", "quick-return", "--lang", "sr", "-o", str(tmp_path / "sheet.pdf"), "-q"]) == 0
-    pdf = (tmp_path / "sheet.pdf").read_bytes()
+    pdf = drawn_sheet("quick-return", "sr", "sheet.pdf").read_bytes()
     header = _font_sizes(pdf, "аналитички")
     # (≥ 9 pt: 9.5 was reached while the readings tables, in half columns, ran a cell over its value — '(l_AC) 1,652 rad/s';
     # each as wide as it needs, the column is set at 9.2 pt; the review's finding was 8 pt and an empty quarter)
@@ -161,17 +159,14 @@ def test_the_quick_return_sheet_sets_its_text_larger_and_keeps_its_drawings(tmp_
     assert k["k_l"] <= 0.005 and k["k_v"] <= 0.012 and k["k_a"] <= 0.05, k
 
 
-def test_the_four_bar_plans_are_balanced(tmp_path):
+def test_the_four_bar_plans_are_balanced():
     # the Russian four-bar sheet drew its velocity plan 200 mm long (pa at k_v 0.004) beside an acceleration plan
     # whose longest vector is 67 mm: neither plan's drawing is now more than 1.6 times the other's (diagonal)
     import math
 
     import sheet_pages
 
-    from plans.cli import main
-
-    assert main(["draw", "--example", "four-bar", "--lang", "ru", "-o", str(tmp_path / "sheet.svg"), "-q"]) == 0
-    placed = sheet_pages.by_kind((tmp_path / "sheet.svg").read_bytes())
+    placed = sheet_pages.by_kind(drawn_sheet("four-bar", "ru", "sheet.svg").read_bytes())
     v, a = (math.hypot(placed[k].width, placed[k].height) for k in ("velocity", "acceleration"))
     assert max(v, a) <= 1.6 * min(v, a), (v, a)
     assert min(v, a) >= 60.0  # and neither small

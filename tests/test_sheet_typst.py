@@ -15,6 +15,7 @@ import pytest
 import plans
 from plans.cli import main
 from sheet_pages import by_kind, drawings, english, overlap, page_count, page_size, scales, text, words
+from review_handouts import drawn_sheet
 
 pytestmark = pytest.mark.filterwarnings("ignore")
 
@@ -23,12 +24,9 @@ A3 = (420.0, 297.0)
 
 
 @pytest.fixture(scope="module")
-def four_bar(tmp_path_factory):
+def four_bar():
     """The four-bar's sheet in Russian, as SVG and PDF."""
-    d = tmp_path_factory.mktemp("four-bar")
-    assert main(["draw", "--example", "four-bar", "--lang", "ru", "-o", str(d / "sheet.svg")]) == 0
-    assert main(["draw", "--example", "four-bar", "--lang", "ru", "-o", str(d / "sheet.pdf")]) == 0
-    return (d / "sheet.svg").read_bytes(), (d / "sheet.pdf").read_bytes()
+    return drawn_sheet("four-bar", "ru", "sheet.svg").read_bytes(), drawn_sheet("four-bar", "ru", "sheet.pdf").read_bytes()
 
 
 @pytest.fixture(scope="module")

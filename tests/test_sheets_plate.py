@@ -14,6 +14,7 @@ from plans.i18n import term
 from plans.positions import at_page_precision, run_positions
 
 from sheet_pages import by_kind, embedded_text, scales, text
+from review_handouts import drawn_sheet
 
 
 @pytest.fixture(scope="module")
@@ -120,14 +121,10 @@ def test_the_readings_and_the_comparison_print_one_number_per_quantity(slider_cr
 
 
 @pytest.fixture(scope="module")
-def six_bar_sheets(tmp_path_factory):
-    from plans.cli import main
-
-    out = tmp_path_factory.mktemp("six-bar")
+def six_bar_sheets():
     pages = {}
     for lang in ("en", "sr"):
-        assert main(["draw", "--example", "six-bar", "--lang", lang, "-o", str(out / f"{lang}.pdf")]) == 0
-        pages[lang] = " ".join(unicodedata.normalize("NFKC", text((out / f"{lang}.pdf").read_bytes())).split())
+        pages[lang] = " ".join(unicodedata.normalize("NFKC", text(drawn_sheet("six-bar", lang, "sheet.pdf").read_bytes())).split())
     return pages
 
 

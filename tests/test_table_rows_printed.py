@@ -17,7 +17,7 @@ import subprocess
 import pytest
 
 import plans
-from plans.handout import handout
+from review_handouts import built_pdf
 
 SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 NUMBER = r"−?\d+(?:[.,]\d+)?"
@@ -49,9 +49,8 @@ def _decimals(cell: str) -> int:
 
 @pytest.fixture(scope="module")
 def rows(tmp_path_factory):
-    scene = plans.load(plans.example_path("six-bar"))
     path = tmp_path_factory.mktemp("rows") / "h.pdf"
-    path.write_bytes(handout(scene, centres=True).pdf())  # as `plans handout --example six-bar --centres`
+    path.write_bytes(built_pdf("six-bar", centres=True))  # as `plans handout --example six-bar --centres`
     text = subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, text=True, check=True).stdout
     import unicodedata
 

@@ -23,6 +23,7 @@ import plans
 from plans.cli import main
 from plans.drawing.plan_drawing import vectors_drawn
 from plans.positions import at_page_precision
+from review_handouts import built, built_pdf, drawn_sheet
 
 SVG = "{http://www.w3.org/2000/svg}"
 EXAMPLES = plans.example_names()
@@ -146,16 +147,15 @@ def svg_vectors(path) -> dict[str, complex]:
 
 
 @pytest.fixture(scope="module", params=EXAMPLES)
-def drawn(request, tmp_path_factory):
+def drawn(request):
     name = request.param
-    out = tmp_path_factory.mktemp(name)
-    assert main(["draw", "--example", name, "-o", str(out)]) == 0
-    assert main(["draw", "--example", name, "-o", str(out / "page.pdf")]) == 0  # the same sheet, its words readable
+    out = drawn_sheet(name)
+    page = drawn_sheet(name, output="sheet.pdf")  # the same sheet, its words readable
     scene = plans.load(plans.example_path(name))
     graphical = plans.construct(at_page_precision(scene))  # the solution the files drew, for identical vectors drawn once
     return {
         "name": name,
-        "sheet": sheet_lines(out / "page.pdf"),
+        "sheet": sheet_lines(page),
         "velocity": (out / "velocity.svg", _texts(out / "velocity.svg")),
         "acceleration": (out / "acceleration.svg", _texts(out / "acceleration.svg")) if (out / "acceleration.svg").exists() else None,
         "graphical": graphical,
@@ -374,10 +374,8 @@ def test_a_handout_reads_the_plans_and_names_the_drawn_vectors():
 
     from pypdf import PdfReader
 
-    from plans.handout import handout
-
-    doc = handout(plans.load(plans.example_path("six-bar")))
-    text = unicodedata.normalize("NFKC", " ".join(page.extract_text() for page in PdfReader(io.BytesIO(doc.pdf())).pages))
+    doc = built("six-bar")
+    text = unicodedata.normalize("NFKC", " ".join(page.extract_text() for page in PdfReader(io.BytesIO(built_pdf("six-bar"))).pages))
     assert "Velocity plan: readings" in text and "Acceleration plan: readings" in text
     joined = "".join(text.split())
     assert "E5E6" in joined and "slider" not in joined
