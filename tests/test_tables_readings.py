@@ -97,6 +97,9 @@ def results_table(lines: list[str]) -> dict[tuple[str, str], tuple[str, str, str
     k = next(j for j in range(k, len(lines)) if lines[j].startswith("quantity")) + 1  # past the header row
     buffer = ""
     for line in lines[k:]:
+        if line.startswith("quantity"):  # the header again over the second half of a table set in two
+            buffer = ""
+            continue
         candidate = f"{buffer} {line}".strip()
         m = _RESULT.fullmatch(candidate)
         if m:
