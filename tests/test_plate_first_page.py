@@ -101,7 +101,11 @@ def test_a_formula_does_not_break():
 
     assert formula_parts("при ω₂ = 6 rad/s, t = 0,69 s") == [("при ", False), ("ω₂ = 6 rad/s", True), (", ", False), ("t = 0,69 s", True)]
     assert formula_parts("$k_v$ = 0,02 (m/s)/mm; x") == [("$k_v$ = 0,02 (m/s)/mm", True), ("; x", False)]
-    assert formula_parts("$a = b$ c") == [("$a = b$ c", False)]
+    # math standing alone: a short formula whole too (the Bulgarian centres rule broke "ω_k =" / "±v_A / P₁ₖP₂ₖ"),
+    # a long one (over 60 characters) as Typst breaks math
+    assert formula_parts("$a = b$ c") == [("$a = b$", True), (" c", False)]
+    long = "$" + " + ".join(f"x_{n}" for n in range(12)) + " = y$"
+    assert formula_parts(long + " c") == [(long + " c", False)]
     # a number without a unit is a formula too (|a_A| = 0 was broken in a Bulgarian diagram's note); a number run into
     # what follows (331,3°) is left as it is
     assert formula_parts("v = 0 over the cycle") == [("v = 0", True), (" over the cycle", False)]

@@ -184,7 +184,9 @@ def test_position_sheets_fill_a3_too(example, count, tmp_path):
 #: the round factor that fits the largest leaves the smallest of these a little short of issue 11 §1's sizes
 SHORT_AT_TWELVE = {"quick-return": "the largest acceleration plan's vector short of 60 mm (k_a made coarser for a tall plan)",
                    "slider-crank": "the mechanism at one position 98 mm across < 100 mm",
-                   "wedge": "the mechanism at position 0 75 mm across < 100 mm"}
+                   "wedge": "the mechanism at position 0 75 mm across < 100 mm",
+                   "linear-arm": "the text column (equations placing every image, rows padded 1.5 mm) does not fit A3 even "
+                                 "at 0.85 of its size: the sheets go to A2"}
 
 
 @pytest.fixture(scope="module", params=[pytest.param(name, marks=pytest.mark.xfail(strict=True, reason=SHORT_AT_TWELVE[name]))

@@ -157,10 +157,9 @@ def fitted_line(content: str, size_pt: float, least_pt: float = 8.0) -> str:
 _SUBSCRIPTED = re.compile(r"\$[^$]*\$|(?<![\w\\])([A-Za-zα-ωΑ-Ω])_([A-Za-z0-9]+)(?!\w)")
 
 
-#: the equations' rows' padding above and below, at the set size: 1.5 mm on a handout's page; 1.8 mm on a sheet, in em
-#: so that it follows the text where a sheet's column is set smaller or larger (reduced to 0.85 it keeps the handout's
-#: 1.5 mm: a double underline's second rule, a fixed 1.7 pt under its row, clears the arrows of the row under it)
-ROW_INSET_MM = {"page": 1.5, "sheet": 1.8}
+#: the equations' rows' padding above and below [mm], on handout pages and sheets alike, whatever size a sheet sets its
+#: column at (a double underline's second rule, a fixed 1.7 pt under its row, clears the arrows of the row under it)
+ROW_INSET_MM = 1.5
 
 
 class Document:
@@ -387,7 +386,7 @@ class Document:
         self.body.append(f"#block({'sticky: true' if flow else 'breakable: false'})[#heading(level: 2)[{self.words(heading)}]\n"
                          + (f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]" if note else "")
                          + ("]\n" if flow else "\n\n")
-                         + f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: {ROW_INSET_MM['page' if flow else 'sheet'] * 72 / 25.4 / TEXT_PT:.4f}em), align: left + horizon,\n  "
+                         + f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: {ROW_INSET_MM}mm), align: left + horizon,\n  "
                          + ",\n  ".join(rows) + ")]" + ("\n" if flow else "]\n"))
 
     def table_code(self, rows, aligns: str = "(left, right, right, right, right)") -> str:
