@@ -314,12 +314,10 @@ def _texts(doc: Document, graphical, *, table, formula, assembly, legend, headin
             doc.line(f"{term('structural_formula', lang)}:  {formula_words(formula)}", size=TEXT_PT)
         if assembly:
             doc.line(f"{term('assembly', lang)}: " + ";  ".join(assembly), size=SMALL_PT + 0.5)
-        noted = False  # the note on the underlines over the first equations only: one column reads as one
         for plan in (graphical.velocity_plan, graphical.acceleration_plan):
             if plan is not None and any(step.equations for step in plan.steps):
                 doc.equations(f"{term('vector_equations', lang)}: {term(plan.kind + '_plan', lang).lower()}", plan.steps, name,
                               similar=_placements(graphical, plan.kind))
-                noted = True
         readings = [doc.table_markup(heading, rows, "(left, left, right, left, right)") for heading, rows in _readings(doc, graphical, lang)]
         if len(readings) == 2:  # the readings of the two plans side by side, each as wide as it needs (its cells do not
             # break: a factor '× 0.025 ÷ 0.6765 (l_EB)' in a half column ran over its value), else one under the other
@@ -687,8 +685,8 @@ def enlarged(markup: str, factor: float) -> str:
 #: 10–12 pt), the largest first: the largest that still fits over the drawings placed under it and the title block
 TEXT_SCALES = (1.25, 1.2, 1.15, 1.1, 1.05)
 #: how far a text column too long for A3 at its set size is reduced before the sheet goes to a larger paper (the
-#: equations' 9.5 pt to 8.1 pt, the tables' 8 pt to 6.8 pt at 0.85: the linear-arm's sheets, whose equations place
-#: every image, at 12 positions)
+#: equations' 9.5 pt to 8.1 pt, the tables' 8 pt to 6.8 pt at 0.85: the linear-arm's sheet, whose equations place
+#: every image)
 TEXT_REDUCED = (0.95, 0.9, 0.85)
 
 
