@@ -339,9 +339,8 @@ class Document:
                 column = (column + 1) % columns
         self.body.append(f"#grid(columns: {columns}, column-gutter: {GUTTER}mm, row-gutter: 4mm, align: top + left,\n  " + ",\n  ".join(items) + ")\n")
 
-    def equations(self, heading: str, steps, name, new_page: bool = False, similar=None, flow: bool = False, note: bool = True) -> None:
-        """The vector equations of the plans' steps under *heading*, with the note on the underlines (*note*: False
-        where the same column has given it over the equations before): one block,
+    def equations(self, heading: str, steps, name, new_page: bool = False, similar=None, flow: bool = False) -> None:
+        """The vector equations of the plans' steps under *heading*, with the note on the underlines: one block,
         never parted from its heading (*flow*: the rows flow on over a page's end, a group's whole, the heading kept
         with the first); *similar*: step index -> the rows placing the images no step places
         (:func:`plans.pages.equations.placement_rows`; a text: a proportion by similarity) once that step is drawn,
@@ -384,7 +383,7 @@ class Document:
         # the heading and the note kept with the table's first rows; the rows flow on over a page's end (a long set
         # of equations fills the page it starts on)
         self.body.append(f"#block({'sticky: true' if flow else 'breakable: false'})[#heading(level: 2)[{self.words(heading)}]\n"
-                         + (f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]" if note else "")
+                         + f"#text(size: {SMALL_PT}pt, style: \"italic\")[{text(term('underlines', self.lang))}]"
                          + ("]\n" if flow else "\n\n")
                          + f"#text(size: {TEXT_PT}pt)[#table(columns: (auto, auto, 1fr), stroke: none, inset: (x: 1.5mm, y: {ROW_INSET_MM}mm), align: left + horizon,\n  "
                          + ",\n  ".join(rows) + ")]" + ("\n" if flow else "]\n"))
