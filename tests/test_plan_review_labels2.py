@@ -65,11 +65,6 @@ def _drawn(doc):
             yield r.index, r.graphical.acceleration_plan
 
 
-#: Left as they are (reported): linear-arm position 2's pole label "π, d′, q′, a′, f′", 24 mm long on a 50 mm plan, finds
-#: no clear place within 8 mm of the pole inside the plan; its last piece lies on the figure of link 3.
-KNOWN_CROSSED = {("linear-arm", 2, "acceleration"): {"acc-pole-label", "acc-image-d", "acc-image-q", "acc-image-a", "acc-image-f"}}
-
-
 @pytest.mark.parametrize("name", [n for n, _, _ in REVIEWED])
 def test_no_label_is_crossed_by_a_line_and_leaders_stop_short(handouts, name):
     doc, lang = handouts[name]
@@ -80,8 +75,6 @@ def test_no_label_is_crossed_by_a_line_and_leaders_stop_short(handouts, name):
         plt.close(fig)
         for text, b in labels:
             for gid, line in lines:
-                if (name, index, plan.kind) in KNOWN_CROSSED and text.split(":")[0] in KNOWN_CROSSED[(name, index, plan.kind)]:
-                    continue
                 assert not line.intersects(b), f"{name} {index} {plan.kind}: {gid} crosses the label {text!r}"
                 if "leader" in gid:
                     # a leader (a pen's width and a clear gap) short of every label, its own included

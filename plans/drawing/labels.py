@@ -172,6 +172,7 @@ def place_label(
     by_box: bool = False,
     leader_ok: bool = False,
     clear_leaders: bool = False,
+    beyond: bool = False,
 ) -> list:
     """Place one label (several names written ``"p, o, d"``) near *anchor*.
 
@@ -221,6 +222,12 @@ def place_label(
         rings of *gaps*), so the label goes where its leader is clear (the
         mechanism's labels).  Off, leaders are not looked at (the plans'
         labels, placed as they were).
+    beyond : bool
+        Where every place near the point within the drawing as drawn so far
+        lies across a line, the nearest clear place beyond the drawing's edge
+        (within :data:`FREE_GAP_MM`, its leader crossing nothing) is taken
+        (the plans' labels: a long label of coincident images beside a narrow
+        plan, linear-arm position 2's "π, d′, q′, a′, f′").
 
     Returns
     -------
@@ -251,6 +258,7 @@ def place_label(
     best = None  # (score, centre, gap, clearance (0 when astray), clearance)
     bounds = sketch.bounds
     free = None  # the nearest place, within the drawing as drawn so far (its scale kept), clear of every mark, its own point's or joined to it by a leader: (cost, centre, gap)
+    free_out = None  # the same beyond the drawing's edge, its leader crossing nothing (``beyond``)
     order = 0
     while rings:
         ring = rings.pop(0)
@@ -294,11 +302,14 @@ def place_label(
             led = leader_from is not None and gap >= leader_from
             inside = bounds.empty or (bounds.xmin - 1.0 <= center.real - w / 2 and center.real + w / 2 <= bounds.xmax + 1.0
                                       and bounds.ymin - 1.0 <= center.imag - h / 2 and center.imag + h / 2 <= bounds.ymax + 1.0)
-            if c >= CLEAR_MM / 2 and inside and gap <= FREE_GAP_MM and (led or not astray) and (free is None or gap + 0.15 * turn < free[0]):
+            if c >= CLEAR_MM / 2 and gap <= FREE_GAP_MM and (led or not astray) and (free is None or gap + 0.15 * turn < free[0]):
                 # (a free place gets a leader: one across a mark costs)
-                cost = gap + 0.15 * turn + (_leader_cost(_leader_crossings(sketch, anchor, center, w, h)) if clear_leaders else 0.0)
-                if free is None or cost < free[0]:
-                    free = (cost, center, gap)
+                if inside:
+                    cost = gap + 0.15 * turn + (_leader_cost(_leader_crossings(sketch, anchor, center, w, h)) if clear_leaders else 0.0)
+                    if free is None or cost < free[0]:
+                        free = (cost, center, gap)
+                elif beyond and free is None and (free_out is None or gap + 0.15 * turn < free_out[0]) and not _leader_crossings(sketch, anchor, center, w, h):
+                    free_out = (gap + 0.15 * turn, center, gap)
             if astray and leader_ok and led:
                 astray = False
             score = 4.0 * min(c, CLEAR_MM) - (OVERLAP_MM if c <= 0.0 else 0.0) - (OVERLAP_MM if astray else 0.0) - gap - 0.15 * turn - 1e-6 * order
@@ -317,6 +328,8 @@ def place_label(
             rings.append(ring_at(extra))
             if leader_from is None:
                 leader_from = extra
+    if free is None and beyond:
+        free = free_out
     if best[4] <= 0.0 and free is not None:
         # the best place lies across a line (every place near enough to read as its point's is covered): rather the
         # nearest clear place, with a leader line (linear-arm position 5: "π, d′, q′, a′, f₃′" over four lines from the pole)

@@ -571,7 +571,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             mine = [where[gid] for _, gid in pieces if gid in where]
             rivals = tuple(q for q in where.values() if all(abs(q - m) > SAME_MM for m in mine))
             place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM, rivals=rivals,
-                        by_box=True, leader_ok=i in led)
+                        by_box=True, leader_ok=i in led, beyond=True)
             drawn = sketch.obstacles[-1].buffer(-LABEL_SPACE_MM, join_style=2)  # the label's own box
             clashes += [(i, j) for j, other in boxes if drawn.intersection(other).area > LABEL_CLASH_MM2]
             boxes.append((i, drawn))
