@@ -73,7 +73,7 @@ def test_linear_arm_driver_steps():
     g = _steps("linear-arm", 8, 1)
     first = [step_lines(p.steps[0])[0][0] for p in (g.velocity_plan, g.acceleration_plan)]
     assert [e.partition(" = ")[0] for e in first] == ["arrow(v)_(A)", "arrow(a)_(A)"]
-    assert all("underline" in e.partition(" = ")[2] for e in first)
+    assert "underline" in first[0].partition(" = ")[2] and first[1].partition(" = ")[2] == "0"  # constant speed: a_A = 0
 
 
 def test_quick_return_driver_line_and_modulus():
@@ -205,3 +205,17 @@ def test_the_drivers_tangential_component_with_epsilon_given_is_known_twice():
     line = equation_math("a_A = a^n_AO + a^t_AO", known={"a^n_AO", "a^t_AO"},
                          condition="a^n_AO ∥ AO, ω2²·OA; a^t_AO ⊥ OA, |ε2|·OA")
     assert line.endswith(" + " + twice(vector_math("a", "t", "AO"))), line
+
+
+def test_a_driver_at_constant_speed_is_said_to_have_no_acceleration():
+    """The bundled linear-arm's slide runs at constant speed (domain.md §10): its step says a_A = 0, nothing underlined
+    (not "a_A = a" with a twice-underlined a that is zero); the same slide given a = 2 m/s² keeps its given term."""
+    from accelerating_scenes import linear_arm_accelerating
+
+    steady = run_positions(load(example_path("linear-arm")), 4).runs[1].graphical.acceleration_plan.steps[0]
+    assert [e for e, _ in step_lines(steady)] == ["arrow(a)_(A) = 0"]
+    from plans.graphical.construct import construct
+
+    given = construct(linear_arm_accelerating()).acceleration_plan.steps[0]  # at the scene's instant, a = 2 m/s²
+    assert [e for e, _ in step_lines(given)] == ["arrow(a)_(A) = " + twice("a")]
+    assert [e for e, _ in step_lines(construct(load(example_path("linear-arm"))).acceleration_plan.steps[0])] == ["arrow(a)_(A) = 0"]

@@ -134,9 +134,11 @@ def _translation(ctx: Construction, plan, value: float, symbol: str) -> Motion:
     image = value * line.direction / plan.k0
     for name in _linear_points(ctx):
         plan.place(plan.label(name), image, name)
+    # a zero (a constant-speed driver's acceleration) is said as it is: a_A = 0, no direction to give
+    equation = f"{symbol}_{driver.point} = 0" if value == 0.0 else f"{symbol}_{driver.point} = {symbol} (∥ {FRAME}.{driver.guide})"
     plan.step(
         "driver",
-        (f"{symbol}_{driver.point} = {symbol} (∥ {FRAME}.{driver.guide})",),
+        (equation,),
         [plan.absolute(driver.point)],
         [],
         [],

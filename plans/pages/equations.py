@@ -157,6 +157,8 @@ def equation_math(equation: str, known=(), found=(), name=lambda word: word, con
         return condition_math(equation, name)
     known = set(known)  # a vector the step knows in full stays twice, whatever direction its condition repeats
     found = set(found) | (direction_only(condition) - known)  # (the driver's a^t_AO ⊥ OA with ε₂ given: twice)
+    if rhs.strip() == "0":  # a zero (a constant-speed driver's a_A = 0): nothing to underline
+        return f"{term_math(lhs, name)} = 0"
     if not any(VECTOR.fullmatch(t.strip()) for t in rhs.split(" + ")):  # a driver's equation: the right side given in full
         return f"{term_math(lhs, name)} = {twice(condition_math(rhs.strip(), name))}"
 
