@@ -243,7 +243,7 @@ def build_parser() -> argparse.ArgumentParser:
     handout.add_argument("--centres", action="store_true", help="a page more per position: the instant centres (Kennedy's theorem) and the velocities from them against analytic")
     handout.add_argument("--accelerations", type=_accelerations, metavar="WHICH",
                          help="the positions whose acceleration plans are drawn: 'all' or numbers such as 0,6 "
-                              "(default: two, the middle of the working and of the idle stroke)")
+                              "(default: two, one of the working and one of the idle stroke, each nearest its middle where the plan does not collapse onto a line)")
     handout.add_argument("--scales", choices=("plate", "per-position"), default="plate",
                          help="plate (default): one k_l, k_v, k_a over the whole handout; per-position: k_v, k_a chosen for each position")
     handout.add_argument("--forces", action="store_true", help="the kinetostatic pages per position: free bodies, force plans, Joukowski's lever (the scene needs masses or loads)")

@@ -128,7 +128,8 @@ def write_handout(
         A page of instant centres (Kennedy's theorem) for every position.
     accelerations : None, "all" or list of int
         The positions whose acceleration plans are drawn: by default two, one
-        of the working and one of the idle stroke (the middle of each).
+        of the working and one of the idle stroke (each the position nearest
+        the stroke's middle whose plan does not collapse onto a line).
     scales : str
         ``"plate"`` (default): one k_v and one k_a for the whole handout;
         ``"per-position"``: each position's own (and the pages say so).

@@ -58,6 +58,12 @@ ORDER = ("data", "positions", "velocity-equations", "velocity-plans", "accelerat
          "tables", "loops", "diagrams", "forces", "centres")
 #: How many acceleration plans a handout draws unless asked: one of the working stroke, one of the idle.
 ACCELERATIONS_DEFAULT = 2
+#: A stroke's acceleration plan is chosen among its positions this far into it (not at a dead centre, where
+#: components vanish)...
+STROKE_INNER = (0.15, 0.85)
+#: ...among those whose plan reads at least this share as well as the stroke's best (:func:`plan_readability`), the
+#: one nearest the stroke's middle.
+READABLE_SHARE = 0.5
 
 # the text area of the handout's A4 page [mm]
 TEXT_WIDTH, TEXT_HEIGHT = A4_PORTRAIT.text_width, A4_PORTRAIT.text_height
@@ -172,12 +178,26 @@ def stroke_phases(run) -> dict[int, tuple[str, float]]:
     return out
 
 
+def plan_readability(plan) -> float:
+    """How well a plan's construction reads [1]: its shortest component (relative, normal, tangential, Coriolis) over
+    its longest vector; 1 for a plan of absolute vectors alone.  Near 0 the plan collapses onto a line and its
+    components cannot be measured (the quick-return's lever upright at mid-stroke: π a₄′ along π d′, the Coriolis
+    component 0.003 of the plan)."""
+    longest = max((v.value for v in plan.vectors), default=0.0)
+    components = [v.value for v in plan.vectors if v.kind != "absolute"]
+    if not components or longest <= 0.0:
+        return 1.0
+    return min(components) / longest
+
+
 def choose_accelerations(run, asked) -> list[int]:
     """The indices of the positions whose acceleration plans are drawn.
 
-    *asked*: ``"all"``, a list of indices, or None — then two: the position
-    nearest the middle of the working stroke and the one nearest the middle
-    of the idle stroke (:func:`stroke_phases`; without them, the strokes told
+    *asked*: ``"all"``, a list of indices, or None — then two: one of the
+    working stroke and one of the idle stroke (:func:`stroke_phases`), each the
+    position nearest the stroke's middle among those whose plan reads
+    (:data:`STROKE_INNER`, :data:`READABLE_SHARE`, :func:`plan_readability`:
+    not where the plan collapses onto a line); without them, the strokes told
     apart by the sense of the output's motion, the working one the longer
     run of positions); one of each third when the output never turns back,
     and for a sliding driver (its cycle is its stroke, one way: no idle stroke).
@@ -204,8 +224,11 @@ def choose_accelerations(run, asked) -> list[int]:
         chosen = []
         for stroke in ("working", "idle"):
             here = [r for r in solved if phases.get(r.index, ("", 0))[0] == stroke]
-            if here:
-                chosen.append(min(here, key=lambda r: abs(phases[r.index][1] - 0.5)).index)
+            inner = [r for r in here if STROKE_INNER[0] <= phases[r.index][1] <= STROKE_INNER[1]] or here
+            if inner:
+                best = max(plan_readability(r.graphical.acceleration_plan) for r in inner)
+                readable = [r for r in inner if plan_readability(r.graphical.acceleration_plan) >= READABLE_SHARE * best]
+                chosen.append(min(readable, key=lambda r: abs(phases[r.index][1] - 0.5)).index)
         if len(chosen) == 2:
             return sorted(chosen)
     plus = [r for r in solved if _output_sense(r) > 0]
