@@ -900,16 +900,11 @@ TERMS: dict[str, dict[str, str]] = {
     "from_plans": {"en": "plan", "sr": "план", "ru": "план", "bg": "план", "sl": "načrt"},
     "from_analytic": {"en": "analyt.", "sr": "аналит.", "ru": "аналит.", "bg": "аналит.", "sl": "analit."},
     "diagram_error_note": {
-        "en": "δ: error against the analytic value, in % of its largest magnitude over the positions "
-              "(a per cent of the value itself is infinite where it passes through zero)",
-        "sr": "δ: грешка према аналитичкој вредности, у % њене највеће апсолутне вредности у положајима "
-              "(у % саме вредности била би бесконачна где она пролази кроз нулу)",
-        "ru": "δ: погрешность относительно аналитического значения, в % от его наибольшей величины по положениям "
-              "(в % от самого значения она бесконечна там, где оно проходит через нуль)",
-        "bg": "δ: грешка спрямо аналитичната стойност, в % от най-голямата ѝ големина в положенията "
-              "(в % от самата стойност тя е безкрайна там, където стойността минава през нула)",
-        "sl": "δ: napaka glede na analitično vrednost, v % njene največje absolutne vrednosti v legah "
-              "(v % same vrednosti bi bila neskončna, kjer vrednost gre skozi nič)",
+        "en": "δ: error against the analytic value, in % of its largest magnitude over the positions",
+        "sr": "δ: грешка према аналитичкој вредности, у % њене највеће апсолутне вредности у положајима",
+        "ru": "δ: погрешность относительно аналитического значения, в % от его наибольшей величины по положениям",
+        "bg": "δ: грешка спрямо аналитичната стойност, в % от най-голямата ѝ големина в положенията",
+        "sl": "δ: napaka glede na analitično vrednost, v % njene največje absolutne vrednosti v legah",
     },
     "method_of_tangents": {
         "en": "method of tangents",

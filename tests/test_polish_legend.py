@@ -97,7 +97,7 @@ def test_a_coriolis_component_too_short_for_an_arrow_is_in_the_legend():
     from plans.drawing.plan_drawing import SHORT_MM
     from plans.drawing.svgblocks import legend_svg
 
-    doc = built("quick-return", 12, "sr")
+    doc = built("quick-return", 12, "sr", accelerations=(4, 10))  # (the review's positions: the lever upright)
     plans_a = [r.graphical.acceleration_plan for r in doc.runs if r.index in doc.accelerations]
     coriolis = [v for p in plans_a for v in p.vectors if v.kind == "coriolis"]
     assert coriolis and all(v.length < SHORT_MM for v in coriolis)

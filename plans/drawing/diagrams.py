@@ -403,7 +403,12 @@ def _panel(series, valid, lang: str, unit: str, extra_notes=()) -> _Panel:
         if float(np.ptp(values)) <= 1e-9 * scale:
             value = float(values[0]) if abs(float(values[0])) > 1e-12 * scale else 0.0
             # (no-break spaces: a note wrapped into the legend's column never breaks inside "|a_A| = 0")
-            notes.append(f"{name}\u00a0=\u00a0{_stated(value, lang)}{(chr(0xa0) + unit) if unit and value else ''}")
+            if unit == "°":
+                # a link that does not turn: its angle is its own frame's, not a line's on the page ("φ₂ = 0" was read
+                # against the linear-arm's arm AF drawn at 56°), so it is said constant
+                notes.append(f"{name}\u00a0=\u00a0const")
+            else:
+                notes.append(f"{name}\u00a0=\u00a0{_stated(value, lang)}{(chr(0xa0) + unit) if unit and value else ''}")
             continue
         for curve in curves:
             other = curve[1]

@@ -561,45 +561,59 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
     # every dot of the plan: a label stands nearer its own point than any other (it reads as that point's)
     where = {"pole-label": 0j} | {f"image-{name}": z for name, z in images.items()} | {f"end-{label}": z for z, _, label in ends}
 
-    def place_labels(order: list[int], led: frozenset = frozenset()) -> list[tuple[int, int]]:
-        """Place the groups' labels in *order* (those in *led* may stand off with a leader); the pairs (later, earlier)
-        whose boxes overlap."""
+    def place_labels(order: list[int], led: frozenset = frozenset(), clear: bool = False) -> tuple[list[tuple[int, int]], bool]:
+        """Place the groups' labels in *order* (those in *led* may stand off with a leader; *clear*: where the leader
+        crosses no mark); the pairs (later, earlier) whose boxes overlap, and whether a leader runs across a label."""
         boxes: list[tuple[int, object]] = []
+        leaders: list[tuple[int, object]] = []
         clashes = []
         for i in order:
             at, pieces = groups[i]
             mine = [where[gid] for _, gid in pieces if gid in where]
             rivals = tuple(q for q in where.values() if all(abs(q - m) > SAME_MM for m in mine))
+            before = len(sketch.obstacles)
             place_label(sketch, at, pieces, size=LABEL_PT, prefer=_away(at, vectors), gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM, rivals=rivals,
-                        by_box=True, leader_ok=i in led, beyond=True)
+                        by_box=True, leader_ok=i in led, beyond=True, clear_leaders=clear)
             drawn = sketch.obstacles[-1].buffer(-LABEL_SPACE_MM, join_style=2)  # the label's own box
             clashes += [(i, j) for j, other in boxes if drawn.intersection(other).area > LABEL_CLASH_MM2]
             boxes.append((i, drawn))
-        return clashes
+            if len(sketch.obstacles) > before + 1:  # (its leader line, drawn before its box)
+                leaders.append((i, sketch.obstacles[-2]))
+        across = any(leader.intersects(box_) for i, leader in leaders for j, box_ in boxes if i != j)
+        return clashes, across
 
-    # labels where they fit, the pole's and the coincident images' first; a label that lands on one placed before it
-    # (linear-arm position 2: n₁ 2.3 mm off the pole under "π, d′, q′, a′, f′") is placed before that one instead,
-    # the other taking the room it leaves, with a leader when it must stand off
-    order, led = list(range(len(groups))), frozenset()
-    state = sketch.checkpoint()
-    clashes = place_labels(order)
-    for _ in range(3):
-        if not clashes:
-            break
-        earlier = list(order)
-        led_more = led | {i for pair in clashes for i in pair}
-        for later, first in clashes:
-            if earlier.index(later) > earlier.index(first):
-                earlier.remove(later)
-                earlier.insert(earlier.index(first), later)
-        sketch.restore(state)
-        tried = place_labels(earlier, led_more)
-        if len(tried) < len(clashes):
-            order, led, clashes = earlier, led_more, tried
-        else:  # no better: as it was
+    def arrange(clear: bool) -> bool:
+        """Labels where they fit, the pole's and the coincident images' first; a label that lands on one placed before
+        it (linear-arm position 2: n₁ 2.3 mm off the pole under "π, d′, q′, a′, f′") is placed before that one
+        instead, the other taking the room it leaves, with a leader when it must stand off.  Whether a leader runs
+        across a label."""
+        order, led = list(range(len(groups))), frozenset()
+        clashes, across = place_labels(order, clear=clear)
+        for _ in range(3):
+            if not clashes:
+                break
+            earlier = list(order)
+            led_more = led | {i for pair in clashes for i in pair}
+            for later, first in clashes:
+                if earlier.index(later) > earlier.index(first):
+                    earlier.remove(later)
+                    earlier.insert(earlier.index(first), later)
             sketch.restore(state)
-            place_labels(order, led)
-            break
+            tried, across = place_labels(earlier, led_more, clear)
+            if len(tried) < len(clashes):
+                order, led, clashes = earlier, led_more, tried
+            else:  # no better: as it was
+                sketch.restore(state)
+                _, across = place_labels(order, led, clear)
+                break
+        return across
+
+    state = sketch.checkpoint()
+    if arrange(clear=False):
+        # a leader across another label (quick-return position 2, 18 mm at the plate's k_a: n₂'s through "d′"): again,
+        # each leader where it crosses no mark
+        sketch.restore(state)
+        arrange(clear=True)
 
     for ring, names in rings:
         name = next_name()

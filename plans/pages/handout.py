@@ -469,8 +469,13 @@ def build_handout(
     def fitting(plan, cell, **margin):
         block = plan_svg(plan, lang, room=cell, **margin)  # (a small plan drawn again whole, enlarged, when its cell has room)
         # (a velocity plan too tall for its half cell takes a row of its own; an acceleration plan's cell is its room)
-        if block.width > cell[0] + 0.5 or (plan.kind == "acceleration" and block.height > cell[1] + 0.5):
-            block = plan_svg(plan, lang, detail=False, **margin)
+        def over(b) -> bool:
+            return b.width > cell[0] + 0.5 or (plan.kind == "acceleration" and b.height > cell[1] + 0.5)
+
+        if over(block):  # its crowd's detail under it rather than beside it, else none (its notes kept)
+            block = plan_svg(plan, lang, room=cell, detail_under=True, **margin)
+            if over(block):
+                block = plan_svg(plan, lang, detail=False, **margin)
         return block
 
     wide = set()  # the positions whose velocity plans take a row of their own
@@ -590,6 +595,16 @@ def build_handout(
                 if over <= 1.0 + 0.5 / min(cell_a):
                     break
                 k_a = round_up(k_a * over * 1.0001)
+            if accel_columns == 1:
+                # the plans one under another: a small plan's enlarged detail may take the height the others leave
+                # (the quick-return's working-stroke plan, 18 mm at the k_a of the idle stroke's, 2 mm short of its own cell)
+                spare = sum(cell_a[1] - acceleration_blocks[k].height for k in chosen)
+                for k in chosen:
+                    old = acceleration_blocks[k]
+                    block = plan_svg(here[k].graphical.acceleration_plan, lang, room=(cell_a[0], old.height + spare))
+                    if block.height > old.height + 1e-6 and block.width <= cell_a[0] + 0.5:
+                        acceleration_blocks[k] = block
+                        spare -= block.height - old.height
             for index, h in here.items():  # one k_a on every position's record (its tables)
                 if index not in chosen:
                     here[index] = at(h, per_position[index])
