@@ -402,15 +402,15 @@ def _results(b: _Builder, group, stage: int) -> str:
         if stage == 0:
             parts.append(rf"\varphi_{{{_sub(link)}}} = {_deg(b.phi(link))}")
         elif stage == 1:
-            parts.append(rf"{_omega(link)} = {_num(b.omega(link))}")
+            parts.append(rf"{_omega(link)} = {_num(b.omega(link))}\ \mathrm{{rad/s}}")
         else:
-            parts.append(rf"{_eps(link)} = {_num(b.epsilon(link))}")
+            parts.append(rf"{_eps(link)} = {_num(b.epsilon(link))}\ \mathrm{{rad/s^2}}")
     for pair in pairs:
         m = b.sol.sliders[pair.name]
         value = (m.s, m.v_rel, m.a_rel)[stage][b.k]
         label = b.scene.pair_label(pair.name)  # the coincident points (F3F4), not a word
         symbol = _s(label) if stage == 0 else _ds(label, stage)
-        parts.append(f"{symbol} = {_num(value)}")
+        parts.append(rf"{symbol} = {_num(value)}\ \mathrm{{{_UNITS[stage]}}}")  # (units as the lines above give them)
     return ",\\ ".join(parts)
 
 

@@ -41,8 +41,8 @@ def test_the_rrr_loop_and_its_derivatives_with_the_solvers_numbers(six_bar):
     assert lines[4] == "a_A + (iε_3 - ω_3^2)l_ACe^iφ_3 = a_D + (iε_4 - ω_4^2)l_DCe^iφ_4"
     # numbers substituted, unknowns left as symbols, results after ⇒
     assert "(0.08604 + 0.1229i) + 0.6e^iφ_3 = (-0.45 + 0.35i) + 0.4e^iφ_4 ⇒ φ_3 = 117.52^°, φ_4 = 49.68^°" in lines[1]
-    assert "iω_3·0.6e^i117.52^°" in lines[3] and "ω_3 = 0.2502, ω_4 = -3.592" in lines[3]
-    assert "(iε_3 - 0.2502^2)·0.6e^i117.52^°" in lines[5] and "ε_3 = -17.61, ε_4 = -13.53" in lines[5]
+    assert "iω_3·0.6e^i117.52^°" in lines[3] and "ω_3 = 0.2502 rad/s, ω_4 = -3.592 rad/s" in lines[3]  # (with units: round 12)
+    assert "(iε_3 - 0.2502^2)·0.6e^i117.52^°" in lines[5] and "ε_3 = -17.61 rad/s^2, ε_4 = -13.53 rad/s^2" in lines[5]
 
 
 def test_the_coriolis_term_of_the_sliding_rod(six_bar):
@@ -51,7 +51,7 @@ def test_the_coriolis_term_of_the_sliding_rod(six_bar):
     # 2iω₅ṡ e^{iφ₅} with ω₅ = −1.813 rad/s and ṡ = −0.7759 m/s substituted; φ₅ = −96.63° printed as
     # 263.37° (angles 0…360°, as the page's header and the tables' ∠ print them)
     assert "2i·(-1.813)·(-0.7759)e^i263.37^°" in acceleration
-    assert "ε_5 = -3.344, s̈_E = -6.548" in acceleration
+    assert "ε_5 = -3.344 rad/s^2, s̈_E = -6.548 m/s^2" in acceleration
 
 
 @pytest.mark.parametrize("name", plans.example_names())

@@ -219,3 +219,12 @@ def test_fewer_plan_positions_than_diagram_positions():
         assert row[4].lstrip("-") == ("0" if v_b == 0 else _read(v_b, k_v)), (h.index, row)
         assert rows[2 * h.index + 1][4] == "—"
     assert "—: this plate draws no plan of that position" in doc.source
+
+
+def test_readings_headings_have_one_colon(quick_return):
+    """Round 12: "Положај 4: План брзина: очитавања" read as a double colon; the position and its plan are joined by a
+    dash, the plan's name in lower case after it."""
+    source = quick_return.source
+    for k in quick_return.accelerations:
+        assert f"Положај {k} — план брзина: очитавања" in source and f"Положај {k} — план убрзања: очитавања" in source
+    assert "План брзина: очитавања" not in source and not re.search(r"Положај \d+: План", source)

@@ -472,10 +472,10 @@ def build_handout(
         def over(b) -> bool:
             return b.width > cell[0] + 0.5 or (plan.kind == "acceleration" and b.height > cell[1] + 0.5)
 
-        if over(block):  # its crowd's detail under it rather than beside it, else none (its notes kept)
+        if over(block) and plan.kind == "acceleration":  # its crowd's detail under it rather than beside it
             block = plan_svg(plan, lang, room=cell, detail_under=True, **margin)
-            if over(block):
-                block = plan_svg(plan, lang, detail=False, **margin)
+        if over(block):  # else none (its notes kept)
+            block = plan_svg(plan, lang, detail=False, **margin)
         return block
 
     wide = set()  # the positions whose velocity plans take a row of their own
@@ -640,11 +640,12 @@ def build_handout(
     attached = set()
     for k in chosen or [sample.index]:
         h = here[k]
-        where = f"{term('position', lang)} {h.index}: " if multi else ""
         for kind in ("velocity", "acceleration"):
             rows = plan_readings(h.graphical, kind, lang)
-            if rows:
-                readings.append((f"{where}{term(kind + '_plan', lang)}: {term('readings', lang)}", rows, similarity_lines(h.graphical, kind)))
+            if rows:  # ("Положај 2 — план брзина: очитавања", not two colons in a row)
+                plan = term(kind + '_plan', lang)
+                heading = f"{term('position', lang)} {h.index} — {plan[0].lower()}{plan[1:]}" if multi else plan
+                readings.append((f"{heading}: {term('readings', lang)}", rows, similarity_lines(h.graphical, kind)))
                 attached.add((h.index, kind))
     if readings:  # (as Document.tables: two across, each whole; the proportions under their plan's readings)
         parts = []
