@@ -44,9 +44,9 @@ def test_numbers_nearest_their_marks_apart_and_every_mark_accounted_for(drawn):
         at = complex(x, y)
         assert t.get_text().translate(_DIGITS) == f"{point}{index}"
         others = [z for key, z in drawn_marks.items() if key != f"{index}-{point}" and abs(z - own) > 1.0]  # (1 mm: one place)
-        if index != "0":  # (position 0, the scheme in full, is numbered wherever it has room, on a leader if need be)
-            # (or, on a longer leader, the mark its leader comes from)
-            assert all(abs(at - z) > abs(at - own) for z in others) or leader_says(t, own), (name, t.get_text())
+        # (position 0 too, round 13's blocking finding: the linear-arm's H₀ stood beside H₇; or, on a longer leader,
+        # the mark its leader comes from)
+        assert all(abs(at - z) > abs(at - own) for z in others) or leader_says(t, own), (name, t.get_text())
         labelled.add(f"{point}{index}")
     boxes = [(t.get_text(), t.get_window_extent(renderer)) for t in numbers]
     for k, (ta, a) in enumerate(boxes):

@@ -270,8 +270,9 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
     # (every mark: its number's text, gid, place [mm], point, the index its side of the path alternates by, rivals)
     todo = []
     for index, p, at in sorted(marks, key=lambda m: (m[0] != runs[0].index, m[0], numbered.index(m[1]))):
-        # position 0 (the scheme drawn in full) numbered first, wherever it has room; the others nearest their marks
-        todo.append((f"{p}{_sub(index)}", f"position-{index}-{p}", at, p, index, None if index == runs[0].index else every))
+        # position 0 (the scheme drawn in full) numbered first; each number nearer its own mark than any other (the
+        # linear-arm's H₀, numbered "wherever it had room", stood at the far end of H's path, beside H₇)
+        todo.append((f"{p}{_sub(index)}", f"position-{index}-{p}", at, p, index, every))
     for label, p, at in extreme_marks:
         todo.append((f"{p}{label.translate(SUBSCRIPT)}", f"position-extreme-{p}", at, p, 1, every))
     # marks on one another (the scotch yoke's A and Y, its Y₄ and Y₈) are numbered together: "Y₄, Y₈"

@@ -434,7 +434,8 @@ class Document:
                 kept.extend([term("guide_origin", self.lang).format(q=f"$Q_{{{pin}}}$", s=f"$s_{{{pin}}}$")] for pin in origins)
         for lines in kept:
             words = " \\\n".join(self.loop_line(line) for line in lines)
-            self.body.append(f"#block(breakable: false, spacing: 0.6em)[#text(size: loops-size)[{words}]]\n" if len(lines) > 1
+            # (a block's lines apart enough that a subscript clears the exponent e^(i 117,52°) of the line under it)
+            self.body.append(f"#block(breakable: false, spacing: 0.6em)[#set par(leading: 0.85em)\n#text(size: loops-size)[{words}]]\n" if len(lines) > 1
                              else f"#text(size: loops-size)[{words}]\n")
 
     def loop_line(self, line: str) -> str:
