@@ -47,6 +47,10 @@ def _overprinted(lines) -> list:
             if min(a[2], b[2]) - max(a[0], b[0]) <= 1.0:
                 continue
             if min(a[3], b[3]) - max(a[1], b[1]) > 0.5 * min(a[3] - a[1], b[3] - b[1]):
+                # (not a drawing's subscript, which pdftotext reads as a lone smaller glyph beside the line its letter
+                # was joined to: K₁'s "1" under "H₃, H₄ K K₀" on the plan of positions)
+                if any(len(x[4].strip()) == 1 and x[4].strip().isdigit() and x[3] - x[1] < 0.8 * (y[3] - y[1]) for x, y in ((a, b), (b, a))):
+                    continue
                 bad.append((a[4], b[4]))
     return bad
 

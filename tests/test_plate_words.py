@@ -245,8 +245,10 @@ from svg_text_boxes import overlaps, text_boxes
 def _centres_pages(name: str) -> list[str]:
     lang = HANDOUTS[name][1]
     pages = _page_texts(name)
-    first = next(k for k, text in enumerate(pages) if text.lstrip().startswith(term("centres_page", lang)))
-    return list(pages[first:])
+    # (the method's block heads a page, or flows on under the end of the loop equations where that page holds it)
+    first = next(k for k, text in enumerate(pages) if any(line.strip() == term("centres_page", lang) for line in text.splitlines()))
+    text = pages[first]
+    return [text[text.index(term("centres_page", lang)):]] + list(pages[first + 1:])
 
 
 @pytest.mark.parametrize("name", list(HANDOUTS))

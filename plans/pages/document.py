@@ -434,8 +434,7 @@ class Document:
                 kept.extend([term("guide_origin", self.lang).format(q=f"$Q_{{{pin}}}$", s=f"$s_{{{pin}}}$")] for pin in origins)
         for lines in kept:
             words = " \\\n".join(self.loop_line(line) for line in lines)
-            # (a block's lines apart enough that a subscript clears the exponent e^(i 117,52°) of the line under it)
-            self.body.append(f"#block(breakable: false, spacing: 0.6em)[#set par(leading: 0.85em)\n#text(size: loops-size)[{words}]]\n" if len(lines) > 1
+            self.body.append(f"#block(breakable: false, spacing: 0.6em)[#text(size: loops-size)[{words}]]\n" if len(lines) > 1
                              else f"#text(size: loops-size)[{words}]\n")
 
     def loop_line(self, line: str) -> str:
@@ -455,7 +454,8 @@ class Document:
         A mark alone travels with what follows it (to the next page, when that does not fit); a *solid* one is a
         block of no height that stays where the content before it ends."""
         mark = f"#context [#metadata((name: {string(name)}, page: here().page(), y: here().position().y.mm())) <plans-mark>]"
-        self.body.append(f"#block(height: 0pt, above: 0pt, below: 0pt)[{mark}]\n" if solid else mark + "\n")
+        # (no "below: 0pt": with it, what follows a mark at a page's top was set over the lines before the mark)
+        self.body.append(f"#block(height: 0pt, above: 0pt)[{mark}]\n" if solid else mark + "\n")
 
     def beside(self, drawing, table, lines) -> None:
         """*table* (none: empty) and *lines* beside a *drawing* ``(key, block)``; with *drawing* None, alone (the page's width)."""
