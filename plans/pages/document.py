@@ -23,8 +23,10 @@ from .equations import PlacementRow, placement_math, step_lines
 from .typesetting import FONT as _FONT, MATH_FONT as _MATH, image, mixed, string, text
 from .words import block_words, units
 
-__all__ = ["bbox", "plan_extent", "fit_factor", "fitted", "fitted_line", "formula_parts", "Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "TEXT_PT", "SMALL_PT", "TITLE_BLOCK_LEAST_PT"]
+__all__ = ["bbox", "plan_extent", "fit_factor", "fitted", "fitted_line", "formula_parts", "Document", "PageGeometry", "A4_PORTRAIT", "A3_LANDSCAPE", "GUTTER", "HEADING_ABOVE", "TEXT_PT", "SMALL_PT", "TITLE_BLOCK_LEAST_PT"]
 
+#: The space above a heading (a block that starts with a heading is given it: a heading inside a block does not bring it).
+HEADING_ABOVE = "1.1em"
 GUTTER = 5.0  # mm between drawings and between columns
 TEXT_PT = 9.5
 SMALL_PT = 8.0
@@ -454,8 +456,7 @@ class Document:
         A mark alone travels with what follows it (to the next page, when that does not fit); a *solid* one is a
         block of no height that stays where the content before it ends."""
         mark = f"#context [#metadata((name: {string(name)}, page: here().page(), y: here().position().y.mm())) <plans-mark>]"
-        # (no "below: 0pt": with it, what follows a mark at a page's top was set over the lines before the mark)
-        self.body.append(f"#block(height: 0pt, above: 0pt)[{mark}]\n" if solid else mark + "\n")
+        self.body.append(f"#block(height: 0pt, above: 0pt, below: 0pt)[{mark}]\n" if solid else mark + "\n")
 
     def beside(self, drawing, table, lines) -> None:
         """*table* (none: empty) and *lines* beside a *drawing* ``(key, block)``; with *drawing* None, alone (the page's width)."""
@@ -515,7 +516,7 @@ class Document:
 #show math.equation: set text(font: {string(_MATH)})
 #let loops-size = {SMALL_PT * self.loops_scale:.2f}pt
 #set par(leading: 0.5em, spacing: 0.7em)
-#show heading: set block(above: 1.1em, below: 0.6em)
+#show heading: set block(above: {HEADING_ABOVE}, below: 0.6em)
 #show heading.where(level: 1): set text(size: 13pt)
 #show heading.where(level: 2): set text(size: 11pt)
 #show heading.where(level: 3): set text(size: 9.5pt)

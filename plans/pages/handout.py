@@ -45,7 +45,7 @@ from dataclasses import dataclass, field, replace
 
 from ..graphical.scales import round_up
 from ..i18n import term
-from .document import A4_PORTRAIT, Document, GUTTER, SMALL_PT, TEXT_PT
+from .document import A4_PORTRAIT, Document, GUTTER, HEADING_ABOVE, SMALL_PT, TEXT_PT
 from .document import bbox as _bbox, fitted as _fitted, plan_extent as _plan_extent
 from .equations import placement_rows
 from .typesetting import compile_document
@@ -1015,12 +1015,13 @@ def _kinematic_pages(doc, kinematic, lang: str) -> None:
     doc.lines(kd.notes(d, lang), size=SMALL_PT)
 
 
-def _kept(doc, start: int) -> None:
+def _kept(doc, start: int, above: str = "") -> None:
     """What the document's body gained from *start* on, one block that does not break (moves whole to the next page
-    when the rest of this one does not hold it)."""
+    when the rest of this one does not hold it); *above*: its own space above it (a block headed by a heading keeps
+    the heading's, which a heading inside a block does not bring with it)."""
     inside = "\n".join(doc.body[start:])
     del doc.body[start:]
-    doc.body.append(f"#block(breakable: false, width: 100%)[\n{inside}\n]\n")
+    doc.body.append(f"#block(breakable: false, width: 100%{f', above: {above}' if above else ''})[\n{inside}\n]\n")
 
 
 #: the quantities read off a velocity plan (a position without its acceleration plan on the plate tabulates only these)
@@ -1177,7 +1178,9 @@ def _centres_method(doc, diagram, k: float, lang: str, result, translating: bool
         doc.body.append(_CENTRES_TABLE_OPEN)
         doc.body.append("#" + doc.table_markup(term("centres_order", lang), centres_order_table(result, lang), "(left, left)") + "\n")
         doc.body.append("]\n")
-    _kept(doc, start)
+    # (the heading's space above it: after the loop equations' last line, under a mark of no height, the block was
+    # set over that line)
+    _kept(doc, start, above=HEADING_ABOVE)
 
 
 def _centres_page(doc, page, k: float, blocks, lang: str, multi: bool) -> None:
