@@ -66,3 +66,37 @@ def test_numbers_nearest_their_marks_apart_and_every_mark_accounted_for(drawn):
     assert not labelled & left
     if left:
         assert stated.startswith("not numbered")
+
+
+def test_every_detail_ring_is_named_on_the_plan(drawn):
+    """Round 13 (bg linear-arm): the dashed ring of "Детайл I (4 : 1)" had no "I" beside it on the plan (no room among
+    the links' lines and the H numbers); each ring now carries its detail's name, as its detail's title says."""
+    name, run, fig, renderer = drawn
+    rings = {a.get_gid()[len("pos-detail-ring-"):] for a in fig.findobj(lambda a: (a.get_gid() or "").startswith("pos-detail-ring-"))}
+    marks = {a.get_gid()[len("pos-detail-mark-"):]: a.get_text() for a in fig.findobj(lambda a: (a.get_gid() or "").startswith("pos-detail-mark-")
+                                                                                   and hasattr(a, "get_text"))}
+    titles = [a.get_text() for a in fig.findobj(lambda a: re.fullmatch(r"pos-detail-[IVX]+-title", a.get_gid() or "") is not None)]
+    assert len(titles) == len(rings)
+    for ring in rings:
+        assert marks.get(ring) == ring, (name, ring, marks)
+        assert any(f" {ring} (" in t for t in titles), (name, ring, titles)
+    if name == "linear-arm":
+        assert rings  # (the H path's crowd at the slider)
+
+
+def test_a_packed_point_is_numbered_in_its_detail(drawn):
+    """Rounds 12–14 (bg linear-arm, 8 positions): the eight marks of K lie within 3 mm in the sleeve (measured here from
+    the drawn marks); their numbers on leaders round the heap ("K₃, K₄, K₅") did not say which dot is which.  Position
+    0 is numbered on the plan (its scheme), K₁…K₇ in a detail, each once."""
+    name, run, fig, renderer = drawn
+    if name != "linear-arm":
+        return
+    marks = {m.get_gid()[len("pos-mark-"):]: complex(*m.center) for m in fig.findobj(lambda a: (a.get_gid() or "").startswith("pos-mark-") and hasattr(a, "center"))}
+    k = [z for key, z in marks.items() if re.fullmatch(r"[1-7]-K", key)]
+    assert len(k) == 7 and max(abs(a - b) for a in k for b in k) <= 4.0  # packed, by the drawing itself
+    texts = [t for t in fig.findobj(lambda a: hasattr(a, "get_text") and (a.get_gid() or "")) if t.get_text().strip()]
+    on_plan = [t.get_gid() for t in texts if re.fullmatch(r"pos-position-[1-7]-K", t.get_gid())]
+    in_detail = sorted(t.get_gid().rsplit("-", 1)[1] for t in texts if re.fullmatch(r"pos-detail-[IVX]+-number-K[1-7]", t.get_gid()))
+    assert not on_plan, on_plan
+    assert in_detail == [f"K{n}" for n in range(1, 8)], in_detail
+    assert any(t.get_gid() == "pos-position-0-K" for t in texts)

@@ -82,6 +82,8 @@ OWN_MM = 0.6
 THIN_MM = 0.42
 #: ... and longer than this [mm] (a driver's arrow, 0.9 pt, is shorter).
 LONG_MM = 30.0
+#: A point with at least this many marks (besides position 0's) all within this span [mm] is numbered in a detail.
+PACKED_COUNT, PACKED_MM = 4, 4.0
 #: Marks left without a number within this [mm] of one another are one crowd, drawn again in one detail...
 CROWD_MM = 3.0
 #: ... enlarged n : 1 by the first of these drafting ratios that sets its two closest marks this far [mm] apart.
@@ -264,59 +266,84 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
             return normal * (1 if turn % 2 == 0 else -1)
         return normal * (1 if side > 0 else -1)
 
-    # (a number nearer its own mark than any other: a reader takes a number for the nearest point's)
-    every = np.array([at for _, _, at in marks] + [at for _, _, at in extreme_marks], dtype=complex)
-    left_out, gids = [], {}
-    # (every mark: its number's text, gid, place [mm], point, the index its side of the path alternates by, rivals)
-    todo = []
-    for index, p, at in sorted(marks, key=lambda m: (m[0] != runs[0].index, m[0], numbered.index(m[1]))):
-        # position 0 (the scheme drawn in full) numbered first; each number nearer its own mark than any other (the
-        # linear-arm's H₀, numbered "wherever it had room", stood at the far end of H's path, beside H₇)
-        todo.append((f"{p}{_sub(index)}", f"position-{index}-{p}", at, p, index, every))
-    for label, p, at in extreme_marks:
-        todo.append((f"{p}{label.translate(SUBSCRIPT)}", f"position-extreme-{p}", at, p, 1, every))
-    # marks on one another (the scotch yoke's A and Y, its Y₄ and Y₈) are numbered together: "Y₄, Y₈"
-    together = []
-    for item in todo:
-        group = next((g for g in together if abs(g[0][2] - item[2]) <= ONE_PLACE_MM), None)
-        if group is None:
-            together.append([item])
-        else:
-            group.append(item)
-    for group in together:
-        text, gid, at, p, turn, rivals = group[0]
-        for t, g, *_ in group:
-            gids[t] = g
-        if place_number(sketch, at, ", ".join(t for t, *_ in group), gid=gid, size=NUMBER_PT, prefer=prefer(p, at, turn), rivals=rivals,
-                        keep_out=keep_out, part_gids=[g for _, g, *_ in group]) is None:
-            left_out.extend((t, q) for t, _, q, *_ in group)
-    # marks all but on one another (the scotch yoke's A and Y, M₅ and M₀′ 0.1 mm apart: no detail parts them) share
-    # one number, side by side, on the plan; a lone mark without room beside it is numbered on the plan too, at the
-    # end of a longer leader (its leader says whose it is), not in a detail of its own
-    def joined(group, attempts) -> bool:
-        text, at = ", ".join(t for t, _ in group), sum(q for _, q in group) / len(group)
-        named = [gids.get(t, _ascii(t)) for t, _ in group]
-        # (beside the marks, nearer them than any other; on a leader, the leader says whose it is)
-        return any(place_number(sketch, at, text, gid=named[0], size=NUMBER_PT, keep_out=out, gaps=gaps, cross_lines=cross,
-                                part_gids=named, rivals=every if gaps == NEAR_GAPS else None) is not None for out, gaps, cross in attempts)
+    def number_marks(pack: bool) -> list[tuple[str, complex]]:
+        """Number every mark (*pack*: a packed point's in a detail); the marks left without a number."""
+        # (a number nearer its own mark than any other: a reader takes a number for the nearest point's)
+        every = np.array([at for _, _, at in marks] + [at for _, _, at in extreme_marks], dtype=complex)
+        left_out, gids = [], {}
+        # (every mark: its number's text, gid, place [mm], point, the index its side of the path alternates by, rivals)
+        todo = []
+        # a point whose marks are packed (the linear-arm's K: eight within 3 mm in its sleeve) is numbered in a detail,
+        # its scheme position on the plan: numbers on leaders round a heap of dots do not say which dot is which
+        packed, in_detail = set(), set()
+        for q in numbered:
+            pts = [at for index, p, at in marks if p == q and index != runs[0].index]
+            if pack and len(pts) >= PACKED_COUNT and max(abs(a - b) for a in pts for b in pts) <= PACKED_MM:
+                packed.add(q)
+        for index, p, at in sorted(marks, key=lambda m: (m[0] != runs[0].index, m[0], numbered.index(m[1]))):
+            if p in packed and index != runs[0].index:
+                left_out.append((f"{p}{_sub(index)}", at))
+                gids[f"{p}{_sub(index)}"] = f"position-{index}-{p}"
+                in_detail.add(f"{p}{_sub(index)}")
+                continue
+            # position 0 (the scheme drawn in full) numbered first; each number nearer its own mark than any other (the
+            # linear-arm's H₀, numbered "wherever it had room", stood at the far end of H's path, beside H₇)
+            todo.append((f"{p}{_sub(index)}", f"position-{index}-{p}", at, p, index, every))
+        for label, p, at in extreme_marks:
+            todo.append((f"{p}{label.translate(SUBSCRIPT)}", f"position-extreme-{p}", at, p, 1, every))
+        # marks on one another (the scotch yoke's A and Y, its Y₄ and Y₈) are numbered together: "Y₄, Y₈"
+        together = []
+        for item in todo:
+            group = next((g for g in together if abs(g[0][2] - item[2]) <= ONE_PLACE_MM), None)
+            if group is None:
+                together.append([item])
+            else:
+                group.append(item)
+        for group in together:
+            text, gid, at, p, turn, rivals = group[0]
+            for t, g, *_ in group:
+                gids[t] = g
+            if place_number(sketch, at, ", ".join(t for t, *_ in group), gid=gid, size=NUMBER_PT, prefer=prefer(p, at, turn), rivals=rivals,
+                            keep_out=keep_out, part_gids=[g for _, g, *_ in group]) is None:
+                left_out.extend((t, q) for t, _, q, *_ in group)
+        # marks all but on one another (the scotch yoke's A and Y, M₅ and M₀′ 0.1 mm apart: no detail parts them) share
+        # one number, side by side, on the plan; a lone mark without room beside it is numbered on the plan too, at the
+        # end of a longer leader (its leader says whose it is), not in a detail of its own
+        def joined(group, attempts) -> bool:
+            text, at = ", ".join(t for t, _ in group), sum(q for _, q in group) / len(group)
+            named = [gids.get(t, _ascii(t)) for t, _ in group]
+            # (beside the marks, nearer them than any other; on a leader, the leader says whose it is)
+            return any(place_number(sketch, at, text, gid=named[0], size=NUMBER_PT, keep_out=out, gaps=gaps, cross_lines=cross,
+                                    part_gids=named, rivals=every if gaps == NEAR_GAPS else None) is not None for out, gaps, cross in attempts)
 
-    done = set()
-    for group in _grouped(left_out):
-        at = group[0][1]
-        lone = all(abs(at - other) > CROWD_MM for t, other in left_out if t not in {g for g, _ in group})
-        if (lone or len(group) > 1) and joined(group, ((keep_out, NEAR_GAPS, False), (keep_out, LEADER_GAPS + FAR_GAPS, False),
-                                                       (keep_out, LEADER_GAPS + FAR_GAPS, True), ((), LEADER_GAPS + FAR_GAPS, True))):
-            done |= {t for t, _ in group}
-    left_out = [(text, at) for text, at in left_out if text not in done]
-    # the marks too close together for their numbers: drawn again, enlarged, in a detail, and numbered there
+        done = set()
+        for group in _grouped(left_out):
+            if any(t in in_detail for t, _ in group):
+                continue  # (a packed point's: to its detail)
+            at = group[0][1]
+            lone = all(abs(at - other) > CROWD_MM for t, other in left_out if t not in {g for g, _ in group})
+            if (lone or len(group) > 1) and joined(group, ((keep_out, NEAR_GAPS, False), (keep_out, LEADER_GAPS + FAR_GAPS, False),
+                                                           (keep_out, LEADER_GAPS + FAR_GAPS, True), ((), LEADER_GAPS + FAR_GAPS, True))):
+                done |= {t for t, _ in group}
+        left_out = [(text, at) for text, at in left_out if text not in done]
+        # the marks too close together for their numbers: drawn again, enlarged, in a detail, and numbered there
+        if left_out:
+            every_mark = [(f"{p}{_sub(index)}", at) for index, p, at in marks] + [(f"{p}{label.translate(SUBSCRIPT)}", at) for label, p, at in extreme_marks]
+            left_out = draw_details(sketch, left_out, every_mark, figure, lang=lang, last=frozenset(in_detail))
+        # a mark for which neither had room: a longer leader on the plan (its leader says whose it is)
+        left_out = [m for group in _grouped(left_out)
+                    if not joined(group, ((keep_out, LEADER_GAPS + FAR_GAPS, False), (keep_out, LEADER_GAPS + FAR_GAPS, True),
+                                          ((), LEADER_GAPS + FAR_GAPS, True)))
+                    for m in group]
+        return left_out
+
+    # a point whose marks are packed is numbered in a detail where the plan has room for it; where that leaves any mark
+    # without a number (the linear-arm at 12 positions: the K detail takes the room of A₅, A₆), on leaders as the rest
+    state = sketch.checkpoint()
+    left_out = number_marks(True)
     if left_out:
-        every_mark = [(f"{p}{_sub(index)}", at) for index, p, at in marks] + [(f"{p}{label.translate(SUBSCRIPT)}", at) for label, p, at in extreme_marks]
-        left_out = draw_details(sketch, left_out, every_mark, figure, lang=lang)
-    # a mark for which neither had room: a longer leader on the plan (its leader says whose it is)
-    left_out = [m for group in _grouped(left_out)
-                if not joined(group, ((keep_out, LEADER_GAPS + FAR_GAPS, False), (keep_out, LEADER_GAPS + FAR_GAPS, True),
-                                      ((), LEADER_GAPS + FAR_GAPS, True)))
-                for m in group]
+        sketch.restore(state)
+        left_out = number_marks(False)
 
     # caption
     b = sketch.bounds
@@ -372,7 +399,7 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
 
 
 def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark: list[tuple[str, complex]], figure, *,
-                 lang: str = "en") -> list[tuple[str, complex]]:
+                 lang: str = "en", last: frozenset = frozenset()) -> list[tuple[str, complex]]:
     """Crowds of marks whose numbers found no room drawn again, enlarged n : 1, each in a drafting detail.
 
     The crowd is ringed on the plan and named (I, II, …); the detail, a circle in
@@ -381,6 +408,8 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
     *every_mark* (number text, place [mm]) — at n times its size on the plan, so
     that its length scale is k_l / n, and numbers every mark there.  Its title
     says its name and ratio in the reader's language ("detail I (5 : 1)").
+    The crowds holding a mark of *last* (numbers) find their room after the others (a packed point's, numbered in a
+    detail rather than on leaders: where it finds no room, its numbers go on leaders after all).
     Returns the marks numbered neither on the plan nor in a detail.
     Gids: ``detail-ring-<name>``, ``detail-mark-<name>``, ``detail-<name>``, ``detail-<name>-line``,
     ``detail-<name>-dot-<number>``, ``detail-<name>-number-<number>`` (the number in ASCII: ``H3``, ``B0p`` for B₀′),
@@ -393,6 +422,7 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
     crowds = []
     for part in sorted(shapely.get_parts(disks), key=lambda g: (-g.centroid.y, g.centroid.x)):
         crowds.append([(text, at) for text, at in left_out if part.contains(Point(at.real, at.imag))])
+    crowds.sort(key=lambda crowd: any(text in last for text, _ in crowd))  # (stable: in place otherwise)
     still = []
     lines = [LineString([(z.real, z.imag) for z in pts]) for pts, _, _, _ in figure if len(pts) >= 2]  # (no detail over them)
     # the details find room within the drawing, or beside it within DETAIL_GROW of its size: under a wide drawing,
@@ -439,8 +469,12 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
         names += 1
         sketch.circle(centre, r, fc="none", ec="#000000", lw=0.5, gid=f"detail-ring-{name}", zorder=4.6, obstacle=False)
         sketch.obstacles.append(Point(centre.real, centre.imag).buffer(r).exterior.buffer(0.2))
-        rim = centre + r * cmath.exp(1j * math.pi / 4)
-        place_number(sketch, rim, name, gid=f"detail-mark-{name}", size=CAPTION_PT, prefer=cmath.exp(1j * math.pi / 4))
+        # the ring's name beside it (up and right first, then round the ring), else on a leader, across a line if need
+        # be: a detail is never left unnamed on the plan (the linear-arm's ring among the links and the H numbers had none)
+        any(place_number(sketch, centre + r * u, name, gid=f"detail-mark-{name}", size=CAPTION_PT, prefer=u, gaps=gaps, cross_lines=cross)
+            is not None
+            for gaps, cross in ((None, False), (LEADER_GAPS + FAR_GAPS[:2], False), (LEADER_GAPS + FAR_GAPS[:2], True))
+            for u in (cmath.exp(1j * math.pi * k / 4) for k in (1, 3, 7, 5, 2, 6, 0, 4)))
 
         def f(z: complex) -> complex:
             return at + (z - centre) * ratio
