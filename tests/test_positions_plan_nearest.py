@@ -85,18 +85,20 @@ def test_every_detail_ring_is_named_on_the_plan(drawn):
 
 
 def test_a_packed_point_is_numbered_in_its_detail(drawn):
-    """Rounds 12–14 (bg linear-arm, 8 positions): the eight marks of K lie within 3 mm in the sleeve (measured here from
-    the drawn marks); their numbers on leaders round the heap ("K₃, K₄, K₅") did not say which dot is which.  Position
-    0 is numbered on the plan (its scheme), K₁…K₇ in a detail, each once."""
+    """Rounds 12–15 (bg linear-arm, 8 positions): the eight marks of K lie within 3 mm in the sleeve and H's within 6 mm
+    at the slider (measured here from the drawn marks); their numbers on leaders round the heap ("K₃, K₄, K₅",
+    "H₁, H₂") did not say which dot is which, and H's detail held half its path.  Position 0 is numbered on the plan
+    (its scheme), positions 1…7 in a detail, each once."""
     name, run, fig, renderer = drawn
     if name != "linear-arm":
         return
     marks = {m.get_gid()[len("pos-mark-"):]: complex(*m.center) for m in fig.findobj(lambda a: (a.get_gid() or "").startswith("pos-mark-") and hasattr(a, "center"))}
-    k = [z for key, z in marks.items() if re.fullmatch(r"[1-7]-K", key)]
-    assert len(k) == 7 and max(abs(a - b) for a in k for b in k) <= 4.0  # packed, by the drawing itself
     texts = [t for t in fig.findobj(lambda a: hasattr(a, "get_text") and (a.get_gid() or "")) if t.get_text().strip()]
-    on_plan = [t.get_gid() for t in texts if re.fullmatch(r"pos-position-[1-7]-K", t.get_gid())]
-    in_detail = sorted(t.get_gid().rsplit("-", 1)[1] for t in texts if re.fullmatch(r"pos-detail-[IVX]+-number-K[1-7]", t.get_gid()))
-    assert not on_plan, on_plan
-    assert in_detail == [f"K{n}" for n in range(1, 8)], in_detail
-    assert any(t.get_gid() == "pos-position-0-K" for t in texts)
+    for point, span in (("K", 4.0), ("H", 6.0)):
+        z = [at for key, at in marks.items() if re.fullmatch(rf"[1-7]-{point}", key)]
+        assert len(z) == 7 and max(abs(a - b) for a in z for b in z) <= span  # packed, by the drawing itself
+        on_plan = [t.get_gid() for t in texts if re.fullmatch(rf"pos-position-[1-7]-{point}", t.get_gid())]
+        in_detail = sorted(t.get_gid().rsplit("-", 1)[1] for t in texts if re.fullmatch(rf"pos-detail-[IVX]+-number-{point}[1-7]", t.get_gid()))
+        assert not on_plan, on_plan
+        assert in_detail == [f"{point}{n}" for n in range(1, 8)], in_detail
+        assert any(t.get_gid() == f"pos-position-0-{point}" for t in texts)

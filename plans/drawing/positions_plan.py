@@ -83,7 +83,7 @@ THIN_MM = 0.42
 #: ... and longer than this [mm] (a driver's arrow, 0.9 pt, is shorter).
 LONG_MM = 30.0
 #: A point with at least this many marks (besides position 0's) all within this span [mm] is numbered in a detail.
-PACKED_COUNT, PACKED_MM = 4, 4.0
+PACKED_COUNT, PACKED_MM = 4, 6.0
 #: Marks left without a number within this [mm] of one another are one crowd, drawn again in one detail...
 CROWD_MM = 3.0
 #: ... enlarged n : 1 by the first of these drafting ratios that sets its two closest marks this far [mm] apart.
@@ -273,8 +273,9 @@ def draw_positions_into(sketch: Sketch, positions_run, *, lang: str = "en", k_l:
         left_out, gids = [], {}
         # (every mark: its number's text, gid, place [mm], point, the index its side of the path alternates by, rivals)
         todo = []
-        # a point whose marks are packed (the linear-arm's K: eight within 3 mm in its sleeve) is numbered in a detail,
-        # its scheme position on the plan: numbers on leaders round a heap of dots do not say which dot is which
+        # a point whose marks are packed (the linear-arm's K: eight within 3 mm in its sleeve; H within 6 mm) is
+        # numbered in a detail, its scheme position on the plan: numbers on leaders round a heap of dots do not say
+        # which dot is which
         packed, in_detail = set(), set()
         for q in numbered:
             pts = [at for index, p, at in marks if p == q and index != runs[0].index]
