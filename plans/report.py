@@ -464,8 +464,13 @@ def reading_number(value: float, step: float | None) -> str:
     0.04 rad/s², so 2 decimals: ``0.08``, not ``0.08109``); to 4 significant digits without a step."""
     if step is None or step <= 0 or value == 0 or not math.isfinite(value):
         return table_number(value)
+    from decimal import ROUND_HALF_UP, Decimal
+
     decimals = max(0, -math.floor(math.log10(step)))
-    text = f"{value:.{decimals}f}"
+    # half up, from the value to 12 digits: a reading 6.5 mm × 0.015 = 0.0975 prints 0.098 wherever it is printed, also
+    # where it came through a vector's direction as 0.09749999999999999 (the readings table said 0.098, the comparison
+    # table 0.097)
+    text = str(Decimal(f"{value:.12g}").quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_UP))
     if float(text) == 0:
         return "0"
     return text.replace("-", "−")
