@@ -1332,6 +1332,8 @@ TERMS.update({
 # --- plan notes and readings (issue 20 §3, branch plan-notes) -------------------------------------
 TERMS.update({
     # a plan's enlarged detail, named as a drawing names it ("detail I"; ГОСТ 2.305: "выносной элемент I")
+    # a proportion's result where the plan, drawn exactly, measures another last digit (its inputs rounded to 0.1 mm)
+    "on_the_plan": {"en": "on the plan", "sr": "на плану", "ru": "на плане", "bg": "на плана", "sl": "na načrtu"},
     "detail": {
         "en": "detail",
         "sr": "детаљ",

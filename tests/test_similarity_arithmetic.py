@@ -40,3 +40,29 @@ def test_a_proportions_result_is_its_printed_numbers_arithmetic(example):
         g = construct(scene, k_v=k_v, k_a=k_a) if k_v else construct(scene)
         total += sum(_checked(similarity_lines(g, kind)) for kind in ("velocity", "acceleration"))
     assert total >= 3, example  # every one of these examples places images by similarity on both plans
+
+
+_PROPORTION = re.compile(r"(?P<seg>[^:;]+?) / (?P<base>[^=]+?) = [^:]+:  (?P=seg) = (?P<read>[0-9]+[.,][0-9]) · [0-9]+[.,][0-9] / [0-9]+[.,][0-9]"
+                         r" = (?P<result>[0-9]+[.,][0-9]) mm(?: \((?:на плана|на плану|on the plan) (?P<plan>[0-9]+[.,][0-9]) mm\))?")
+
+
+@pytest.mark.parametrize("example, positions, lang", [("linear-arm", 8, "bg"), ("quick-return", 12, "sr"), ("six-bar", 12, "en")])
+def test_a_segment_found_by_proportion_is_the_number_read_after_it(example, positions, lang):
+    """Rounds 13–16 (bg linear-arm): "fg = 10,7 · 550,0 / 329,0 = 17,9 мм", then "f h₃ = 17,8 · 198,7 / 550,0": the next
+    proportion reads fg off the plan, drawn exactly (17,8), not the rounded inputs' 17,9.  Where they differ the result
+    says what the plan measures ("17,9 мм (на плана 17,8 мм)"), and that is the number read after it."""
+    from plans.positions import run_positions
+
+    run = run_positions(plans.load(plans.example_path(example)), positions)
+    chained = 0
+    for r in run.runs:
+        for kind in ("velocity", "acceleration"):
+            found = {}
+            for line in similarity_lines(r.graphical, kind, lang):
+                for m in _PROPORTION.finditer(line):
+                    base = m["base"].strip()
+                    if base in found:
+                        assert m["read"] == found[base], (example, r.index, kind, base, found[base], line)
+                        chained += 1
+                    found[m["seg"].strip()] = m["plan"] or m["result"]
+    assert chained >= 1 or example != "linear-arm"

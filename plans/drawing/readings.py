@@ -295,19 +295,19 @@ def label_point(plan, label: str) -> tuple[str, str]:
     return letters.upper(), base[len(letters):]
 
 
-def similarity_lines(graphical, kind: str) -> list[str]:
+def similarity_lines(graphical, kind: str, lang: str = "en") -> list[str]:
     """The proportions by which the images of the plan of *kind* (``"velocity"``, ``"acceleration"``) were placed by
     similarity or with the ω, ε of the link they turn with (:func:`image_placements`), with their numbers: the plan's
     segments [mm on the plan] in proportion to the link's lengths [mm] (:func:`proportion_text`)."""
     out = []
     for placement in image_placements(graphical, kind):
-        line = proportion_text(graphical, kind, placement)
+        line = proportion_text(graphical, kind, placement, lang=lang)
         if line:
             out.append(line)
     return out
 
 
-def proportion_text(graphical, kind: str, placement: Placement, numbers: bool = True) -> str:
+def proportion_text(graphical, kind: str, placement: Placement, numbers: bool = True, lang: str = "en") -> str:
     """The proportion that places the image of *placement* on the plan of *kind*, with its numbers (*numbers*: the
     plan's segments [mm on the plan] and the link's lengths [mm] from the mechanism), ``""`` for images at rest or
     of a link that translates (no proportion):
@@ -317,7 +317,10 @@ def proportion_text(graphical, kind: str, placement: Placement, numbers: bool = 
     - an image of a link that turns with another (yx from that link's ab, the figures similar):
       ``fg / p f₄ = FG / DF:  fg = 14.8 · 550.0 / 255.8 = 31.8 mm  (ω₃ = ω₄)``.
 
-    Without *numbers* each proportion alone (``am / ab = AM / AB;  bm / ba = BM / BA``).
+    Without *numbers* each proportion alone (``am / ab = AM / AB;  bm / ba = BM / BA``).  A result that the plan's
+    segment, measured to 0.1 mm as the readings tables give it, does not repeat (its inputs rounded to 0.1 mm) says
+    what the plan measures, in the words of *lang*: ``fg = 10.7 · 550.0 / 329.0 = 17.9 mm (on the plan 17.8 mm)``,
+    the number the next proportion and the readings table use.
     """
     plan = graphical.velocity_plan if kind == "velocity" else graphical.acceleration_plan
     if plan is None or placement.how not in ("similar", "turns"):
@@ -344,9 +347,13 @@ def proportion_text(graphical, kind: str, placement: Placement, numbers: bool = 
     def proportion(a: str, x: str, b: str, c: str, base: str) -> str:
         """ax / bc = AX / BC, ax = bc · AX / BC; *base* the plan's segment bc's letters."""
         text = f"{seg(a, x)} / {base} = {name(a)}{name(x)} / {name(b)}{name(c)}"
-        if numbers:  # (the result from the numbers as printed: a student's arithmetic gives the same last digit)
-            read, ax, bc = (round(v, 1) for v in (on_plan(b, c), real(a, x), real(b, c)))
-            text += f":  {seg(a, x)} = {read:.1f} · {ax:.1f} / {bc:.1f} = {read * ax / bc:.1f} mm" if bc else ""
+        bc_real = round(real(b, c), 1)
+        if numbers and bc_real:  # (the result from the numbers as printed: a student's arithmetic gives the same last digit)
+            read, ax, bc = (round(v, 1) for v in (on_plan(b, c), real(a, x), bc_real))
+            result, measured = f"{read * ax / bc:.1f}", f"{round(on_plan(a, x), 1):.1f}"
+            text += f":  {seg(a, x)} = {read:.1f} · {ax:.1f} / {bc:.1f} = {result} mm"
+            if result != measured:  # (rounded inputs: the plan, drawn exactly, measures the next number)
+                text += f" ({term('on_the_plan', lang)} {measured} mm)"
         return text
 
     labels = (*placement.start, *placement.images)

@@ -645,7 +645,7 @@ def build_handout(
             if rows:  # ("Положај 2 — план брзина: очитавања", not two colons in a row)
                 plan = term(kind + '_plan', lang)
                 heading = f"{term('position', lang)} {h.index} — {plan[0].lower()}{plan[1:]}" if multi else plan
-                readings.append((f"{heading}: {term('readings', lang)}", rows, similarity_lines(h.graphical, kind)))
+                readings.append((f"{heading}: {term('readings', lang)}", rows, similarity_lines(h.graphical, kind, lang)))
                 attached.add((h.index, kind))
     if readings:  # (as Document.tables: two across, each whole; the proportions under their plan's readings)
         parts = []
@@ -662,7 +662,7 @@ def build_handout(
     # over a page's end, its heading kept with its first line
     similar = [(f"{term('position', lang)} {h.index}, " if multi else "", kind, line) for h in here.values()
                for kind in ("velocity", "acceleration") if (kind == "velocity" or h.index in acceleration_blocks) and (h.index, kind) not in attached
-               for line in similarity_lines(h.graphical, kind)]
+               for line in similarity_lines(h.graphical, kind, lang)]
     if similar:
         doc.body.append(f"#block(sticky: true, above: 3mm)[#text(weight: \"bold\", size: {SMALL_PT + 1}pt)[{doc.words(term('similar_images', lang))}]]\n")
         doc.body.append(f"#text(size: {SMALL_PT}pt)[" + " \\\n".join(

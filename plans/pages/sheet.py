@@ -365,7 +365,7 @@ def similarity_markup(doc: Document, solutions) -> str:
     their heading, as Typst markup ("" when there are none)."""
     from ..drawing.readings import similarity_lines
 
-    lines = [where + line for where, g in solutions for kind in ("velocity", "acceleration") for line in similarity_lines(g, kind)]
+    lines = [where + line for where, g in solutions for kind in ("velocity", "acceleration") for line in similarity_lines(g, kind, doc.lang)]
     if not lines:
         return ""
     return (f"#block(breakable: false)[#text(size: {SMALL_PT}pt)[#text(weight: \"bold\", size: {SMALL_PT + 0.5}pt)"
