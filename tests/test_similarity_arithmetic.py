@@ -66,3 +66,20 @@ def test_a_segment_found_by_proportion_is_the_number_read_after_it(example, posi
                         chained += 1
                     found[m["seg"].strip()] = m["plan"] or m["result"]
     assert chained >= 1 or example != "linear-arm"
+
+
+def test_a_triangles_two_proportions_are_set_apart_on_the_page():
+    """Rounds 12–16 (bg linear-arm, "Образи по подобие"): "… = 2,4 мм f₄ k / f₄ p = …", two proportions run together:
+    the ";" between them, right after a box, was read by the typesetter as the end of an expression.  On the page each
+    is ended by its ";"."""
+    import io
+
+    from pypdf import PdfReader
+
+    from review_handouts import built_pdf
+
+    text = " ".join(page.extract_text() for page in PdfReader(io.BytesIO(built_pdf("linear-arm", 8, "bg"))).pages)
+    text = " ".join(text.split())
+    joined = re.findall(r"мм\)? f₄ k / f₄ p", text)
+    apart = re.findall(r"мм\)?; f₄ k / f₄ p", text)
+    assert not joined and len(apart) >= 8, (joined, len(apart))

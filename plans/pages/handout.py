@@ -258,7 +258,8 @@ def _with_given_note(lines: list[str], run, lang: str) -> list[str]:
 def _proportions(doc, line: str) -> str:
     """A line of :func:`plans.drawing.readings.similarity_lines` as markup: each proportion with its numbers one box
     (a line breaks between a triangle's two, never inside one: ``f₄′ k′ / f₄′ π =`` at a line's end)."""
-    return ";  ".join(f"#box[{doc.words(part)}]" for part in line.split(";  "))
+    # (the semicolon escaped: right after "#box[…]" Typst reads a bare ";" as the end of the expression, not as text)
+    return "\\;  ".join(f"#box[{doc.words(part)}]" for part in line.split(";  "))
 
 
 def _equations_height(plan) -> float:
