@@ -203,3 +203,17 @@ def test_a_wrong_form_is_refused_naming_the_key(ru, words):
         loads(BASE.format(ru=ru))
     for word in words:
         assert word in str(err.value)
+
+
+def test_a_slider_blocks_own_line_is_said_by_the_guide_it_slides_in():
+    """The scotch yoke's block 3 carries an implicit line "guide" (a [[slider]]'s block): its relative velocity was
+    written "v_A4A ∥ guide", English on a Serbian page.  It is said by the slot it slides in, in the scene's words."""
+    import io
+
+    from pypdf import PdfReader
+
+    from review_handouts import built_pdf
+
+    text = " ".join(page.extract_text() for page in PdfReader(io.BytesIO(built_pdf("scotch-yoke", None, "sr"))).pages)
+    assert not re.search(r"\bguide\b", text)
+    assert len(re.findall(r"∥ кулиса", text)) >= 2  # the velocity and the acceleration equations of the group

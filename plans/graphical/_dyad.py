@@ -23,6 +23,7 @@ __all__ = [
     "construct_image",
     "offset_line",
     "record_sliding",
+    "said_line",
     "unit",
     "pose_from",
     "angle_of",
@@ -193,6 +194,18 @@ def ruler_lines(ctx: Construction, group: str, what: str, p1: complex, d1: compl
             f"{group}: {what} are parallel (|sin| = {exc.sine:.2g}) at {ctx.where()}: the group has no definite position"
         ) from None
     return ctx.metres(at)
+
+
+def said_line(scene, line, prismatic) -> str:
+    """The key by which a page names *line* of the sliding pair *prismatic*: a slider block's own line (the implicit
+    ``"3.guide"`` of a ``[[slider]]``) by the line the block slides along (``"4.slot"``), parallel to it and named in
+    the scene's words (``∥ кулиса``, not the English ``∥ guide``); any other line by its own key."""
+    if line.name == "guide" and scene.bodies[line.body].block:
+        if prismatic.slider == line.body:
+            return f"{prismatic.guide}.{prismatic.guide_line}"
+        if prismatic.guide == line.body:
+            return f"{prismatic.slider}.{prismatic.slider_line}"
+    return line.key
 
 
 def sliding_equation(symbol: str, moving: str, reference: str, turning: str, guide: str, turns: bool = True, frame: str = "0") -> str:

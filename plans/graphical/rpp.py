@@ -43,6 +43,7 @@ from ._dyad import (
     pose_from,
     record_sliding,
     ruler_lines,
+    said_line,
     sliding_equation,
     turning_with,
 )
@@ -87,24 +88,25 @@ def _construct(ctx: Construction, group: Group, plan, motions, accelerations: bo
     _, u_i = ctx.line(inner_i)
     _, u_k = ctx.line(outer_k)
     inner, outer = group.inner.prismatic, group.outer_j.prismatic
+    said_i, said_k = said_line(ctx.scene, inner_i, inner), said_line(ctx.scene, outer_k, outer)  # (the pages' words)
     if accelerations:
         w = ctx.omega(known)  # i, j and K turn together
         s_in, s_out = ctx.sliding[inner.name], ctx.sliding[outer.name]
         cor_in, cor_out = coriolis(ctx, w, s_in), coriolis(ctx, w, s_out)  # aᵏ = 2 ω × v_rel
         chains = (
-            Chain(pb, plan.absolute(b), [(cor_in, "coriolis", f"a^k_{bj}{b}")], u_i, f"∥ {inner_i.key}", "relative", f"a^r_{bj}{b}"),
-            Chain(bk, bk_vector, [(cor_out, "coriolis", f"a^k_{bj}{bk_name}")], u_k, f"∥ {outer_k.key}", "relative", f"a^r_{bj}{bk_name}"),
+            Chain(pb, plan.absolute(b), [(cor_in, "coriolis", f"a^k_{bj}{b}")], u_i, f"∥ {said_i}", "relative", f"a^r_{bj}{b}"),
+            Chain(bk, bk_vector, [(cor_out, "coriolis", f"a^k_{bj}{bk_name}")], u_k, f"∥ {said_k}", "relative", f"a^r_{bj}{bk_name}"),
         )
         equations = [
-            sliding_equation("a", bj, b, i, inner_i.key, w != 0),
-            sliding_equation("a", bj, bk_name, known, outer_k.key, w != 0),
+            sliding_equation("a", bj, b, i, said_i, w != 0),
+            sliding_equation("a", bj, bk_name, known, said_k, w != 0),
         ]
     else:
         chains = (
-            Chain(pb, plan.absolute(b), [], u_i, f"∥ {inner_i.key}", "relative", f"v_{bj}{b}"),
-            Chain(bk, bk_vector, [], u_k, f"∥ {outer_k.key}", "relative", f"v_{bj}{bk_name}"),
+            Chain(pb, plan.absolute(b), [], u_i, f"∥ {said_i}", "relative", f"v_{bj}{b}"),
+            Chain(bk, bk_vector, [], u_k, f"∥ {said_k}", "relative", f"v_{bj}{bk_name}"),
         )
-        equations = [sliding_equation("v", bj, b, i, inner_i.key), sliding_equation("v", bj, bk_name, known, outer_k.key)]
+        equations = [sliding_equation("v", bj, b, i, said_i), sliding_equation("v", bj, bk_name, known, said_k)]
     p_bj, (rel_in, rel_out), drawn = construct_image(ctx, plan, group.name, equations, chains, plan.label(b, j), None)
     q = motions[known].q
     motions[i] = Motion(B, pb, q)
