@@ -32,7 +32,7 @@ from plans.handout import handout
 from plans.scene import example_path
 
 from plandraw_overlaps import SLIVER_MM2, label_boxes
-from review_handouts import REVIEWED, reviewed_handouts
+from review_handouts import REVIEWED, built, reviewed_handouts
 
 pytestmark = pytest.mark.filterwarnings("ignore")
 
@@ -199,3 +199,24 @@ def test_a_vector_along_another_is_drawn_apart_in_a_detail(handouts):
     m = _centre(root, "acc-detail-dot-m")
     u = (q - p) / abs(q - p)
     assert abs(((m - p) * u.conjugate()).imag) / per_mm == pytest.approx(ratio * off, abs=0.25)
+
+
+def test_a_crowded_pole_is_drawn_again_enlarged_under_its_plan():
+    """Round 17 (bg linear-arm, position 2, 36 mm at the plate's k_a): round the pole, the normal components d′n₁ and
+    q′n₂ (2.3 mm, notes only), n₁, n₂, k′, h′, aᵏ₂ and two Coriolis lines within 10 mm; nothing to re-measure.  The pole's
+    neighbourhood is ringed and drawn again under the plan, enlarged at the ratio its heading states, where d′n₁ is an
+    arrow |aⁿ_F4D| / k_a × n long (ω₄²·DF from the analytic solution)."""
+    doc = built("linear-arm", 8, "bg")
+    k_a = doc.scales["k_a"]
+    r = _run(doc, 2)
+    a = r.analytic
+    omega4 = _first(a.links["4"].omega).real
+    df = abs(_first(a.points["F"].r) - _first(a.points["D"].r))
+    assert omega4 ** 2 * df / k_a < 3.0  # a note on the plan
+    root, per_mm = _svg(doc.images["a-2"])
+    texts = _texts(root)
+    ratio = float(re.search(r"\(([0-9.]+) : 1\)$", texts["acc-detail-name"]).group(1))
+    drawn = abs(_centre(root, "acc-detail-end-dot-a_n_F4D") - _centre(root, "acc-detail-pole")) / per_mm
+    assert drawn == pytest.approx(ratio * omega4 ** 2 * df / k_a, abs=0.2)
+    assert drawn >= 3.0  # an arrow there
+    assert _centre(root, "acc-detail-pole").imag > _centre(root, "acc-pole").imag + 10 * per_mm  # under the plan (SVG y down)

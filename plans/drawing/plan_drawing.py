@@ -542,6 +542,9 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             name = next_name()
             for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, at):
                 in_detail.setdefault(label, name)
+        elif detail_under:  # (no room within: under the plan, after its labels, as a link's crowd)
+            _draw_ring(sketch, ring)
+            rings.append((ring, names))
     if detail:
         # a vector from the pole along a longer one (six-bar π m′ on π a′, 0.6° apart): its tip, under a millimetre off
         # the other's shaft, is ringed and drawn enlarged within the plan, where the two read apart

@@ -473,8 +473,10 @@ def build_handout(
         def over(b) -> bool:
             return b.width > cell[0] + 0.5 or (plan.kind == "acceleration" and b.height > cell[1] + 0.5)
 
-        if over(block) and plan.kind == "acceleration":  # its crowd's detail under it rather than beside it
-            block = plan_svg(plan, lang, room=cell, detail_under=True, **margin)
+        if plan.kind == "acceleration":  # its crowd's detail under it where the plan has no room for it within
+            under = plan_svg(plan, lang, room=cell, detail_under=True, **margin)
+            if over(block) or (not over(under) and under.svg.count(b'-detail-ring') > block.svg.count(b'-detail-ring')):
+                block = under
         if over(block):  # else none (its notes kept)
             block = plan_svg(plan, lang, detail=False, **margin)
         return block
