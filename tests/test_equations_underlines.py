@@ -85,14 +85,15 @@ def test_quick_return_driver_line_and_modulus():
 
 
 def test_double_underline_rules_apart():
-    """The Typst source of a double underline: a thin second rule with a clear gap ≥ 1.0 pt below the first."""
+    """The Typst source of a double underline: a thin second rule with a clear gap ≥ 1.5 pt below the first (two rules
+    at 100 dpi: at 1.1 pt round 18's reviewer read the bg linear-arm's v_GF as underlined once)."""
     import re
 
     src = twice("arrow(v)_(B)")
     stroke = float(re.search(r"stroke: \(bottom: ([0-9.]+)pt\)", src).group(1))
     offset = float(re.search(r"outset: \(bottom: ([0-9.]+)pt\)", src).group(1))
     assert stroke <= 0.5  # thin
-    assert offset - stroke / 2 >= 1.0  # the clear gap below the bounds of the first rule
+    assert offset - stroke / 2 >= 1.5  # the clear gap below the bounds of the first rule
     assert 'bottom-edge: "bounds"' in src and "$underline(arrow(v)_(B))$" in src
 
 

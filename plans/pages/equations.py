@@ -42,8 +42,9 @@ __all__ = ["equation_math", "condition_math", "step_lines", "PlacementRow", "pla
 #: the stroke [pt] of a double underline's second rule (thin, as the math font's own rule, about 0.04 em)
 DOUBLE_STROKE_PT = 0.4
 #: how far [pt] the second rule's middle lies below the bounds of the first underline (its clear gap ≥ this − half the
-#: stroke, 1.1 pt: two lines at 150 dpi, not one thick bar)
-DOUBLE_GAP_PT = 1.3
+#: stroke, 1.6 pt: two lines at 100 dpi, not one thick bar; at 1.1 pt round 18's reviewer read "v̲_GF" as underlined
+#: once).  An outset takes no room: the rows stay where they are
+DOUBLE_GAP_PT = 1.8
 
 
 def once(body: str) -> str:
