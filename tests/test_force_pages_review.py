@@ -168,8 +168,8 @@ def test_the_moment_equation_gives_the_tangential_component_of_the_worked_exampl
     # the polygon's vector equation, the known parts underlined once (direction) and twice (magnitude and direction)
     end = source.index('underline(R^(n )_("23" )) = 0$]')  # Rⁿ₂₃ closes the polygon: its direction known, once
     polygon = source[source.rindex("[$", 0, end):end]
-    # twice: a thin second rule 1.3 pt below the first's bounds (the double underline's stated gap, issue 20's review)
-    twice = '#box(stroke: (bottom: 0.4pt), outset: (bottom: 1.3pt), {set text(bottom-edge: "bounds"); $underline(%s)$})'
+    # twice: a thin second rule 1.8 pt below the first's bounds (the double underline's stated gap, issue 20's review)
+    twice = '#box(stroke: (bottom: 0.4pt), outset: (bottom: 1.8pt), {set text(bottom-edge: "bounds"); $underline(%s)$})'
     for known in ('R^(t )_("23" )', 'G_("3" )', 'Ф_("3" )', 'F_("пс" )'):  # Rᵗ from its moment equation, and the loads: twice
         assert twice % known in polygon, (known, polygon)
     assert "+ underline(R_(\"14\" ))" in polygon  # the guide's normal force: its direction known, once

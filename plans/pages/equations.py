@@ -27,7 +27,7 @@ own underline), so the two stay apart on a screen at 70 dpi and in print
 one thick bar).
 
 >>> print(equation_math("v_C = v_B + v_CB", found={"v_CB"}))
-arrow(v)_(C) = #box(stroke: (bottom: 0.4pt), outset: (bottom: 1.3pt), {set text(bottom-edge: "bounds"); $underline(arrow(v)_(B))$}) + underline(arrow(v)_(C B))
+arrow(v)_(C) = #box(stroke: (bottom: 0.4pt), outset: (bottom: 1.8pt), {set text(bottom-edge: "bounds"); $underline(arrow(v)_(B))$}) + underline(arrow(v)_(C B))
 """
 
 from __future__ import annotations
