@@ -226,8 +226,8 @@ def choose_accelerations(run, asked) -> list[int]:
             here = [r for r in solved if phases.get(r.index, ("", 0))[0] == stroke]
             inner = [r for r in here if STROKE_INNER[0] <= phases[r.index][1] <= STROKE_INNER[1]] or here
             if inner:
-                best = max(plan_readability(r.graphical.acceleration_plan) for r in inner)
-                readable = [r for r in inner if plan_readability(r.graphical.acceleration_plan) >= READABLE_SHARE * best]
+                reads = {r.index: plan_readability(r.graphical.acceleration_plan) for r in inner}
+                readable = [r for r in inner if reads[r.index] >= READABLE_SHARE * max(reads.values())]
                 chosen.append(min(readable, key=lambda r: abs(phases[r.index][1] - 0.5)).index)
         if len(chosen) == 2:
             return sorted(chosen)
@@ -646,8 +646,8 @@ def build_handout(
         for kind in ("velocity", "acceleration"):
             rows = plan_readings(h.graphical, kind, lang)
             if rows:  # ("Положај 2 — план брзина: очитавања", not two colons in a row)
-                plan = term(kind + '_plan', lang)
-                heading = f"{term('position', lang)} {h.index} — {plan[0].lower()}{plan[1:]}" if multi else plan
+                named = term(kind + '_plan', lang)
+                heading = f"{term('position', lang)} {h.index} — {named[0].lower()}{named[1:]}" if multi else named
                 readings.append((f"{heading}: {term('readings', lang)}", rows, similarity_lines(h.graphical, kind, lang)))
                 attached.add((h.index, kind))
     if readings:  # (as Document.tables: two across, each whole; the proportions under their plan's readings)
