@@ -178,6 +178,7 @@ TERMS: dict[str, dict[str, str]] = {
         "bg": "Кориолисово ускорение aᵏ",
         "sl": "Coriolisov pospešek aᵏ",
     },
+    "link_image": {"en": "image of a link", "sr": "слика члана", "ru": "образ звена", "bg": "образ на звено", "sl": "slika člena"},
     "construction_line": {
         "en": "construction line",
         "sr": "помоћна линија",

@@ -527,14 +527,20 @@ def _to_decimals(value, decimals: int) -> str:
     return text.replace("-", "−")
 
 
+#: the least significant digits of an analytic value in a comparison table (:func:`row_texts`)
+ANALYTIC_DIGITS = 4
+
+
 def row_texts(graphical, analytic, step: float | None = None, given: bool = False) -> tuple[str, str, str]:
     """The three cells of a comparison row: the graphical (or instant-centre) value, the analytic one, the relative error.
 
     The rule of every comparison table (the sheet's, the handout's, the centres page's): the graphical value to
     the digits its reading justifies (:func:`reading_number` with the resolution *step* [SI]; 4 significant digits,
-    trailing zeros kept, when there is no step), the analytic value to the same decimals, and the relative error
-    of the two numbers as printed, |g − a| / |a| (of the vectors, for a magnitude ∠ direction), so that a
-    reader recomputes it from the table.  A *given* value (the driver's ω, a crank pin's v) is printed as
+    trailing zeros kept, when there is no step), the analytic value to the same decimals and to at least
+    :data:`ANALYTIC_DIGITS` significant digits, and the relative error of the two numbers as printed, |g − a| / |a|
+    (of the vectors, for a magnitude ∠ direction), so that a reader recomputes it from the table.  (Round 20: the
+    analytic value rounded to the reading's decimals hid the graphical method's error, "v_K 0,032 | 0,032 | 0"
+    against 0,03238.)  A *given* value (the driver's ω, a crank pin's v) is printed as
     given in both columns and has no error (:data:`NO_ERROR`), nor has a quantity printed as 0.
     """
     if given:  # to the reading's decimals where the plan draws it (v_A = 1.500, as the readings print it)
@@ -554,6 +560,9 @@ def row_texts(graphical, analytic, step: float | None = None, given: bool = Fals
     decimals = _printed_decimals(g_text) if g_text != "0" else None
     if decimals is None and step is not None and step > 0:
         decimals = max(0, -math.floor(math.log10(step)))
+    magnitude = abs(analytic)
+    if decimals is not None and 0 < magnitude and math.isfinite(magnitude):
+        decimals = max(decimals, ANALYTIC_DIGITS - 1 - math.floor(math.log10(magnitude)))
     if decimals is None:
         a_text = "0" if analytic == 0 else (_significant(abs(analytic)) + f" ∠ {_deg(cmath.phase(analytic)):.1f}°"
                                              if isinstance(analytic, complex) else _significant(analytic))

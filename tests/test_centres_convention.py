@@ -170,7 +170,10 @@ def test_the_table_reads_p1j_m_in_mm_of_the_drawing():
         if centre.point is None:
             assert row[2] == "—"
             continue
-        mm = float(row[2])
+        # the segment it is, P_1jM, and its length (round 20: a bare "349,9" said nothing of what was measured)
+        segment, _, length = row[2].partition(" = ")
+        assert segment == "P" + centre.label[1:].translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")) + name, row[2]
+        mm = float(length)
         assert mm == pytest.approx(abs(analytic.points[name].r[0] - centre.point) / k_l, abs=0.051)
         omega = abs(analytic.links[scene.home_of(name)].omega[0])
         assert mm * k_l * omega == pytest.approx(abs(analytic.points[name].v[0]), abs=0.051 * k_l * omega + 1e-9)  # to the 0.1 mm printed

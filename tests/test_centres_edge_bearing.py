@@ -19,14 +19,13 @@ import numpy as np
 import pytest
 from shapely.geometry import LineString, Point
 
-import plans
 from plans.centres import instant_centres
 from plans.drawing.centres import centres_svg
-from plans.handout import handout
 from plans.positions import cycle_positions
 from plans.scene import example_path, load
 
 from analytic_centres import true_centres
+from review_handouts import built
 
 MM = 72 / 25.4  # SVG units (pt) per mm
 EXAMPLES = ["four-bar", "six-bar", "slider-crank", "quick-return", "linear-arm", "scotch-yoke", "wedge", "ladder", "rocker-limit"]
@@ -91,7 +90,7 @@ def reviewed():
     out = []
     for name, n, lang in (("linear-arm", 8, "bg"), ("quick-return", 12, "sr")):
         scene = load(example_path(name))
-        doc = handout(scene, positions=n, centres=True, lang=lang)
+        doc = built(name, n, lang, centres=True)  # (built once per test run: tests/review_handouts.py)
         for k, position in enumerate(cycle_positions(scene, n)):
             svg = doc.images[f"centres-{k}"].decode()
             out.append((f"{name} {lang} position {k}", svg, true_centres(scene.at(position))))

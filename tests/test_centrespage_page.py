@@ -21,6 +21,7 @@ from plans.compare import compare_centres
 from plans.handout import handout
 from pypdf import PdfReader
 from plans.i18n import TERMS
+from review_handouts import built
 
 ROOT = Path(__file__).resolve().parents[1]
 CENTRES_KEYS = [key for key in TERMS if key in (
@@ -33,7 +34,7 @@ SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 @pytest.fixture(scope="module")
 def six_bar():
     scene = plans.load(plans.example_path("six-bar"))
-    doc = handout(scene, positions=2, centres=True, start="scene")
+    doc = built("six-bar", 2, "en", centres=True, start="scene")  # (built once per test run: tests/review_handouts.py)
     return scene, doc
 
 

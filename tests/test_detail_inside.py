@@ -1,4 +1,4 @@
-"""A plan's detail "I (n : 1)" shows everything inside its ring, labelled as on the plan.
+"""A plan's detail "Detail I (n : 1)" shows everything inside its ring, labelled as on the plan.
 
 Measured from the drawing: the ring on the plan (gid ``…-detail-ring``: its centre and
 radius in plan millimetres) and the detail's circle (``…-detail``: its radius, so the
@@ -10,6 +10,8 @@ on the plan, about 10 mm at 4 : 1).
 """
 
 from __future__ import annotations
+
+import re
 
 import math
 
@@ -174,7 +176,12 @@ def test_quick_return_detail_shows_every_image_and_vector_inside_it(quick_return
     assert any(g.endswith("-detail-v_ED-head") for g in gids)
     # and its note on the plan says where
     notes = [t.get_text() for ax in fig.axes for t in ax.texts if (t.get_gid() or "").endswith("short-v_ED")]
-    assert notes and notes[0] == "de = 1,37 mm (детаљ I)", notes  # the segment, its length, and where it is drawn (a Serbian page)
+    # the segment, its length, where it is drawn and how long it is there (a Serbian page; round 20 measured the plan's
+    # length in the detail): the detail's ratio as its title states it
+    title = next(t.get_text() for ax in fig.axes for t in ax.texts if (t.get_gid() or "").endswith("-detail-name"))
+    ratio = int(re.fullmatch(r"Детаљ I \(([0-9]+) : 1\)", title).group(1))
+    there = f"{ratio * abs(ved.tip - ved.tail):.2f}".replace(".", ",")
+    assert notes and notes[0] == f"de = 1,37 mm (детаљ I: {there} mm)", notes
 
 
 def test_six_bar_detail_shows_every_image_inside_it(six_bar):

@@ -17,7 +17,6 @@ import pytest
 from plans.cli import main
 from plans.forces.force_plans import construct_force_plans
 from plans.graphical import construct
-from plans.handout import handout
 from plans.i18n import term
 from plans.pages.document import Document
 from plans.pages.forces import force_pages
@@ -203,8 +202,7 @@ def six_bar_en():
 
 @pytest.fixture(scope="module")
 def quick_return_sr():
-    doc = handout(load(example_path("quick-return-loads")), forces=True, lang="sr")
-    return doc, _pdf_texts(doc.pdf())
+    return built("quick-return-loads", None, "sr", forces=True), _pdf_texts(built_pdf("quick-return-loads", None, "sr", forces=True))
 
 
 def _force_pages(texts, lang):

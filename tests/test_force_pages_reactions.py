@@ -15,8 +15,7 @@ import unicodedata
 import pypdf
 import pytest
 
-from plans.handout import handout
-from plans.scene import example_path, load
+from review_handouts import built_pdf
 
 FOUND = re.compile(r"R(\d\d) = ([0-9.]+) mm · ([0-9.]+) N/mm = ([0-9.]+) N")
 CARRIED = re.compile(r"R(\d\d) = −R(\d\d) = ([0-9.]+) N → ([0-9.]+) mm")
@@ -26,8 +25,8 @@ TITLE_BLOCK = re.compile(r"Scale factors: [^\n]*μF = ([0-9.]+) N/mm")
 
 @pytest.fixture(scope="module", params=["six-bar-loads", "quick-return-loads"])
 def pages(request):
-    doc = handout(load(example_path(request.param)), positions=6, forces=True)
-    texts = [re.sub(r"[ \t]+", " ", unicodedata.normalize("NFKC", p.extract_text() or "")) for p in pypdf.PdfReader(io.BytesIO(doc.pdf())).pages]
+    pdf = built_pdf(request.param, 6, "en", forces=True)  # (built once per test run: tests/review_handouts.py)
+    texts = [re.sub(r"[ \t]+", " ", unicodedata.normalize("NFKC", p.extract_text() or "")) for p in pypdf.PdfReader(io.BytesIO(pdf)).pages]
     plans_pages = [t for t in texts if HEADING.search(t)]
     assert len(plans_pages) == 2  # the two positions whose acceleration plans are drawn: a page of force plans each
     return plans_pages

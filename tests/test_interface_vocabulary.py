@@ -55,6 +55,8 @@ VOCABULARY = {
     "coriolis_component": {"sr": "Кориолисово убрзање aᵏ", "ru": "ускорение Кориолиса aᵏ", "bg": "Кориолисово ускорение aᵏ",
                            "sl": "Coriolisov pospešek aᵏ"},
     "construction_line": {"sr": "помоћна линија", "ru": "линия построения", "bg": "построителна линия", "sl": "konstrukcijska črta"},
+    # a link's image on a plan (the similarity theorem), in the plans' legend (round 20)
+    "link_image": {"sr": "слика члана", "ru": "образ звена", "bg": "образ на звено", "sl": "slika člena"},
     "path": {"sr": "путања тачке", "ru": "траектория точки", "bg": "траектория на точка", "sl": "tirnica točke"},
     "cycle_diagrams": {"sr": "Кинематски дијаграми током циклуса", "ru": "Кинематические диаграммы за цикл",
                        "bg": "Кинематични диаграми за един цикъл", "sl": "Kinematični diagrami v enem ciklu"},

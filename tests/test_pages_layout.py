@@ -64,7 +64,7 @@ def test_the_plan_of_positions_is_drawn_at_the_k_l_it_states(plate):
 
 
 def test_a_crowded_plan_has_its_enlarged_detail_where_it_fits(plate):
-    """A plan with a crowd of images (six-bar's a b c within 8 mm) is drawn with its detail "I (n : 1)" unless the
+    """A plan with a crowd of images (six-bar's a b c within 8 mm) is drawn with its detail "Detail I (n : 1)" unless the
     detail would run out of the plan's cell; a plan without a crowd has none."""
     for r in plate.runs:
         plan = r.graphical.velocity_plan

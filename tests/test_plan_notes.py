@@ -189,8 +189,13 @@ def test_notes_under_the_plans_are_the_plans_segments(handouts, name):
             if gid.startswith(f"{tag}-short-"):
                 label = gid[len(f"{tag}-short-"):]
                 v = next(v for v in plan.vectors if v.label.replace("^", "_") == label)
-                m = re.fullmatch(r"(\S+(?: \S+)?) ([=<]) ([0-9]+[.,][0-9]{2}) (mm|мм)(?: \((detail|детаљ|детайл) (I+)\))?", note)
+                m = re.fullmatch(r"(\S+(?: \S+)?) ([=<]) ([0-9]+[.,][0-9]{2}) (mm|мм)"
+                                 r"(?: \((detail|детаљ|детайл) (I+): ([0-9]+[.,][0-9]{2}) (mm|мм)\))?", note)
                 assert m, note
+                if m.group(7):  # (its length in the detail, round 20: the plan's length × the ratio its title states)
+                    title = next(t for gid, t in texts.items() if re.fullmatch(rf"{tag}(-detail)?-(detail-)?name", gid) and f" {m.group(6)} (" in t)
+                    ratio = float(re.search(r"\(([0-9.,]+) : 1\)", title).group(1).replace(",", "."))
+                    assert float(m.group(7).replace(",", ".")) == pytest.approx(ratio * v.length, abs=0.006 * ratio), (note, title)
                 if m.group(2) == "=":
                     assert float(m.group(3).replace(",", ".")) == pytest.approx(v.length, abs=0.006)
                 else:  # "< 0,01 mm", not "0,00 mm"
@@ -216,7 +221,11 @@ def test_the_quick_return_notes_read_as_the_review_asked():
     a_e = abs(complex(np.ravel(run.analytic.points["E"].a)[0]))  # the analytic solution, not the plan
     # was "|a_E| = 2,44 mm" (at k_a 0.15); 9 mm long in the plan's enlarged detail (5 : 1) beside it, which the note
     # names (on a line of its own where the plan is narrow)
-    assert f"π e′ = {mm(a_e)} mm (детаљ I)" in notes or (f"π e′ = {mm(a_e)} mm" in notes and texts.get("acc-where-a_E") == "(детаљ I)"), notes
+    title = next(t for gid, t in texts.items() if gid in ("acc-detail-name", "acc-detail-detail-name"))
+    ratio = int(re.fullmatch(r"Детаљ I \(([0-9]+) : 1\)", title).group(1))
+    there = f"{ratio * a_e / k_a:.2f}".replace(".", ",")  # (its length in the detail, round 20)
+    assert (f"π e′ = {mm(a_e)} mm (детаљ I: {there} mm)" in notes
+            or (f"π e′ = {mm(a_e)} mm" in notes and texts.get("acc-where-a_E") == f"(детаљ I: {there} mm)")), notes
     # the Coriolis component 2·ω₄·|v_A4A3| (domain.md §4): A4 the rocker's point under A, v_A4 = iω₄(r_A − r_C)
     first = lambda x: complex(np.ravel(x)[0])  # noqa: E731
     a = run.analytic

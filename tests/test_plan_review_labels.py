@@ -25,11 +25,8 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-import plans
 from plans.drawing.plan_drawing import draw_plan
 from plans.drawing.svgblocks import plan_svg
-from plans.handout import handout
-from plans.scene import example_path
 
 from plandraw_overlaps import SLIVER_MM2, label_boxes
 from review_handouts import REVIEWED, built, reviewed_handouts
@@ -48,7 +45,7 @@ def handouts():
 def at_review_k_a():
     """The sr quick-return handout with the plate's k_a given as the review saw it, 0.2 (m/s²)/mm, and its positions
     (4 and 10: the lever upright, the plans collapsed; the default now draws 2 and 9)."""
-    return handout(plans.load(example_path("quick-return")), positions=12, lang="sr", k_a=0.2, accelerations=[4, 10])
+    return built("quick-return", 12, "sr", k_a=0.2, accelerations=(4, 10))
 
 
 def _svg(svg: bytes):
@@ -86,7 +83,7 @@ def test_the_small_acceleration_plan_is_drawn_again_enlarged_beside_itself(at_re
     a_a = abs(_first(_run(doc, 4).analytic.points["A"].a))  # |a_A| = ω₂²·OA, the analytic solution
     root, per_mm = _svg(doc.images["a-4"])
     texts = _texts(root)
-    assert texts["acc-detail-name"] == "детаљ I (5 : 1)"
+    assert texts["acc-detail-name"] == "Детаљ I (5 : 1)"  # (as every detail's title: round 20)
     # the plan at k_a: π a′ = |a_A| / k_a (22 mm); its detail five times that
     drawn = abs(_centre(root, "acc-dot-a") - _centre(root, "acc-pole")) / per_mm
     enlarged = abs(_centre(root, "acc-detail-dot-a") - _centre(root, "acc-detail-pole")) / per_mm
@@ -113,15 +110,15 @@ def test_the_small_plan_at_the_plates_own_k_a_is_enlarged_in_a_detail(handouts):
     assert a_a / k_a < 30.0 and a_n_ed / k_a < 3.0  # a small plan, aⁿ_ED too short for an arrow on it
     root, per_mm = _svg(doc.images["a-2"])
     assert abs(_centre(root, "acc-dot-a") - _centre(root, "acc-pole")) / per_mm == pytest.approx(a_a / k_a, abs=0.1)
-    ratio = float(re.search(r"I \(([0-9.]+) : 1\)$", " ".join(t for gid, t in _texts(root).items() if gid.startswith("acc-detail-name"))).group(1))
+    ratio = float(re.search(r"I \(([0-9.,]+) : 1\)$", " ".join(t for gid, t in _texts(root).items() if gid.startswith("acc-detail-name"))).group(1).replace(",", "."))
     assert ratio >= 2
     drawn = abs(_centre(root, "acc-detail-dot-a") - _centre(root, "acc-detail-pole")) / per_mm
     assert drawn == pytest.approx(ratio * a_a / k_a, abs=0.2)
     assert ratio * a_n_ed / k_a >= 3.0  # an arrow there
 
 
-@pytest.mark.parametrize("lang, words", [("en", "detail I (5 : 1)"), ("sr", "детаљ I (5 : 1)"), ("ru", "выносной элемент I (5 : 1)"),
-                                         ("bg", "детайл I (5 : 1)"), ("sl", "detajl I (5 : 1)")])
+@pytest.mark.parametrize("lang, words", [("en", "Detail I (5 : 1)"), ("sr", "Детаљ I (5 : 1)"), ("ru", "Выносной элемент I (5 : 1)"),
+                                         ("bg", "Детайл I (5 : 1)"), ("sl", "Detajl I (5 : 1)")])
 def test_the_enlarged_detail_is_headed_in_the_readers_language(at_review_k_a, lang, words):
     plan = _run(at_review_k_a, 4).graphical.acceleration_plan
     root, _ = _svg(plan_svg(plan, lang, room=(85.0, 200.0)).svg)
@@ -190,7 +187,7 @@ def test_a_vector_along_another_is_drawn_apart_in_a_detail(handouts):
     assert 0.3 < turn < 1.0
     root, per_mm = _svg(doc.images["a-0"])
     texts = _texts(root)
-    ratio = float(re.fullmatch(r"I \(([0-9.]+) : 1\)", texts["acc-detail-name"]).group(1))
+    ratio = float(re.fullmatch(r"Detail I \(([0-9.]+) : 1\)", texts["acc-detail-name"]).group(1))  # (titled as every detail)
     assert ratio >= 5
     # in the detail, m′ stands off the enlarged shaft of π a′ by ratio × off
     g = next(g for g in root.iter(f"{SVG}g") if g.get("id") == "acc-detail-a_A")
@@ -220,3 +217,56 @@ def test_a_crowded_pole_is_drawn_again_enlarged_under_its_plan():
     assert drawn == pytest.approx(ratio * omega4 ** 2 * df / k_a, abs=0.2)
     assert drawn >= 3.0  # an arrow there
     assert _centre(root, "acc-detail-pole").imag > _centre(root, "acc-pole").imag + 10 * per_mm  # under the plan (SVG y down)
+
+
+def test_a_detail_rings_name_keeps_its_leader_off_the_labels():
+    """Round 20 (bg linear-arm, position 2's acceleration plan): the ring of the pole's crowd was named "I" 12 mm off,
+    on a leader through the "d′" of the pole's label "π, d′, q′, a′, f′". The name stands by its ring, and a leader to
+    it crosses no label."""
+    from shapely.geometry import LineString, box
+
+    from svg_text_boxes import text_boxes
+
+    doc = built("linear-arm", 8, "bg")
+    svg = doc.images["a-2"]
+    boxes = [(gid, text, box(*b)) for gid, text, b in text_boxes(svg)]  # (measured with matplotlib's font metrics)
+    name = next(b for gid, text, b in boxes if gid == "acc-detail-mark")
+    others = [(gid, text, b) for gid, text, b in boxes if gid != "acc-detail-mark" and (text or "").strip(" ,")]
+    leaders = []
+    for g in ET.fromstring(svg).iter(f"{SVG}g"):
+        if re.fullmatch(r"acc-leader(-\d+)?", g.get("id") or ""):
+            xy = [float(v) for v in re.findall(r"-?[0-9]+(?:\.[0-9]+)?", next(g.iter(f"{SVG}path")).get("d"))]
+            leaders.append(LineString([(xy[0], xy[1]), (xy[-2], xy[-1])]))
+    root, per_mm = _svg(svg)
+    centre, r = _circle(root, "acc-detail-ring")
+    # its leader: from the ring's edge to within reach of its box (it stops 0.6 mm short of the box plans reckons)
+    mine = [line for line in leaders
+            if min(abs(abs(complex(*xy) - centre) - r) for xy in line.coords) <= 0.8 * per_mm and line.distance(name) <= 2.5 * per_mm]
+    for line in mine:
+        crossed = [(gid, text) for gid, text, b in others if line.intersects(b.buffer(-0.2))]
+        assert not crossed, crossed
+
+
+def _circle(root, gid: str) -> tuple[complex, float]:
+    """(centre, radius) [SVG units] of the circle drawn as *gid* (its path's bounding box)."""
+    g = next(g for g in root.iter(f"{SVG}g") if g.get("id") == gid)
+    numbers = [float(x) for x in re.findall(r"-?[0-9]+(?:\.[0-9]+)?", next(g.iter(f"{SVG}path")).get("d"))]
+    xs, ys = numbers[0::2], numbers[1::2]
+    return complex((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2), (max(xs) - min(xs)) / 2
+
+
+def test_a_detail_stands_clear_of_the_ring_it_enlarges_and_of_the_plans_labels():
+    """Round 25 (en six-bar handout, the acceleration plan): "Detail I (10 : 1)" touched the ring at m′ it enlarges,
+    the ring's name "I" lay on the detail's edge and the plan's "m′" inside its circle, two m′ at two scales in one
+    circle. The detail stands 6 mm clear of its ring, and no text of the plan lies in its circle."""
+    from shapely.geometry import Point, box
+
+    from svg_text_boxes import text_boxes
+
+    svg = built("six-bar", None, "en", centres=True).images["a-0"]
+    root, per_mm = _svg(svg)
+    (detail, big), (ring, r) = _circle(root, "acc-detail"), _circle(root, "acc-detail-ring")
+    assert abs(detail - ring) - big - r >= 5.9 * per_mm, (abs(detail - ring) - big - r) / per_mm
+    disk = Point(detail.real, detail.imag).buffer(big)
+    inside = [(gid, text) for gid, text, b in text_boxes(svg) if not gid.startswith("acc-detail-") and disk.intersects(box(*b))]
+    assert not inside, inside

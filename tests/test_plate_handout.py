@@ -20,6 +20,7 @@ from plans.handout import handout
 from plans.pages.equations import equation_math, twice
 from plans.pages.handout import ORDER
 from plans.scene import example_path, loads
+from review_handouts import built, built_pdf
 
 pytestmark = pytest.mark.filterwarnings("ignore")
 
@@ -32,20 +33,17 @@ def _pages(pdf: bytes, plain: bool = True) -> list[str]:
 
 @pytest.fixture(scope="module")
 def quick_return_sr():
-    doc = handout(plans.load(example_path("quick-return")), positions=6, lang="sr", centres=True)
-    return doc, doc.pdf()
+    return built("quick-return", 6, "sr", centres=True), built_pdf("quick-return", 6, "sr", centres=True)
 
 
 @pytest.fixture(scope="module")
 def six_bar_bg():
-    doc = handout(plans.load(example_path("six-bar")), positions=4, lang="bg")
-    return doc, doc.pdf()
+    return built("six-bar", 4, "bg"), built_pdf("six-bar", 4, "bg")
 
 
 @pytest.fixture(scope="module")
 def four_bar_en():
-    doc = handout(plans.load(example_path("four-bar")), lang="en")
-    return doc, doc.pdf()
+    return built("four-bar", None, "en"), built_pdf("four-bar", None, "en")
 
 
 # --- one scale per kind ------------------------------------------------------------------------

@@ -103,3 +103,30 @@ def test_a_coriolis_component_too_short_for_an_arrow_is_in_the_legend():
     assert coriolis and all(v.length < SHORT_MM for v in coriolis)
     text = legend_svg(plans_a, "sr").svg.decode()
     assert "Кориолисово убрзање" in text
+
+
+def _velocity_legend(example: str, lang: str = "en") -> str:
+    """The page legend of *example*'s velocity plan at its own position (the block the pages place), as SVG text."""
+    import plans
+    from plans.drawing.svgblocks import legend_svg
+    from plans.graphical import construct
+    from plans.positions import at_page_precision
+
+    g = construct(at_page_precision(plans.load(plans.example_path(example))))
+    return legend_svg((g.velocity_plan,), lang).svg.decode()
+
+
+def test_a_links_image_on_the_plan_is_in_the_legend():
+    """Round 20 (bg linear-arm): the velocity plans draw rod 3's image, the thin segment f h₃ g (the rod carries F, H
+    and G: similarity), and the four-bar's coupler image a b m as a grey triangle; neither was in the legend. Its
+    sample is what the plan draws (rounds 23, 24: a triangle beside the quick-return's plans, whose links are bars
+    and their images segments): the quick-return's a thin segment, the four-bar's and the linear-arm's (sleeve 4's
+    d k f₄) a triangle. A link with two points whose images a drawn vector joins has no image of its own (the scotch
+    yoke: none)."""
+    assert 'id="legend-legend-figure"' in _velocity_legend("linear-arm", "bg")
+    segment = _velocity_legend("quick-return", "bg")
+    assert 'id="legend-legend-figure_segment"' in segment and 'id="legend-legend-figure"' not in segment
+    assert "образ на звено" in segment
+    triangle = _velocity_legend("four-bar", "bg")
+    assert 'id="legend-legend-figure"' in triangle and "образ на звено" in triangle
+    assert "legend-legend-figure" not in _velocity_legend("scotch-yoke")

@@ -102,3 +102,30 @@ def test_a_packed_point_is_numbered_in_its_detail(drawn):
         assert not on_plan, on_plan
         assert in_detail == [f"{point}{n}" for n in range(1, 8)], in_detail
         assert any(t.get_gid() == f"pos-position-0-{point}" for t in texts)
+
+
+def test_a_detail_numbers_each_mark_nearer_it_than_any_other(drawn):
+    """Round 20 (bg linear-arm, 8 positions): in "Детайл II (4 : 1)" the number H₁ stood over H₀'s dot, where links 3
+    and 6 meet, and H₁'s own dot, the next along the path, had no number near it. In an enlarged detail too a reader
+    takes a number for the nearest dot's: each number is nearer its own dot than any other dot of its detail, or on a
+    leader from its dot."""
+    name, run, fig, renderer = drawn
+    texts = read_texts([t for t in fig.findobj(lambda a: hasattr(a, "get_text") and (a.get_gid() or "")) if t.get_text().strip()])
+    dots = {}
+    for m in fig.findobj(lambda a: re.fullmatch(r"pos-detail-[IVX]+-dot-.+", a.get_gid() or "") is not None and hasattr(a, "center")):
+        detail, number = re.fullmatch(r"pos-detail-([IVX]+)-dot-(.+)", m.get_gid()).groups()
+        dots.setdefault(detail, {})[number] = complex(*m.center)
+    checked = 0
+    for t in texts:
+        found = re.fullmatch(r"pos-detail-([IVX]+)-number-(.+)", t.get_gid())
+        if found is None:
+            continue
+        detail, number = found.groups()
+        own = dots[detail][number]
+        x, y = t.label_position()
+        at = complex(x, y)
+        others = [z for key, z in dots[detail].items() if key != number and abs(z - own) > 1.0]
+        assert all(abs(at - z) > abs(at - own) for z in others) or leader_says(t, own), (name, detail, t.get_text())
+        checked += 1
+    if name == "linear-arm":
+        assert checked >= 14  # (K₀…K₇ and H₁…H₇ at least)

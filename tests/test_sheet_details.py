@@ -20,8 +20,8 @@ def six_bar_lines():
 
 
 def test_the_velocity_plans_detail_is_on_the_sheet(six_bar_lines):
-    captions = [line for line in six_bar_lines if re.fullmatch(r"[IVX]+ \(\d+ : 1\)", line)]
-    assert captions, "no enlarged detail (its caption 'I (n : 1)') on the six-bar sheet"
+    captions = [line for line in six_bar_lines if re.fullmatch(r"Detail [IVX]+ \(\d+ : 1\)", line)]
+    assert captions, "no enlarged detail (its caption 'Detail I (n : 1)') on the six-bar sheet"
     ratio = int(re.search(r"\((\d+) : 1\)", captions[0]).group(1))
     k_v = float(re.search(r"\bkv = ([\d.]+) \(m/s\)/mm", " ".join(six_bar_lines)).group(1))
     # ab on the plan is |v_BA| / k_v with |v_BA| = ω₃·AB; the sheet's printed ω₃ = 0.25 rad/s gives 0.1125 m/s

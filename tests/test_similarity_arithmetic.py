@@ -83,3 +83,17 @@ def test_a_triangles_two_proportions_are_set_apart_on_the_page():
     joined = re.findall(r"мм\)? f₄ k / f₄ p", text)
     apart = re.findall(r"мм\)?; f₄ k / f₄ p", text)
     assert not joined and len(apart) >= 8, (joined, len(apart))
+
+
+def test_the_stroke_time_reads_as_the_data_states_it():
+    """Round 20 (bg linear-arm): the data block says the stroke takes "t = 0,4 с", the diagrams' page "T = 0,4000 с".
+    One value, one way of writing it: the time the scene gives (200 mm at 0.5 m/s), without trailing zeros."""
+    import io
+
+    from pypdf import PdfReader
+
+    from review_handouts import built_pdf
+
+    text = " ".join(" ".join(page.extract_text() for page in PdfReader(io.BytesIO(built_pdf("linear-arm", 8, "bg"))).pages).split())
+    assert "t = 0,4 с" in text  # the data block
+    assert "T = 0,4 с" in text and "T = 0,4000" not in text

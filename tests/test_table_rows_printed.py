@@ -1,8 +1,9 @@
 """Teacher's review (issue 20): every comparison table a student can check by hand.
 
 Read back from the typeset handout (``pdftotext``): in each row of the graphical-against-analytic tables and
-of the centres page's table, both values are printed to the same decimals (trailing zeros kept) and the
-relative error printed is the one of the two printed numbers (recomputed here from the strings alone; a vector
+of the centres page's table, the analytic value is printed to the graphical one's decimals (trailing zeros kept)
+and to at least 4 significant digits (round 20: rounded to the reading's decimals it hid the graphical method's
+error, "v_K 0,032 | 0,032 | 0" against 0,03238), and the relative error printed is the one of the two printed numbers (recomputed here from the strings alone; a vector
 ``m ∠ θ°`` from its printed magnitude and direction).  The driver's ω is given, not found: "—" on every page.
 The column headers are the course's words (по плану), and the readings table's last column has a word.
 """
@@ -58,12 +59,17 @@ def rows(tmp_path_factory):
     return [m for line in plain.splitlines() if (m := ROW.match(line))]
 
 
-def test_both_values_of_a_row_to_the_same_decimals_and_the_error_of_the_printed_numbers(rows):
+def _significant(cell: str) -> int:
+    return len(cell.split(" ∠")[0].replace("−", "").replace(",", "").replace(".", "").lstrip("0"))
+
+
+def test_the_analytic_value_to_four_digits_and_the_error_of_the_printed_numbers(rows):
     assert len(rows) >= 25  # the plans' table (22 rows) and the centres page's (9)
     checked = 0
     for m in rows:
         g, a, e = m["g"], m["a"], m["e"]
-        assert _decimals(g) == _decimals(a), m.group(0)
+        assert _decimals(a) >= _decimals(g), m.group(0)
+        assert _significant(a) >= 4 or _decimals(a) == _decimals(g) or e == "—", m.group(0)
         if e == "—":
             continue
         recomputed = abs(_value(g) - _value(a)) / abs(_value(a))
@@ -76,15 +82,17 @@ def test_both_values_of_a_row_to_the_same_decimals_and_the_error_of_the_printed_
 
 
 def test_the_teachers_rows(rows):
-    """The rows the review quoted: ε₅ −3.35 against −3.34 (not −3.344), v_E5 0.775 against 0.776 (not 0.7759)."""
+    """The rows an earlier review quoted: ε₅ −3.35 against −3.344 (it had asked for −3.34, the reading's decimals:
+    round 20 showed that this hides the graphical method's error, and the analytic value keeps 4 digits), v_E5 0.775
+    against 0.7759."""
     by = {}
     for m in rows:
         by.setdefault(m["q"], []).append(m)
     eps5 = by["ε5"][0]
-    assert (eps5["g"], eps5["a"]) == ("−3.35", "−3.34")
-    assert _number(eps5["e"]) == pytest.approx(0.01 / 3.34, rel=0.05)
+    assert (eps5["g"], eps5["a"]) == ("−3.35", "−3.344")
+    assert _number(eps5["e"]) == pytest.approx(0.006 / 3.344, rel=0.05)
     v = by["vE5"][0]
-    assert v["a"].startswith("0.776 ∠") and _decimals(v["g"]) == 3  # (the reading at the plate's k_v, to its 3 decimals)
+    assert v["a"].startswith("0.7759 ∠") and _decimals(v["g"]) == 3  # (the reading at the plate's k_v, to its 3 decimals)
 
 
 def test_the_drivers_omega_has_no_error_on_any_page(rows):

@@ -62,7 +62,7 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
     * v_j of a translating link from a link k that turns: ``ω₂ · P₁₂P₂₆ = ω₂ · 29.0 · k_l`` (it moves as its
       centre P_jk, a point of k); from a translating k: ``v₃`` (through a finite P_jk) or
       ``v₃ + v₄₃ (P₁₄ ∞, P₃₄ ∞)`` (the velocity triangle of two directions);
-    * v_M of a point: P_1jM [mm] (v_M = |ω_j| · P_1jM × k_l); ``v₆`` on a translating link; a dash on the driver
+    * v_M of a point: ``P₁₃G = 349.9``, P_1jM [mm] (v_M = |ω_j| · P_1jM × k_l); ``v₆`` on a translating link; a dash on the driver
       of a sliding driver (given); a pin through the body it was read from (:attr:`plans.centres.InstantCentres.carriers`:
       the ram's pin E as ``v₆`` where P₁₅ lies off the drawing);
 
@@ -98,7 +98,7 @@ def centres_page_table(result, comparisons, lang: str = "en", k_l: float | None 
         if centre.point is None:
             return ["—" if home == driver.link else motion_of(home)]
         mm = abs(result.positions[name] - centre.point) / k_l
-        return [_as_read(mm)]
+        return [f"{centre_text(centre.label)}{name} = {_as_read(mm)}"]  # (the segment measured: round 20's bare "349,9")
 
     def step(name: str, translation: bool) -> list[str]:
         """How the row of link *name* (its ω, or with *translation* its v) is found from the link found before it."""

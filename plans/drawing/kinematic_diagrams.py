@@ -413,7 +413,7 @@ def draw_kinematic_figure(d: KinematicDiagrams, *, title: str = "", lang: str = 
         sketch = Sketch(ax, "kd")
         sc = d.scales
         caption = [title, page_heading(lang),
-                   f"{diagram_words(d, lang)['output']};  T = {_num(d.motion.duration, lang, 4)} s,  L = {_short(sc.length, lang)} mm,  "
+                   f"{diagram_words(d, lang)['output']};  T = {_short(d.motion.duration, lang)} s,  L = {_short(sc.length, lang)} mm,  "
                    f"μt = T/L = {_short(sc.mu_t, lang)} s/mm"]
         top = 0.0
         for k, line in enumerate(x for x in caption if x):
@@ -607,11 +607,11 @@ def header_lines(d: KinematicDiagrams, lang: str = "en") -> list[str]:
         law = f";  {d.law.describe(lang, d.driver, **({'phase': d.start_phase} if d.start_phase is not None else {}))}"
     steps = even = ""
     if d.law is not None and d.law.kind in ("constant", "harmonic") and d.motion.period is not None:
-        steps = f",  Δt = T/{d.motion.intervals} = {_num(duration / d.motion.intervals, lang, 4)} s"
+        steps = f",  Δt = T/{d.motion.intervals} = {_short(duration / d.motion.intervals, lang)} s"
         even = f" ({term('equal_time_steps', lang)} Δt)"
     return [
         f"{words['output']};  {term('positions', lang)}: {count}{even}" + law,
-        f"T = {_num(duration, lang, 4)} s ({term('cycle_time' if d.law is None or d.law.crank else 'stroke_time', lang)}){steps},  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
+        f"T = {_short(duration, lang)} s ({term('cycle_time' if d.law is None or d.law.crank else 'stroke_time', lang)}){steps},  L = {_short(sc.length, lang)} mm ({term('abscissa_length', lang)}),  "
         f"$\\mu_{{t}}$ = T/L = {_short(sc.mu_t, lang)} s/mm",
         scales_line(d, lang),
         origin_line(d, lang),

@@ -115,7 +115,7 @@ def _leader_crossings(sketch: Sketch, anchor: complex, center: complex, w: float
 
     The point's own marks do not count: what passes within :data:`LEADER_OWN_MM` of *anchor* (its pin, the links
     meeting there) and a closed outline around it (the block it sits in, the slot that block slides in), which any
-    leader from the point has to leave.  0 when no leader would be drawn (:func:`_leader_segment`).
+    leader from the point has to leave; another label always counts.  0 when no leader would be drawn (:func:`_leader_segment`).
     """
     segment = _leader_segment(anchor, center, w, h)
     if segment is None:
@@ -136,7 +136,10 @@ def _leader_crossings(sketch: Sketch, anchor: complex, center: complex, w: float
         around = np.zeros(len(shapes), dtype=bool)
         around[closed] = shapely.contains(shapely.polygons(rings[closed]), point)
         own |= around
-    return int((~own).sum())
+    # never another label (an upright box), however near the point it stands: round 20's ring name "I" ran its leader
+    # through the pole's "π, d′, q′, a′, f′", whose box came within reach of the ring's edge
+    label = (shapely.get_num_coordinates(shapes) == 5) & np.isclose(shapely.area(shapes), shapely.area(shapely.envelope(shapes)))
+    return int((~own | label).sum())
 
 
 #: A leader crossing a mark costs as much as this much distance [mm] (less than a box over a mark, :data:`OVERLAP_MM`:
@@ -149,6 +152,33 @@ LEADER_MORE_MM = 1.5
 def _leader_cost(crossings: int) -> float:
     """What a leader crossing *crossings* marks costs, in distance [mm] (:data:`LEADER_CROSSING_MM`, :data:`LEADER_MORE_MM`)."""
     return 0.0 if crossings <= 0 else LEADER_CROSSING_MM + LEADER_MORE_MM * (min(crossings, 5) - 1)
+
+
+def place_ring_name(sketch: Sketch, centre: complex, r: float, pieces: list[tuple[str, str | None]], *, size: float,
+                    gaps: tuple[float, ...] = (0.4, 1.2, 2.4, 4.0), leader_from: float = 3.0) -> list:
+    """The name of a detail's ring (centre *centre*, radius *r* [mm]: "I") beside the ring, placed as
+    :func:`place_label` places a label of a point on the ring: up and right of it first, then round it, the first
+    place whose box is clear and whose leader crosses no mark or label; else the one whose leader crosses fewest.
+    (Round 20: the linear-arm's pole crowd left no clear place up and right, and "I" went 12 mm off on a leader
+    through the pole's "π, d′, q′, a′, f′".)  Returns the label's Text artists."""
+    w, h = text_size(_SEPARATOR.join(t for t, _ in pieces), size)
+    tried = []
+    for k in (1, 3, 7, 5, 2, 6, 0, 4):
+        u = cmath.exp(1j * math.pi * k / 4)
+        anchor = centre + r * u
+        state = sketch.checkpoint()
+        artists = place_label(sketch, anchor, pieces, size=size, gaps=gaps, prefer=u, leader_from=leader_from, clear_leaders=True)
+        x, y = artists[0].get_position()
+        sketch.restore(state)
+        at = complex(x + w / 2, y)
+        label = box(at.real - w / 2, at.imag - h / 2, at.real + w / 2, at.imag + h / 2)
+        covered = any(shape.intersects(label) for shape in sketch.obstacles.near(*label.bounds))
+        cost = (int(covered), _leader_crossings(sketch, anchor, at, w, h) if _to_box(anchor, at, w, h) >= leader_from else 0)
+        if cost == (0, 0):
+            return place_label(sketch, anchor, pieces, size=size, gaps=gaps, prefer=u, leader_from=leader_from, clear_leaders=True)
+        tried.append((cost, len(tried), anchor, u))
+    _, _, anchor, u = min(tried)
+    return place_label(sketch, anchor, pieces, size=size, gaps=gaps, prefer=u, leader_from=leader_from, clear_leaders=True)
 
 
 def place_label(

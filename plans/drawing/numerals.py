@@ -4,7 +4,8 @@
 * :func:`localised` — a number already formatted as text, with the language's
   decimal mark and a true minus sign (U+2212);
 * :func:`scale_caption` — a drawing's scale statement, the symbol typeset
-  (``$k_{v}$ = 0,025 (m/s)/mm``).
+  (``$k_{v}$ = 0,025 (m/s)/mm``);
+* :func:`detail_title` — an enlarged detail's title, ``Детайл I (4 : 1)``.
 
 >>> localised("-0.25", "sr"), localised("-0.25", "en")
 ('−0,25', '−0.25')
@@ -12,9 +13,10 @@
 
 from __future__ import annotations
 
-__all__ = ["DECIMAL_COMMA", "MINUS", "localised", "scale_caption", "course_units"]
+__all__ = ["DECIMAL_COMMA", "MINUS", "localised", "scale_caption", "detail_title", "course_units"]
 
 from .._text import course_units  # noqa: E402 (re-exported: the drawings' unit symbols)
+from ..i18n import term
 
 #: Languages written with a decimal comma.
 DECIMAL_COMMA = ("sr", "ru", "bg", "sl")
@@ -36,3 +38,15 @@ def scale_caption(key: str, value: str, units: str, lang: str) -> str:
     """
     symbol, _, sub = key.partition("_")
     return f"${symbol}_{{{sub}}}$ = {localised(value, lang)} {units}"
+
+
+def detail_title(name: str, ratio: str, lang: str) -> str:
+    """An enlarged detail's title, the same on the plan of positions and on every plan: *name* (``I``), *ratio*
+    formatted (``4``) — ``Детайл I (4 : 1)`` (round 20 read "I (4 : 1)" on a plan against "Детайл I (10 : 1)" on the
+    plan of positions).
+
+    >>> detail_title("II", "2.5", "bg")
+    'Детайл II (2,5 : 1)'
+    """
+    word = term("detail", lang)
+    return f"{word[:1].upper()}{word[1:]} {name} ({localised(ratio, lang)} : 1)"

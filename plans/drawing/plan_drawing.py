@@ -25,8 +25,8 @@ from shapely.geometry import Polygon as ShapelyPolygon
 
 from .._text import SUBSCRIPT, math_name
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
-from .labels import LABEL_SPACE_MM, place_label
-from .numerals import localised, scale_caption
+from .labels import LABEL_SPACE_MM, place_label, place_ring_name
+from .numerals import detail_title, localised, scale_caption
 
 from .style import (
     CAPTION_PT,
@@ -53,6 +53,7 @@ __all__ = [
     "at_rest_texts",
     "along_note",
     "kinds_drawn",
+    "link_figures",
     "vector_math",
     "end_letters",
     "coriolis_letter",
@@ -60,6 +61,7 @@ __all__ = [
     "notes_text",
     "legend_words",
     "legend_entries",
+    "figure_entries",
     "ZERO_MM",
     "SHORT_MM",
     "enlarged",
@@ -151,9 +153,11 @@ def whole_detail_ratios(plan) -> tuple[float, ...]:
 
 
 def detail_caption(ratio: float, lang: str = "en") -> tuple[str, str]:
-    """The heading of a plan's whole detail in the reader's language, as (word, numeral and ratio): ``("detail", "I (5 : 1)")``,
-    written ``detail I (5 : 1)`` (the word over the rest where the detail is narrower than the whole)."""
-    return term("detail", lang), f"{DETAIL_NAME} ({fmt_number(ratio)} : 1)"
+    """The heading of a plan's whole detail in the reader's language, as (word, numeral and ratio): ``("Detail", "I (5 : 1)")``,
+    written ``Detail I (5 : 1)`` as every detail's title (:func:`~plans.drawing.numerals.detail_title`; the word over the
+    rest where the detail is narrower than the whole)."""
+    word, _, rest = detail_title(DETAIL_NAME, fmt_number(ratio), lang).partition(f" {DETAIL_NAME} ")
+    return word, f"{DETAIL_NAME} {rest}"
 
 
 def _same(v, w) -> bool:
@@ -420,11 +424,18 @@ def alongside(plan) -> list[tuple]:
 
 
 def legend_row(sketch, kind: str, words: str, x: float, y: float, *, text_gid: str) -> None:
-    """One legend entry at (x, y) [mm]: a 9 mm sample of the *kind*'s line or arrow, then its words."""
+    """One legend entry at (x, y) [mm]: a 9 mm sample of the *kind*'s line or arrow (a link's image: a lightly filled
+    triangle), then its words."""
     a, c = complex(x, y), complex(x + 9.0, y)
     if kind == "construction":
         color, lw, dashes = CONSTRUCTION_STYLE
         sketch.line([a, c], color=color, lw=lw, dashes=dashes, gid=f"legend-{kind}", obstacle=False)
+    elif kind == "figure":  # (a link's image: a lightly filled triangle, as the plans draw it)
+        edge, lw, fill = FIGURE_STYLE
+        sketch.polygon([a - 1.2j, c - 1.2j, a + 6.0 + 1.2j], fc=fill, ec=edge, lw=lw, gid=f"legend-{kind}", obstacle=False)
+    elif kind == "figure_segment":  # (a link's image whose points lie on a line: the thin segment the plans draw)
+        edge, lw, _ = FIGURE_STYLE
+        sketch.line([a, c], color=edge, lw=lw, gid=f"legend-{kind}", obstacle=False)
     else:
         color, lw, dashes, _ = VECTOR_STYLE[kind]
         sketch.arrow(a, c, color=color, lw=lw, dashes=dashes, head=2.4, gid=f"legend-{kind}")
@@ -523,7 +534,7 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
     # a detail of short components that crowd is drawn first, where the plan has room for it (else their
     # notes stand alone); a link's crowd is ringed first, so that the plan's labels keep off the ring, and its
     # detail, beside the plan when there is no room within, is drawn after them
-    in_detail: dict[str, str] = {}
+    in_detail: dict[str, tuple[str, float]] = {}  # (a short vector's label: the detail drawing it, its ratio)
     rings = []
     names_given: list[str] = []  # I, II, … in the order the details are drawn
 
@@ -540,8 +551,8 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
         elif (at := _spot(sketch, ring, within=True)) is not None:
             _draw_ring(sketch, ring)
             name = next_name()
-            for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, at):
-                in_detail.setdefault(label, name)
+            for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, at, lang=lang):
+                in_detail.setdefault(label, (name, ring[2]))
         elif detail_under:  # (no room within: under the plan, after its labels, as a link's crowd)
             _draw_ring(sketch, ring)
             rings.append((ring, names))
@@ -558,8 +569,8 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
             if (at := _spot(sketch, ring, within=True)) is not None:
                 _draw_ring(sketch, ring)  # (only where the plan has room for it: the page's plan keeps its scale)
                 name = next_name()
-                for label in _detail(sketch, plan, vectors, images, ends, ring, [], name, at):
-                    in_detail.setdefault(label, name)
+                for label in _detail(sketch, plan, vectors, images, ends, ring, [], name, at, lang=lang):
+                    in_detail.setdefault(label, (name, ring[2]))
     groups = _label_groups(plan, images, ends, shorts, JOIN_MM)
     # every dot of the plan: a label stands nearer its own point than any other (it reads as that point's)
     where = {"pole-label": 0j} | {f"image-{name}": z for name, z in images.items()} | {f"end-{label}": z for z, _, label in ends}
@@ -620,13 +631,13 @@ def draw_plan_into(sketch: Sketch, plan, lang: str = "en", legend: bool = True, 
 
     for ring, names in rings:
         name = next_name()
-        for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, under=detail_under):
-            in_detail.setdefault(label, name)
+        for label in _detail(sketch, plan, vectors, images, ends, ring, names, name, under=detail_under, lang=lang):
+            in_detail.setdefault(label, (name, ring[2]))
 
     if whole:
         for v in shorts:
             if v.length * whole >= SHORT_MM:
-                in_detail.setdefault(v.label, DETAIL_NAME)
+                in_detail.setdefault(v.label, (DETAIL_NAME, whole))
     if caption:
         _caption(sketch, plan, vectors, drawn_lines, lang, legend, notes=[(v, in_detail.get(v.label)) for v in shorts],
                  along=alongside(plan), heading=heading, letters=letters, narrow=bool(whole))
@@ -762,6 +773,10 @@ def _draw_ring(sketch: Sketch, ring: tuple[complex, float, float]) -> None:
 DETAIL_UNDER_GAP_MM = 8.0
 
 
+#: the room [mm] between a detail's circle and the ring on the plan it enlarges
+RING_CLEAR_MM = 6.0
+
+
 def _spot(sketch: Sketch, ring: tuple[complex, float, float], within: bool = False, under: bool = False) -> complex | None:
     """Where the ring's detail goes: in a free part of the plan (the page's room for it is not widened),
     nearest the crowd; else (unless *within*) beside it, to the right, level with the crowd (*under*: below it,
@@ -776,6 +791,9 @@ def _spot(sketch: Sketch, ring: tuple[complex, float, float], within: bool = Fal
         for i in range(int(max(0.0, b.width - 2 * free) / step) + 1)
         for j in range(int(max(0.0, b.height - 2 * free) / step) + 1)
     ]
+    # (clear of the ring it enlarges by room for the ring's name and its points' labels: round 25's six-bar detail
+    # touched the ring at m′, its "m′" and "I" on the detail's edge)
+    spots = [c for c in spots if abs(c - centre) >= big + r + RING_CLEAR_MM]
     spots.sort(key=lambda c: (abs(c - centre), c.real, c.imag))
     # A spot is free when its disk (a polygon inside the circle of radius *free*) meets no obstacle.  One
     # spatial query finds, for every spot at once, the obstacles within *free* of it (a superset of those
@@ -806,7 +824,7 @@ def _spot(sketch: Sketch, ring: tuple[complex, float, float], within: bool = Fal
 
 
 def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[complex, float, float], names: list[str], name: str, at: complex | None = None,
-            under: bool = False) -> set[str]:
+            under: bool = False, lang: str = "en") -> set[str]:
     """Crowded images drawn again, enlarged n : 1, in a circle beside the plan (a drafting detail).
 
     The crowd is ringed on the plan and named.  The detail shows everything the
@@ -826,8 +844,6 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[compl
     centre, r, ratio = ring
     big = r * ratio
     edge, lw, fill = FIGURE_STYLE
-    place_label(sketch, centre + r * cmath.exp(1j * math.pi / 4), [(name, "detail-mark")], size=LABEL_PT, gaps=(0.4, 1.2, 2.4, 4.0), leader_from=3.0)
-
     if at is None:
         at = _spot(sketch, ring, under=under)
 
@@ -877,7 +893,11 @@ def _detail(sketch: Sketch, plan, vectors, images: dict, ends, ring: tuple[compl
         if away is None:
             away = f(q) - at if abs(f(q) - at) > 1e-9 else None
         place_label(sketch, f(q), [(text, f"detail-{gid}") for text, gid in pieces], size=LABEL_PT, prefer=away, gaps=PLAN_GAPS, leader_from=LEADER_FROM_MM)
-    sketch.text(at + 1j * (big + 3.2), f"{name} ({fmt_number(ratio)} : 1)", size=LABEL_PT, gid="detail-name")
+    sketch.text(at + 1j * (big + 3.2), detail_title(name, fmt_number(ratio), lang), size=LABEL_PT, gid="detail-name")
+    # the detail's whole disk from here on: no label of the plan inside it (round 25: the six-bar's "m′" and the ring's
+    # name "I" stood in the circle of the detail that enlarges them); then the ring's name, clear of it
+    sketch.obstacles.append(Point(at.real, at.imag).buffer(big))
+    place_ring_name(sketch, centre, r, [(name, "detail-mark")], size=LABEL_PT)
     return shown
 
 
@@ -972,12 +992,16 @@ def _at(z: complex, w: complex) -> bool:
     return abs(z - w) <= SAME_MM
 
 
-def _figures(sketch: Sketch, plan, images: dict, vectors) -> None:
-    """The image of each link: its triangle (a b c) lightly filled, or the segment its images lie on (b e₅ m).
+def link_figures(plan, images: dict | None = None, vectors=None) -> list[tuple[str, list[complex], bool]]:
+    """The image of each link as a plan draws it (similarity): ``(link, points [mm], filled)`` — its triangle (a b c),
+    lightly filled, or the segment its images lie on (b e₅ m), from end to end.
 
-    Two images already joined by a drawn vector need no segment.
+    Two images already joined by a drawn vector need no segment.  *images* and *vectors* default to the plan's
+    (:func:`vectors_drawn`).
     """
-    edge, lw, fill = FIGURE_STYLE
+    images = {name: complex(z) for name, z in plan.images.items()} if images is None else images
+    vectors = vectors_drawn(plan) if vectors is None else vectors
+    out = []
     for link, labels in getattr(plan, "links", {}).items():
         pts: list[complex] = []
         for label in labels:
@@ -990,17 +1014,27 @@ def _figures(sketch: Sketch, plan, images: dict, vectors) -> None:
             a, b = pts
             if any({_at(v.tail, a), _at(v.tip, b)} == {True} or (_at(v.tail, b) and _at(v.tip, a)) for v in vectors):
                 continue
-            sketch.line([a, b], color=edge, lw=lw, gid=f"figure-{link}", zorder=1.5)
+            out.append((link, [a, b], False))
             continue
         hull = MultiPoint([(q.real, q.imag) for q in pts]).convex_hull
         span = max(abs(q - r) for q in pts for r in pts)
         if hull.geom_type == "Polygon" and hull.area > 0.01 * span * span:
-            ring = [complex(x, y) for x, y in list(hull.exterior.coords)[:-1]]
-            sketch.polygon(ring, fc=fill, ec=edge, lw=lw, gid=f"figure-{link}", zorder=0.8, obstacle=False)
-            sketch.obstacles.append(hull.exterior.buffer(lw * MM_PER_PT / 2))
+            out.append((link, [complex(x, y) for x, y in list(hull.exterior.coords)[:-1]], True))
         else:
             a, b = max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1]))
-            sketch.line([a, b], color=edge, lw=lw, gid=f"figure-{link}", zorder=1.5)
+            out.append((link, [a, b], False))
+    return out
+
+
+def _figures(sketch: Sketch, plan, images: dict, vectors) -> None:
+    """The image of each link (:func:`link_figures`) drawn: a triangle lightly filled, else a thin segment."""
+    edge, lw, fill = FIGURE_STYLE
+    for link, pts, filled in link_figures(plan, images, vectors):
+        if filled:
+            sketch.polygon(pts, fc=fill, ec=edge, lw=lw, gid=f"figure-{link}", zorder=0.8, obstacle=False)
+            sketch.obstacles.append(ShapelyPolygon([(q.real, q.imag) for q in pts]).exterior.buffer(lw * MM_PER_PT / 2))
+        else:
+            sketch.line(pts, color=edge, lw=lw, gid=f"figure-{link}", zorder=1.5)
 
 
 #: plan kind -> vector kind -> key of plans.i18n.TERMS
@@ -1020,13 +1054,15 @@ def legend_words(plan_kind: str, kind: str, lang: str = "en") -> str:
     """The legend's words for a vector kind on a plan (``"construction"`` for construction lines)."""
     if kind == "construction":
         return term("construction_line", lang)
+    if kind in ("figure", "figure_segment"):
+        return term("link_image", lang)
     return term(LEGEND_TERMS[plan_kind][kind], lang)
 
 
 def legend_entries(plans, lang: str = "en") -> list[tuple[str, str]]:
     """One legend for *plans* (Plan objects): ``(kind, words)`` for every kind drawn on any of them
     (:func:`kinds_drawn`: also a kind drawn only as lettered points with notes), one row per style ("absolute velocity / absolute acceleration"),
-    then the construction lines."""
+    then the construction lines, then the images of links where a plan draws one (:func:`link_figures`)."""
     words: dict[str, list[str]] = {}
     for plan in plans:
         drawn = kinds_drawn(plan)
@@ -1037,7 +1073,18 @@ def legend_entries(plans, lang: str = "en") -> list[tuple[str, str]]:
                     words[kind].append(text)
     entries = [(kind, " / ".join(words[kind])) for kind in KINDS if kind in words]
     entries.append(("construction", legend_words("velocity", "construction", lang)))
+    entries += figure_entries([f for plan in plans for f in link_figures(plan)], lang)
     return entries
+
+
+def figure_entries(figures, lang: str = "en") -> list[tuple[str, str]]:
+    """The legend's row for the images of links *figures* (:func:`link_figures`) where a plan draws any (round 20:
+    the thin f h₃ g of the linear-arm rod's image was in no legend): its sample as they are drawn, a lightly filled
+    triangle where one is, else a thin segment (rounds 23, 24: a triangle beside plans of segments only)."""
+    if not figures:
+        return []
+    kind = "figure" if any(filled for _, _, filled in figures) else "figure_segment"
+    return [(kind, legend_words("velocity", kind, lang))]
 
 
 def _tip_text(plan, v) -> str:
@@ -1068,10 +1115,14 @@ def along_note(plan, pairs, lang: str = "en") -> list[str]:
 def notes_text(plan, notes, lang: str = "en", letters: dict[str, str] | None = None) -> list[str]:
     """The notes under a plan on vectors too short for an arrow: each the segment it is on the plan and its length
     [mm on the paper], ``a a₄ = 0,45 mm``, ``π e′ = 2,44 mm``, and, when the plan's detail draws it enlarged,
-    where (``detail I``).  *notes* are ``(vector, detail name or None)``."""
+    where and how long it is there (``π e′ = 2,44 mm (detail I: 12,20 mm)``: round 20 measured the plan's length in
+    the detail).  *notes* are ``(vector, (detail name, its ratio) or None)``."""
     out = []
     for v, detail in notes:
-        where = f" ({term('detail', lang)} {detail})" if detail else ""
+        where = ""
+        if detail:
+            name, ratio = detail
+            where = f" ({term('detail', lang)} {name}: {localised(f'{v.length * ratio:.2f}', lang)} mm)"
         # a length under the hundredth the note prints is no "0,00 mm": its ends all but coincide
         length = f"= {localised(f'{v.length:.2f}', lang)}" if v.length >= 0.005 else f"< {localised('0.01', lang)}"
         out.append(f"{segment(plan, v, letters)} {length} mm{where}")
@@ -1103,6 +1154,9 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
             head, _, where = text.rpartition(" (")
             if head and text_size(text, CAPTION_PT)[0] > width:
                 split += [(head, gid), ("(" + where, "where-" + gid[len("short-"):])]
+                name, colon, length = where.partition(": ")
+                if colon and text_size("(" + where, CAPTION_PT)[0] > width:  # (and its length there on a line of its own)
+                    split[-1:] = [("(" + name + ":", "where-" + gid[len("short-"):]), (length, "where-length-" + gid[len("short-"):])]
             else:
                 split.append((text, gid))
         items = split
@@ -1124,6 +1178,7 @@ def _caption(sketch: Sketch, plan, vectors, drawn_lines: int, lang: str = "en", 
     rows = [(k, legend_words(plan.kind, k, lang)) for k in kinds]
     if drawn_lines:
         rows.append(("construction", legend_words(plan.kind, "construction", lang)))
+    rows += figure_entries(link_figures(plan, vectors=vectors), lang)
     row_h = text_size("lp", CAPTION_PT)[1] + 0.9
     y -= 4.6
     for kind, words in rows:

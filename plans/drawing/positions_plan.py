@@ -40,7 +40,7 @@ from ..sweep import line_travel
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import LABEL_SPACE_MM
 from .mechanism import BAR_PT, FRAME, MechanismDrawing, mechanism_labels
-from .numerals import localised
+from .numerals import detail_title, localised
 from .style import CAPTION_PT, HEADING_PT, LABEL_PT, SMALL_PT
 
 __all__ = ["draw_positions_plan", "draw_positions_into", "numbered_points", "place_number", "number_ranges", "draw_details", "number_parts", "number_size"]
@@ -461,7 +461,7 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
         r = min(max(spread + DETAIL_MARGIN_MM / ratio, DETAIL_LEAST_MM / ratio), DETAIL_MOST_MM / ratio)
         inside = [(text, at) for text, at in every_mark if abs(at - centre) <= r]
         big = r * ratio
-        title = f"{term('detail', lang)[:1].upper()}{term('detail', lang)[1:]} {name} ({localised(fmt_number(ratio), lang)} : 1)"
+        title = detail_title(name, fmt_number(ratio), lang)
         tw, th = text_size(title, CAPTION_PT)
         at = _free_spot(sketch, centre, big + 1.0, (tw + 1.0, th + 4.0), limit, lines)
         if at is None:
@@ -513,7 +513,9 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
             away = along * (1j if turn % 2 == 0 else -1j)
             if all(place_number(sketch, q, text, gid=named[0], size=NUMBER_PT, prefer=away, rivals=others, part_gids=named, gaps=gaps,
                                 cross_lines=cross) is None
-                   for others, gaps, cross in ((rivals, None, False), (None, None, False), (None, LEADER_GAPS + FAR_GAPS[:2], False),
+                   # (beside its dot only where it is nearer that dot than any other: round 20's H₁ stood over H₀'s dot;
+                   # else on a leader, which says whose it is)
+                   for others, gaps, cross in ((rivals, None, False), (None, LEADER_GAPS + FAR_GAPS[:2], False),
                                                (None, LEADER_GAPS + FAR_GAPS[:2], True))):
                 still.extend((t, dict(inside)[t]) for t, _ in joined[i] if any(t == c for c, _ in crowd))
         sketch.obstacles.append(Point(at.real, at.imag).buffer(big + 1.0))  # (the next detail finds room beside it)

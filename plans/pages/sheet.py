@@ -381,7 +381,7 @@ def build_sheet(scene, graphical, blocks: dict, regions: dict, *, lang: str = "e
     *table*: the results table (rows of text, the header first, in *lang*); *formula*: the structural formula;
     *assembly*: the groups' assembly in words; *legend*: the plans' legend (an SvgBlock); *heading*: a line over
     the text (a position's sheet: the position); *number*: (n, m) of a set of sheets (else 1 of 1); *text_scale*: the
-    text column's enlargement (:func:`_text_scale`); *split*: the comparison table in two halves (:func:`_texts`).
+    text column's enlargement (:func:`_text_layout`); *split*: the comparison table in two halves (:func:`_texts`).
     """
     page = sheet_page(paper)
     doc = Document(scene, lang, page)
@@ -656,17 +656,35 @@ def _text_heights(scene, g, parts: dict, lang: str, heading: str, paper: str, sc
 
 
 def _text_layout(scene, g, parts: dict, lang: str, heading: str, paper: str, regions: dict) -> tuple[float, bool]:
-    """(enlargement, split) of the text column: the largest enlargement that fits (:func:`_text_scale`), the comparison
-    table whole where that is as large as in two halves."""
+    """(enlargement, split) of the text column: the largest enlargement of :data:`TEXT_SCALES`, 1 and
+    :data:`TEXT_REDUCED` whose height fits the room the drawings leave it (:func:`_text_limit`; 0 where none does), the
+    comparison table whole where that is as large as in two halves.
+
+    A column grows with its text, so the largest that fits is found by bisection over the enlargements, each measured
+    alone (a Typst pass lays out every size it is asked: 4 sizes measured, not 9, the largest first and alone)."""
     page = sheet_page(paper)
     scales = TEXT_SCALES + (1.0,) + TEXT_REDUCED
-    largest = scales[:1]  # (the largest measured alone first: where it fits, the others need no pass)
-    whole = _text_scale(dict(zip(largest, _text_heights(scene, g, parts, lang, heading, paper, largest))), page, regions)
-    if whole != TEXT_SCALES[0]:
-        whole = _text_scale(dict(zip(scales, _text_heights(scene, g, parts, lang, heading, paper, scales))), page, regions)
+    limit = _text_limit(page, regions)
+
+    def largest(split: bool) -> float:
+        def fits(f: float) -> bool:
+            return _text_heights(scene, g, parts, lang, heading, paper, (f,), split=split)[0] <= limit
+
+        if fits(scales[0]):
+            return scales[0]
+        lo, hi = 1, len(scales)  # (the first that fits lies in [lo, hi); hi: none does)
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if fits(scales[mid]):
+                hi = mid
+            else:
+                lo = mid + 1
+        return scales[lo] if lo < len(scales) else 0.0
+
+    whole = largest(False)
     if not _splits(parts) or whole == TEXT_SCALES[0]:
         return max(whole, TEXT_REDUCED[-1]), False
-    halves = _text_scale(dict(zip(scales, _text_heights(scene, g, parts, lang, heading, paper, scales, split=True))), page, regions)
+    halves = largest(True)
     # (a column that fits only with its table halved is set so; one that fits at no size, at the least)
     least = TEXT_REDUCED[-1]
     return (max(halves, least), True) if halves > whole else (max(whole, least), False)
@@ -690,15 +708,12 @@ TEXT_SCALES = (1.25, 1.2, 1.15, 1.1, 1.05)
 TEXT_REDUCED = (0.95, 0.9, 0.85)
 
 
-def _text_scale(heights, page: PageGeometry, regions: dict) -> float:
-    """The enlargement of the text column (the largest of *heights*' scales, else 1) whose height (*heights*: scale ->
-    height [mm]) fits the room the drawings leave it: down to the first drawing placed under it (*regions*: kind ->
-    (x, y, w, h) [mm] in the text area), else to the title block; the drawings keep their regions and factors.
-    0 when not even the least of them (with 1.0 among them) fits."""
+def _text_limit(page: PageGeometry, regions: dict) -> float:
+    """The height [mm] the text column may take: down to the first drawing placed under it (*regions*: kind ->
+    (x, y, w, h) [mm] in the text area), else to the title block; the drawings keep their regions and factors."""
     width, _ = _drawing_room(page)
     tops = [y for x, y, w, h in regions.values() if x >= width]
-    limit = min(tops, default=page.text_height + GUTTER + 3.0) - GUTTER - 3.0
-    return next((f for f in sorted(heights, reverse=True) if heights[f] <= limit), 0.0 if 1.0 in heights else 1.0)
+    return min(tops, default=page.text_height + GUTTER + 3.0) - GUTTER - 3.0
 
 
 def _under(page: PageGeometry, text_height: float):
