@@ -538,7 +538,7 @@ def row_texts(graphical, analytic, step: float | None = None, given: bool = Fals
     the digits its reading justifies (:func:`reading_number` with the resolution *step* [SI]; 4 significant digits,
     trailing zeros kept, when there is no step), the analytic value to the same decimals and to at least
     :data:`ANALYTIC_DIGITS` significant digits, and the relative error of the two numbers as printed, |g − a| / |a|
-    (of the vectors, for a magnitude ∠ direction), so that a reader recomputes it from the table.  (Round 20: the
+    (of the vectors, for a magnitude ∠ direction), so that a reader recomputes it from the table.  (Round 21: the
     analytic value rounded to the reading's decimals hid the graphical method's error, "v_K 0,032 | 0,032 | 0"
     against 0,03238.)  A *given* value (the driver's ω, a crank pin's v) is printed as
     given in both columns and has no error (:data:`NO_ERROR`), nor has a quantity printed as 0.

@@ -1,4 +1,4 @@
-"""Round 20 (bg linear-arm handout): the comparison tables printed the analytic value rounded to the reading's
+"""Round 21 (bg linear-arm handout): the comparison tables printed the analytic value rounded to the reading's
 decimals, and the relative error of those two numbers: "v_K 0,032 ∠ 41,9° | 0,032 ∠ 41,9° | 0", where the analytic
 |v_K| is 0,03238 and the graphical method is 1,2 % off. A student would believe the plan exact.
 

@@ -2,7 +2,7 @@
 
 Read back from the typeset handout (``pdftotext``): in each row of the graphical-against-analytic tables and
 of the centres page's table, the analytic value is printed to the graphical one's decimals (trailing zeros kept)
-and to at least 4 significant digits (round 20: rounded to the reading's decimals it hid the graphical method's
+and to at least 4 significant digits (round 21: rounded to the reading's decimals it hid the graphical method's
 error, "v_K 0,032 | 0,032 | 0" against 0,03238), and the relative error printed is the one of the two printed numbers (recomputed here from the strings alone; a vector
 ``m ∠ θ°`` from its printed magnitude and direction).  The driver's ω is given, not found: "—" on every page.
 The column headers are the course's words (по плану), and the readings table's last column has a word.
@@ -83,7 +83,7 @@ def test_the_analytic_value_to_four_digits_and_the_error_of_the_printed_numbers(
 
 def test_the_teachers_rows(rows):
     """The rows an earlier review quoted: ε₅ −3.35 against −3.344 (it had asked for −3.34, the reading's decimals:
-    round 20 showed that this hides the graphical method's error, and the analytic value keeps 4 digits), v_E5 0.775
+    round 21 showed that this hides the graphical method's error, and the analytic value keeps 4 digits), v_E5 0.775
     against 0.7759."""
     by = {}
     for m in rows:

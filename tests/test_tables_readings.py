@@ -311,7 +311,7 @@ def test_readings_recompute_every_graphical_value_and_its_error(drawn):
                     reference = abs(_analytic_vector(a, drawn["graphical"], key[0]))
                     expected = abs(recomputed - reference) / reference
                 # the table prints the graphical value to the reading's decimals, the analytic one to those and to at
-                # least 4 significant digits (round 20: rounded to the reading's decimals, it hid the method's error,
+                # least 4 significant digits (round 21: rounded to the reading's decimals, it hid the method's error,
                 # "v_K 0,032 | 0,032 | 0" against 0,03238), and the error of those two printed numbers (teacher's
                 # review: a reader recomputes it from the row), which is this error to the printed digits
                 decimals = [len(cell.split(" ∠")[0].replace("−", "").partition(".")[2]) for cell in row[:2]]
