@@ -119,14 +119,15 @@ def _velocity_legend(example: str, lang: str = "en") -> str:
 def test_a_links_image_on_the_plan_is_in_the_legend():
     """Round 20 (bg linear-arm): the velocity plans draw rod 3's image, the thin segment f h₃ g (the rod carries F, H
     and G: similarity), and the four-bar's coupler image a b m as a grey triangle; neither was in the legend. Its
-    sample is what the plan draws (rounds 23, 24: a triangle beside the quick-return's plans, whose links are bars
-    and their images segments): the quick-return's a thin segment, the four-bar's and the linear-arm's (sleeve 4's
-    d k f₄) a triangle. A link with two points whose images a drawn vector joins has no image of its own (the scotch
-    yoke: none)."""
+    sample is what the plan draws (rounds 23, 24: a triangle beside plans whose links are bars and their images
+    segments): the six-bar's a thin segment (b e₅ m of link 5), the four-bar's and the linear-arm's (sleeve 4's d k f₄)
+    a triangle. Images a drawn vector already joins end to end have no segment of their own: the scotch yoke none, the
+    slider-crank's a s₃ b lying under v_BA none (round 28: its legend named a thin line nobody could see)."""
     assert 'id="legend-legend-figure"' in _velocity_legend("linear-arm", "bg")
-    segment = _velocity_legend("quick-return", "bg")
+    segment = _velocity_legend("six-bar", "bg")
     assert 'id="legend-legend-figure_segment"' in segment and 'id="legend-legend-figure"' not in segment
     assert "образ на звено" in segment
     triangle = _velocity_legend("four-bar", "bg")
     assert 'id="legend-legend-figure"' in triangle and "образ на звено" in triangle
     assert "legend-legend-figure" not in _velocity_legend("scotch-yoke")
+    assert "legend-legend-figure" not in _velocity_legend("slider-crank-loads", "ru")

@@ -996,8 +996,8 @@ def link_figures(plan, images: dict | None = None, vectors=None) -> list[tuple[s
     """The image of each link as a plan draws it (similarity): ``(link, points [mm], filled)`` — its triangle (a b c),
     lightly filled, or the segment its images lie on (b e₅ m), from end to end.
 
-    Two images already joined by a drawn vector need no segment.  *images* and *vectors* default to the plan's
-    (:func:`vectors_drawn`).
+    Images already joined end to end by a drawn vector need no segment (two images, or more on one line).  *images*
+    and *vectors* default to the plan's (:func:`vectors_drawn`).
     """
     images = {name: complex(z) for name, z in plan.images.items()} if images is None else images
     vectors = vectors_drawn(plan) if vectors is None else vectors
@@ -1010,19 +1010,17 @@ def link_figures(plan, images: dict | None = None, vectors=None) -> list[tuple[s
                 pts.append(z)
         if len(pts) < 2:
             continue
-        if len(pts) == 2:
-            a, b = pts
-            if any({_at(v.tail, a), _at(v.tip, b)} == {True} or (_at(v.tail, b) and _at(v.tip, a)) for v in vectors):
-                continue
-            out.append((link, [a, b], False))
-            continue
         hull = MultiPoint([(q.real, q.imag) for q in pts]).convex_hull
         span = max(abs(q - r) for q in pts for r in pts)
-        if hull.geom_type == "Polygon" and hull.area > 0.01 * span * span:
+        if len(pts) > 2 and hull.geom_type == "Polygon" and hull.area > 0.01 * span * span:
             out.append((link, [complex(x, y) for x, y in list(hull.exterior.coords)[:-1]], True))
-        else:
-            a, b = max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1]))
-            out.append((link, [a, b], False))
+            continue
+        a, b = max(((q, r) for q in pts for r in pts), key=lambda qr: abs(qr[0] - qr[1]))
+        # (a segment a drawn vector already covers end to end is not drawn again: the slider-crank's a s₃ b under v_BA,
+        # round 28, whose legend named a thin line nobody could see)
+        if any({_at(v.tail, a), _at(v.tip, b)} == {True} or (_at(v.tail, b) and _at(v.tip, a)) for v in vectors):
+            continue
+        out.append((link, [a, b], False))
     return out
 
 
