@@ -56,10 +56,15 @@ def _svg(svg: bytes):
 
 def _centre(root, gid: str) -> complex:
     """The centre [SVG units] of the drawn element *gid* (a dot: its path's bounding box)."""
+    return _circle(root, gid)[0]
+
+
+def _circle(root, gid: str) -> tuple[complex, float]:
+    """(centre, half width) [SVG units] of the element drawn as *gid*, a dot or a circle (its path's bounding box)."""
     g = next(g for g in root.iter(f"{SVG}g") if g.get("id") == gid)
     numbers = [float(x) for x in re.findall(r"-?[0-9]+(?:\.[0-9]+)?", next(g.iter(f"{SVG}path")).get("d"))]
     xs, ys = numbers[0::2], numbers[1::2]
-    return complex((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2)
+    return complex((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2), (max(xs) - min(xs)) / 2
 
 
 def _texts(root) -> dict[str, str]:
@@ -245,14 +250,6 @@ def test_a_detail_rings_name_keeps_its_leader_off_the_labels():
     for line in mine:
         crossed = [(gid, text) for gid, text, b in others if line.intersects(b.buffer(-0.2))]
         assert not crossed, crossed
-
-
-def _circle(root, gid: str) -> tuple[complex, float]:
-    """(centre, radius) [SVG units] of the circle drawn as *gid* (its path's bounding box)."""
-    g = next(g for g in root.iter(f"{SVG}g") if g.get("id") == gid)
-    numbers = [float(x) for x in re.findall(r"-?[0-9]+(?:\.[0-9]+)?", next(g.iter(f"{SVG}path")).get("d"))]
-    xs, ys = numbers[0::2], numbers[1::2]
-    return complex((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2), (max(xs) - min(xs)) / 2
 
 
 def test_a_detail_stands_clear_of_the_ring_it_enlarges_and_of_the_plans_labels():

@@ -18,7 +18,7 @@ import subprocess
 import pytest
 
 import plans
-from review_handouts import built_pdf
+from review_handouts import built, built_pdf
 
 SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 NUMBER = r"−?\d+(?:[.,]\d+)?"
@@ -116,3 +116,51 @@ def test_the_readings_value_column_has_a_word(lang):
     scene = plans.load(plans.example_path("slider-crank"))
     head = plan_readings(construct(scene), "velocity", lang)[0][-1]
     assert head.startswith("= ") and re.search(r"\w{4,}", head), head
+
+
+# --- round 21: the analytic value to 4 digits, read off the handouts with two tables across a page --------------------
+
+#: a comparison row as pdftotext -layout sets it, two tables side by side on a line (several rows to a line)
+ROW_ACROSS = re.compile(rf"\] +(?P<g>{CELL}) +(?P<a>{CELL}) +(?P<e>0|\d[.,]\d·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)(?= |$)")
+
+
+def _rows_across(pdf: bytes) -> list:
+    import tempfile
+    from pathlib import Path
+
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "h.pdf"
+        path.write_bytes(pdf)
+        text = subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, check=True).stdout.decode()
+    return [m for line in text.splitlines() for m in ROW_ACROSS.finditer(line)]
+
+
+@pytest.mark.parametrize("example, positions, lang", [("linear-arm", 8, "bg"), ("quick-return", 12, "sr")])
+def test_the_error_is_the_printed_numbers_and_the_analytic_value_has_four_digits(example, positions, lang):
+    """Round 21 (bg linear-arm handout): "v_K 0,032 ∠ 41,9° | 0,032 ∠ 41,9° | 0", where the analytic |v_K| is 0,03238
+    and the graphical method is 1,2 % off: a student would believe the plan exact. In every comparison row of the
+    handouts the analytic value has at least 4 significant digits, and the printed error is |g − a| / |a| of the two
+    printed numbers, to the two digits it is printed with."""
+    rows = _rows_across(built_pdf(example, positions, lang))
+    assert len(rows) >= 40, len(rows)
+    for m in rows:
+        g, a, e = m.group("g"), m.group("a"), m.group("e")
+        assert _significant(a) >= 4, m.group(0)
+        error = abs(_value(g) - _value(a)) / abs(_value(a))
+        if e == "0":
+            assert error <= 1e-12, m.group(0)
+            continue
+        exponent = int(e.split("·10")[1].translate(SUPERSCRIPT))
+        assert _number(e) == pytest.approx(error, abs=0.051 * 10.0 ** exponent), m.group(0)
+
+
+def test_the_linear_arms_v_k_is_not_exact_on_the_plan():
+    """Position 2: pk reads 3,2 mm at k_v 0,01 (m/s)/mm, 0,032 m/s; |v_K| = ω₄·DK (the analytic solution) 0,03238."""
+    import numpy as np
+
+    doc = built("linear-arm", 8, "bg")
+    run = next(r for r in doc.runs if r.index == 2)
+    v_k = abs(complex(np.ravel(run.analytic.points["K"].v)[0]))
+    assert round(v_k, 5) == pytest.approx(0.03238)
+    rows = [m.group(0) for m in _rows_across(built_pdf("linear-arm", 8, "bg"))]
+    assert any(re.fullmatch(r"\] +0,032 ∠ 41,9° +0,03238 ∠ 41,9° +1,2·10⁻²", row) for row in rows), "v_K at position 2"

@@ -28,7 +28,7 @@ from shapely.geometry import LineString, Point, box
 from ._canvas import Sketch, text_size
 from .style import LEADER_STYLE
 
-__all__ = ["CLEAR_MM", "LABEL_SPACE_MM", "place_label"]
+__all__ = ["CLEAR_MM", "LABEL_SPACE_MM", "RING_TURNS", "label_boxes", "place_label", "place_ring_name"]
 
 #: Clearance [mm] a label should keep from every other mark.
 CLEAR_MM = 0.8
@@ -138,8 +138,13 @@ def _leader_crossings(sketch: Sketch, anchor: complex, center: complex, w: float
         own |= around
     # never another label (an upright box), however near the point it stands: round 20's ring name "I" ran its leader
     # through the pole's "π, d′, q′, a′, f′", whose box came within reach of the ring's edge
-    label = (shapely.get_num_coordinates(shapes) == 5) & np.isclose(shapely.area(shapes), shapely.area(shapely.envelope(shapes)))
-    return int((~own | label).sum())
+    return int((~own | label_boxes(shapes)).sum())
+
+
+def label_boxes(shapes) -> np.ndarray:
+    """Which of *shapes* (an array of obstacles) are labels: upright boxes (a label's box, grown with mitred corners,
+    is a rectangle of 4 corners filling its own envelope), not lines, pins or marks."""
+    return (shapely.get_num_coordinates(shapes) == 5) & np.isclose(shapely.area(shapes), shapely.area(shapely.envelope(shapes)))
 
 
 #: A leader crossing a mark costs as much as this much distance [mm] (less than a box over a mark, :data:`OVERLAP_MM`:
@@ -154,6 +159,11 @@ def _leader_cost(crossings: int) -> float:
     return 0.0 if crossings <= 0 else LEADER_CROSSING_MM + LEADER_MORE_MM * (min(crossings, 5) - 1)
 
 
+#: the places round a detail's ring its name is tried at, in eighths of a turn: up and right first, up and left, down
+#: and right, down and left, then up, down, right, left
+RING_TURNS = (1, 3, 7, 5, 2, 6, 0, 4)
+
+
 def place_ring_name(sketch: Sketch, centre: complex, r: float, pieces: list[tuple[str, str | None]], *, size: float,
                     gaps: tuple[float, ...] = (0.4, 1.2, 2.4, 4.0), leader_from: float = 3.0) -> list:
     """The name of a detail's ring (centre *centre*, radius *r* [mm]: "I") beside the ring, placed as
@@ -163,7 +173,7 @@ def place_ring_name(sketch: Sketch, centre: complex, r: float, pieces: list[tupl
     through the pole's "π, d′, q′, a′, f′".)  Returns the label's Text artists."""
     w, h = text_size(_SEPARATOR.join(t for t, _ in pieces), size)
     tried = []
-    for k in (1, 3, 7, 5, 2, 6, 0, 4):
+    for k in RING_TURNS:
         u = cmath.exp(1j * math.pi * k / 4)
         anchor = centre + r * u
         state = sketch.checkpoint()

@@ -13,7 +13,7 @@
 
 from __future__ import annotations
 
-__all__ = ["DECIMAL_COMMA", "MINUS", "localised", "scale_caption", "detail_title", "course_units"]
+__all__ = ["DECIMAL_COMMA", "MINUS", "localised", "scale_caption", "detail_title", "detail_word", "course_units"]
 
 from .._text import course_units  # noqa: E402 (re-exported: the drawings' unit symbols)
 from ..i18n import term
@@ -48,5 +48,10 @@ def detail_title(name: str, ratio: str, lang: str) -> str:
     >>> detail_title("II", "2.5", "bg")
     'Детайл II (2,5 : 1)'
     """
+    return f"{detail_word(lang)} {name} ({localised(ratio, lang)} : 1)"
+
+
+def detail_word(lang: str) -> str:
+    """The word a detail's title starts with, capitalised: ``Детайл``, ``Выносной элемент``, ``Detail``."""
     word = term("detail", lang)
-    return f"{word[:1].upper()}{word[1:]} {name} ({localised(ratio, lang)} : 1)"
+    return word[:1].upper() + word[1:]

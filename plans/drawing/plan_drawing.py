@@ -26,7 +26,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 from .._text import SUBSCRIPT, math_name
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
 from .labels import LABEL_SPACE_MM, place_label, place_ring_name
-from .numerals import detail_title, localised, scale_caption
+from .numerals import detail_title, detail_word, localised, scale_caption
 
 from .style import (
     CAPTION_PT,
@@ -156,8 +156,7 @@ def detail_caption(ratio: float, lang: str = "en") -> tuple[str, str]:
     """The heading of a plan's whole detail in the reader's language, as (word, numeral and ratio): ``("Detail", "I (5 : 1)")``,
     written ``Detail I (5 : 1)`` as every detail's title (:func:`~plans.drawing.numerals.detail_title`; the word over the
     rest where the detail is narrower than the whole)."""
-    word, _, rest = detail_title(DETAIL_NAME, fmt_number(ratio), lang).partition(f" {DETAIL_NAME} ")
-    return word, f"{DETAIL_NAME} {rest}"
+    return detail_word(lang), f"{DETAIL_NAME} ({localised(fmt_number(ratio), lang)} : 1)"
 
 
 def _same(v, w) -> bool:

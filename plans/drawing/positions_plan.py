@@ -38,7 +38,7 @@ from .._text import SUBSCRIPT
 from ..i18n import term
 from ..sweep import line_travel
 from ._canvas import Sketch, fmt_number, sketch_on, text_size, unit
-from .labels import LABEL_SPACE_MM
+from .labels import LABEL_SPACE_MM, RING_TURNS, label_boxes
 from .mechanism import BAR_PT, FRAME, MechanismDrawing, mechanism_labels
 from .numerals import detail_title, localised
 from .style import CAPTION_PT, HEADING_PT, LABEL_PT, SMALL_PT
@@ -475,7 +475,7 @@ def draw_details(sketch: Sketch, left_out: list[tuple[str, complex]], every_mark
         any(place_number(sketch, centre + r * u, name, gid=f"detail-mark-{name}", size=CAPTION_PT, prefer=u, gaps=gaps, cross_lines=cross)
             is not None
             for gaps, cross in ((None, False), (LEADER_GAPS + FAR_GAPS[:2], False), (LEADER_GAPS + FAR_GAPS[:2], True))
-            for u in (cmath.exp(1j * math.pi * k / 4) for k in (1, 3, 7, 5, 2, 6, 0, 4)))
+            for u in (cmath.exp(1j * math.pi * k / 4) for k in RING_TURNS))
 
         def f(z: complex) -> complex:
             return at + (z - centre) * ratio
@@ -648,8 +648,7 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         filled = np.array([r is not None and shapely.contains(shapely.Polygon(r), mark) for r in rings], dtype=bool)
         own |= filled
         # never a label (an upright box): a leader goes round the labels
-        label = (shapely.get_num_coordinates(shapes) == 5) & np.isclose(shapely.area(shapes), shapely.area(shapely.envelope(shapes)))
-        own &= ~label
+        own &= ~label_boxes(shapes)
     others, around = shapes[~own], shapes[own]
     # a leader may cross the strokes of a hatching (bare segments) and long thin lines (a guide), not a link,
     # a pin, a mark, an arrow or a label: a line's area is its length times its width (under THIN_MM)
@@ -658,8 +657,7 @@ def place_number(sketch: Sketch, at: complex, text: str, *, gid: str, size: floa
         guide = (2 * area / np.maximum(2 * half_round, 1e-12) < THIN_MM) & (half_round >= LONG_MM)
         others = others[(area > 0) & ~guide]
     if cross_lines and len(others):  # (only the marks and the labels: small shapes and upright boxes)
-        upright = (shapely.get_num_coordinates(others) == 5) & np.isclose(shapely.area(others), shapely.area(shapely.envelope(others)))
-        others = others[upright | (shapely.area(others) < 1.0)]
+        others = others[label_boxes(others) | (shapely.area(others) < 1.0)]
 
     for (centre, u, leader), label, no_room in zip(candidates, boxes, crowded):
         if no_room:
